@@ -1,0 +1,207 @@
+"""The ``physink`` command line: parses arguments and dispatches to a command module; no logic of its own.
+
+Every subcommand of the DESIGN.md table is parsed here. A built subcommand names its ``module:function`` in
+``HANDLERS`` and is imported only when run, so ``physink --help`` never loads Textual, numpy or a device
+library. A subcommand not built yet names its plan in ``PLANNED`` and exits 2 with one line saying so.
+
+Exit status: 0 success, 1 a user error (a ``PhysinkError``, printed as one line), 2 bad usage or a subcommand
+not available yet, 130 interrupted.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import sys
+from collections.abc import Callable, Sequence
+
+from physink_tui import __version__
+from physink_tui.errors import PhysinkError
+
+PROG = "physink"
+
+EXIT_USER_ERROR = 1
+EXIT_USAGE = 2
+EXIT_INTERRUPTED = 130
+
+#: Built subcommands: name -> "module:function", the function being ``run(args: Namespace) -> int``.
+HANDLERS: dict[str, str] = {
+    "demo": "physink_tui.commands.demo:run",
+    "decode": "physink_tui.commands.decode:run",
+}
+
+#: Subcommands not built yet: name -> where they are planned (shown to the user as is).
+PLANNED: dict[str, str] = {
+    "tui": "a later issue: the Textual control panel",
+    "kiosk": "a later issue: the headless recording service",
+    "devices": "issue #3: finding pen tablets",
+    "record": "issue #3: raw capture from a tablet",
+    "replay": "issue #3: headless replay of journals and captures",
+    "recognize": "issue #4: stroke recognition",
+    "timeline": "issue #6: the causal timeline",
+    "equiv": "issue #6: timeline equivalence",
+    "simulate": "a later issue: the SIMULATE parameter search",
+    "listen": "a later issue: speech commands",
+    "export": "a later issue: video and frame export",
+}
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _label_list(text: str) -> list[str]:
+    labels = [label.strip() for label in text.split(",") if label.strip()]
+    if not labels:
+        raise argparse.ArgumentTypeError(f"expected comma-separated labels like 'ball,cup', got {text!r}")
+    return labels
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Returns the parser for every subcommand of the DESIGN.md CLI table (built or not)."""
+    parser = argparse.ArgumentParser(
+        prog=PROG,
+        description="Sketch a machine with a pen tablet, demonstrate how it works, and simulate it.",
+    )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    # Options shared by the subcommands that read a live tablet.
+    # --device None means auto; a command reading a tablet gets at most one of device and serial.
+    device = argparse.ArgumentParser(add_help=False)
+    source = device.add_mutually_exclusive_group()
+    source.add_argument(
+        "--device",
+        metavar="auto|PATH|VID:PID",
+        help="the pen tablet: 'auto' (the first one found; the default), a hidraw path, or a USB VID:PID",
+    )
+    source.add_argument("--serial", metavar="PORT", help="read a serial tablet on PORT instead of a HID one")
+
+    p = sub.add_parser(
+        "demo",
+        help="the embedded default: the TUI replaying a bundled session (the egg cracker)",
+        description="Open the TUI on a bundled session being replayed; with --headless (automatic when "
+        "stdout is not a terminal) run the whole pipeline and write the outputs to --out.",
+    )
+    p.add_argument("--headless", action="store_true", help="no UI: run the pipeline and write the outputs")
+    p.add_argument(
+        "--out", metavar="DIR", default="./physink-demo/", help="output folder (default: %(default)s)"
+    )
+
+    p = sub.add_parser("tui", parents=[device], help="the control panel")
+    p.add_argument("project", nargs="?", metavar="PROJECT", help="a project (.physink.json) to open")
+    p.add_argument("--replay", metavar="FILE", help="replay a journal or capture instead of reading a tablet")
+
+    p = sub.add_parser(
+        "kiosk", parents=[device], help="headless recording service: journals sessions, exports at their end"
+    )
+    p.add_argument("--out", metavar="DIR", required=True, help="folder for journals and exports")
+
+    sub.add_parser("devices", help="list pen tablets found (hidraw/hidapi, USB, serial)")
+
+    p = sub.add_parser("record", parents=[device], help="raw capture in hid-recorder format")
+    p.add_argument("-o", "--output", metavar="FILE.hid", required=True, help="capture file to write")
+
+    p = sub.add_parser("decode", help="decode a capture into pen samples")
+    p.add_argument("file", metavar="FILE.hid", help="a capture in hid-recorder format")
+    p.add_argument("--format", choices=("jsonl", "text"), default="jsonl", help="(default: %(default)s)")
+
+    p = sub.add_parser(
+        "replay", help="run a journal (or a capture plus a script) headless and write project and timeline"
+    )
+    p.add_argument("file", metavar="FILE", help="a journal (.physink.jsonl) or capture (.hid)")
+    p.add_argument("--out", metavar="DIR", required=True, help="output folder")
+    p.add_argument("--video", action="store_true", help="also write DIR/video.mp4")
+    p.add_argument("--frames", action="store_true", help="also write DIR/frames/NNNNN.png")
+
+    p = sub.add_parser("recognize", help="recognise strokes: one JSON line per input line")
+    p.add_argument("strokes", metavar="STROKES.jsonl", help="one stroke per line")
+
+    p = sub.add_parser("timeline", help="print a project's causal timeline")
+    p.add_argument("project", metavar="PROJECT", help="a project (.physink.json)")
+    p.add_argument("--format", choices=("text", "json", "dot"), default="text", help="(default: %(default)s)")
+
+    p = sub.add_parser("equiv", help="are two timelines (or projects) qualitatively equivalent")
+    p.add_argument("a", metavar="A", help="a timeline or project")
+    p.add_argument("b", metavar="B", help="a timeline or project")
+    p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+
+    p = sub.add_parser("simulate", help="search physical parameters that reproduce the demonstrated timeline")
+    p.add_argument("project", metavar="PROJECT", help="a project (.physink.json) with a demonstration")
+    p.add_argument(
+        "--out", metavar="DIR", required=True, help="folder for result.json, timeline.json and project.json"
+    )
+    p.add_argument("--budget", metavar="N", type=_positive_int, help="at most N rollouts")
+    p.add_argument("--workers", metavar="N", type=_positive_int, help="N worker processes")
+    p.add_argument("--seed", metavar="S", type=int, help="random seed, for a reproducible search")
+
+    p = sub.add_parser("listen", help="recognise one spoken utterance from a WAV file")
+    p.add_argument("wav", metavar="FILE.wav", help="the recording")
+    p.add_argument("--labels", metavar="a,b,...", type=_label_list, help="comma-separated labels to expect")
+    p.add_argument("--vosk-model", metavar="DIR", help="use the Vosk model in DIR")
+
+    p = sub.add_parser("export", help="offline export of a project's video, frames and timeline")
+    p.add_argument("project", metavar="PROJECT", help="a project (.physink.json)")
+    p.add_argument("--video", metavar="FILE.mp4|.gif", required=True, help="video file to write")
+    p.add_argument("--frames", metavar="DIR", help="also write PNG frames into DIR")
+    p.add_argument("--timeline", metavar="FILE", help="also write the timeline to FILE")
+
+    return parser
+
+
+def _not_available(command: str, why: str) -> int:
+    print(f"{PROG} {command}: not available yet ({why})", file=sys.stderr)
+    return EXIT_USAGE
+
+
+def _resolve(target: str) -> Callable[[argparse.Namespace], int] | None:
+    """Imports ``"module:function"``; None when the module itself is not written yet."""
+    module_name, _, function_name = target.partition(":")
+    try:
+        module = importlib.import_module(module_name)
+    except ModuleNotFoundError as exc:
+        # Only the command's own module missing means "not built"; a missing dependency inside it is a bug.
+        if exc.name is not None and (module_name == exc.name or module_name.startswith(exc.name + ".")):
+            return None
+        raise
+    return getattr(module, function_name)
+
+
+def _dispatch(args: argparse.Namespace) -> int:
+    command = args.command
+    if command in HANDLERS:
+        run = _resolve(HANDLERS[command])
+        if run is None:
+            return _not_available(command, f"{HANDLERS[command].partition(':')[0]} is not written yet")
+        return run(args)
+    return _not_available(command, f"planned in {PLANNED[command]}")
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Runs ``physink`` with ``argv`` (default: the process arguments) and returns the exit status."""
+    try:
+        args = build_parser().parse_args(argv)
+    except SystemExit as exc:  # --help, --version, or a usage error argparse already reported
+        if exc.code is None:
+            return 0
+        return exc.code if isinstance(exc.code, int) else EXIT_USAGE
+    try:
+        return _dispatch(args)
+    except PhysinkError as exc:
+        print(f"{PROG}: {exc}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except KeyboardInterrupt:
+        return EXIT_INTERRUPTED
+    except BrokenPipeError:
+        # The reader went away (e.g. `physink decode ... | head`): stop quietly, and keep Python from
+        # complaining again when it flushes stdout at exit.
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return EXIT_USER_ERROR

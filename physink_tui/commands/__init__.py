@@ -1,0 +1,1 @@
+"""One module per ``physink`` subcommand, each a ``run(args) -> int`` driving the session; cli parses."""

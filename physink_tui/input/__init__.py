@@ -1,0 +1,1 @@
+"""Pen input: HID descriptors and decoding, captures, devices; no scene or UI logic."""

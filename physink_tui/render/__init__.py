@@ -1,0 +1,1 @@
+"""Draws scene snapshots into frames, videos and terminal images; decides nothing about the scene itself."""

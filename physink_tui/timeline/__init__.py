@@ -1,0 +1,1 @@
+"""Demonstration to causal timeline (recorder, event DAG, equivalence); no I/O, clock or UI."""

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Bootstraps this repo on a fresh Debian machine (run as root) and does nothing, quietly, once it has.
+#
+#   - Debian packages: installs only the missing ones (dpkg says which); `apt-get update` only then.
+#   - .venv at the repo root: made if absent (or if its interpreter no longer runs).
+#   - `pip install -e '.[test]'`: only when pyproject.toml changed since the last install; a hash of it
+#     is kept in .venv/.physink-pyproject.sha256 after each successful install.
+#
+# Works from any directory. Set PHYSINK_PYTHON to use another interpreter than python3 (>= 3.11).
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+ROOT=$PWD
+VENV=$ROOT/.venv
+STAMP=$VENV/.physink-pyproject.sha256
+PY=${PHYSINK_PYTHON:-python3}
+
+# Shared libraries the device edges (hidapi, pyusb) will load at run time.
+DEBIAN_LIBS=(libusb-1.0-0 libhidapi-hidraw0)
+
+log() { printf 'setup: %s\n' "$*" >&2; }
+die() { log "$*"; exit 1; }
+
+as_root() {
+    if [ "$(id -u)" -eq 0 ]; then
+        "$@"
+    elif command -v sudo >/dev/null 2>&1; then
+        sudo "$@"
+    else
+        die "need root to run: $*"
+    fi
+}
+
+is_installed() { dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed'; }
+
+# apt_install PKG... : installs those of PKG that are not installed yet.
+apt_install() {
+    command -v dpkg >/dev/null 2>&1 || { log "not a Debian system; make sure these are installed: $*"; return 0; }
+    local missing=() pkg
+    for pkg in "$@"; do
+        is_installed "$pkg" || missing+=("$pkg")
+    done
+    [ "${#missing[@]}" -eq 0 ] && return 0
+    log "installing Debian packages: ${missing[*]}"
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+apt_install "${DEBIAN_LIBS[@]}"
+
+# --- the virtual environment ---------------------------------------------------------------------------
+if ! { [ -x "$VENV/bin/python" ] && "$VENV/bin/python" -c '' 2>/dev/null; }; then
+    command -v "$PY" >/dev/null 2>&1 || die "no $PY on PATH (Python >= 3.11 is needed)"
+    "$PY" -c 'import sys; sys.exit(sys.version_info < (3, 11))' \
+        || die "$PY is $("$PY" -V 2>&1); Python >= 3.11 is needed (set PHYSINK_PYTHON)"
+    # Debian's own python3 can only make a venv with pip once python3-venv is installed.
+    if ! "$PY" -c 'import ensurepip, venv' 2>/dev/null; then
+        apt_install python3-venv
+    fi
+    log "creating $VENV"
+    rm -rf "$VENV"
+    if ! "$PY" -m venv "$VENV"; then
+        rm -rf "$VENV"
+        die "could not create $VENV with $PY -m venv"
+    fi
+fi
+
+# --- the project, editable, with the test tools --------------------------------------------------------
+want=$(sha256sum "$ROOT/pyproject.toml" | cut -d' ' -f1)
+have=$(cat "$STAMP" 2>/dev/null || true)
+if [ "$want" != "$have" ]; then
+    log "installing physink-tui (editable, with test tools) into .venv"
+    rm -f "$STAMP"
+    PIP_NO_INPUT=1 PIP_DISABLE_PIP_VERSION_CHECK=1 \
+        "$VENV/bin/python" -m pip install --quiet --editable "$ROOT[test]"
+    printf '%s\n' "$want" >"$STAMP"
+fi
