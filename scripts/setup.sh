@@ -50,6 +50,9 @@ apt_install "${DEBIAN_LIBS[@]}"
 
 # --- the virtual environment ---------------------------------------------------------------------------
 if ! { [ -x "$VENV/bin/python" ] && "$VENV/bin/python" -c '' 2>/dev/null; }; then
+    if ! command -v "$PY" >/dev/null 2>&1 && [ "$PY" = python3 ]; then
+        apt_install python3 python3-venv   # a minimal Debian image may come without Python
+    fi
     command -v "$PY" >/dev/null 2>&1 || die "no $PY on PATH (Python >= 3.11 is needed)"
     "$PY" -c 'import sys; sys.exit(sys.version_info < (3, 11))' \
         || die "$PY is $("$PY" -V 2>&1); Python >= 3.11 is needed (set PHYSINK_PYTHON)"
