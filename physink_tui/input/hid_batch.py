@@ -150,9 +150,10 @@ def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.n
     cols = {"x": x, "y": y, "p": p, "tip": tip, "range": rng, "eraser": eraser, "b1": b1, "b2": b2}
     for name in ("tilt_x", "tilt_y"):
         tv = getattr(lay, name)
-        cols[name] = (
-            np.full(len(m), np.nan) if tv is None else np.clip(_raw(m, tv) * tv.scale, -TILT_LIMIT, TILT_LIMIT)
-        )
+        if tv is None:
+            cols[name] = np.full(len(m), np.nan)
+        else:
+            cols[name] = np.clip(_raw(m, tv) * tv.scale + tv.offset, -TILT_LIMIT, TILT_LIMIT)
     return cols, keep
 
 

@@ -68,25 +68,31 @@ class CompiledLayout:
         self.in_range_guess = 0 if layout.in_range_inverted else 1
         self._last_in_range_bit = -1
         self._same_in_range_run = 0
+        self._last_report_t = float("-inf")
         self.decode: Callable[[bytes, float], PenSample | str] = self._compile()
 
-    def learn_in_range(self, bit_value: int, strong: bool) -> bool:
-        """Record one observation of the in-range bit; return whether the pen is in range.
+    def learn_in_range(self, bit_value: int, strong: bool, t: float) -> bool:
+        """Record one observation of the in-range bit at time ``t``; return whether the pen is in range.
 
-        Strong evidence (the tip, pressure or a button is active) fixes the polarity; weak
-        evidence (the same bit value three reports in a row: leaving reports come one at a
-        time) only sets a guess.
+        Strong evidence (the tip, pressure or a button is active) fixes the polarity. Weak
+        evidence only sets a guess: the first report after a silence of over 100 ms is a pen
+        arriving, hence in range, and a bit value seen three reports in a row is in range too
+        (leaving reports come one at a time).
         """
         if strong:
             self.in_range_value = bit_value
             return True
-        if bit_value == self._last_in_range_bit:
+        if t - self._last_report_t > 0.1:
+            self.in_range_guess = bit_value
+            self._same_in_range_run = 0
+        elif bit_value == self._last_in_range_bit:
             self._same_in_range_run += 1
             if self._same_in_range_run >= 2:
                 self.in_range_guess = bit_value
         else:
             self._same_in_range_run = 0
         self._last_in_range_bit = bit_value
+        self._last_report_t = t
         return bit_value == self.in_range_guess
 
     def _compile(self) -> Callable[[bytes, float], PenSample | str]:
@@ -148,7 +154,7 @@ class CompiledLayout:
         if lay.in_range is not None:
             src.append(f"    ib = (v >> {lay.in_range}) & 1")
             src.append("    iv = C.in_range_value")
-            src.append("    if iv is None: rng = C.learn_in_range(ib, tip or p > 0.0 or b1 or b2)")
+            src.append("    if iv is None: rng = C.learn_in_range(ib, tip or p > 0.0 or b1 or b2, t)")
             src.append("    else: rng = ib == iv")
             src.append("    if tip: rng = True")
         else:
@@ -168,7 +174,7 @@ class CompiledLayout:
             src.append(f"    {name} = {_value_expr(tv)}")
             if tv.signed:
                 src.append(f"    if {name} >> {tv.width - 1}: {name} -= {1 << tv.width}")
-            src.append(f"    {name} = {name} * {tv.scale!r}")
+            src.append(f"    {name} = {name} * {tv.scale!r} + {tv.offset!r}")
             src.append(f"    {name} = {-TILT_LIMIT} if {name} < {-TILT_LIMIT} else {TILT_LIMIT} "
                        f"if {name} > {TILT_LIMIT} else float({name})")
         src.append(f"    return S(t, x, y, p, tip, rng, eraser, b1, b2, tilt_x, tilt_y, {lay.report_id})")

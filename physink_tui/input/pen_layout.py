@@ -15,9 +15,9 @@ from dataclasses import dataclass, replace
 from physink_tui.input import hid_usages as U
 from physink_tui.input.hid_descriptor import Field, ReportDescriptor
 
-# HID unit codes for rotation: system nibble 1 = SI rotation (radians), 2 = English rotation (degrees).
-_UNIT_DEGREES = 0x14
-_UNIT_RADIANS = 0x12
+# The low nibble of a HID unit code is its system: 2 = SI rotation (radians), 4 = English rotation (degrees).
+_UNIT_SYSTEM_RADIANS = 2
+_UNIT_SYSTEM_DEGREES = 4
 
 
 @dataclass(frozen=True, slots=True)
@@ -30,6 +30,7 @@ class ValueField:
         lo: logical value that maps to 0.0 (or the lowest degree for tilt).
         hi: logical value that maps to 1.0; ``hi > lo``.
         scale: for tilt, degrees per logical unit; unused for other values.
+        offset: for tilt, degrees at logical value 0 (``degrees = raw * scale + offset``).
     """
 
     parts: tuple[tuple[int, int], ...]
@@ -37,6 +38,7 @@ class ValueField:
     lo: int
     hi: int
     scale: float = 1.0
+    offset: float = 0.0
 
     @property
     def width(self) -> int:
@@ -114,20 +116,24 @@ def value_from_field(f: Field, index: int = 0) -> ValueField:
 
 
 def tilt_from_field(f: Field, index: int = 0) -> ValueField:
-    """A tilt value whose ``scale`` turns logical units into degrees (physical range and unit
-    when the descriptor gives them, else logical units are taken as degrees, as tablets send)."""
+    """A tilt value whose ``scale`` and ``offset`` turn logical units into degrees.
+
+    With a rotation unit (HID unit system nibble 2 = radians, 4 = degrees) the logical range maps
+    linearly onto the physical range times 10**exponent; otherwise logical units are taken as
+    degrees, which is what tablets without units send.
+    """
     v = value_from_field(f, index)
-    scale = 1.0
-    unit_system, rotation = f.unit & 0xF, (f.unit >> 4) & 0xF
+    system = f.unit & 0xF
     span_l = f.logical_max - f.logical_min
     span_p = f.physical_max - f.physical_min
-    if rotation and span_l > 0 and span_p > 0 and (f.physical_min, f.physical_max) != (f.logical_min, f.logical_max):
-        scale = span_p / span_l * (10.0 ** f.unit_exponent)
-        if unit_system == 1:  # SI rotation: radians
-            scale = math.degrees(scale)
-    elif rotation and unit_system == 1 and f.unit_exponent:
-        scale = math.degrees(10.0 ** f.unit_exponent)
-    return replace(v, scale=scale)
+    if system not in (_UNIT_SYSTEM_RADIANS, _UNIT_SYSTEM_DEGREES) or span_l <= 0 or span_p <= 0:
+        return v
+    power = 10.0 ** f.unit_exponent
+    slope = span_p / span_l * power
+    offset = (f.physical_min * power) - f.logical_min * slope
+    if system == _UNIT_SYSTEM_RADIANS:
+        slope, offset = math.degrees(slope), math.degrees(offset)
+    return replace(v, scale=slope, offset=offset)
 
 
 _PEN_APPLICATIONS = {U.DG_DIGITIZER, U.DG_PEN, U.DG_LIGHT_PEN, U.DG_TOUCH_SCREEN, U.DG_WHITEBOARD,
@@ -194,12 +200,14 @@ def layout_for_report(fields: list[Field], report_id: int, length: int) -> PenLa
                 barrels.append(bit)
             elif name and name not in found:
                 found[name] = (f, i)
-    if "x" not in found or "y" not in found or has_contact_id:
+    if "x" not in found or "y" not in found:
         return None
     xf = found["x"][0]
     app = xf.application
     pen_bits = {"tip", "in_range", "pressure", "invert", "eraser"} & found.keys()
-    in_stylus = any(c.usage == U.DG_STYLUS for c in xf.collections)
+    in_stylus = any(U.canonical(c.usage) == U.DG_STYLUS for c in xf.collections)
+    if has_contact_id and not in_stylus and U.canonical(app) != U.DG_PEN:
+        return None  # a touch contact, not a pen (pens may carry a contact/transducer id)
     if app in _MOUSE_APPLICATIONS:
         if not ({"pressure", "in_range"} & found.keys()):
             return None  # a mouse, not a pen in mouse mode

@@ -115,11 +115,11 @@ def wacom_graphire_layout(params: TabletParams) -> PenLayout:
 
 
 def wacom_penpartner_layout(params: TabletParams) -> PenLayout:
-    """PenPartner report 0x01: pressure is a signed byte offset by 127, eraser bit 5 of byte 5."""
+    """PenPartner report 0x01: pressure is a signed byte (-127 = no pressure), eraser bit 5 of byte 5."""
     return PenLayout(
         report_id=0x01, length=7, source="wacom-penpartner",
         x=_v(8, 16, params.x_max), y=_v(24, 16, params.y_max),
-        pressure=ValueField(((48, 8),), True, -127, 128),
+        pressure=ValueField(((48, 8),), True, -127, 127),
         in_range=47, b1=46, tool=(45, 1), pen_tools=(0, 1), eraser_tools=(1,),
     )
 
