@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import json
 
 from physink_tui.cli import main
@@ -22,7 +23,7 @@ def test_demo_writes_samples_and_summary(tmp_path, capsys) -> None:
     lines = (out / "samples.jsonl").read_text().splitlines()
     samples = [json.loads(line) for line in lines]
     assert len(samples) > 1000
-    downs = sum(1 for a, b in zip(samples, samples[1:], strict=False) if b["tip"] and not a["tip"])
+    downs = sum(1 for a, b in itertools.pairwise(samples) if b["tip"] and not a["tip"])
     assert downs + samples[0]["tip"] == len(EGG_CRACKER)
     assert all(0 <= s["x"] <= 1 and 0 <= s["y"] <= 1 and 0 <= s["p"] <= 1 for s in samples)
     summary = (out / "summary.txt").read_text()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from physink_tui.errors import DescriptorError
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.vendor_layouts import VID_HUION, VID_UCLOGIC, VID_WACOM, TabletParams
 
@@ -107,9 +108,10 @@ def test_wacom_graphire_mouse_tool_and_out_of_proximity() -> None:
     assert out is not None and not out.range and not out.tip
 
 
-def test_unknown_wacom_without_pen_descriptor_falls_back_to_graphire() -> None:
-    decoder = HidPenDecoder(WACOM_MOUSE_ONLY, VID_WACOM, 0x00FF)
-    assert decoder.layouts[0x02].source == "wacom-graphire"
+def test_unknown_older_wacom_falls_back_to_graphire_newer_ones_get_no_guess() -> None:
+    assert HidPenDecoder(WACOM_MOUSE_ONLY, VID_WACOM, 0x007F).layouts[0x02].source == "wacom-graphire"
+    with pytest.raises(DescriptorError, match="no pen report"):
+        HidPenDecoder(WACOM_MOUSE_ONLY, VID_WACOM, 0x0379)
 
 
 def test_two_button_families_read_bit_2_as_a_button_not_an_eraser() -> None:

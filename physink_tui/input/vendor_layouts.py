@@ -170,6 +170,9 @@ PROFILES: dict[tuple[int, int], Profile] = {
 # Fallbacks when neither a profile nor the vendor string gives maxima: ranges then widen with data.
 DEFAULT_V2_PARAMS = TabletParams(50800, 31750, 8191)
 DEFAULT_GRAPHIRE_PARAMS = TabletParams(10206, 7422, 511)
+# Wacom PIDs below this are the Graphire/Volito/PenStation/Bamboo1 generation; newer tablets without a
+# standard pen report (Intuos BT, Bamboo touch) speak protocols not built here and get no layout.
+OLDER_WACOM_PID_LIMIT = 0x0080
 
 
 def _declared_v1_params(layouts: dict[int, PenLayout]) -> TabletParams | None:
@@ -229,7 +232,8 @@ def device_layouts(
     if protocol == "huion-v2" or (vid == VID_HUION and _has_vendor_report(descriptor, 0x08, 12)):
         if 0x08 not in layouts or layouts[0x08].source != "descriptor":
             layouts[0x08] = huion_v2_layout(params or DEFAULT_V2_PARAMS)
-    if protocol == "wacom-graphire" or (vid == VID_WACOM and not layouts and _has_vendor_report(descriptor, 0x02)):
+    older_wacom = vid == VID_WACOM and (pid or 0) < OLDER_WACOM_PID_LIMIT
+    if protocol == "wacom-graphire" or (older_wacom and not layouts and _has_vendor_report(descriptor, 0x02)):
         layouts[0x02] = wacom_graphire_layout(params or DEFAULT_GRAPHIRE_PARAMS)
     if protocol == "wacom-penpartner":
         layouts[0x01] = wacom_penpartner_layout(params or TabletParams(5040, 3780, 255))
