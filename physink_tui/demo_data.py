@@ -10,7 +10,8 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
-from physink_tui.input.capture import Capture, format_capture, write_capture
+from physink_tui.input.capture import Capture
+from physink_tui.input.capture_writer import format_capture, write_capture
 from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
 from physink_tui.input.virtual_pen import Stroke, VirtualPen
 

@@ -14,9 +14,8 @@ from physink_tui.input.capture import (
     Capture,
     CaptureDevice,
     CaptureEvent,
-    format_capture,
-    write_capture,
 )
+from physink_tui.input.capture_writer import format_capture, write_capture
 
 DESCRIPTOR = bytes.fromhex("05 0d 09 02 a1 01 85 02 c0 c0")
 BEFORE_R = "event before the report descriptor ('R:' line) of device"

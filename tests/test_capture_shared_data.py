@@ -10,7 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from physink_tui.input.capture import Capture, format_capture
+from physink_tui.input.capture import Capture
+from physink_tui.input.capture_writer import format_capture
 
 HID_DIR = Path(__file__).resolve().parents[2] / "shared" / "data" / "hid"
 

@@ -12,7 +12,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from physink_tui.input import descriptor_builder as d
-from physink_tui.input.capture import Capture, format_capture
+from physink_tui.input.capture import Capture
+from physink_tui.input.capture_writer import format_capture
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.hid_descriptor import ReportDescriptor
 from physink_tui.input.pen_decoder import CompiledLayout

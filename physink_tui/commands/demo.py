@@ -9,24 +9,15 @@ from __future__ import annotations
 
 import argparse
 import io
-import os
 import sys
 from pathlib import Path
 
+from physink_tui.atomic_write import write_text_atomic
 from physink_tui.commands.decode import decode_capture, summary, write_jsonl
 from physink_tui.demo_data import DEMO_FILE, demo_capture_text
 from physink_tui.errors import PhysinkError
 from physink_tui.input.capture import Capture
 from physink_tui.render.braille import braille_plot
-
-
-def _write_atomic(path: Path, text: str) -> None:
-    tmp = path.with_name(f".{path.name}.tmp")
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(text)
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, path)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -41,8 +32,8 @@ def run(args: argparse.Namespace) -> int:
     samples = io.StringIO()
     write_jsonl(cols, samples)
     text_summary = summary(capture, results)
-    _write_atomic(out / "samples.jsonl", samples.getvalue())
-    _write_atomic(out / "summary.txt", text_summary + "\n")
+    write_text_atomic(out / "samples.jsonl", samples.getvalue())
+    write_text_atomic(out / "summary.txt", text_summary + "\n")
     tip = cols.tip.tolist()
     strokes = sum(1 for i, down in enumerate(tip) if down and (i == 0 or not tip[i - 1]))
     touching = [(x, y) for x, y, down in zip(cols.x.tolist(), cols.y.tolist(), tip, strict=True) if down]
