@@ -49,7 +49,7 @@ def of(kind, gestures: list) -> list:
 
 
 def test_a_stroke_from_pen_down_to_pen_up() -> None:
-    samples = [s(0.0, 0.1, 0.5)] + line(0.005, 50, 0.1, 0.6) + [s(0.3, 0.6, 0.5), s(0.35, 0.6, 0.5, rng=False)]
+    samples = [s(0.0, 0.1, 0.5), *line(0.005, 50, 0.1, 0.6), s(0.3, 0.6, 0.5), s(0.35, 0.6, 0.5, rng=False)]
     gestures = run(GestureEngine(), samples)
     kinds = [type(g).__name__ for g in gestures if type(g).__name__ != "PenMove"]
     assert kinds == ["ProximityChanged", "PenDown", "StrokeEnded", "ProximityChanged"]
@@ -62,14 +62,14 @@ def test_a_stroke_from_pen_down_to_pen_up() -> None:
 
 def test_a_short_still_touch_is_a_tap_not_a_stroke() -> None:
     samples = [s(0.0, 0.3, 0.3)] + [s(0.01 * i, 0.3 + 0.0005 * i, 0.3, 0.4) for i in range(1, 10)]
-    gestures = run(GestureEngine(), samples + [s(0.12, 0.3, 0.3)])
+    gestures = run(GestureEngine(), [*samples, s(0.12, 0.3, 0.3)])
     assert len(of(Tap, gestures)) == 1 and not of(StrokeEnded, gestures)
 
 
 def test_holding_still_400ms_dwells_then_the_drag_is_marked() -> None:
     hold = [s(0.005 * i, 0.4, 0.4, 0.5) for i in range(100)]  # 0.5 s within the radius
     drag = line(0.5, 40, 0.4, 0.7)
-    gestures = run(GestureEngine(), [s(-0.01, 0.4, 0.4)] + hold + drag + [s(0.8, 0.7, 0.5)])
+    gestures = run(GestureEngine(), [s(-0.01, 0.4, 0.4), *hold, *drag, s(0.8, 0.7, 0.5)])
     (dwell,) = of(Dwell, gestures)
     assert dwell.t == pytest.approx(0.4, abs=0.006) and (dwell.x, dwell.y) == (0.4, 0.4)
     (ended,) = of(StrokeEnded, gestures)
@@ -77,7 +77,7 @@ def test_holding_still_400ms_dwells_then_the_drag_is_marked() -> None:
 
 
 def test_moving_before_400ms_never_dwells() -> None:
-    gestures = run(GestureEngine(), line(0.0, 200, 0.1, 0.9) + [s(1.2, 0.9, 0.5)])
+    gestures = run(GestureEngine(), [*line(0.0, 200, 0.1, 0.9), s(1.2, 0.9, 0.5)])
     assert not of(Dwell, gestures)
     assert of(StrokeEnded, gestures)[0].stroke.dwell_t is None
 
@@ -100,7 +100,7 @@ def test_eraser_strokes_are_marked() -> None:
 
 def test_device_lost_mid_stroke_ends_the_stroke_cleanly() -> None:
     engine = GestureEngine()
-    run(engine, [s(0.0, 0.1, 0.5)] + line(0.005, 30, 0.1, 0.4))
+    run(engine, [s(0.0, 0.1, 0.5), *line(0.005, 30, 0.1, 0.4)])
     gestures = engine.device_lost(0.2)
     (ended,) = of(StrokeEnded, gestures)
     assert ended.stroke.ended_by == "device-lost" and len(ended.stroke.points) == 30
@@ -118,7 +118,7 @@ def test_timestamps_going_backwards_are_held_and_counted() -> None:
 
 
 def test_pen_leaving_range_while_touching_ends_the_stroke_first() -> None:
-    gestures = run(GestureEngine(), [s(0.0, 0.1, 0.5)] + line(0.01, 30, 0.1, 0.5) + [s(0.4, 0.5, 0.5, rng=False)])
+    gestures = run(GestureEngine(), [s(0.0, 0.1, 0.5), *line(0.01, 30, 0.1, 0.5), s(0.4, 0.5, 0.5, rng=False)])
     names = [type(g).__name__ for g in gestures if type(g).__name__ != "PenMove"]
     assert names[-2:] == ["StrokeEnded", "ProximityChanged"]
 

@@ -8,7 +8,7 @@ a ``t`` that goes backwards is held at the last value and counted, never trusted
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import PenState, PenStateMachine, TipThresholds
@@ -125,7 +125,7 @@ class GestureConfig:
     dwell_radius: float = 0.01
     tap_seconds: float = 0.25
     tap_radius: float = 0.008
-    thresholds: TipThresholds = TipThresholds()
+    thresholds: TipThresholds = field(default_factory=TipThresholds)
 
 
 class GestureEngine:
