@@ -29,15 +29,15 @@ EXIT_INTERRUPTED = 130
 HANDLERS: dict[str, str] = {
     "demo": "physink_tui.commands.demo:run",
     "decode": "physink_tui.commands.decode:run",
+    "replay": "physink_tui.commands.replay:run",
+    "devices": "physink_tui.commands.devices:run",
+    "record": "physink_tui.commands.record:run",
 }
 
 #: Subcommands not built yet: name -> where they are planned (shown to the user as is).
 PLANNED: dict[str, str] = {
     "tui": "a later issue: the Textual control panel",
     "kiosk": "a later issue: the headless recording service",
-    "devices": "issue #3: finding pen tablets",
-    "record": "issue #3: raw capture from a tablet",
-    "replay": "issue #3: headless replay of journals and captures",
     "recognize": "issue #4: stroke recognition",
     "timeline": "issue #6: the causal timeline",
     "equiv": "issue #6: timeline equivalence",

@@ -72,6 +72,8 @@ class PenLayout:
         pen_tools: tool codes that are pens or erasers; other tools (mice, lenses) are not pen samples.
         frame_byte: ``(byte_index, mask, values)``: reports whose masked byte is one of the values
             carry pad buttons, strips or dials in the pen's report id, not a pen sample.
+        size_mm: the active area's width and height in millimetres when the descriptor gives
+            physical extents in a length unit, else None.
     """
 
     report_id: int
@@ -95,6 +97,7 @@ class PenLayout:
     eraser_tools: tuple[int, ...] = ()
     pen_tools: tuple[int, ...] = ()
     frame_byte: tuple[int, int, tuple[int, ...]] | None = None
+    size_mm: tuple[float, float] | None = None
 
     def summary(self) -> str:
         """One line such as ``0x07 descriptor 8B: x y pressure tip range b1 b2``."""
@@ -134,6 +137,23 @@ def tilt_from_field(f: Field, index: int = 0) -> ValueField:
     if system == _UNIT_SYSTEM_RADIANS:
         slope, offset = math.degrees(slope), math.degrees(offset)
     return replace(v, scale=slope, offset=offset)
+
+
+_MM_PER_UNIT = {1: 10.0, 3: 25.4}  # unit system 1 = SI linear (cm), 3 = English linear (inch)
+
+
+def _extent_mm(f: Field) -> float | None:
+    system, length = f.unit & 0xF, (f.unit >> 4) & 0xF
+    span = f.physical_max - f.physical_min
+    if system not in _MM_PER_UNIT or length != 1 or span <= 0:
+        return None
+    return span * (10.0 ** f.unit_exponent) * _MM_PER_UNIT[system]
+
+
+def _size_mm(xf: Field, yf: Field) -> tuple[float, float] | None:
+    """Physical width and height of the active area, when both axes declare them in a length unit."""
+    w, h = _extent_mm(xf), _extent_mm(yf)
+    return (w, h) if w and h else None
 
 
 _PEN_APPLICATIONS = {U.DG_DIGITIZER, U.DG_PEN, U.DG_LIGHT_PEN, U.DG_TOUCH_SCREEN, U.DG_WHITEBOARD,
@@ -238,6 +258,7 @@ def layout_for_report(fields: list[Field], report_id: int, length: int) -> PenLa
         report_id=report_id,
         length=length,
         source=source,
+        size_mm=_size_mm(found["x"][0], found["y"][0]),
         x=value_from_field(*found["x"]),
         y=value_from_field(*found["y"]),
         pressure=value_from_field(*found["pressure"]) if "pressure" in found else None,
@@ -265,3 +286,23 @@ def pen_layouts(descriptor: ReportDescriptor) -> dict[int, PenLayout]:
         if layout is not None:
             layouts[report.report_id] = layout
     return layouts
+
+
+def tablet_size(layouts: dict[int, PenLayout]) -> tuple[float, float] | None:
+    """Best guess at the active area's proportions (width, height) for the canvas mapping.
+
+    Physical extents win when they are plausible for a tablet (30 mm to 1.5 m a side); else the
+    logical ranges of the widest-range layout, unless they are square and suspiciously generic
+    (mouse-mode reports scaled to 0..2047 or 0..32767 on both axes). None when nothing is credible.
+    """
+    for lay in sorted(layouts.values(), key=lambda lay: -(lay.x.hi - lay.x.lo)):
+        size = lay.size_mm
+        if size and all(30.0 <= v <= 1500.0 for v in size) and 0.3 < size[0] / size[1] < 3.5:
+            return size
+    best = max(layouts.values(), key=lambda lay: lay.x.hi - lay.x.lo, default=None)
+    if best is None:
+        return None
+    w, h = best.x.hi - best.x.lo, best.y.hi - best.y.lo
+    if w == h or not 0.3 < w / h < 3.5:
+        return None
+    return float(w), float(h)

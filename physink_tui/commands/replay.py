@@ -1,0 +1,107 @@
+"""`physink replay`: runs the input side over a capture or a journal and reports the gestures found.
+
+Until the scene and timeline exist (later issues) a replay stops at gestures: it prints them, one
+line each, and writes them to ``DIR/gestures.jsonl``. A capture is replayed device by device in file
+order as live reports would arrive; a journal's ``hid`` lines go through their device's decoder, its
+``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from physink_tui.atomic_write import write_text_atomic
+from physink_tui.commands.decode import read_capture
+from physink_tui.commands.gesture_output import gesture_json, gesture_text
+from physink_tui.errors import DescriptorError, PhysinkError
+from physink_tui.input.capture import Capture
+from physink_tui.input.gestures import Gesture
+from physink_tui.input.hid_decoder import HidPenDecoder
+from physink_tui.input.mapping import TabletMapping
+from physink_tui.input.pen_input import PenInput
+from physink_tui.input.pen_layout import tablet_size
+from physink_tui.input.sources import RawReport, SourceEnded
+
+
+def is_journal(path: Path) -> bool:
+    """A journal is JSON Lines (its first character is ``{``); a capture is hid-recorder text."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(64).lstrip()
+    except OSError as exc:
+        raise PhysinkError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    return head.startswith(b"{")
+
+
+def replay_capture(capture: Capture) -> tuple[list[Gesture], list[str]]:
+    """Gestures of a capture (all its devices), and notes for the summary."""
+    pen: PenInput | None = None
+    ids = {}
+    decoders = []
+    for device in capture.devices:
+        try:
+            decoder = HidPenDecoder(device.descriptor, device.vid, device.pid)
+        except DescriptorError as exc:
+            raise DescriptorError(f"{capture.path}: device {device.index}: {exc}") from None
+        decoders.append((device.index, decoder))
+    size = tablet_size(decoders[0][1].layouts) if decoders else None
+    mapping = TabletMapping(tablet_width=size[0], tablet_height=size[1]) if size else TabletMapping()
+    pen = PenInput(mapping)
+    for index, decoder in decoders:
+        ids[index] = f"tablet{index}"
+        pen.add_hid_device(ids[index], decoder)
+    gestures: list[Gesture] = []
+    last_t = 0.0
+    for event in capture.events:
+        last_t = event.t
+        gestures += pen.handle(RawReport(event.t, event.data, ids[event.device]))
+    for index in ids:
+        gestures += pen.handle(SourceEnded(last_t, ids[index], None))
+    notes = [f"{ids[i]}: {d.stats.reports} reports, {d.stats.samples} pen samples" for i, d in decoders]
+    if capture.bad_lines:
+        first = capture.bad_lines[0]
+        notes.append(f"{len(capture.bad_lines)} capture lines skipped; first bad line {first.line}: {first.reason}")
+    return gestures, notes
+
+
+def replay_journal(path: Path) -> tuple[list[Gesture], list[str], list[str]]:
+    """Gestures of a journal, the lines for its commands and utterances, and notes."""
+    from physink_tui.input.journal_replay import replay_journal_input  # the journal package is an edge too
+
+    return replay_journal_input(path)
+
+
+def run(args: argparse.Namespace) -> int:
+    path = Path(args.file)
+    if args.video or args.frames:
+        print("physink replay: --video and --frames need the renderer (a later issue); not written",
+              file=sys.stderr)
+    events: list[str] = []
+    if is_journal(path):
+        gestures, events, notes = replay_journal(path)
+    else:
+        gestures, notes = replay_capture(read_capture(str(path)))
+    out = Path(args.out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise PhysinkError(f"{out}: cannot create the output folder: {exc.strerror or exc}") from None
+    for line in _merge(events, gestures):
+        print(line)
+    body = "".join(f"{j}\n" for g in gestures if (j := gesture_json(g)) is not None)
+    write_text_atomic(out / "gestures.jsonl", body)
+    strokes = sum(1 for g in gestures if type(g).__name__ == "StrokeEnded")
+    taps = sum(1 for g in gestures if type(g).__name__ == "Tap")
+    print(f"replay: {strokes} strokes, {taps} taps; gestures written to {out / 'gestures.jsonl'}", file=sys.stderr)
+    for note in notes:
+        print(f"  {note}", file=sys.stderr)
+    return 0
+
+
+def _merge(events: list[str], gestures: list[Gesture]) -> list[str]:
+    """Journal command/utterance lines (each starting with its time) merged with gesture lines by time."""
+    rows = [(float(e.split()[0]), 0, e) for e in events]
+    rows += [(g.t, 1, text) for g in gestures if (text := gesture_text(g)) is not None]
+    return [text for _, _, text in sorted(rows, key=lambda r: (r[0], r[1]))]
