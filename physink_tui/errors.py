@@ -52,4 +52,12 @@ class RenderError(PhysinkError):
 
 
 class DeviceError(PhysinkError):
-    """A tablet or serial device that cannot be found, opened or read."""
+    """A tablet or serial device that cannot be found, opened or read.
+
+    Attributes:
+        device: the device's path, port or VID:PID as the user named it, or None.
+    """
+
+    def __init__(self, message: str, device: str | None = None) -> None:
+        self.device = device
+        super().__init__(message)

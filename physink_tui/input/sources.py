@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import queue
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Protocol, runtime_checkable
 
 from physink_tui.errors import DeviceError
 from physink_tui.input.pen_sample import PenSample
@@ -63,6 +63,7 @@ class SourceEnded:
 SourceItem = RawReport | SampleReady | SourceEnded
 
 
+@runtime_checkable
 class PenSource(Protocol):
     """A started source puts `SourceItem`s on ``out`` from its own thread until stopped or ended."""
 
