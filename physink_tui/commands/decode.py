@@ -9,9 +9,10 @@ import sys
 from typing import TextIO
 
 from physink_tui.errors import CaptureFormatError, DescriptorError
-from physink_tui.input.capture import Capture
+from physink_tui.input.capture import Capture, CaptureDevice
 from physink_tui.input.hid_batch import PenColumns, decode_batch
 from physink_tui.input.hid_decoder import HidPenDecoder
+from physink_tui.input.vendor_init import find_vendor_init
 
 TEXT_HEADER = "       t        x        y        p tip rng era b1 b2  tilt_x  tilt_y  report"
 
@@ -24,12 +25,20 @@ def read_capture(path: str) -> Capture:
         raise CaptureFormatError(f"cannot read capture: {exc.strerror or exc}", path) from None
 
 
+def decoder_for(device: CaptureDevice) -> HidPenDecoder:
+    """The device's decoder, with the vendor protocol and maxima `physink record` noted in the capture."""
+    init = find_vendor_init(device.comments)
+    if init is None:
+        return HidPenDecoder(device.descriptor, device.vid, device.pid)
+    return HidPenDecoder(device.descriptor, device.vid, device.pid, params=init.params, protocol=init.protocol)
+
+
 def decode_capture(capture: Capture) -> list[tuple[int, HidPenDecoder, PenColumns]]:
     """Decode every device of a capture in batch; ``(device index, decoder, columns)`` each."""
     results = []
     for device in capture.devices:
         try:
-            decoder = HidPenDecoder(device.descriptor, device.vid, device.pid)
+            decoder = decoder_for(device)
         except DescriptorError as exc:
             where = f"device {device.index} ({device.name or 'unnamed'})"
             raise DescriptorError(f"{capture.path or 'capture'}: {where}: {exc}") from None

@@ -13,12 +13,11 @@ import sys
 from pathlib import Path
 
 from physink_tui.atomic_write import write_text_atomic
-from physink_tui.commands.decode import read_capture
+from physink_tui.commands.decode import decoder_for, read_capture
 from physink_tui.commands.gesture_output import gesture_json, gesture_text
 from physink_tui.errors import DescriptorError, PhysinkError
 from physink_tui.input.capture import Capture
 from physink_tui.input.gestures import Gesture
-from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.mapping import TabletMapping
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_layout import tablet_size
@@ -42,7 +41,7 @@ def replay_capture(capture: Capture) -> tuple[list[Gesture], list[str]]:
     decoders = []
     for device in capture.devices:
         try:
-            decoder = HidPenDecoder(device.descriptor, device.vid, device.pid)
+            decoder = decoder_for(device)
         except DescriptorError as exc:
             raise DescriptorError(f"{capture.path}: device {device.index}: {exc}") from None
         decoders.append((device.index, decoder))

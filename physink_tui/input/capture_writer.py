@@ -61,9 +61,18 @@ def format_capture(capture: Capture) -> str:
                 raise ValueError(f"event at t={e.t!r} is for device {e.device}, which the capture lacks")
             out.append(f"D: {e.device}")
             current = e.device
-        out.append(_bytes_line("E:", f"{_format_time(e.t)} {len(e.data)}", e.data))
+        out.append(event_line(e.t, e.data))
     out.append("")
     return "\n".join(out)
+
+
+def event_line(t: float, data: bytes) -> str:
+    """One ``E:`` line (without newline) as hid-recorder writes it; for writers that stream events.
+
+    >>> event_line(1.5, bytes([2, 0x21]))
+    'E: 000001.500000 2 02 21'
+    """
+    return _bytes_line("E:", f"{_format_time(t)} {len(data)}", data)
 
 
 def _bytes_line(kind: str, head: str, data: bytes) -> str:

@@ -1,0 +1,160 @@
+"""The journal header's JSON line, both ways, checked key by key; entries are `codec`'s, files are not here.
+
+The header is written in a fixed key order (``format``, ``version``, ``program``, ``canvas``, ``devices``,
+``mapping``, ``tip_thresholds``), devices in the order given and the opaque ``mapping`` with sorted keys, so
+the same header always gives the same bytes and a header read back re-encodes to the bytes it was read from.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from physink_tui.errors import JournalError
+from physink_tui.journal import checks
+from physink_tui.journal.checks import bad, get, show
+from physink_tui.journal.codec import compact_json, json_string, parse_object
+from physink_tui.journal.entries import FORMAT, FORMAT_VERSION, JournalDevice, JournalHeader
+
+HEADER_KEYS = ("format", "version", "program", "canvas", "devices", "mapping", "tip_thresholds")
+"""The header's keys, in the order written."""
+
+DEVICE_KEYS = ("name", "bus", "vid", "pid", "descriptor")
+"""The keys of each device object, in the order written."""
+
+_INT = "null or an integer in 0..65535"
+_HEX = 'hex bytes separated by spaces, e.g. "05 0d 09 02"'
+
+
+def encode_header(header: JournalHeader) -> str:
+    """The header as one line (without the newline), after checking every field.
+
+    >>> h = JournalHeader(800, 600, (JournalDevice("pen0", "Pen", 3, 0x56A, 0x350, b"\\xa1\\xc0"),), {}, 0.05, 0.01,
+    ...                   program="physink-tui 0.1.0")
+    >>> encode_header(h)
+    '{"format":"physink-journal","version":1,"program":"physink-tui 0.1.0","canvas":{"width":800,...'
+    >>> print(encode_header(h).partition('"devices":')[2])
+    {"pen0":{"name":"Pen","bus":3,"vid":1386,"pid":848,"descriptor":"a1 c0"}},"mapping":{},"tip_thresholds":{...}}
+    """
+    where = "header"
+    canvas = {
+        "width": checks.positive(where, "canvas.width", header.canvas_width),
+        "height": checks.positive(where, "canvas.height", header.canvas_height),
+    }
+    devices: dict[str, Any] = {}
+    for dev in header.devices:
+        if not isinstance(dev, JournalDevice):
+            raise bad(where, "devices", "JournalDevice values", dev)
+        checks.text(where, "devices", dev.id, empty=False)
+        if dev.id in devices:
+            raise JournalError(f'{where}: key "devices": device id {show(dev.id)} appears twice')
+        key = f"devices.{dev.id}"
+        name = dev.name if dev.name is None else checks.text(where, f"{key}.name", dev.name)
+        devices[dev.id] = {
+            "name": name,
+            "bus": checks.optional_int(where, f"{key}.bus", dev.bus, 0xFFFF),
+            "vid": checks.optional_int(where, f"{key}.vid", dev.vid, 0xFFFF),
+            "pid": checks.optional_int(where, f"{key}.pid", dev.pid, 0xFFFF),
+            "descriptor": checks.report_bytes(where, f"{key}.descriptor", dev.descriptor).hex(" "),
+        }
+    if not isinstance(header.mapping, dict):
+        raise bad(where, "mapping", "an object", header.mapping)
+    checks.json_value(where, "mapping", header.mapping)
+    down, up = _tip_thresholds(where, header.tip_down, header.tip_up)
+    parts = [
+        f'"format":{json_string(FORMAT)}',
+        f'"version":{FORMAT_VERSION}',
+        f'"program":{json_string(checks.text(where, "program", header.program, empty=False))}',
+        f'"canvas":{compact_json(canvas)}',
+        f'"devices":{compact_json(devices)}',
+        f'"mapping":{compact_json(header.mapping, sort_keys=True)}',
+        f'"tip_thresholds":{{"down":{down!r},"up":{up!r}}}',
+    ]
+    return "{" + ",".join(parts) + "}"
+
+
+def _tip_thresholds(where: str, down: Any, up: Any) -> tuple[float, float]:
+    down = checks.unit(where, "tip_thresholds.down", down)
+    if down <= 0.0:
+        raise bad(where, "tip_thresholds.down", "a number in (0, 1]", down)
+    up_value = checks.unit(where, "tip_thresholds.up", up)
+    if not up_value < down:
+        raise bad(where, "tip_thresholds.up", f"a number >= 0 and below down {down!r}", up)
+    return down, up_value
+
+
+def decode_header(text: str, lineno: int = 1, warnings: list[str] | None = None) -> JournalHeader:
+    """The header read from its line; unknown keys are ignored and reported in ``warnings`` when given.
+
+    Raises:
+        JournalError: ``line <lineno>: key "<key>": expected ..., got ...`` for the first bad field.
+
+    >>> decode_header('{"format":"physink-journal","version":2}')
+    Traceback (most recent call last):
+    ...
+    physink_tui.errors.JournalError: line 1: key "version": expected 1 (the newest version this program reads), got 2
+    """
+    where = f"line {lineno}"
+    obj = parse_object(text, where)
+    found = get(obj, where, "format", "format", f'"{FORMAT}" (the first line must be the journal header)')
+    if found != FORMAT:
+        raise bad(where, "format", f'"{FORMAT}" (the first line must be the journal header)', found)
+    version = get(obj, where, "version", "version", f"{FORMAT_VERSION}")
+    if type(version) is not int or version != FORMAT_VERSION:
+        raise bad(where, "version", f"{FORMAT_VERSION} (the newest version this program reads)", version)
+    program = checks.text(where, "program", get(obj, where, "program", "program", "a string"), empty=False)
+    canvas = _sub_object(obj, where, "canvas", ("width", "height"), warnings)
+    width = checks.positive(where, "canvas.width", get(canvas, where, "width", "canvas.width", "a number > 0"))
+    height = checks.positive(where, "canvas.height", get(canvas, where, "height", "canvas.height", "a number > 0"))
+    devices = tuple(_decode_devices(where, get(obj, where, "devices", "devices", "an object"), warnings))
+    mapping = get(obj, where, "mapping", "mapping", "an object")
+    if not isinstance(mapping, dict):
+        raise bad(where, "mapping", "an object", mapping)
+    checks.json_value(where, "mapping", mapping)
+    tips = _sub_object(obj, where, "tip_thresholds", ("down", "up"), warnings)
+    down, up = _tip_thresholds(
+        where,
+        get(tips, where, "down", "tip_thresholds.down", "a number in (0, 1]"),
+        get(tips, where, "up", "tip_thresholds.up", "a number in [0, 1)"),
+    )
+    if warnings is not None:
+        warnings.extend(checks.unknown_key(where, key) for key in obj if key not in HEADER_KEYS)
+    return JournalHeader(width, height, devices, mapping, down, up, program)
+
+
+def _sub_object(
+    obj: dict[str, Any], where: str, key: str, keys: tuple[str, ...], warnings: list[str] | None
+) -> dict[str, Any]:
+    expected = "an object with " + " and ".join(keys)
+    value = get(obj, where, key, key, expected)
+    if not isinstance(value, dict):
+        raise bad(where, key, expected, value)
+    if warnings is not None:
+        warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in value if k not in keys)
+    return value
+
+
+def _decode_devices(where: str, devices: Any, warnings: list[str] | None) -> list[JournalDevice]:
+    if not isinstance(devices, dict):
+        raise bad(where, "devices", "an object of device id -> device", devices)
+    out = []
+    for dev_id, dev in devices.items():
+        checks.text(where, "devices", dev_id, empty=False)
+        key = f"devices.{dev_id}"
+        expected = "an object with " + ", ".join(DEVICE_KEYS)
+        if not isinstance(dev, dict):
+            raise bad(where, key, expected, dev)
+        name = get(dev, where, "name", f"{key}.name", "a string or null")
+        out.append(
+            JournalDevice(
+                dev_id,
+                None if name is None else checks.text(where, f"{key}.name", name),
+                *(
+                    checks.optional_int(where, f"{key}.{k}", get(dev, where, k, f"{key}.{k}", _INT), 0xFFFF)
+                    for k in ("bus", "vid", "pid")
+                ),
+                checks.hex_bytes(where, f"{key}.descriptor", get(dev, where, "descriptor", f"{key}.descriptor", _HEX)),
+            )
+        )
+        if warnings is not None:
+            warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in dev if k not in DEVICE_KEYS)
+    return out
