@@ -1,0 +1,64 @@
+"""Runs a journal's inputs through the input side: its HID and pen lines to gestures; no scene.
+
+The header gives each device's descriptor, the tablet-to-canvas mapping and the tip thresholds, so
+the replay decodes exactly as the session did. Commands and utterances are listed with their times
+for the caller (the session that will act on them comes with a later issue).
+"""
+
+from __future__ import annotations
+
+import os
+
+from physink_tui.errors import JournalError
+from physink_tui.input.gestures import Gesture, GestureConfig
+from physink_tui.input.hid_decoder import HidPenDecoder
+from physink_tui.input.mapping import TabletMapping, mapping_from_header
+from physink_tui.input.pen_input import PenInput
+from physink_tui.input.pen_sample import PenSample
+from physink_tui.input.pen_state import TipThresholds
+from physink_tui.input.sources import RawReport, SourceEnded
+from physink_tui.journal.entries import CommandEntry, HidEntry, PenEntry, SayEntry
+from physink_tui.journal.reader import read_journal
+
+PEN_DEVICE = "pen"
+"""The device id of journal ``pen`` lines (canvas samples from the mouse, serial tablets, scripts)."""
+
+
+def replay_journal_input(path: str | os.PathLike[str]) -> tuple[list[Gesture], list[str], list[str]]:
+    """Gestures of a journal, one line per command or utterance (time first), and notes."""
+    journal = read_journal(path)
+    header = journal.header
+    try:
+        mapping = mapping_from_header(header.mapping) if header.mapping else TabletMapping()
+    except ValueError as exc:
+        raise JournalError(f"{path}: line 1: key \"mapping\": {exc}") from None
+    config = GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up))
+    pen = PenInput(mapping, config)
+    for device in header.devices:
+        pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid))
+    pen.add_sample_device(PEN_DEVICE, canvas_space=True)
+    gestures: list[Gesture] = []
+    events: list[str] = []
+    last_t = 0.0
+    for entry in journal.entries:
+        last_t = entry.t
+        if isinstance(entry, HidEntry):
+            gestures += pen.handle(RawReport(entry.t, entry.data, entry.dev))
+        elif isinstance(entry, PenEntry):
+            sample = PenSample(entry.t, entry.x, entry.y, entry.p, entry.tip, entry.range, entry.eraser,
+                               entry.b1, entry.b2, None, None, 0)
+            gestures += pen.feed_canvas_sample(PEN_DEVICE, sample)
+        elif isinstance(entry, CommandEntry):
+            args = " ".join(str(a) for a in entry.args)
+            events.append(f"{entry.t:9.3f}  command       {entry.name} {args}".rstrip())
+        elif isinstance(entry, SayEntry):
+            events.append(f"{entry.t:9.3f}  said          {entry.text!r}")
+    for device_id in list(pen.devices):
+        gestures += pen.handle(SourceEnded(last_t, device_id, None))
+    notes = list(journal.warnings)
+    if journal.truncated is not None:
+        notes.append(f"line {journal.truncated} is incomplete (the writer stopped mid-line); read up to it")
+    for device in header.devices:
+        stats = pen.devices[device.id].decoder.stats
+        notes.append(f"{device.id}: {stats.reports} reports, {stats.samples} pen samples")
+    return gestures, events, notes
