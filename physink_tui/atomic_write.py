@@ -34,10 +34,10 @@ def write_text_atomic(path: str | os.PathLike[str], text: str) -> None:
         except FileNotFoundError:
             pass
         raise
-    _fsync_directory(directory)
+    fsync_directory(directory)
 
 
-def _fsync_directory(directory: str) -> None:
+def fsync_directory(directory: str) -> None:
     """Makes the rename durable where the platform allows it (best effort)."""
     try:
         dir_fd = os.open(directory, os.O_RDONLY)

@@ -21,6 +21,7 @@ import time
 from collections.abc import Callable
 from types import TracebackType
 
+from physink_tui.atomic_write import fsync_directory
 from physink_tui.errors import JournalError
 from physink_tui.journal.codec import encode_entry
 from physink_tui.journal.entries import JournalEntry, JournalHeader
@@ -98,7 +99,7 @@ class JournalWriter:
             os.close(fd)
             _remove(target)
             raise JournalError(f"cannot create journal {target}: {e.strerror or e}") from None
-        _fsync_directory(os.path.dirname(os.path.abspath(target)))
+        fsync_directory(os.path.dirname(os.path.abspath(target)))
         return cls(target, fd, header, len(data), clock)
 
     def append(self, entry: JournalEntry) -> None:
@@ -232,17 +233,3 @@ def _remove(path: str) -> None:
         os.unlink(path)
     except OSError:
         pass  # a half-created journal cannot be removed; its header line is cut and the reader says so
-
-
-def _fsync_directory(directory: str) -> None:
-    """Makes the new file's name durable where the platform allows it (best effort)."""
-    try:
-        dir_fd = os.open(directory, os.O_RDONLY)
-    except OSError:
-        return
-    try:
-        os.fsync(dir_fd)
-    except OSError:
-        pass  # some file systems cannot fsync a directory
-    finally:
-        os.close(dir_fd)
