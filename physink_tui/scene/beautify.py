@@ -1,0 +1,122 @@
+"""Beautified geometry for recognised strokes: clean circles, boxes, arcs, curves, springs, X-symbols.
+
+Pure functions from a resampled stroke (numpy (n, 2) array) and its fits to the frozen primitives
+of `primitives`; each returns None when the stroke does not have the shape's structure.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.primitives import Arc, Box, Circle, Curve, Ellipse, Helix, Line, XSymbol
+from physink_tui.scene.shape_fits import fit_cubic
+
+
+def _pt(v: np.ndarray) -> tuple[float, float]:
+    return (float(v[0]), float(v[1]))
+
+
+def round_geometry(ellipse: tuple, circle_ratio: float) -> tuple[Circle | Ellipse, str]:
+    centre, rx, ry, angle, _ = ellipse
+    if ry / rx >= circle_ratio:
+        return Circle(_pt(centre), (rx + ry) / 2), "circle"
+    return Ellipse(_pt(centre), rx, ry, math.atan2(math.sin(angle), math.cos(angle))), "ellipse"
+
+
+def box_geometry(vertices: np.ndarray, tolerance_deg: float = 24.0) -> Box | None:
+    """A rectangle when the polygon has four sides meeting at roughly right angles."""
+    if len(vertices) != 4:
+        return None
+    sides = [vertices[(i + 1) % 4] - vertices[i] for i in range(4)]
+    lengths = [float(np.hypot(*s)) for s in sides]
+    if min(lengths) == 0.0:
+        return None
+    for i in range(4):
+        a, b = sides[i], sides[(i + 1) % 4]
+        cos = float(a @ b) / (lengths[i] * lengths[(i + 1) % 4])
+        if abs(math.degrees(math.acos(max(-1.0, min(1.0, cos)))) - 90.0) > tolerance_deg:
+            return None
+    # the box's orientation: mean direction of the sides, folded onto a quarter turn
+    angles = [math.atan2(s[1], s[0]) % (math.pi / 2) for s in sides]
+    mean = math.atan2(sum(math.sin(4 * a) for a in angles), sum(math.cos(4 * a) for a in angles)) / 4
+    c, s = math.cos(mean), math.sin(mean)
+    centre = vertices.mean(axis=0)
+    rel = vertices - centre
+    u, v = rel @ np.array([c, s]), rel @ np.array([-s, c])
+    width = float(u.max() - u.min() + (np.abs(u).mean() * 2)) / 2
+    height = float(v.max() - v.min() + (np.abs(v).mean() * 2)) / 2
+    return Box(_pt(centre), width, height, mean)
+
+
+def arc_geometry(work: np.ndarray, centre: np.ndarray, radius: float) -> Arc:
+    angles = np.unwrap(np.arctan2(work[:, 1] - centre[1], work[:, 0] - centre[0]))
+    return Arc(_pt(centre), radius, float(angles[0]), float(angles[-1] - angles[0]))
+
+
+def curve_geometry(work: np.ndarray, corners: list[int], tolerance: float = 0.04) -> Curve:
+    """Cubic Bézier segments between corners, split until each fits within ``tolerance`` of its chord."""
+    ctrl: list[tuple[float, float]] = [_pt(work[0])]
+
+    def add(a: int, b: int, depth: int) -> None:
+        cubic, err = fit_cubic(work[a:b + 1])
+        if err > tolerance and depth < 4 and b - a >= 8:
+            mid = (a + b) // 2
+            add(a, mid, depth + 1)
+            add(mid, b, depth + 1)
+            return
+        ctrl.extend(_pt(p) for p in cubic[1:])
+
+    for a, b in zip(corners, corners[1:], strict=False):
+        add(a, b, 0)
+    return Curve(tuple(ctrl))
+
+
+def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Helix | None:
+    """A spring: at least two loops turning the same way whose centres advance along an axis."""
+    turns = abs(total_turn) / (2 * math.pi)
+    if turns < 1.8 or abs(total_turn) < 0.7 * abs_turn:
+        return None
+    d = np.diff(work, axis=0)
+    heading = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    rel = np.abs(heading - heading[0])
+    loop_ids = np.minimum((rel // (2 * math.pi)).astype(int), int(turns))
+    centres, radii = [], []
+    for k in range(int(turns) + 1):
+        members = work[1:][loop_ids == k]
+        if len(members) >= 5:
+            c = members.mean(axis=0)
+            centres.append(c)
+            radii.append(float(np.hypot(*(members - c).T).mean()))
+    if len(centres) < 2:
+        return None
+    radius = float(np.median(radii))
+    advance = float(np.hypot(*(centres[-1] - centres[0])))
+    if radius == 0.0 or advance < 0.8 * radius:
+        return None  # loops on the same spot: a shape drawn several times round, not a spring
+    return Helix(_pt(centres[0]), _pt(centres[-1]), radius, turns)
+
+
+def x_symbol(a: Line, b: Line) -> tuple[XSymbol, float] | None:
+    """Two lines make an X when they cross, their midpoints are close and they are roughly
+    perpendicular (thesis 3.2.1): ``(symbol, confidence)`` or None."""
+    p, r = np.array(a.start), np.array(a.end) - np.array(a.start)
+    q, s = np.array(b.start), np.array(b.end) - np.array(b.start)
+    denom = r[0] * s[1] - r[1] * s[0]
+    la, lb = float(np.hypot(*r)), float(np.hypot(*s))
+    if denom == 0.0 or la == 0.0 or lb == 0.0:
+        return None
+    t = ((q - p)[0] * s[1] - (q - p)[1] * s[0]) / denom
+    u = ((q - p)[0] * r[1] - (q - p)[1] * r[0]) / denom
+    if not (0.0 <= t <= 1.0 and 0.0 <= u <= 1.0):
+        return None
+    mid_gap = float(np.hypot(*((p + r / 2) - (q + s / 2))))
+    if mid_gap > 0.4 * (la + lb) / 2:
+        return None
+    angle = math.degrees(math.acos(min(1.0, abs(float(r @ s)) / (la * lb))))
+    if angle < 45.0:
+        return None
+    centre = p + t * r
+    confidence = 0.5 + 0.5 * min(1.0, (angle - 45.0) / 40.0) * (1.0 - mid_gap / (0.4 * (la + lb) / 2))
+    return XSymbol(_pt(centre), a, b), confidence

@@ -1,0 +1,218 @@
+"""Recognises one stroke (or an X of two) as a primitive with a beautified geometry; no I/O, no clock.
+
+In PaleoSketch's manner (Paulson & Hammond 2008) every primitive gets its own geometric test on a
+cleaned, resampled stroke, and the passing ones are ranked: line before polyline, round shapes and
+boxes before freeform polygons, arcs before free curves. Thresholds are ratios (distance over
+size, angles), never absolute distances, so the answer is the same at any scale and rotation.
+
+>>> import math
+>>> circle = [(10 * math.cos(a / 20), 10 * math.sin(a / 20)) for a in range(126)]
+>>> recognize_stroke(circle).kind
+'circle'
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+from physink_tui.scene import stroke_geometry as sg
+from physink_tui.scene.beautify import (
+    arc_geometry,
+    box_geometry,
+    curve_geometry,
+    helix_geometry,
+    round_geometry,
+    x_symbol,
+)
+from physink_tui.scene.primitives import Line, Polygon, Polyline, Recognition
+from physink_tui.scene.shape_fits import fit_circle, fit_ellipse, fit_line
+
+TOO_SHORT = "too short to recognise"
+STRAIGHT = 0.12  # a segment is straight when it strays from its chord by less than this fraction
+LINE = 0.045  # a whole stroke is a line when it strays from its fit by less than this fraction
+ROUND_ERROR = 0.085  # normalised radial error below which a closed stroke is an ellipse
+NEARLY_ROUND = 1.4  # an open smooth stroke turning more than this many pi radians is a round shape left open
+CIRCLE_RATIO = 0.8  # minor/major axis ratio above which an ellipse is a circle
+
+
+def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | None]:
+    try:
+        pts = np.asarray(points, dtype=float)
+    except (TypeError, ValueError):
+        return None, "points must be pairs of numbers"
+    if pts.ndim != 2 or pts.shape[0] == 0 or pts.shape[1] < 2:
+        return None, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
+    pts = pts[:, :2]
+    bad = ~np.isfinite(pts).all(axis=1)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        return None, f"coordinates must be finite numbers; point {i} is ({pts[i, 0]!r}, {pts[i, 1]!r})"
+    if len(pts) > sg.MAX_WORKING_POINTS:
+        pts = sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS)
+    pts = sg.drop_duplicates(pts)
+    if len(pts) < 2:
+        return None, f"{TOO_SHORT}: a single point"
+    if sg.bbox_diagonal(pts) == 0.0:
+        return None, f"{TOO_SHORT}: no extent"
+    return pts, None
+
+
+def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None) -> Recognition:
+    """Recognise one stroke given as (x, y) points (extra columns such as t are ignored).
+
+    ``times`` are accepted for symmetry with pen input; the tests are geometric.
+    """
+    pts, reason = _clean(points)
+    if pts is None:
+        return Recognition(None, 0.0, None, (), reason)
+    if len(pts) == 2:
+        return Recognition("line", 1.0, Line(tuple(pts[0]), tuple(pts[-1])))
+    return _classify(pts)
+
+
+def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]]) -> Recognition:
+    """One stroke, or two consecutive strokes that may be an X-symbol (thesis 3.2.1)."""
+    if len(strokes) == 1:
+        return recognize_stroke(strokes[0])
+    if len(strokes) != 2:
+        return Recognition(None, 0.0, None, (), f"expected one stroke or two (an X), got {len(strokes)}")
+    first, second = recognize_stroke(strokes[0]), recognize_stroke(strokes[1])
+    if first.kind == "line" and second.kind == "line":
+        x = x_symbol(first.geometry, second.geometry)
+        if x is not None:
+            return Recognition("x", x[1], x[0], (("line", 0.5),))
+        return Recognition(None, 0.0, None, (("line", first.confidence),),
+                           "two lines that do not make an X (they must cross near their middles, "
+                           "roughly perpendicular)")
+    return Recognition(None, 0.0, None, (), "only two crossing short lines make a two-stroke symbol (an X)")
+
+
+def _classify(raw: np.ndarray) -> Recognition:
+    diag = sg.bbox_diagonal(raw)
+    length = sg.path_length(raw)
+    n = int(min(max(64, 40 * length / diag), 480))
+    work = sg.resample(raw, n)
+    work = sg.remove_hooks(work)
+    work = sg.resample(work, n)
+    diag = sg.bbox_diagonal(work)
+    length = sg.path_length(work)
+    chord = float(np.hypot(*(work[-1] - work[0])))
+    th = sg.turning(work)
+    total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
+
+    # a line: close to its fit, no more ink than its chord
+    _, _, line_err = fit_line(work)
+    if line_err < LINE and length < 1.12 * chord:
+        conf = 1.0 - line_err / LINE * 0.5
+        return Recognition("line", conf, Line(tuple(work[0]), tuple(work[-1])), (("arc", 0.2),))
+
+    if abs_turn > 6 * math.pi and length > 6 * diag and abs(total_turn) < 0.3 * abs_turn:
+        return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
+
+    closure = _closure(work, diag)
+    closed = closure < 0.22 and length > 1.9 * diag
+    if closed and abs(total_turn) > 2.15 * math.pi:
+        work = _one_loop(work, th)  # drawn past the start: fit the first time round only
+    helix = helix_geometry(work, total_turn, abs_turn)
+    if helix is not None:
+        return Recognition("helix", 0.9, helix, (("curve", 0.3),))
+
+    corners = _drop_end_stubs(work, sg.find_corners(work), length)
+    straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in zip(corners, corners[1:], strict=False)]
+    concentration = _turn_concentration(sg.turning(sg.resample(work, 40)))
+    ellipse = fit_ellipse(work) if closed else None
+    alternatives: list[tuple[str, float]] = []
+
+    if closed:
+        round_err = ellipse[4] if ellipse is not None else math.inf
+        angular = concentration > 0.55 and all(straight) and len(straight) >= 3
+        if round_err < ROUND_ERROR and not angular:
+            geom, kind = round_geometry(ellipse, CIRCLE_RATIO)
+            conf = max(0.5, 1.0 - round_err / ROUND_ERROR * 0.5)
+            return Recognition(kind, conf, geom, (("polygon", 0.3),))
+        vertices = _polygon_vertices(work, corners)
+        if len(vertices) >= 3:
+            box = box_geometry(vertices)
+            if box is not None:
+                return Recognition("box", 0.9, box, (("polygon", 0.6),))
+            if angular or all(straight):
+                return Recognition("polygon", 0.85, Polygon(tuple(map(tuple, vertices))), (("ellipse", 0.2),))
+        if round_err < 2 * ROUND_ERROR:
+            geom, kind = round_geometry(ellipse, CIRCLE_RATIO)
+            return Recognition(kind, 0.5, geom, (("polygon", 0.4),))
+        if len(vertices) >= 3:
+            return Recognition("polygon", 0.6, Polygon(tuple(map(tuple, vertices))), (("curve", 0.3),))
+
+    coarse = sg.turning(sg.resample(work, 40))
+    if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.85 * float(np.abs(coarse).sum()):
+        # most of a turn, smoothly: a round shape left open (people often stop short of the start)
+        open_ellipse = fit_ellipse(work)
+        if open_ellipse is not None and open_ellipse[4] < 0.6 * ROUND_ERROR:
+            geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
+            return Recognition(kind, 0.7, geom, (("arc", 0.5),))
+
+    if all(straight) and len(straight) >= 2:
+        pts = tuple(tuple(work[c]) for c in corners)
+        return Recognition("polyline", 0.85, Polyline(pts), (("curve", 0.3),))
+
+    if len(corners) <= 3 or concentration < 0.5:
+        centre, radius, circle_err = fit_circle(work)
+        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and abs(total_turn) > 0.8 * abs_turn:
+            return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius),
+                               (("curve", 0.5),))
+    return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
+
+
+def _drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fraction: float = 0.07) -> list[int]:
+    """Forget corners that only cut a tiny first or last piece off the stroke (an unremoved hook)."""
+    corners = list(corners)
+    while len(corners) > 2 and sg.path_length(work[: corners[1] + 1]) < fraction * length:
+        corners.pop(1)
+    while len(corners) > 2 and sg.path_length(work[corners[-2]:]) < fraction * length:
+        corners.pop(-2)
+    return corners
+
+
+def _closure(work: np.ndarray, diag: float) -> float:
+    """How nearly the stroke returns to its start: the smallest distance between an end and the
+    other end's neighbourhood (so an overshoot past the start counts as closed), over the size."""
+    n = len(work)
+    tail = work[int(n * 0.7):]
+    head = work[: max(2, int(n * 0.3))]
+    d1 = float(np.hypot(*(tail - work[0]).T).min())
+    d2 = float(np.hypot(*(head - work[-1]).T).min())
+    return min(d1, d2, float(np.hypot(*(work[-1] - work[0])))) / diag
+
+
+def _one_loop(work: np.ndarray, th: np.ndarray) -> np.ndarray:
+    """The stroke up to where it has turned once round (2 pi), resampled to its former length."""
+    cum = np.abs(np.cumsum(th))
+    end = int(np.searchsorted(cum, 2 * math.pi)) + 2
+    return sg.resample(work[: max(end, 8)], len(work))
+
+
+def _turn_concentration(th: np.ndarray) -> float:
+    """Share of all turning done in the sharpest fifth of the stroke (boxes ~0.9, circles ~0.3)."""
+    a = np.abs(th)
+    total = float(a.sum())
+    if total == 0.0:
+        return 0.0
+    k = max(1, len(a) // 5)
+    return float(np.sort(a)[-k:].sum()) / total
+
+
+def _polygon_vertices(work: np.ndarray, corners: list[int]) -> np.ndarray:
+    """The closed polygon's vertices: corners, with the stroke's ends merged when they meet mid-side."""
+    idx = list(corners)
+    verts = work[idx[:-1]] if len(idx) > 2 else work[idx]
+    if len(verts) >= 4:
+        # the start (and end) lies on a side when the path runs straight through it
+        a, b, c = verts[-1], verts[0], verts[1]
+        v1, v2 = b - a, c - b
+        cos = float(v1 @ v2) / (float(np.hypot(*v1) * np.hypot(*v2)) or 1.0)
+        if cos > math.cos(math.radians(35)):
+            verts = verts[1:]
+    return verts

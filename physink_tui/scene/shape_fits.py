@@ -1,0 +1,125 @@
+"""Least-squares fits of primitives to points, with normalised errors; no classification.
+
+Errors are dimensionless (a distance over the shape's size), so thresholds hold at any scale.
+Circle: Kasa's algebraic fit; ellipse: Fitzgibbon, Pilu and Fisher's direct least squares
+(always an ellipse); lines: total least squares through the centroid; curves: one cubic Bézier
+per run of points with chord-length parameters.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def fit_line(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
+    """Total least squares line: ``(point, unit direction, max distance / length)``."""
+    c = pts.mean(axis=0)
+    _, _, vt = np.linalg.svd(pts - c, full_matrices=False)
+    d = vt[0]
+    rel = pts - c
+    along = rel @ d
+    length = float(along.max() - along.min()) or 1e-12
+    dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])
+    return c, d, float(dist.max()) / length
+
+
+def fit_circle(pts: np.ndarray) -> tuple[np.ndarray, float, float]:
+    """Kasa fit: ``(centre, radius, RMS radial error / radius)``; radius inf for collinear points."""
+    x, y = pts[:, 0], pts[:, 1]
+    a = np.column_stack([x, y, np.ones_like(x)])
+    b = x * x + y * y
+    try:
+        sol, *_ = np.linalg.lstsq(a, b, rcond=None)
+    except np.linalg.LinAlgError:
+        return pts.mean(axis=0), math.inf, math.inf
+    cx, cy = sol[0] / 2, sol[1] / 2
+    r2 = sol[2] + cx * cx + cy * cy
+    if not np.isfinite(r2) or r2 <= 0:
+        return pts.mean(axis=0), math.inf, math.inf
+    r = math.sqrt(r2)
+    d = np.hypot(x - cx, y - cy)
+    return np.array([cx, cy]), r, float(np.sqrt(np.mean((d - r) ** 2))) / r
+
+
+def fit_ellipse(pts: np.ndarray) -> tuple[np.ndarray, float, float, float, float] | None:
+    """Direct ellipse fit: ``(centre, rx, ry, angle of rx, RMS normalised radial error)``, rx >= ry.
+
+    None when the points do not determine an ellipse (collinear, too few).
+    """
+    if len(pts) < 6:
+        return None
+    mean = pts.mean(axis=0)
+    scale = float(np.abs(pts - mean).max()) or 1.0
+    p = (pts - mean) / scale
+    x, y = p[:, 0], p[:, 1]
+    d1 = np.column_stack([x * x, x * y, y * y])
+    d2 = np.column_stack([x, y, np.ones_like(x)])
+    s1, s2, s3 = d1.T @ d1, d1.T @ d2, d2.T @ d2
+    try:
+        t = -np.linalg.solve(s3, s2.T)
+    except np.linalg.LinAlgError:
+        return None
+    m = s1 + s2 @ t
+    m = np.array([m[2] / 2, -m[1], m[0] / 2])
+    try:
+        evals, evecs = np.linalg.eig(m)
+    except np.linalg.LinAlgError:
+        return None
+    evecs = np.real(evecs)
+    cond = 4 * evecs[0] * evecs[2] - evecs[1] ** 2
+    good = np.flatnonzero(cond > 0)
+    if not len(good):
+        return None
+    a1 = evecs[:, good[0]]
+    if a1[0] + a1[2] < 0:  # an eigenvector's sign is arbitrary: make the quadratic part positive
+        a1 = -a1
+    a, b, c = a1
+    dd, e, f = t @ a1
+    den = b * b - 4 * a * c
+    if den >= 0:
+        return None
+    cx = (2 * c * dd - b * e) / den
+    cy = (2 * a * e - b * dd) / den
+    g = a * cx * cx + b * cx * cy + c * cy * cy - f
+    root = math.sqrt((a - c) ** 2 + b * b)
+    l1, l2 = (a + c + root) / 2, (a + c - root) / 2
+    if l1 <= 0 or l2 <= 0 or g <= 0:
+        return None
+    r_small, r_big = math.sqrt(g / l1), math.sqrt(g / l2)
+    angle = 0.5 * math.atan2(b, a - c) + math.pi / 2  # direction of the major axis
+    centre = np.array([cx, cy]) * scale + mean
+    rx, ry = r_big * scale, r_small * scale
+    err = ellipse_error(pts, centre, rx, ry, angle)
+    return centre, rx, ry, angle, err
+
+
+def ellipse_error(pts: np.ndarray, centre: np.ndarray, rx: float, ry: float, angle: float) -> float:
+    """RMS of (normalised radius - 1) of the points in the ellipse's frame."""
+    c, s = math.cos(angle), math.sin(angle)
+    rel = pts - centre
+    u = rel[:, 0] * c + rel[:, 1] * s
+    v = -rel[:, 0] * s + rel[:, 1] * c
+    r = np.sqrt((u / rx) ** 2 + (v / ry) ** 2)
+    return float(np.sqrt(np.mean((r - 1.0) ** 2)))
+
+
+def fit_cubic(pts: np.ndarray) -> tuple[np.ndarray, float]:
+    """One cubic Bézier through the run's ends: ``(4 control points, max error / chord)``."""
+    n = len(pts)
+    p0, p3 = pts[0], pts[-1]
+    if n < 4:
+        ctrl = np.array([p0, p0 + (p3 - p0) / 3, p0 + 2 * (p3 - p0) / 3, p3])
+        return ctrl, 0.0
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    u = np.concatenate([[0.0], np.cumsum(seg)])
+    u = u / u[-1] if u[-1] else np.linspace(0, 1, n)
+    b0, b1, b2, b3 = (1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3
+    rhs = pts - np.outer(b0, p0) - np.outer(b3, p3)
+    a = np.column_stack([b1, b2])
+    sol, *_ = np.linalg.lstsq(a, rhs, rcond=None)
+    ctrl = np.array([p0, sol[0], sol[1], p3])
+    fitted = np.outer(b0, p0) + np.outer(b1, sol[0]) + np.outer(b2, sol[1]) + np.outer(b3, p3)
+    chord = float(np.hypot(*(p3 - p0))) or float(seg.sum()) or 1.0
+    return ctrl, float(np.hypot(*(fitted - pts).T).max()) / chord

@@ -1,0 +1,153 @@
+"""Stroke geometry for recognition: cleaning, resampling, turning angles, corners; no classification.
+
+Everything works on numpy arrays of shape (n, 2) in the stroke's own units, so recognition is the
+same at any scale. Corners are found in the ShortStraw way (Wolin et al. 2008: short "straws"
+between resampled points mark corners) with IStraw's refinements (Xiong & LaViola 2009: a corner
+must turn the path by a real angle, and near-collinear corners are merged).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+MAX_WORKING_POINTS = 4000
+"""Longer strokes are thinned by arc length first, so recognition time stays bounded."""
+
+
+def drop_duplicates(pts: np.ndarray) -> np.ndarray:
+    """Remove consecutive repeated points."""
+    if len(pts) < 2:
+        return pts
+    keep = np.ones(len(pts), dtype=bool)
+    keep[1:] = np.any(np.diff(pts, axis=0) != 0.0, axis=1)
+    return pts[keep]
+
+
+def path_length(pts: np.ndarray) -> float:
+    return float(np.sum(np.hypot(*np.diff(pts, axis=0).T))) if len(pts) > 1 else 0.0
+
+
+def resample(pts: np.ndarray, n: int) -> np.ndarray:
+    """``n`` points equally spaced along the path (first and last kept)."""
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    cum = np.concatenate([[0.0], np.cumsum(seg)])
+    total = cum[-1]
+    if total == 0.0 or n < 2:
+        return np.repeat(pts[:1], max(n, 1), axis=0)
+    targets = np.linspace(0.0, total, n)
+    x = np.interp(targets, cum, pts[:, 0])
+    y = np.interp(targets, cum, pts[:, 1])
+    return np.column_stack([x, y])
+
+
+def turning(pts: np.ndarray) -> np.ndarray:
+    """Signed turning angle at each interior vertex (radians, wrapped to -pi..pi)."""
+    d = np.diff(pts, axis=0)
+    heading = np.arctan2(d[:, 1], d[:, 0])
+    dth = np.diff(heading)
+    return (dth + np.pi) % (2 * np.pi) - np.pi
+
+
+def bbox_diagonal(pts: np.ndarray) -> float:
+    span = pts.max(axis=0) - pts.min(axis=0)
+    return float(math.hypot(span[0], span[1]))
+
+
+def chord_deviation(pts: np.ndarray) -> float:
+    """Largest distance of a run of points from the chord between its ends, over the chord length."""
+    a, b = pts[0], pts[-1]
+    chord = float(np.hypot(*(b - a)))
+    if chord == 0.0:
+        return math.inf
+    ab = (b - a) / chord
+    rel = pts - a
+    dev = np.abs(rel[:, 0] * ab[1] - rel[:, 1] * ab[0])
+    return float(dev.max()) / chord
+
+
+def find_corners(pts: np.ndarray, min_turn_deg: float = 32.0, window: int = 3) -> list[int]:
+    """Corner indices of a resampled stroke (equal spacing), endpoints included.
+
+    A candidate is a local minimum of the straw ``|p[i+w] - p[i-w]|`` below 95 % of the median
+    straw (ShortStraw). It is kept only if the path turns by at least ``min_turn_deg`` across it
+    (so gentle curves make no corners), and corners closer than ``window`` points merge.
+    """
+    n = len(pts)
+    w = window
+    if n < 2 * w + 3:
+        return [0, n - 1]
+    straws = np.full(n, np.inf)
+    straws[w:n - w] = np.hypot(*(pts[2 * w:] - pts[:n - 2 * w]).T)
+    threshold = float(np.median(straws[w:n - w])) * 0.95
+    candidates = []
+    i = w
+    while i < n - w:
+        if straws[i] < threshold:
+            j = i
+            best = i
+            while j < n - w and straws[j] < threshold:
+                if straws[j] < straws[best]:
+                    best = j
+                j += 1
+            candidates.append(best)
+            i = j
+        else:
+            i += 1
+    th = turning(pts)  # th[k] is the turn at vertex k + 1
+    corners = [0]
+    reach = max(w, 2)
+    for c in candidates:
+        lo, hi = max(c - reach, 1), min(c + reach, n - 2)
+        turn = abs(float(np.sum(th[lo - 1:hi])))
+        if math.degrees(turn) >= min_turn_deg and c - corners[-1] >= w:
+            corners.append(c)
+    if n - 1 - corners[-1] < w and len(corners) > 1:
+        corners.pop()
+    corners.append(n - 1)
+    return _merge_collinear(pts, corners)
+
+
+def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) -> list[int]:
+    """Drop corners whose neighbours are almost in line with them (path length vs chord)."""
+    changed = True
+    while changed and len(corners) > 2:
+        changed = False
+        best, best_k = 0.0, -1
+        for k in range(1, len(corners) - 1):
+            a, b = corners[k - 1], corners[k + 1]
+            chord = float(np.hypot(*(pts[b] - pts[a])))
+            run = path_length(pts[a:b + 1])
+            straightness = chord / run if run else 1.0
+            if straightness > ratio and straightness > best:
+                best, best_k = straightness, k
+        if best_k > 0:
+            corners.pop(best_k)
+            changed = True
+    return corners
+
+
+def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float = 70.0) -> np.ndarray:
+    """Cut a short sharply bent tail at either end (the pen landing or lifting), PaleoSketch style.
+
+    A tail counts as a hook when it is at most ``max_fraction`` of the path and the path turns by
+    at least ``min_turn_deg`` where it joins the rest.
+    """
+    n = len(pts)
+    if n < 12:
+        return pts
+    th = np.degrees(turning(pts))
+    k = max(2, int(n * max_fraction))
+    start, end = 0, n
+    head = np.cumsum(th[:k])
+    idx = int(np.argmax(np.abs(head)))
+    if abs(head[idx]) >= min_turn_deg and abs(float(np.sum(th[idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
+        start = idx + 1
+    tail = np.cumsum(th[::-1][:k])
+    idx = int(np.argmax(np.abs(tail)))
+    if abs(tail[idx]) >= min_turn_deg and abs(float(np.sum(th[::-1][idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
+        end = n - idx - 1
+    if end - start < n // 2:
+        return pts
+    return pts[start:end]
