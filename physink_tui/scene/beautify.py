@@ -6,6 +6,7 @@ of `primitives`; each returns None when the stroke does not have the shape's str
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -68,7 +69,7 @@ def curve_geometry(work: np.ndarray, corners: list[int], tolerance: float = 0.04
             return
         ctrl.extend(_pt(p) for p in cubic[1:])
 
-    for a, b in zip(corners, corners[1:], strict=False):
+    for a, b in itertools.pairwise(corners):
         add(a, b, 0)
     return Curve(tuple(ctrl))
 

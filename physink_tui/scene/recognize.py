@@ -13,6 +13,7 @@ size, angles), never absolute distances, so the answer is the same at any scale 
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 
@@ -121,10 +122,9 @@ def _classify(raw: np.ndarray) -> Recognition:
         return Recognition("helix", 0.9, helix, (("curve", 0.3),))
 
     corners = _drop_end_stubs(work, sg.find_corners(work), length)
-    straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in zip(corners, corners[1:], strict=False)]
+    straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
     concentration = _turn_concentration(sg.turning(sg.resample(work, 40)))
     ellipse = fit_ellipse(work) if closed else None
-    alternatives: list[tuple[str, float]] = []
 
     if closed:
         round_err = ellipse[4] if ellipse is not None else math.inf

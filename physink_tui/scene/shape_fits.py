@@ -64,7 +64,7 @@ def fit_ellipse(pts: np.ndarray) -> tuple[np.ndarray, float, float, float, float
     m = s1 + s2 @ t
     m = np.array([m[2] / 2, -m[1], m[0] / 2])
     try:
-        evals, evecs = np.linalg.eig(m)
+        _evals, evecs = np.linalg.eig(m)
     except np.linalg.LinAlgError:
         return None
     evecs = np.real(evecs)
