@@ -35,7 +35,8 @@ TOO_SHORT = "too short to recognise"
 STRAIGHT = 0.12  # a segment is straight when it strays from its chord by less than this fraction
 LINE = 0.045  # a whole stroke is a line when it strays from its fit by less than this fraction
 ROUND_ERROR = 0.085  # normalised radial error below which a closed stroke is an ellipse
-NEARLY_ROUND = 1.4  # an open smooth stroke turning more than this many pi radians is a round shape left open
+CORNER_SHARE = 0.45  # an open stroke turning at least this share at its corners is a polyline
+NEARLY_ROUND = 1.25  # an open smooth stroke turning more than this many pi radians is a round shape left open
 CIRCLE_RATIO = 0.8  # minor/major axis ratio above which an ellipse is a circle
 
 
@@ -113,14 +114,22 @@ def _classify(raw: np.ndarray) -> Recognition:
     if abs_turn > 6 * math.pi and length > 6 * diag and abs(total_turn) < 0.3 * abs_turn:
         return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
 
-    closure = _closure(work, diag)
-    closed = closure < 0.22 and length > 1.9 * diag
-    if closed and abs(total_turn) > 2.15 * math.pi:
-        work = _one_loop(work, th)  # drawn past the start: fit the first time round only
     helix = helix_geometry(work, total_turn, abs_turn)
     if helix is not None:
         return Recognition("helix", 0.9, helix, (("curve", 0.3),))
-
+    smooth = _turn_concentration(sg.turning(sg.resample(work, 40))) < 0.5
+    if abs(total_turn) > 2.15 * math.pi and smooth:
+        # a round shape drawn on past the start: judge the first time round only (a star, which
+        # turns twice round at sharp corners, keeps its whole path)
+        work = _one_loop(work, th)
+        diag, length = sg.bbox_diagonal(work), sg.path_length(work)
+        th = sg.turning(work)
+        total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
+        loop = fit_ellipse(work)
+        if loop is not None and loop[4] < ROUND_ERROR:  # once round, and round: a circle or ellipse
+            geom, kind = round_geometry(loop, CIRCLE_RATIO)
+            return Recognition(kind, max(0.5, 1.0 - loop[4] / ROUND_ERROR * 0.5), geom, (("curve", 0.3),))
+    closed = _closure(work, diag) < 0.22 and length > 1.9 * diag
     corners = _drop_end_stubs(work, sg.find_corners(work), length)
     straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
     concentration = _turn_concentration(sg.turning(sg.resample(work, 40)))
@@ -147,14 +156,14 @@ def _classify(raw: np.ndarray) -> Recognition:
             return Recognition("polygon", 0.6, Polygon(tuple(map(tuple, vertices))), (("curve", 0.3),))
 
     coarse = sg.turning(sg.resample(work, 40))
-    if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.85 * float(np.abs(coarse).sum()):
+    if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()):
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)
         open_ellipse = fit_ellipse(work)
         if open_ellipse is not None and open_ellipse[4] < 0.6 * ROUND_ERROR:
             geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
 
-    if all(straight) and len(straight) >= 2:
+    if len(straight) >= 2 and (all(straight) or _bent_polyline(work, th, corners)):
         pts = tuple(tuple(work[c]) for c in corners)
         return Recognition("polyline", 0.85, Polyline(pts), (("curve", 0.3),))
 
@@ -176,15 +185,81 @@ def _drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fractio
     return corners
 
 
+def _lobes(work: np.ndarray, min_deg: float = 25.0) -> list[float]:
+    """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke,
+    ignoring runs under ``min_deg``: a brace has five such lobes, a check mark one or two."""
+    coarse = np.degrees(sg.turning(sg.resample(work, 40)))
+    runs: list[float] = []
+    for v in coarse.tolist():
+        if runs and (v >= 0) == (runs[-1] >= 0):
+            runs[-1] += v
+        else:
+            runs.append(v)
+    lobes: list[float] = []
+    for r in (r for r in runs if abs(r) >= min_deg):
+        if lobes and (r >= 0) == (lobes[-1] >= 0):
+            lobes[-1] += r
+        else:
+            lobes.append(r)
+    return lobes
+
+
+def _bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
+    """Net turning (degrees) along each segment, away from its corners."""
+    n = len(th) + 2
+    out = []
+    for a, b in itertools.pairwise(corners):
+        lo = a + reach if a > 0 else 0
+        hi = b - reach if b < n - 1 else n - 2
+        out.append(abs(math.degrees(float(th[lo:max(hi - 1, lo)].sum()))))
+    return out
+
+
+def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int]) -> bool:
+    """A polyline drawn with bowed sides (a check mark's long arm): it turns mostly at its corners,
+    in at most three lobes none of which curls (a question mark's hook, a pigtail's loop)."""
+    if max(_bends(th, corners)) >= 120.0:
+        return False
+    share = _corner_share(th, corners)
+    worst = max(sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners))
+    if share >= 0.7 and worst < 1.4 * STRAIGHT:
+        return True  # sharp corners and nearly straight sides: an arrow whose head doubles back
+    lobes = _lobes(work)
+    return len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 210.0 and share >= CORNER_SHARE
+
+
+def _corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
+    """Share of the turning done at the corners rather than along the segments between them.
+
+    Net turning is summed per window, so hand jitter cancels: a check mark whose long arm bows
+    still turns mostly at its corner; a brace or a question mark turns mostly along its curls.
+    """
+    n = len(th) + 2
+    at_corners, along = 0.0, 0.0
+    inner = corners[1:-1]
+    bounds = [0]
+    for c in inner:
+        lo, hi = max(c - reach, 1), min(c + reach, n - 2)
+        at_corners += abs(float(th[lo - 1:hi].sum()))
+        bounds += [lo - 1, hi]
+    bounds.append(n - 2)
+    for a, b in zip(bounds[::2], bounds[1::2], strict=True):
+        along += abs(float(th[a:b].sum()))
+    total = at_corners + along
+    return at_corners / total if total else 0.0
+
+
 def _closure(work: np.ndarray, diag: float) -> float:
-    """How nearly the stroke returns to its start: the smallest distance between an end and the
-    other end's neighbourhood (so an overshoot past the start counts as closed), over the size."""
+    """How nearly the stroke returns to its start, over its size: the gap between its ends, or, for a
+    stroke drawn past its start (or started before it), twice the closest approach of one end to
+    the other end's first fifth (a shape closes through its ends, not through its middle)."""
     n = len(work)
-    tail = work[int(n * 0.7):]
-    head = work[: max(2, int(n * 0.3))]
+    gap = float(np.hypot(*(work[-1] - work[0])))
+    tail = work[int(n * 0.8):]
+    head = work[: max(2, int(n * 0.2))]
     d1 = float(np.hypot(*(tail - work[0]).T).min())
     d2 = float(np.hypot(*(head - work[-1]).T).min())
-    return min(d1, d2, float(np.hypot(*(work[-1] - work[0])))) / diag
+    return min(gap, 2 * d1, 2 * d2) / diag
 
 
 def _one_loop(work: np.ndarray, th: np.ndarray) -> np.ndarray:

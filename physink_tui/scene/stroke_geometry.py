@@ -67,7 +67,7 @@ def chord_deviation(pts: np.ndarray) -> float:
     return float(dev.max()) / chord
 
 
-def find_corners(pts: np.ndarray, min_turn_deg: float = 32.0, window: int = 3) -> list[int]:
+def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3) -> list[int]:
     """Corner indices of a resampled stroke (equal spacing), endpoints included.
 
     A candidate is a local minimum of the straw ``|p[i+w] - p[i-w]|`` below 95 % of the median
