@@ -35,6 +35,7 @@ TOO_SHORT = "too short to recognise"
 STRAIGHT = 0.12  # a segment is straight when it strays from its chord by less than this fraction
 LINE = 0.045  # a whole stroke is a line when it strays from its fit by less than this fraction
 ROUND_ERROR = 0.085  # normalised radial error below which a closed stroke is an ellipse
+SHARP_CORNER = 62.0  # degrees a bowed polyline's corners must each turn
 CORNER_SHARE = 0.45  # an open stroke turning at least this share at its corners is a polyline
 NEARLY_ROUND = 1.25  # an open smooth stroke turning more than this many pi radians is a round shape left open
 CIRCLE_RATIO = 0.8  # minor/major axis ratio above which an ellipse is a circle
@@ -129,10 +130,14 @@ def _classify(raw: np.ndarray) -> Recognition:
         if loop is not None and loop[4] < ROUND_ERROR:  # once round, and round: a circle or ellipse
             geom, kind = round_geometry(loop, CIRCLE_RATIO)
             return Recognition(kind, max(0.5, 1.0 - loop[4] / ROUND_ERROR * 0.5), geom, (("curve", 0.3),))
-    closed = _closure(work, diag) < 0.22 and length > 1.9 * diag
+    closure = _closure(work, diag)
+    closed = closure < 0.22 and length > 1.9 * diag
     corners = _drop_end_stubs(work, sg.find_corners(work), length)
     straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
     concentration = _turn_concentration(sg.turning(sg.resample(work, 40)))
+    if (not closed and closure < 0.42 and abs(total_turn) >= 1.25 * math.pi and len(straight) >= 3
+            and all(straight) and _heading_home(work, corners)):
+        closed = True  # straight sides turning round, the last one heading for the start: left open
     ellipse = fit_ellipse(work) if closed else None
 
     if closed:
@@ -204,6 +209,17 @@ def _lobes(work: np.ndarray, min_deg: float = 25.0) -> list[float]:
     return lobes
 
 
+def _corner_turns(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
+    """Net turning (degrees) right at each inner corner: a check mark's corner turns over 90 degrees,
+    the top of a question mark's curl turns about 50 where the corner finder cut it."""
+    n = len(th) + 2
+    out = []
+    for c in corners[1:-1]:
+        lo, hi = max(c - reach, 1), min(c + reach, n - 2)
+        out.append(abs(math.degrees(float(th[lo - 1:hi].sum()))))
+    return out or [0.0]
+
+
 def _bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
     """Net turning (degrees) along each segment, away from its corners."""
     n = len(th) + 2
@@ -218,7 +234,7 @@ def _bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
 def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int]) -> bool:
     """A polyline drawn with bowed sides (a check mark's long arm): it turns mostly at its corners,
     in at most three lobes none of which curls (a question mark's hook, a pigtail's loop)."""
-    if max(_bends(th, corners)) >= 120.0:
+    if max(_bends(th, corners)) >= 120.0 or min(_corner_turns(th, corners)) < SHARP_CORNER:
         return False
     share = _corner_share(th, corners)
     worst = max(sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners))
@@ -247,6 +263,16 @@ def _corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
         along += abs(float(th[a:b].sum()))
     total = at_corners + along
     return at_corners / total if total else 0.0
+
+
+def _heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) -> bool:
+    """Whether the last side points at the stroke's start (a polygon the pen lifted from too early)."""
+    last = work[-1] - work[corners[-2]]
+    home = work[0] - work[-1]
+    norms = float(np.hypot(*last) * np.hypot(*home))
+    if norms == 0.0:
+        return True
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(last @ home) / norms)))) <= max_deg
 
 
 def _closure(work: np.ndarray, diag: float) -> float:
