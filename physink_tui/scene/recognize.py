@@ -190,7 +190,7 @@ def _drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fractio
     return corners
 
 
-def _lobes(work: np.ndarray, min_deg: float = 25.0) -> list[float]:
+def _lobes(work: np.ndarray, min_deg: float = 35.0) -> list[float]:
     """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke,
     ignoring runs under ``min_deg``: a brace has five such lobes, a check mark one or two."""
     coarse = np.degrees(sg.turning(sg.resample(work, 40)))
@@ -241,7 +241,7 @@ def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int]) -> bool
     if share >= 0.7 and worst < 1.4 * STRAIGHT:
         return True  # sharp corners and nearly straight sides: an arrow whose head doubles back
     lobes = _lobes(work)
-    return len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 210.0 and share >= CORNER_SHARE
+    return len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0 and share >= CORNER_SHARE
 
 
 def _corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
@@ -267,12 +267,14 @@ def _corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
 
 def _heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) -> bool:
     """Whether the last side points at the stroke's start (a polygon the pen lifted from too early)."""
-    last = work[-1] - work[corners[-2]]
     home = work[0] - work[-1]
-    norms = float(np.hypot(*last) * np.hypot(*home))
-    if norms == 0.0:
-        return True
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(last @ home) / norms)))) <= max_deg
+
+    def angle(v: np.ndarray) -> float:
+        norms = float(np.hypot(*v) * np.hypot(*home))
+        return 0.0 if norms == 0.0 else math.degrees(math.acos(max(-1.0, min(1.0, float(v @ home) / norms))))
+
+    # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side
+    return angle(work[-1] - work[corners[-2]]) <= max_deg or angle(work[corners[1]] - work[0]) >= 180.0 - max_deg
 
 
 def _closure(work: np.ndarray, diag: float) -> float:

@@ -140,14 +140,22 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     th = np.degrees(turning(pts))
     k = max(2, int(n * max_fraction))
     start, end = 0, n
-    head = np.cumsum(th[:k])
-    idx = int(np.argmax(np.abs(head)))
-    if abs(head[idx]) >= min_turn_deg and abs(float(np.sum(th[idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
+    idx = _hook_end(th[:k], min_turn_deg)
+    if idx is not None and abs(float(np.sum(th[idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
         start = idx + 1
-    tail = np.cumsum(th[::-1][:k])
-    idx = int(np.argmax(np.abs(tail)))
-    if abs(tail[idx]) >= min_turn_deg and abs(float(np.sum(th[::-1][idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
+    idx = _hook_end(th[::-1][:k], min_turn_deg)
+    if idx is not None and abs(float(np.sum(th[::-1][idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
         end = n - idx - 1
     if end - start < n // 2:
         return pts
     return pts[start:end]
+
+
+def _hook_end(th_head: np.ndarray, min_turn_deg: float) -> int | None:
+    """Index of the vertex where a hook at the start of ``th_head`` (degrees) has done its turning:
+    the first point where the cumulative turn is within 15 % of its extreme, if that is large."""
+    cum = np.abs(np.cumsum(th_head))
+    peak = float(cum.max()) if len(cum) else 0.0
+    if peak < min_turn_deg:
+        return None
+    return int(np.argmax(cum >= 0.85 * peak))
