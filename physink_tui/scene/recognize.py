@@ -52,7 +52,7 @@ def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | 
     bad = ~np.isfinite(pts).all(axis=1)
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
-        return None, f"coordinates must be finite numbers; point {i} is ({pts[i, 0]!r}, {pts[i, 1]!r})"
+        return None, f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, {float(pts[i, 1])!r})"
     if len(pts) > sg.MAX_WORKING_POINTS:
         pts = sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS)
     pts = sg.drop_duplicates(pts)
