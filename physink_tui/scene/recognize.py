@@ -98,7 +98,7 @@ def _classify(raw: np.ndarray) -> Recognition:
     length = sg.path_length(raw)
     n = int(min(max(64, 40 * length / diag), 480))
     work = sg.resample(raw, n)
-    work = sg.remove_hooks(work)
+    work = sg.remove_hooks(sg.remove_small_loops(work))
     work = sg.resample(work, n)
     diag = sg.bbox_diagonal(work)
     length = sg.path_length(work)
@@ -131,7 +131,7 @@ def _classify(raw: np.ndarray) -> Recognition:
             geom, kind = round_geometry(loop, CIRCLE_RATIO)
             return Recognition(kind, max(0.5, 1.0 - loop[4] / ROUND_ERROR * 0.5), geom, (("curve", 0.3),))
     closure = _closure(work, diag)
-    closed = closure < 0.22 and length > 1.9 * diag
+    closed = closure < 0.22 and length > 1.75 * diag
     corners = _drop_end_stubs(work, sg.find_corners(work), length)
     straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
     concentration = _turn_concentration(sg.turning(sg.resample(work, 40)))

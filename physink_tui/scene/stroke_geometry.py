@@ -159,3 +159,45 @@ def _hook_end(th_head: np.ndarray, min_turn_deg: float) -> int | None:
     if peak < min_turn_deg:
         return None
     return int(np.argmax(cum >= 0.85 * peak))
+
+
+def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: float = 0.08) -> np.ndarray:
+    """Cut out small loops where the path crosses itself within ``max_fraction`` of its points and the
+    loop spans at most ``max_size`` of the stroke's size (a pen circling at a corner), keeping the
+    crossing point; big loops (a pigtail's, a spring's) stay."""
+    n = len(pts)
+    if n < 8:
+        return pts
+    diag = bbox_diagonal(pts)
+    span = max(3, int(max_fraction * n))
+    i_idx, j_idx = [], []
+    for gap in range(2, span + 1):
+        i = np.arange(0, n - 1 - gap)
+        i_idx.append(i)
+        j_idx.append(i + gap)
+    if not i_idx:
+        return pts
+    i = np.concatenate(i_idx)
+    j = np.concatenate(j_idx)
+    p, r = pts[i], pts[i + 1] - pts[i]
+    q, s = pts[j], pts[j + 1] - pts[j]
+    denom = r[:, 0] * s[:, 1] - r[:, 1] * s[:, 0]
+    qp = q - p
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (qp[:, 0] * s[:, 1] - qp[:, 1] * s[:, 0]) / denom
+        u = (qp[:, 0] * r[:, 1] - qp[:, 1] * r[:, 0]) / denom
+    hit = (denom != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)
+    if not hit.any():
+        return pts
+    keep = np.ones(n, dtype=bool)
+    out = pts.copy()
+    for k in np.flatnonzero(hit)[np.argsort(i[hit], kind="stable")]:
+        a, b = int(i[k]), int(j[k])
+        if not keep[a] or not keep[b]:
+            continue
+        loop = pts[a + 1:b + 1]
+        if bbox_diagonal(loop) > max_size * diag:
+            continue  # a real loop (a pigtail's, a spring's), not a flourish at a corner
+        out[a + 1] = p[k] + t[k] * r[k]  # the crossing point replaces the loop
+        keep[a + 2:b + 1] = False
+    return out[keep]
