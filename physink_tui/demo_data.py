@@ -26,7 +26,7 @@ EGG_CRACKER: tuple[Stroke, ...] = (
     Stroke.circle((0.51, 0.485), 0.012, segments=24),             # its pivot
     Stroke.circle((0.60, 0.41), 0.035),                           # the egg
     Stroke(((0.54, 0.78), (0.57, 0.90), (0.84, 0.90), (0.87, 0.78))),  # the frying pan
-    Stroke.zigzag((0.30, 0.92), (0.30, 0.70), teeth=6, amplitude=0.02),  # a spring under the lever
+    Stroke.coil((0.44, 0.80), (0.44, 0.60), loops=5, radius=0.025),  # a spring under the lever
 )
 """The egg cracker of the thesis (figure 2-4), drawn in the order a person would."""
 

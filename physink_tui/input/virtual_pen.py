@@ -116,6 +116,23 @@ class Stroke:
         pts.append(end)
         return cls(tuple(pts), **kwargs)
 
+    @classmethod
+    def coil(cls, start: Point, end: Point, *, loops: int = 5, radius: float = 0.02, segments: int = 24,
+             **kwargs) -> Stroke:
+        """A spring drawn as a coil (how PaleoSketch's helix looks): ``loops`` turns of ``radius``
+        whose centres advance evenly from ``start`` to ``end``."""
+        (x0, y0), (x1, y1) = start, end
+        length = math.hypot(x1 - x0, y1 - y0) or 1.0
+        ux, uy = (x1 - x0) / length, (y1 - y0) / length
+        pts = []
+        steps = loops * segments
+        for k in range(steps + 1):
+            u, a = k / steps, 2.0 * math.pi * k / segments
+            cx, cy = x0 + u * (x1 - x0), y0 + u * (y1 - y0)
+            along, across = -radius * math.cos(a), radius * math.sin(a)
+            pts.append((cx + along * ux - across * uy, cy + along * uy + across * ux))
+        return cls(tuple(pts), **kwargs)
+
 
 @dataclass(frozen=True, slots=True)
 class ScriptedSample:

@@ -96,7 +96,9 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]]) -> Recogniti
 def _classify(raw: np.ndarray) -> Recognition:
     diag = sg.bbox_diagonal(raw)
     length = sg.path_length(raw)
-    n = int(min(max(64, 40 * length / diag), 480))
+    span = raw.max(axis=0) - raw.min(axis=0)
+    spacing = min(diag / 40, max(float(span.min()), diag / 200) / 8)  # thin shapes need finer steps
+    n = int(min(max(64, length / spacing), 480))
     work = sg.resample(raw, n)
     work = sg.remove_hooks(sg.remove_small_loops(work))
     work = sg.resample(work, n)
@@ -132,7 +134,9 @@ def _classify(raw: np.ndarray) -> Recognition:
             return Recognition(kind, max(0.5, 1.0 - loop[4] / ROUND_ERROR * 0.5), geom, (("curve", 0.3),))
     closure = _closure(work, diag)
     closed = closure < 0.22 and length > 1.75 * diag
-    corners = _drop_end_stubs(work, sg.find_corners(work), length)
+    corners = sg.find_corners(work)
+    if not closed:
+        corners = _drop_end_stubs(work, corners, length)  # closed shapes may end on a short side
     straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
     concentration = _turn_concentration(sg.turning(sg.resample(work, 40)))
     if (not closed and closure < 0.42 and abs(total_turn) >= 1.25 * math.pi and len(straight) >= 3
