@@ -8,11 +8,14 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import fields, replace
 
 import numpy as np
 
-from physink_tui.scene.primitives import Arc, Box, Circle, Curve, Ellipse, Helix, Line, XSymbol
+from physink_tui.scene.primitives import Arc, Box, Circle, Curve, Ellipse, Geometry, Helix, Line, XSymbol
 from physink_tui.scene.shape_fits import fit_cubic
+
+_UNSCALED = {"angle", "start_angle", "sweep", "turns"}
 
 
 def _pt(v: np.ndarray) -> tuple[float, float]:
@@ -121,3 +124,21 @@ def x_symbol(a: Line, b: Line) -> tuple[XSymbol, float] | None:
     centre = p + t * r
     confidence = 0.5 + 0.5 * min(1.0, (angle - 45.0) / 40.0) * (1.0 - mid_gap / (0.4 * (la + lb) / 2))
     return XSymbol(_pt(centre), a, b), confidence
+
+
+def scale_geometry(g: Geometry, origin: np.ndarray, scale: float) -> Geometry:
+    """Map geometry found at unit size back to the stroke's units: points ``origin + scale * p``,
+    lengths times ``scale``, angles and turn counts unchanged."""
+    ox, oy = float(origin[0]), float(origin[1])
+    changes = {}
+    for f in fields(g):
+        v = getattr(g, f.name)
+        if isinstance(v, Line):
+            changes[f.name] = scale_geometry(v, origin, scale)
+        elif isinstance(v, tuple) and v and isinstance(v[0], tuple):
+            changes[f.name] = tuple((ox + scale * float(p[0]), oy + scale * float(p[1])) for p in v)
+        elif isinstance(v, tuple):
+            changes[f.name] = (ox + scale * float(v[0]), oy + scale * float(v[1]))
+        elif f.name not in _UNSCALED:
+            changes[f.name] = scale * float(v)
+    return replace(g, **changes)

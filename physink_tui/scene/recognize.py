@@ -16,6 +16,7 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Sequence
+from dataclasses import replace
 
 import numpy as np
 
@@ -26,6 +27,7 @@ from physink_tui.scene.beautify import (
     curve_geometry,
     helix_geometry,
     round_geometry,
+    scale_geometry,
     x_symbol,
 )
 from physink_tui.scene.primitives import Line, Polygon, Polyline, Recognition
@@ -72,8 +74,20 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     if pts is None:
         return Recognition(None, 0.0, None, (), reason)
     if len(pts) == 2:
-        return Recognition("line", 1.0, Line(tuple(pts[0]), tuple(pts[-1])))
-    return _classify(pts)
+        return Recognition("line", 1.0, Line(_point(pts[0]), _point(pts[-1])))
+    # judge the shape at unit size round the origin (no overflow, no underflow), answer in its own units
+    origin = pts.mean(axis=0)
+    scale = float(np.abs(pts - origin).max())
+    if not math.isfinite(scale) or scale == 0.0:
+        return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
+    result = _classify((pts - origin) / scale)
+    if result.geometry is None:
+        return result
+    return replace(result, geometry=scale_geometry(result.geometry, origin, scale))
+
+
+def _point(p: np.ndarray) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
 
 
 def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]]) -> Recognition:
@@ -96,8 +110,8 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]]) -> Recogniti
 def _classify(raw: np.ndarray) -> Recognition:
     diag = sg.bbox_diagonal(raw)
     length = sg.path_length(raw)
-    span = raw.max(axis=0) - raw.min(axis=0)
-    spacing = min(diag / 40, max(float(span.min()), diag / 200) / 8)  # thin shapes need finer steps
+    thickness = sg.thickness(raw)
+    spacing = min(diag / 40, max(thickness, diag / 200) / 8)  # thin shapes need finer steps
     n = int(min(max(64, length / spacing), 480))
     work = sg.resample(raw, n)
     work = sg.remove_hooks(sg.remove_small_loops(work))

@@ -55,6 +55,14 @@ def bbox_diagonal(pts: np.ndarray) -> float:
     return float(math.hypot(span[0], span[1]))
 
 
+def thickness(pts: np.ndarray) -> float:
+    """Extent of the points across their principal axis (rotation-independent; 0 for a straight line)."""
+    centred = pts - pts.mean(axis=0)
+    _, _, vt = np.linalg.svd(centred, full_matrices=False)
+    across = centred @ vt[-1]
+    return float(across.max() - across.min())
+
+
 def chord_deviation(pts: np.ndarray) -> float:
     """Largest distance of a run of points from the chord between its ends, over the chord length."""
     a, b = pts[0], pts[-1]
@@ -135,8 +143,8 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     at least ``min_turn_deg`` where it joins the rest.
     """
     n = len(pts)
-    if n < 12:
-        return pts
+    if n < 12 or float(np.hypot(*(pts[-1] - pts[0]))) < 0.05 * bbox_diagonal(pts):
+        return pts  # a closed shape: what looks like a hook may be its last short side
     th = np.degrees(turning(pts))
     k = max(2, int(n * max_fraction))
     start, end = 0, n
