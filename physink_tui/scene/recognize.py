@@ -128,13 +128,18 @@ def _classify(raw: np.ndarray) -> Recognition:
         conf = 1.0 - line_err / LINE * 0.5
         return Recognition("line", conf, Line(tuple(work[0]), tuple(work[-1])), (("arc", 0.2),))
 
-    if abs_turn > 6 * math.pi and length > 6 * diag and abs(total_turn) < 0.3 * abs_turn:
+    reversals = int(np.count_nonzero(np.abs(th) > math.radians(150)))
+    if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):
         return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
 
     helix = helix_geometry(work, total_turn, abs_turn)
     if helix is not None:
         return Recognition("helix", 0.9, helix, (("curve", 0.3),))
     smooth = _turn_concentration(sg.turning(sg.resample(work, 40))) < 0.5
+    if abs(total_turn) > 2.15 * math.pi and not smooth and _retraced(work, th, diag):
+        work = _one_loop(work, th)  # a polygon gone round twice over the same sides: once is enough
+        th = sg.turning(work)
+        total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
     if abs(total_turn) > 2.15 * math.pi and smooth:
         # a round shape drawn on past the start: judge the first time round only (a star, which
         # turns twice round at sharp corners, keeps its whole path)
@@ -160,7 +165,8 @@ def _classify(raw: np.ndarray) -> Recognition:
 
     if closed:
         round_err = ellipse[4] if ellipse is not None else math.inf
-        angular = concentration > 0.55 and all(straight) and len(straight) >= 3
+        angular = (concentration > 0.55 and all(straight) and len(straight) >= 3
+                   and float(np.mean(_corner_turns(th, corners))) >= 55.0)  # an octagon's 45 degrees is round
         if round_err < ROUND_ERROR and not angular:
             geom, kind = round_geometry(ellipse, CIRCLE_RATIO)
             conf = max(0.5, 1.0 - round_err / ROUND_ERROR * 0.5)
@@ -308,10 +314,26 @@ def _closure(work: np.ndarray, diag: float) -> float:
     return min(gap, 2 * d1, 2 * d2) / diag
 
 
+def _retraced(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
+    """Whether what comes after the first time round runs back over it (a shape drawn twice),
+    rather than on new ground (a star turns twice round on different sides)."""
+    end = int(np.searchsorted(np.abs(np.cumsum(th)), 2 * math.pi)) + 2
+    first, rest = work[:end], work[end:]
+    if len(rest) < 4 or len(first) < 4:
+        return False
+    d = np.hypot(rest[:, None, 0] - first[None, :, 0], rest[:, None, 1] - first[None, :, 1]).min(axis=1)
+    return float(np.quantile(d, 0.9)) < 0.06 * diag
+
+
 def _one_loop(work: np.ndarray, th: np.ndarray) -> np.ndarray:
-    """The stroke up to where it has turned once round (2 pi), resampled to its former length."""
-    cum = np.abs(np.cumsum(th))
-    end = int(np.searchsorted(cum, 2 * math.pi)) + 2
+    """The stroke once round: up to where it comes closest to its start while its turning is
+    between 1.5 and 2.5 pi (robust to where exactly a corner completes the turn), resampled."""
+    cum = np.abs(np.concatenate([[0.0, 0.0], np.cumsum(th)]))  # turning done on reaching each point
+    window = np.flatnonzero((cum >= 1.5 * math.pi) & (cum <= 2.5 * math.pi))
+    if not len(window):
+        return work
+    gaps = np.hypot(*(work[window] - work[0]).T)
+    end = int(window[int(np.argmin(gaps))]) + 1
     return sg.resample(work[: max(end, 8)], len(work))
 
 

@@ -50,9 +50,16 @@ def turning(pts: np.ndarray) -> np.ndarray:
     return (dth + np.pi) % (2 * np.pi) - np.pi
 
 
+_DIRECTIONS = np.array([[math.cos(a), math.sin(a)] for a in np.linspace(0.0, math.pi, 32, endpoint=False)])
+
+
 def bbox_diagonal(pts: np.ndarray) -> float:
-    span = pts.max(axis=0) - pts.min(axis=0)
-    return float(math.hypot(span[0], span[1]))
+    """The points' diameter (their largest extent in any direction, within 0.2 %): the diagonal of
+    an upright box, and a size that rotating the stroke does not change."""
+    if len(pts) < 2:
+        return 0.0
+    proj = pts @ _DIRECTIONS.T
+    return float((proj.max(axis=0) - proj.min(axis=0)).max())
 
 
 def thickness(pts: np.ndarray) -> float:
