@@ -132,10 +132,10 @@ def _classify(raw: np.ndarray) -> Recognition:
     if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):
         return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
 
-    helix = helix_geometry(work, total_turn, abs_turn)
+    smooth = _turn_concentration(sg.turning(sg.resample(work, 40))) < 0.5
+    helix = helix_geometry(work, total_turn, abs_turn) if smooth else None  # a star winds twice too
     if helix is not None:
         return Recognition("helix", 0.9, helix, (("curve", 0.3),))
-    smooth = _turn_concentration(sg.turning(sg.resample(work, 40))) < 0.5
     if abs(total_turn) > 2.15 * math.pi and not smooth and _retraced(work, th, diag):
         work = _one_loop(work, th)  # a polygon gone round twice over the same sides: once is enough
         th = sg.turning(work)
@@ -156,6 +156,12 @@ def _classify(raw: np.ndarray) -> Recognition:
     corners = sg.find_corners(work)
     if not closed:
         corners = _drop_end_stubs(work, corners, length)  # closed shapes may end on a short side
+    else:
+        trimmed = _trim_closed_hooks(work, corners, length)
+        if trimmed is not None:
+            work, corners = trimmed
+            th = sg.turning(work)
+            total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
     straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
     concentration = _turn_concentration(sg.turning(sg.resample(work, 40)))
     if (not closed and closure < 0.42 and abs(total_turn) >= 1.25 * math.pi and len(straight) >= 3
@@ -198,7 +204,8 @@ def _classify(raw: np.ndarray) -> Recognition:
 
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
-        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and abs(total_turn) > 0.8 * abs_turn:
+        one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends
+        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
             return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius),
                                (("curve", 0.5),))
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
@@ -299,6 +306,24 @@ def _heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) -
 
     # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side
     return angle(work[-1] - work[corners[-2]]) <= max_deg or angle(work[corners[1]] - work[0]) >= 180.0 - max_deg
+
+
+def _trim_closed_hooks(work: np.ndarray, corners: list[int], length: float,
+                       ) -> tuple[np.ndarray, list[int]] | None:
+    """Cut a hook off either end of a closed stroke: a first or last piece shorter than 6 % of the
+    path that is not straight (a straight short piece is a side and stays)."""
+    start, end = 0, len(work) - 1
+    if len(corners) > 3:
+        a, b = corners[0], corners[1]
+        if sg.path_length(work[a:b + 1]) < 0.06 * length and sg.chord_deviation(work[a:b + 1]) >= 0.2:
+            start = b
+        a, b = corners[-2], corners[-1]
+        if sg.path_length(work[a:b + 1]) < 0.06 * length and sg.chord_deviation(work[a:b + 1]) >= 0.2:
+            end = a
+    if (start, end) == (0, len(work) - 1):
+        return None
+    kept = [c - start for c in corners if start <= c <= end]
+    return work[start:end + 1], kept
 
 
 def _closure(work: np.ndarray, diag: float) -> float:
