@@ -96,9 +96,14 @@ def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Heli
     if len(centres) < 2:
         return None
     radius = float(np.median(radii))
-    advance = float(np.hypot(*(centres[-1] - centres[0])))
+    axis = centres[-1] - centres[0]
+    advance = float(np.hypot(*axis))
     if radius == 0.0 or advance < 0.8 * radius:
         return None  # loops on the same spot: a shape drawn several times round, not a spring
+    unit = axis / advance
+    off_axis = max(abs(float((c - centres[0]) @ np.array([-unit[1], unit[0]]))) for c in centres)
+    if off_axis > 0.6 * radius + 0.15 * advance:
+        return None  # the loops wander (flourishes round a box's corners), a spring's go straight
     return Helix(_pt(centres[0]), _pt(centres[-1]), radius, turns)
 
 

@@ -114,7 +114,13 @@ def _classify(raw: np.ndarray) -> Recognition:
     spacing = min(diag / 40, max(thickness, diag / 200) / 8)  # thin shapes need finer steps
     n = int(min(max(64, length / spacing), 480))
     work = sg.resample(raw, n)
-    work = sg.remove_hooks(sg.remove_small_loops(work))
+    coil = sg.resample(sg.remove_hooks(work), n)
+    coil_turn = sg.turning(coil)
+    if _turn_concentration(sg.turning(sg.resample(coil, 40))) < 0.5:  # smooth: a star winds twice too
+        helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
+        if helix is not None:
+            return Recognition("helix", 0.9, helix, (("curve", 0.3),))
+    work = sg.remove_hooks(sg.remove_small_loops(work))  # loops at corners are flourishes, not coils
     work = sg.resample(work, n)
     diag = sg.bbox_diagonal(work)
     length = sg.path_length(work)
@@ -133,9 +139,6 @@ def _classify(raw: np.ndarray) -> Recognition:
         return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
 
     smooth = _turn_concentration(sg.turning(sg.resample(work, 40))) < 0.5
-    helix = helix_geometry(work, total_turn, abs_turn) if smooth else None  # a star winds twice too
-    if helix is not None:
-        return Recognition("helix", 0.9, helix, (("curve", 0.3),))
     if abs(total_turn) > 2.15 * math.pi and not smooth and _retraced(work, th, diag):
         work = _one_loop(work, th)  # a polygon gone round twice over the same sides: once is enough
         th = sg.turning(work)
