@@ -36,7 +36,7 @@ from physink_tui.scene.shape_fits import fit_circle, fit_ellipse, fit_line
 TOO_SHORT = "too short to recognise"
 STRAIGHT = 0.12  # a segment is straight when it strays from its chord by less than this fraction
 LINE = 0.045  # a whole stroke is a line when it strays from its fit by less than this fraction
-ROUND_ERROR = 0.085  # normalised radial error below which a closed stroke is an ellipse
+ROUND_ERROR = 0.09  # normalised radial error below which a closed stroke is an ellipse
 SHARP_CORNER = 62.0  # degrees a bowed polyline's corners must each turn
 CORNER_SHARE = 0.45  # an open stroke turning at least this share at its corners is a polyline
 NEARLY_ROUND = 1.25  # an open smooth stroke turning more than this many pi radians is a round shape left open
@@ -76,8 +76,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     if len(pts) == 2:
         return Recognition("line", 1.0, Line(_point(pts[0]), _point(pts[-1])))
     # judge the shape at unit size round the origin (no overflow, no underflow), answer in its own units
-    origin = pts.mean(axis=0)
-    scale = float(np.abs(pts - origin).max())
+    with np.errstate(over="ignore", invalid="ignore"):
+        origin = pts.mean(axis=0)
+        scale = float(np.abs(pts - origin).max())
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
     result = _classify((pts - origin) / scale)
@@ -143,7 +144,7 @@ def _classify(raw: np.ndarray) -> Recognition:
         work = _one_loop(work, th)  # a polygon gone round twice over the same sides: once is enough
         th = sg.turning(work)
         total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    if abs(total_turn) > 2.15 * math.pi and smooth:
+    if abs(total_turn) > 2.0 * math.pi and smooth:
         # a round shape drawn on past the start: judge the first time round only (a star, which
         # turns twice round at sharp corners, keeps its whole path)
         work = _one_loop(work, th)
