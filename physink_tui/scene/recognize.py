@@ -37,6 +37,7 @@ TOO_SHORT = "too short to recognise"
 STRAIGHT = 0.12  # a segment is straight when it strays from its chord by less than this fraction
 LINE = 0.045  # a whole stroke is a line when it strays from its fit by less than this fraction
 ROUND_ERROR = 0.09  # normalised radial error below which a closed stroke is an ellipse
+VERY_SHARP_CORNER = 100.0  # degrees: a corner this sharp makes a polyline whatever its sides do
 SHARP_CORNER = 62.0  # degrees a bowed polyline's corners must each turn
 CORNER_SHARE = 0.45  # an open stroke turning at least this share at its corners is a polyline
 NEARLY_ROUND = 1.25  # an open smooth stroke turning more than this many pi radians is a round shape left open
@@ -269,16 +270,22 @@ def _bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
 
 
 def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int]) -> bool:
-    """A polyline drawn with bowed sides (a check mark's long arm): it turns mostly at its corners,
-    in at most three lobes none of which curls (a question mark's hook, a pigtail's loop)."""
-    if max(_bends(th, corners)) >= 120.0 or min(_corner_turns(th, corners)) < SHARP_CORNER:
+    """A polyline drawn with bowed or curled sides (a check mark's arms): it turns at a really sharp
+    corner, in at most three lobes none of which curls right round (a pigtail's loop), or mostly at
+    sharp corners with nearly straight sides (an arrow whose head doubles back). A question mark's
+    bend, where a corner finder may cut its curl, turns less than 90 degrees."""
+    turns = _corner_turns(th, corners)
+    lobes = _lobes(work)
+    few_lobes = len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0
+    if few_lobes and max(turns) >= VERY_SHARP_CORNER:
+        return True
+    if max(_bends(th, corners)) >= 120.0 or min(turns) < SHARP_CORNER or max(turns) < 90.0:
         return False
     share = _corner_share(th, corners)
     worst = max(sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners))
     if share >= 0.7 and worst < 1.4 * STRAIGHT:
-        return True  # sharp corners and nearly straight sides: an arrow whose head doubles back
-    lobes = _lobes(work)
-    return len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0 and share >= CORNER_SHARE
+        return True
+    return few_lobes and share >= CORNER_SHARE
 
 
 def _corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
