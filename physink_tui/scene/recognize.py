@@ -34,6 +34,7 @@ from physink_tui.scene.primitives import Line, Polygon, Polyline, Recognition
 from physink_tui.scene.shape_fits import fit_circle, fit_ellipse, fit_line
 
 TOO_SHORT = "too short to recognise"
+MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
 STRAIGHT = 0.12  # a segment is straight when it strays from its chord by less than this fraction
 LINE = 0.045  # a whole stroke is a line when it strays from its fit by less than this fraction
 ROUND_ERROR = 0.09  # normalised radial error below which a closed stroke is an ellipse
@@ -56,6 +57,8 @@ def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | 
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
         return None, f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, {float(pts[i, 1])!r})"
+    if float(np.abs(pts).max()) > MAX_COORDINATE:
+        return None, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
     if len(pts) > sg.MAX_WORKING_POINTS:
         pts = sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS)
     pts = sg.drop_duplicates(pts)
@@ -117,7 +120,7 @@ def _classify(raw: np.ndarray) -> Recognition:
     thickness = sg.thickness(raw)
     spacing = min(diag / 40, max(thickness, diag / 200) / 8)  # thin shapes need finer steps
     n = int(min(max(64, length / spacing), 480))
-    work = sg.resample(raw, n)
+    work = sg.smooth(sg.resample(raw, n))
     coil = sg.resample(sg.remove_hooks(work), n)
     coil_turn = sg.turning(coil)
     if _turn_concentration(sg.turning(sg.resample(coil, 40))) < 0.5:  # smooth: a star winds twice too
@@ -386,14 +389,36 @@ def _turn_concentration(th: np.ndarray) -> float:
 
 
 def _polygon_vertices(work: np.ndarray, corners: list[int]) -> np.ndarray:
-    """The closed polygon's vertices: corners, with the stroke's ends merged when they meet mid-side."""
-    idx = list(corners)
-    verts = work[idx[:-1]] if len(idx) > 2 else work[idx]
-    if len(verts) >= 4:
-        # the start (and end) lies on a side when the path runs straight through it
-        a, b, c = verts[-1], verts[0], verts[1]
-        v1, v2 = b - a, c - b
-        cos = float(v1 @ v2) / (float(np.hypot(*v1) * np.hypot(*v2)) or 1.0)
-        if cos > math.cos(math.radians(35)):
-            verts = verts[1:]
-    return verts
+    """The closed polygon's vertices: where its sides' fitted lines meet.
+
+    Sides are the runs between corners, with the runs on either side of the pen's start joined when
+    they continue each other (a shape started mid-side) and slivers under 4 % of the perimeter
+    dropped (half a rounded corner on either side of the start), so neither where the pen started
+    nor how round the corners are moves a vertex.
+    """
+    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+    if len(runs) >= 3:
+        first, last = runs[0], runs[-1]
+        d1, d2 = first[-1] - first[0], last[-1] - last[0]
+        norms = float(np.hypot(*d1) * np.hypot(*d2))
+        if norms and float(d1 @ d2) / norms > math.cos(math.radians(35)):
+            runs = [np.concatenate([last, first[1:]]), *runs[1:-1]]
+    perimeter = sum(sg.path_length(r) for r in runs)
+    runs = [r for r in runs if sg.path_length(r) >= 0.04 * perimeter] or runs
+    if len(runs) < 3:
+        return np.array([r[0] for r in runs])
+    lines = []
+    for r in runs:
+        k = len(r)
+        core = r[int(k * 0.15): max(int(k * 0.85), int(k * 0.15) + 2)]
+        point, direction, _ = fit_line(core if len(core) >= 2 else r)
+        lines.append((point, direction))
+    verts = []
+    for (p1, d1), (p2, d2) in zip(lines[-1:] + lines[:-1], lines, strict=True):
+        denom = d1[0] * d2[1] - d1[1] * d2[0]
+        if abs(denom) < 1e-9:
+            verts.append((p1 + p2) / 2)
+            continue
+        t = ((p2 - p1)[0] * d2[1] - (p2 - p1)[1] * d2[0]) / denom
+        verts.append(p1 + t * d1)
+    return np.array(verts)
