@@ -1,0 +1,196 @@
+"""Features of a resampled stroke that recognition judges by: corners' sharpness, lobes, closure,
+loops, polygon sides; pure numpy, no decisions about kinds."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from physink_tui.scene import stroke_geometry as sg
+from physink_tui.scene.shape_fits import fit_line
+
+
+def drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fraction: float = 0.07) -> list[int]:
+    """Forget corners that only cut a tiny first or last piece off the stroke (an unremoved hook)."""
+    corners = list(corners)
+    while len(corners) > 2 and sg.path_length(work[: corners[1] + 1]) < fraction * length:
+        corners.pop(1)
+    while len(corners) > 2 and sg.path_length(work[corners[-2]:]) < fraction * length:
+        corners.pop(-2)
+    return corners
+
+
+def lobes(work: np.ndarray, min_deg: float = 35.0) -> list[float]:
+    """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke,
+    ignoring runs under ``min_deg``: a brace has five such lobes, a check mark one or two."""
+    coarse = np.degrees(sg.turning(sg.resample(work, 40)))
+    runs: list[float] = []
+    for v in coarse.tolist():
+        if runs and (v >= 0) == (runs[-1] >= 0):
+            runs[-1] += v
+        else:
+            runs.append(v)
+    lobes: list[float] = []
+    for r in (r for r in runs if abs(r) >= min_deg):
+        if lobes and (r >= 0) == (lobes[-1] >= 0):
+            lobes[-1] += r
+        else:
+            lobes.append(r)
+    return lobes
+
+
+def corner_turns(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
+    """Net turning (degrees) right at each inner corner: a check mark's corner turns over 90 degrees,
+    the top of a question mark's curl turns about 50 where the corner finder cut it."""
+    n = len(th) + 2
+    out = []
+    for c in corners[1:-1]:
+        lo, hi = max(c - reach, 1), min(c + reach, n - 2)
+        out.append(abs(math.degrees(float(th[lo - 1:hi].sum()))))
+    return out or [0.0]
+
+
+def bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
+    """Net turning (degrees) along each segment, away from its corners."""
+    n = len(th) + 2
+    out = []
+    for a, b in itertools.pairwise(corners):
+        lo = a + reach if a > 0 else 0
+        hi = b - reach if b < n - 1 else n - 2
+        out.append(abs(math.degrees(float(th[lo:max(hi - 1, lo)].sum()))))
+    return out
+
+
+def corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
+    """Share of the turning done at the corners rather than along the segments between them.
+
+    Net turning is summed per window, so hand jitter cancels: a check mark whose long arm bows
+    still turns mostly at its corner; a brace or a question mark turns mostly along its curls.
+    """
+    n = len(th) + 2
+    at_corners, along = 0.0, 0.0
+    inner = corners[1:-1]
+    bounds = [0]
+    for c in inner:
+        lo, hi = max(c - reach, 1), min(c + reach, n - 2)
+        at_corners += abs(float(th[lo - 1:hi].sum()))
+        bounds += [lo - 1, hi]
+    bounds.append(n - 2)
+    for a, b in zip(bounds[::2], bounds[1::2], strict=True):
+        along += abs(float(th[a:b].sum()))
+    total = at_corners + along
+    return at_corners / total if total else 0.0
+
+
+def heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) -> bool:
+    """Whether the last side points at the stroke's start (a polygon the pen lifted from too early)."""
+    home = work[0] - work[-1]
+
+    def angle(v: np.ndarray) -> float:
+        norms = float(np.hypot(*v) * np.hypot(*home))
+        return 0.0 if norms == 0.0 else math.degrees(math.acos(max(-1.0, min(1.0, float(v @ home) / norms))))
+
+    # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side
+    return angle(work[-1] - work[corners[-2]]) <= max_deg or angle(work[corners[1]] - work[0]) >= 180.0 - max_deg
+
+
+def trim_closed_hooks(work: np.ndarray, corners: list[int], length: float,
+                       ) -> tuple[np.ndarray, list[int]] | None:
+    """Cut a hook off either end of a closed stroke: a first or last piece shorter than 6 % of the
+    path that is not straight (a straight short piece is a side and stays)."""
+    start, end = 0, len(work) - 1
+    if len(corners) > 3:
+        a, b = corners[0], corners[1]
+        if sg.path_length(work[a:b + 1]) < 0.06 * length and sg.chord_deviation(work[a:b + 1]) >= 0.2:
+            start = b
+        a, b = corners[-2], corners[-1]
+        if sg.path_length(work[a:b + 1]) < 0.06 * length and sg.chord_deviation(work[a:b + 1]) >= 0.2:
+            end = a
+    if (start, end) == (0, len(work) - 1):
+        return None
+    kept = [c - start for c in corners if start <= c <= end]
+    return work[start:end + 1], kept
+
+
+def closure(work: np.ndarray, diag: float) -> float:
+    """How nearly the stroke returns to its start, over its size: the gap between its ends, or, for a
+    stroke drawn past its start (or started before it), twice the closest approach of one end to
+    the other end's first fifth (a shape closes through its ends, not through its middle)."""
+    n = len(work)
+    gap = float(np.hypot(*(work[-1] - work[0])))
+    tail = work[int(n * 0.8):]
+    head = work[: max(2, int(n * 0.2))]
+    d1 = float(np.hypot(*(tail - work[0]).T).min())
+    d2 = float(np.hypot(*(head - work[-1]).T).min())
+    return min(gap, 2 * d1, 2 * d2) / diag
+
+
+def retraced(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
+    """Whether what comes after the first time round runs back over it (a shape drawn twice),
+    rather than on new ground (a star turns twice round on different sides)."""
+    end = int(np.searchsorted(np.abs(np.cumsum(th)), 2 * math.pi)) + 2
+    first, rest = work[:end], work[end:]
+    if len(rest) < 4 or len(first) < 4:
+        return False
+    d = np.hypot(rest[:, None, 0] - first[None, :, 0], rest[:, None, 1] - first[None, :, 1]).min(axis=1)
+    return float(np.quantile(d, 0.9)) < 0.06 * diag
+
+
+def one_loop(work: np.ndarray, th: np.ndarray) -> np.ndarray:
+    """The stroke once round: up to where it comes closest to its start while its turning is
+    between 1.5 and 2.5 pi (robust to where exactly a corner completes the turn), resampled."""
+    cum = np.abs(np.concatenate([[0.0, 0.0], np.cumsum(th)]))  # turning done on reaching each point
+    window = np.flatnonzero((cum >= 1.5 * math.pi) & (cum <= 2.5 * math.pi))
+    if not len(window):
+        return work
+    gaps = np.hypot(*(work[window] - work[0]).T)
+    end = int(window[int(np.argmin(gaps))]) + 1
+    return sg.resample(work[: max(end, 8)], len(work))
+
+
+def turn_concentration(th: np.ndarray) -> float:
+    """Share of all turning done in the sharpest fifth of the stroke (boxes ~0.9, circles ~0.3)."""
+    a = np.abs(th)
+    total = float(a.sum())
+    if total == 0.0:
+        return 0.0
+    k = max(1, len(a) // 5)
+    return float(np.sort(a)[-k:].sum()) / total
+
+
+def polygon_vertices(work: np.ndarray, corners: list[int]) -> np.ndarray:
+    """The closed polygon's vertices: where its sides' fitted lines meet.
+
+    Sides are the runs between corners, with the runs on either side of the pen's start joined when
+    they continue each other (a shape started mid-side) and slivers under 4 % of the perimeter
+    dropped (half a rounded corner on either side of the start), so neither where the pen started
+    nor how round the corners are moves a vertex.
+    """
+    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+    if len(runs) >= 3:
+        first, last = runs[0], runs[-1]
+        d1, d2 = first[-1] - first[0], last[-1] - last[0]
+        norms = float(np.hypot(*d1) * np.hypot(*d2))
+        if norms and float(d1 @ d2) / norms > math.cos(math.radians(35)):
+            runs = [np.concatenate([last, first[1:]]), *runs[1:-1]]
+    perimeter = sum(sg.path_length(r) for r in runs)
+    runs = [r for r in runs if sg.path_length(r) >= 0.04 * perimeter] or runs
+    if len(runs) < 3:
+        return np.array([r[0] for r in runs])
+    lines = []
+    for r in runs:
+        k = len(r)
+        core = r[int(k * 0.15): max(int(k * 0.85), int(k * 0.15) + 2)]
+        point, direction, _ = fit_line(core if len(core) >= 2 else r)
+        lines.append((point, direction))
+    verts = []
+    for (p1, d1), (p2, d2) in zip(lines[-1:] + lines[:-1], lines, strict=True):
+        denom = d1[0] * d2[1] - d1[1] * d2[0]
+        if abs(denom) < 1e-9:
+            verts.append((p1 + p2) / 2)
+            continue
+        t = ((p2 - p1)[0] * d2[1] - (p2 - p1)[1] * d2[0]) / denom
+        verts.append(p1 + t * d1)
+    return np.array(verts)
