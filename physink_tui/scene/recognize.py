@@ -122,12 +122,13 @@ def _classify(raw: np.ndarray) -> Recognition:
     spacing = min(diag / 40, max(thickness, diag / 200) / 8)  # thin shapes need finer steps
     n = int(min(max(64, length / spacing), 480))
     work = sg.smooth(sg.resample(raw, n))
-    coil = sg.resample(sg.remove_hooks(work), n)
-    coil_turn = sg.turning(coil)
-    if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < 0.5:  # smooth: a star winds twice too
-        helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
-        if helix is not None:
-            return Recognition("helix", 0.9, helix, (("curve", 0.3),))
+    if abs(float(sg.turning(work).sum())) > 3.5 * math.pi:  # enough turning for two loops or more
+        coil = sg.resample(sg.remove_hooks(work), n)
+        coil_turn = sg.turning(coil)
+        if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < 0.5:  # smooth: a star winds twice too
+            helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
+            if helix is not None:
+                return Recognition("helix", 0.9, helix, (("curve", 0.3),))
     work = sg.remove_hooks(sg.remove_small_loops(work))  # loops at corners are flourishes, not coils
     work = sg.resample(work, n)
     diag = sg.bbox_diagonal(work)
@@ -174,7 +175,8 @@ def _classify(raw: np.ndarray) -> Recognition:
             th = sg.turning(work)
             total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
     straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
-    concentration = sf.turn_concentration(sg.turning(sg.resample(work, 40)))
+    coarse = sg.turning(sg.resample(work, 40))
+    concentration = sf.turn_concentration(coarse)
     if (not closed and closure < 0.42 and abs(total_turn) >= 1.25 * math.pi and len(straight) >= 3
             and all(straight) and sf.heading_home(work, corners)):
         closed = True  # straight sides turning round, the last one heading for the start: left open
@@ -201,7 +203,6 @@ def _classify(raw: np.ndarray) -> Recognition:
         if len(vertices) >= 3:
             return Recognition("polygon", 0.6, Polygon(tuple(map(tuple, vertices))), (("curve", 0.3),))
 
-    coarse = sg.turning(sg.resample(work, 40))
     if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()):
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)
         open_ellipse = fit_ellipse(work)
