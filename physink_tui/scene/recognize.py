@@ -120,7 +120,7 @@ def _classify(raw: np.ndarray) -> Recognition:
     length = sg.path_length(raw)
     thickness = sg.thickness(raw)
     spacing = min(diag / 40, max(thickness, diag / 200) / 8)  # thin shapes need finer steps
-    n = int(min(max(64, length / spacing), 480))
+    n = int(min(max(64, length / spacing), 320))
     work = sg.smooth(sg.resample(raw, n))
     if abs(float(sg.turning(work).sum())) > 3.5 * math.pi:  # enough turning for two loops or more
         coil = sg.resample(sg.remove_hooks(work), n)
