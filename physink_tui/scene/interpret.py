@@ -1,0 +1,208 @@
+"""Decides what a recognised stroke means in its context (thesis 3.2.2) and returns the new scene.
+
+The rules, in the thesis's order: a line through a body erases it; a small circle, ellipse, arc or
+curve inside a body pins it (rotational joint) to what lies under it; an X inside a body welds it;
+a helix with an end in a fixed body is a spring along its horizontal or vertical axis; polylines,
+lines, boxes, polygons, circles and ellipses are rigid bodies; a curve outside bodies is a rope whose
+ends hold on to the bodies they overlap. Pure: no physics engine, no I/O; every odd case comes back
+with a message for the user rather than an exception.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+
+from shapely.geometry import MultiPoint, Point
+
+from physink_tui.scene.body_shapes import body_geometry, body_size, outline_of
+from physink_tui.scene.components import (
+    BACKGROUND,
+    MATERIALS,
+    Body,
+    Joint,
+    Rope,
+    Scene,
+    Spring,
+    material_class,
+)
+from physink_tui.scene.primitives import Circle, Ellipse, Helix, Line, Recognition, XSymbol
+
+JOINT_MAX_SIZE = 0.6
+"""A circle or curve is a joint symbol only when smaller than this share of the body it is drawn in."""
+INSIDE_SHARE = 0.9
+"""Share of a stroke's points that must lie in a body for the stroke to be inside it."""
+SPRING_K = 20.0
+
+
+@dataclass(frozen=True, slots=True)
+class Interpretation:
+    """What a stroke did.
+
+    Attributes:
+        scene: the scene after the stroke.
+        action: ``erase``, ``pivot``, ``weld``, ``spring``, ``body``, ``rope`` or ``none``.
+        created: ids of the components made.
+        removed: ids of the components removed.
+        message: something the user should be told (a repair, an odd case), or None.
+    """
+
+    scene: Scene
+    action: str
+    created: tuple[str, ...] = ()
+    removed: tuple[str, ...] = ()
+    message: str | None = None
+
+
+def bodies_at(scene: Scene, point: tuple[float, float], exclude: str | None = None) -> list[Body]:
+    """Bodies whose area contains the point, topmost (created last) first."""
+    p = Point(point)
+    return [b for b in reversed(scene.bodies()) if b.id != exclude and body_geometry(b).covers(p)]
+
+
+def under(scene: Scene, point: tuple[float, float], exclude: str) -> str:
+    """The body lying under ``point`` other than ``exclude``, or the background."""
+    found = bodies_at(scene, point, exclude)
+    return found[0].id if found else BACKGROUND
+
+
+def _inside(scene: Scene, points: Sequence[tuple[float, float]]) -> Body | None:
+    """The topmost body holding nearly all of the points."""
+    if not points:
+        return None
+    for body in reversed(scene.bodies()):
+        area = body_geometry(body)
+        inside = sum(1 for p in points if area.covers(Point(p)))
+        if inside >= INSIDE_SHARE * len(points):
+            return body
+    return None
+
+
+def interpret(scene: Scene, recognition: Recognition,
+              strokes: Sequence[Sequence[tuple[float, float]]]) -> Interpretation:
+    """Apply one recognised stroke (or X pair) to the scene.
+
+    Args:
+        scene: the sketch so far.
+        recognition: what the stroke was recognised as.
+        strokes: the stroke's points (two strokes for an X), canvas units.
+    """
+    kind, geometry = recognition.kind, recognition.geometry
+    points = [tuple(p[:2]) for s in strokes for p in s]
+    if kind is None or geometry is None:
+        return Interpretation(scene, "none", message=f"stroke not used: {recognition.reason or 'not recognised'}")
+    if kind == "line":
+        erased = _erase(scene, geometry)
+        if erased is not None:
+            return erased
+    if kind in ("circle", "ellipse", "curve", "arc"):
+        host = _inside(scene, points)
+        if host is not None and _size(points) < JOINT_MAX_SIZE * body_size(host):
+            anchor = geometry.center if isinstance(geometry, Circle | Ellipse) else _centre(points)
+            return _joint(scene, "pivot", host, anchor)
+    if kind == "x":
+        assert isinstance(geometry, XSymbol)
+        hosts = bodies_at(scene, geometry.center)
+        if hosts:
+            return _joint(scene, "weld", hosts[0], geometry.center)
+        first = _add_body(scene, geometry.first)
+        second = _add_body(first.scene, geometry.second)
+        return Interpretation(second.scene, "body", created=first.created + second.created,
+                              message="an X pins a body to what lies under it, but this one is outside every "
+                                      "body; it became two line bodies")
+    if kind == "helix":
+        return _spring(scene, geometry, points)
+    if kind in ("curve", "arc"):
+        return _rope(scene, points)
+    return _add_body(scene, geometry)
+
+
+def _size(points: Sequence[tuple[float, float]]) -> float:
+    minx, miny, maxx, maxy = MultiPoint(points).bounds
+    return math.hypot(maxx - minx, maxy - miny)
+
+
+def _centre(points: Sequence[tuple[float, float]]) -> tuple[float, float]:
+    c = MultiPoint(points).centroid
+    return (c.x, c.y)
+
+
+def _erase(scene: Scene, line: Line) -> Interpretation | None:
+    """A line whose midpoint is in a body and whose ends are outside it erases that body."""
+    mid = ((line.start[0] + line.end[0]) / 2, (line.start[1] + line.end[1]) / 2)
+    for body in bodies_at(scene, mid):
+        area = body_geometry(body)
+        if not area.covers(Point(line.start)) and not area.covers(Point(line.end)):
+            gone = (body.id, *scene.attached_to(body.id))
+            return Interpretation(scene.remove(*gone), "erase", removed=gone)
+    return None
+
+
+def _joint(scene: Scene, kind: str, host: Body, anchor: tuple[float, float]) -> Interpretation:
+    jid, scene2 = scene.new_id("j")
+    other = under(scene, anchor, host.id)
+    joint = Joint(jid, kind, host.id, other, (float(anchor[0]), float(anchor[1])))
+    return Interpretation(scene2.add(joint), kind, created=(jid,))
+
+
+def _add_body(scene: Scene, geometry) -> Interpretation:
+    shape, position, outline, radius, note = outline_of(geometry)
+    bid, scene2 = scene.new_id("b")
+    body = Body(bid, shape, outline, radius, position, 0.0, MATERIALS[material_class(shape)])
+    scene2 = scene2.add(body)
+    scene2, attached = _attach_rope_ends(scene2, body)
+    message = note
+    if attached:
+        message = (message + "; " if message else "") + f"rope ends attached to it: {', '.join(attached)}"
+    return Interpretation(scene2, "body", created=(bid,), message=message)
+
+
+def _attach_rope_ends(scene: Scene, body: Body) -> tuple[Scene, list[str]]:
+    """Free rope ends lying in a new body hold on to it (thesis 3.2.3)."""
+    area = body_geometry(body)
+    attached = []
+    for c in list(scene.components.values()):
+        if not isinstance(c, Rope):
+            continue
+        changes = {}
+        if c.start_body is None and area.covers(Point(c.points[0])):
+            changes["start_body"] = body.id
+        if c.end_body is None and area.covers(Point(c.points[-1])):
+            changes["end_body"] = body.id
+        if changes:
+            scene = scene.update(replace(c, **changes))
+            attached.append(c.id)
+    return scene, attached
+
+
+def _rope(scene: Scene, points: Sequence[tuple[float, float]]) -> Interpretation:
+    rid, scene2 = scene.new_id("r")
+    start = bodies_at(scene, points[0])
+    end = bodies_at(scene, points[-1])
+    rope = Rope(rid, tuple((float(x), float(y)) for x, y in points),
+                start[0].id if start else None, end[0].id if end else None)
+    return Interpretation(scene2.add(rope), "rope", created=(rid,))
+
+
+def _spring(scene: Scene, helix: Helix, points: Sequence[tuple[float, float]]) -> Interpretation:
+    """A helix with an end in a fixed body is a spring along its dominant axis."""
+    first, last = points[0], points[-1]
+    at_first, at_last = bodies_at(scene, first), bodies_at(scene, last)
+    fixed_first = next((b for b in at_first if scene.is_fixed(b.id)), None)
+    fixed_last = next((b for b in at_last if scene.is_fixed(b.id)), None)
+    if fixed_first is None and fixed_last is None:
+        result = _rope(scene, points)
+        return replace(result, message="a spring needs one end in a fixed body (weld one with an X first); "
+                                       "this helix was kept as a rope")
+    if fixed_first is None:  # make the first end the fixed one
+        first, last, at_last, fixed_first = last, first, at_first, fixed_last
+    other = next((b for b in at_last if b.id != fixed_first.id), None)
+    dx, dy = last[0] - first[0], last[1] - first[1]
+    axis = "horizontal" if abs(dx) >= abs(dy) else "vertical"
+    rest = abs(dx) if axis == "horizontal" else abs(dy)
+    sid, scene2 = scene.new_id("s")
+    spring = Spring(sid, fixed_first.id, other.id if other else BACKGROUND, (float(first[0]), float(first[1])),
+                    (float(last[0]), float(last[1])), axis, rest, SPRING_K)
+    message = None if other else "the spring's free end touches no body; it is held by the background there"
+    return Interpretation(scene2.add(spring), "spring", created=(sid,), message=message)
