@@ -37,10 +37,13 @@ def box_geometry(vertices: np.ndarray, tolerance_deg: float = 24.0) -> Box | Non
     lengths = [float(np.hypot(*s)) for s in sides]
     if min(lengths) == 0.0:
         return None
+    longest = max(lengths)
     for i in range(4):
         a, b = sides[i], sides[(i + 1) % 4]
         cos = float(a @ b) / (lengths[i] * lengths[(i + 1) % 4])
-        if abs(math.degrees(math.acos(max(-1.0, min(1.0, cos)))) - 90.0) > tolerance_deg:
+        # a thin box's short ends are only a few points long: their direction is rough
+        slack = tolerance_deg if min(lengths[i], lengths[(i + 1) % 4]) > 0.25 * longest else 2 * tolerance_deg
+        if abs(math.degrees(math.acos(max(-1.0, min(1.0, cos)))) - 90.0) > slack:
             return None
     # the box's orientation: mean direction of the sides, folded onto a quarter turn
     angles = [math.atan2(s[1], s[0]) % (math.pi / 2) for s in sides]

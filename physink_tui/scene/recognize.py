@@ -174,7 +174,9 @@ def _classify(raw: np.ndarray) -> Recognition:
             work, corners = trimmed
             th = sg.turning(work)
             total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT for a, b in itertools.pairwise(corners)]
+    # short runs (a thin box's ends) are too short to judge: smoothing rounds their ends
+    straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT or sg.path_length(work[a:b + 1]) < 0.06 * length
+                for a, b in itertools.pairwise(corners)]
     coarse = sg.turning(sg.resample(work, 40))
     concentration = sf.turn_concentration(coarse)
     if (not closed and closure < 0.42 and abs(total_turn) >= 1.25 * math.pi and len(straight) >= 3

@@ -165,7 +165,7 @@ def polygon_vertices(work: np.ndarray, corners: list[int]) -> np.ndarray:
 
     Sides are the runs between corners, with the runs on either side of the pen's start joined when
     they continue each other (a shape started mid-side) and slivers under 4 % of the perimeter
-    dropped (half a rounded corner on either side of the start), so neither where the pen started
+    dropped at the start or end (half a rounded corner on either side of the start), so neither where the pen started
     nor how round the corners are moves a vertex.
     """
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
@@ -176,12 +176,33 @@ def polygon_vertices(work: np.ndarray, corners: list[int]) -> np.ndarray:
         if norms and float(d1 @ d2) / norms > math.cos(math.radians(35)):
             runs = [np.concatenate([last, first[1:]]), *runs[1:-1]]
     perimeter = sum(sg.path_length(r) for r in runs)
-    runs = [r for r in runs if sg.path_length(r) >= 0.04 * perimeter] or runs
+    # a sliver can only come from a corner the pen's start split in two: the first or last run
+    def sliver(run: np.ndarray) -> bool:  # short and bowed: half a rounded corner, not a short straight side
+        return sg.path_length(run) < 0.04 * perimeter and sg.chord_deviation(run) > 0.08
+
+    def crossing(a: np.ndarray, b: np.ndarray) -> bool:  # their lines meet at a real corner (not parallel)
+        da, db = a[-1] - a[0], b[-1] - b[0]
+        norms = float(np.hypot(*da) * np.hypot(*db))
+        return norms > 0 and abs(float(da @ db)) / norms < math.cos(math.radians(30))
+
+    # a rounded corner the pen's start split: its pieces sit at the ends, and the sides they join
+    # still meet at a corner once they are gone (a thin box's short end joins two parallel sides)
+    if len(runs) > 4 and sliver(runs[0]) and sliver(runs[-1]) and crossing(runs[-2], runs[1]):
+        runs = runs[1:-1]
+    elif len(runs) > 3 and sliver(runs[0]) and crossing(runs[-1], runs[1]):
+        runs = runs[1:]
+    elif len(runs) > 3 and sliver(runs[-1]) and crossing(runs[-2], runs[0]):
+        runs = runs[:-1]
     if len(runs) < 3:
         return np.array([r[0] for r in runs])
     lines = []
     for r in runs:
         k = len(r)
+        chord = r[-1] - r[0]
+        span = float(np.hypot(*chord))
+        if sg.path_length(r) < 0.1 * perimeter and span > 0:
+            lines.append(((r[0] + r[-1]) / 2, chord / span))  # a short side: its rounded ends would tilt a fit
+            continue
         core = r[int(k * 0.15): max(int(k * 0.85), int(k * 0.15) + 2)]
         point, direction, _ = fit_line(core if len(core) >= 2 else r)
         lines.append((point, direction))
