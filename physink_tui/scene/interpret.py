@@ -55,10 +55,12 @@ class Interpretation:
     message: str | None = None
 
 
-def bodies_at(scene: Scene, point: tuple[float, float], exclude: str | None = None) -> list[Body]:
-    """Bodies whose area contains the point, topmost (created last) first."""
+def bodies_at(scene: Scene, point: tuple[float, float], exclude: str | None = None,
+              reach: float = 0.0) -> list[Body]:
+    """Bodies whose area contains the point (or lies within ``reach`` of it), topmost (created last) first."""
     p = Point(point)
-    return [b for b in reversed(scene.bodies()) if b.id != exclude and body_geometry(b).covers(p)]
+    return [b for b in reversed(scene.bodies())
+            if b.id != exclude and (body_geometry(b).covers(p) or (reach and body_geometry(b).distance(p) <= reach))]
 
 
 def under(scene: Scene, point: tuple[float, float], exclude: str) -> str:
@@ -68,11 +70,15 @@ def under(scene: Scene, point: tuple[float, float], exclude: str) -> str:
 
 
 def _inside(scene: Scene, points: Sequence[tuple[float, float]]) -> Body | None:
-    """The topmost body holding nearly all of the points."""
+    """The topmost body holding nearly all of the points; a thin body (a line, a polyline) holds a
+    symbol drawn on it when the symbol's centre lies within the symbol's size of it."""
     if not points:
         return None
+    centre, size = Point(_centre(points)), _size(points)
     for body in reversed(scene.bodies()):
         area = body_geometry(body)
+        if body.shape == "polyline" and area.distance(centre) <= size / 2:
+            return body
         inside = sum(1 for p in points if area.covers(Point(p)))
         if inside >= INSIDE_SHARE * len(points):
             return body
@@ -103,7 +109,10 @@ def interpret(scene: Scene, recognition: Recognition,
             return _joint(scene, "pivot", host, anchor)
     if kind == "x":
         assert isinstance(geometry, XSymbol)
-        hosts = bodies_at(scene, geometry.center)
+        arm = (math.dist(geometry.first.start, geometry.first.end) + math.dist(geometry.second.start,
+                                                                             geometry.second.end)) / 2
+        hosts = bodies_at(scene, geometry.center) or [b for b in bodies_at(scene, geometry.center, reach=arm / 2)
+                                                      if b.shape == "polyline"]
         if hosts:
             return _joint(scene, "weld", hosts[0], geometry.center)
         first = _add_body(scene, geometry.first)
