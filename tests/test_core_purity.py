@@ -35,6 +35,9 @@ FORBIDDEN_MODULES = (
     "physink_tui.render",
     "physink_tui.commands",
     "physink_tui.cli",
+    "physink_tui.journal",
+    "physink_tui.project",
+    "physink_tui.session",
 )
 
 # Modules whose import alone means clock or I/O access.
