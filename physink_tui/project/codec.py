@@ -34,6 +34,7 @@ from typing import Any
 from physink_tui import __version__
 from physink_tui.errors import SceneError
 from physink_tui.project.checks import (
+    _MISSING,
     _Fields,
     _json_value,
     _object,
@@ -61,11 +62,8 @@ MIN_POINTS = {"box": 3, "ellipse": 3, "polygon": 3, "polyline": 2}
 """The fewest outline points each non-circle shape may have."""
 JOINT_KINDS = ("pivot", "weld")
 AXES = ("horizontal", "vertical")
-SHOW_MAX = 60
 """Offending values are shown with at most this many characters."""
 
-_MISSING = object()
-_LABEL = "null or a non-empty string"
 
 
 @dataclass(frozen=True, slots=True)
