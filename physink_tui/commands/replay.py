@@ -1,7 +1,8 @@
 """`physink replay`: runs the input side over a capture or a journal and reports the gestures found.
 
-Until the scene and timeline exist (later issues) a replay stops at gestures: it prints them, one
-line each, and writes them to ``DIR/gestures.jsonl``. A capture is replayed device by device in file
+A replay prints the gestures, one line each, and writes them to ``DIR/gestures.jsonl``; a journal
+also runs through the session, whose sketch is written to ``DIR/project.json`` (the timeline comes
+with a later issue). A capture is replayed device by device in file
 order as live reports would arrive; a journal's ``hid`` lines go through their device's decoder, its
 ``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
 """
@@ -10,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections import Counter
 from pathlib import Path
 
 from physink_tui.atomic_write import write_text_atomic
@@ -22,6 +24,10 @@ from physink_tui.input.mapping import TabletMapping
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_layout import tablet_size
 from physink_tui.input.sources import RawReport, SourceEnded
+from physink_tui.journal.reader import read_journal
+from physink_tui.project.codec import Project
+from physink_tui.project.files import save_project
+from physink_tui.session.session import Session
 
 
 def is_journal(path: Path) -> bool:
@@ -96,7 +102,22 @@ def run(args: argparse.Namespace) -> int:
     print(f"replay: {strokes} strokes, {taps} taps; gestures written to {out / 'gestures.jsonl'}", file=sys.stderr)
     for note in notes:
         print(f"  {note}", file=sys.stderr)
+    if is_journal(path):
+        write_session_outputs(path, out)
     return 0
+
+
+def write_session_outputs(path: Path, out: Path) -> None:
+    """Run the journal through the session and write DIR/project.json (the sketch as it ends)."""
+    journal = read_journal(path)
+    session = Session.from_header(journal.header).run(journal.entries)
+    project = Project(session.scene, (), None, session.canvas)
+    save_project(project, out / "project.json")
+    for message in session.messages:
+        print(f"{message.t:9.3f}  told          {message.text}")
+    kinds = Counter(type(c).__name__.lower() for c in session.scene.components.values())
+    summary = ", ".join(f"{n} {k}{'s' if n > 1 else ''}" for k, n in sorted(kinds.items())) or "nothing"
+    print(f"replay: the sketch has {summary}; written to {out / 'project.json'}", file=sys.stderr)
 
 
 def _merge(events: list[str], gestures: list[Gesture]) -> list[str]:

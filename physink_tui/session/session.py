@@ -1,0 +1,246 @@
+"""The session: consumes journal entries in time order, keeps the scene, mode, selection and undo
+history, and journals what it consumed; the TUI, kiosk, CLI and tests all drive it the same way.
+
+Time is the entries' ``t``, never a clock. Pen input goes through the input side (decoder, mapping,
+gesture engine); each finished stroke is recognised and interpreted into the scene (sketch mode).
+A short line is held back until the next stroke shows whether the two make an X. Demo mode, the
+timeline and simulation arrive with later issues; their commands are accepted and reported.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass, field, replace
+
+from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, StrokeEnded, Tap
+from physink_tui.input.hid_decoder import HidPenDecoder
+from physink_tui.input.mapping import TabletMapping, mapping_from_header
+from physink_tui.input.pen_input import PenInput
+from physink_tui.input.pen_sample import PenSample
+from physink_tui.input.pen_state import TipThresholds
+from physink_tui.input.sources import RawReport
+from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.scene.components import Body, Rope, Scene, Spring
+from physink_tui.scene.interpret import bodies_at, interpret
+from physink_tui.scene.primitives import Recognition
+from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
+from physink_tui.session.history import History
+
+PEN_DEVICE = "pen"
+X_CANDIDATE = 0.08
+"""A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
+X_WAIT = 1.5
+"""Seconds a possible half-X waits for its second stroke before it is taken as a line on its own."""
+
+
+@dataclass(frozen=True, slots=True)
+class Message:
+    """Something the user should be told, at input time ``t``."""
+
+    t: float
+    text: str
+
+
+@dataclass
+class _Pending:
+    t: float
+    points: list[tuple[float, float]]
+    recognition: Recognition
+
+
+@dataclass
+class Session:
+    """One session's state. Build with `Session.from_header`; feed with `handle`; end with `finish`.
+
+    Attributes:
+        canvas: (width, height) in canvas units; pen positions are fractions of it.
+        history: the scene and its undo/redo stacks.
+        mode: ``sketch`` or ``demo``.
+        selected: the component the last tap chose, or None.
+        last_created: the component the last stroke made, or None (``label last``).
+        messages: what the user has been told, in order.
+    """
+
+    canvas: tuple[float, float]
+    pen: PenInput
+    history: History = field(default_factory=lambda: History(Scene()))
+    mode: str = "sketch"
+    selected: str | None = None
+    last_created: str | None = None
+    messages: list[Message] = field(default_factory=list)
+    t: float = 0.0
+    _pending: _Pending | None = None
+
+    @classmethod
+    def from_header(cls, header: JournalHeader) -> Session:
+        mapping = mapping_from_header(header.mapping) if header.mapping else TabletMapping(
+            canvas_width=header.canvas_width, canvas_height=header.canvas_height)
+        config = GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up))
+        pen = PenInput(mapping, config)
+        for device in header.devices:
+            pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid))
+        pen.add_sample_device(PEN_DEVICE, canvas_space=True)
+        return cls((header.canvas_width, header.canvas_height), pen)
+
+    @property
+    def scene(self) -> Scene:
+        return self.history.current
+
+    # -- input ---------------------------------------------------------------------------------
+
+    def handle(self, entry: JournalEntry) -> None:
+        """Consume one input; entries must come in time order (the journal guarantees it)."""
+        self.t = entry.t
+        if self._pending is not None and entry.t - self._pending.t > X_WAIT:
+            self._flush_pending()
+        if isinstance(entry, HidEntry):
+            self._gestures(self.pen.handle(RawReport(entry.t, entry.data, entry.dev)))
+        elif isinstance(entry, PenEntry):
+            sample = PenSample(entry.t, entry.x, entry.y, entry.p, entry.tip, entry.range, entry.eraser,
+                               entry.b1, entry.b2, None, None, 0)
+            self._gestures(self.pen.feed_canvas_sample(PEN_DEVICE, sample))
+        elif isinstance(entry, CommandEntry):
+            self._command(entry)
+        elif isinstance(entry, SayEntry):
+            self._say(entry)
+
+    def run(self, entries: Iterable[JournalEntry]) -> Session:
+        for entry in entries:
+            self.handle(entry)
+        self.finish()
+        return self
+
+    def finish(self) -> None:
+        """The input ended: settle a held-back half-X."""
+        self._flush_pending()
+
+    def tell(self, text: str) -> None:
+        self.messages.append(Message(self.t, text))
+
+    # -- pen -------------------------------------------------------------------------------------
+
+    def _gestures(self, gestures: list[Gesture]) -> None:
+        for g in gestures:
+            if isinstance(g, StrokeEnded):
+                self._stroke(g)
+            elif isinstance(g, Tap):
+                self._tap(g)
+            elif isinstance(g, Dwell) and self.mode == "sketch":
+                self.tell("adjusting a body (dwell, then drag) comes with the physics world: not built yet")
+
+    def _to_canvas(self, x: float, y: float) -> tuple[float, float]:
+        return (x * self.canvas[0], y * self.canvas[1])
+
+    def _tap(self, tap: Tap) -> None:
+        found = bodies_at(self.scene, self._to_canvas(tap.x, tap.y))
+        self.selected = found[0].id if found else None
+        if self.selected:
+            self.tell(f"selected {self._name(self.selected)}")
+
+    def _stroke(self, ended: StrokeEnded) -> None:
+        if self.mode != "sketch":
+            return
+        stroke = ended.stroke
+        if stroke.dwell_t is not None:
+            return  # a drag after a dwell adjusts; it draws nothing
+        points = [self._to_canvas(p.x, p.y) for p in stroke.points]
+        if stroke.eraser:
+            self._flush_pending()
+            self._eraser(points)
+            return
+        recognition = recognize_stroke(points)
+        if self._pending is not None:
+            pending, self._pending = self._pending, None
+            if recognition.kind == "line":
+                pair = recognize_strokes([pending.points, points])
+                if pair.kind == "x":
+                    self._apply(pair, [pending.points, points], "X-symbol")
+                    return
+            self._apply(pending.recognition, [pending.points], "line")
+        if recognition.kind == "line" and self._is_short(points):
+            self._pending = _Pending(ended.t, points, recognition)
+            return
+        self._apply(recognition, [points], recognition.kind or "stroke")
+
+    def _is_short(self, points: list[tuple[float, float]]) -> bool:
+        (x0, y0), (x1, y1) = points[0], points[-1]
+        return math.hypot(x1 - x0, y1 - y0) < X_CANDIDATE * math.hypot(*self.canvas)
+
+    def _flush_pending(self) -> None:
+        if self._pending is not None:
+            pending, self._pending = self._pending, None
+            self._apply(pending.recognition, [pending.points], "line")
+
+    def _apply(self, recognition: Recognition, strokes: list[list[tuple[float, float]]], what: str) -> None:
+        result = interpret(self.scene, recognition, strokes)
+        if result.message:
+            self.tell(result.message)
+        if result.scene != self.scene:
+            self.history.push(result.scene, f"{result.action}: {what}")
+            if result.created:
+                self.last_created = result.created[-1]
+            if self.selected in result.removed:
+                self.selected = None
+
+    def _eraser(self, points: list[tuple[float, float]]) -> None:
+        """An eraser stroke removes the topmost body it passes over (and what holds on to it)."""
+        for point in points:
+            found = bodies_at(self.scene, point)
+            if found:
+                gone = (found[0].id, *self.scene.attached_to(found[0].id))
+                self.history.push(self.scene.remove(*gone), f"erase: {found[0].id}")
+                return
+
+    # -- commands and speech ---------------------------------------------------------------------
+
+    def _command(self, entry: CommandEntry) -> None:
+        name, args = entry.name, entry.args
+        if name != "label":
+            self._flush_pending()
+        if name == "mode":
+            self.mode = str(args[0])
+            if self.mode == "demo":
+                self.tell("demo mode records behaviour once the timeline is built (issue 6)")
+        elif name == "undo":
+            if self.history.undo() is None:
+                self.tell("nothing to undo")
+        elif name == "redo":
+            if self.history.redo() is None:
+                self.tell("nothing to redo")
+        elif name == "clear":
+            if self.scene.components:
+                self.history.push(replace(Scene(), next_id=self.scene.next_id), "clear")
+            self.selected = self.last_created = None
+        elif name == "label":
+            self._label(str(args[0]), str(args[1]))
+        else:
+            self.tell(f"{name}: not available yet (the timeline and simulation come with issues 6 and later)")
+
+    def _say(self, entry: SayEntry) -> None:
+        words = entry.text.strip().split()
+        if len(words) >= 2 and words[0].lower() == "label":
+            self._label("selected" if self.selected else "last", " ".join(words[1:]))
+        elif entry.text.strip():
+            self.tell(f"heard {entry.text!r}; only 'label <name>' is understood while sketching")
+
+    def _label(self, target: str, text: str) -> None:
+        component_id = {"last": self.last_created, "selected": self.selected}.get(target, target)
+        if component_id is None:
+            self.tell(f"label {text!r}: nothing is {target} — tap a body first, or draw one")
+            return
+        component = self.scene.components.get(component_id)
+        if component is None:
+            known = ", ".join(self.scene.components) or "none"
+            self.tell(f"label {text!r}: there is no component {component_id!r} (components: {known})")
+            return
+        if not isinstance(component, Body | Rope | Spring):
+            self.tell(f"label {text!r}: joints take no labels")
+            return
+        self.history.push(self.scene.update(replace(component, label=text)), f"label {component_id} {text}")
+
+    def _name(self, component_id: str) -> str:
+        c = self.scene.components.get(component_id)
+        label = getattr(c, "label", None)
+        return f"{label} ({component_id})" if label else component_id
+

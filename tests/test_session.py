@@ -1,0 +1,146 @@
+"""The session over journals: strokes become a scene, labels, taps, undo/redo, clear, eraser, determinism."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from physink_tui.cli import main
+from physink_tui.demo_data import demo_capture
+from physink_tui.input.mapping import TabletMapping
+from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
+from physink_tui.journal.entries import CommandEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.journal.reader import read_journal
+from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope
+from physink_tui.session.session import Session
+
+MAPPING = TabletMapping(canvas_width=1600, canvas_height=1000, tablet_width=1.6, tablet_height=1.0)
+
+
+def egg_cracker_journal(path: Path, extra=()) -> Path:
+    capture = demo_capture()
+    write_journal(path, header_for_capture(capture, MAPPING), capture_entries(capture), list(extra))
+    return path
+
+
+def pen_header() -> JournalHeader:
+    return JournalHeader(1600, 1000, (), {}, 0.05, 0.01)
+
+
+def pen_stroke(t0: float, points: list[tuple[float, float]], eraser: bool = False, dt: float = 0.01) -> list[PenEntry]:
+    """A stroke as mouse/scripted `pen` lines (canvas fractions): hover, touch along the points, lift."""
+    out = [PenEntry(t0, *points[0], 0.0, False, True, eraser, False, False)]
+    for i, (x, y) in enumerate(points, 1):
+        out.append(PenEntry(t0 + i * dt, x, y, 0.6, True, True, eraser, False, False))
+    out.append(PenEntry(t0 + (len(points) + 1) * dt, *points[-1], 0.0, False, True, eraser, False, False))
+    return out
+
+
+def box_points(x0: float, y0: float, x1: float, y1: float, n: int = 15) -> list[tuple[float, float]]:
+    corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]
+    pts = []
+    for (ax, ay), (bx, by) in zip(corners, corners[1:], strict=False):
+        pts += [(ax + (bx - ax) * k / n, ay + (by - ay) * k / n) for k in range(n)]
+    return [*pts, corners[0]]
+
+
+def circle_points(cx: float, cy: float, r: float, n: int = 40) -> list[tuple[float, float]]:
+    return [(cx + r / 1.6 * math.cos(2 * math.pi * k / n), cy + r * math.sin(2 * math.pi * k / n)) for k in range(n + 1)]
+
+
+def run(entries, header=None) -> Session:
+    return Session.from_header(header or pen_header()).run(sorted(entries, key=lambda e: e.t))
+
+
+def test_the_egg_cracker_drawing_becomes_its_machine(tmp_path) -> None:
+    journal = read_journal(egg_cracker_journal(tmp_path / "egg.physink.jsonl", [SayEntry(5.3, "label ball")]))
+    session = Session.from_header(journal.header).run(journal.entries)
+    scene = session.scene
+    bodies = {b.id: b for b in scene.bodies()}
+    joints = [c for c in scene.components.values() if isinstance(c, Joint)]
+    assert [b.shape for b in bodies.values()] == ["polyline", "circle", "box", "circle", "polyline"]
+    ramp, ball, lever = bodies["b1"], bodies["b2"], bodies["b3"]
+    assert ball.label == "ball"
+    assert {(j.kind, j.a, j.b) for j in joints} == {("weld", ramp.id, BACKGROUND), ("pivot", lever.id, BACKGROUND)}
+    assert scene.is_fixed(ramp.id) and not scene.is_fixed(ball.id)
+
+
+def test_replaying_the_same_journal_twice_gives_identical_project_files(tmp_path, capsys) -> None:
+    journal = egg_cracker_journal(tmp_path / "egg.physink.jsonl")
+    for name in ("a", "b"):
+        assert main(["replay", str(journal), "--out", str(tmp_path / name)]) == 0
+    capsys.readouterr()
+    first = (tmp_path / "a" / "project.json").read_bytes()
+    assert first == (tmp_path / "b" / "project.json").read_bytes()
+    assert b'"physink-project"' in first
+
+
+def test_undo_redo_and_clear() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.3, 0.3)) + pen_stroke(1.0, circle_points(0.6, 0.5, 0.08))
+    entries += [CommandEntry(2.0, "undo"), CommandEntry(2.1, "redo"), CommandEntry(2.2, "clear"),
+                CommandEntry(2.3, "undo"), CommandEntry(2.4, "undo")]
+    session = Session.from_header(pen_header())
+    states = []
+    for e in sorted(entries, key=lambda e: e.t):
+        session.handle(e)
+        if isinstance(e, CommandEntry):
+            states.append(sorted(session.scene.components))
+    assert states == [["b1"], ["b1", "b2"], [], ["b1", "b2"], ["b1"]]
+
+
+def test_labels_by_command_and_speech_and_what_the_user_is_told() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.3, 0.3)) + pen_stroke(1.0, circle_points(0.6, 0.5, 0.08))
+    entries += [SayEntry(1.8, "label ball"), CommandEntry(2.0, "label", ("b1", "shelf")),
+                CommandEntry(2.1, "label", ("b9", "ghost"))]
+    # a tap on the box selects it; the next label goes to it
+    entries += [PenEntry(3.0, 0.2, 0.2, 0.0, False, True, False, False, False),
+                PenEntry(3.01, 0.2, 0.2, 0.5, True, True, False, False, False),
+                PenEntry(3.05, 0.2, 0.2, 0.0, False, True, False, False, False),
+                SayEntry(3.2, "label crate")]
+    session = run(entries)
+    assert session.scene.components["b2"].label == "ball"
+    assert session.scene.components["b1"].label == "crate"
+    told = " | ".join(m.text for m in session.messages)
+    assert "no component 'b9'" in told and "b1, b2" in told and "selected" in told
+
+
+def test_label_with_nothing_to_label_is_told() -> None:
+    session = run([SayEntry(0.5, "label ball")])
+    assert not session.scene.components and "nothing is last" in session.messages[-1].text
+
+
+def test_an_eraser_stroke_removes_the_body_it_crosses() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.3, 0.3))
+    entries += pen_stroke(1.0, [(0.15 + 0.01 * k, 0.2) for k in range(12)], eraser=True)
+    session = run(entries)
+    assert not session.scene.components
+
+
+def test_two_short_lines_in_a_row_make_an_x_and_a_lone_one_waits_then_is_a_line() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.5, 0.5))
+    entries += pen_stroke(1.0, [(0.28 + 0.004 * k, 0.28 + 0.004 * k) for k in range(11)])
+    entries += pen_stroke(1.5, [(0.32 - 0.004 * k, 0.28 + 0.004 * k) for k in range(11)])
+    entries += pen_stroke(3.0, [(0.8 + 0.004 * k, 0.8) for k in range(11)])  # alone, far away
+    session = run(entries)
+    kinds = [type(c).__name__ for c in session.scene.components.values()]
+    assert kinds == ["Body", "Joint", "Body"]
+    weld = session.scene.components["j1"]
+    assert (weld.kind, weld.a, weld.b) == ("weld", "b1", BACKGROUND)
+
+
+@pytest.mark.parametrize("command", ["play", "seek", "simulate"])
+def test_commands_of_later_issues_are_reported_not_ignored(command: str) -> None:
+    args = (1.0,) if command == "seek" else ()
+    session = run([CommandEntry(0.1, command, args)])
+    assert command in session.messages[-1].text and "not available yet" in session.messages[-1].text
+
+
+def test_a_curve_from_a_peg_is_a_rope_attached_to_it() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.15, 0.15))
+    entries += pen_stroke(1.0, [(0.125 + 0.3 * u, 0.125 + 0.3 * u * u) for u in (k / 30 for k in range(31))])
+    session = run(entries)
+    rope = next(c for c in session.scene.components.values() if isinstance(c, Rope))
+    assert rope.start_body == "b1" and rope.end_body is None
+    assert isinstance(session.scene.components["b1"], Body)
