@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from pathlib import Path
 
@@ -41,13 +42,14 @@ def pen_stroke(t0: float, points: list[tuple[float, float]], eraser: bool = Fals
 def box_points(x0: float, y0: float, x1: float, y1: float, n: int = 15) -> list[tuple[float, float]]:
     corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]
     pts = []
-    for (ax, ay), (bx, by) in zip(corners, corners[1:], strict=False):
+    for (ax, ay), (bx, by) in itertools.pairwise(corners):
         pts += [(ax + (bx - ax) * k / n, ay + (by - ay) * k / n) for k in range(n)]
     return [*pts, corners[0]]
 
 
 def circle_points(cx: float, cy: float, r: float, n: int = 40) -> list[tuple[float, float]]:
-    return [(cx + r / 1.6 * math.cos(2 * math.pi * k / n), cy + r * math.sin(2 * math.pi * k / n)) for k in range(n + 1)]
+    angles = [2 * math.pi * k / n for k in range(n + 1)]
+    return [(cx + r / 1.6 * math.cos(a), cy + r * math.sin(a)) for a in angles]
 
 
 def run(entries, header=None) -> Session:
