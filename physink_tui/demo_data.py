@@ -16,17 +16,18 @@ from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
 from physink_tui.input.virtual_pen import Stroke, VirtualPen
 
 DEMO_FILE = "egg-cracker.hid"
+TABLET_ASPECT = 40000 / 25000
+"""The reference UC-Logic tablet's active area is 1.6 times wider than tall: round things are drawn round on it."""
 
 EGG_CRACKER: tuple[Stroke, ...] = (
     Stroke.line((0.06, 0.22), (0.36, 0.42)),                      # the ramp
     Stroke.line((0.18, 0.28), (0.24, 0.34)),                      # an X pinning the ramp ...
     Stroke.line((0.24, 0.28), (0.18, 0.34)),                      # ... to the background
-    Stroke.circle((0.10, 0.15), 0.04),                            # the ball
+    Stroke.circle((0.10, 0.15), 0.04, aspect=TABLET_ASPECT),      # the ball
     Stroke.box(0.38, 0.47, 0.64, 0.50),                           # the lever
-    Stroke.circle((0.51, 0.485), 0.012, segments=24),             # its pivot
-    Stroke.circle((0.60, 0.41), 0.035),                           # the egg
+    Stroke.circle((0.51, 0.485), 0.012, segments=24, aspect=TABLET_ASPECT),  # its pivot
+    Stroke.circle((0.60, 0.41), 0.035, aspect=TABLET_ASPECT),     # the egg
     Stroke(((0.54, 0.78), (0.57, 0.90), (0.84, 0.90), (0.87, 0.78))),  # the frying pan
-    Stroke.coil((0.44, 0.80), (0.44, 0.60), loops=5, radius=0.025),  # a spring under the lever
 )
 """The egg cracker of the thesis (figure 2-4), drawn in the order a person would."""
 

@@ -26,9 +26,10 @@ def test_demo_writes_samples_and_summary(tmp_path, capsys) -> None:
     downs = sum(1 for a, b in itertools.pairwise(samples) if b["tip"] and not a["tip"])
     assert downs + samples[0]["tip"] == len(EGG_CRACKER)
     assert all(0 <= s["x"] <= 1 and 0 <= s["y"] <= 1 and 0 <= s["p"] <= 1 for s in samples)
-    kinds = [json.loads(line)["kind"] for line in (out / "recognized.jsonl").read_text().splitlines()]
-    # ramp, X pin, ball, lever, pivot, egg, pan, spring (thesis figure 2-4, as the bundled drawing has it)
-    assert kinds == ["line", "x", "circle", "box", "circle", "circle", "polyline", "helix"]
+    project = json.loads((out / "project.json").read_text())
+    shapes = [c.get("shape", c["kind"] if "kind" in c else c["type"]) for c in project["components"]]
+    # ramp (welded by its X), ball, lever (pinned by its small circle), egg, pan: thesis figure 2-4
+    assert shapes == ["polyline", "weld", "circle", "box", "pivot", "circle", "polyline"]
     summary = (out / "summary.txt").read_text()
     assert "pen samples" in summary and "ignored" not in summary
 
@@ -36,7 +37,7 @@ def test_demo_writes_samples_and_summary(tmp_path, capsys) -> None:
 def test_demo_twice_gives_identical_files(tmp_path) -> None:
     for name in ("a", "b"):
         assert main(["demo", "--headless", "--out", str(tmp_path / name)]) == 0
-    for file in ("samples.jsonl", "summary.txt", "recognized.jsonl"):
+    for file in ("samples.jsonl", "summary.txt", "project.json", "session.physink.jsonl"):
         assert (tmp_path / "a" / file).read_bytes() == (tmp_path / "b" / file).read_bytes()
 
 

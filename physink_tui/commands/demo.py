@@ -1,8 +1,9 @@
 """`physink demo`: runs the part of the pipeline that exists on the bundled drawing; writes DIR outputs.
 
-Until the Textual UI exists (a later issue) the demo is headless whatever the terminal: it decodes
-the bundled egg-cracker capture (made with the virtual pen), writes the samples and the summary to
-the output folder, and shows the strokes it found as braille dots.
+Until the Textual UI exists (a later issue) the demo is headless whatever the terminal: it journals
+the bundled egg-cracker capture (made with the virtual pen) as a session, runs it through decoding,
+gestures, recognition and interpretation, writes the samples, the journal and the resulting project
+to the output folder, and shows the strokes as braille dots.
 """
 
 from __future__ import annotations
@@ -10,39 +11,41 @@ from __future__ import annotations
 import argparse
 import io
 import sys
+from collections import Counter
 from pathlib import Path
 
 from physink_tui.atomic_write import write_text_atomic
 from physink_tui.commands.decode import decode_capture, summary, write_jsonl
-from physink_tui.commands.recognize import recognition_json
-from physink_tui.commands.replay import replay_capture
-from physink_tui.demo_data import DEMO_FILE, demo_capture_text
+from physink_tui.demo_data import DEMO_FILE, TABLET_ASPECT, demo_capture_text
 from physink_tui.errors import PhysinkError
 from physink_tui.input.capture import Capture
-from physink_tui.input.gestures import StrokeEnded
+from physink_tui.input.mapping import TabletMapping
+from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
+from physink_tui.journal.reader import read_journal
+from physink_tui.project.codec import Project
+from physink_tui.project.files import save_project
 from physink_tui.render.braille import braille_plot
-from physink_tui.scene.recognize import recognize_strokes
+from physink_tui.scene.components import Body, Joint
+from physink_tui.session.session import Session
+
+CANVAS = (1600.0, 1000.0)
+JOURNAL = "session.physink.jsonl"
+
+PLURAL = {"body": "bodies"}
 
 
-def recognize_drawing(capture: Capture, path: Path) -> list[str]:
-    """Follow the capture to strokes, recognise them (two lines in a row may be an X), write one JSON
-    line per recognition to ``path``; return the kinds in drawing order."""
-    gestures, _ = replay_capture(capture)
-    strokes = [[(p.x, p.y) for p in g.stroke.points] for g in gestures if isinstance(g, StrokeEnded)]
-    results = []
-    i = 0
-    while i < len(strokes):
-        single = recognize_strokes([strokes[i]])
-        if single.kind == "line" and i + 1 < len(strokes):
-            pair = recognize_strokes([strokes[i], strokes[i + 1]])
-            if pair.kind == "x":
-                results.append(pair)
-                i += 2
-                continue
-        results.append(single)
-        i += 1
-    write_text_atomic(path, "".join(recognition_json(r) + "\n" for r in results))
-    return [r.kind or "nothing" for r in results]
+def describe(session: Session) -> list[str]:
+    """One line per component, in drawing order, for the terminal."""
+    lines = []
+    for c in session.scene.components.values():
+        if isinstance(c, Body):
+            held = " (fixed)" if session.scene.is_fixed(c.id) else ""
+            lines.append(f"  {c.id:4} {c.shape}{held}" + (f"  label {c.label!r}" if c.label else ""))
+        elif isinstance(c, Joint):
+            lines.append(f"  {c.id:4} {'rotational' if c.kind == 'pivot' else 'fixed'} joint {c.a} - {c.b}")
+        else:
+            lines.append(f"  {c.id:4} {type(c).__name__.lower()}")
+    return lines
 
 
 def run(args: argparse.Namespace) -> int:
@@ -56,19 +59,32 @@ def run(args: argparse.Namespace) -> int:
     _, _, cols = results[0]
     samples = io.StringIO()
     write_jsonl(cols, samples)
-    text_summary = summary(capture, results)
     write_text_atomic(out / "samples.jsonl", samples.getvalue())
-    write_text_atomic(out / "summary.txt", text_summary + "\n")
+    write_text_atomic(out / "summary.txt", summary(capture, results) + "\n")
+
+    mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=TABLET_ASPECT,
+                            tablet_height=1.0)
+    journal_path = out / JOURNAL
+    journal_path.unlink(missing_ok=True)  # a journal is never overwritten: the demo starts a fresh one
+    write_journal(journal_path, header_for_capture(capture, mapping), capture_entries(capture))
+    journal = read_journal(journal_path)
+    session = Session.from_header(journal.header).run(journal.entries)
+    save_project(Project(session.scene, (), None, session.canvas), out / "project.json")
+
     tip = cols.tip.tolist()
-    strokes = sum(1 for i, down in enumerate(tip) if down and (i == 0 or not tip[i - 1]))
     touching = [(x, y) for x, y, down in zip(cols.x.tolist(), cols.y.tolist(), tip, strict=True) if down]
-    kinds = recognize_drawing(capture, out / "recognized.jsonl")
+    strokes = sum(1 for i, down in enumerate(tip) if down and (i == 0 or not tip[i - 1]))
+    kinds = Counter(type(c).__name__.lower() for c in session.scene.components.values())
     print("PhysInk TUI demo: the bundled egg-cracker drawing, read as raw HID reports from a virtual")
-    print("UC-Logic tablet, decoded, followed to strokes and recognised (the physical scene, the timeline")
-    print("and the terminal UI come in later issues).\n")
+    print("UC-Logic tablet, decoded, followed to strokes, recognised and interpreted into a physical scene")
+    print("(the physics, the timeline and the terminal UI come in later issues).\n")
     print(braille_plot(touching, width=64, height=20))
-    print(f"\n{len(cols)} pen samples, {strokes} strokes recognised as: {', '.join(kinds)}")
-    print(f"written to {out}/samples.jsonl, {out}/summary.txt and {out}/recognized.jsonl")
+    print(f"\n{len(cols)} pen samples, {strokes} strokes; the sketch has "
+          + ", ".join(f"{n} {PLURAL.get(k, k + 's') if n > 1 else k}" for k, n in sorted(kinds.items())) + ":")
+    print("\n".join(describe(session)))
+    for message in session.messages:
+        print(f"  note: {message.text}")
+    print(f"written to {out}/: samples.jsonl, summary.txt, {JOURNAL} (replay it with physink replay) and project.json")
     if args.headless is False and sys.stdout.isatty():
         print("(the interactive TUI is not built yet; this run was headless)")
     return 0

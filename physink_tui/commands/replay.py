@@ -29,6 +29,8 @@ from physink_tui.project.codec import Project
 from physink_tui.project.files import save_project
 from physink_tui.session.session import Session
 
+PLURAL = {"body": "bodies"}
+
 
 def is_journal(path: Path) -> bool:
     """A journal is JSON Lines (its first character is ``{``); a capture is hid-recorder text."""
@@ -116,7 +118,7 @@ def write_session_outputs(path: Path, out: Path) -> None:
     for message in session.messages:
         print(f"{message.t:9.3f}  told          {message.text}")
     kinds = Counter(type(c).__name__.lower() for c in session.scene.components.values())
-    summary = ", ".join(f"{n} {k}{'s' if n > 1 else ''}" for k, n in sorted(kinds.items())) or "nothing"
+    summary = ", ".join(f"{n} {PLURAL.get(k, k + 's') if n > 1 else k}" for k, n in sorted(kinds.items())) or "nothing"
     print(f"replay: the sketch has {summary}; written to {out / 'project.json'}", file=sys.stderr)
 
 

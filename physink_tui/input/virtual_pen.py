@@ -95,11 +95,13 @@ class Stroke:
         return cls(((x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)), **kwargs)
 
     @classmethod
-    def circle(cls, center: Point, radius: float, *, segments: int = 72, **kwargs) -> Stroke:
-        """A circle (in active-area units) drawn clockwise from its top, closing on itself."""
+    def circle(cls, center: Point, radius: float, *, segments: int = 72, aspect: float = 1.0, **kwargs) -> Stroke:
+        """A circle drawn clockwise from its top, closing on itself. ``radius`` is a fraction of the
+        active area's height; ``aspect`` (width / height of the active area) makes it round on the
+        tablet itself rather than in active-area units."""
         cx, cy = center
         angles = [2.0 * math.pi * k / segments for k in range(segments + 1)]
-        pts = [(cx + radius * math.sin(a), cy - radius * math.cos(a)) for a in angles]
+        pts = [(cx + radius / aspect * math.sin(a), cy - radius * math.cos(a)) for a in angles]
         return cls(tuple(pts), **kwargs)
 
     @classmethod
