@@ -1,0 +1,415 @@
+"""The physics world: one pymunk space mirroring a Scene, stepped on a fixed dt, queried and dragged by component id.
+
+`World` owns the space, the fixed time step and the two-way maps between component ids and pymunk objects (built by
+world_build.py). It answers which body lies under a point, where a body is and how fast it moves; it freezes bodies
+and drags one through a soft constraint for editing and demonstrating; it records where contacts begin and writes
+poses back into a Scene. Deciding what strokes become (interpret), what contacts mean (timeline) and when to step
+(session) is left to others.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import pymunk
+
+from physink_tui.errors import SceneError
+from physink_tui.scene.components import BACKGROUND, Body, Joint, Point, Rope, Scene, Spring
+from physink_tui.scene.world_build import Built, Pose, build
+
+GRAVITY: Point = (0.0, 900.0)
+"""Gravity in canvas units per second squared, pointing down the canvas (+y).
+
+A sketch is about 1000 units across and a pen-drawn ball 20-60 units wide. At 900 units/s² (about 9.2 m/s² if a
+unit is a centimetre, so a canvas is a ten-metre Rube Goldberg room) a body falls the whole canvas height in
+sqrt(2 * 1000 / 900) ~ 1.5 s: slow enough to follow on screen, fast enough to feel like falling. Its speed then is
+about 1340 units/s, i.e. 11 units per 1/120 s step, less than the half-thickness of any body the recogniser makes,
+so nothing tunnels through a platform.
+"""
+DT = 1 / 120
+"""The fixed time step in seconds (two steps per 60 Hz frame)."""
+ITERATIONS = 20
+"""Solver iterations per step (pymunk's default is 10): ropes carrying heavy bodies stretch visibly with fewer."""
+BOUNCE_THRESHOLD = 50.0
+"""Slowest approach (canvas units/s) that bounces; slower contacts and contacts that persist are inelastic.
+
+Chipmunk re-applies restitution every step a contact lasts, so a body resting on a fully elastic box (restitution
+1.0) is bounced by the speed gravity gave it in the last step and a pile never settles. Box2D, which the thesis
+used, bounces only approaches faster than ``b2_velocityThreshold`` (1 m/s); this is its counterpart here: a ball
+that would bounce less than 50² / (2 * 900) ~ 1.4 units high under gravity stays down.
+"""
+DRAG_ACCELERATION = 20_000.0
+"""The strongest pull of a drag, per unit of the dragged body's mass (canvas units/s², ~22 g)."""
+DRAG_ANGULAR_ACCELERATION = 200.0
+"""The strongest twist (rad/s², times the moment of inertia) with which a ``rotate=False`` drag holds the angle."""
+DRAG_ERROR_BIAS = (1 - 0.15) ** 60
+"""Fraction of the pen-to-grab-point distance left uncorrected after one second (pymunk's mouse-joint example)."""
+
+
+@dataclass(frozen=True, slots=True)
+class ContactRecord:
+    """Two components started touching.
+
+    Attributes:
+        step: the step (1-based, counted over the world's life) in which the contact began.
+        a_id, b_id: the body or rope ids, in the order pymunk reported the pair.
+        point: a contact point on ``a``'s surface, canvas units.
+        normal: unit vector from ``a`` towards ``b``.
+    """
+
+    step: int
+    a_id: str
+    b_id: str
+    point: Point
+    normal: Point
+
+
+@dataclass(slots=True)
+class _Drag:
+    body_id: str
+    body: pymunk.Body
+    control: pymunk.Body
+    parts: tuple[pymunk.Constraint, ...]
+    fixed: bool  # static before the drag without being frozen: static again on release
+
+
+class World:
+    """A pymunk space mirroring a `Scene`, addressed by component id.
+
+    Bodies welded to the background (`Scene.is_fixed`) are pymunk STATIC bodies rather than dynamic bodies held by
+    a weld constraint: they cannot drift or sag, cost the solver nothing, and stay put when other bodies land on
+    them. A drag may still move one (it is made dynamic for the drag and static again on release).
+
+    Contacts take the larger restitution and the mean friction of the two shapes (DESIGN.md; pymunk would multiply
+    them), set on each arbiter before it is solved; restitution acts only when a contact begins faster than
+    `BOUNCE_THRESHOLD`. The world owns the space's collision handler: shapes carry surface codes, not their
+    materials' values (see world_build.py), so no other handler may replace it.
+
+    >>> from physink_tui.scene.components import MATERIALS
+    >>> ball = Body("b1", "circle", (), 20.0, (100.0, 100.0), 0.0, MATERIALS["round"])
+    >>> world = World.from_scene(Scene().add(ball))
+    >>> world.step(120)
+    >>> round(world.pose("b1")[1])  # one second of free fall: 100 + 900 / 2, less the step pymunk lags by
+    546
+    """
+
+    def __init__(self, built: Built, *, dt: float) -> None:
+        """Use `from_scene`; this takes the output of `world_build.build`."""
+        self._built = built
+        self._space = built.space
+        self._dt = dt
+        self._steps = 0
+        self._contacts: list[ContactRecord] = []
+        self._touched: set[tuple[str, str]] = set()
+        self._live: set[pymunk.Constraint] = set()
+        self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
+        self._drag: _Drag | None = None
+        self._by_z = sorted(built.z, key=built.z.__getitem__)
+        self._contact_values = built.contact_values
+        self._space.on_collision(begin=self._begin, pre_solve=self._pre_solve)
+        self._sync_constraints()
+
+    @classmethod
+    def from_scene(cls, scene: Scene, *, gravity: Point = GRAVITY, dt: float = DT) -> World:
+        """Builds the world for ``scene``.
+
+        Raises:
+            SceneError: a component the world cannot build (see `world_build.build`), or a non-positive ``dt``.
+        """
+        if not dt > 0:
+            raise SceneError(f"time step {dt!r} is not positive")
+        space = pymunk.Space()
+        space.gravity = gravity
+        space.iterations = ITERATIONS
+        return cls(build(scene, space), dt=dt)
+
+    # -- what the world holds -------------------------------------------------------------------------------------
+
+    @property
+    def space(self) -> pymunk.Space:
+        return self._space
+
+    @property
+    def dt(self) -> float:
+        return self._dt
+
+    @property
+    def steps(self) -> int:
+        """Steps taken since the world was built."""
+        return self._steps
+
+    @property
+    def gravity(self) -> Point:
+        return tuple(self._space.gravity)
+
+    @gravity.setter
+    def gravity(self, value: Point) -> None:
+        self._space.gravity = value
+
+    def body_ids(self) -> tuple[str, ...]:
+        """The bodies' ids, bottom first (creation order)."""
+        return tuple(self._by_z)
+
+    def pymunk_body(self, component_id: str) -> pymunk.Body:
+        """The pymunk body of a body id or `BACKGROUND`."""
+        return self._get(component_id)
+
+    def shapes_of(self, component_id: str) -> tuple[pymunk.Shape, ...]:
+        """The shapes of a body or rope."""
+        return self._built.shapes[component_id]
+
+    def constraints_of(self, component_id: str) -> tuple[pymunk.Constraint, ...]:
+        """The constraints of a joint, spring or rope (including constraints not in the space right now)."""
+        return self._built.constraints[component_id]
+
+    def links_of(self, rope_id: str) -> tuple[pymunk.Body, ...]:
+        return self._built.links[rope_id]
+
+    def owner(self, shape: pymunk.Shape) -> str | None:
+        """The id of the body or rope a shape belongs to."""
+        return self._built.owner.get(shape)
+
+    def surface(self, shape: pymunk.Shape) -> tuple[float, float]:
+        """``(restitution, friction)`` of the material of a shape."""
+        return self._built.surface(shape)
+
+    # -- queries --------------------------------------------------------------------------------------------------
+
+    def bodies_at(self, point: Point) -> list[str]:
+        """Ids of the bodies whose shape contains ``point``, topmost (last created) first; ropes are not bodies."""
+        z = self._built.z
+        hits = {self._built.owner.get(hit.shape) for hit in self._space.point_query(point, 0.0, pymunk.ShapeFilter())}
+        return sorted((h for h in hits if h in z), key=z.__getitem__, reverse=True)
+
+    def body_at(self, point: Point) -> str | None:
+        """The topmost body containing ``point``, or None."""
+        hits = self.bodies_at(point)
+        return hits[0] if hits else None
+
+    def pose(self, body_id: str) -> Pose:
+        """``(x, y, angle)`` of a body's origin (`Body.position`) and its rotation in radians."""
+        body = self._get(body_id)
+        return body.position.x, body.position.y, body.angle
+
+    def velocity(self, body_id: str) -> Pose:
+        """``(vx, vy, angular velocity)`` of a body's origin, canvas units and radians per second."""
+        body = self._get(body_id)
+        v = body.velocity_at_world_point(body.position)
+        return v.x, v.y, body.angular_velocity
+
+    def set_velocity(self, body_id: str, velocity: Point, angular_velocity: float = 0.0) -> None:
+        """Gives a dynamic body a velocity (of its centre of mass) and an angular velocity."""
+        body = self._get(body_id)
+        body.velocity = velocity
+        body.angular_velocity = angular_velocity
+
+    def is_dynamic(self, body_id: str) -> bool:
+        return self._get(body_id).body_type == pymunk.Body.DYNAMIC
+
+    # -- time -----------------------------------------------------------------------------------------------------
+
+    def step(self, n: int = 1) -> None:
+        """Advances exactly ``n`` steps of ``dt``."""
+        for _ in range(n):
+            self._steps += 1
+            self._touched.clear()
+            self._space.step(self._dt)
+
+    def take_contacts(self) -> list[ContactRecord]:
+        """The contacts begun since the last call, in the order they began."""
+        out, self._contacts = self._contacts, []
+        return out
+
+    # -- editing --------------------------------------------------------------------------------------------------
+
+    def freeze_all_except(self, body_id: str) -> None:
+        """Makes every dynamic body static except ``body_id``, what is welded to it, and ropes attached to those.
+
+        Velocities are kept and given back by `unfreeze`. Calling it again first unfreezes.
+        """
+        self.unfreeze()
+        keep = self._weld_group(body_id)
+        for rope_id, links in self._built.links.items():
+            if {b for part in self._built.constraints[rope_id] for b in (part.a, part.b)} & keep:
+                keep.update(links)
+        for body in self._dynamic_bodies():
+            if body in keep:
+                continue
+            self._frozen[body] = ((body.velocity.x, body.velocity.y), body.angular_velocity)
+            body.body_type = pymunk.Body.STATIC
+            self._space.reindex_shapes_for_body(body)
+        self._sync_constraints()
+
+    def unfreeze(self) -> None:
+        """Undoes `freeze_all_except`: the frozen bodies move again with the velocities they had."""
+        for body, (velocity, spin) in self._frozen.items():
+            if self._drag is not None and body is self._drag.body:
+                continue  # already dynamic, and moving with the pen
+            body.body_type = pymunk.Body.DYNAMIC
+            body.velocity = velocity
+            body.angular_velocity = spin
+        self._frozen.clear()
+        self._sync_constraints()
+
+    def drag(self, body_id: str, target_point: Point, grab_point: Point | None = None, *,
+             rotate: bool = True) -> None:
+        """Pulls ``body_id`` so that the point grabbed moves towards ``target_point`` (a mouse joint).
+
+        The first call for a body grabs it at ``grab_point`` (canvas units; default its origin); later calls for the
+        same body only move the target. A kinematic control body at the target holds the grabbed point through a
+        pivot joint of limited force, so the body follows the pen but is stopped by what it hits. With
+        ``rotate=False`` a gear of limited torque also keeps its angle. A static (fixed) body is made dynamic for
+        the drag and static again by `release`.
+        """
+        body = self._get(body_id)
+        if self._drag is not None and self._drag.body is not body:
+            self.release()
+        if self._drag is None:
+            fixed = body.body_type != pymunk.Body.DYNAMIC and body not in self._frozen
+            if body.body_type != pymunk.Body.DYNAMIC:  # fixed, or frozen (frozen again on release, until `unfreeze`)
+                body.body_type = pymunk.Body.DYNAMIC
+                body.velocity, body.angular_velocity = (0.0, 0.0), 0.0
+            grab = body.position if grab_point is None else grab_point
+            control = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+            control.position = grab
+            pin = pymunk.PivotJoint(control, body, (0, 0), body.world_to_local(grab))
+            pin.max_force = DRAG_ACCELERATION * body.mass
+            pin.error_bias = DRAG_ERROR_BIAS
+            parts: list[pymunk.Constraint] = [pin]
+            if not rotate:
+                hold = pymunk.GearJoint(control, body, body.angle, 1.0)
+                hold.max_force = DRAG_ANGULAR_ACCELERATION * body.moment
+                hold.error_bias = DRAG_ERROR_BIAS
+                parts.append(hold)
+            self._space.add(control)
+            self._drag = _Drag(body_id, body, control, tuple(parts), fixed)
+            self._sync_constraints()
+        self._drag.control.position = target_point
+
+    def release(self) -> None:
+        """Ends the drag; a fixed or frozen body becomes static again where it now is."""
+        drag, self._drag = self._drag, None
+        if drag is None:
+            return
+        for part in drag.parts:
+            self._space.remove(part)
+            self._live.discard(part)
+        self._space.remove(drag.control)
+        if drag.fixed or drag.body in self._frozen:
+            drag.body.body_type = pymunk.Body.STATIC
+            self._space.reindex_shapes_for_body(drag.body)
+        self._sync_constraints()
+
+    # -- back to the scene ----------------------------------------------------------------------------------------
+
+    def to_scene(self, scene: Scene) -> Scene:
+        """``scene`` with its bodies at their current poses, and the joints, springs and ropes that they carry moved
+        along (anchors follow their bodies; a rope's points become its link ends). Components the world does not
+        know are left as they are; nothing moved, nothing changes (values come back bit for bit).
+        """
+        built = self._built
+        out = dict(scene.components)
+        for cid, c in scene.components.items():
+            if isinstance(c, Body) and cid in built.z:
+                body = built.bodies[cid]
+                pose = (body.position.x, body.position.y, body.angle)
+                if pose != built.rest_pose[body]:
+                    out[cid] = replace(c, position=pose[:2], angle=pose[2])
+            elif cid in built.carriers:
+                carriers = built.carriers[cid]
+                if isinstance(c, Joint):
+                    out[cid] = replace(c, anchor=self._carry(c.anchor, carriers[0]))
+                elif isinstance(c, Spring):
+                    out[cid] = replace(c, anchor_a=self._carry(c.anchor_a, carriers[0]),
+                                       anchor_b=self._carry(c.anchor_b, carriers[1]))
+                elif isinstance(c, Rope):
+                    out[cid] = replace(c, points=self._rope_points(cid))
+        return replace(scene, components=out)
+
+    def _carry(self, point: Point, body: pymunk.Body) -> Point:
+        """Where ``point`` (where it was when built, fixed to ``body``) is now."""
+        x0, y0, a0 = self._built.rest_pose[body]
+        x, y, a = body.position.x, body.position.y, body.angle
+        if (x, y, a) == (x0, y0, a0):
+            return point
+        dx, dy = point[0] - x0, point[1] - y0
+        c, s = math.cos(a - a0), math.sin(a - a0)
+        return x + c * dx - s * dy, y + s * dx + c * dy
+
+    def _rope_points(self, rope_id: str) -> tuple[Point, ...]:
+        path, carriers = self._built.paths[rope_id], self._built.carriers[rope_id]
+        return tuple(self._carry(p, link) for p, link in zip(path, carriers, strict=True))
+
+    # -- internals ------------------------------------------------------------------------------------------------
+
+    def _get(self, body_id: str) -> pymunk.Body:
+        body = self._built.bodies.get(body_id)
+        if body is None:
+            raise SceneError(f"no body {body_id!r} in the world")
+        return body
+
+    def _dynamic_bodies(self) -> list[pymunk.Body]:
+        built = self._built
+        bodies = [built.bodies[i] for i in self._by_z] + [link for links in built.links.values() for link in links]
+        return [b for b in bodies if b.body_type == pymunk.Body.DYNAMIC]
+
+    def _weld_group(self, body_id: str) -> set[pymunk.Body]:
+        """``body_id``'s body and every body welded to it, directly or through others (not the background)."""
+        built = self._built
+        start = self._get(body_id)
+        group, frontier = {start}, [start]
+        while frontier:
+            body = frontier.pop()
+            for a, b in built.welds:
+                for me, other in ((a, b), (b, a)):
+                    if me is body and other not in group and other is not built.bodies[BACKGROUND]:
+                        group.add(other)
+                        frontier.append(other)
+        return group
+
+    def _sync_constraints(self) -> None:
+        """Puts in the space exactly the constraints with at least one dynamic body (static-static ones give NaNs)."""
+        parts = [p for ps in self._built.constraints.values() for p in ps]
+        if self._drag is not None:
+            parts.extend(self._drag.parts)
+        dynamic = pymunk.Body.DYNAMIC
+        for part in parts:
+            live = part.a.body_type == dynamic or part.b.body_type == dynamic
+            if live and part not in self._live:
+                self._space.add(part)
+                self._live.add(part)
+            elif not live and part in self._live:
+                self._space.remove(part)
+                self._live.discard(part)
+
+    def _begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+        sa, sb = arbiter.shapes
+        a, b = self._built.owner.get(sa), self._built.owner.get(sb)
+        if a is None or b is None:
+            return
+        if (a, b) in self._touched or (b, a) in self._touched:
+            return  # a polygon's triangles or a polyline's segments: one contact per pair per step
+        self._touched.add((a, b))
+        points = arbiter.contact_point_set
+        at = points.points[0].point_a if points.points else arbiter.shapes[0].body.position
+        self._contacts.append(ContactRecord(self._steps, a, b, (at[0], at[1]), (points.normal.x, points.normal.y)))
+
+    def _pre_solve(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+        # Chipmunk multiplied the two shapes' surface codes (world_build.py): the product names the two materials.
+        restitution, friction = self._contact_values[arbiter.restitution]
+        if restitution > 0.0 and not (arbiter.is_first_contact and _approach_speed(arbiter) > BOUNCE_THRESHOLD):
+            restitution = 0.0
+        arbiter.restitution = restitution
+        arbiter.friction = friction
+
+
+def _approach_speed(arbiter: pymunk.Arbiter) -> float:
+    """How fast the two shapes close along the contact normal at the first contact point (> 0: approaching)."""
+    points = arbiter.contact_point_set
+    if not points.points:
+        return 0.0
+    at = points.points[0].point_a
+    a, b = arbiter.bodies
+    va, vb = a.velocity_at_world_point(at), b.velocity_at_world_point(at)
+    return (va.x - vb.x) * points.normal.x + (va.y - vb.y) * points.normal.y
