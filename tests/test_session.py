@@ -146,3 +146,41 @@ def test_a_curve_from_a_peg_is_a_rope_attached_to_it() -> None:
     rope = next(c for c in session.scene.components.values() if isinstance(c, Rope))
     assert rope.start_body == "b1" and rope.end_body is None
     assert isinstance(session.scene.components["b1"], Body)
+
+
+def test_dwell_then_drag_moves_a_body_and_leaves_the_others() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.6, 0.3, 0.7))            # a platform
+    entries += pen_stroke(1.0, circle_points(0.6, 0.3, 0.05))            # a ball
+    # dwell on the ball's centre for half a second, then drag it over the platform
+    t = 2.0
+    entries.append(PenEntry(t, 0.6, 0.3, 0.0, False, True, False, False, False))
+    hold = [PenEntry(t + 0.01 * k, 0.6, 0.3, 0.5, True, True, False, False, False) for k in range(1, 51)]
+    drag = [PenEntry(t + 0.5 + 0.01 * k, 0.6 - 0.004 * k, 0.3 + 0.002 * k, 0.5, True, True, False, False, False)
+            for k in range(1, 101)]
+    entries += hold + drag
+    entries.append(PenEntry(t + 1.6, 0.2, 0.5, 0.0, False, True, False, False, False))
+    session = run(entries)
+    ball, platform = session.scene.components["b2"], session.scene.components["b1"]
+    assert ball.position[0] == pytest.approx(0.2 * 1600, abs=40)
+    assert ball.position[1] == pytest.approx(0.5 * 1000, abs=40)
+    assert platform.position == pytest.approx(((0.1 + 0.3) / 2 * 1600, (0.6 + 0.7) / 2 * 1000), abs=1.0)
+    assert "moving b2" in " | ".join(m.text for m in session.messages)
+    session.handle(CommandEntry(t + 2.0, "undo"))
+    assert session.scene.components["b2"].position == pytest.approx((0.6 * 1600, 0.3 * 1000), abs=2.0)
+
+
+def test_dragging_a_ball_into_a_platform_ends_flush_not_inside() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.6, 0.5, 0.7))
+    entries += pen_stroke(1.0, circle_points(0.8, 0.3, 0.05))
+    t = 2.0
+    entries.append(PenEntry(t, 0.8, 0.3, 0.0, False, True, False, False, False))
+    entries += [PenEntry(t + 0.01 * k, 0.8, 0.3, 0.5, True, True, False, False, False) for k in range(1, 51)]
+    # pull it down into the middle of the platform
+    entries += [PenEntry(t + 0.5 + 0.01 * k, 0.8 - 0.005 * k, 0.3 + 0.0035 * k, 0.5, True, True, False, False, False)
+                for k in range(1, 101)]
+    entries.append(PenEntry(t + 1.6, 0.3, 0.65, 0.0, False, True, False, False, False))
+    session = run(entries)
+    ball = session.scene.components["b2"]
+    radius = ball.radius
+    top_of_platform = 0.6 * 1000
+    assert ball.position[1] <= top_of_platform - radius + 3  # resting on top, not sunk into it

@@ -13,7 +13,7 @@ import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
-from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, StrokeEnded, Tap
+from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, PenMove, StrokeEnded, Tap
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.mapping import TabletMapping, mapping_from_header
 from physink_tui.input.pen_input import PenInput
@@ -21,15 +21,23 @@ from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.scene.body_shapes import body_size
 from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.interpret import bodies_at, interpret
 from physink_tui.scene.primitives import Recognition
 from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
+from physink_tui.scene.world import World
 from physink_tui.session.history import History
 
 PEN_DEVICE = "pen"
 X_CANDIDATE = 0.08
 """A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
+ADJUST_CENTRE = 0.25
+"""A body grabbed within this share of its size from its centre moves without turning."""
+MAX_ADJUST_STEPS = 60
+"""At most this many physics steps per pen sample (a pause in the input does not freeze the session)."""
+CATCH_UP_STEPS = 60
+SETTLE_STEPS = 30
 X_WAIT = 1.5
 """Seconds a possible half-X waits for its second stroke before it is taken as a line on its own."""
 
@@ -40,6 +48,14 @@ class Message:
 
     t: float
     text: str
+
+
+@dataclass
+class _Adjust:
+    body_id: str
+    world: World
+    t: float
+    offset: tuple[float, float]
 
 
 @dataclass
@@ -71,6 +87,7 @@ class Session:
     messages: list[Message] = field(default_factory=list)
     t: float = 0.0
     _pending: _Pending | None = None
+    _adjust: _Adjust | None = None
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
@@ -127,7 +144,9 @@ class Session:
             elif isinstance(g, Tap):
                 self._tap(g)
             elif isinstance(g, Dwell) and self.mode == "sketch":
-                self.tell("adjusting a body (dwell, then drag) comes with the physics world: not built yet")
+                self._start_adjust(g)
+            elif isinstance(g, PenMove) and g.touching and self._adjust is not None:
+                self._move_adjust(g)
 
     def _to_canvas(self, x: float, y: float) -> tuple[float, float]:
         return (x * self.canvas[0], y * self.canvas[1])
@@ -143,7 +162,8 @@ class Session:
             return
         stroke = ended.stroke
         if stroke.dwell_t is not None:
-            return  # a drag after a dwell adjusts; it draws nothing
+            self._end_adjust(ended.t)  # a drag after a dwell adjusts; it draws nothing
+            return
         points = [self._to_canvas(p.x, p.y) for p in stroke.points]
         if stroke.eraser:
             self._flush_pending()
@@ -162,6 +182,55 @@ class Session:
             self._pending = _Pending(ended.t, points, recognition)
             return
         self._apply(recognition, [points], recognition.kind or "stroke")
+
+    # -- adjusting structure (thesis 3.2.4) -------------------------------------------------------
+
+    def _start_adjust(self, dwell: Dwell) -> None:
+        """Dwelling on a body grabs it: the world runs without gravity, every other body frozen."""
+        self._flush_pending()
+        point = self._to_canvas(dwell.x, dwell.y)
+        found = bodies_at(self.scene, point)
+        if not found:
+            return
+        body = found[0]
+        world = World.from_scene(self.scene, gravity=(0.0, 0.0))
+        world.freeze_all_except(body.id)
+        # grabbed near its centre the body slides; grabbed near an edge it turns about the pen as well
+        near_centre = math.dist(point, body.position) < ADJUST_CENTRE * body_size(body)
+        if near_centre:  # hold the centre, which keeps its offset from the pen
+            offset = (point[0] - body.position[0], point[1] - body.position[1])
+            world.drag(body.id, body.position, body.position, rotate=False)
+        else:
+            offset = (0.0, 0.0)
+            world.drag(body.id, point, point, rotate=True)
+        self._adjust = _Adjust(body.id, world, dwell.t, offset)
+        self.tell(f"moving {self._name(body.id)}")
+
+    def _move_adjust(self, move: PenMove) -> None:
+        adjust = self._adjust
+        x, y = self._to_canvas(move.x, move.y)
+        adjust.world.drag(adjust.body_id, (x - adjust.offset[0], y - adjust.offset[1]))
+        self._advance_adjust(move.t)
+
+    def _advance_adjust(self, t: float) -> None:
+        adjust = self._adjust
+        steps = min(int((t - adjust.t) / adjust.world.dt), MAX_ADJUST_STEPS)
+        if steps > 0:
+            adjust.world.step(steps)
+            adjust.t += steps * adjust.world.dt
+
+    def _end_adjust(self, t: float) -> None:
+        adjust, self._adjust = self._adjust, None
+        if adjust is None:
+            return
+        world = adjust.world
+        world.step(CATCH_UP_STEPS)  # the body catches up with where the pen lifted (unless something blocks it)
+        world.release()
+        world.set_velocity(adjust.body_id, (0.0, 0.0), 0.0)  # put down where the pen left it, not thrown
+        world.step(SETTLE_STEPS)  # overlaps resolve; bodies end flush (thesis figure 2-6)
+        moved = world.to_scene(self.scene)
+        if moved != self.scene:
+            self.history.push(moved, f"adjust {adjust.body_id}")
 
     def _is_short(self, points: list[tuple[float, float]]) -> bool:
         (x0, y0), (x1, y1) = points[0], points[-1]
