@@ -12,6 +12,7 @@ import shapely
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Material, Rope, Scene, Spring
 from physink_tui.scene.world import GRAVITY, ContactRecord, World
+from physink_tui.scene.world_build import SPRING_UNITS
 
 G = GRAVITY[1]
 
@@ -231,7 +232,7 @@ def test_weld_between_bodies_carries_one_with_the_other() -> None:
 
 
 def test_vertical_spring_settles_at_rest_length_plus_mg_over_k_and_never_moves_sideways() -> None:
-    k = 20_000.0
+    k = 2.0  # thesis units (N/m): SPRING_UNITS times stiffer in canvas units
     ceiling = box("b1", 500.0, 100.0, 200.0, 20.0)
     weight = box("b2", 500.0, 400.0, 40.0, 40.0)
     # Hooked near the weight's top-left corner, so gravity also pulls it sideways and twists it about the hook.
@@ -245,13 +246,13 @@ def test_vertical_spring_settles_at_rest_length_plus_mg_over_k_and_never_moves_s
         assert x == pytest.approx(500.0, abs=0.5)
         assert angle == pytest.approx(0.0, abs=0.01)  # prismatic, like the thesis's Box2D joint
     length = world.pose("b2")[1] - 20.0 - 110.0
-    assert length == pytest.approx(270.0 + m * G / k, abs=1.0)
+    assert length == pytest.approx(270.0 + m * G / (k * SPRING_UNITS), abs=1.0)
 
 
 def test_horizontal_spring_holds_its_free_end_on_the_axis_against_gravity() -> None:
     wall = box("b1", 100.0, 500.0, 20.0, 200.0)
     puck = box("b2", 400.0, 500.0, 40.0, 40.0)
-    spring = Spring("s1", "b2", "b1", (380.0, 500.0), (110.0, 500.0), "horizontal", 200.0, 50_000.0)
+    spring = Spring("s1", "b2", "b1", (380.0, 500.0), (110.0, 500.0), "horizontal", 200.0, 5.0)
     world = World.from_scene(scene(wall, puck, weld("j1", "b1", (100.0, 500.0)), spring))
     xs = []
     for _ in range(600):

@@ -243,6 +243,13 @@ def _add_joint(built: Built, joint: Joint) -> None:
     built.constraints[joint.id] = tuple(parts)
 
 
+SPRING_UNITS = 1.0e4
+"""Converts a spring constant in the thesis's units (N/m, Box2D) to this world's: taking 1 m = 100 canvas units
+(gravity 900 units/s^2 = 9 m/s^2) and a mass of 1 per canvas unit^2, forces are 1e6 and lengths 1e2 times the SI
+values, so stiffness is 1e4 times. The seed k = 20 then stretches a spring under a ball of radius 25 by about 9 units,
+as it would in the thesis; `Spring.k` stays in the thesis's units everywhere else (projects, the parameter search)."""
+
+
 def _add_spring(built: Built, spring: Spring) -> None:
     """A Hooke's-law spring plus a prismatic joint (groove + gear) that lets its free end move along one axis only.
 
@@ -272,10 +279,11 @@ def _add_spring(built: Built, spring: Spring) -> None:
     # constraint): Chipmunk's groove solver only converges for a slider at the centre of mass.
     cog = free.local_to_world(free.center_of_gravity)
     ox, oy = cog[0] - free_at[0], cog[1] - free_at[1]
-    damping = SPRING_DAMPING_RATIO * 2.0 * math.sqrt(spring.k * _reduced_mass(fixed, free))
+    stiffness = spring.k * SPRING_UNITS
+    damping = SPRING_DAMPING_RATIO * 2.0 * math.sqrt(stiffness * _reduced_mass(fixed, free))
     parts = (
         pymunk.DampedSpring(fixed, free, fixed.world_to_local(base), free.world_to_local(free_at), spring.rest_length,
-                            spring.k, damping),
+                            stiffness, damping),
         pymunk.GrooveJoint(fixed, free, fixed.world_to_local((base[0] + ox, base[1] + oy)),
                            fixed.world_to_local((far[0] + ox, far[1] + oy)), free.center_of_gravity),
         pymunk.GearJoint(fixed, free, free.angle - fixed.angle, 1.0),
