@@ -184,3 +184,14 @@ def test_dragging_a_ball_into_a_platform_ends_flush_not_inside() -> None:
     radius = ball.radius
     top_of_platform = 0.6 * 1000
     assert ball.position[1] <= top_of_platform - radius + 3  # resting on top, not sunk into it
+
+
+def test_a_body_drawn_into_another_is_pushed_clear() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.5, 0.5, 0.7))                # a block
+    entries += pen_stroke(1.0, circle_points(0.3, 0.47, 0.06))                # a ball drawn half into it
+    session = run(entries)
+    ball = session.scene.components["b2"]
+    block_top = 0.5 * 1000
+    assert ball.position[1] + ball.radius <= block_top + 3
+    assert session.scene.components["b1"].position == pytest.approx((0.3 * 1600, 0.6 * 1000), abs=1.0)
+    assert "pushed it clear" in session.messages[-1].text

@@ -21,7 +21,7 @@ from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
-from physink_tui.scene.body_shapes import body_size
+from physink_tui.scene.body_shapes import body_geometry, body_size
 from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.interpret import bodies_at, interpret
 from physink_tui.scene.primitives import Recognition
@@ -36,6 +36,10 @@ ADJUST_CENTRE = 0.25
 """A body grabbed within this share of its size from its centre moves without turning."""
 MAX_ADJUST_STEPS = 60
 """At most this many physics steps per pen sample (a pause in the input does not freeze the session)."""
+OVERLAP = 0.02
+OVERLAP_DONE = 0.002
+MAX_CLEARING_ROUNDS = 20
+"""A new body overlapping another by more than this share of its area is pushed clear."""
 CATCH_UP_STEPS = 60
 SETTLE_STEPS = 30
 X_WAIT = 1.5
@@ -183,6 +187,30 @@ class Session:
             return
         self._apply(recognition, [points], recognition.kind or "stroke")
 
+    def _clear_overlaps(self, scene: Scene, created: tuple[str, ...]) -> Scene:
+        """A new body drawn into others is pushed clear by the physics, the others held still."""
+        for body_id in created:
+            body = scene.components[body_id]
+            area = body_geometry(body)
+            hit = [b.id for b in scene.bodies()
+                   if b.id != body_id and body_geometry(b).intersection(area).area > OVERLAP * area.area]
+            if not hit or scene.is_fixed(body_id):
+                continue
+            world = World.from_scene(scene, gravity=(0.0, 0.0))
+            world.freeze_all_except(body_id)
+            for _ in range(MAX_CLEARING_ROUNDS):  # the solver pushes a little each step; stop once it is clear
+                world.step(SETTLE_STEPS)
+                world.set_velocity(body_id, (0.0, 0.0), 0.0)
+                moved = world.to_scene(scene).components[body_id]
+                area = body_geometry(moved)
+                if all(body_geometry(scene.components[h]).intersection(area).area <= OVERLAP_DONE * area.area
+                       for h in hit):
+                    break
+            world.unfreeze()
+            scene = world.to_scene(scene)
+            self.tell(f"{body_id} overlapped {', '.join(hit)}; the physics pushed it clear")
+        return scene
+
     # -- adjusting structure (thesis 3.2.4) -------------------------------------------------------
 
     def _start_adjust(self, dwell: Dwell) -> None:
@@ -246,7 +274,10 @@ class Session:
         if result.message:
             self.tell(result.message)
         if result.scene != self.scene:
-            self.history.push(result.scene, f"{result.action}: {what}")
+            scene = result.scene
+            if result.action == "body":
+                scene = self._clear_overlaps(scene, result.created)
+            self.history.push(scene, f"{result.action}: {what}")
             if result.created:
                 self.last_created = result.created[-1]
             if self.selected in result.removed:
