@@ -6,6 +6,7 @@ when made), unrotated; `body_geometry` places it on the canvas for "is this insi
 
 from __future__ import annotations
 
+import functools
 import math
 
 import shapely
@@ -79,8 +80,9 @@ def valid_polygon(points: list[tuple[float, float]]) -> tuple[Polygon, str | Non
     return largest, note
 
 
+@functools.lru_cache(maxsize=4096)
 def body_geometry(body: Body) -> BaseGeometry:
-    """The body's area on the canvas (lines and polylines as thin strips)."""
+    """The body's area on the canvas (lines and polylines as thin strips); cached per (immutable) body."""
     px, py = body.position
     c, s = math.cos(body.angle), math.sin(body.angle)
     placed = [(px + x * c - y * s, py + x * s + y * c) for x, y in body.outline]

@@ -14,6 +14,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
+import numpy as np
+import shapely
 from shapely.geometry import MultiPoint, Point
 
 from physink_tui.scene.body_shapes import body_geometry, body_size, outline_of
@@ -75,12 +77,16 @@ def _inside(scene: Scene, points: Sequence[tuple[float, float]]) -> Body | None:
     if not points:
         return None
     centre, size = Point(_centre(points)), _size(points)
+    cloud = shapely.points(np.asarray(points, dtype=float))
+    minx, miny, maxx, maxy = MultiPoint(points).bounds
     for body in reversed(scene.bodies()):
         area = body_geometry(body)
+        bx0, by0, bx1, by1 = area.bounds
+        if maxx < bx0 - size or minx > bx1 + size or maxy < by0 - size or miny > by1 + size:
+            continue  # nowhere near: skip the point-by-point test
         if body.shape == "polyline" and area.distance(centre) <= size / 2:
             return body
-        inside = sum(1 for p in points if area.covers(Point(p)))
-        if inside >= INSIDE_SHARE * len(points):
+        if np.count_nonzero(shapely.covers(area, cloud)) >= INSIDE_SHARE * len(points):
             return body
     return None
 
