@@ -94,6 +94,20 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     return replace(result, geometry=scale_geometry(result.geometry, origin, scale))
 
 
+def _line(raw: np.ndarray) -> Recognition | None:
+    """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
+    short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
+    coarse = sg.smooth(sg.resample(raw, 48))
+    coarse = sg.resample(sg.remove_hooks(coarse), 48)
+    _, _, err = fit_line(coarse)
+    length = sg.path_length(coarse)
+    chord = float(np.hypot(*(coarse[-1] - coarse[0])))
+    if (err < LINE and length < 1.12 * chord) or (err < 0.5 * LINE and length < 1.3 * chord):
+        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_point(coarse[0]), _point(coarse[-1])),
+                           (("arc", 0.2),))
+    return None
+
+
 def _point(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
@@ -116,6 +130,9 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]]) -> Recogniti
 
 
 def _classify(raw: np.ndarray) -> Recognition:
+    line = _line(raw)
+    if line is not None:
+        return line
     diag = sg.bbox_diagonal(raw)
     length = sg.path_length(raw)
     thickness = sg.thickness(raw)
@@ -139,7 +156,8 @@ def _classify(raw: np.ndarray) -> Recognition:
 
     # a line: close to its fit, no more ink than its chord
     _, _, line_err = fit_line(work)
-    if line_err < LINE and length < 1.12 * chord:
+    # jitter lengthens a short, slow stroke's path without bending it: a very tight fit may carry more ink
+    if (line_err < LINE and length < 1.12 * chord) or (line_err < 0.5 * LINE and length < 1.3 * chord):
         conf = 1.0 - line_err / LINE * 0.5
         return Recognition("line", conf, Line(tuple(work[0]), tuple(work[-1])), (("arc", 0.2),))
 

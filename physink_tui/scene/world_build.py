@@ -233,6 +233,9 @@ def _add_joint(built: Built, joint: Joint) -> None:
         return
     if joint.kind not in ("pivot", "weld"):
         raise SceneError(f"joint {joint.id!r} has kind {joint.kind!r}; expected pivot or weld")
+    if a.body_type != pymunk.Body.DYNAMIC and b.body_type != pymunk.Body.DYNAMIC:
+        built.constraints[joint.id] = ()  # both held still already (a pin in a welded body): nothing to constrain
+        return
     pin = pymunk.PivotJoint(a, b, joint.anchor)
     parts: list[pymunk.Constraint] = [pin]
     if joint.kind == "weld":

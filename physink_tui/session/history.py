@@ -36,6 +36,10 @@ class History:
         self._redo.clear()
         self.current = scene
 
+    def amend(self, scene: Scene) -> None:
+        """Replace the current scene as part of the last action (its undo still goes back before it)."""
+        self.current = scene
+
     def undo(self) -> Scene | None:
         """Go back one action; None when there is nothing to undo."""
         if not self._undo:

@@ -22,7 +22,7 @@ from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.scene.body_shapes import body_geometry, body_size
-from physink_tui.scene.components import Body, Rope, Scene, Spring
+from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import bodies_at, interpret
 from physink_tui.scene.primitives import Recognition
 from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
@@ -92,6 +92,7 @@ class Session:
     t: float = 0.0
     _pending: _Pending | None = None
     _adjust: _Adjust | None = None
+    _unsettled: tuple[str, ...] = ()
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
@@ -187,13 +188,23 @@ class Session:
             return
         self._apply(recognition, [points], recognition.kind or "stroke")
 
+    def _settle(self) -> None:
+        """Push the bodies still waiting clear of what they overlap (as part of the action that made them)."""
+        waiting, self._unsettled = self._unsettled, ()
+        waiting = tuple(b for b in waiting if b in self.scene.components)
+        if waiting:
+            self.history.amend(self._clear_overlaps(self.scene, waiting))
+
     def _clear_overlaps(self, scene: Scene, created: tuple[str, ...]) -> Scene:
-        """A new body drawn into others is pushed clear by the physics, the others held still."""
+        """A new body drawn into others (not joined to it) is pushed clear by the physics, the others held still."""
         for body_id in created:
             body = scene.components[body_id]
             area = body_geometry(body)
+            joined = {end for c in scene.components.values() if isinstance(c, Joint) and body_id in (c.a, c.b)
+                      for end in (c.a, c.b)}
             hit = [b.id for b in scene.bodies()
-                   if b.id != body_id and body_geometry(b).intersection(area).area > OVERLAP * area.area]
+                   if b.id != body_id and b.id not in joined
+                   and body_geometry(b).intersection(area).area > OVERLAP * area.area]
             if not hit or scene.is_fixed(body_id):
                 continue
             world = World.from_scene(scene, gravity=(0.0, 0.0))
@@ -208,7 +219,8 @@ class Session:
                     break
             world.unfreeze()
             scene = world.to_scene(scene)
-            self.tell(f"{body_id} overlapped {', '.join(hit)}; the physics pushed it clear")
+            names = ", ".join(self._name(h, scene) for h in hit)
+            self.tell(f"{self._name(body_id, scene)} overlapped {names}; the physics pushed it clear")
         return scene
 
     # -- adjusting structure (thesis 3.2.4) -------------------------------------------------------
@@ -268,20 +280,25 @@ class Session:
         if self._pending is not None:
             pending, self._pending = self._pending, None
             self._apply(pending.recognition, [pending.points], "line")
+        self._settle()
 
     def _apply(self, recognition: Recognition, strokes: list[list[tuple[float, float]]], what: str) -> None:
         result = interpret(self.scene, recognition, strokes)
         if result.message:
             self.tell(result.message)
         if result.scene != self.scene:
-            scene = result.scene
-            if result.action == "body":
-                scene = self._clear_overlaps(scene, result.created)
-            self.history.push(scene, f"{result.action}: {what}")
+            self.history.push(result.scene, f"{result.action}: {what}")
             if result.created:
                 self.last_created = result.created[-1]
             if self.selected in result.removed:
                 self.selected = None
+        # a body drawn into others waits one stroke: a pin or an X drawn next may join it where it is
+        joined = {end for c in (self.scene.components.get(i) for i in result.created)
+                  if isinstance(c, Joint) for end in (c.a, c.b)}
+        self._unsettled = tuple(b for b in self._unsettled if b not in joined)
+        self._settle()
+        if result.action == "body":
+            self._unsettled = result.created
 
     def _eraser(self, points: list[tuple[float, float]]) -> None:
         """An eraser stroke removes the topmost body it passes over (and what holds on to it)."""
@@ -339,8 +356,8 @@ class Session:
             return
         self.history.push(self.scene.update(replace(component, label=text)), f"label {component_id} {text}")
 
-    def _name(self, component_id: str) -> str:
-        c = self.scene.components.get(component_id)
+    def _name(self, component_id: str, scene: Scene | None = None) -> str:
+        c = (scene or self.scene).components.get(component_id)
         label = getattr(c, "label", None)
         return f"{label} ({component_id})" if label else component_id
 
