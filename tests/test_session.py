@@ -195,3 +195,15 @@ def test_a_body_drawn_into_another_is_pushed_clear() -> None:
     assert ball.position[1] + ball.radius <= block_top + 3
     assert session.scene.components["b1"].position == pytest.approx((0.3 * 1600, 0.6 * 1000), abs=1.0)
     assert "pushed it clear" in session.messages[-1].text
+
+
+def test_a_pin_in_a_welded_body_then_a_body_drawn_over_it_does_not_break_the_world() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.5, 0.4, 0.7))
+    entries += pen_stroke(1.0, [(0.23 + 0.004 * k, 0.58 + 0.004 * k) for k in range(11)])
+    entries += pen_stroke(1.5, [(0.27 - 0.004 * k, 0.58 + 0.004 * k) for k in range(11)])
+    entries += pen_stroke(3.5, circle_points(0.3, 0.65, 0.015))               # a pin in the welded block
+    entries += pen_stroke(5.0, box_points(0.3, 0.45, 0.5, 0.55))              # a box drawn half into it
+    session = run(entries)                                                     # must not raise
+    kinds = sorted((c.kind, c.a, c.b) for c in session.scene.components.values() if isinstance(c, Joint))
+    assert kinds == [("pivot", "b1", BACKGROUND), ("weld", "b1", BACKGROUND)]
+    assert "pushed it clear" in session.messages[-1].text
