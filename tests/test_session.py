@@ -207,3 +207,34 @@ def test_a_pin_in_a_welded_body_then_a_body_drawn_over_it_does_not_break_the_wor
     kinds = sorted((c.kind, c.a, c.b) for c in session.scene.components.values() if isinstance(c, Joint))
     assert kinds == [("pivot", "b1", BACKGROUND), ("weld", "b1", BACKGROUND)]
     assert "pushed it clear" in session.messages[-1].text
+
+
+def test_a_live_session_journals_what_it_consumes_and_the_journal_replays_to_the_same_scene(tmp_path) -> None:
+    from physink_tui.journal.writer import JournalWriter
+
+    entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.3, 0.3)) + pen_stroke(1.0, circle_points(0.6, 0.5, 0.08))
+    entries += [SayEntry(1.9, "label ball"), CommandEntry(2.0, "undo"), CommandEntry(2.1, "redo")]
+    path = tmp_path / "live.physink.jsonl"
+    live = Session.from_header(pen_header())
+    live.journal = JournalWriter.create(path, pen_header())
+    live.run(entries)
+    journal = read_journal(path)
+    assert len(journal.entries) == len(entries)
+    again = Session.from_header(journal.header).run(journal.entries)
+    assert again.scene == live.scene and again.scene.components["b2"].label == "ball"
+
+
+def test_erasing_is_undone_with_its_joints() -> None:
+    entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.5, 0.5))
+    entries += pen_stroke(1.0, circle_points(0.3, 0.3, 0.02))                   # a pin
+    entries += pen_stroke(2.0, [(0.3, 0.05 + 0.05 * k) for k in range(11)])     # a line through the block
+    session = run(entries)
+    assert not session.scene.components
+    session.handle(CommandEntry(4.0, "undo"))
+    assert sorted(session.scene.components) == ["b1", "j1"]
+
+
+def test_a_small_circle_outside_every_body_becomes_one_and_the_user_is_told() -> None:
+    session = run(pen_stroke(0.0, circle_points(0.5, 0.5, 0.012)))
+    assert session.scene.components["b1"].shape == "circle"
+    assert "outside every body" in session.messages[-1].text

@@ -13,6 +13,7 @@ import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
+from physink_tui.errors import JournalError
 from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, PenMove, StrokeEnded, Tap
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.mapping import TabletMapping, mapping_from_header
@@ -21,6 +22,7 @@ from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.journal.writer import JournalWriter
 from physink_tui.scene.body_shapes import body_geometry, body_size
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import bodies_at, interpret
@@ -36,6 +38,8 @@ ADJUST_CENTRE = 0.25
 """A body grabbed within this share of its size from its centre moves without turning."""
 MAX_ADJUST_STEPS = 60
 """At most this many physics steps per pen sample (a pause in the input does not freeze the session)."""
+PIN_SIZE = 0.012
+"""A circle with a radius under this share of the canvas diagonal looks like a pin."""
 OVERLAP = 0.02
 OVERLAP_DONE = 0.002
 MAX_CLEARING_ROUNDS = 20
@@ -93,6 +97,7 @@ class Session:
     _pending: _Pending | None = None
     _adjust: _Adjust | None = None
     _unsettled: tuple[str, ...] = ()
+    journal: JournalWriter | None = None
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
@@ -114,6 +119,13 @@ class Session:
     def handle(self, entry: JournalEntry) -> None:
         """Consume one input; entries must come in time order (the journal guarantees it)."""
         self.t = entry.t
+        if self.journal is not None:
+            try:
+                self.journal.append(entry)  # journalled first: what the session consumed is what a replay feeds it
+                self.journal.flush()
+            except JournalError as exc:  # a full disk stops the journal, never the session
+                self.journal = None
+                self.messages.append(Message(entry.t, str(exc)))
         if self._pending is not None and entry.t - self._pending.t > X_WAIT:
             self._flush_pending()
         if isinstance(entry, HidEntry):
@@ -134,8 +146,10 @@ class Session:
         return self
 
     def finish(self) -> None:
-        """The input ended: settle a held-back half-X."""
+        """The input ended: settle a held-back half-X, and close the journal if one is kept."""
         self._flush_pending()
+        if self.journal is not None:
+            self.journal.close()
 
     def tell(self, text: str) -> None:
         self.messages.append(Message(self.t, text))
@@ -299,6 +313,11 @@ class Session:
         self._settle()
         if result.action == "body":
             self._unsettled = result.created
+            small = [c for c in (self.scene.components.get(i) for i in result.created)
+                     if isinstance(c, Body) and c.shape == "circle" and c.radius < PIN_SIZE * math.hypot(*self.canvas)]
+            if small:
+                self.tell(f"the small circle {small[0].id} is outside every body, so it became a body; "
+                          "a pin is drawn inside the body it holds")
 
     def _eraser(self, points: list[tuple[float, float]]) -> None:
         """An eraser stroke removes the topmost body it passes over (and what holds on to it)."""
