@@ -238,3 +238,15 @@ def test_a_small_circle_outside_every_body_becomes_one_and_the_user_is_told() ->
     session = run(pen_stroke(0.0, circle_points(0.5, 0.5, 0.012)))
     assert session.scene.components["b1"].shape == "circle"
     assert "outside every body" in session.messages[-1].text
+
+
+def test_grabbed_near_an_edge_a_body_turns_as_it_is_dragged() -> None:
+    entries = pen_stroke(0.0, box_points(0.3, 0.45, 0.7, 0.5))                 # a plank
+    t = 1.0
+    entries.append(PenEntry(t, 0.68, 0.475, 0.0, False, True, False, False, False))
+    entries += [PenEntry(t + 0.01 * k, 0.68, 0.475, 0.5, True, True, False, False, False) for k in range(1, 51)]
+    entries += [PenEntry(t + 0.5 + 0.01 * k, 0.68, 0.475 + 0.003 * k, 0.5, True, True, False, False, False)
+                for k in range(1, 101)]                                          # pull its end downwards
+    entries.append(PenEntry(t + 1.6, 0.68, 0.775, 0.0, False, True, False, False, False))
+    session = run(entries)
+    assert abs(session.scene.components["b1"].angle) > 0.2
