@@ -24,6 +24,7 @@ from physink_tui.errors import JournalError
 from physink_tui.journal import checks
 from physink_tui.journal.checks import bad, get, show
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, PenEntry, SayEntry
+from physink_tui.strict_json import DuplicateKey, unique_pairs
 
 PEN_KEYS = ("x", "y", "p", "tip", "range", "eraser", "b1", "b2")
 """The keys of a ``pen`` object, in the order written."""
@@ -33,11 +34,6 @@ _BOOL = {True: "true", False: "false"}
 _PEN_EXPECTED = "an object with " + ", ".join(PEN_KEYS)
 
 
-class _DuplicateKey(Exception):
-    def __init__(self, key: str) -> None:
-        super().__init__(key)
-        self.key = key
-
 
 class _NotANumber(Exception):
     def __init__(self, name: str) -> None:
@@ -45,22 +41,12 @@ class _NotANumber(Exception):
         self.name = name
 
 
-def _object(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
-    obj = dict(pairs)
-    if len(obj) != len(pairs):
-        seen: set[str] = set()
-        for key, _ in pairs:
-            if key in seen:
-                raise _DuplicateKey(key)
-            seen.add(key)
-    return obj
-
 
 def _constant(name: str) -> Any:
     raise _NotANumber(name)
 
 
-_STRICT = json.JSONDecoder(object_pairs_hook=_object, parse_constant=_constant)
+_STRICT = json.JSONDecoder(object_pairs_hook=unique_pairs, parse_constant=_constant)
 _PLAIN = json.JSONDecoder()
 
 
@@ -84,7 +70,7 @@ def parse_object(text: str, where: str) -> dict[str, Any]:
     """
     try:
         value = _STRICT.decode(text)
-    except _DuplicateKey as e:
+    except DuplicateKey as e:
         raise JournalError(f'{where}: key "{e.key}" appears twice in one object') from None
     except _NotANumber as e:
         raise JournalError(f"{where}: not valid JSON: {e.name} is not a number JSON allows") from None

@@ -43,6 +43,7 @@ from physink_tui.project.checks import (
     show,
 )
 from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Material, Rope, Scene, Spring
+from physink_tui.strict_json import DuplicateKey, unique_pairs
 
 FORMAT = "physink-project"
 FORMAT_VERSION = 1
@@ -83,25 +84,10 @@ class Project:
     canvas: tuple[float, float]
 
 
-class _DuplicateKey(Exception):
-    def __init__(self, key: str) -> None:
-        super().__init__(key)
-        self.key = key
-
-
-def _pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
-    obj = dict(pairs)
-    if len(obj) != len(pairs):
-        seen: set[str] = set()
-        for key, _ in pairs:
-            if key in seen:
-                raise _DuplicateKey(key)
-            seen.add(key)
-    return obj
 
 
 # NaN and Infinity are let through the parser so that the check of the field can name it.
-_DECODER = json.JSONDecoder(object_pairs_hook=_pairs)
+_DECODER = json.JSONDecoder(object_pairs_hook=unique_pairs)
 
 
 def encode_project(project: Project, *, where: str = "project") -> str:
@@ -149,7 +135,7 @@ def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -
     where = str(path)
     try:
         value = _DECODER.decode(text)
-    except _DuplicateKey as e:
+    except DuplicateKey as e:
         raise SceneError(f'{where}: not valid JSON: key "{e.key}" appears twice in one object') from None
     except json.JSONDecodeError as e:
         raise SceneError(f"{where}: not valid JSON ({e.msg} at line {e.lineno}, column {e.colno})") from None
