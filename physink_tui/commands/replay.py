@@ -10,6 +10,7 @@ order as live reports would arrive; a journal's ``hid`` lines go through their d
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from collections import Counter
 from pathlib import Path
@@ -17,6 +18,7 @@ from pathlib import Path
 from physink_tui.atomic_write import write_text_atomic
 from physink_tui.commands.decode import decoder_for, read_capture
 from physink_tui.commands.gesture_output import gesture_json, gesture_text
+from physink_tui.commands.timeline_formats import timeline_json
 from physink_tui.errors import DescriptorError, PhysinkError
 from physink_tui.input.capture import Capture
 from physink_tui.input.gestures import Gesture
@@ -28,6 +30,7 @@ from physink_tui.journal.reader import read_journal
 from physink_tui.project.codec import Project
 from physink_tui.project.files import save_project
 from physink_tui.session.session import Session
+from physink_tui.timeline.narrate import timeline_text
 
 PLURAL = {"body": "bodies"}
 
@@ -113,7 +116,14 @@ def write_session_outputs(path: Path, out: Path) -> None:
     """Run the journal through the session and write DIR/project.json (the sketch as it ends)."""
     journal = read_journal(path)
     session = Session.from_header(journal.header).run(journal.entries)
-    project = Project(session.scene, (), None, session.canvas)
+    names = {c.id: c.label for c in session.scene.components.values() if getattr(c, "label", None)}
+    timeline = None
+    if session.timeline is not None:
+        text = timeline_json(session.timeline, names)
+        write_text_atomic(out / "timeline.json", text + ("" if text.endswith("\n") else "\n"))
+        write_text_atomic(out / "timeline.txt", timeline_text(session.timeline, names) + "\n")
+        timeline = json.loads(text)
+    project = Project(session.scene, (), timeline, session.canvas)
     save_project(project, out / "project.json")
     for message in session.messages:
         print(f"{message.t:9.3f}  told          {message.text}")

@@ -14,7 +14,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
 from physink_tui.errors import JournalError
-from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, PenMove, StrokeEnded, Tap
+from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, PenDown, PenMove, StrokeEnded, Tap
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.mapping import TabletMapping, mapping_from_header
 from physink_tui.input.pen_input import PenInput
@@ -30,6 +30,8 @@ from physink_tui.scene.primitives import Recognition
 from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
 from physink_tui.scene.world import World
 from physink_tui.session.history import History
+from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.recorder import Recorder
 
 PEN_DEVICE = "pen"
 X_CANDIDATE = 0.08
@@ -37,6 +39,10 @@ X_CANDIDATE = 0.08
 ADJUST_CENTRE = 0.25
 """A body grabbed within this share of its size from its centre moves without turning."""
 MAX_ADJUST_STEPS = 60
+DEMO_DAMPING = 0.1
+"""Share of its velocity a free body keeps after one second in demo mode."""
+MAX_DEMO_STEPS = 240
+"""At most this many demo steps per input (2 s): a long pause in the input does not run the world for ever."""
 """At most this many physics steps per pen sample (a pause in the input does not freeze the session)."""
 PIN_SIZE = 0.012
 """A circle with a radius under this share of the canvas diagonal looks like a pin."""
@@ -56,6 +62,19 @@ class Message:
 
     t: float
     text: str
+
+
+@dataclass
+class _Demo:
+    world: World
+    recorder: Recorder
+    t: float  # input time the world has been stepped to
+    start: float  # input time demo mode began
+    clock: float = 0.0  # timeline clock (advances only while something moves)
+    grabbed: str | None = None
+
+    def __post_init__(self) -> None:
+        self.clock = self.start
 
 
 @dataclass
@@ -98,6 +117,8 @@ class Session:
     _adjust: _Adjust | None = None
     _unsettled: tuple[str, ...] = ()
     journal: JournalWriter | None = None
+    timeline: Timeline | None = None
+    _demo: _Demo | None = None
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
@@ -126,6 +147,8 @@ class Session:
             except JournalError as exc:  # a full disk stops the journal, never the session
                 self.journal = None
                 self.messages.append(Message(entry.t, str(exc)))
+        if self._demo is not None:
+            self._advance_demo(entry.t)
         if self._pending is not None and entry.t - self._pending.t > X_WAIT:
             self._flush_pending()
         if isinstance(entry, HidEntry):
@@ -146,8 +169,10 @@ class Session:
         return self
 
     def finish(self) -> None:
-        """The input ended: settle a held-back half-X, and close the journal if one is kept."""
+        """The input ended: settle a held-back half-X, end a demonstration, close the journal if one is kept."""
         self._flush_pending()
+        if self._demo is not None:
+            self._end_demo()
         if self.journal is not None:
             self.journal.close()
 
@@ -157,6 +182,10 @@ class Session:
     # -- pen -------------------------------------------------------------------------------------
 
     def _gestures(self, gestures: list[Gesture]) -> None:
+        if self.mode == "demo":
+            for g in gestures:
+                self._demo_gesture(g)
+            return
         for g in gestures:
             if isinstance(g, StrokeEnded):
                 self._stroke(g)
@@ -236,6 +265,70 @@ class Session:
             names = ", ".join(self._name(h, scene) for h in hit)
             self.tell(f"{self._name(body_id, scene)} overlapped {names}; the physics pushed it clear")
         return scene
+
+    # -- demonstrating behaviour (thesis 3.3.1) --------------------------------------------------
+
+    def _start_demo(self) -> None:
+        """Demo mode: the world runs without gravity; the pen grabs movable bodies; the recorder listens."""
+        movable = frozenset(b.id for b in self.scene.bodies() if not self.scene.is_fixed(b.id))
+        if not self.scene.bodies():
+            self.tell("demo mode with nothing drawn: draw the machine first")
+        world = World.from_scene(self.scene, gravity=(0.0, 0.0))
+        world.space.damping = DEMO_DAMPING  # a released body comes to rest (DESIGN.md), as on a table top
+        self._demo = _Demo(world, Recorder(movable), self.t, self.t)
+
+    def _end_demo(self) -> None:
+        demo, self._demo = self._demo, None
+        if demo is not None:
+            demo.world.release()
+            self.timeline = demo.recorder.finish()
+
+    def _demo_gesture(self, g: Gesture) -> None:
+        demo = self._demo
+        if demo is None:
+            return
+        if isinstance(g, PenDown):
+            point = self._to_canvas(g.x, g.y)
+            found = [b for b in bodies_at(self.scene, point) if b.id in demo.recorder.movable]
+            if not found:
+                fixed = bodies_at(self.scene, point)
+                if fixed:
+                    self.tell(f"{self._name(fixed[0].id)} is fixed: it cannot be moved in the demonstration")
+                return
+            body_id = found[0].id
+            demo.grabbed = body_id
+            demo.world.drag(body_id, point, point)
+        elif isinstance(g, PenMove) and g.touching and demo.grabbed is not None:
+            x, y = self._to_canvas(g.x, g.y)
+            demo.world.drag(demo.grabbed, (x, y))
+        elif isinstance(g, StrokeEnded | Tap) and demo.grabbed is not None:
+            demo.world.release()
+            demo.grabbed = None
+
+    def _advance_demo(self, t: float) -> None:
+        """Step the demo world up to input time ``t``; timeline time runs while the pen holds a body or bodies
+        move, and stands still otherwise."""
+        demo = self._demo
+        dt = demo.world.dt
+        steps = min(int((t - demo.t) / dt), MAX_DEMO_STEPS)
+        if demo.grabbed is None and not demo.recorder.moving:
+            demo.t = t  # nothing moves: timeline time stands still
+            return
+        bodies = [b.id for b in self.scene.bodies()]
+        for _ in range(max(steps, 0)):
+            demo.world.step(1)
+            demo.t += dt
+            demo.clock += dt
+            poses = {}
+            for body_id in bodies:
+                x, y, angle = demo.world.pose(body_id)
+                vx, vy, _ = demo.world.velocity(body_id)
+                poses[body_id] = (x, y, angle, vx, vy)
+            contacts = [(c.a_id, c.b_id, c.point) for c in demo.world.take_contacts()
+                        if c.a_id in poses and c.b_id in poses]
+            demo.recorder.observe(round(demo.clock - demo.start, 6), poses, contacts, demo.grabbed)
+        if steps >= MAX_DEMO_STEPS:
+            demo.t = t
 
     # -- adjusting structure (thesis 3.2.4) -------------------------------------------------------
 
@@ -335,9 +428,12 @@ class Session:
         if name != "label":
             self._flush_pending()
         if name == "mode":
-            self.mode = str(args[0])
-            if self.mode == "demo":
-                self.tell("demo mode records behaviour once the timeline is built (issue 6)")
+            mode = str(args[0])
+            if mode == "demo" and self.mode != "demo":
+                self._start_demo()
+            elif mode == "sketch" and self.mode == "demo":
+                self._end_demo()
+            self.mode = mode
         elif name == "undo":
             if self.history.undo() is None:
                 self.tell("nothing to undo")
