@@ -14,7 +14,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
 from physink_tui.errors import JournalError
-from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, PenDown, PenMove, StrokeEnded, Tap
+from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, PenMove, StrokeEnded, Tap
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.mapping import TabletMapping, mapping_from_header
 from physink_tui.input.pen_input import PenInput
@@ -23,35 +23,26 @@ from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.writer import JournalWriter
-from physink_tui.scene.body_shapes import body_geometry, body_size
+from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import bodies_at, interpret
 from physink_tui.scene.primitives import Recognition
 from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
 from physink_tui.scene.world import World
+from physink_tui.session import adjust, demo
+from physink_tui.session.adjust import SETTLE_STEPS
 from physink_tui.session.history import History
 from physink_tui.timeline.events import Timeline
-from physink_tui.timeline.recorder import Recorder
 
 PEN_DEVICE = "pen"
 X_CANDIDATE = 0.08
 """A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
-ADJUST_CENTRE = 0.25
-"""A body grabbed within this share of its size from its centre moves without turning."""
-MAX_ADJUST_STEPS = 60
-DEMO_DAMPING = 0.1
-"""Share of its velocity a free body keeps after one second in demo mode."""
-MAX_DEMO_STEPS = 240
-"""At most this many demo steps per input (2 s): a long pause in the input does not run the world for ever."""
-"""At most this many physics steps per pen sample (a pause in the input does not freeze the session)."""
 PIN_SIZE = 0.012
 """A circle with a radius under this share of the canvas diagonal looks like a pin."""
 OVERLAP = 0.02
+"""A new body overlapping another by more than this share of its area is pushed clear."""
 OVERLAP_DONE = 0.002
 MAX_CLEARING_ROUNDS = 20
-"""A new body overlapping another by more than this share of its area is pushed clear."""
-CATCH_UP_STEPS = 60
-SETTLE_STEPS = 30
 X_WAIT = 1.5
 """Seconds a possible half-X waits for its second stroke before it is taken as a line on its own."""
 
@@ -62,27 +53,6 @@ class Message:
 
     t: float
     text: str
-
-
-@dataclass
-class _Demo:
-    world: World
-    recorder: Recorder
-    t: float  # input time the world has been stepped to
-    start: float  # input time demo mode began
-    clock: float = 0.0  # timeline clock (advances only while something moves)
-    grabbed: str | None = None
-
-    def __post_init__(self) -> None:
-        self.clock = self.start
-
-
-@dataclass
-class _Adjust:
-    body_id: str
-    world: World
-    t: float
-    offset: tuple[float, float]
 
 
 @dataclass
@@ -114,11 +84,11 @@ class Session:
     messages: list[Message] = field(default_factory=list)
     t: float = 0.0
     _pending: _Pending | None = None
-    _adjust: _Adjust | None = None
+    _adjust: adjust.Adjust | None = None
     _unsettled: tuple[str, ...] = ()
     journal: JournalWriter | None = None
     timeline: Timeline | None = None
-    _demo: _Demo | None = None
+    _demo: demo.Demo | None = None
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
@@ -148,7 +118,7 @@ class Session:
                 self.journal = None
                 self.messages.append(Message(entry.t, str(exc)))
         if self._demo is not None:
-            self._advance_demo(entry.t)
+            demo.advance_demo(self, entry.t)
         if self._pending is not None and entry.t - self._pending.t > X_WAIT:
             self._flush_pending()
         if isinstance(entry, HidEntry):
@@ -172,7 +142,7 @@ class Session:
         """The input ended: settle a held-back half-X, end a demonstration, close the journal if one is kept."""
         self._flush_pending()
         if self._demo is not None:
-            self._end_demo()
+            demo.end_demo(self)
         if self.journal is not None:
             self.journal.close()
 
@@ -184,7 +154,7 @@ class Session:
     def _gestures(self, gestures: list[Gesture]) -> None:
         if self.mode == "demo":
             for g in gestures:
-                self._demo_gesture(g)
+                demo.demo_gesture(self, g)
             return
         for g in gestures:
             if isinstance(g, StrokeEnded):
@@ -192,9 +162,9 @@ class Session:
             elif isinstance(g, Tap):
                 self._tap(g)
             elif isinstance(g, Dwell) and self.mode == "sketch":
-                self._start_adjust(g)
+                adjust.start_adjust(self, g)
             elif isinstance(g, PenMove) and g.touching and self._adjust is not None:
-                self._move_adjust(g)
+                adjust.move_adjust(self, g)
 
     def _to_canvas(self, x: float, y: float) -> tuple[float, float]:
         return (x * self.canvas[0], y * self.canvas[1])
@@ -210,7 +180,7 @@ class Session:
             return
         stroke = ended.stroke
         if stroke.dwell_t is not None:
-            self._end_adjust(ended.t)  # a drag after a dwell adjusts; it draws nothing
+            adjust.end_adjust(self, ended.t)  # a drag after a dwell adjusts; it draws nothing
             return
         points = [self._to_canvas(p.x, p.y) for p in stroke.points]
         if stroke.eraser:
@@ -266,119 +236,6 @@ class Session:
             self.tell(f"{self._name(body_id, scene)} overlapped {names}; the physics pushed it clear")
         return scene
 
-    # -- demonstrating behaviour (thesis 3.3.1) --------------------------------------------------
-
-    def _start_demo(self) -> None:
-        """Demo mode: the world runs without gravity; the pen grabs movable bodies; the recorder listens."""
-        movable = frozenset(b.id for b in self.scene.bodies() if not self.scene.is_fixed(b.id))
-        if not self.scene.bodies():
-            self.tell("demo mode with nothing drawn: draw the machine first")
-        world = World.from_scene(self.scene, gravity=(0.0, 0.0))
-        world.space.damping = DEMO_DAMPING  # a released body comes to rest (DESIGN.md), as on a table top
-        self._demo = _Demo(world, Recorder(movable), self.t, self.t)
-
-    def _end_demo(self) -> None:
-        demo, self._demo = self._demo, None
-        if demo is not None:
-            demo.world.release()
-            self.timeline = demo.recorder.finish()
-
-    def _demo_gesture(self, g: Gesture) -> None:
-        demo = self._demo
-        if demo is None:
-            return
-        if isinstance(g, PenDown):
-            point = self._to_canvas(g.x, g.y)
-            found = [b for b in bodies_at(self.scene, point) if b.id in demo.recorder.movable]
-            if not found:
-                fixed = bodies_at(self.scene, point)
-                if fixed:
-                    self.tell(f"{self._name(fixed[0].id)} is fixed: it cannot be moved in the demonstration")
-                return
-            body_id = found[0].id
-            demo.grabbed = body_id
-            demo.world.drag(body_id, point, point)
-        elif isinstance(g, PenMove) and g.touching and demo.grabbed is not None:
-            x, y = self._to_canvas(g.x, g.y)
-            demo.world.drag(demo.grabbed, (x, y))
-        elif isinstance(g, StrokeEnded | Tap) and demo.grabbed is not None:
-            demo.world.release()
-            demo.grabbed = None
-
-    def _advance_demo(self, t: float) -> None:
-        """Step the demo world up to input time ``t``; timeline time runs while the pen holds a body or bodies
-        move, and stands still otherwise."""
-        demo = self._demo
-        dt = demo.world.dt
-        steps = min(int((t - demo.t) / dt), MAX_DEMO_STEPS)
-        if demo.grabbed is None and not demo.recorder.moving:
-            demo.t = t  # nothing moves: timeline time stands still
-            return
-        bodies = [b.id for b in self.scene.bodies()]
-        for _ in range(max(steps, 0)):
-            demo.world.step(1)
-            demo.t += dt
-            demo.clock += dt
-            poses = {}
-            for body_id in bodies:
-                x, y, angle = demo.world.pose(body_id)
-                vx, vy, _ = demo.world.velocity(body_id)
-                poses[body_id] = (x, y, angle, vx, vy)
-            contacts = [(c.a_id, c.b_id, c.point) for c in demo.world.take_contacts()
-                        if c.a_id in poses and c.b_id in poses]
-            demo.recorder.observe(round(demo.clock - demo.start, 6), poses, contacts, demo.grabbed)
-        if steps >= MAX_DEMO_STEPS:
-            demo.t = t
-
-    # -- adjusting structure (thesis 3.2.4) -------------------------------------------------------
-
-    def _start_adjust(self, dwell: Dwell) -> None:
-        """Dwelling on a body grabs it: the world runs without gravity, every other body frozen."""
-        self._flush_pending()
-        point = self._to_canvas(dwell.x, dwell.y)
-        found = bodies_at(self.scene, point)
-        if not found:
-            return
-        body = found[0]
-        world = World.from_scene(self.scene, gravity=(0.0, 0.0))
-        world.freeze_all_except(body.id)
-        # grabbed near its centre the body slides; grabbed near an edge it turns about the pen as well
-        near_centre = math.dist(point, body.position) < ADJUST_CENTRE * body_size(body)
-        if near_centre:  # hold the centre, which keeps its offset from the pen
-            offset = (point[0] - body.position[0], point[1] - body.position[1])
-            world.drag(body.id, body.position, body.position, rotate=False)
-        else:
-            offset = (0.0, 0.0)
-            world.drag(body.id, point, point, rotate=True)
-        self._adjust = _Adjust(body.id, world, dwell.t, offset)
-        self.tell(f"moving {self._name(body.id)}")
-
-    def _move_adjust(self, move: PenMove) -> None:
-        adjust = self._adjust
-        x, y = self._to_canvas(move.x, move.y)
-        adjust.world.drag(adjust.body_id, (x - adjust.offset[0], y - adjust.offset[1]))
-        self._advance_adjust(move.t)
-
-    def _advance_adjust(self, t: float) -> None:
-        adjust = self._adjust
-        steps = min(int((t - adjust.t) / adjust.world.dt), MAX_ADJUST_STEPS)
-        if steps > 0:
-            adjust.world.step(steps)
-            adjust.t += steps * adjust.world.dt
-
-    def _end_adjust(self, t: float) -> None:
-        adjust, self._adjust = self._adjust, None
-        if adjust is None:
-            return
-        world = adjust.world
-        world.step(CATCH_UP_STEPS)  # the body catches up with where the pen lifted (unless something blocks it)
-        world.release()
-        world.set_velocity(adjust.body_id, (0.0, 0.0), 0.0)  # put down where the pen left it, not thrown
-        world.step(SETTLE_STEPS)  # overlaps resolve; bodies end flush (thesis figure 2-6)
-        moved = world.to_scene(self.scene)
-        if moved != self.scene:
-            self.history.push(moved, f"adjust {adjust.body_id}")
-
     def _is_short(self, points: list[tuple[float, float]]) -> bool:
         (x0, y0), (x1, y1) = points[0], points[-1]
         return math.hypot(x1 - x0, y1 - y0) < X_CANDIDATE * math.hypot(*self.canvas)
@@ -430,9 +287,9 @@ class Session:
         if name == "mode":
             mode = str(args[0])
             if mode == "demo" and self.mode != "demo":
-                self._start_demo()
+                demo.start_demo(self)
             elif mode == "sketch" and self.mode == "demo":
-                self._end_demo()
+                demo.end_demo(self)
             self.mode = mode
         elif name == "undo":
             if self.history.undo() is None:
