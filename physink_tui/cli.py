@@ -33,13 +33,13 @@ HANDLERS: dict[str, str] = {
     "devices": "physink_tui.commands.devices:run",
     "record": "physink_tui.commands.record:run",
     "recognize": "physink_tui.commands.recognize:run",
+    "timeline": "physink_tui.commands.timeline:run",
 }
 
 #: Subcommands not built yet: name -> where they are planned (shown to the user as is).
 PLANNED: dict[str, str] = {
     "tui": "a later issue: the Textual control panel",
     "kiosk": "a later issue: the headless recording service",
-    "timeline": "issue #6: the causal timeline",
     "equiv": "issue #6: timeline equivalence",
     "simulate": "a later issue: the SIMULATE parameter search",
     "listen": "a later issue: speech commands",

@@ -69,3 +69,34 @@ def test_released_bodies_come_to_rest_and_replay_writes_the_timeline(tmp_path, c
     assert text.startswith("Movement of b2 CAUSES") and "Contact between" in text
     for file in ("timeline.json", "timeline.txt", "project.json"):
         assert (tmp_path / "a" / file).read_bytes() == (tmp_path / "b" / file).read_bytes()
+
+
+def test_physink_timeline_prints_a_project_timeline_in_every_format(tmp_path, capsys) -> None:
+    entries = pen_stroke(0.0, box_points(0.55, 0.4, 0.65, 0.6)) + pen_stroke(1.0, circle_points(0.2, 0.5, 0.05))
+    entries += [CommandEntry(1.5, "label", ("b1", "block")), CommandEntry(2.0, "mode", ("demo",)),
+                PenEntry(2.5, 0.2, 0.5, 0.0, False, True, False, False, False)]
+    entries += [PenEntry(2.5 + 0.01 * k, 0.2 + 0.004 * k, 0.5, 0.6, True, True, False, False, False)
+                for k in range(1, 101)]
+    entries += [PenEntry(3.52, 0.6, 0.5, 0.0, False, True, False, False, False), CommandEntry(7.0, "mode", ("sketch",))]
+    path = tmp_path / "demo.physink.jsonl"
+    write_journal(path, pen_header(), sorted(entries, key=lambda e: e.t))
+    assert main(["replay", str(path), "--out", str(tmp_path / "out")]) == 0
+    project = str(tmp_path / "out" / "project.json")
+    capsys.readouterr()
+    assert main(["timeline", project]) == 0
+    text = capsys.readouterr().out
+    assert "Movement of b2 CAUSES" in text and "Contact between block and b2" in text
+    assert main(["timeline", project, "--format", "dot"]) == 0
+    assert capsys.readouterr().out.startswith("digraph")
+    assert main(["timeline", project, "--format", "json"]) == 0
+    assert '"type": "contact"' in capsys.readouterr().out
+
+
+def test_physink_timeline_of_a_project_without_one_is_one_line(tmp_path, capsys) -> None:
+    path = tmp_path / "j.physink.jsonl"
+    write_journal(path, pen_header(), pen_stroke(0.0, box_points(0.1, 0.1, 0.3, 0.3)))
+    assert main(["replay", str(path), "--out", str(tmp_path / "o")]) == 0
+    capsys.readouterr()
+    assert main(["timeline", str(tmp_path / "o" / "project.json")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "no timeline" in err[0]
