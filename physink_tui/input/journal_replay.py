@@ -17,26 +17,33 @@ from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport, SourceEnded
-from physink_tui.journal.entries import CommandEntry, HidEntry, PenEntry, SayEntry
+from physink_tui.journal.entries import CommandEntry, HidEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.reader import read_journal
 
 PEN_DEVICE = "pen"
 """The device id of journal ``pen`` lines (canvas samples from the mouse, serial tablets, scripts)."""
 
 
+def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
+    """The input side a journal header describes: its devices' decoders, its mapping and tip thresholds, and
+    the canvas-space device of its ``pen`` lines. A bad mapping is a `JournalError` naming the key."""
+    try:
+        mapping = mapping_from_header(header.mapping) if header.mapping else TabletMapping(
+            canvas_width=header.canvas_width, canvas_height=header.canvas_height)
+    except ValueError as exc:
+        raise JournalError(f"{where}: line 1: key \"mapping\": {exc}") from None
+    pen = PenInput(mapping, GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up)))
+    for device in header.devices:
+        pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid))
+    pen.add_sample_device(PEN_DEVICE, canvas_space=True)
+    return pen
+
+
 def replay_journal_input(path: str | os.PathLike[str]) -> tuple[list[Gesture], list[str], list[str]]:
     """Gestures of a journal, one line per command or utterance (time first), and notes."""
     journal = read_journal(path)
     header = journal.header
-    try:
-        mapping = mapping_from_header(header.mapping) if header.mapping else TabletMapping()
-    except ValueError as exc:
-        raise JournalError(f"{path}: line 1: key \"mapping\": {exc}") from None
-    config = GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up))
-    pen = PenInput(mapping, config)
-    for device in header.devices:
-        pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid))
-    pen.add_sample_device(PEN_DEVICE, canvas_space=True)
+    pen = pen_input_for(header, str(path))
     gestures: list[Gesture] = []
     events: list[str] = []
     last_t = 0.0

@@ -150,16 +150,8 @@ def _classify(raw: np.ndarray) -> Recognition:
     work = sg.resample(work, n)
     diag = sg.bbox_diagonal(work)
     length = sg.path_length(work)
-    chord = float(np.hypot(*(work[-1] - work[0])))
     th = sg.turning(work)
     total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-
-    # a line: close to its fit, no more ink than its chord
-    _, _, line_err = fit_line(work)
-    # jitter lengthens a short, slow stroke's path without bending it: a very tight fit may carry more ink
-    if (line_err < LINE and length < 1.12 * chord) or (line_err < 0.5 * LINE and length < 1.3 * chord):
-        conf = 1.0 - line_err / LINE * 0.5
-        return Recognition("line", conf, Line(tuple(work[0]), tuple(work[-1])), (("arc", 0.2),))
 
     reversals = int(np.count_nonzero(np.abs(th) > math.radians(150)))
     if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):

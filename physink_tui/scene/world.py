@@ -17,6 +17,7 @@ import pymunk
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Point, Rope, Scene, Spring
 from physink_tui.scene.world_build import Built, Pose, build
+from physink_tui.scene.world_contacts import ContactListener, ContactRecord
 
 GRAVITY: Point = (0.0, 900.0)
 """Gravity in canvas units per second squared, pointing down the canvas (+y).
@@ -31,38 +32,12 @@ DT = 1 / 120
 """The fixed time step in seconds (two steps per 60 Hz frame)."""
 ITERATIONS = 20
 """Solver iterations per step (pymunk's default is 10): ropes carrying heavy bodies stretch visibly with fewer."""
-BOUNCE_THRESHOLD = 50.0
-"""Slowest approach (canvas units/s) that bounces; slower contacts and contacts that persist are inelastic.
-
-Chipmunk re-applies restitution every step a contact lasts, so a body resting on a fully elastic box (restitution
-1.0) is bounced by the speed gravity gave it in the last step and a pile never settles. Box2D, which the thesis
-used, bounces only approaches faster than ``b2_velocityThreshold`` (1 m/s); this is its counterpart here: a ball
-that would bounce less than 50² / (2 * 900) ~ 1.4 units high under gravity stays down.
-"""
 DRAG_ACCELERATION = 20_000.0
 """The strongest pull of a drag, per unit of the dragged body's mass (canvas units/s², ~22 g)."""
 DRAG_ANGULAR_ACCELERATION = 200.0
 """The strongest twist (rad/s², times the moment of inertia) with which a ``rotate=False`` drag holds the angle."""
 DRAG_ERROR_BIAS = (1 - 0.15) ** 60
 """Fraction of the pen-to-grab-point distance left uncorrected after one second (pymunk's mouse-joint example)."""
-
-
-@dataclass(frozen=True, slots=True)
-class ContactRecord:
-    """Two components started touching.
-
-    Attributes:
-        step: the step (1-based, counted over the world's life) in which the contact began.
-        a_id, b_id: the body or rope ids, in the order pymunk reported the pair.
-        point: a contact point on ``a``'s surface, canvas units.
-        normal: unit vector from ``a`` towards ``b``.
-    """
-
-    step: int
-    a_id: str
-    b_id: str
-    point: Point
-    normal: Point
 
 
 @dataclass(slots=True)
@@ -100,14 +75,12 @@ class World:
         self._space = built.space
         self._dt = dt
         self._steps = 0
-        self._contacts: list[ContactRecord] = []
-        self._touched: set[tuple[str, str]] = set()
+        self._listener = ContactListener(built.owner, built.contact_values)
         self._live: set[pymunk.Constraint] = set()
         self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
         self._drag: _Drag | None = None
         self._by_z = sorted(built.z, key=built.z.__getitem__)
-        self._contact_values = built.contact_values
-        self._space.on_collision(begin=self._begin, pre_solve=self._pre_solve)
+        self._space.on_collision(begin=self._listener.begin, pre_solve=self._listener.pre_solve)
         self._sync_constraints()
 
     @classmethod
@@ -213,13 +186,12 @@ class World:
         """Advances exactly ``n`` steps of ``dt``."""
         for _ in range(n):
             self._steps += 1
-            self._touched.clear()
+            self._listener.next_step()
             self._space.step(self._dt)
 
     def take_contacts(self) -> list[ContactRecord]:
         """The contacts begun since the last call, in the order they began."""
-        out, self._contacts = self._contacts, []
-        return out
+        return self._listener.take()
 
     # -- editing --------------------------------------------------------------------------------------------------
 
@@ -382,34 +354,3 @@ class World:
             elif not live and part in self._live:
                 self._space.remove(part)
                 self._live.discard(part)
-
-    def _begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
-        sa, sb = arbiter.shapes
-        a, b = self._built.owner.get(sa), self._built.owner.get(sb)
-        if a is None or b is None:
-            return
-        if (a, b) in self._touched or (b, a) in self._touched:
-            return  # a polygon's triangles or a polyline's segments: one contact per pair per step
-        self._touched.add((a, b))
-        points = arbiter.contact_point_set
-        at = points.points[0].point_a if points.points else arbiter.shapes[0].body.position
-        self._contacts.append(ContactRecord(self._steps, a, b, (at[0], at[1]), (points.normal.x, points.normal.y)))
-
-    def _pre_solve(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
-        # Chipmunk multiplied the two shapes' surface codes (world_build.py): the product names the two materials.
-        restitution, friction = self._contact_values[arbiter.restitution]
-        if restitution > 0.0 and not (arbiter.is_first_contact and _approach_speed(arbiter) > BOUNCE_THRESHOLD):
-            restitution = 0.0
-        arbiter.restitution = restitution
-        arbiter.friction = friction
-
-
-def _approach_speed(arbiter: pymunk.Arbiter) -> float:
-    """How fast the two shapes close along the contact normal at the first contact point (> 0: approaching)."""
-    points = arbiter.contact_point_set
-    if not points.points:
-        return 0.0
-    at = points.points[0].point_a
-    a, b = arbiter.bodies
-    va, vb = a.velocity_at_world_point(at), b.velocity_at_world_point(at)
-    return (va.x - vb.x) * points.normal.x + (va.y - vb.y) * points.normal.y

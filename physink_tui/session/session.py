@@ -14,12 +14,10 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
 from physink_tui.errors import JournalError
-from physink_tui.input.gestures import Dwell, Gesture, GestureConfig, PenMove, StrokeEnded, Tap
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.mapping import TabletMapping, mapping_from_header
+from physink_tui.input.gestures import Dwell, Gesture, PenMove, StrokeEnded, Tap
+from physink_tui.input.journal_replay import PEN_DEVICE, pen_input_for
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
-from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.writer import JournalWriter
@@ -34,7 +32,6 @@ from physink_tui.session.adjust import SETTLE_STEPS
 from physink_tui.session.history import History
 from physink_tui.timeline.events import Timeline
 
-PEN_DEVICE = "pen"
 X_CANDIDATE = 0.08
 """A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
 PIN_SIZE = 0.012
@@ -92,14 +89,7 @@ class Session:
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
-        mapping = mapping_from_header(header.mapping) if header.mapping else TabletMapping(
-            canvas_width=header.canvas_width, canvas_height=header.canvas_height)
-        config = GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up))
-        pen = PenInput(mapping, config)
-        for device in header.devices:
-            pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid))
-        pen.add_sample_device(PEN_DEVICE, canvas_space=True)
-        return cls((header.canvas_width, header.canvas_height), pen)
+        return cls((header.canvas_width, header.canvas_height), pen_input_for(header))
 
     @property
     def scene(self) -> Scene:

@@ -1,0 +1,92 @@
+"""Contacts in the physics world: records where contacts begin and sets each contact's material; no stepping.
+
+The world's pymunk space calls a `ContactListener` for every contact: ``begin`` appends a frozen
+`ContactRecord` (one per pair of components per step), ``pre_solve`` turns the product of the two shapes' surface
+codes (see world_build.py) back into the pair's restitution (the larger) and friction (the mean), bouncing only
+on a fast first contact.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import pymunk
+
+from physink_tui.scene.components import Point
+
+BOUNCE_THRESHOLD = 50.0
+"""Slowest approach (canvas units/s) that bounces; slower contacts and contacts that persist are inelastic.
+
+Chipmunk re-applies restitution every step a contact lasts, so a body resting on a fully elastic box (restitution
+1.0) is bounced by the speed gravity gave it in the last step and a pile never settles. Box2D, which the thesis
+used, bounces only approaches faster than ``b2_velocityThreshold`` (1 m/s); this is its counterpart here: a ball
+that would bounce less than 50² / (2 * 900) ~ 1.4 units high under gravity stays down.
+"""
+
+@dataclass(frozen=True, slots=True)
+class ContactRecord:
+    """Two components started touching.
+
+    Attributes:
+        step: the step (1-based, counted over the world's life) in which the contact began.
+        a_id, b_id: the body or rope ids, in the order pymunk reported the pair.
+        point: a contact point on ``a``'s surface, canvas units.
+        normal: unit vector from ``a`` towards ``b``.
+    """
+
+    step: int
+    a_id: str
+    b_id: str
+    point: Point
+    normal: Point
+
+
+class ContactListener:
+    """Collision callbacks for one world: contact records, and the materials of each contact."""
+
+    def __init__(self, owner: dict[pymunk.Shape, str], contact_values: dict[float, tuple[float, float]]) -> None:
+        self._owner = owner
+        self._contact_values = contact_values
+        self._records: list[ContactRecord] = []
+        self._touched: set[tuple[str, str]] = set()
+        self.step = 0
+
+    def next_step(self) -> None:
+        """A new step begins: pairs may report a contact again."""
+        self.step += 1
+        self._touched.clear()
+
+    def take(self) -> list[ContactRecord]:
+        out, self._records = self._records, []
+        return out
+
+    def begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+        sa, sb = arbiter.shapes
+        a, b = self._owner.get(sa), self._owner.get(sb)
+        if a is None or b is None:
+            return
+        if (a, b) in self._touched or (b, a) in self._touched:
+            return  # a polygon's triangles or a polyline's segments: one contact per pair per step
+        self._touched.add((a, b))
+        points = arbiter.contact_point_set
+        at = points.points[0].point_a if points.points else arbiter.shapes[0].body.position
+        self._records.append(ContactRecord(self.step, a, b, (at[0], at[1]), (points.normal.x, points.normal.y)))
+
+    def pre_solve(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+        # Chipmunk multiplied the two shapes' surface codes (world_build.py): the product names the two materials.
+        restitution, friction = self._contact_values[arbiter.restitution]
+        if restitution > 0.0 and not (arbiter.is_first_contact and _approach_speed(arbiter) > BOUNCE_THRESHOLD):
+            restitution = 0.0
+        arbiter.restitution = restitution
+        arbiter.friction = friction
+
+
+def _approach_speed(arbiter: pymunk.Arbiter) -> float:
+    """How fast the two shapes close along the contact normal at the first contact point (> 0: approaching)."""
+    points = arbiter.contact_point_set
+    if not points.points:
+        return 0.0
+    at = points.points[0].point_a
+    a, b = arbiter.bodies
+    va, vb = a.velocity_at_world_point(at), b.velocity_at_world_point(at)
+    return (va.x - vb.x) * points.normal.x + (va.y - vb.y) * points.normal.y
