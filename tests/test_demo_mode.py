@@ -85,7 +85,7 @@ def test_physink_timeline_prints_a_project_timeline_in_every_format(tmp_path, ca
     capsys.readouterr()
     assert main(["timeline", project]) == 0
     text = capsys.readouterr().out
-    assert "Movement of b2 CAUSES" in text and "Contact between block and b2" in text
+    assert "Movement of b2 CAUSES" in text and "Contact between b2 and block" in text
     assert main(["timeline", project, "--format", "dot"]) == 0
     assert capsys.readouterr().out.startswith("digraph")
     assert main(["timeline", project, "--format", "json"]) == 0

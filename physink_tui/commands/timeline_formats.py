@@ -17,7 +17,7 @@ from physink_tui.timeline.events import Event, Timeline, TimelineError, Trajecto
 from physink_tui.timeline.graph import check_acyclic
 
 EVENT_KEYS = ("id", "type", "components", "causes", "t0", "t1", "label", "user_label", "sides", "regions", "point",
-              "trajectory")
+              "trajectory", "tracks")
 
 
 def _r(v: float) -> float:
@@ -38,8 +38,17 @@ def _event_obj(ev: Event, names: Mapping[str, str]) -> dict[str, Any]:
         "sides": [{"component": c, "side": s} for c, s in ev.sides],
         "regions": [{"component": c, "regions": list(rs)} for c, rs in ev.regions],
         "point": None if ev.point is None else [_r(ev.point[0]), _r(ev.point[1])],
-        "trajectory": [[_r(p.t), _r(p.x), _r(p.y), _r(p.angle), _r(p.vx), _r(p.vy)] for p in ev.trajectory],
+        "trajectory": _frames(ev.trajectory),
+        "tracks": [{"component": c, "trajectory": _frames(frames)} for c, frames in ev.tracks],
     }
+
+
+def _frames(frames: tuple[TrajectoryPoint, ...]) -> list[list[float]]:
+    return [[_r(p.t), _r(p.x), _r(p.y), _r(p.angle), _r(p.vx), _r(p.vy)] for p in frames]
+
+
+def _read_frames(rows: Any) -> tuple[TrajectoryPoint, ...]:
+    return tuple(TrajectoryPoint(*(float(v) for v in row)) for row in rows)
 
 
 def timeline_json(timeline: Timeline, names: Mapping[str, str]) -> str:
@@ -108,8 +117,9 @@ def parse_timeline_json(text: str) -> tuple[Timeline, dict[str, str]]:
                 regions=tuple((_need(r, "component", str, where), tuple(_need(r, "regions", list, where)))
                               for r in _need(obj, "regions", list, where)),
                 point=None if point is None else (float(point[0]), float(point[1])),
-                trajectory=tuple(TrajectoryPoint(*(float(v) for v in row))
-                                 for row in _need(obj, "trajectory", list, where)),
+                trajectory=_read_frames(_need(obj, "trajectory", list, where)),
+                tracks=tuple((_need(tr, "component", str, where), _read_frames(_need(tr, "trajectory", list, where)))
+                             for tr in obj.get("tracks", [])),  # absent in timelines written before tracks
             ))
         except (TypeError, IndexError, ValueError) as exc:
             raise TimelineError(f"{where}: malformed value ({exc})") from None

@@ -40,6 +40,21 @@ DRAG_ERROR_BIAS = (1 - 0.15) ** 60
 """Fraction of the pen-to-grab-point distance left uncorrected after one second (pymunk's mouse-joint example)."""
 
 
+SPEED_LIMIT = 0.5
+"""Share of its own half-size a body may travel in one step during a demonstration (see `World.limit_speeds`)."""
+MIN_SPEED_LIMIT = 1200.0
+"""Canvas units per second any body may reach whatever its size (thin bars would otherwise barely move)."""
+
+
+def _speed_limited(limit: float):
+    def velocity_func(body: pymunk.Body, gravity: tuple[float, float], damping: float, dt: float) -> None:
+        pymunk.Body.update_velocity(body, gravity, damping, dt)
+        speed = body.velocity.length
+        if speed > limit:
+            body.velocity = body.velocity * (limit / speed)
+    return velocity_func
+
+
 @dataclass(slots=True)
 class _Drag:
     body_id: str
@@ -80,7 +95,8 @@ class World:
         self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
         self._drag: _Drag | None = None
         self._by_z = sorted(built.z, key=built.z.__getitem__)
-        self._space.on_collision(begin=self._listener.begin, pre_solve=self._listener.pre_solve)
+        self._space.on_collision(begin=self._listener.begin, pre_solve=self._listener.pre_solve,
+                                 separate=self._listener.separate)
         self._sync_constraints()
 
     @classmethod
@@ -192,6 +208,58 @@ class World:
     def take_contacts(self) -> list[ContactRecord]:
         """The contacts begun since the last call, in the order they began."""
         return self._listener.take()
+
+    def touching(self) -> frozenset[frozenset[str]]:
+        """The pairs of components (bodies and ropes) touching now."""
+        return self._listener.touching()
+
+    # -- demonstrating and playing back ---------------------------------------------------------------------------
+
+    def follow(self, body_id: str, pose: Pose, velocity: Pose) -> None:
+        """Moves a body along a recording: kinematic (it pushes what it meets and nothing pushes it), placed at
+        ``pose`` (x, y, angle) and moving with ``velocity`` (vx, vy, angular) until the next call or `let_go`."""
+        body = self._get(body_id)
+        if body.body_type == pymunk.Body.STATIC:
+            return  # fixed bodies have no recording to follow
+        if body.body_type != pymunk.Body.KINEMATIC:
+            body.body_type = pymunk.Body.KINEMATIC
+            self._sync_constraints()
+        body.position = pose[:2]
+        body.angle = pose[2]
+        body.velocity = velocity[:2]
+        body.angular_velocity = velocity[2]
+        self._space.reindex_shapes_for_body(body)
+
+    def let_go(self, body_id: str) -> None:
+        """A body that followed a recording is moved by the physics again, with the velocity it had."""
+        body = self._get(body_id)
+        if body.body_type == pymunk.Body.KINEMATIC:
+            velocity, spin = body.velocity, body.angular_velocity
+            body.body_type = pymunk.Body.DYNAMIC
+            body.velocity, body.angular_velocity = velocity, spin
+            self._sync_constraints()
+
+    def place(self, body_id: str, pose: Pose, velocity: Pose = (0.0, 0.0, 0.0)) -> None:
+        """Puts a dynamic body at ``pose`` with ``velocity`` (after a seek)."""
+        body = self._get(body_id)
+        if body.body_type == pymunk.Body.STATIC:
+            return
+        body.position = pose[:2]
+        body.angle = pose[2]
+        body.velocity = velocity[:2]
+        body.angular_velocity = velocity[2]
+        self._space.reindex_shapes_for_body(body)
+
+    def limit_speeds(self, steps_per_size: float = SPEED_LIMIT) -> None:
+        """No tunnelling: no dynamic body may move more than ``steps_per_size`` of its own half-size in one step
+        (at least `MIN_SPEED_LIMIT`), so a body pushed at absurd speed is stopped by what it meets."""
+        for cid in self._by_z:
+            body = self._built.bodies.get(cid)
+            if body is None or body.body_type == pymunk.Body.STATIC:
+                continue
+            half = min((min(s.bb.right - s.bb.left, s.bb.top - s.bb.bottom) / 2 for s in body.shapes), default=0.0)
+            limit = max(steps_per_size * half / self._dt, MIN_SPEED_LIMIT)
+            body.velocity_func = _speed_limited(limit)
 
     # -- editing --------------------------------------------------------------------------------------------------
 

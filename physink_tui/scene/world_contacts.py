@@ -1,7 +1,8 @@
 """Contacts in the physics world: records where contacts begin and sets each contact's material; no stepping.
 
 The world's pymunk space calls a `ContactListener` for every contact: ``begin`` appends a frozen
-`ContactRecord` (one per pair of components per step), ``pre_solve`` turns the product of the two shapes' surface
+`ContactRecord` (one per pair of components per step) and counts the pair as touching until ``separate``;
+``pre_solve`` turns the product of the two shapes' surface
 codes (see world_build.py) back into the pair's restitution (the larger) and friction (the mean), bouncing only
 on a fast first contact.
 """
@@ -49,6 +50,7 @@ class ContactListener:
         self._contact_values = contact_values
         self._records: list[ContactRecord] = []
         self._touched: set[tuple[str, str]] = set()
+        self._touching: dict[frozenset[str], int] = {}
         self.step = 0
 
     def next_step(self) -> None:
@@ -60,17 +62,35 @@ class ContactListener:
         out, self._records = self._records, []
         return out
 
+    def touching(self) -> frozenset[frozenset[str]]:
+        """The pairs of components whose shapes touch now."""
+        return frozenset(pair for pair, n in self._touching.items() if n > 0)
+
     def begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
         sa, sb = arbiter.shapes
         a, b = self._owner.get(sa), self._owner.get(sb)
         if a is None or b is None:
             return
+        pair = frozenset((a, b))
+        self._touching[pair] = self._touching.get(pair, 0) + 1
         if (a, b) in self._touched or (b, a) in self._touched:
             return  # a polygon's triangles or a polyline's segments: one contact per pair per step
         self._touched.add((a, b))
         points = arbiter.contact_point_set
         at = points.points[0].point_a if points.points else arbiter.shapes[0].body.position
         self._records.append(ContactRecord(self.step, a, b, (at[0], at[1]), (points.normal.x, points.normal.y)))
+
+    def separate(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+        sa, sb = arbiter.shapes
+        a, b = self._owner.get(sa), self._owner.get(sb)
+        if a is None or b is None:
+            return
+        pair = frozenset((a, b))
+        left = self._touching.get(pair, 0) - 1
+        if left > 0:
+            self._touching[pair] = left
+        else:
+            self._touching.pop(pair, None)
 
     def pre_solve(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
         # Chipmunk multiplied the two shapes' surface codes (world_build.py): the product names the two materials.

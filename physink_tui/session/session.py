@@ -3,8 +3,9 @@ history, and journals what it consumed; the TUI, kiosk, CLI and tests all drive 
 
 Time is the entries' ``t``, never a clock. Pen input goes through the input side (decoder, mapping,
 gesture engine); each finished stroke is recognised and interpreted into the scene (sketch mode).
-A short line is held back until the next stroke shows whether the two make an X. Demo mode, the
-timeline and simulation arrive with later issues; their commands are accepted and reported.
+A short line is held back until the next stroke shows whether the two make an X. In demo mode the pen
+demonstrates behaviour (`demo`), playback commands move timeline time, and phrases label its events;
+simulation arrives with a later issue (its command is accepted and reported).
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from physink_tui.session import adjust, demo
 from physink_tui.session.adjust import SETTLE_STEPS
 from physink_tui.session.history import History
 from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.phrases import DEFAULT_VOCABULARY, PhraseError, Vocabulary, label_event, parse_phrase
 
 X_CANDIDATE = 0.08
 """A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
@@ -85,6 +87,7 @@ class Session:
     _unsettled: tuple[str, ...] = ()
     journal: JournalWriter | None = None
     timeline: Timeline | None = None
+    vocabulary: Vocabulary = DEFAULT_VOCABULARY
     _demo: demo.Demo | None = None
 
     @classmethod
@@ -293,15 +296,40 @@ class Session:
             self.selected = self.last_created = None
         elif name == "label":
             self._label(str(args[0]), str(args[1]))
+        elif name in ("play", "pause", "stop", "seek"):
+            self._playback(name, args)
         else:
-            self.tell(f"{name}: not available yet (the timeline and simulation come with issues 6 and later)")
+            self.tell(f"{name}: not available yet (simulation and saving come with later issues)")
+
+    def _playback(self, name: str, args: tuple) -> None:
+        if self._demo is None:
+            self.tell(f"{name}: playback works in demo mode (mode demo)")
+        elif name == "seek":
+            demo.seek(self, float(args[0]))
+        else:
+            {"play": demo.play, "pause": demo.pause, "stop": demo.stop}[name](self)
 
     def _say(self, entry: SayEntry) -> None:
         words = entry.text.strip().split()
         if len(words) >= 2 and words[0].lower() == "label":
             self._label("selected" if self.selected else "last", " ".join(words[1:]))
+        elif entry.text.strip() and self.mode == "demo" and self._demo is not None:
+            self._narrate(entry.text)
         elif entry.text.strip():
             self.tell(f"heard {entry.text!r}; only 'label <name>' is understood while sketching")
+
+    def _narrate(self, text: str) -> None:
+        """A phrase (``the egg lands in the frying pan``) labels the nearest event involving what it names."""
+        names = {c.id: c.label for c in self.scene.components.values() if getattr(c, "label", None)}
+        recorder = self._demo.recorder
+        try:
+            phrase = parse_phrase(text, names, self.vocabulary)
+            timeline, event_id = label_event(recorder.snapshot(), phrase, self._demo.clock)
+        except PhraseError as exc:
+            self.tell(str(exc))
+            return
+        recorder.timeline = timeline
+        self.tell(f"{event_id} is now narrated {phrase.text!r}")
 
     def _label(self, target: str, text: str) -> None:
         component_id = {"last": self.last_created, "selected": self.selected}.get(target, target)

@@ -58,6 +58,8 @@ class Event:
         regions: movement only: ``(other component id, regions crossed)`` per nearby body, regions in `REGIONS`.
         trajectory: movement only: the recorded frames.
         point: contact only: the exact contact point in canvas units, when known.
+        tracks: movement only: ``(body id, frames)`` for each body attached to the moving one (the knife on the
+            lever's rope), so that playback can move them too; the moving body's own frames are ``trajectory``.
     """
 
     id: str
@@ -71,6 +73,7 @@ class Event:
     regions: tuple[tuple[str, tuple[str, ...]], ...] = ()
     trajectory: tuple[TrajectoryPoint, ...] = ()
     point: tuple[float, float] | None = None
+    tracks: tuple[tuple[str, tuple[TrajectoryPoint, ...]], ...] = ()
 
     def __post_init__(self) -> None:
         if self.type not in EVENT_TYPES:
@@ -89,8 +92,8 @@ class Event:
                         f"event {self.id!r}: region {region!r} of {other!r} is not one of {REGIONS}", self.id)
         if self.type != "contact" and (self.sides or self.point is not None):
             raise TimelineError(f"event {self.id!r} is a {self.type}; only contacts have sides and a point", self.id)
-        if self.type != "movement" and (self.regions or self.trajectory):
-            raise TimelineError(f"event {self.id!r} is a {self.type}; only movements have regions and a trajectory",
+        if self.type != "movement" and (self.regions or self.trajectory or self.tracks):
+            raise TimelineError(f"event {self.id!r} is a {self.type}; only movements have regions and trajectories",
                                 self.id)
         if self.id in self.causes:
             raise TimelineError(f"event {self.id!r} names itself as a cause; events cannot cause themselves", self.id)

@@ -1,151 +1,480 @@
 """Records a demonstration as causal events from per-step observations of the world; no physics, no clock.
 
-Fed after every physics step with the bodies' poses and velocities, the contacts that began and the body the
-pen holds, it keeps one open movement per moving body and builds the timeline as the thesis does (3.3.1):
-the pen's grab is the start (an exogenous force) that causes the grabbed body's movement; a contact is caused
-by the movements of the bodies in it and causes a new movement of each movable body in it; contacts of the
-same pair within 15 frames are one; a body that stops ends its movement. End-contacts, qualitative regions,
-playback and concurrent movement are left to the rest of issue 6.
+Fed after every physics step with an `Observation` (every body's pose, the contacts begun, the pairs touching,
+the body the pen holds, the bodies playing back their recording), it keeps one open movement per moving group
+(a body and what is tied to it by ropes, springs and joints) and builds the timeline as the thesis does (3.3):
+
+- the pen's first grab is the start (an exogenous force) and causes the grabbed body's movement; a body grabbed
+  again continues its latest movement (which the last contact or end-contact involving it created);
+- a contact is caused by the movements of the bodies in it and causes a new movement of each movable body in it;
+  reports of the same pair within 15 frames are one contact; a contact with a body that is playing back its
+  recording splits that body's recorded movement (concurrent movement, thesis 4.1);
+- movable bodies that begin in contact and come apart make an end-contact, which causes a movement of each
+  (thesis figure 3-9); a body that starts moving by itself is explained by the moving body it touches (a contact),
+  else by a recent separation (an end-contact, the cup dispenser), else it continues its latest movement, else the
+  start explains it;
+- movements record every frame of the moving body (and of the bodies tied to it) and the regions of other bodies
+  the moving body passes through (`qualitative.regions_at`); a group still for `STILL_FRAMES` ends its movement.
+
+Re-demonstrating a body from time t (`redemonstrate`) is the assisted edit of thesis 3.3.2. When to step, seek
+or play back is the session's business; the poses come from the physics world.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
-from physink_tui.timeline.events import Event, Timeline, TrajectoryPoint
+from physink_tui.timeline.events import REGIONS, Event, Timeline, TrajectoryPoint
+from physink_tui.timeline.graph import descendants
+from physink_tui.timeline.qualitative import BodyOutline, Box, bounds, contact_sides, placed, regions_at, separated
 
 MOVING_SPEED = 5.0
-"""Canvas units per second above which a body counts as moving."""
+"""Canvas units per second above which a body counts as moving (its centre, or its rim when it spins)."""
 STILL_FRAMES = 12
 """Frames below `MOVING_SPEED` after which a movement ends."""
 SAME_CONTACT_FRAMES = 15
 """Repeated reports of one pair within this many frames are one contact (DESIGN.md)."""
+SEPARATION_GAP = 4.0
+"""Canvas units between two bodies that began in contact after which they have come apart."""
+RECENT_SEPARATION = 1.0
+"""Seconds after two bodies stop touching during which a body starting to move by itself was released by it."""
 
-Pose = tuple[float, float, float, float, float]  # x, y, angle, vx, vy
+Pose = tuple[float, float, float, float, float, float]  # x, y, angle, vx, vy, angular velocity
 
 
-def side_of(centre: tuple[float, float], point: tuple[float, float]) -> str:
-    """Which side of a body (y down) a contact point lies on: top, bottom, left or right.
+@dataclass(frozen=True, slots=True)
+class ContactSeen:
+    """A contact begun in the last step: the two bodies, a contact point, the normal from ``a`` towards ``b``."""
 
-    >>> side_of((0, 0), (0, -5)), side_of((0, 0), (4, 1))
-    ('top', 'right')
+    a: str
+    b: str
+    point: tuple[float, float]
+    normal: tuple[float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Observation:
+    """What the world looks like after one step.
+
+    Attributes:
+        t: timeline time of the step.
+        poses: every body's pose (fixed bodies may be left out).
+        contacts: contacts begun in this step, in the order they began.
+        grabbed: the body the pen holds, or None.
+        touching: the pairs of bodies touching now.
+        playing: bodies following their recorded trajectories (concurrent movement) rather than the physics.
     """
-    dx, dy = point[0] - centre[0], point[1] - centre[1]
-    if abs(dy) >= abs(dx):
-        return "top" if dy < 0 else "bottom"
-    return "right" if dx > 0 else "left"
+
+    t: float
+    poses: Mapping[str, Pose]
+    contacts: Sequence[ContactSeen] = ()
+    grabbed: str | None = None
+    touching: frozenset[frozenset[str]] = frozenset()
+    playing: frozenset[str] = frozenset()
 
 
 @dataclass
 class _Open:
     event_id: str
-    frames: list[TrajectoryPoint] = field(default_factory=list)
+    bodies: tuple[str, ...]  # the moving body first, then the bodies tied to it
+    frames: dict[str, list[TrajectoryPoint]]
+    crossed: dict[str, set[str]]
     still: int = 0
+
+
+def _speed(pose: Pose, radius: float) -> float:
+    return max(math.hypot(pose[3], pose[4]), abs(pose[5]) * radius)
 
 
 @dataclass
 class Recorder:
-    """Builds a `Timeline` from observations; `timeline` is always the events so far (open movements included).
+    """Builds a `Timeline` from observations (see the module docstring); `snapshot` gives the events so far.
 
     Attributes:
+        outlines: every body's qualitative outline, by id.
         movable: ids of the bodies that can move (fixed bodies never get movement events).
+        links: the ropes, springs and joints between movable things: node -> neighbours, where nodes are movable
+            body ids and rope/spring ids; a movement names the moving body, then what it reaches through links.
+        initial_pairs: pairs of movable bodies touching when the demonstration began.
+        reach: how far (canvas units) the regions above, below, left and right of a body extend.
+        dt: the physics step in seconds (for the 15-frame rule).
+        timeline: the events so far (movements being recorded are written up to date by `snapshot`).
     """
 
+    outlines: Mapping[str, BodyOutline]
     movable: frozenset[str]
-    timeline: Timeline = field(default_factory=lambda: Timeline(()))
-    frame: int = 0
+    links: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    initial_pairs: frozenset[frozenset[str]] = frozenset()
+    reach: float = 250.0
+    dt: float = 1 / 120
+    timeline: Timeline = field(default_factory=Timeline)
     _next: int = 1
     _open: dict[str, _Open] = field(default_factory=dict)
-    _last_contact: dict[frozenset[str], tuple[int, str]] = field(default_factory=dict)
+    _latest: dict[str, str] = field(default_factory=dict)
+    _last_contact: dict[frozenset[str], float] = field(default_factory=dict)
+    _ended_pairs: set[frozenset[str]] = field(default_factory=set)
+    _touching: frozenset[frozenset[str]] = frozenset()
+    _separated_at: dict[frozenset[str], float] = field(default_factory=dict)
     _start: str | None = None
     _grabbed: str | None = None
+    _group: dict[str, str] = field(default_factory=dict)
+    _radius: dict[str, float] = field(default_factory=dict)
+    _boxes: dict[str, tuple[tuple[float, float, float], Box]] = field(default_factory=dict)
 
-    def _new_id(self) -> str:
-        self._next += 1
-        return f"e{self._next - 1}"
+    def __post_init__(self) -> None:
+        for body in sorted(self.movable):
+            if body not in self._group:
+                for member in self.chain(body):
+                    self._group[member] = body
+        for body, outline in self.outlines.items():
+            self._radius[body] = max((math.hypot(x, y) for x, y in outline.hull), default=0.0)
+        self._adopt(self.timeline)
 
-    def observe(self, t: float, poses: dict[str, Pose], contacts: list[tuple[str, str, tuple[float, float]]],
-                grabbed: str | None) -> None:
-        """One physics step: the pose of every movable body, contacts begun ``(a, b, point)``, the pen's body."""
-        self.frame += 1
-        if grabbed is not None and grabbed != self._grabbed and grabbed in self.movable:
-            self._grab(t, grabbed, poses[grabbed])
-        self._grabbed = grabbed
-        for a, b, point in contacts:
-            self._contact(t, a, b, point, poses)
-        for body_id in sorted(self.movable):
-            pose = poses.get(body_id)
-            if pose is None:
-                continue
-            moving = math.hypot(pose[3], pose[4]) > MOVING_SPEED or body_id == grabbed
-            current = self._open.get(body_id)
-            if current is not None:
-                current.frames.append(TrajectoryPoint(t, *pose))
-                current.still = 0 if moving else current.still + 1
-                if current.still >= STILL_FRAMES:
-                    self._close(body_id)
+    # -- the outside -----------------------------------------------------------------------------------------
+
+    def chain(self, body: str) -> tuple[str, ...]:
+        """``body`` and every movable body, rope and spring it reaches through links, nearest first."""
+        seen = [body]
+        i = 0
+        while i < len(seen):
+            for nxt in self.links.get(seen[i], ()):
+                if nxt not in seen:
+                    seen.append(nxt)
+            i += 1
+        return tuple(seen)
+
+    def group_key(self, body: str) -> str:
+        """The same key for every body of one mechanism (bodies tied together move as one)."""
+        return self._group.get(body, body)
+
+    def group_bodies(self, body: str) -> tuple[str, ...]:
+        """The movable bodies that move with ``body`` (itself first)."""
+        return tuple(c for c in self.chain(body) if c in self.outlines)
 
     @property
     def moving(self) -> bool:
         """Whether any movement is still open (timeline time runs on while bodies move)."""
         return bool(self._open)
 
+    def observe(self, obs: Observation) -> None:
+        """One physics step (see `Observation`)."""
+        if obs.grabbed is not None and obs.grabbed != self._grabbed and obs.grabbed in self.movable:
+            self._begin(obs.t, obs.grabbed, obs, grabbed=True)
+        self._grabbed = obs.grabbed
+        for pair in self._touching - obs.touching:
+            self._separated_at[pair] = obs.t
+        self._touching = obs.touching
+        self._check_initial_pairs(obs)
+        for contact in obs.contacts:
+            self._contact(obs, contact)
+        for body in sorted(self.movable):
+            pose = obs.poses.get(body)
+            if pose is None or body in obs.playing or self._group.get(body) in self._open:
+                continue
+            if math.hypot(pose[3], pose[4]) > MOVING_SPEED:  # spinning in place on a pin explains nothing
+                self._begin(obs.t, body, obs, grabbed=False)
+        for key in sorted(self._open):
+            self._record_frame(obs, key)
+
     def snapshot(self) -> Timeline:
-        """The timeline so far, open movements written up to now."""
-        self._sync()
+        """The timeline so far, movements being recorded written up to now."""
+        for current in self._open.values():
+            self._write(current)
         return self.timeline
 
-    def finish(self) -> Timeline:
-        for body_id in list(self._open):
-            self._close(body_id)
+    def pause(self) -> Timeline:
+        """Ends every movement being recorded (before a seek, or at the end of the demonstration)."""
+        for key in list(self._open):
+            self._write(self._open.pop(key))
+        self._grabbed = None
         return self.timeline
 
-    # -- events --------------------------------------------------------------------------------
+    finish = pause
 
-    def _grab(self, t: float, body_id: str, pose: Pose) -> None:
+    def redemonstrate(self, body: str, t: float) -> Timeline:
+        """The assisted edit (thesis 3.3.2): ``body`` is demonstrated again from ``t``.
+
+        Its movement at ``t`` is cut at ``t``, and every event it caused is deleted, with every later event
+        involving it or what is tied to it and what those caused; nothing else changes. The next grab of the
+        body continues the cut movement.
+        """
+        self.pause()
+        members = set(self.group_bodies(body))
+        current = self._covering(members, t)
+        gone: set[str] = set()
+        if current is not None:
+            gone |= descendants(self.timeline, current.id)
+        for ev in self.timeline.events:
+            if ev.t0 > t and members & set(ev.components) and ev.type != "start":
+                gone |= {ev.id} | descendants(self.timeline, ev.id)
+        if current is not None:
+            gone.discard(current.id)
+        timeline = self.timeline.remove(gone)
+        if current is not None:
+            kept = tuple(p for p in current.trajectory if p.t <= t) or current.trajectory[:1]
+            tracks = tuple((c, tuple(p for p in frames if p.t <= t) or frames[:1]) for c, frames in current.tracks)
+            timeline = timeline.update(replace(current, trajectory=kept, tracks=tracks,
+                                               t1=max(current.t0, kept[-1].t)))
+        self.timeline = Timeline()
+        self._latest.clear()
+        self._last_contact.clear()
+        self._ended_pairs.clear()
+        self._adopt(timeline)
+        return self.timeline
+
+    # -- events ----------------------------------------------------------------------------------------------
+
+    def _adopt(self, timeline: Timeline) -> None:
+        """Take over an existing timeline (a demonstration continued, or edited)."""
+        self.timeline = timeline
+        for ev in timeline.events:
+            digits = ev.id[1:]
+            if ev.id.startswith("e") and digits.isdigit():
+                self._next = max(self._next, int(digits) + 1)
+            if ev.type == "start" and self._start is None:
+                self._start = ev.id
+            elif ev.type == "movement" and ev.components and ev.components[0] in self._group:
+                key = self._group[ev.components[0]]
+                latest = self._latest.get(key)
+                if latest is None or timeline.event(latest).t0 <= ev.t0:
+                    self._latest[key] = ev.id
+            elif ev.type in ("contact", "end_contact"):
+                self._ended_pairs.add(frozenset(ev.components))  # a pair seen touching: no end-contact later
+        if self._start is not None and self._start not in timeline:
+            self._start = None
+
+    def _new_id(self) -> str:
+        self._next += 1
+        return f"e{self._next - 1}"
+
+    def _start_event(self, t: float) -> str:
         if self._start is None:
             self._start = self._new_id()
             self.timeline = self.timeline.add(Event(self._start, "start", (), (), t, t))
-        self._close(body_id)
-        self._open_movement(t, body_id, (self._start,), pose)
+        return self._start
 
-    def _contact(self, t: float, a: str, b: str, point: tuple[float, float], poses: dict[str, Pose]) -> None:
-        pair = frozenset((a, b))
-        previous = self._last_contact.get(pair)
-        if previous is not None and self.frame - previous[0] <= SAME_CONTACT_FRAMES:
-            self._last_contact[pair] = (self.frame, previous[1])
+    def _begin(self, t: float, body: str, obs: Observation, *, grabbed: bool) -> None:
+        """``body`` starts moving (grabbed, or by itself) with no movement of its group being recorded."""
+        key = self._group[body]
+        if key in self._open:
+            self._open[key].still = 0
             return
-        causes = tuple(self._open[c].event_id for c in sorted(pair) if c in self._open)
-        if not causes:
+        if not grabbed:
+            for pair in sorted(obs.touching, key=sorted):
+                if body in pair and len(pair) == 2:
+                    (other,) = pair - {body}
+                    if self._group.get(other, other) != key and self._cause_of(other, t, obs) is not None:
+                        self._add_contact(obs, body, other, None, None)  # pushed by a moving body
+                        return
+        latest = self._latest.get(key)
+        latest_t = self.timeline.event(latest).t1 if latest is not None else -math.inf
+        for pair, when in sorted(self._separated_at.items(), key=lambda item: (-item[1], sorted(item[0]))):
+            if body in pair and len(pair) == 2 and t - when <= RECENT_SEPARATION and when >= latest_t:
+                (other,) = pair - {body}
+                if other in self.outlines:
+                    self._add_end_contact(obs, body, other)  # released by a body it stopped touching
+                    return
+        if latest is not None:
+            self._reopen(key, latest)
+            return
+        self._open_movement(t, body, (self._start_event(t),), obs)
+
+    def _cause_of(self, body: str, t: float, obs: Observation) -> str | None:
+        """The movement explaining ``body``'s motion now: its group's open one, or the recording it plays."""
+        key = self._group.get(body)
+        if key is not None and key in self._open:
+            return self._open[key].event_id
+        if body in obs.playing:
+            ev = self._covering({body}, t)
+            return ev.id if ev is not None else None
+        return None
+
+    def _contact(self, obs: Observation, contact: ContactSeen) -> None:
+        a, b = contact.a, contact.b
+        pair = frozenset((a, b))
+        if a == b or a not in self.outlines or b not in self.outlines:
+            return
+        if self._group.get(a, a) == self._group.get(b, b):
+            return  # parts of one mechanism touching each other
+        previous = self._last_contact.get(pair)
+        if previous is not None and obs.t - previous <= SAME_CONTACT_FRAMES * self.dt + 1e-9:
+            self._last_contact[pair] = obs.t
+            return
+        if a in obs.playing and b in obs.playing:
+            return  # both replaying what was recorded
+        self._add_contact(obs, a, b, contact.point, contact.normal)
+
+    def _add_contact(self, obs: Observation, a: str, b: str, point: tuple[float, float] | None,
+                     normal: tuple[float, float] | None) -> None:
+        t = obs.t
+        pair = frozenset((a, b))
+        causes = {c: self._cause_of(c, t, obs) for c in (a, b)}
+        if not any(causes.values()):
             return  # two still bodies touching (drawn so): no behaviour to explain
+        # the body whose movement brought them together is named first
+        first, second = (a, b) if causes[a] is not None and (causes[b] is None or a <= b) else (b, a)
+        pa, pb = obs.poses.get(first), obs.poses.get(second)
+        if normal is None and pa is not None and pb is not None:
+            d = math.hypot(pb[0] - pa[0], pb[1] - pa[1]) or 1.0
+            normal = ((pb[0] - pa[0]) / d, (pb[1] - pa[1]) / d)
+        elif normal is not None and first != a:
+            normal = (-normal[0], -normal[1])
+        sides: tuple[tuple[str, str], ...] = ()
+        if normal is not None and pa is not None and pb is not None:
+            sa, sb = contact_sides(self.outlines[first], pa, self.outlines[second], pb, normal)
+            sides = ((first, sa), (second, sb))
+        if point is None and pa is not None and pb is not None:
+            point = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
         cid = self._new_id()
-        sides = tuple((c, side_of(poses[c][:2], point)) for c in sorted(pair) if c in poses)
-        self.timeline = self.timeline.add(Event(cid, "contact", tuple(sorted(pair)), causes, t, t, sides=sides,
-                                                point=point))
-        self._last_contact[pair] = (self.frame, cid)
-        for c in sorted(pair):
-            if c in self.movable and c in poses:
-                self._close(c)  # a contact splits the movement it interrupts
-                self._open_movement(t, c, (cid,), poses[c])
+        self._write_open(first, second)
+        self.timeline = self.timeline.add(Event(
+            cid, "contact", (first, second), tuple(dict.fromkeys(c for c in (causes[first], causes[second]) if c)),
+            t, t, sides=sides, point=point))
+        self._last_contact[pair] = t
+        self._ended_pairs.add(pair)
+        self._moved_by(obs, cid, (first, second))
 
-    def _open_movement(self, t: float, body_id: str, causes: tuple[str, ...], pose: Pose) -> None:
+    def _add_end_contact(self, obs: Observation, a: str, b: str) -> None:
+        t = obs.t
+        first, second = sorted((a, b), key=lambda c: (self._cause_of(c, t, obs) is None, c))
+        causes = tuple(dict.fromkeys(c for c in (self._cause_of(first, t, obs), self._cause_of(second, t, obs))
+                                     if c))
+        if not causes:
+            latest = [self._latest[k] for k in (self._group.get(a), self._group.get(b)) if k in self._latest]
+            causes = tuple(latest[:1]) or (self._start_event(t),)
+        eid = self._new_id()
+        self._write_open(a, b)
+        self.timeline = self.timeline.add(Event(eid, "end_contact", (first, second), causes, t, t))
+        self._ended_pairs.add(frozenset((a, b)))
+        self._separated_at.pop(frozenset((a, b)), None)
+        self._moved_by(obs, eid, (first, second))
+
+    def _moved_by(self, obs: Observation, cause: str, bodies: tuple[str, str]) -> None:
+        """Every movable body of a contact or end-contact gets a new movement caused by it."""
+        for body in bodies:
+            if body not in self.movable:
+                continue
+            if body in obs.playing:
+                self._split(body, obs.t, cause)
+            else:
+                self._close(self._group[body])
+                self._open_movement(obs.t, body, (cause,), obs)
+
+    def _check_initial_pairs(self, obs: Observation) -> None:
+        for pair in sorted(self.initial_pairs - self._ended_pairs, key=sorted):
+            a, b = sorted(pair)
+            if self._cause_of(a, obs.t, obs) is None and self._cause_of(b, obs.t, obs) is None:
+                continue  # neither moves: they cannot have come apart
+            pa, pb = obs.poses.get(a), obs.poses.get(b)
+            if pa is not None and pb is not None and separated(self.outlines[a], pa, self.outlines[b], pb,
+                                                               SEPARATION_GAP):
+                self._add_end_contact(obs, a, b)
+
+    # -- movements -------------------------------------------------------------------------------------------
+
+    def _open_movement(self, t: float, body: str, causes: tuple[str, ...], obs: Observation) -> None:
+        chain = self.chain(body)
+        bodies = tuple(c for c in chain if c in self.outlines)
         mid = self._new_id()
-        self.timeline = self.timeline.add(Event(mid, "movement", (body_id,), causes, t, t,
-                                                trajectory=(TrajectoryPoint(t, *pose),)))
-        self._open[body_id] = _Open(mid, [TrajectoryPoint(t, *pose)])
+        self.timeline = self.timeline.add(Event(mid, "movement", chain, causes, t, t))
+        key = self._group[body]
+        self._open[key] = _Open(mid, bodies, {b: [] for b in bodies}, {})
+        self._latest[key] = mid
 
-    def _close(self, body_id: str) -> None:
-        current = self._open.pop(body_id, None)
+    def _reopen(self, key: str, event_id: str) -> None:
+        ev = self.timeline.event(event_id)
+        bodies = tuple(c for c in ev.components if c in self.outlines)
+        frames = {b: [] for b in bodies}
+        frames[bodies[0]] = list(ev.trajectory)
+        for c, track in ev.tracks:
+            frames[c] = list(track)
+        self._open[key] = _Open(event_id, bodies, frames, {c: set(rs) for c, rs in ev.regions})
+
+    def _close(self, key: str) -> None:
+        current = self._open.pop(key, None)
         if current is not None:
             self._write(current)
 
-    def _sync(self) -> None:
-        for current in self._open.values():
-            self._write(current)
+    def _write_open(self, *bodies: str) -> None:
+        for body in bodies:
+            key = self._group.get(body)
+            if key in self._open:
+                self._write(self._open[key])
+
+    def _record_frame(self, obs: Observation, key: str) -> None:
+        current = self._open[key]
+        moving = obs.grabbed in current.bodies
+        for body in current.bodies:
+            pose = obs.poses.get(body)
+            if pose is None:
+                continue
+            current.frames[body].append(TrajectoryPoint(obs.t, *pose[:5]))
+            moving = moving or _speed(pose, self._radius[body]) > MOVING_SPEED
+        mover = obs.poses.get(current.bodies[0])
+        if mover is not None:
+            for other in sorted(obs.poses):
+                if other in current.bodies or other not in self.outlines:
+                    continue
+                found = regions_at((mover[0], mover[1]), self._box(other, obs.poses[other]), self.reach)
+                if found:
+                    current.crossed.setdefault(other, set()).update(found)
+        current.still = 0 if moving else current.still + 1
+        if current.still >= STILL_FRAMES:
+            self._close(key)
+
+    def _box(self, body: str, pose: Pose) -> Box:
+        at = (pose[0], pose[1], pose[2])
+        cached = self._boxes.get(body)
+        if cached is None or cached[0] != at:
+            cached = (at, bounds(placed(self.outlines[body], pose)))
+            self._boxes[body] = cached
+        return cached[1]
 
     def _write(self, current: _Open) -> None:
         event = self.timeline.event(current.event_id)
-        frames = tuple(current.frames)
-        if frames and (event.trajectory != frames):
-            self.timeline = self.timeline.update(replace(event, t1=frames[-1].t, trajectory=frames))
+        mover = tuple(current.frames[current.bodies[0]])
+        tracks = tuple((b, tuple(current.frames[b])) for b in current.bodies[1:] if current.frames[b])
+        regions = tuple((other, tuple(r for r in REGIONS if r in found))
+                        for other, found in sorted(current.crossed.items()))
+        t1 = max(event.t0, mover[-1].t) if mover else event.t1
+        if (event.trajectory, event.tracks, event.regions, event.t1) != (mover, tracks, regions, t1):
+            self.timeline = self.timeline.update(replace(event, t1=t1, trajectory=mover, tracks=tracks,
+                                                         regions=regions))
+
+    def _covering(self, members: set[str], t: float) -> Event | None:
+        """The latest movement of any of ``members`` begun at or before ``t``."""
+        best: Event | None = None
+        for ev in self.timeline.events:
+            if ev.type == "movement" and ev.t0 <= t and members & set(ev.components):
+                if best is None or ev.t0 >= best.t0:
+                    best = ev
+        return best
+
+    def _split(self, body: str, t: float, cause: str) -> None:
+        """A contact interrupts the recorded movement ``body`` plays back: the part after ``t`` becomes a new
+        movement caused by the contact, and what the old one caused from then on is caused by the new one."""
+        current = self._covering({body}, t)
+        if current is None or current.t1 <= t:
+            return
+        new_id = self._new_id()
+        before = tuple(p for p in current.trajectory if p.t <= t) or current.trajectory[:1]
+        after = tuple(p for p in current.trajectory if p.t > t)
+        tracks_before = tuple((c, tuple(p for p in f if p.t <= t)) for c, f in current.tracks)
+        tracks_after = tuple((c, tuple(p for p in f if p.t > t)) for c, f in current.tracks)
+        head = replace(current, t1=max(current.t0, before[-1].t), trajectory=before, tracks=tracks_before)
+        tail = Event(new_id, "movement", current.components, (cause,), t, max(t, current.t1), label=None,
+                     regions=current.regions, trajectory=after, tracks=tracks_after)
+        events = []
+        for ev in self.timeline.events:
+            if ev.id == current.id:
+                events.append(head)
+            elif current.id in ev.causes and ev.t0 >= t and ev.id != cause:
+                events.append(replace(ev, causes=tuple(new_id if c == current.id else c for c in ev.causes)))
+            else:
+                events.append(ev)
+        self.timeline = Timeline((*events, tail))
+        key = self._group.get(body)
+        if key is not None and self._latest.get(key) == current.id:
+            self._latest[key] = new_id
