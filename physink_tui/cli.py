@@ -34,13 +34,13 @@ HANDLERS: dict[str, str] = {
     "record": "physink_tui.commands.record:run",
     "recognize": "physink_tui.commands.recognize:run",
     "timeline": "physink_tui.commands.timeline:run",
+    "equiv": "physink_tui.commands.equiv:run",
 }
 
 #: Subcommands not built yet: name -> where they are planned (shown to the user as is).
 PLANNED: dict[str, str] = {
     "tui": "a later issue: the Textual control panel",
     "kiosk": "a later issue: the headless recording service",
-    "equiv": "issue #6: timeline equivalence",
     "simulate": "a later issue: the SIMULATE parameter search",
     "listen": "a later issue: speech commands",
     "export": "a later issue: video and frame export",

@@ -189,6 +189,8 @@ class Recorder:
         for key in list(self._open):
             self._write(self._open.pop(key))
         self._grabbed = None
+        self._separated_at.clear()  # what happens next follows a jump in time, not a separation
+        self._touching = frozenset()
         return self.timeline
 
     finish = pause

@@ -13,7 +13,7 @@ docstring says which sentences it follows.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from physink_tui.input.capture import Capture
 from physink_tui.input.mapping import TabletMapping
@@ -166,6 +166,10 @@ class Scenario:
         seed: the virtual pen's seed.
         rate_hz: the virtual pen's report rate.
         gap_s: seconds the pen is out of range between strokes.
+        demo: the demonstration: strokes made in demo mode after the drawing (``mode demo`` is typed after the
+            last drawing step, ``mode sketch`` `settle_s` after the last demo step), with what is said and
+            typed after each (``seek``, phrases).
+        settle_s: seconds after the last demo stroke before demo mode ends (released bodies come to rest).
     """
 
     name: str
@@ -176,10 +180,12 @@ class Scenario:
     seed: int = 0
     rate_hz: float = 200.0
     gap_s: float = 0.5
+    demo: tuple[Step, ...] = ()
+    settle_s: float = 2.0
 
     @property
     def strokes(self) -> tuple[Stroke, ...]:
-        return tuple(step.stroke for step in self.steps)
+        return tuple(step.stroke for step in (*self.steps, *self.demo))
 
     def pen(self) -> VirtualPen:
         return VirtualPen(REFERENCE_DEVICES[self.device], rate_hz=self.rate_hz, seed=self.seed)
@@ -193,12 +199,22 @@ class Scenario:
         spans: dict[int, list[float]] = {}
         for sample in self.pen().samples(self.strokes, gap_s=self.gap_s):
             spans.setdefault(sample.stroke, []).append(sample.t)
-        return tuple((min(spans[i]), max(spans[i]), step) for i, step in enumerate(self.steps))
+        steps = (*self.steps, *self.demo)
+        return tuple((min(spans[i]), max(spans[i]), step) for i, step in enumerate(steps))
+
+    @property
+    def demo_start(self) -> float:
+        """When the first demo stroke comes into range (infinity without a demonstration)."""
+        timed = self.timed_steps()
+        return timed[len(self.steps)][0] if self.demo else float("inf")
 
     def spoken_and_typed(self) -> list[SayEntry | CommandEntry]:
         """The utterances and commands, each at its time after its stroke."""
         out: list[SayEntry | CommandEntry] = []
-        for _, end, step in self.timed_steps():
+        timed = self.timed_steps()
+        for i, (_, end, step) in enumerate(timed):
+            if self.demo and i == len(self.steps) - 1:
+                step = replace(step, commands=(*step.commands, ("mode", ("demo",))))
             t = end
             for text in step.say:
                 t += SPEECH_DELAY
@@ -208,6 +224,8 @@ class Scenario:
                 out.append(CommandEntry(round(t, 6), name, args))
             if t - end >= self.gap_s:
                 raise ValueError(f"{self.name}: what follows {step.what!r} runs into the next stroke")
+        if self.demo:
+            out.append(CommandEntry(round(max(timed[-1][1], out[-1].t) + self.settle_s, 6), "mode", ("sketch",)))
         return out
 
 
@@ -241,12 +259,12 @@ def egg_cracker() -> Scenario:
         Step("the pulley's axle", pin((0.75, 0.22))),
         Step("the knife, hanging right of the pulley", Stroke.box(0.775, 0.32, 0.805, 0.45), say=("label knife",)),
         Step("the rope from the lever's end over the pulley to the knife",
-             bezier((0.60, 0.4825), (0.62, 0.07), (0.80, 0.04), (0.79, 0.34))),
+             bezier((0.60, 0.4825), (0.62, 0.07), (0.80, 0.04), (0.79, 0.34)), say=("label rope",)),
         Step("the egg, under the knife", Stroke.circle((0.79, 0.52), 0.035, aspect=ASPECT * 1.4),
              say=("label egg",)),
-        Step("the left paddle, under the egg", Stroke.box(0.70, 0.585, 0.785, 0.63)),
+        Step("the left paddle, under the egg", Stroke.box(0.70, 0.585, 0.785, 0.63), say=("label left paddle",)),
         Step("the left paddle's pivot", pin((0.7175, 0.6075))),
-        Step("the right paddle", Stroke.box(0.795, 0.585, 0.88, 0.63)),
+        Step("the right paddle", Stroke.box(0.795, 0.585, 0.88, 0.63), say=("label right paddle",)),
         Step("the right paddle's pivot", pin((0.8625, 0.6075))),
         Step("the frying pan", Stroke(((0.66, 0.78), (0.69, 0.92), (0.92, 0.92), (0.95, 0.78))), say=("label pan",)),
         *_x_steps("frying pan", (0.805, 0.92)),
@@ -254,14 +272,26 @@ def egg_cracker() -> Scenario:
     expect = Expected(
         bodies=(BodyX("ramp", "polyline"), BodyX("ball", "circle", "ball"), BodyX("lever", "box", "lever"),
                 BodyX("pulley", "circle", "pulley"), BodyX("knife", "box", "knife"), BodyX("egg", "ellipse", "egg"),
-                BodyX("left paddle", "box"), BodyX("right paddle", "box"), BodyX("pan", "polyline", "pan")),
+                BodyX("left paddle", "box", "left paddle"), BodyX("right paddle", "box", "right paddle"),
+                BodyX("pan", "polyline", "pan")),
         joints=(JointX("weld", "ramp", BACKGROUND), JointX("pivot", "lever", BACKGROUND),
                 JointX("pivot", "pulley", BACKGROUND), JointX("pivot", "left paddle", BACKGROUND),
                 JointX("pivot", "right paddle", BACKGROUND), JointX("weld", "pan", BACKGROUND)),
-        ropes=(RopeX("lever", "knife"),),
+        ropes=(RopeX("lever", "knife", "rope"),),
         fixed=("ramp", "pan"),
     )
-    return Scenario("egg_cracker", "thesis 2.1-2.2.1, figures 2-1, 2-4, 2-5", steps, expect, seed=2401)
+    demo = (  # figure 3-4: the ball tips the lever, the knife drops onto the egg, the egg falls through the paddles
+        Step("drag the ball over the ramp down onto the lever's left end",
+             Stroke(((0.08, 0.09), (0.2, 0.08), (0.37, 0.10), (0.375, 0.30), (0.38, 0.47))),
+             say=("the ball hits the lever",)),
+        Step("push the knife down onto the egg and lift it again",
+             Stroke(((0.79, 0.385), (0.79, 0.432), (0.79, 0.36)))),
+        Step("push the egg down through the paddles into the pan",
+             Stroke(((0.79, 0.56), (0.79, 0.70), (0.80, 0.875), (0.805, 0.87), (0.80, 0.875), (0.805, 0.87),
+                     (0.80, 0.875))), say=("the egg lands in the pan",)),
+    )
+    return Scenario("egg_cracker", "thesis 2.1-2.3.4, figures 2-1, 2-4, 2-5, 3-4", steps, expect, seed=2401,
+                    demo=demo)
 
 
 def golf_ball_helper() -> Scenario:
@@ -284,15 +314,15 @@ def golf_ball_helper() -> Scenario:
         *_x_steps("middle block", (0.48, 0.72)),
         Step("the arm, standing on the block", Stroke.box(0.4625, 0.25, 0.4975, 0.68), say=("label arm",)),
         Step("the arm's pivot, on the block", pin((0.48, 0.66))),
-        Step("the shelf the ball waits on", Stroke.box(0.51, 0.34, 0.63, 0.38)),
-        *_x_steps("shelf", (0.57, 0.36)),
+        Step("the shelf the ball waits on", Stroke.box(0.53, 0.34, 0.65, 0.38), say=("label shelf",)),
+        *_x_steps("shelf", (0.59, 0.36)),
         Step("the golf ball", ball((0.55, 0.30), 0.035), say=("label golf ball",)),
         Step("the tee", Stroke.box(0.72, 0.46, 0.78, 0.62), say=("label tee",)),
         *_x_steps("tee", (0.75, 0.56)),
     )
     expect = Expected(
         bodies=(BodyX("wall", "box", "wall"), BodyX("peg", "box", "peg"), BodyX("block", "box"),
-                BodyX("arm", "box", "arm"), BodyX("shelf", "box"), BodyX("golf ball", "circle", "golf ball"),
+                BodyX("arm", "box", "arm"), BodyX("shelf", "box", "shelf"), BodyX("golf ball", "circle", "golf ball"),
                 BodyX("tee", "box", "tee")),
         joints=(JointX("weld", "wall", BACKGROUND), JointX("weld", "block", BACKGROUND),
                 JointX("pivot", "arm", "block"),  # "a rotational joint attaches the arm to the middle anchoring body"
@@ -300,7 +330,13 @@ def golf_ball_helper() -> Scenario:
         springs=(SpringX("horizontal", "wall", "peg", "spring", span(spring, "horizontal")),),
         fixed=("wall", "block", "shelf", "tee"),
     )
-    return Scenario("golf_ball_helper", "thesis 4.2, figure 4-4", steps, expect, seed=2402)
+    demo = (  # figure 4-5
+        Step("the peg, sprung, into the arm, which pushes the golf ball along the shelf",
+             Stroke(((0.34, 0.57), (0.445, 0.57), (0.40, 0.57)))),
+        Step("the golf ball on from the shelf onto the tee", Stroke(((0.634, 0.305), (0.75, 0.37), (0.75, 0.43))),
+             say=("the golf ball lands on the tee",)),
+    )
+    return Scenario("golf_ball_helper", "thesis 4.2, figures 4-4, 4-5", steps, expect, seed=2402, demo=demo)
 
 
 def cup_dispenser() -> Scenario:
@@ -312,27 +348,29 @@ def cup_dispenser() -> Scenario:
     peg is spring-bound too ("the peg-spring's natural length", 4.3). Drawn here: the ramp (welded), the ball,
     the dispenser's base (welded), the platform on a vertical spring from the base, the cup (a box) sitting
     on the platform, and the peg on a horizontal spring from a welded block on the left, its end near the
-    platform's left side (figure 4-7 then drags it flush, which is not part of this drawing).
+    platform's left side. Figure 4-7 adjusts the cup and the peg flush against the platform after drawing; here
+both are drawn a little into it and the physics pushes them flush, so they begin in contact (end-contacts need
+that).
     """
     platform_spring = Stroke.coil((0.58, 0.80), (0.58, 0.535), loops=5, radius=0.015)
     peg_spring = Stroke.coil((0.26, 0.54), (0.41, 0.54), loops=4, radius=0.018)
     steps = (
-        Step("the ramp", Stroke.line((0.10, 0.15), (0.40, 0.32))),
+        Step("the ramp", Stroke.line((0.10, 0.15), (0.40, 0.32)), say=("label ramp",)),
         *_x_steps("ramp", (0.25, 0.235)),
         Step("the ball at the top of the ramp", ball((0.12, 0.07), 0.035), say=("label ball",)),
         Step("the dispenser's base", Stroke.box(0.45, 0.78, 0.70, 0.85), say=("label base",)),
         *_x_steps("base", (0.65, 0.815)),
         Step("the platform", Stroke.box(0.48, 0.52, 0.68, 0.56), say=("label platform",)),
         Step("the platform's spring, up from the base", platform_spring),
-        Step("the cup, sitting on the platform", Stroke.box(0.55, 0.435, 0.61, 0.515), say=("label cup",)),
+        Step("the cup, sitting on the platform", Stroke.box(0.55, 0.44, 0.61, 0.523), say=("label cup",)),
         Step("the block holding the peg's spring", Stroke.box(0.22, 0.48, 0.27, 0.60)),
         *_x_steps("peg's block", (0.245, 0.575)),
-        Step("the peg, its end near the platform's left side", Stroke.box(0.38, 0.525, 0.47, 0.555),
+        Step("the peg, its end against the platform's left side", Stroke.box(0.39, 0.525, 0.483, 0.555),
              say=("label peg",)),
         Step("the peg's spring, from the block to the peg", peg_spring),
     )
     expect = Expected(
-        bodies=(BodyX("ramp", "polyline"), BodyX("ball", "circle", "ball"), BodyX("base", "box", "base"),
+        bodies=(BodyX("ramp", "polyline", "ramp"), BodyX("ball", "circle", "ball"), BodyX("base", "box", "base"),
                 BodyX("platform", "box", "platform"), BodyX("cup", "box", "cup"), BodyX("block", "box"),
                 BodyX("peg", "box", "peg")),
         joints=(JointX("weld", "ramp", BACKGROUND), JointX("weld", "base", BACKGROUND),
@@ -340,17 +378,27 @@ def cup_dispenser() -> Scenario:
         springs=(SpringX("vertical", "base", "platform", length=span(platform_spring, "vertical")),
                  SpringX("horizontal", "block", "peg", length=span(peg_spring, "horizontal"))),
         fixed=("ramp", "base", "block"),
+        messages=("cup (b5) overlapped platform (b4)", "peg (b7) overlapped platform (b4)"),
     )
-    return Scenario("cup_dispenser", "thesis 4.3, figures 4-6, 4-7", steps, expect, seed=2403)
+    demo = (  # figure 4-8
+        Step("the ball down the ramp into the cup, weighing the cup and platform down",
+             Stroke(((0.12, 0.07), (0.14, 0.14), (0.38, 0.275), (0.46, 0.30), (0.58, 0.395), (0.58, 0.47)))),
+        Step("the peg, released, pushes the cup off the platform", Stroke(((0.43, 0.54), (0.62, 0.53)))),
+    )
+    return Scenario("cup_dispenser", "thesis 4.3, figures 4-6 to 4-8", steps, expect, seed=2403, demo=demo)
 
 
 def pinball() -> Scenario:
-    """The pinball machine (thesis 2.3.5 and 3.3, figures 2-10, 3-10).
+    """The pinball machine (thesis 2.3.5 and 3.3, figures 2-10, 2-11, 3-10 to 3-18).
 
     "A ball hits a series of rotating paddles" A, B and C; "the ball hits paddle B on the right side of
     its pivot" (figure 2-11), so each paddle turns on a pin at its middle. Drawn here: the two side walls
-    (welded), the three paddles stepping down from left to right, each with its pivot, and the ball above
-    paddle A.
+    (welded), the three paddles stepping down from left to right, each with its pivot, the ball above
+    paddle A, and a second ball right of paddle C that "falls straight down, unrelated to the original set of
+    events" (figure 3-14). Demonstrated: the ball hits A, B and C (figure 3-10); the user rewinds and drops the
+    second ball while the first plays back (concurrent movement); then rewinds to just after the ball hit A and
+    moves it onto the right side of B's pivot, bouncing away to the right without touching C (the assisted
+    edit of figures 3-15 to 3-18).
     """
     steps = (
         Step("the left wall", Stroke.line((0.08, 0.05), (0.08, 0.95))),
@@ -364,15 +412,32 @@ def pinball() -> Scenario:
         Step("paddle C", Stroke.box(0.62, 0.72, 0.84, 0.765), say=("label paddle c",)),
         Step("paddle C's pivot", pin((0.73, 0.7425))),
         Step("the ball, above paddle A", ball((0.22, 0.12), 0.03), say=("label ball",)),
+        Step("the second ball, right of paddle C", ball((0.88, 0.10), 0.025), say=("label ball two",)),
     )
     expect = Expected(
         bodies=(BodyX("left wall", "polyline"), BodyX("right wall", "polyline"), BodyX("a", "box", "paddle a"),
-                BodyX("b", "box", "paddle b"), BodyX("c", "box", "paddle c"), BodyX("ball", "circle", "ball")),
+                BodyX("b", "box", "paddle b"), BodyX("c", "box", "paddle c"), BodyX("ball", "circle", "ball"),
+                BodyX("ball two", "circle", "ball two")),
         joints=(JointX("weld", "left wall", BACKGROUND), JointX("weld", "right wall", BACKGROUND),
                 JointX("pivot", "a", BACKGROUND), JointX("pivot", "b", BACKGROUND), JointX("pivot", "c", BACKGROUND)),
         fixed=("left wall", "right wall"),
     )
-    return Scenario("pinball", "thesis 2.3.5, 3.3, figures 2-10, 2-11, 3-10", steps, expect, seed=2404)
+    demo = (
+        Step("the ball onto A right of its pivot, round onto B left of its pivot, under B onto C's left end",
+             Stroke(((0.22, 0.12), (0.36, 0.24), (0.36, 0.285), (0.45, 0.40), (0.47, 0.487), (0.40, 0.60),
+                     (0.66, 0.697), (0.55, 0.93))),
+             commands=(("seek", (0.0,)),)),
+        Step("the second ball straight down past paddle C", Stroke(((0.88, 0.10), (0.88, 0.95))),
+             commands=(("seek", (PINBALL_EDIT_T,)),)),
+        Step("the ball again from just after A: onto B right of its pivot and away to the right",
+             Stroke(((0.36, 0.27), (0.45, 0.40), (0.59, 0.487), (0.80, 0.40), (0.86, 0.30)))),
+    )
+    return Scenario("pinball", "thesis 2.3.5, 3.3, figures 2-10, 2-11, 3-10 to 3-18", steps, expect, seed=2404,
+                    demo=demo)
+
+
+PINBALL_EDIT_T = 0.65
+"""Timeline time just after the ball hits paddle A in the first demonstration (where the user rewinds to)."""
 
 
 def basketball() -> Scenario:
@@ -405,7 +470,13 @@ def basketball() -> Scenario:
                 JointX("weld", "right backboard", BACKGROUND), JointX("weld", "basket two", BACKGROUND)),
         fixed=("left backboard", "basket one", "right backboard", "basket two"),
     )
-    return Scenario("basketball", "thesis 4.1, figures 4-1 to 4-3", steps, expect, seed=2405)
+    demo = (  # figure 4-1: ball one's whole path first, then ball two's while ball one plays back
+        Step("ball one up to the middle, then left and down into basket one (its whole path)",
+             Stroke(((0.30, 0.80), (0.49, 0.30), (0.16, 0.22), (0.16, 0.36))), commands=(("seek", (0.0,)),)),
+        Step("ball two up to meet ball one in the middle, then right and down into basket two",
+             Stroke(((0.70, 0.80), (0.51, 0.30), (0.84, 0.22), (0.84, 0.36)))),
+    )
+    return Scenario("basketball", "thesis 4.1, figures 4-1 to 4-3", steps, expect, seed=2405, demo=demo)
 
 
 SCENARIOS = (egg_cracker, golf_ball_helper, cup_dispenser, pinball, basketball)
