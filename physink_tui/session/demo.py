@@ -25,7 +25,8 @@ if TYPE_CHECKING:
 DEMO_DAMPING = 0.1
 """Share of its velocity a free body keeps after one second in demo mode."""
 MAX_DEMO_STEPS = 240
-"""At most this many demo steps per input (2 s): a long pause in the input does not run the world for ever."""
+"""At most this many demo steps per input (2 s) outside playback: a long pause in the input does not run the world
+for ever."""
 
 
 @dataclass
@@ -167,7 +168,9 @@ def advance_demo(session: Session, t: float) -> None:
     demo = session._demo
     world = demo.world
     dt = world.dt
-    steps = min(int((t - demo.t) / dt + 1e-9), MAX_DEMO_STEPS)
+    steps = int((t - demo.t) / dt + 1e-9)
+    if not demo.playing:  # playback ends with the recording; a demonstration left running is cut short
+        steps = min(steps, MAX_DEMO_STEPS)
     bodies = [b.id for b in session.scene.bodies()]
     for _ in range(max(steps, 0)):
         if demo.grabbed is None and not demo.recorder.moving and not demo.playing:
@@ -205,7 +208,8 @@ def _follow_tape(demo: Demo, clock: float, dt: float) -> frozenset[str]:
         if tape.covers(body, clock):
             demo.world.follow(body, tape.pose(body, clock - dt), tape.velocity(body, clock - dt, dt))
             now.add(body)
-        elif body in demo.following:
+        elif body in demo.following:  # its recording ends here: it stays where it was left
             demo.world.let_go(body)
+            demo.world.place(body, tape.pose(body, clock))
     demo.following = now
     return frozenset(now)
