@@ -268,8 +268,10 @@ def test_json_has_the_design_keys_and_is_deterministic() -> None:
     e3, e5, e12 = (doc["events"][i] for i in (2, 4, 11))
     assert e3["components"] == [{"id": "b1", "label": "ball"}, {"id": "b2", "label": "rotating platform"}]
     assert e3["causes"] == ["e2"] and e3["label"] == "Contact between ball and rotating platform"
-    assert e12["sides"] == [{"component": "b4", "side": "bottom"}, {"component": "b6", "side": "inside"}]
-    assert doc["events"][1]["regions"] == [{"component": "b2", "regions": ["above", "left"]}]
+    assert e12["sides"] == [{"component": "b4", "label": NAMES.get("b4"), "side": "bottom"},
+                            {"component": "b6", "label": NAMES.get("b6"), "side": "inside"}]
+    assert doc["events"][1]["regions"] == [{"component": "b2", "label": "rotating platform",
+                                            "regions": ["above", "left"]}]
     assert e5["trajectory"][1] == [1.333333, 1.1, 2.333333, 0.0, 0.3, 1.0]
     assert e5["sides"] == [] and e3["trajectory"] == [] and e3["point"] == [1.5, 2.5]
 
@@ -284,6 +286,13 @@ def test_json_round_trips() -> None:
     assert back.event("e12").sides == tl.event("e12").sides
     assert back.event("e2").regions == tl.event("e2").regions
     assert timeline_json(back, names) == text
+
+
+def test_json_keeps_the_label_of_a_body_only_passed_by() -> None:
+    passed = Event("e2", "movement", ("b1",), ("e1",), 0.0, 1.0, regions=(("b9", ("below",)),))
+    tl = Timeline((Event("e1", "start"), passed))
+    _, names = parse_timeline_json(timeline_json(tl, {"b1": "ball", "b9": "platform b"}))
+    assert names == {"b1": "ball", "b9": "platform b"}
 
 
 @pytest.mark.parametrize(

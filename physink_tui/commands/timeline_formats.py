@@ -35,8 +35,8 @@ def _event_obj(ev: Event, names: Mapping[str, str]) -> dict[str, Any]:
         "t1": _r(ev.t1),
         "label": event_label(ev, names),
         "user_label": ev.label,
-        "sides": [{"component": c, "side": s} for c, s in ev.sides],
-        "regions": [{"component": c, "regions": list(rs)} for c, rs in ev.regions],
+        "sides": [{"component": c, "label": names.get(c), "side": s} for c, s in ev.sides],
+        "regions": [{"component": c, "label": names.get(c), "regions": list(rs)} for c, rs in ev.regions],
         "point": None if ev.point is None else [_r(ev.point[0]), _r(ev.point[1])],
         "trajectory": _frames(ev.trajectory),
         "tracks": [{"component": c, "trajectory": _frames(frames)} for c, frames in ev.tracks],
@@ -102,6 +102,9 @@ def parse_timeline_json(text: str) -> tuple[Timeline, dict[str, str]]:
             components.append(cid)
             if isinstance(comp.get("label"), str):
                 names[cid] = comp["label"]
+        for part in (*obj.get("sides", []), *obj.get("regions", [])):  # bodies passed by but never touched
+            if isinstance(part, dict) and isinstance(part.get("component"), str) and isinstance(part.get("label"), str):
+                names[part["component"]] = part["label"]
         point = obj.get("point")
         try:
             events.append(Event(

@@ -1,4 +1,5 @@
-"""Records the thesis scenarios with the virtual pen into ``tests/journals/<name>.physink.jsonl``.
+"""Records the thesis scenarios (``thesis.py``) and the demonstrations on the ball-and-platforms machine
+(``bouncing.py``) with the virtual pen into ``tests/journals/<name>.physink.jsonl``.
 
 Run ``python tests/scenarios/make_journals.py`` after changing a drawing, the virtual pen or the journal
 format; the tests check that the stored journals are exactly what this makes. A journal is never
@@ -14,9 +15,11 @@ from pathlib import Path
 from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
 
 try:
+    from scenarios.bouncing import all_scenarios as bouncing_scenarios
     from scenarios.thesis import MAPPING, Scenario, all_scenarios
 except ModuleNotFoundError:  # run as a script: the tests folder is not on the path
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+    from scenarios.bouncing import all_scenarios as bouncing_scenarios
     from scenarios.thesis import MAPPING, Scenario, all_scenarios
 
 JOURNALS = Path(__file__).resolve().parents[1] / "journals"
@@ -37,7 +40,7 @@ def write_scenario_journal(scenario: Scenario, path: str | os.PathLike[str]) -> 
 
 def main() -> int:
     JOURNALS.mkdir(parents=True, exist_ok=True)
-    for scenario in all_scenarios():
+    for scenario in (*all_scenarios(), *bouncing_scenarios()):
         path = journal_path(scenario)
         path.unlink(missing_ok=True)
         write_scenario_journal(scenario, path)

@@ -1,0 +1,51 @@
+"""Reads the timeline a command is pointed at: a timeline JSON file or a project holding one, with its labels;
+the formats themselves are `timeline_formats`' and the project codec's."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from physink_tui.commands.timeline_formats import parse_timeline_json
+from physink_tui.errors import PhysinkError
+from physink_tui.project.codec import FORMAT as PROJECT_FORMAT
+from physink_tui.project.files import load_project
+from physink_tui.timeline.events import Timeline, TimelineError
+
+
+def _is_project(text: str) -> bool:
+    try:
+        doc = json.loads(text)
+    except ValueError:
+        return False  # parse_timeline_json says what is wrong with it
+    return isinstance(doc, dict) and doc.get("format") == PROJECT_FORMAT
+
+
+def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
+    """The timeline in a timeline JSON or project file, with its component labels (id -> label).
+
+    Raises:
+        PhysinkError: one line naming the file: it cannot be read, is not UTF-8, is no valid project or timeline,
+            or is a project without a timeline.
+    """
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except OSError as e:
+        raise TimelineError(f"cannot read {path}: {e.strerror or e}") from None
+    except UnicodeDecodeError as e:
+        raise TimelineError(f"{path}: not UTF-8 text (byte {e.start})") from None
+    if not _is_project(text):
+        try:
+            return parse_timeline_json(text)
+        except TimelineError as e:
+            raise TimelineError(f"{path}: {e}", e.event_id) from None
+    project = load_project(path)  # SceneError names the file and the bad field
+    if project.timeline is None:
+        raise PhysinkError(f"{path}: the project holds no timeline (demonstrate the machine in demo mode first)")
+    try:
+        timeline, labels = parse_timeline_json(json.dumps(project.timeline))
+    except TimelineError as e:
+        raise TimelineError(f"{path}: timeline: {e}", e.event_id) from None
+    # the scene's labels win over those written in the timeline
+    names = {c.id: c.label for c in project.scene.components.values() if getattr(c, "label", None)}
+    return timeline, {**labels, **names}
