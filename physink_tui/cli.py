@@ -120,6 +120,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="DIR", required=True, help="output folder")
     p.add_argument("--video", action="store_true", help="also write DIR/video.mp4")
     p.add_argument("--frames", action="store_true", help="also write DIR/frames/NNNNN.png")
+    p.add_argument("--vocabulary", metavar="FILE",
+                   help="extra verbs and prepositions for phrases, lines 'verb WORD...' or 'prep WORD...'")
 
     p = sub.add_parser("recognize", help="recognise strokes: one JSON line per input line")
     p.add_argument("strokes", metavar="STROKES.jsonl", help="one stroke per line")

@@ -3,9 +3,13 @@ phrases that label events, and no tunnelling when a body is dragged at absurd sp
 
 from __future__ import annotations
 
-import pytest
-from test_session import pen_header, pen_stroke
+from dataclasses import replace
 
+import pytest
+from test_session import circle_points, pen_header, pen_stroke
+
+from physink_tui.cli import main
+from physink_tui.journal.compose import write_journal
 from physink_tui.journal.entries import CommandEntry, PenEntry, SayEntry
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Scene
 from physink_tui.session.history import History
@@ -126,3 +130,35 @@ def test_demonstrating_again_continues_the_timeline() -> None:
     assert timeline.events[: len(first)] == first.events  # the ball's movement is kept
     block = [e for e in timeline.events if e.components[:1] == ("b3",)]
     assert block and block[0].causes == (timeline.events[0].id,)  # the same start event drives it
+
+
+def vocabulary_journal(tmp_path, vocabulary: str = "", name: str = "plain") -> str:
+    """The ball demonstrated, then "the ball careens" said: a verb the default vocabulary lacks."""
+    entries = [*pen_stroke(0.0, circle_points(0.2, 0.5, 0.05)), SayEntry(0.6, "label ball"),
+               CommandEntry(1.0, "mode", ("demo",))]
+    entries += pen_stroke(1.5, [(0.2 + 0.002 * k, 0.5) for k in range(60)])
+    entries += [SayEntry(3.0, "the ball careens"), CommandEntry(4.0, "mode", ("sketch",))]
+    path = tmp_path / f"{name}.physink.jsonl"
+    write_journal(path, replace(pen_header(), vocabulary=vocabulary), entries)
+    return str(path)
+
+
+def test_the_vocabulary_is_extended_by_a_file_kept_in_the_journal_header(tmp_path, capsys) -> None:
+    assert main(["replay", vocabulary_journal(tmp_path), "--out", str(tmp_path / "plain")]) == 0
+    told = capsys.readouterr().out
+    assert "careens" in told and "verb" in told  # told why the phrase was not understood
+    assert "careens" not in (tmp_path / "plain" / "timeline.txt").read_text()
+    assert main(["replay", vocabulary_journal(tmp_path, "# words of my machine\nverb careens\n", "header"),
+                 "--out", str(tmp_path / "header")]) == 0
+    assert "the ball careens" in (tmp_path / "header" / "timeline.txt").read_text()
+    words = tmp_path / "words.txt"
+    words.write_text("verb careens\n")
+    assert main(["replay", vocabulary_journal(tmp_path, name="flag"), "--out", str(tmp_path / "flag"),
+                 "--vocabulary", str(words)]) == 0
+    assert "the ball careens" in (tmp_path / "flag" / "timeline.txt").read_text()
+    words.write_text("verb careens\nnoun skillet\n")
+    capsys.readouterr()
+    assert main(["replay", vocabulary_journal(tmp_path, name="bad"), "--out", str(tmp_path / "bad"),
+                 "--vocabulary", str(words)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{words}:2:" in err[0] and "noun skillet" in err[0]

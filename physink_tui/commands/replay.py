@@ -31,6 +31,7 @@ from physink_tui.project.codec import Project
 from physink_tui.project.files import save_project
 from physink_tui.session.session import Session
 from physink_tui.timeline.narrate import timeline_text
+from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary
 
 PLURAL = {"body": "bodies"}
 
@@ -85,6 +86,7 @@ def replay_journal(path: Path) -> tuple[list[Gesture], list[str], list[str]]:
 
 def run(args: argparse.Namespace) -> int:
     path = Path(args.file)
+    vocabulary = read_vocabulary(args.vocabulary)  # a bad file stops the replay before anything is written
     if args.video or args.frames:
         print("physink replay: --video and --frames need the renderer (a later issue); not written",
               file=sys.stderr)
@@ -108,14 +110,30 @@ def run(args: argparse.Namespace) -> int:
     for note in notes:
         print(f"  {note}", file=sys.stderr)
     if is_journal(path):
-        write_session_outputs(path, out)
+        write_session_outputs(path, out, vocabulary)
     return 0
 
 
-def write_session_outputs(path: Path, out: Path) -> None:
-    """Run the journal through the session and write DIR/project.json (the sketch as it ends)."""
+def read_vocabulary(path: str | None) -> Vocabulary | None:
+    """The words of a vocabulary file (``--vocabulary``), or None without one."""
+    if path is None:
+        return None
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        reason = getattr(exc, "strerror", None) or exc
+        raise PhysinkError(f"{path}: cannot read the vocabulary file: {reason}") from None
+    return parse_vocabulary(text, path)
+
+
+def write_session_outputs(path: Path, out: Path, vocabulary: Vocabulary | None = None) -> None:
+    """Run the journal through the session and write DIR/project.json (the sketch as it ends) and, after a
+    demonstration, the timeline; ``vocabulary`` adds words for phrases to those the journal's header gives."""
     journal = read_journal(path)
-    session = Session.from_header(journal.header).run(journal.entries)
+    session = Session.from_header(journal.header)
+    if vocabulary is not None:
+        session.vocabulary = session.vocabulary.extended(vocabulary)
+    session.run(journal.entries)
     names = {c.id: c.label for c in session.scene.components.values() if getattr(c, "label", None)}
     timeline = None
     if session.timeline is not None:

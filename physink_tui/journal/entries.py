@@ -59,6 +59,8 @@ class JournalHeader:
         tip_down: tip contact begins when normalised pressure rises above this (0..1).
         tip_up: tip contact ends when normalised pressure falls below this (0 <= tip_up < tip_down).
         program: the program and version that wrote the journal, e.g. ``"physink-tui 0.1.0"``.
+        vocabulary: the text of the user's vocabulary file (extra verbs and prepositions for phrases, see
+            `physink_tui.timeline.phrases.parse_vocabulary`), or "" for none; written only when given.
     """
 
     canvas_width: float
@@ -68,6 +70,7 @@ class JournalHeader:
     tip_down: float
     tip_up: float
     program: str = PROGRAM
+    vocabulary: str = ""
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "devices", tuple(self.devices))

@@ -15,7 +15,7 @@ from physink_tui.journal.checks import bad, get, show
 from physink_tui.journal.codec import compact_json, json_string, parse_object
 from physink_tui.journal.entries import FORMAT, FORMAT_VERSION, JournalDevice, JournalHeader
 
-HEADER_KEYS = ("format", "version", "program", "canvas", "devices", "mapping", "tip_thresholds")
+HEADER_KEYS = ("format", "version", "program", "canvas", "devices", "mapping", "tip_thresholds", "vocabulary")
 """The header's keys, in the order written."""
 
 DEVICE_KEYS = ("name", "bus", "vid", "pid", "descriptor")
@@ -69,6 +69,8 @@ def encode_header(header: JournalHeader) -> str:
         f'"mapping":{compact_json(header.mapping, sort_keys=True)}',
         f'"tip_thresholds":{{"down":{down!r},"up":{up!r}}}',
     ]
+    if header.vocabulary:
+        parts.append(f'"vocabulary":{json_string(checks.text(where, "vocabulary", header.vocabulary))}')
     return "{" + ",".join(parts) + "}"
 
 
@@ -116,9 +118,10 @@ def decode_header(text: str, lineno: int = 1, warnings: list[str] | None = None)
         get(tips, where, "down", "tip_thresholds.down", "a number in (0, 1]"),
         get(tips, where, "up", "tip_thresholds.up", "a number in [0, 1)"),
     )
+    vocabulary = checks.text(where, "vocabulary", obj.get("vocabulary", ""))
     if warnings is not None:
         warnings.extend(checks.unknown_key(where, key) for key in obj if key not in HEADER_KEYS)
-    return JournalHeader(width, height, devices, mapping, down, up, program)
+    return JournalHeader(width, height, devices, mapping, down, up, program, vocabulary)
 
 
 def _sub_object(

@@ -32,7 +32,14 @@ from physink_tui.session import adjust, demo
 from physink_tui.session.adjust import SETTLE_STEPS
 from physink_tui.session.history import History
 from physink_tui.timeline.events import Timeline
-from physink_tui.timeline.phrases import DEFAULT_VOCABULARY, PhraseError, Vocabulary, label_event, parse_phrase
+from physink_tui.timeline.phrases import (
+    DEFAULT_VOCABULARY,
+    PhraseError,
+    Vocabulary,
+    label_event,
+    parse_phrase,
+    parse_vocabulary,
+)
 
 X_CANDIDATE = 0.08
 """A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
@@ -92,7 +99,16 @@ class Session:
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
-        return cls((header.canvas_width, header.canvas_height), pen_input_for(header))
+        """A session for the journal with this header (its canvas, input mapping and vocabulary).
+
+        Raises:
+            PhraseError: the header's vocabulary has a bad line (named).
+        """
+        session = cls((header.canvas_width, header.canvas_height), pen_input_for(header))
+        if header.vocabulary:
+            words = parse_vocabulary(header.vocabulary, "journal header vocabulary")
+            session.vocabulary = DEFAULT_VOCABULARY.extended(words)
+        return session
 
     @property
     def scene(self) -> Scene:
