@@ -24,11 +24,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
-from physink_tui.timeline.events import REGIONS, Event, Timeline, TrajectoryPoint
-from physink_tui.timeline.graph import descendants
-from physink_tui.timeline.qualitative import BodyOutline, Box, bounds, contact_sides, placed, regions_at, separated
+from physink_tui.timeline.edits import covering, cut_from, split_at
+from physink_tui.timeline.events import Event, Timeline
+from physink_tui.timeline.movement_record import Bounds, OpenMovement, Pose
+from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
 
 MOVING_SPEED = 5.0
 """Canvas units per second above which a body counts as moving (its centre, or its rim when it spins)."""
@@ -41,7 +42,6 @@ SEPARATION_GAP = 4.0
 RECENT_SEPARATION = 1.0
 """Seconds after two bodies stop touching during which a body starting to move by itself was released by it."""
 
-Pose = tuple[float, float, float, float, float, float]  # x, y, angle, vx, vy, angular velocity
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,19 +76,6 @@ class Observation:
 
 
 @dataclass
-class _Open:
-    event_id: str
-    bodies: tuple[str, ...]  # the moving body first, then the bodies tied to it
-    frames: dict[str, list[TrajectoryPoint]]
-    crossed: dict[str, set[str]]
-    still: int = 0
-
-
-def _speed(pose: Pose, radius: float) -> float:
-    return max(math.hypot(pose[3], pose[4]), abs(pose[5]) * radius)
-
-
-@dataclass
 class Recorder:
     """Builds a `Timeline` from observations (see the module docstring); `snapshot` gives the events so far.
 
@@ -111,7 +98,7 @@ class Recorder:
     dt: float = 1 / 120
     timeline: Timeline = field(default_factory=Timeline)
     _next: int = 1
-    _open: dict[str, _Open] = field(default_factory=dict)
+    _open: dict[str, OpenMovement] = field(default_factory=dict)
     _latest: dict[str, str] = field(default_factory=dict)
     _last_contact: dict[frozenset[str], float] = field(default_factory=dict)
     _ended_pairs: set[frozenset[str]] = field(default_factory=set)
@@ -121,7 +108,7 @@ class Recorder:
     _grabbed: str | None = None
     _group: dict[str, str] = field(default_factory=dict)
     _radius: dict[str, float] = field(default_factory=dict)
-    _boxes: dict[str, tuple[tuple[float, float, float], Box]] = field(default_factory=dict)
+    _bounds: Bounds | None = None
 
     def __post_init__(self) -> None:
         for body in sorted(self.movable):
@@ -130,6 +117,7 @@ class Recorder:
                     self._group[member] = body
         for body, outline in self.outlines.items():
             self._radius[body] = max((math.hypot(x, y) for x, y in outline.hull), default=0.0)
+        self._bounds = Bounds(self.outlines)
         self._adopt(self.timeline)
 
     # -- the outside -----------------------------------------------------------------------------------------
@@ -203,22 +191,7 @@ class Recorder:
         body continues the cut movement.
         """
         self.pause()
-        members = set(self.group_bodies(body))
-        current = self._covering(members, t)
-        gone: set[str] = set()
-        if current is not None:
-            gone |= descendants(self.timeline, current.id)
-        for ev in self.timeline.events:
-            if ev.t0 > t and members & set(ev.components) and ev.type != "start":
-                gone |= {ev.id} | descendants(self.timeline, ev.id)
-        if current is not None:
-            gone.discard(current.id)
-        timeline = self.timeline.remove(gone)
-        if current is not None:
-            kept = tuple(p for p in current.trajectory if p.t <= t) or current.trajectory[:1]
-            tracks = tuple((c, tuple(p for p in frames if p.t <= t) or frames[:1]) for c, frames in current.tracks)
-            timeline = timeline.update(replace(current, trajectory=kept, tracks=tracks,
-                                               t1=max(current.t0, kept[-1].t)))
+        timeline, _ = cut_from(self.timeline, self.group_bodies(body), t)
         self.timeline = Timeline()
         self._latest.clear()
         self._last_contact.clear()
@@ -382,17 +355,12 @@ class Recorder:
         mid = self._new_id()
         self.timeline = self.timeline.add(Event(mid, "movement", chain, causes, t, t))
         key = self._group[body]
-        self._open[key] = _Open(mid, bodies, {b: [] for b in bodies}, {})
+        self._open[key] = OpenMovement(mid, bodies, {b: [] for b in bodies})
         self._latest[key] = mid
 
     def _reopen(self, key: str, event_id: str) -> None:
         ev = self.timeline.event(event_id)
-        bodies = tuple(c for c in ev.components if c in self.outlines)
-        frames = {b: [] for b in bodies}
-        frames[bodies[0]] = list(ev.trajectory)
-        for c, track in ev.tracks:
-            frames[c] = list(track)
-        self._open[key] = _Open(event_id, bodies, frames, {c: set(rs) for c, rs in ev.regions})
+        self._open[key] = OpenMovement.resumed(ev, tuple(c for c in ev.components if c in self.outlines))
 
     def _close(self, key: str) -> None:
         current = self._open.pop(key, None)
@@ -407,76 +375,27 @@ class Recorder:
 
     def _record_frame(self, obs: Observation, key: str) -> None:
         current = self._open[key]
-        moving = obs.grabbed in current.bodies
-        for body in current.bodies:
-            pose = obs.poses.get(body)
-            if pose is None:
-                continue
-            current.frames[body].append(TrajectoryPoint(obs.t, *pose[:5]))
-            moving = moving or _speed(pose, self._radius[body]) > MOVING_SPEED
-        mover = obs.poses.get(current.bodies[0])
-        if mover is not None:
-            for other in sorted(obs.poses):
-                if other in current.bodies or other not in self.outlines:
-                    continue
-                found = regions_at((mover[0], mover[1]), self._box(other, obs.poses[other]), self.reach)
-                if found:
-                    current.crossed.setdefault(other, set()).update(found)
-        current.still = 0 if moving else current.still + 1
+        current.record(obs.t, obs.poses, obs.grabbed in current.bodies, self._radius.__getitem__,
+                       self.outlines.__contains__, self._bounds.of, self.reach, MOVING_SPEED)
         if current.still >= STILL_FRAMES:
             self._close(key)
 
-    def _box(self, body: str, pose: Pose) -> Box:
-        at = (pose[0], pose[1], pose[2])
-        cached = self._boxes.get(body)
-        if cached is None or cached[0] != at:
-            cached = (at, bounds(placed(self.outlines[body], pose)))
-            self._boxes[body] = cached
-        return cached[1]
-
-    def _write(self, current: _Open) -> None:
+    def _write(self, current: OpenMovement) -> None:
         event = self.timeline.event(current.event_id)
-        mover = tuple(current.frames[current.bodies[0]])
-        tracks = tuple((b, tuple(current.frames[b])) for b in current.bodies[1:] if current.frames[b])
-        regions = tuple((other, tuple(r for r in REGIONS if r in found))
-                        for other, found in sorted(current.crossed.items()))
-        t1 = max(event.t0, mover[-1].t) if mover else event.t1
-        if (event.trajectory, event.tracks, event.regions, event.t1) != (mover, tracks, regions, t1):
-            self.timeline = self.timeline.update(replace(event, t1=t1, trajectory=mover, tracks=tracks,
-                                                         regions=regions))
+        updated = current.written(event)
+        if updated is not event:
+            self.timeline = self.timeline.update(updated)
 
     def _covering(self, members: set[str], t: float) -> Event | None:
-        """The latest movement of any of ``members`` begun at or before ``t``."""
-        best: Event | None = None
-        for ev in self.timeline.events:
-            if ev.type == "movement" and ev.t0 <= t and members & set(ev.components):
-                if best is None or ev.t0 >= best.t0:
-                    best = ev
-        return best
+        return covering(self.timeline, members, t)
 
     def _split(self, body: str, t: float, cause: str) -> None:
-        """A contact interrupts the recorded movement ``body`` plays back: the part after ``t`` becomes a new
-        movement caused by the contact, and what the old one caused from then on is caused by the new one."""
+        """A contact interrupts the recorded movement ``body`` plays back (see `edits.split_at`)."""
         current = self._covering({body}, t)
         if current is None or current.t1 <= t:
             return
         new_id = self._new_id()
-        before = tuple(p for p in current.trajectory if p.t <= t) or current.trajectory[:1]
-        after = tuple(p for p in current.trajectory if p.t > t)
-        tracks_before = tuple((c, tuple(p for p in f if p.t <= t)) for c, f in current.tracks)
-        tracks_after = tuple((c, tuple(p for p in f if p.t > t)) for c, f in current.tracks)
-        head = replace(current, t1=max(current.t0, before[-1].t), trajectory=before, tracks=tracks_before)
-        tail = Event(new_id, "movement", current.components, (cause,), t, max(t, current.t1), label=None,
-                     regions=current.regions, trajectory=after, tracks=tracks_after)
-        events = []
-        for ev in self.timeline.events:
-            if ev.id == current.id:
-                events.append(head)
-            elif current.id in ev.causes and ev.t0 >= t and ev.id != cause:
-                events.append(replace(ev, causes=tuple(new_id if c == current.id else c for c in ev.causes)))
-            else:
-                events.append(ev)
-        self.timeline = Timeline((*events, tail))
+        self.timeline = split_at(self.timeline, current, t, cause, new_id)
         key = self._group.get(body)
         if key is not None and self._latest.get(key) == current.id:
             self._latest[key] = new_id
