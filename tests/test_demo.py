@@ -6,7 +6,7 @@ import itertools
 import json
 
 from physink_tui.cli import main
-from physink_tui.demo_data import EGG_CRACKER, demo_capture_text, expected_demo_capture_text
+from physink_tui.demo_data import DEMONSTRATION, EGG_CRACKER, demo_capture_text, expected_demo_capture_text
 from physink_tui.render.braille import braille_plot
 
 
@@ -19,17 +19,22 @@ def test_demo_writes_samples_and_summary(tmp_path, capsys) -> None:
     out = tmp_path / "demo"
     assert main(["demo", "--headless", "--out", str(out)]) == 0
     printed = capsys.readouterr().out
-    assert f"{len(EGG_CRACKER)} strokes" in printed
+    strokes = len(EGG_CRACKER) + len(DEMONSTRATION)
+    assert f"{strokes} strokes" in printed
     lines = (out / "samples.jsonl").read_text().splitlines()
     samples = [json.loads(line) for line in lines]
     assert len(samples) > 1000
     downs = sum(1 for a, b in itertools.pairwise(samples) if b["tip"] and not a["tip"])
-    assert downs + samples[0]["tip"] == len(EGG_CRACKER)
+    assert downs + samples[0]["tip"] == strokes
     assert all(0 <= s["x"] <= 1 and 0 <= s["y"] <= 1 and 0 <= s["p"] <= 1 for s in samples)
     project = json.loads((out / "project.json").read_text())
     shapes = [c.get("shape", c["kind"] if "kind" in c else c["type"]) for c in project["components"]]
-    # ramp (welded by its X), ball, lever (pinned by its small circle), egg, pan: thesis figure 2-4
-    assert shapes == ["polyline", "weld", "circle", "box", "pivot", "circle", "polyline"]
+    # ramp (welded by its X), ball, lever (pinned by its small circle), egg, pan (welded): thesis figure 2-4
+    assert shapes == ["polyline", "weld", "circle", "box", "pivot", "circle", "polyline", "weld"]
+    narration = (out / "timeline.txt").read_text()
+    assert narration.startswith("Movement of ball CAUSES\n-- Contact between ball and lever CAUSES\n")
+    assert "Contact between egg and pan" in narration and narration in printed + "\n"
+    assert project["timeline"]["events"][0]["type"] == "start"
     summary = (out / "summary.txt").read_text()
     assert "pen samples" in summary and "ignored" not in summary
 
@@ -37,7 +42,8 @@ def test_demo_writes_samples_and_summary(tmp_path, capsys) -> None:
 def test_demo_twice_gives_identical_files(tmp_path) -> None:
     for name in ("a", "b"):
         assert main(["demo", "--headless", "--out", str(tmp_path / name)]) == 0
-    for file in ("samples.jsonl", "summary.txt", "project.json", "session.physink.jsonl"):
+    for file in ("samples.jsonl", "summary.txt", "project.json", "session.physink.jsonl", "timeline.json",
+                 "timeline.txt"):
         assert (tmp_path / "a" / file).read_bytes() == (tmp_path / "b" / file).read_bytes()
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from physink_tui.cli import main
-from physink_tui.demo_data import demo_capture
+from physink_tui.demo_data import drawing_capture
 from physink_tui.input.mapping import TabletMapping
 from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
 from physink_tui.journal.entries import CommandEntry, JournalHeader, PenEntry, SayEntry
@@ -21,7 +21,7 @@ MAPPING = TabletMapping(canvas_width=1600, canvas_height=1000, tablet_width=1.6,
 
 
 def egg_cracker_journal(path: Path, extra=()) -> Path:
-    capture = demo_capture()
+    capture = drawing_capture()
     write_journal(path, header_for_capture(capture, MAPPING), capture_entries(capture), list(extra))
     return path
 
@@ -65,7 +65,8 @@ def test_the_egg_cracker_drawing_becomes_its_machine(tmp_path) -> None:
     assert [b.shape for b in bodies.values()] == ["polyline", "circle", "box", "circle", "polyline"]
     ramp, ball, lever = bodies["b1"], bodies["b2"], bodies["b3"]
     assert ball.label == "ball"
-    assert {(j.kind, j.a, j.b) for j in joints} == {("weld", ramp.id, BACKGROUND), ("pivot", lever.id, BACKGROUND)}
+    assert {(j.kind, j.a, j.b) for j in joints} == {("weld", ramp.id, BACKGROUND), ("pivot", lever.id, BACKGROUND),
+                                                    ("weld", "b5", BACKGROUND)}
     assert scene.is_fixed(ramp.id) and not scene.is_fixed(ball.id)
 
 

@@ -1,22 +1,25 @@
-"""`physink demo`: runs the part of the pipeline that exists on the bundled drawing; writes DIR outputs.
+"""`physink demo`: runs the pipeline that exists on the bundled egg cracker; writes DIR outputs.
 
-Until the Textual UI exists (a later issue) the demo is headless whatever the terminal: it journals
-the bundled egg-cracker capture (made with the virtual pen) as a session, runs it through decoding,
-gestures, recognition and interpretation, writes the samples, the journal and the resulting project
-to the output folder, and shows the strokes as braille dots.
+Until the Textual UI exists (a later issue) the demo is headless whatever the terminal: it journals the bundled
+capture (the egg cracker drawn and then demonstrated with the virtual pen, `demo_data`) with what is typed in
+between (labels, ``mode demo``) as a session, runs it through decoding, gestures, recognition, interpretation
+and demo mode, writes the samples, the journal, the project and the timeline to the output folder, and shows
+the strokes as braille dots and the demonstration as the thesis narrates it.
 """
 
 from __future__ import annotations
 
 import argparse
 import io
+import json
 import sys
 from collections import Counter
 from pathlib import Path
 
 from physink_tui.atomic_write import write_text_atomic
 from physink_tui.commands.decode import decode_capture, summary, write_jsonl
-from physink_tui.demo_data import DEMO_FILE, TABLET_ASPECT, demo_capture_text
+from physink_tui.commands.timeline_formats import timeline_json
+from physink_tui.demo_data import DEMO_FILE, TABLET_ASPECT, demo_capture_text, demo_script
 from physink_tui.errors import PhysinkError
 from physink_tui.input.capture import Capture
 from physink_tui.input.mapping import TabletMapping
@@ -27,6 +30,7 @@ from physink_tui.project.files import save_project
 from physink_tui.render.braille import braille_plot
 from physink_tui.scene.components import Body, Joint
 from physink_tui.session.session import Session
+from physink_tui.timeline.narrate import timeline_text
 
 CANVAS = (1600.0, 1000.0)
 JOURNAL = "session.physink.jsonl"
@@ -66,25 +70,38 @@ def run(args: argparse.Namespace) -> int:
                             tablet_height=1.0)
     journal_path = out / JOURNAL
     journal_path.unlink(missing_ok=True)  # a journal is never overwritten: the demo starts a fresh one
-    write_journal(journal_path, header_for_capture(capture, mapping), capture_entries(capture))
+    write_journal(journal_path, header_for_capture(capture, mapping), capture_entries(capture), demo_script())
     journal = read_journal(journal_path)
     session = Session.from_header(journal.header).run(journal.entries)
-    save_project(Project(session.scene, (), None, session.canvas), out / "project.json")
+    names = {c.id: c.label for c in session.scene.components.values() if getattr(c, "label", None)}
+    timeline_doc = None
+    narration = ""
+    if session.timeline is not None:
+        text = timeline_json(session.timeline, names)
+        write_text_atomic(out / "timeline.json", text)
+        narration = timeline_text(session.timeline, names)
+        write_text_atomic(out / "timeline.txt", narration + "\n")
+        timeline_doc = json.loads(text)
+    save_project(Project(session.scene, (), timeline_doc, session.canvas), out / "project.json")
 
     tip = cols.tip.tolist()
     touching = [(x, y) for x, y, down in zip(cols.x.tolist(), cols.y.tolist(), tip, strict=True) if down]
     strokes = sum(1 for i, down in enumerate(tip) if down and (i == 0 or not tip[i - 1]))
     kinds = Counter(type(c).__name__.lower() for c in session.scene.components.values())
-    print("PhysInk TUI demo: the bundled egg-cracker drawing, read as raw HID reports from a virtual")
-    print("UC-Logic tablet, decoded, followed to strokes, recognised and interpreted into a physical scene")
-    print("(the physics, the timeline and the terminal UI come in later issues).\n")
+    print("PhysInk TUI demo: the bundled egg cracker, drawn and then demonstrated on a virtual UC-Logic tablet,")
+    print("read as raw HID reports, decoded, followed to strokes, recognised and interpreted into a physical scene;")
+    print("in demo mode the pen pushed the ball onto the lever and carried the egg into the pan, recorded as a")
+    print("causal timeline (simulation and the terminal UI come in later issues).\n")
     print(braille_plot(touching, width=64, height=20))
     print(f"\n{len(cols)} pen samples, {strokes} strokes; the sketch has "
           + ", ".join(f"{n} {PLURAL.get(k, k + 's') if n > 1 else k}" for k, n in sorted(kinds.items())) + ":")
     print("\n".join(describe(session)))
     for message in session.messages:
         print(f"  note: {message.text}")
-    print(f"written to {out}/: samples.jsonl, summary.txt, {JOURNAL} (replay it with physink replay) and project.json")
+    if narration:
+        print("\nThe demonstration, as the thesis narrates it:\n" + narration)
+    print(f"\nwritten to {out}/: samples.jsonl, summary.txt, {JOURNAL} (replay it with physink replay), project.json,"
+          " timeline.json and timeline.txt")
     if args.headless is False and sys.stdout.isatty():
         print("(the interactive TUI is not built yet; this run was headless)")
     return 0
