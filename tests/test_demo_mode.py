@@ -71,15 +71,20 @@ def test_released_bodies_come_to_rest_and_replay_writes_the_timeline(tmp_path, c
         assert (tmp_path / "a" / file).read_bytes() == (tmp_path / "b" / file).read_bytes()
 
 
-def test_physink_timeline_prints_a_project_timeline_in_every_format(tmp_path, capsys) -> None:
+def block_demo_journal(path):
+    """A block labelled "block" and a ball pushed into it in demo mode, as a journal at ``path``."""
     entries = pen_stroke(0.0, box_points(0.55, 0.4, 0.65, 0.6)) + pen_stroke(1.0, circle_points(0.2, 0.5, 0.05))
     entries += [CommandEntry(1.5, "label", ("b1", "block")), CommandEntry(2.0, "mode", ("demo",)),
                 PenEntry(2.5, 0.2, 0.5, 0.0, False, True, False, False, False)]
     entries += [PenEntry(2.5 + 0.01 * k, 0.2 + 0.004 * k, 0.5, 0.6, True, True, False, False, False)
                 for k in range(1, 101)]
     entries += [PenEntry(3.52, 0.6, 0.5, 0.0, False, True, False, False, False), CommandEntry(7.0, "mode", ("sketch",))]
-    path = tmp_path / "demo.physink.jsonl"
     write_journal(path, pen_header(), sorted(entries, key=lambda e: e.t))
+    return path
+
+
+def test_physink_timeline_prints_a_project_timeline_in_every_format(tmp_path, capsys) -> None:
+    path = block_demo_journal(tmp_path / "demo.physink.jsonl")
     assert main(["replay", str(path), "--out", str(tmp_path / "out")]) == 0
     project = str(tmp_path / "out" / "project.json")
     capsys.readouterr()

@@ -8,13 +8,11 @@ import re
 from pathlib import Path
 
 import pytest
+from test_demo_mode import block_demo_journal
 from test_equivalence import FIG_2_15, NAMES, ON_A, ON_B, UNDER_B, behaviour, renamed
-from test_session import box_points, circle_points, pen_header, pen_stroke
 
 from physink_tui.cli import main
 from physink_tui.commands.timeline_formats import timeline_json
-from physink_tui.journal.compose import write_journal
-from physink_tui.journal.entries import CommandEntry, PenEntry
 from physink_tui.project.codec import Project
 from physink_tui.project.files import save_project
 from physink_tui.scene.components import MATERIALS, Body, Scene
@@ -90,14 +88,7 @@ def test_a_project_compares_with_a_timeline_by_label(tmp_path, capsys) -> None:
 
 
 def test_a_replayed_demonstration_is_equivalent_to_its_own_timeline_file(tmp_path, capsys) -> None:
-    entries = pen_stroke(0.0, box_points(0.55, 0.4, 0.65, 0.6)) + pen_stroke(1.0, circle_points(0.2, 0.5, 0.05))
-    entries += [CommandEntry(1.5, "label", ("b1", "block")), CommandEntry(2.0, "mode", ("demo",)),
-                PenEntry(2.5, 0.2, 0.5, 0.0, False, True, False, False, False)]
-    entries += [PenEntry(2.5 + 0.01 * k, 0.2 + 0.004 * k, 0.5, 0.6, True, True, False, False, False)
-                for k in range(1, 101)]
-    entries += [PenEntry(3.52, 0.6, 0.5, 0.0, False, True, False, False, False), CommandEntry(7.0, "mode", ("sketch",))]
-    journal = tmp_path / "demo.physink.jsonl"
-    write_journal(journal, pen_header(), sorted(entries, key=lambda e: e.t))
+    journal = block_demo_journal(tmp_path / "demo.physink.jsonl")
     assert main(["replay", str(journal), "--out", str(tmp_path / "out")]) == 0
     capsys.readouterr()
     status, out, _ = run(capsys, str(tmp_path / "out" / "project.json"), str(tmp_path / "out" / "timeline.json"))

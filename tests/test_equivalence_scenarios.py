@@ -13,20 +13,16 @@ from __future__ import annotations
 
 import contextlib
 import io
-from collections.abc import Iterable
-from functools import cache
 from itertools import pairwise
 from pathlib import Path
 
 import pytest
 from scenarios.bouncing import all_scenarios
-from scenarios.make_journals import journal_path, write_scenario_journal
+from scenarios.make_journals import journal_path, replayed, write_scenario_journal
 from scenarios.thesis import BACKGROUND, Scenario
 
 from physink_tui.cli import main
-from physink_tui.commands.equiv import load_timeline
-from physink_tui.journal.reader import read_journal
-from physink_tui.project.files import load_project
+from physink_tui.commands.timeline_source import load_timeline
 from physink_tui.scene.components import Joint
 from physink_tui.session.session import Session
 from physink_tui.timeline.equivalence import Comparison, compare
@@ -58,21 +54,12 @@ FIRST_MOVEMENT_REGIONS = {
 }
 
 
-@cache
 def session_over(name: str) -> Session:
-    path = journal_path(SCENARIOS[name])
-    assert path.exists(), f"{path} is missing; {REGENERATE}"
-    journal = read_journal(path)
-    assert not journal.warnings and journal.truncated is None
-    return Session.from_header(journal.header).run(journal.entries)
-
-
-def labels_of(components: Iterable[object]) -> dict[str, str]:
-    return {c.id: c.label for c in components if getattr(c, "label", None)}
+    return replayed(name, journal_path(SCENARIOS[name]))
 
 
 def labels(session: Session) -> dict[str, str]:
-    return labels_of(session.scene.components.values())
+    return session.scene.labels()
 
 
 class Replays:
@@ -90,17 +77,9 @@ class Replays:
         return out
 
     def timeline(self, name: str) -> tuple[Timeline, dict[str, str]]:
-        """The replayed timeline.json with the labels of every body of the replayed project.
-
-        The timeline JSON gives a body's label only where the body is one of an event's components, not where
-        a movement merely passes it (its regions), so the scene's labels are added, as `physink equiv` does for
-        projects.
-        """
+        """The replayed timeline.json and the labels it carries (bodies only passed by included)."""
         if name not in self._timelines:
-            out = self.folder(name)
-            timeline, names = load_timeline(out / "timeline.json")
-            scene = load_project(out / "project.json").scene
-            self._timelines[name] = (timeline, {**names, **labels_of(scene.components.values())})
+            self._timelines[name] = load_timeline(self.folder(name) / "timeline.json")
         return self._timelines[name]
 
     def judge(self, a: str, b: str) -> Comparison:

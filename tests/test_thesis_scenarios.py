@@ -8,15 +8,13 @@ Regenerate the journals with ``python tests/scenarios/make_journals.py`` after c
 from __future__ import annotations
 
 from collections.abc import Iterable
-from functools import cache
 from typing import Any
 
 import pytest
-from scenarios.make_journals import journal_path, write_scenario_journal
+from scenarios.make_journals import journal_path, replayed, write_scenario_journal
 from scenarios.thesis import BACKGROUND, Scenario, all_scenarios
 
 from physink_tui.cli import main
-from physink_tui.journal.reader import read_journal
 from physink_tui.scene.components import Joint, Rope, Scene, Spring
 from physink_tui.session.session import Session
 
@@ -25,13 +23,8 @@ MAX_JOURNAL_BYTES = 400_000
 REGENERATE = "regenerate with `python tests/scenarios/make_journals.py`"
 
 
-@cache
 def session_over(name: str) -> Session:
-    path = journal_path(SCENARIOS[name])
-    assert path.exists(), f"{path} is missing; {REGENERATE}"
-    journal = read_journal(path)
-    assert not journal.warnings and journal.truncated is None
-    return Session.from_header(journal.header).run(journal.entries)
+    return replayed(name, journal_path(SCENARIOS[name]))
 
 
 def described(scene: Scene, names: dict[str, str], told: list[str], expected_messages: tuple[str, ...]) -> dict:

@@ -22,7 +22,7 @@ SCENARIOS = {s.name: s for s in all_scenarios()}
 
 
 def names_of(session: Session) -> dict[str, str]:
-    return {c.id: c.label for c in session.scene.components.values() if getattr(c, "label", None)}
+    return session.scene.labels()
 
 
 def text_of(name: str) -> list[str]:

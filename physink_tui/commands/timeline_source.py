@@ -47,5 +47,5 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
     except TimelineError as e:
         raise TimelineError(f"{path}: timeline: {e}", e.event_id) from None
     # the scene's labels win over those written in the timeline
-    names = {c.id: c.label for c in project.scene.components.values() if getattr(c, "label", None)}
+    names = project.scene.labels()
     return timeline, {**labels, **names}

@@ -158,6 +158,10 @@ class Scene:
     def bodies(self) -> list[Body]:
         return [c for c in self.components.values() if isinstance(c, Body)]
 
+    def labels(self) -> dict[str, str]:
+        """Component id -> the user's label, for every labelled component (what narration names them by)."""
+        return {c.id: c.label for c in self.components.values() if getattr(c, "label", None)}
+
     def is_fixed(self, body_id: str) -> bool:
         """Whether a body is welded to the background (or is the background)."""
         if body_id == BACKGROUND:

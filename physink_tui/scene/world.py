@@ -18,6 +18,7 @@ from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Point, Rope, Scene, Spring
 from physink_tui.scene.world_build import Built, Pose, build
 from physink_tui.scene.world_contacts import ContactListener, ContactRecord
+from physink_tui.scene.world_speed import limit_speed
 
 GRAVITY: Point = (0.0, 900.0)
 """Gravity in canvas units per second squared, pointing down the canvas (+y).
@@ -38,21 +39,6 @@ DRAG_ANGULAR_ACCELERATION = 200.0
 """The strongest twist (rad/s², times the moment of inertia) with which a ``rotate=False`` drag holds the angle."""
 DRAG_ERROR_BIAS = (1 - 0.15) ** 60
 """Fraction of the pen-to-grab-point distance left uncorrected after one second (pymunk's mouse-joint example)."""
-
-
-SPEED_LIMIT = 0.5
-"""Share of its own half-size a body may travel in one step during a demonstration (see `World.limit_speeds`)."""
-MIN_SPEED_LIMIT = 1200.0
-"""Canvas units per second any body may reach whatever its size (thin bars would otherwise barely move)."""
-
-
-def _speed_limited(limit: float):
-    def velocity_func(body: pymunk.Body, gravity: tuple[float, float], damping: float, dt: float) -> None:
-        pymunk.Body.update_velocity(body, gravity, damping, dt)
-        speed = body.velocity.length
-        if speed > limit:
-            body.velocity = body.velocity * (limit / speed)
-    return velocity_func
 
 
 @dataclass(slots=True)
@@ -219,16 +205,10 @@ class World:
         """Moves a body along a recording: kinematic (it pushes what it meets and nothing pushes it), placed at
         ``pose`` (x, y, angle) and moving with ``velocity`` (vx, vy, angular) until the next call or `let_go`."""
         body = self._get(body_id)
-        if body.body_type == pymunk.Body.STATIC:
-            return  # fixed bodies have no recording to follow
-        if body.body_type != pymunk.Body.KINEMATIC:
+        if body.body_type == pymunk.Body.DYNAMIC:
             body.body_type = pymunk.Body.KINEMATIC
             self._sync_constraints()
-        body.position = pose[:2]
-        body.angle = pose[2]
-        body.velocity = velocity[:2]
-        body.angular_velocity = velocity[2]
-        self._space.reindex_shapes_for_body(body)
+        self.place(body_id, pose, velocity)
 
     def let_go(self, body_id: str) -> None:
         """A body that followed a recording is moved by the physics again, with the velocity it had."""
@@ -240,26 +220,19 @@ class World:
             self._sync_constraints()
 
     def place(self, body_id: str, pose: Pose, velocity: Pose = (0.0, 0.0, 0.0)) -> None:
-        """Puts a dynamic body at ``pose`` with ``velocity`` (after a seek)."""
+        """Puts a body that is not fixed at ``pose`` (x, y, angle) with ``velocity`` (vx, vy, angular)."""
         body = self._get(body_id)
         if body.body_type == pymunk.Body.STATIC:
-            return
-        body.position = pose[:2]
-        body.angle = pose[2]
-        body.velocity = velocity[:2]
-        body.angular_velocity = velocity[2]
+            return  # fixed bodies stay where they are
+        body.position, body.angle = pose[:2], pose[2]
+        body.velocity, body.angular_velocity = velocity[:2], velocity[2]
         self._space.reindex_shapes_for_body(body)
 
-    def limit_speeds(self, steps_per_size: float = SPEED_LIMIT) -> None:
-        """No tunnelling: no dynamic body may move more than ``steps_per_size`` of its own half-size in one step
-        (at least `MIN_SPEED_LIMIT`), so a body pushed at absurd speed is stopped by what it meets."""
+    def limit_speeds(self) -> None:
+        """No tunnelling: every body that can move (not the rope links) gets `world_speed.limit_speed`."""
         for cid in self._by_z:
-            body = self._built.bodies.get(cid)
-            if body is None or body.body_type == pymunk.Body.STATIC:
-                continue
-            half = min((min(s.bb.right - s.bb.left, s.bb.top - s.bb.bottom) / 2 for s in body.shapes), default=0.0)
-            limit = max(steps_per_size * half / self._dt, MIN_SPEED_LIMIT)
-            body.velocity_func = _speed_limited(limit)
+            if self._built.bodies[cid].body_type == pymunk.Body.DYNAMIC:
+                limit_speed(self._built.bodies[cid], self._dt)
 
     # -- editing --------------------------------------------------------------------------------------------------
 

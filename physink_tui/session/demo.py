@@ -128,17 +128,12 @@ def seek(session: Session, t: float) -> None:
 
 
 def play(session: Session) -> None:
+    """The recording plays from the current timeline time (from the start once it has played to the end)."""
     demo = session._demo
     if demo.duration <= 0:
         session.tell("play: nothing has been demonstrated yet")
         return
-    if demo.clock >= demo.duration - 1e-9:
-        seek(session, 0.0)
-    demo.recorder.pause()
-    demo.world.release()
-    demo.grabbed = None
-    demo.live.clear()
-    demo.tape = Tape(demo.recorder.timeline)
+    seek(session, 0.0 if demo.clock >= demo.duration - 1e-9 else demo.clock)
     demo.playing = True
 
 
@@ -190,7 +185,7 @@ def advance_demo(session: Session, t: float) -> None:
         touching = frozenset(p for p in world.touching() if all(c in poses for c in p))
         if demo.live or not demo.playing:
             demo.recorder.observe(Observation(round(clock, 6), poses, contacts, demo.grabbed, touching, playing))
-        if demo.playing and clock >= demo.duration:
+        if demo.playing and clock >= demo.tape.duration:
             demo.playing = False
     if steps >= MAX_DEMO_STEPS or (demo.grabbed is None and not demo.recorder.moving and not demo.playing):
         demo.t = t  # timeline time stands still while nothing moves

@@ -336,7 +336,7 @@ class Session:
 
     def _narrate(self, text: str) -> None:
         """A phrase (``the egg lands in the frying pan``) labels the nearest event involving what it names."""
-        names = {c.id: c.label for c in self.scene.components.values() if getattr(c, "label", None)}
+        names = self.scene.labels()
         recorder = self._demo.recorder
         try:
             phrase = parse_phrase(text, names, self.vocabulary)

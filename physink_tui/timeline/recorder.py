@@ -99,7 +99,6 @@ class Recorder:
     timeline: Timeline = field(default_factory=Timeline)
     _next: int = 1
     _open: dict[str, OpenMovement] = field(default_factory=dict)
-    _latest: dict[str, str] = field(default_factory=dict)
     _last_contact: dict[frozenset[str], float] = field(default_factory=dict)
     _ended_pairs: set[frozenset[str]] = field(default_factory=set)
     _touching: frozenset[frozenset[str]] = frozenset()
@@ -192,8 +191,6 @@ class Recorder:
         """
         self.pause()
         timeline, _ = cut_from(self.timeline, self.group_bodies(body), t)
-        self.timeline = Timeline()
-        self._latest.clear()
         self._last_contact.clear()
         self._ended_pairs.clear()
         self._adopt(timeline)
@@ -210,11 +207,6 @@ class Recorder:
                 self._next = max(self._next, int(digits) + 1)
             if ev.type == "start" and self._start is None:
                 self._start = ev.id
-            elif ev.type == "movement" and ev.components and ev.components[0] in self._group:
-                key = self._group[ev.components[0]]
-                latest = self._latest.get(key)
-                if latest is None or timeline.event(latest).t0 <= ev.t0:
-                    self._latest[key] = ev.id
             elif ev.type in ("contact", "end_contact"):
                 self._ended_pairs.add(frozenset(ev.components))  # a pair seen touching: no end-contact later
         if self._start is not None and self._start not in timeline:
@@ -243,8 +235,8 @@ class Recorder:
                     if self._group.get(other, other) != key and self._cause_of(other, t, obs) is not None:
                         self._add_contact(obs, body, other, None, None)  # pushed by a moving body
                         return
-        latest = self._latest.get(key)
-        latest_t = self.timeline.event(latest).t1 if latest is not None else -math.inf
+        latest = self._latest_movement(body)
+        latest_t = latest.t1 if latest is not None else -math.inf
         for pair, when in sorted(self._separated_at.items(), key=lambda item: (-item[1], sorted(item[0]))):
             if body in pair and len(pair) == 2 and t - when <= RECENT_SEPARATION and when >= latest_t:
                 (other,) = pair - {body}
@@ -254,7 +246,7 @@ class Recorder:
         if latest is not None:
             self._reopen(key, latest)
             return
-        self._open_movement(t, body, (self._start_event(t),), obs)
+        self._open_movement(t, body, (self._start_event(t),))
 
     def _cause_of(self, body: str, t: float, obs: Observation) -> str | None:
         """The movement explaining ``body``'s motion now: its group's open one, or the recording it plays."""
@@ -262,9 +254,13 @@ class Recorder:
         if key is not None and key in self._open:
             return self._open[key].event_id
         if body in obs.playing:
-            ev = self._covering({body}, t)
+            ev = covering(self.timeline, {body}, t)
             return ev.id if ev is not None else None
         return None
+
+    def _latest_movement(self, body: str) -> Event | None:
+        """The latest movement of ``body``'s mechanism (open or ended), which a new grab continues."""
+        return covering(self.timeline, self.group_bodies(body), math.inf)
 
     def _contact(self, obs: Observation, contact: ContactSeen) -> None:
         a, b = contact.a, contact.b
@@ -303,7 +299,6 @@ class Recorder:
         if point is None and pa is not None and pb is not None:
             point = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)
         cid = self._new_id()
-        self._write_open(first, second)
         self.timeline = self.timeline.add(Event(
             cid, "contact", (first, second), tuple(dict.fromkeys(c for c in (causes[first], causes[second]) if c)),
             t, t, sides=sides, point=point))
@@ -317,10 +312,9 @@ class Recorder:
         causes = tuple(dict.fromkeys(c for c in (self._cause_of(first, t, obs), self._cause_of(second, t, obs))
                                      if c))
         if not causes:
-            latest = [self._latest[k] for k in (self._group.get(a), self._group.get(b)) if k in self._latest]
-            causes = tuple(latest[:1]) or (self._start_event(t),)
+            latest = next((m.id for m in (self._latest_movement(a), self._latest_movement(b)) if m), None)
+            causes = (latest,) if latest is not None else (self._start_event(t),)
         eid = self._new_id()
-        self._write_open(a, b)
         self.timeline = self.timeline.add(Event(eid, "end_contact", (first, second), causes, t, t))
         self._ended_pairs.add(frozenset((a, b)))
         self._separated_at.pop(frozenset((a, b)), None)
@@ -335,7 +329,7 @@ class Recorder:
                 self._split(body, obs.t, cause)
             else:
                 self._close(self._group[body])
-                self._open_movement(obs.t, body, (cause,), obs)
+                self._open_movement(obs.t, body, (cause,))
 
     def _check_initial_pairs(self, obs: Observation) -> None:
         for pair in sorted(self.initial_pairs - self._ended_pairs, key=sorted):
@@ -349,29 +343,20 @@ class Recorder:
 
     # -- movements -------------------------------------------------------------------------------------------
 
-    def _open_movement(self, t: float, body: str, causes: tuple[str, ...], obs: Observation) -> None:
+    def _open_movement(self, t: float, body: str, causes: tuple[str, ...]) -> None:
         chain = self.chain(body)
         bodies = tuple(c for c in chain if c in self.outlines)
         mid = self._new_id()
         self.timeline = self.timeline.add(Event(mid, "movement", chain, causes, t, t))
-        key = self._group[body]
-        self._open[key] = OpenMovement(mid, bodies, {b: [] for b in bodies})
-        self._latest[key] = mid
+        self._open[self._group[body]] = OpenMovement(mid, bodies, {b: [] for b in bodies})
 
-    def _reopen(self, key: str, event_id: str) -> None:
-        ev = self.timeline.event(event_id)
+    def _reopen(self, key: str, ev: Event) -> None:
         self._open[key] = OpenMovement.resumed(ev, tuple(c for c in ev.components if c in self.outlines))
 
     def _close(self, key: str) -> None:
         current = self._open.pop(key, None)
         if current is not None:
             self._write(current)
-
-    def _write_open(self, *bodies: str) -> None:
-        for body in bodies:
-            key = self._group.get(body)
-            if key in self._open:
-                self._write(self._open[key])
 
     def _record_frame(self, obs: Observation, key: str) -> None:
         current = self._open[key]
@@ -386,16 +371,8 @@ class Recorder:
         if updated is not event:
             self.timeline = self.timeline.update(updated)
 
-    def _covering(self, members: set[str], t: float) -> Event | None:
-        return covering(self.timeline, members, t)
-
     def _split(self, body: str, t: float, cause: str) -> None:
         """A contact interrupts the recorded movement ``body`` plays back (see `edits.split_at`)."""
-        current = self._covering({body}, t)
-        if current is None or current.t1 <= t:
-            return
-        new_id = self._new_id()
-        self.timeline = split_at(self.timeline, current, t, cause, new_id)
-        key = self._group.get(body)
-        if key is not None and self._latest.get(key) == current.id:
-            self._latest[key] = new_id
+        current = covering(self.timeline, {body}, t)
+        if current is not None and current.t1 > t:
+            self.timeline = split_at(self.timeline, current, t, cause, self._new_id())

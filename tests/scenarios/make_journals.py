@@ -10,9 +10,12 @@ from __future__ import annotations
 
 import os
 import sys
+from functools import cache
 from pathlib import Path
 
 from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
+from physink_tui.journal.reader import read_journal
+from physink_tui.session.session import Session
 
 try:
     from scenarios.bouncing import all_scenarios as bouncing_scenarios
@@ -36,6 +39,15 @@ def write_scenario_journal(scenario: Scenario, path: str | os.PathLike[str]) -> 
     capture = scenario.capture()
     write_journal(path, header_for_capture(capture, MAPPING), capture_entries(capture), scenario.spoken_and_typed())
     return Path(path)
+
+
+@cache
+def replayed(scenario_name: str, path: Path) -> Session:
+    """The session a stored journal ends in (run once per test process; checked to read cleanly)."""
+    assert path.exists(), f"{path} is missing; regenerate with `python tests/scenarios/make_journals.py`"
+    journal = read_journal(path)
+    assert not journal.warnings and journal.truncated is None, scenario_name
+    return Session.from_header(journal.header).run(journal.entries)
 
 
 def main() -> int:
