@@ -8,7 +8,7 @@ exactly the kinds in `ACCEPTS` (round accepts circle or ellipse; polyline accept
 Each stroke goes once through `recognize_stroke(points, times)` (times in seconds), timed with
 `time.perf_counter` around the call; latency is also measured on every stroke resampled to exactly 200 points
 (the issue's target: p95 under 3 ms). With ``--generated N`` it also recognises N strokes per kind from
-`physink_tui.scene.synthetic_strokes` (seeds "bench:<kind>:<i>", not the tests' seeds). Prints Markdown for
+`tests/strokegen/strokes.py` (seeds "bench:<kind>:<i>", not the tests' seeds). Prints Markdown for
 docs/BENCHMARKS.md.
 """
 
@@ -29,7 +29,9 @@ import numpy as np
 
 from physink_tui.scene.primitives import KINDS, Recognition
 from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
-from physink_tui.scene.synthetic_strokes import generate
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from strokegen.strokes import generate
 
 LABEL_CLASS = {
     "circle": "round",
@@ -191,7 +193,7 @@ def bench_generated(per_kind: int) -> None:
             else:
                 result, _ = timed(lambda strokes=strokes: recognize_strokes(strokes))
             counts[kind][result.kind or "none"] += 1
-    print(f"## Generated strokes: {per_kind} per kind (`synthetic_strokes`, seeds bench:<kind>:<i>)\n")
+    print(f"## Generated strokes: {per_kind} per kind (`tests/strokegen`, seeds bench:<kind>:<i>)\n")
     print(table(["kind", "strokes", "right", "accuracy"],
                 [[k, sum(counts[k].values()), counts[k][k], f"{counts[k][k] / sum(counts[k].values()):.1%}"]
                  for k in KINDS]) + "\n")

@@ -2,7 +2,7 @@
 
 The recogniser (`physink_tui.scene.recognize`) is imported inside the tests so that this module and its data load
 without it. Accuracy floors are floors: `benchmarks/bench_recognition.py` reports the real numbers. Hand-made cases
-are in `stroke_cases.py`; generated strokes come from `physink_tui.scene.synthetic_strokes`, seeded by name.
+are in `stroke_cases.py`; generated strokes come from `tests/strokegen/strokes.py`, seeded by name.
 """
 
 from __future__ import annotations
@@ -18,10 +18,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from stroke_cases import CASES, NOT_X, Case
+from strokegen.strokes import GENERATORS, generate
 
 from physink_tui.scene import primitives
 from physink_tui.scene.primitives import KINDS, Recognition
-from physink_tui.scene.synthetic_strokes import GENERATORS, generate
 
 SAMPLES_PER_KIND = 60
 # Regression floors, set a little under what the recogniser reaches on these seeds (see docs/BENCHMARKS.md for

@@ -1,7 +1,7 @@
 """Seeded generators of hand-drawn strokes, one per recognised kind, for tests and benchmarks; recognises nothing.
 
 Each generator builds the ideal shape of its kind at unit size (largest extent 1) with randomised proportions,
-has `synthetic_noise` draw it with a modelled hand and tablet (corners, hooks, closure gaps and overshoots, speed
+has `noise` draw it with a modelled hand and tablet (corners, hooks, closure gaps and overshoots, speed
 profile, tremor, spikes, duplicates, pixel rounding), then scales it to ``size`` (10-2000 units, log-uniform,
 unless given), mirrors it half the time, rotates it by ``angle`` and moves it to ``center``. A generated stroke is
 labelled by construction; what counts as recognised is left to the tests and the benchmark. Pure: all randomness
@@ -22,7 +22,7 @@ import random
 from collections.abc import Callable
 from typing import NamedTuple
 
-from physink_tui.scene.synthetic_noise import (
+from strokegen.noise import (
     CORNERED_CLOSURE,
     ROUND_CLOSURE,
     PenPath,
@@ -37,7 +37,7 @@ from physink_tui.scene.synthetic_noise import (
     normalise,
     place,
 )
-from physink_tui.scene.synthetic_shapes import (
+from strokegen.shapes import (
     CURVE_VARIANTS,
     POLYGON_VARIANTS,
     POLYLINE_VARIANTS,

@@ -1,6 +1,6 @@
 """Draws an ideal pen path as a realistic timed stroke (a modelled hand and tablet); chooses no shape itself.
 
-`synthetic_strokes` builds the ideal path of each primitive at unit size; this module spoils it the way people
+`strokes` builds the ideal path of each primitive at unit size; this module spoils it the way people
 and digitisers do:
 
 - corners drawn sharp, overshot (a small spike past the corner), rounded (a small fillet) or looped (a tiny

@@ -1,7 +1,7 @@
 """The ideal shapes the stroke generators draw, at unit size and without noise; neither noise nor placement.
 
 Vertex chains for open polylines and closed polygons, dense point lists for smooth curves, each with randomised
-proportions from the ``random.Random`` passed in. `synthetic_strokes` hands them to `synthetic_noise`.
+proportions from the ``random.Random`` passed in. `strokes` hands them to `noise`.
 
 >>> turtle([1.0, 1.0], [90.0])
 [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]
