@@ -47,7 +47,8 @@ def test_pushing_a_ball_into_a_block_records_start_movement_contact_movement() -
 
 def test_the_sketch_is_unchanged_by_a_demonstration() -> None:
     session = push_ball_into_box()
-    assert session.scene.components["b1"].position == (0.6 * 1600, 0.5 * 1000)
+    x, y = session.scene.components["b1"].position  # where it was drawn (to a pixel), not where it was pushed
+    assert abs(x - 0.6 * 1600) < 1.0 and abs(y - 0.5 * 1000) < 1.0
 
 
 def test_released_bodies_come_to_rest_and_replay_writes_the_timeline(tmp_path, capsys) -> None:

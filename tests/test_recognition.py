@@ -49,18 +49,19 @@ HUGE = "huge-stroke-100k-points"
 Strokes = Sequence[Sequence[Sequence[float]]]
 
 
-def recognise(strokes: Strokes) -> Recognition:
-    """One stroke through ``recognize_stroke`` (times passed when the points carry them), else ``recognize_strokes``."""
+def recognise(strokes: Strokes, noise: float = 1.0) -> Recognition:
+    """One stroke through ``recognize_stroke`` (times passed when the points carry them), else ``recognize_strokes``;
+    ``noise`` is the pen's jitter in the strokes' units (1 unit for strokes in pixels)."""
     try:
         from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
     except ImportError as error:  # the recogniser is written in parallel with these tests
         pytest.fail(f"the recogniser cannot be imported: {error}")
     if len(strokes) != 1:
-        return recognize_strokes(strokes)
+        return recognize_strokes(strokes, noise=noise)
     stroke = strokes[0]
     points = [(p[0], p[1]) for p in stroke]
     times = [p[2] for p in stroke] if stroke and all(len(p) > 2 for p in stroke) else None
-    return recognize_stroke(points, times)
+    return recognize_stroke(points, times, noise=noise)
 
 
 def _finite_numbers(value: object) -> list[float]:
@@ -219,7 +220,8 @@ def test_scale_and_rotation_do_not_change_the_kind(strokes: Strokes) -> None:
         (scale, rotation): kind
         for scale in SCALES
         for rotation in ROTATIONS_DEG
-        if (kind := check_contract(recognise(transformed(strokes, scale, rotation))).kind) != base
+        # the same drawing in other units: the pen's noise is scaled with it
+        if (kind := check_contract(recognise(transformed(strokes, scale, rotation), noise=scale)).kind) != base
     }
     assert changed == {}, f"recognised as {base!r} as drawn, but (scale, rotation) -> kind: {changed}"
 

@@ -150,3 +150,43 @@ def scale_geometry(g: Geometry, origin: np.ndarray, scale: float) -> Geometry:
         elif f.name not in _UNSCALED:
             changes[f.name] = scale * float(v)
     return replace(g, **changes)
+
+
+def shape_points(g: Geometry, per_piece: int = 12) -> list[tuple[float, float]]:
+    """Points on the beautified shape itself (vertices, and points along its arcs, ellipses and curves; not
+    an arc's centre or a curve's control points): what must stay near the stroke.
+
+    >>> shape_points(Line((0.0, 0.0), (2.0, 1.0)))
+    [(0.0, 0.0), (2.0, 1.0)]
+    """
+    if isinstance(g, Line):
+        return [g.start, g.end]
+    if isinstance(g, XSymbol):
+        return [g.first.start, g.first.end, g.second.start, g.second.end]
+    if isinstance(g, Box):
+        return list(g.corners)
+    if isinstance(g, Circle | Ellipse):
+        rx, ry, angle = (g.radius, g.radius, 0.0) if isinstance(g, Circle) else (g.rx, g.ry, g.angle)
+        c, s = math.cos(angle), math.sin(angle)
+        out = []
+        for k in range(4 * per_piece):
+            a = 2 * math.pi * k / (4 * per_piece)
+            u, v = rx * math.cos(a), ry * math.sin(a)
+            out.append((g.center[0] + u * c - v * s, g.center[1] + u * s + v * c))
+        return out
+    if isinstance(g, Arc):
+        return [(g.center[0] + g.radius * math.cos(g.start_angle + g.sweep * k / per_piece),
+                 g.center[1] + g.radius * math.sin(g.start_angle + g.sweep * k / per_piece))
+                for k in range(per_piece + 1)]
+    if isinstance(g, Curve):
+        ctrl = np.asarray(g.control_points, dtype=float)
+        u = np.linspace(0.0, 1.0, per_piece + 1)[:, None]
+        out = [tuple(map(float, ctrl[0]))]
+        for i in range(0, len(ctrl) - 3, 3):
+            p0, p1, p2, p3 = ctrl[i:i + 4]
+            pts = (1 - u) ** 3 * p0 + 3 * u * (1 - u) ** 2 * p1 + 3 * u * u * (1 - u) * p2 + u ** 3 * p3
+            out += [(float(x), float(y)) for x, y in pts[1:]]
+        return out
+    if isinstance(g, Helix):
+        return [g.start, g.end]
+    return [tuple(map(float, p)) for p in g.points]  # Polyline, Polygon

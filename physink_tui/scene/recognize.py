@@ -1,9 +1,12 @@
 """Recognises one stroke (or an X of two) as a primitive with a beautified geometry; no I/O, no clock.
 
-In PaleoSketch's manner (Paulson & Hammond 2008) every primitive gets its own geometric test on a
-cleaned, resampled stroke, and the passing ones are ranked: line before polyline, round shapes and
-boxes before freeform polygons, arcs before free curves. Thresholds are ratios (distance over
-size, angles), never absolute distances, so the answer is the same at any scale and rotation.
+In PaleoSketch's manner (Paulson & Hammond 2008) the interpretations compete instead of passing a cascade of
+hard tests: every candidate (`candidates`: the best line, polyline or polygon for each number of sides, a box,
+a circle or an ellipse, an arc, a curve of cubic pieces) is fitted to the same points, and each is scored by
+its fit error and its complexity, BIC-style: ``N log(mse + sigma^2) + complexity * params * log N``. The floor
+``sigma`` is the larger of the pen's own noise, in absolute units (a pixel or two whatever the shape's size),
+and the hand's inaccuracy relative to the shape's size. The best-scored candidate whose shape stays within the
+stroke's bounds wins; the others become the alternatives. Springs and scribbles are told apart first.
 
 >>> import math
 >>> circle = [(10 * math.cos(a / 20), 10 * math.sin(a / 20)) for a in range(126)]
@@ -16,34 +19,22 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Sequence
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from physink_tui.scene import open_shapes
 from physink_tui.scene import stroke_features as sf
 from physink_tui.scene import stroke_geometry as sg
-from physink_tui.scene.beautify import (
-    arc_geometry,
-    box_geometry,
-    curve_geometry,
-    helix_geometry,
-    round_geometry,
-    scale_geometry,
-    x_symbol,
-)
-from physink_tui.scene.primitives import Line, Polygon, Polyline, Recognition
-from physink_tui.scene.shape_fits import fit_circle, fit_ellipse, fit_line
+from physink_tui.scene.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
+from physink_tui.scene.candidates import Candidate, polygonal, round_shape
+from physink_tui.scene.primitives import Geometry, Line, Recognition
+from physink_tui.scene.shape_fits import fit_ellipse
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
-STRAIGHT = 0.12  # a segment is straight when it strays from its chord by less than this fraction
-LINE = 0.045  # a whole stroke is a line when it strays from its fit by less than this fraction
-ROUND_ERROR = 0.09  # normalised radial error below which a closed stroke is an ellipse
-VERY_SHARP_CORNER = 100.0  # degrees: a corner this sharp makes a polyline whatever its sides do
-SHARP_CORNER = 62.0  # degrees a bowed polyline's corners must each turn
-CORNER_SHARE = 0.45  # an open stroke turning at least this share at its corners is a polyline
-NEARLY_ROUND = 1.25  # an open smooth stroke turning more than this many pi radians is a round shape left open
-CIRCLE_RATIO = 0.8  # minor/major axis ratio above which an ellipse is a circle
+PEN_NOISE = 1.0
+"""The pen's jitter in the stroke's units when the caller does not say: a pixel of a canvas in pixels."""
 
 
 def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | None]:
@@ -70,10 +61,13 @@ def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | 
     return pts, None
 
 
-def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None) -> Recognition:
+def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
+                     noise: float = PEN_NOISE, weights: Weights | None = None) -> Recognition:
     """Recognise one stroke given as (x, y) points (extra columns such as t are ignored).
 
-    ``times`` are accepted for symmetry with pen input; the tests are geometric.
+    ``noise`` is the pen's jitter in the points' units (pass it scaled with the coordinates: a canvas in
+    fractions of its size has a noise of about 1 / its width in pixels). ``times`` are accepted for symmetry
+    with pen input; the judgement is geometric. ``weights`` override the ranking's (for evaluation).
     """
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
         pts, reason = _clean(points)
@@ -87,38 +81,25 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         scale = float(np.abs(pts - origin).max())
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
-    with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the tests then reject
-        result = _classify((pts - origin) / scale)
+    unit_noise = noise / scale if math.isfinite(noise) and noise > 0 else 0.0
+    with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
+        result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS)
     if result.geometry is None:
         return result
     return replace(result, geometry=scale_geometry(result.geometry, origin, scale))
-
-
-def _line(raw: np.ndarray) -> Recognition | None:
-    """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
-    short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
-    coarse = sg.smooth(sg.resample(raw, 48))
-    coarse = sg.resample(sg.remove_hooks(coarse), 48)
-    _, _, err = fit_line(coarse)
-    length = sg.path_length(coarse)
-    chord = float(np.hypot(*(coarse[-1] - coarse[0])))
-    if (err < LINE and length < 1.12 * chord) or (err < 0.5 * LINE and length < 1.3 * chord):
-        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_point(coarse[0]), _point(coarse[-1])),
-                           (("arc", 0.2),))
-    return None
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]]) -> Recognition:
+def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: float = PEN_NOISE) -> Recognition:
     """One stroke, or two consecutive strokes that may be an X-symbol (thesis 3.2.1)."""
     if len(strokes) == 1:
-        return recognize_stroke(strokes[0])
+        return recognize_stroke(strokes[0], noise=noise)
     if len(strokes) != 2:
         return Recognition(None, 0.0, None, (), f"expected one stroke or two (an X), got {len(strokes)}")
-    first, second = recognize_stroke(strokes[0]), recognize_stroke(strokes[1])
+    first, second = recognize_stroke(strokes[0], noise=noise), recognize_stroke(strokes[1], noise=noise)
     if first.kind == "line" and second.kind == "line":
         x = x_symbol(first.geometry, second.geometry)
         if x is not None:
@@ -129,126 +110,165 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]]) -> Recogniti
     return Recognition(None, 0.0, None, (), "only two crossing short lines make a two-stroke symbol (an X)")
 
 
-def _classify(raw: np.ndarray) -> Recognition:
-    line = _line(raw)
-    if line is not None:
-        return line
+@dataclass(frozen=True, slots=True)
+class Weights:
+    """The ranking's numbers: what a unit of complexity costs against fit error, and the noise floor.
+
+    Attributes:
+        complexity: score added per parameter of a shape, times log of the effective sample count (BIC's 0.5
+            is the textbook value; larger prefers simpler shapes).
+        relative_noise: hand inaccuracy as a share of the stroke's size; the error floor is the larger of
+            this and the pen's absolute noise.
+    """
+
+    complexity: float = 2.0
+    relative_noise: float = 0.01
+
+
+DEFAULT_WEIGHTS = Weights()
+EFFECTIVE_SAMPLES = 64
+"""How many independent samples a stroke's fit error is taken to rest on, whatever its point count."""
+MAX_JUDGED_POINTS = 360
+BOUNDS_MARGIN = 0.05
+"""A beautified shape must stay within the stroke's bounding box grown by this share of its diagonal."""
+OPEN_ROUND_MARGIN = 0.2
+"""The same for a circle or ellipse completed from a stroke that stopped short of its start (a quarter turn
+short pokes out by about 15 % of the stroke's diagonal)."""
+
+
+def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
+    found = open_shapes.line(raw, noise)
+    if found is not None:
+        return found
     diag = sg.bbox_diagonal(raw)
     length = sg.path_length(raw)
     thickness = sg.thickness(raw)
-    spacing = min(diag / 40, max(thickness, diag / 200) / 8)  # thin shapes need finer steps
-    n = int(min(max(64, length / spacing), 320))
+    spacing = max(min(diag / 40, max(thickness, diag / 200) / 8), 0.5 * noise, length / MAX_JUDGED_POINTS)
+    n = int(min(max(64, length / spacing), MAX_JUDGED_POINTS))
     work = sg.smooth(sg.resample(raw, n))
-    if abs(float(sg.turning(work).sum())) > 3.5 * math.pi:  # enough turning for two loops or more
+    special = _helix_or_scribble(work, n, diag, sg.path_length(work))
+    if special is not None:
+        return special
+    work = sg.resample(sg.remove_small_loops(work), n)  # loops at corners are flourishes, not coils
+    sigma = max(noise, weights.relative_noise * diag)
+    closed, loop = _closed_loop(raw, work, diag, sigma)
+    if not closed:
+        work = sg.resample(sg.remove_hooks(work), n)
+        if _polygon_left_open(work, diag):
+            closed, loop = True, work
+    if not closed:
+        found = open_shapes.classify_open(work, noise)
+        round_left_open = found.kind in ("circle", "ellipse")
+        if _inside(found.geometry, *_bounds(raw, noise, OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN)):
+            return found
+        return _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
+                     weights, raw, noise)
+    candidates: list[Candidate | None] = [*polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise),
+                                          round_shape(loop)]
+    return _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise)
+
+
+def _polygon_left_open(work: np.ndarray, diag: float) -> bool:
+    """Straight sides turning most of the way round, the last one heading for the start: a polygon the pen
+    left before closing it."""
+    length = sg.path_length(work)
+    if length < 1.75 * diag or sf.closure(work, diag) >= 0.42:
+        return False
+    th = sg.turning(work)
+    if abs(float(th.sum())) < 1.25 * math.pi:
+        return False
+    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs)
+            and sf.heading_home(work, corners))
+
+
+def _bounds(raw: np.ndarray, noise: float, share: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    margin = (share or BOUNDS_MARGIN) * sg.bbox_diagonal(raw) + noise
+    return raw.min(axis=0) - margin, raw.max(axis=0) + margin
+
+
+def _score(c: Candidate, n: int, sigma: float, weights: Weights) -> float:
+    mse = c.rss / n
+    return (EFFECTIVE_SAMPLES * math.log(mse + sigma * sigma)
+            + weights.complexity * c.params * math.log(EFFECTIVE_SAMPLES))
+
+
+def _rank(candidates: list[Candidate], n: int, sigma: float, weights: Weights, raw: np.ndarray,
+          noise: float) -> Recognition:
+    scored = sorted(((_score(c, n, sigma, weights), i, c) for i, c in enumerate(candidates)
+                     if math.isfinite(c.rss)), key=lambda t: (t[0], t[1]))
+    lo, hi = _bounds(raw, noise)
+    kept = [(s, c) for s, _, c in scored if _inside(c.geometry, lo, hi)]
+    if not kept:
+        return Recognition(None, 0.0, None, (), "no shape fits the stroke")
+    best_score = kept[0][0]
+    weight = {}
+    for s, c in kept:
+        weight.setdefault(c.kind, math.exp(-(s - best_score) / CONFIDENCE_SCALE))
+    total = sum(weight.values())
+    best = kept[0][1]
+    alternatives = tuple((k, round(w / total, 4)) for k, w in weight.items() if k != best.kind)
+    return Recognition(best.kind, round(weight[best.kind] / total, 4), best.geometry, alternatives[:3])
+
+
+CONFIDENCE_SCALE = 6.0
+"""Score difference that divides a kind's weight by e when confidences are shared out."""
+
+
+def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -> tuple[bool, np.ndarray]:
+    """Whether the stroke closes (judged on the raw ends: a gap, or drawn past its start), and the stroke once
+    round: an overshoot past the start, or a start before the end, cut at the closest approach."""
+    if sg.path_length(work) < 1.75 * diag:  # the smoothed path: jitter lengthens the raw one
+        return False, work
+    th = sg.turning(work)
+    coarse = sg.turning(sg.resample(work, 40))
+    if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
+        loop = sf.one_loop(work, th)  # round and round one way: once round is the shape, if it is round
+        ellipse = fit_ellipse(loop)
+        if ellipse is not None and ellipse[4] < open_shapes.ROUND_ERROR:
+            return True, loop
+    if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
+        return True, sf.one_loop(work, th)  # a shape gone round twice over the same sides: once is enough
+    n = len(work)
+    gap = float(np.hypot(*(raw[-1] - raw[0])))
+    tail, head = work[n // 2:], work[: max(2, n // 2)]
+    d_tail = np.hypot(*(tail - work[0]).T)
+    d_head = np.hypot(*(head - work[-1]).T)
+    limit = max(CLOSED_GAP * diag, 4 * sigma)
+    if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit:
+        return False, work
+    loop = work
+    if float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < len(tail) - 2:
+        loop = work[: n // 2 + int(d_tail.argmin()) + 1]  # drawn past the start
+    elif float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1:
+        loop = work[int(d_head.argmin()):]  # started before where it ends
+    return True, (loop if len(loop) >= 8 else work)
+
+
+CLOSED_GAP = 0.2
+"""A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
+
+
+def _inside(g: Geometry | None, lo: np.ndarray, hi: np.ndarray) -> bool:
+    if g is None:
+        return False
+    pts = np.asarray(shape_points(g), dtype=float)
+    return bool(np.isfinite(pts).all() and (pts >= lo).all() and (pts <= hi).all())
+
+
+def _helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float) -> Recognition | None:
+    """A spring (loops advancing along an axis, turning smoothly) or a scribble back and forth, else None."""
+    th = sg.turning(work)
+    total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
+    if abs(total_turn) > 3.5 * math.pi:
         coil = sg.resample(sg.remove_hooks(work), n)
         coil_turn = sg.turning(coil)
         if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < 0.5:  # smooth: a star winds twice too
             helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
             if helix is not None:
-                return Recognition("helix", 0.9, helix, (("curve", 0.3),))
-    work = sg.remove_hooks(sg.remove_small_loops(work))  # loops at corners are flourishes, not coils
-    work = sg.resample(work, n)
-    diag = sg.bbox_diagonal(work)
-    length = sg.path_length(work)
-    th = sg.turning(work)
-    total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-
+                return Recognition("helix", 0.9, helix, (("curve", 0.1),))
     reversals = int(np.count_nonzero(np.abs(th) > math.radians(150)))
     if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):
         return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
-
-    smooth = sf.turn_concentration(sg.turning(sg.resample(work, 40))) < 0.5
-    if abs(total_turn) > 2.15 * math.pi and not smooth and sf.retraced(work, th, diag):
-        work = sf.one_loop(work, th)  # a polygon gone round twice over the same sides: once is enough
-        th = sg.turning(work)
-        total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    if abs(total_turn) > 2.0 * math.pi and smooth:
-        # a round shape drawn on past the start: judge the first time round only (a star, which
-        # turns twice round at sharp corners, keeps its whole path)
-        work = sf.one_loop(work, th)
-        diag, length = sg.bbox_diagonal(work), sg.path_length(work)
-        th = sg.turning(work)
-        total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-        loop = fit_ellipse(work)
-        if loop is not None and loop[4] < ROUND_ERROR:  # once round, and round: a circle or ellipse
-            geom, kind = round_geometry(loop, CIRCLE_RATIO)
-            return Recognition(kind, max(0.5, 1.0 - loop[4] / ROUND_ERROR * 0.5), geom, (("curve", 0.3),))
-    closure = sf.closure(work, diag)
-    closed = closure < 0.22 and length > 1.75 * diag
-    corners = sg.find_corners(work)
-    if not closed:
-        corners = sf.drop_end_stubs(work, corners, length)  # closed shapes may end on a short side
-    else:
-        trimmed = sf.trim_closed_hooks(work, corners, length)
-        if trimmed is not None:
-            work, corners = trimmed
-            th = sg.turning(work)
-            total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    # short runs (a thin box's ends) are too short to judge: smoothing rounds their ends
-    straight = [sg.chord_deviation(work[a:b + 1]) < STRAIGHT or sg.path_length(work[a:b + 1]) < 0.06 * length
-                for a, b in itertools.pairwise(corners)]
-    coarse = sg.turning(sg.resample(work, 40))
-    concentration = sf.turn_concentration(coarse)
-    if (not closed and closure < 0.42 and abs(total_turn) >= 1.25 * math.pi and len(straight) >= 3
-            and all(straight) and sf.heading_home(work, corners)):
-        closed = True  # straight sides turning round, the last one heading for the start: left open
-    ellipse = fit_ellipse(work) if closed else None
-
-    if closed:
-        round_err = ellipse[4] if ellipse is not None else math.inf
-        angular = (concentration > 0.55 and all(straight) and len(straight) >= 3
-                   and float(np.mean(sf.corner_turns(th, corners))) >= 55.0)  # an octagon's 45 degrees is round
-        if round_err < ROUND_ERROR and not angular:
-            geom, kind = round_geometry(ellipse, CIRCLE_RATIO)
-            conf = max(0.5, 1.0 - round_err / ROUND_ERROR * 0.5)
-            return Recognition(kind, conf, geom, (("polygon", 0.3),))
-        vertices = sf.polygon_vertices(work, corners)
-        if len(vertices) >= 3:
-            box = box_geometry(vertices)
-            if box is not None:
-                return Recognition("box", 0.9, box, (("polygon", 0.6),))
-            if angular or all(straight):
-                return Recognition("polygon", 0.85, Polygon(tuple(map(tuple, vertices))), (("ellipse", 0.2),))
-        if round_err < 2 * ROUND_ERROR:
-            geom, kind = round_geometry(ellipse, CIRCLE_RATIO)
-            return Recognition(kind, 0.5, geom, (("polygon", 0.4),))
-        if len(vertices) >= 3:
-            return Recognition("polygon", 0.6, Polygon(tuple(map(tuple, vertices))), (("curve", 0.3),))
-
-    if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()):
-        # most of a turn, smoothly: a round shape left open (people often stop short of the start)
-        open_ellipse = fit_ellipse(work)
-        if open_ellipse is not None and open_ellipse[4] < 0.6 * ROUND_ERROR:
-            geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
-            return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-
-    if len(straight) >= 2 and (all(straight) or _bent_polyline(work, th, corners)):
-        pts = tuple(tuple(work[c]) for c in corners)
-        return Recognition("polyline", 0.85, Polyline(pts), (("curve", 0.3),))
-
-    if len(corners) <= 3 or concentration < 0.5:
-        centre, radius, circle_err = fit_circle(work)
-        one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends
-        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
-            return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius),
-                               (("curve", 0.5),))
-    return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
-
-
-def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int]) -> bool:
-    """A polyline drawn with bowed or curled sides (a check mark's arms): it turns at a really sharp
-    corner, in at most three lobes none of which curls right round (a pigtail's loop), or mostly at
-    sharp corners with nearly straight sides (an arrow whose head doubles back). A question mark's
-    bend, where a corner finder may cut its curl, turns less than 90 degrees."""
-    turns = sf.corner_turns(th, corners)
-    lobes = sf.lobes(work)
-    few_lobes = len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0
-    if few_lobes and max(turns) >= VERY_SHARP_CORNER:
-        return True
-    if max(sf.bends(th, corners)) >= 120.0 or min(turns) < SHARP_CORNER or max(turns) < 90.0:
-        return False
-    share = sf.corner_share(th, corners)
-    worst = max(sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners))
-    if share >= 0.7 and worst < 1.4 * STRAIGHT:
-        return True
-    return few_lobes and share >= CORNER_SHARE
+    return None

@@ -1,0 +1,221 @@
+"""Competing interpretations of one stroke, each with its fit error and complexity; no ranking, no I/O.
+
+Every candidate is measured on the same points (the stroke resampled along its length), so their errors compare:
+``rss`` is the summed squared distance of those points to the candidate's shape, in the units the stroke is
+judged at, and ``params`` counts the numbers the shape needs (a line 4, a k-gon 2k, an ellipse 5, a cubic curve 6
+per segment + 2). `recognize` ranks them. Shapes are built from the stroke's own points (vertices are stroke
+points; arcs and ellipses span the stroke), so none reaches far outside it.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from physink_tui.scene import stroke_geometry as sg
+from physink_tui.scene.beautify import arc_geometry, box_geometry, round_geometry
+from physink_tui.scene.polygon_fit import PolygonFit, best_polygons
+from physink_tui.scene.primitives import Curve, Geometry, Line, Polygon, Polyline
+from physink_tui.scene.shape_fits import fit_circle, fit_cubic, fit_ellipse
+
+CIRCLE_RATIO = 0.8
+"""Minor/major axis ratio above which an ellipse is a circle."""
+MAX_SIDES = 10
+"""The most sides a polygon or polyline candidate may have."""
+
+
+@dataclass(frozen=True, slots=True)
+class Candidate:
+    """One interpretation of a stroke.
+
+    Attributes:
+        kind: a recognition kind (`primitives.KINDS`).
+        geometry: its beautified shape, in the units the stroke was judged at.
+        rss: summed squared distance of the judged points to the shape (those units squared).
+        params: how many numbers the shape needs (its complexity).
+        sides: segments of a polyline or polygon, else 0.
+    """
+
+    kind: str
+    geometry: Geometry
+    rss: float
+    params: int
+    sides: int = 0
+
+
+def _pt(p: np.ndarray) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
+
+
+def polygonal(work: np.ndarray, *, closed: bool, tolerance: float, noise: float) -> list[Candidate]:
+    """Lines, polylines, boxes and polygons: the best chain of chords for each number of sides."""
+    fits = best_polygons(work, closed=closed, max_sides=MAX_SIDES, tolerance=tolerance)
+    out = []
+    for k, fit in sorted(fits.items()):
+        if not _real_corners(fit, closed=closed, noise=noise):
+            continue
+        if closed:
+            out.append(_closed_candidate(k, fit))
+        elif k == 1:
+            out.append(Candidate("line", Line(_pt(fit.vertices[0]), _pt(fit.vertices[-1])), fit.rss, 4, 1))
+        else:
+            out.append(Candidate("polyline", Polyline(tuple(map(_pt, fit.vertices))), fit.rss, 2 * (k + 1), k))
+    return out
+
+
+MIN_CORNER_DEG = 25.0
+"""Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""
+HAIRPIN_DEG = 172.0
+"""A closed outline never turns back on itself at one vertex by more than this."""
+CHAMFER = 0.25
+CHAMFER_TURN_DEG = 62.0
+"""A closed outline's side shorter than ``CHAMFER`` of its neighbours, turning less than this at both ends,
+is a rounded corner."""
+MAX_BOW = 0.15
+"""Every side strays from its chord by at most this share of the chord (plus the pen's noise)."""
+
+
+def _real_corners(fit: PolygonFit, *, closed: bool, noise: float) -> bool:
+    """Whether each vertex is a real corner and each side nearly straight."""
+    pts, idx = fit.points, fit.indices
+    verts = pts[list(idx)]
+    sides = np.diff(verts, axis=0)
+    lengths = np.hypot(*sides.T)
+    if (lengths == 0).any():
+        return False
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    if closed:
+        heading = np.append(heading, heading[0])
+    turns = np.abs((np.diff(heading) + np.pi) % (2 * np.pi) - np.pi)
+    if len(turns) and float(np.degrees(turns).min()) < MIN_CORNER_DEG:
+        return False
+    if closed:
+        degrees = np.degrees(turns)
+        if float(degrees.max()) > HAIRPIN_DEG:
+            return False  # an outline doubling back on itself: a thin wall's end is two corners, not a point
+        # a short side between two gentle turns is a rounded corner cut, not a side (a wall's end turns twice
+        # by a right angle)
+        for s in range(len(lengths)):
+            shorter = min(lengths[s - 1], lengths[(s + 1) % len(lengths)])
+            if lengths[s] < CHAMFER * shorter and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG:
+                return False
+    for (a, b), chord in zip(itertools.pairwise(idx), lengths, strict=True):
+        if b - a > 5 and chord > 10 * noise:  # a short side's bow is only where its corners' points fell
+            rel = pts[a + 1:b] - pts[a]
+            d = pts[b] - pts[a]
+            bow = float(np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]).max()) / chord  # largest distance off
+            if bow > MAX_BOW * chord + 2 * noise:
+                return False
+    return True
+
+
+def _closed_candidate(k: int, fit: PolygonFit) -> Candidate:
+    verts = fit.vertices
+    if k == 4:
+        box = box_geometry(verts)
+        if box is not None:
+            return Candidate("box", box, fit.rss, 8, 4)
+    return Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k, k)
+
+
+def ellipse_distances(pts: np.ndarray, centre: np.ndarray, rx: float, ry: float, angle: float) -> np.ndarray:
+    """Distance of each point to the ellipse along the ray from its centre (exact for a circle)."""
+    c, s = math.cos(angle), math.sin(angle)
+    rel = pts - centre
+    u = rel[:, 0] * c + rel[:, 1] * s
+    v = -rel[:, 0] * s + rel[:, 1] * c
+    r = np.sqrt((u / rx) ** 2 + (v / ry) ** 2)
+    dist = np.hypot(u, v)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(r > 0, np.abs(dist - dist / np.where(r > 0, r, 1.0)), min(rx, ry))
+
+
+def round_shape(work: np.ndarray) -> Candidate | None:
+    """A circle or an ellipse through the stroke (closed, or most of the way round)."""
+    ellipse = fit_ellipse(work)
+    if ellipse is None:
+        return None
+    centre, rx, ry, angle, _ = ellipse
+    if not (math.isfinite(rx) and math.isfinite(ry)) or ry <= 0:
+        return None
+    rss = float(np.sum(ellipse_distances(work, centre, rx, ry, angle) ** 2))
+    geometry, kind = round_geometry(ellipse, CIRCLE_RATIO)
+    return Candidate(kind, geometry, rss, 3 if kind == "circle" else 5)
+
+
+def arc(work: np.ndarray) -> Candidate | None:
+    """Part of a circle, turning one way by less than 1.8 pi."""
+    centre, radius, _ = fit_circle(work)
+    if not math.isfinite(radius):
+        return None
+    geometry = arc_geometry(work, centre, radius)
+    if not 0.3 < abs(geometry.sweep) < 1.8 * math.pi:
+        return None
+    rss = float(np.sum((np.hypot(*(work - centre).T) - radius) ** 2))
+    return Candidate("arc", geometry, rss, 5)
+
+
+def curve(work: np.ndarray, corners: list[int], tolerance: float) -> Candidate:
+    """Cubic Bézier segments between the stroke's sharp corners, split until each fits within ``tolerance``
+    (an absolute distance)."""
+    ctrl: list[tuple[float, float]] = [_pt(work[0])]
+    rss = 0.0
+    segments = 0
+
+    def add(a: int, b: int, depth: int) -> None:
+        nonlocal rss, segments
+        run = work[a:b + 1]
+        cubic, fitted = fit_cubic_points(run)
+        dist = np.hypot(*(fitted - run).T)
+        if float(dist.max()) > tolerance and depth < 5 and b - a >= 8:
+            mid = (a + b) // 2
+            add(a, mid, depth + 1)
+            add(mid, b, depth + 1)
+            return
+        rss += float(np.sum(dist ** 2))
+        segments += 1
+        ctrl.extend(_pt(p) for p in cubic[1:])
+
+    for a, b in itertools.pairwise(corners):
+        add(a, b, 0)
+    return Candidate("curve", Curve(tuple(ctrl)), rss, 6 * segments + 2, segments)
+
+
+def fit_cubic_points(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """One cubic Bézier through the run's ends and the fitted points at the run's own parameters."""
+    ctrl, _ = fit_cubic(run)
+    n = len(run)
+    seg = np.hypot(*np.diff(run, axis=0).T)
+    u = np.concatenate([[0.0], np.cumsum(seg)])
+    u = u / u[-1] if u[-1] else np.linspace(0, 1, n)
+    b = np.column_stack([(1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3])
+    return ctrl, b @ ctrl
+
+
+def sharp_corners(work: np.ndarray, min_turn_deg: float = 100.0, reach: int = 3) -> list[int]:
+    """Indices (ends included) where the path turns by at least ``min_turn_deg`` within a few points: the
+    cusps a smooth curve must break at (a caret's tip), not the bends it follows."""
+    th = sg.turning(work)
+    n = len(work)
+    if n < 2 * reach + 3:
+        return [0, n - 1]
+    window = np.convolve(th, np.ones(2 * reach + 1), mode="same")
+    strong = np.abs(window) >= math.radians(min_turn_deg)
+    out = [0]
+    i = 0
+    while i < len(strong):
+        if strong[i]:
+            j = i
+            while j < len(strong) and strong[j]:
+                j += 1
+            k = i + int(np.argmax(np.abs(window[i:j])))
+            if k + 1 - out[-1] >= reach and n - 1 - (k + 1) >= reach:
+                out.append(k + 1)
+            i = j
+        else:
+            i += 1
+    out.append(n - 1)
+    return out

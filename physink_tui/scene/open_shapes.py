@@ -1,0 +1,104 @@
+"""Open strokes: lines, polylines, arcs, round shapes left open and free curves, judged by how the path turns;
+no closed shapes (those are ranked in `recognize`), no I/O.
+
+A line is judged at the coarse scale of the whole stroke; a polyline turns at corners between nearly straight
+sides (bowed sides allowed when its corners are really sharp); an arc turns one way along a circle; a stroke
+turning smoothly most of the way round is a round shape left open; anything else is a curve of cubic pieces.
+Straightness allows the pen's absolute noise as well as a share of each side's length.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from physink_tui.scene import stroke_features as sf
+from physink_tui.scene import stroke_geometry as sg
+from physink_tui.scene.beautify import arc_geometry, curve_geometry, round_geometry
+from physink_tui.scene.primitives import Line, Polyline, Recognition
+from physink_tui.scene.shape_fits import fit_circle, fit_ellipse, fit_line
+
+STRAIGHT = 0.12
+"""A side is straight when it strays from its chord by less than this share of the chord (plus the noise)."""
+LINE = 0.045
+"""A whole stroke is a line when it strays from its fit by less than this share of its length (plus noise)."""
+ROUND_ERROR = 0.09
+VERY_SHARP_CORNER = 100.0
+SHARP_CORNER = 62.0
+CORNER_SHARE = 0.45
+NEARLY_ROUND = 1.25
+CIRCLE_RATIO = 0.8
+
+
+def _pt(p: np.ndarray) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
+
+
+def line(raw: np.ndarray, noise: float) -> Recognition | None:
+    """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
+    short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
+    coarse = sg.smooth(sg.resample(raw, 48))
+    coarse = sg.resample(sg.remove_hooks(coarse), 48)
+    _, _, err = fit_line(coarse)
+    length = sg.path_length(coarse)
+    chord = float(np.hypot(*(coarse[-1] - coarse[0])))
+    if chord == 0.0:
+        return None
+    err = max(0.0, err - noise / chord)  # the pen's own wobble is not a bend
+    slack = 1.0 + 3 * noise / chord
+    if (err < LINE and length < 1.12 * chord * slack) or (err < 0.5 * LINE and length < 1.3 * chord * slack):
+        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])), (("arc", 0.2),))
+    return None
+
+
+def straight(run: np.ndarray, noise: float) -> bool:
+    chord = float(np.hypot(*(run[-1] - run[0])))
+    return chord > 0 and sg.chord_deviation(run) * chord < max(STRAIGHT * chord, 1.5 * noise)
+
+
+def classify_open(work: np.ndarray, noise: float) -> Recognition:
+    """An open stroke (resampled, hooks and corner loops removed) as a round shape left open, a polyline, an
+    arc or a curve."""
+    length = sg.path_length(work)
+    th = sg.turning(work)
+    total_turn = float(th.sum())
+    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    straight_runs = [straight(work[a:b + 1], noise) or sg.path_length(work[a:b + 1]) < 0.06 * length
+                     for a, b in itertools.pairwise(corners)]
+    coarse = sg.turning(sg.resample(work, 40))
+    concentration = sf.turn_concentration(coarse)
+    if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()):
+        # most of a turn, smoothly: a round shape left open (people often stop short of the start)
+        open_ellipse = fit_ellipse(work)
+        if open_ellipse is not None and open_ellipse[4] < 0.6 * ROUND_ERROR:
+            geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
+            return Recognition(kind, 0.7, geom, (("arc", 0.5),))
+    if len(straight_runs) >= 2 and (all(straight_runs) or _bent_polyline(work, th, corners)):
+        return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
+    if len(corners) <= 3 or concentration < 0.5:
+        centre, radius, circle_err = fit_circle(work)
+        one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends
+        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
+            return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius), (("curve", 0.5),))
+    return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
+
+
+def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int]) -> bool:
+    """A polyline drawn with bowed or curled sides (a check mark's arms): it turns at a really sharp
+    corner, in at most three lobes none of which curls right round (a pigtail's loop), or mostly at
+    sharp corners with nearly straight sides (an arrow whose head doubles back). A question mark's
+    bend, where a corner finder may cut its curl, turns less than 90 degrees."""
+    turns = sf.corner_turns(th, corners)
+    lobes = sf.lobes(work)
+    few_lobes = len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0
+    if few_lobes and max(turns) >= VERY_SHARP_CORNER:
+        return True
+    if max(sf.bends(th, corners)) >= 120.0 or min(turns) < SHARP_CORNER or max(turns) < 90.0:
+        return False
+    share = sf.corner_share(th, corners)
+    worst = max(sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners))
+    if share >= 0.7 and worst < 1.4 * STRAIGHT:
+        return True
+    return few_lobes and share >= CORNER_SHARE
