@@ -8,9 +8,12 @@ import random
 import statistics
 
 import pytest
-from penmodels.hurried import HurriedPen
-from penmodels.journal import single_strokes
+from penmodels.hurried import HurriedPen, single_strokes
+from penmodels.journal import hurried_drawing, write_hurried_journal
 from penmodels.shapes import XMark, box, circle, polygon, u_container
+from scenarios.thesis import egg_cracker
+
+from physink_tui.journal.reader import read_journal
 
 SEEDS = range(6)
 CORNERS = ((650.0, 440.0), (950.0, 440.0), (950.0, 560.0), (650.0, 560.0))
@@ -81,3 +84,12 @@ def test_single_shapes_come_as_one_stroke_of_timed_points_on_the_shape(shape) ->
     (stroke,) = single_strokes(shape, seed=3)
     assert stroke[0][2] == 0.0 and all(b[2] > a[2] for a, b in itertools.pairwise(stroke))
     assert len(stroke) > 20
+
+
+def test_a_hurried_drawing_is_a_journal_that_reads_back_unchanged(tmp_path) -> None:
+    steps = egg_cracker().steps
+    path = tmp_path / "egg_cracker_hurried.physink.jsonl"
+    write_hurried_journal(steps, 1, path)
+    journal = read_journal(path)
+    assert not journal.warnings and journal.truncated is None
+    assert list(journal.entries) == hurried_drawing(steps, 1)[0]

@@ -335,3 +335,18 @@ class HurriedPen:
 def touching(reports: list[PenPoint]) -> list[tuple[float, float, float]]:
     """The ``(x, y, t)`` of the reports where the tip touches: the stroke the gesture engine will see."""
     return [(r.x, r.y, r.t) for r in reports if r.tip]
+
+
+def single_strokes(shape: Shape, seed: int = 0) -> list[list[tuple[float, float, float]]]:
+    """The hurried pen's strokes for one shape (`penmodels.shapes.box`, `u_container`, `circle`, `polygon` ...):
+    per pen-down the ``(x, y, t)`` the tip touched, canvas pixels and seconds from the first landing.
+
+    >>> from penmodels.shapes import box
+    >>> strokes = single_strokes(box((800, 500), 200, 80, angle=0.3), seed=1)
+    >>> len(strokes), strokes[0][0][2]
+    (1, 0.0)
+    """
+    strokes = HurriedPen(random.Random(seed)).draw(shape, 0.0)
+    out = [touching(reports) for reports in strokes]
+    t0 = out[0][0][2]
+    return [[(x, y, round(t - t0, 6)) for x, y, t in stroke] for stroke in out]

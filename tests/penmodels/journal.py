@@ -1,13 +1,15 @@
-"""A scenario's drawing by the hurried pen as journal ``pen`` lines plus what is said and typed; writes no file."""
+"""A scenario's drawing by the hurried pen as journal ``pen`` lines plus what is said and typed, for a session."""
 
 from __future__ import annotations
 
+import os
 import random
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 from penmodels.hurried import HurriedPen, PenPoint, touching
 from penmodels.shapes import CANVAS, Shape, group_scenario_strokes
+from physink_tui.journal.compose import write_journal
 from physink_tui.journal.entries import CommandEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.session.session import Session
 
@@ -77,16 +79,8 @@ def hurried_session(steps: Sequence, seed: int) -> tuple[Session, list[JournalEn
     return Session.from_header(header()).run(entries), entries, drawn
 
 
-def single_strokes(shape: Shape, seed: int = 0) -> list[list[tuple[float, float, float]]]:
-    """The hurried pen's strokes for one shape (`penmodels.shapes.box`, `u_container`, `circle`, `polygon` ...):
-    per pen-down the ``(x, y, t)`` the tip touched, canvas pixels and seconds from the first landing.
-
-    >>> from penmodels.shapes import box
-    >>> strokes = single_strokes(box((800, 500), 200, 80, angle=0.3), seed=1)
-    >>> len(strokes), strokes[0][0][2]
-    (1, 0.0)
-    """
-    strokes = HurriedPen(random.Random(seed)).draw(shape, 0.0)
-    out = [touching(reports) for reports in strokes]
-    t0 = out[0][0][2]
-    return [[(x, y, round(t - t0, 6)) for x, y, t in stroke] for stroke in out]
+def write_hurried_journal(steps: Sequence, seed: int, path: str | os.PathLike[str]) -> None:
+    """Write the hurried drawing of ``steps`` as a journal at ``path`` (which must not exist), to replay with
+    ``physink replay PATH --out DIR`` or open in the TUI."""
+    entries, _ = hurried_drawing(steps, seed)
+    write_journal(path, header(), entries)
