@@ -56,6 +56,32 @@ def _size(pts: list[Point]) -> float:
     return math.hypot(max(xs) - min(xs), max(ys) - min(ys))
 
 
+@dataclass(frozen=True, slots=True)
+class Habits:
+    """How often the hand does each thing, and how much; the defaults are the hurried hand of `HurriedPen`.
+
+    Changing one leaves every random draw in place, so a seed draws the same strokes but for that habit (to
+    find which habit a recogniser stumbles on).
+
+    Attributes:
+        corner_overshoot: share of corners run past (then cut back onto the next side), 0..1.
+        corner_round: share of corners rounded; the rest are turned cleanly (the two add up to at most 1).
+        close_past: share of closed shapes drawn on past their start; the rest stop a little short of it.
+        mid_side: closed polygons start mid-side (else at a corner).
+        hook: chance of a hook at each end of a stroke, 0..1.
+        bow: the largest bow of a side longer than 30 px, as a share of its length.
+        tremor: scale of the tremor and the sensor noise (1: about a pixel).
+    """
+
+    corner_overshoot: float = 0.45
+    corner_round: float = 0.25
+    close_past: float = 0.6
+    mid_side: bool = True
+    hook: float = 0.75
+    bow: float = 0.01
+    tremor: float = 1.0
+
+
 class HurriedPen:
     """A person drawing in a hurry.
 
@@ -77,11 +103,13 @@ class HurriedPen:
     Args:
         rng: every random choice comes from it (the same seed gives the same reports).
         rate_hz: the tablet's report rate.
+        habits: how often the hand overshoots, rounds, hooks ... (`Habits`).
     """
 
-    def __init__(self, rng: random.Random, rate_hz: float = 200.0) -> None:
+    def __init__(self, rng: random.Random, rate_hz: float = 200.0, habits: Habits | None = None) -> None:
         self.rng = rng
         self.dt = 1.0 / rate_hz
+        self.habits = habits or Habits()
 
     # -- the path the hand means to take ------------------------------------------------------------------
 
@@ -107,11 +135,11 @@ class HurriedPen:
         a, b = _unit(v[0] - prev[0], v[1] - prev[1]), _unit(nxt[0] - v[0], nxt[1] - v[1])
         shortest = min(math.dist(prev, v), math.dist(v, nxt))
         roll = rng.random()
-        if roll < 0.45:  # runs past the corner, then cuts back onto the next side
+        if roll < self.habits.corner_overshoot:  # runs past the corner, then cuts back onto the next side
             d = min(rng.uniform(2.0, 6.0), 0.12 * shortest)
             back = rng.uniform(1.0, 2.0) * d
             return [(v[0] + a[0] * d, v[1] + a[1] * d), (v[0] + b[0] * back, v[1] + b[1] * back)]
-        if roll < 0.7:  # rounded
+        if roll < self.habits.corner_overshoot + self.habits.corner_round:  # rounded
             r = rng.uniform(0.05, 0.15) * shortest
             start = (v[0] - a[0] * r, v[1] - a[1] * r)
             return [start, *_quad(start, v, (v[0] + b[0] * r, v[1] + b[1] * r), 6)]
@@ -124,7 +152,7 @@ class HurriedPen:
         n = len(verts)
         i = rng.randrange(n)
         a, b = verts[i], verts[(i + 1) % n]
-        start = _lerp(a, b, rng.uniform(0.25, 0.75))
+        start = _lerp(a, b, rng.uniform(0.25, 0.75) if self.habits.mid_side else 0.0)
         route = [start]
         for k in range(n):
             corner = verts[(i + 1 + k) % n]
@@ -133,7 +161,7 @@ class HurriedPen:
         side = _unit(b[0] - a[0], b[1] - a[1])
         drift = rng.uniform(-1.0, 1.0) * min(3.0, 0.1 * math.dist(a, b))  # does not come back onto the same line
         normal = (-side[1] * drift, side[0] * drift)
-        if rng.random() < 0.6:  # on past the start
+        if rng.random() < self.habits.close_past:  # on past the start
             over = min(rng.uniform(0.03, 0.08) * perimeter, 0.8 * math.dist(start, b))
             end = (start[0] + side[0] * over + normal[0], start[1] + side[1] * over + normal[1])
             route += [(start[0] + normal[0], start[1] + normal[1]), end]
@@ -152,7 +180,8 @@ class HurriedPen:
         rng = self.rng
         theta0 = rng.uniform(0.0, 2.0 * math.pi)
         turn = 1.0 if rng.random() < 0.5 else -1.0
-        sweep = 2.0 * math.pi + (rng.uniform(0.15, 0.5) if rng.random() < 0.6 else -rng.uniform(0.1, 0.3))
+        past = rng.random() < self.habits.close_past
+        sweep = 2.0 * math.pi + (rng.uniform(0.15, 0.5) if past else -rng.uniform(0.1, 0.3))
         egg, egg_at = rng.uniform(0.0, 0.04), rng.uniform(0.0, math.pi)
         drift = rng.uniform(-0.05, 0.05)  # the closing part runs a little inside or outside the start
         n = max(24, int(sweep * max(oval.rx, oval.ry) / 1.5))
@@ -208,7 +237,7 @@ class HurriedPen:
             if length == 0.0:
                 continue
             n = max(1, math.ceil(length))
-            bow = self.rng.uniform(-0.01, 0.01) * length if length > 30.0 else 0.0
+            bow = self.rng.uniform(-self.habits.bow, self.habits.bow) * length if length > 30.0 else 0.0
             nx, ny = -(b[1] - a[1]) / length, (b[0] - a[0]) / length
             for k in range(1, n + 1):
                 u = k / n
@@ -226,14 +255,14 @@ class HurriedPen:
 
         reach = min(6, len(pts) - 1)
         d0, d1 = heading(pts[0], pts[reach]), heading(pts[-1 - reach], pts[-1])
-        if rng.random() < 0.75:
+        if rng.random() < self.habits.hook:
             h = min(rng.uniform(2.0, 5.0), 0.08 * size)
             side = rng.choice((-1.0, 1.0))
             away = _rot(d0, side * math.radians(rng.uniform(100.0, 160.0)))
             h0 = (pts[0][0] + away[0] * h, pts[0][1] + away[1] * h)
             ctrl = (pts[0][0] - d0[0] * h * 0.5, pts[0][1] - d0[1] * h * 0.5)
             pts = [h0, *_quad(h0, ctrl, pts[0], 6)[:-1], *pts]
-        if rng.random() < 0.75:
+        if rng.random() < self.habits.hook:
             h = min(rng.uniform(2.0, 5.0), 0.08 * size)
             side = rng.choice((-1.0, 1.0))
             away = _rot(d1, side * math.radians(rng.uniform(90.0, 150.0)))
@@ -277,7 +306,8 @@ class HurriedPen:
         for i in range(1, len(pts)):
             times.append(times[-1] + math.dist(pts[i - 1], pts[i]) / (0.5 * (v[i - 1] + v[i])))
         duration = times[-1]
-        amp = rng.uniform(0.5, 0.9)
+        shaky = self.habits.tremor
+        amp = rng.uniform(0.5, 0.9) * shaky
         tremor = [(rng.uniform(7.0, 11.0), rng.uniform(0.0, 2 * math.pi)) for _ in range(4)]
         base, wander = rng.uniform(0.35, 0.65), rng.uniform(0.0, 2 * math.pi)
         ramp_up, ramp_down = rng.uniform(0.015, 0.04), rng.uniform(0.015, 0.04)
@@ -285,9 +315,9 @@ class HurriedPen:
         def shake(tau: float) -> Point:
             (f1, p1), (f2, p2), (f3, p3), (f4, p4) = tremor
             return (amp * (math.sin(2 * math.pi * f1 * tau + p1) + 0.5 * math.sin(2 * math.pi * f2 * tau + p2))
-                    + rng.gauss(0.0, 0.3),
+                    + rng.gauss(0.0, 0.3 * shaky),
                     amp * (math.sin(2 * math.pi * f3 * tau + p3) + 0.5 * math.sin(2 * math.pi * f4 * tau + p4))
-                    + rng.gauss(0.0, 0.3))
+                    + rng.gauss(0.0, 0.3 * shaky))
 
         def at(tau: float) -> Point:
             j = min(max(bisect.bisect_right(times, tau) - 1, 0), len(pts) - 2)
@@ -337,16 +367,17 @@ def touching(reports: list[PenPoint]) -> list[tuple[float, float, float]]:
     return [(r.x, r.y, r.t) for r in reports if r.tip]
 
 
-def single_strokes(shape: Shape, seed: int = 0) -> list[list[tuple[float, float, float]]]:
+def single_strokes(shape: Shape, seed: int = 0, habits: Habits | None = None) -> list[list[tuple[float, float, float]]]:
     """The hurried pen's strokes for one shape (`penmodels.shapes.box`, `u_container`, `circle`, `polygon` ...):
-    per pen-down the ``(x, y, t)`` the tip touched, canvas pixels and seconds from the first landing.
+    per pen-down the ``(x, y, t)`` the tip touched, canvas pixels and seconds from the first landing. ``habits``
+    changes how the hand draws (`Habits`; e.g. ``Habits(hook=0)`` for no hooks).
 
     >>> from penmodels.shapes import box
     >>> strokes = single_strokes(box((800, 500), 200, 80, angle=0.3), seed=1)
     >>> len(strokes), strokes[0][0][2]
     (1, 0.0)
     """
-    strokes = HurriedPen(random.Random(seed)).draw(shape, 0.0)
+    strokes = HurriedPen(random.Random(seed), habits=habits).draw(shape, 0.0)
     out = [touching(reports) for reports in strokes]
     t0 = out[0][0][2]
     return [[(x, y, round(t - t0, 6)) for x, y, t in stroke] for stroke in out]
