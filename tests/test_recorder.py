@@ -4,6 +4,8 @@ splits and the assisted edit."""
 
 from __future__ import annotations
 
+import math
+
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.graph import check_acyclic, descendants
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides
@@ -78,16 +80,37 @@ def test_reports_of_one_pair_within_15_frames_are_one_contact() -> None:
     recorder = Recorder({"ball": box("ball", 20, 20), "p": box("p", 200, 20)}, frozenset({"ball"}))
     run = Run(recorder)
     hit = ContactSeen("ball", "p", (300, 390), (0.0, 1.0))
-    poses = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}
-    run.step(poses, grabbed="ball")
-    run.step(poses, [hit], grabbed="ball")
+    on, away = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}, {"ball": moving(300, 300, 0, -100),
+                                                                        "p": still(300, 400)}
+    run.step(away, grabbed="ball")
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])
     for _ in range(14):
-        run.step(poses, grabbed="ball")
-    run.step(poses, [hit], grabbed="ball")  # 15 frames later: the same contact
+        run.step(away, grabbed="ball")  # 70 units clear: it has left
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])  # 15 frames later: the same contact
     assert [e.type for e in run.timeline.events].count("contact") == 1
     for _ in range(16):
-        run.step(poses, grabbed="ball")
-    run.step(poses, [hit], grabbed="ball")  # 17 frames after the last report: a new one
+        run.step(away, grabbed="ball")
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])  # 17 frames after the last report: a new one
+    assert [e.type for e in run.timeline.events].count("contact") == 2
+
+
+def test_a_body_that_lifts_off_by_less_than_half_its_size_and_touches_again_stays_in_one_contact() -> None:
+    # a 20 x 20 box (size: a disc of its area, 22.6 across) rattles on a platform, then really bounces
+    recorder = Recorder({"ball": box("ball", 20, 20), "p": box("p", 200, 20)}, frozenset({"ball"}))
+    run = Run(recorder)
+    hit = ContactSeen("ball", "p", (300, 390), (0.0, 1.0))
+    on = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}
+    run.step({"ball": moving(300, 300, 0, 100), "p": still(300, 400)}, grabbed="ball")
+    for _ in range(5):
+        run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])
+        for k in range(60):  # half a second off the platform, at most 10 units up: it has not left
+            run.step({"ball": moving(300, 380 - 10 * math.sin(math.pi * k / 60), 0, 30), "p": still(300, 400)},
+                     grabbed="ball")
+    assert [e.type for e in run.timeline.events].count("contact") == 1
+    for k in range(60):  # up 15 units (more than half its size) and down again: a second bounce
+        run.step({"ball": moving(300, 380 - 15 * math.sin(math.pi * k / 60), 0, 30), "p": still(300, 400)},
+                 grabbed="ball")
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])
     assert [e.type for e in run.timeline.events].count("contact") == 2
 
 
