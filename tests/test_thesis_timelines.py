@@ -22,7 +22,7 @@ SCENARIOS = {s.name: s for s in all_scenarios()}
 
 
 def names_of(session: Session) -> dict[str, str]:
-    return session.scene.labels()
+    return session.scene.names()
 
 
 def text_of(name: str) -> list[str]:
