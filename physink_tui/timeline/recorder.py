@@ -99,7 +99,7 @@ class Recorder:
     timeline: Timeline = field(default_factory=Timeline)
     _next: int = 1
     _open: dict[str, OpenMovement] = field(default_factory=dict)
-    _touches: Touches | None = None
+    _touches: Touches = field(init=False)
     _ended_pairs: set[frozenset[str]] = field(default_factory=set)
     _touching: frozenset[frozenset[str]] = frozenset()
     _separated_at: dict[frozenset[str], float] = field(default_factory=dict)
