@@ -1,6 +1,6 @@
 """The recorder builds the thesis's events from observations alone (no physics here): qualitative geometry
-(figures 3-6 and 3-8, containers), the 15-frame rule, end-contacts (figure 3-9), pushes, concurrent movement
-splits and the assisted edit."""
+(figures 3-6 and 3-8, containers), the 15-frame rule and contacts that go on, end-contacts (figure 3-9), pushes,
+concurrent movement splits and the assisted edit."""
 
 from __future__ import annotations
 
@@ -222,3 +222,22 @@ def test_a_contact_with_a_body_playing_back_splits_its_recorded_movement() -> No
     basket = next(e for e in timeline.events if e.type == "contact" and "k" in e.components)
     assert basket.causes == (tail.id,)  # the landing now follows the collision
     check_acyclic(timeline)
+
+
+def test_a_body_set_moving_again_in_a_contact_that_goes_on_is_moved_by_that_contact() -> None:
+    # a peg slides over a spring-held platform; the platform settles, then jitters under the peg again
+    outlines = {"peg": box("peg", 40, 10), "platform": box("platform", 100, 10)}
+    recorder = Recorder(outlines, frozenset(outlines))
+    run = Run(recorder)
+    run.step({"peg": moving(60, 90, 120, 0), "platform": still(100, 100)}, grabbed="peg")
+    hit = ContactSeen("peg", "platform", (60, 95), (0.0, 1.0))
+    run.step({"peg": moving(61, 90, 120, 0), "platform": moving(100, 100, 0, 30)}, [hit], grabbed="peg",
+             touching=[("peg", "platform")])
+    for k in range(40):  # the platform comes to rest under the sliding peg, then bobs up again
+        vy = 0.0 if k < 20 else -30.0
+        run.step({"peg": moving(62 + k, 90, 120, 0), "platform": moving(100, 100, 0, vy)}, grabbed="peg",
+                 touching=[("peg", "platform")])
+    timeline = run.timeline
+    (contact,) = [e for e in timeline.events if e.type == "contact"]
+    platform = [e for e in timeline.events if e.type == "movement" and e.components[0] == "platform"]
+    assert platform and all(e.causes == (contact.id,) for e in platform)
