@@ -1,8 +1,10 @@
 """The recorder builds the thesis's events from observations alone (no physics here): qualitative geometry
-(figures 3-6 and 3-8, containers), the 15-frame rule, end-contacts (figure 3-9), pushes, concurrent movement
-splits and the assisted edit."""
+(figures 3-6 and 3-8, containers), the 15-frame rule and contacts that go on, end-contacts (figure 3-9), pushes,
+concurrent movement splits and the assisted edit."""
 
 from __future__ import annotations
+
+import math
 
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.graph import check_acyclic, descendants
@@ -78,16 +80,37 @@ def test_reports_of_one_pair_within_15_frames_are_one_contact() -> None:
     recorder = Recorder({"ball": box("ball", 20, 20), "p": box("p", 200, 20)}, frozenset({"ball"}))
     run = Run(recorder)
     hit = ContactSeen("ball", "p", (300, 390), (0.0, 1.0))
-    poses = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}
-    run.step(poses, grabbed="ball")
-    run.step(poses, [hit], grabbed="ball")
+    on, away = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}, {"ball": moving(300, 300, 0, -100),
+                                                                        "p": still(300, 400)}
+    run.step(away, grabbed="ball")
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])
     for _ in range(14):
-        run.step(poses, grabbed="ball")
-    run.step(poses, [hit], grabbed="ball")  # 15 frames later: the same contact
+        run.step(away, grabbed="ball")  # 70 units clear: it has left
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])  # 15 frames later: the same contact
     assert [e.type for e in run.timeline.events].count("contact") == 1
     for _ in range(16):
-        run.step(poses, grabbed="ball")
-    run.step(poses, [hit], grabbed="ball")  # 17 frames after the last report: a new one
+        run.step(away, grabbed="ball")
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])  # 17 frames after the last report: a new one
+    assert [e.type for e in run.timeline.events].count("contact") == 2
+
+
+def test_a_body_that_lifts_off_by_less_than_half_its_size_and_touches_again_stays_in_one_contact() -> None:
+    # a 20 x 20 box (size: a disc of its area, 22.6 across) rattles on a platform, then really bounces
+    recorder = Recorder({"ball": box("ball", 20, 20), "p": box("p", 200, 20)}, frozenset({"ball"}))
+    run = Run(recorder)
+    hit = ContactSeen("ball", "p", (300, 390), (0.0, 1.0))
+    on = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}
+    run.step({"ball": moving(300, 300, 0, 100), "p": still(300, 400)}, grabbed="ball")
+    for _ in range(5):
+        run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])
+        for k in range(60):  # half a second off the platform, at most 10 units up: it has not left
+            run.step({"ball": moving(300, 380 - 10 * math.sin(math.pi * k / 60), 0, 30), "p": still(300, 400)},
+                     grabbed="ball")
+    assert [e.type for e in run.timeline.events].count("contact") == 1
+    for k in range(60):  # up 15 units (more than half its size) and down again: a second bounce
+        run.step({"ball": moving(300, 380 - 15 * math.sin(math.pi * k / 60), 0, 30), "p": still(300, 400)},
+                 grabbed="ball")
+    run.step(on, [hit], grabbed="ball", touching=[("ball", "p")])
     assert [e.type for e in run.timeline.events].count("contact") == 2
 
 
@@ -199,3 +222,22 @@ def test_a_contact_with_a_body_playing_back_splits_its_recorded_movement() -> No
     basket = next(e for e in timeline.events if e.type == "contact" and "k" in e.components)
     assert basket.causes == (tail.id,)  # the landing now follows the collision
     check_acyclic(timeline)
+
+
+def test_a_body_set_moving_again_in_a_contact_that_goes_on_is_moved_by_that_contact() -> None:
+    # a peg slides over a spring-held platform; the platform settles, then jitters under the peg again
+    outlines = {"peg": box("peg", 40, 10), "platform": box("platform", 100, 10)}
+    recorder = Recorder(outlines, frozenset(outlines))
+    run = Run(recorder)
+    run.step({"peg": moving(60, 90, 120, 0), "platform": still(100, 100)}, grabbed="peg")
+    hit = ContactSeen("peg", "platform", (60, 95), (0.0, 1.0))
+    run.step({"peg": moving(61, 90, 120, 0), "platform": moving(100, 100, 0, 30)}, [hit], grabbed="peg",
+             touching=[("peg", "platform")])
+    for k in range(40):  # the platform comes to rest under the sliding peg, then bobs up again
+        vy = 0.0 if k < 20 else -30.0
+        run.step({"peg": moving(62 + k, 90, 120, 0), "platform": moving(100, 100, 0, vy)}, grabbed="peg",
+                 touching=[("peg", "platform")])
+    timeline = run.timeline
+    (contact,) = [e for e in timeline.events if e.type == "contact"]
+    platform = [e for e in timeline.events if e.type == "movement" and e.components[0] == "platform"]
+    assert platform and all(e.causes == (contact.id,) for e in platform)

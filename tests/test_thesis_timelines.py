@@ -22,7 +22,7 @@ SCENARIOS = {s.name: s for s in all_scenarios()}
 
 
 def names_of(session: Session) -> dict[str, str]:
-    return session.scene.labels()
+    return session.scene.names()
 
 
 def text_of(name: str) -> list[str]:
@@ -174,7 +174,7 @@ def test_the_golf_ball_helper_chain_runs_from_the_peg_to_the_tee() -> None:
     assert contacts(timeline, ids["peg"], ids["arm"])[0].id in ancestors(timeline, tee.id)
 
 
-@pytest.mark.parametrize("name", ["egg_cracker", "pinball", "basketball"])
+@pytest.mark.parametrize("name", ["egg_cracker", "pinball", "basketball", "cup_dispenser"])
 def test_a_demonstration_replays_to_identical_timeline_files(name: str, tmp_path, capsys) -> None:
     journal = journal_path(SCENARIOS[name])
     for run in ("a", "b"):

@@ -73,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     write_journal(journal_path, header_for_capture(capture, mapping), capture_entries(capture), demo_script())
     journal = read_journal(journal_path)
     session = Session.from_header(journal.header).run(journal.entries)
-    names = session.scene.labels()
+    names = session.scene.names()
     timeline_doc = None
     narration = ""
     if session.timeline is not None:

@@ -134,7 +134,7 @@ def write_session_outputs(path: Path, out: Path, vocabulary: Vocabulary | None =
     if vocabulary is not None:
         session.vocabulary = session.vocabulary.extended(vocabulary)
     session.run(journal.entries)
-    names = session.scene.labels()
+    names = session.scene.names()
     timeline = None
     if session.timeline is not None:
         text = timeline_json(session.timeline, names)

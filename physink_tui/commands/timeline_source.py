@@ -46,6 +46,6 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
         timeline, labels = parse_timeline_json(json.dumps(project.timeline))
     except TimelineError as e:
         raise TimelineError(f"{path}: timeline: {e}", e.event_id) from None
-    # the scene's labels win over those written in the timeline
-    names = project.scene.labels()
+    # the scene's names (labels, and what an unlabelled spring or rope is) win over those written in the timeline
+    names = project.scene.names()
     return timeline, {**labels, **names}

@@ -159,8 +159,17 @@ class Scene:
         return [c for c in self.components.values() if isinstance(c, Body)]
 
     def labels(self) -> dict[str, str]:
-        """Component id -> the user's label, for every labelled component (what narration names them by)."""
+        """Component id -> the user's label, for every labelled component (what phrases name them by)."""
         return {c.id: c.label for c in self.components.values() if getattr(c, "label", None)}
+
+    def names(self) -> dict[str, str]:
+        """Component id -> what narration calls it: its label; an unlabelled spring or rope by what it is.
+
+        ``Movement of peg [attached to spring]`` rather than ``[attached to s2]``; an unlabelled body keeps its
+        id, the handle ``label b2 ball`` takes.
+        """
+        kinds = {c.id: type(c).__name__.lower() for c in self.components.values() if isinstance(c, Spring | Rope)}
+        return {**kinds, **self.labels()}
 
     def is_fixed(self, body_id: str) -> bool:
         """Whether a body is welded to the background (or is the background)."""

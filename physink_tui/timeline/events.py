@@ -196,7 +196,8 @@ def _join(items: list[str]) -> str:
 def default_label(event: Event, names: Mapping[str, str]) -> str:
     """The thesis's default narration of an event: ``Movement of ball``, ``Contact between ball and paddle`` ...
 
-    ``names`` maps component ids to the user's labels; an unnamed component is called by its id. A movement of
+    ``names`` maps component ids to what to call them (`Scene.names`: the user's label, or ``spring`` / ``rope``
+    for an unlabelled spring or rope); a component not in it is called by its id. A movement of
     several components (the moving body and what is attached to it) reads ``Movement of rotating platform
     [attached to rope, knife]``.
     """

@@ -157,11 +157,19 @@ def regions_at(point: Point, box: Box, reach: float) -> tuple[str, ...]:
 def separated(a: BodyOutline, pose_a: tuple[float, ...], b: BodyOutline, pose_b: tuple[float, ...],
               gap: float) -> bool:
     """Whether two bodies' hulls are more than ``gap`` apart."""
+    return hull_gap(a, pose_a, b, pose_b, gap) > gap
+
+
+def hull_gap(a: BodyOutline, pose_a: tuple[float, ...], b: BodyOutline, pose_b: tuple[float, ...],
+             beyond: float = math.inf) -> float:
+    """How far apart two bodies' hulls are (0 when they overlap); any value over ``beyond`` once it is known to
+    be more (their bounds alone can tell)."""
     pa, pb = placed(a, pose_a), placed(b, pose_b)
     ba, bb = bounds(pa), bounds(pb)
-    if ba[0] - bb[2] > gap or bb[0] - ba[2] > gap or ba[1] - bb[3] > gap or bb[1] - ba[3] > gap:
-        return True
-    return _shape(pa).distance(_shape(pb)) > gap
+    apart = max(ba[0] - bb[2], bb[0] - ba[2], ba[1] - bb[3], bb[1] - ba[3])
+    if apart > beyond:
+        return apart
+    return float(_shape(pa).distance(_shape(pb)))
 
 
 def _shape(points: list[Point]) -> BaseGeometry:

@@ -7,7 +7,8 @@ the body the pen holds, the bodies playing back their recording), it keeps one o
 - the pen's first grab is the start (an exogenous force) and causes the grabbed body's movement; a body grabbed
   again continues its latest movement (which the last contact or end-contact involving it created);
 - a contact is caused by the movements of the bodies in it and causes a new movement of each movable body in it;
-  reports of the same pair within 15 frames are one contact; a contact with a body that is playing back its
+  a resting or sliding contact is one contact (`touches`: reports within 15 frames, or before the bodies have
+  moved apart by half the smaller one's size); a contact with a body that is playing back its
   recording splits that body's recorded movement (concurrent movement, thesis 4.1);
 - movable bodies that begin in contact and come apart make an end-contact, which causes a movement of each
   (thesis figure 3-9); a body that starts moving by itself is explained by the moving body it touches (a contact),
@@ -30,13 +31,12 @@ from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.movement_record import Bounds, OpenMovement, Pose
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
+from physink_tui.timeline.touches import Touches
 
 MOVING_SPEED = 5.0
 """Canvas units per second above which a body counts as moving (its centre, or its rim when it spins)."""
 STILL_FRAMES = 12
 """Frames below `MOVING_SPEED` after which a movement ends."""
-SAME_CONTACT_FRAMES = 15
-"""Repeated reports of one pair within this many frames are one contact (DESIGN.md)."""
 SEPARATION_GAP = 4.0
 """Canvas units between two bodies that began in contact after which they have come apart."""
 RECENT_SEPARATION = 1.0
@@ -99,7 +99,7 @@ class Recorder:
     timeline: Timeline = field(default_factory=Timeline)
     _next: int = 1
     _open: dict[str, OpenMovement] = field(default_factory=dict)
-    _last_contact: dict[frozenset[str], float] = field(default_factory=dict)
+    _touches: Touches = field(init=False)
     _ended_pairs: set[frozenset[str]] = field(default_factory=set)
     _touching: frozenset[frozenset[str]] = frozenset()
     _separated_at: dict[frozenset[str], float] = field(default_factory=dict)
@@ -117,6 +117,7 @@ class Recorder:
         for body, outline in self.outlines.items():
             self._radius[body] = max((math.hypot(x, y) for x, y in outline.hull), default=0.0)
         self._bounds = Bounds(self.outlines)
+        self._touches = Touches(self.outlines, self.dt)
         self._adopt(self.timeline)
 
     # -- the outside -----------------------------------------------------------------------------------------
@@ -153,6 +154,7 @@ class Recorder:
         for pair in self._touching - obs.touching:
             self._separated_at[pair] = obs.t
         self._touching = obs.touching
+        self._touches.observe(obs.poses, obs.touching)
         self._check_initial_pairs(obs)
         for contact in obs.contacts:
             self._contact(obs, contact)
@@ -191,7 +193,7 @@ class Recorder:
         """
         self.pause()
         timeline, _ = cut_from(self.timeline, self.group_bodies(body), t)
-        self._last_contact.clear()
+        self._touches.forget()
         self._ended_pairs.clear()
         self._adopt(timeline)
         return self.timeline
@@ -233,7 +235,11 @@ class Recorder:
                 if body in pair and len(pair) == 2:
                     (other,) = pair - {body}
                     if self._group.get(other, other) != key and self._cause_of(other, t, obs) is not None:
-                        self._add_contact(obs, body, other, None, None)  # pushed by a moving body
+                        ongoing = self._touches.going_on(pair)
+                        if ongoing is not None and ongoing in self.timeline:
+                            self._moved_on(t, body, self.timeline.event(ongoing))  # in a contact going on
+                        else:
+                            self._add_contact(obs, body, other, None, None)  # pushed by a moving body
                         return
         latest = self._latest_movement(body)
         latest_t = latest.t1 if latest is not None else -math.inf
@@ -247,6 +253,15 @@ class Recorder:
             self._reopen(key, latest)
             return
         self._open_movement(t, body, (self._start_event(t),))
+
+    def _moved_on(self, t: float, body: str, contact: Event) -> None:
+        """``body`` moves again in ``contact``, which goes on: its latest movement since goes on, else the
+        contact moves it anew."""
+        latest = self._latest_movement(body)
+        if latest is not None and latest.t0 >= contact.t0:
+            self._reopen(self._group[body], latest)
+        else:
+            self._open_movement(t, body, (contact.id,))
 
     def _cause_of(self, body: str, t: float, obs: Observation) -> str | None:
         """The movement explaining ``body``'s motion now: its group's open one, or the recording it plays."""
@@ -269,10 +284,8 @@ class Recorder:
             return
         if self._group.get(a, a) == self._group.get(b, b):
             return  # parts of one mechanism touching each other
-        previous = self._last_contact.get(pair)
-        if previous is not None and obs.t - previous <= SAME_CONTACT_FRAMES * self.dt + 1e-9:
-            self._last_contact[pair] = obs.t
-            return
+        if self._touches.same(pair, obs.t):
+            return  # the contact recorded goes on (see touches.py)
         if a in obs.playing and b in obs.playing:
             return  # both replaying what was recorded
         self._add_contact(obs, a, b, contact.point, contact.normal)
@@ -302,7 +315,7 @@ class Recorder:
         self.timeline = self.timeline.add(Event(
             cid, "contact", (first, second), tuple(dict.fromkeys(c for c in (causes[first], causes[second]) if c)),
             t, t, sides=sides, point=point))
-        self._last_contact[pair] = t
+        self._touches.recorded(pair, t, cid)
         self._ended_pairs.add(pair)
         self._moved_by(obs, cid, (first, second))
 
@@ -317,6 +330,7 @@ class Recorder:
         eid = self._new_id()
         self.timeline = self.timeline.add(Event(eid, "end_contact", (first, second), causes, t, t))
         self._ended_pairs.add(frozenset((a, b)))
+        self._touches.ended(frozenset((a, b)))
         self._separated_at.pop(frozenset((a, b)), None)
         self._moved_by(obs, eid, (first, second))
 

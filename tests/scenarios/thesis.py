@@ -349,8 +349,8 @@ def cup_dispenser() -> Scenario:
     the dispenser's base (welded), the platform on a vertical spring from the base, the cup (a box) sitting
     on the platform, and the peg on a horizontal spring from a welded block on the left, its end near the
     platform's left side. Figure 4-7 adjusts the cup and the peg flush against the platform after drawing; here
-both are drawn a little into it and the physics pushes them flush, so they begin in contact (end-contacts need
-that).
+    both are drawn a little into it and the physics pushes them flush, so they begin in contact (end-contacts
+    need that). The springs are labelled as the thesis names them ("the peg-spring").
     """
     platform_spring = Stroke.coil((0.58, 0.80), (0.58, 0.535), loops=5, radius=0.015)
     peg_spring = Stroke.coil((0.26, 0.54), (0.41, 0.54), loops=4, radius=0.018)
@@ -361,13 +361,13 @@ that).
         Step("the dispenser's base", Stroke.box(0.45, 0.78, 0.70, 0.85), say=("label base",)),
         *_x_steps("base", (0.65, 0.815)),
         Step("the platform", Stroke.box(0.48, 0.52, 0.68, 0.56), say=("label platform",)),
-        Step("the platform's spring, up from the base", platform_spring),
+        Step("the platform's spring, up from the base", platform_spring, say=("label platform spring",)),
         Step("the cup, sitting on the platform", Stroke.box(0.55, 0.44, 0.61, 0.523), say=("label cup",)),
         Step("the block holding the peg's spring", Stroke.box(0.22, 0.48, 0.27, 0.60)),
         *_x_steps("peg's block", (0.245, 0.575)),
         Step("the peg, its end against the platform's left side", Stroke.box(0.39, 0.525, 0.483, 0.555),
              say=("label peg",)),
-        Step("the peg's spring, from the block to the peg", peg_spring),
+        Step("the peg's spring, from the block to the peg", peg_spring, say=("label peg spring",)),
     )
     expect = Expected(
         bodies=(BodyX("ramp", "polyline", "ramp"), BodyX("ball", "circle", "ball"), BodyX("base", "box", "base"),
@@ -375,8 +375,8 @@ that).
                 BodyX("peg", "box", "peg")),
         joints=(JointX("weld", "ramp", BACKGROUND), JointX("weld", "base", BACKGROUND),
                 JointX("weld", "block", BACKGROUND)),
-        springs=(SpringX("vertical", "base", "platform", length=span(platform_spring, "vertical")),
-                 SpringX("horizontal", "block", "peg", length=span(peg_spring, "horizontal"))),
+        springs=(SpringX("vertical", "base", "platform", "platform spring", span(platform_spring, "vertical")),
+                 SpringX("horizontal", "block", "peg", "peg spring", span(peg_spring, "horizontal"))),
         fixed=("ramp", "base", "block"),
         messages=("cup (b5) overlapped platform (b4)", "peg (b7) overlapped platform (b4)"),
     )
