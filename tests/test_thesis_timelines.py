@@ -146,7 +146,8 @@ def test_the_basketball_collision_splits_both_movements_and_each_ball_lands_in_i
 def test_the_cup_dispenser_peg_is_moved_by_the_end_of_its_contact_with_the_platform() -> None:
     session = session_over("cup_dispenser")
     timeline, ids = session.timeline, by_label(session)
-    (released,) = contacts(timeline, ids["platform"], ids["peg"], kind="end_contact")
+    # the first time they part (later, the pen's push over the platform's top may end in a parting too)
+    released = min(contacts(timeline, ids["platform"], ids["peg"], kind="end_contact"), key=lambda e: e.t0)
     pushed_down = timeline.event(released.causes[0])
     assert pushed_down.type == "movement" and pushed_down.components[0] == ids["platform"]
     chain = {timeline.event(e).components for e in ancestors(timeline, released.id)}

@@ -17,6 +17,7 @@ import numpy as np
 
 from physink_tui.scene import stroke_geometry as sg
 from physink_tui.scene.beautify import arc_geometry, box_geometry, round_geometry
+from physink_tui.scene.polygon_checks import corners_of, split_hairpins
 from physink_tui.scene.polygon_fit import PolygonFit, best_polygons
 from physink_tui.scene.primitives import Curve, Geometry, Line, Polygon, Polyline
 from physink_tui.scene.shape_fits import fit_circle, fit_cubic, fit_ellipse
@@ -54,8 +55,16 @@ def polygonal(work: np.ndarray, *, closed: bool, tolerance: float, noise: float)
     """Lines, polylines, boxes and polygons: the best chain of chords for each number of sides."""
     fits = best_polygons(work, closed=closed, max_sides=MAX_SIDES, tolerance=tolerance)
     out = []
-    for k, fit in sorted(fits.items()):
-        if not _real_corners(fit, closed=closed, noise=noise):
+    for k, tried in sorted(fits.items()):
+        judged = [(f, corners_of(f, closed=closed, noise=noise)) for f in tried]
+        fit = next((f for f, corners in judged if corners is not None and not corners.hairpins), None)
+        if closed:
+            capped = next(((f, c) for f, c in judged if c is not None and c.hairpins), None)
+            if capped is not None:  # thin walls drawn as hairpins: their ends made flat, two corners each
+                verts = split_hairpins(capped[0], capped[1].hairpins)
+                out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), capped[0].rss, 2 * len(verts),
+                                     len(verts)))
+        if fit is None:
             continue
         if closed:
             out.append(_closed_candidate(k, fit))
@@ -64,52 +73,6 @@ def polygonal(work: np.ndarray, *, closed: bool, tolerance: float, noise: float)
         else:
             out.append(Candidate("polyline", Polyline(tuple(map(_pt, fit.vertices))), fit.rss, 2 * (k + 1), k))
     return out
-
-
-MIN_CORNER_DEG = 25.0
-"""Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""
-HAIRPIN_DEG = 172.0
-"""A closed outline never turns back on itself at one vertex by more than this."""
-CHAMFER = 0.25
-CHAMFER_TURN_DEG = 62.0
-"""A closed outline's side shorter than ``CHAMFER`` of its neighbours, turning less than this at both ends,
-is a rounded corner."""
-MAX_BOW = 0.15
-"""Every side strays from its chord by at most this share of the chord (plus the pen's noise)."""
-
-
-def _real_corners(fit: PolygonFit, *, closed: bool, noise: float) -> bool:
-    """Whether each vertex is a real corner and each side nearly straight."""
-    pts, idx = fit.points, fit.indices
-    verts = pts[list(idx)]
-    sides = np.diff(verts, axis=0)
-    lengths = np.hypot(*sides.T)
-    if (lengths == 0).any():
-        return False
-    heading = np.arctan2(sides[:, 1], sides[:, 0])
-    if closed:
-        heading = np.append(heading, heading[0])
-    turns = np.abs((np.diff(heading) + np.pi) % (2 * np.pi) - np.pi)
-    if len(turns) and float(np.degrees(turns).min()) < MIN_CORNER_DEG:
-        return False
-    if closed:
-        degrees = np.degrees(turns)
-        if float(degrees.max()) > HAIRPIN_DEG:
-            return False  # an outline doubling back on itself: a thin wall's end is two corners, not a point
-        # a short side between two gentle turns is a rounded corner cut, not a side (a wall's end turns twice
-        # by a right angle)
-        for s in range(len(lengths)):
-            shorter = min(lengths[s - 1], lengths[(s + 1) % len(lengths)])
-            if lengths[s] < CHAMFER * shorter and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG:
-                return False
-    for (a, b), chord in zip(itertools.pairwise(idx), lengths, strict=True):
-        if b - a > 5 and chord > 10 * noise:  # a short side's bow is only where its corners' points fell
-            rel = pts[a + 1:b] - pts[a]
-            d = pts[b] - pts[a]
-            bow = float(np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]).max()) / chord  # largest distance off
-            if bow > MAX_BOW * chord + 2 * noise:
-                return False
-    return True
 
 
 def _closed_candidate(k: int, fit: PolygonFit) -> Candidate:

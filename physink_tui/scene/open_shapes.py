@@ -25,6 +25,7 @@ STRAIGHT = 0.12
 LINE = 0.045
 """A whole stroke is a line when it strays from its fit by less than this share of its length (plus noise)."""
 ROUND_ERROR = 0.09
+"""Normalised RMS radial error under which a closed stroke is round (plus the pen's noise over the radius)."""
 VERY_SHARP_CORNER = 100.0
 SHARP_CORNER = 62.0
 CORNER_SHARE = 0.45
@@ -53,6 +54,13 @@ def line(raw: np.ndarray, noise: float) -> Recognition | None:
     return None
 
 
+def round_error(ellipse: tuple, noise: float) -> float:
+    """How far from round a stroke may be and still be a circle or ellipse: `ROUND_ERROR`, plus the pen's
+    noise as a share of the ellipse's mean radius."""
+    _, rx, ry, _, _ = ellipse
+    return ROUND_ERROR + noise / max(math.sqrt(rx * ry), 1e-12)
+
+
 def straight(run: np.ndarray, noise: float) -> bool:
     chord = float(np.hypot(*(run[-1] - run[0])))
     return chord > 0 and sg.chord_deviation(run) * chord < max(STRAIGHT * chord, 1.5 * noise)
@@ -72,7 +80,7 @@ def classify_open(work: np.ndarray, noise: float) -> Recognition:
     if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()):
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)
         open_ellipse = fit_ellipse(work)
-        if open_ellipse is not None and open_ellipse[4] < 0.6 * ROUND_ERROR:
+        if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
     if len(straight_runs) >= 2 and (all(straight_runs) or _bent_polyline(work, th, corners)):

@@ -10,7 +10,7 @@ always points of the stroke itself, so nearly parallel sides never meet far away
 >>> square = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]], dtype=float)
 >>> dense = np.concatenate([np.linspace(a, b, 25, endpoint=False) for a, b in zip(square, square[1:])])
 >>> fits = best_polygons(dense, closed=True, max_sides=6, tolerance=0.001)
->>> round(fits[4].rss, 9), len(fits[4].vertices)
+>>> round(fits[4][0].rss, 9), len(fits[4][0].vertices)
 (0.0, 4)
 """
 
@@ -144,23 +144,39 @@ def _segmentations(cost: np.ndarray, max_segments: int) -> list[tuple[float, lis
 
 
 def best_polygons(pts: np.ndarray, *, closed: bool, max_sides: int, tolerance: float,
-                  ) -> dict[int, PolygonFit]:
-    """The best polyline (open) or polygon (closed) with each number of sides from 1 (open) or 3 (closed) up to
-    ``max_sides``, keyed by that number; vertices are points of ``pts`` (an (n, 2) array, n >= 3)."""
+                  ) -> dict[int, list[PolygonFit]]:
+    """The best polylines (open) or polygons (closed) with each number of sides from 1 (open) or 3 (closed) up
+    to ``max_sides``, keyed by that number, least error first (a closed loop is tried from two starts); vertices
+    lie on or near points of ``pts`` (an (n, 2) array, n >= 3)."""
     if closed:
-        # start the loop at the point farthest from the centre (a corner, if the shape has any), then again
-        # at the point farthest from that one, and keep each k's better answer
+        # the loop must start at a vertex: start at the point farthest from the centre (a corner, if the shape
+        # has any), then again at the sharpest corner that first pass found, and keep each k's better answer
         centre = pts.mean(axis=0)
-        first = int(np.argmax(np.hypot(*(pts - centre).T)))
-        second = int(np.argmax(np.hypot(*(pts - pts[first]).T)))
-        fits: dict[int, PolygonFit] = {}
-        for start in (first, second):
+        start = int(np.argmax(np.hypot(*(pts - centre).T)))
+        fits: dict[int, list[PolygonFit]] = {}
+        for attempt in range(2):
             loop = np.concatenate([np.roll(pts, -start, axis=0), pts[start:start + 1]])
-            for k, fit in _chains(loop, max_sides, tolerance, closed=True).items():
-                if k >= 3 and (k not in fits or fit.rss < fits[k].rss):
-                    fits[k] = fit
-        return fits
-    return _chains(pts, max_sides, tolerance, closed=False)
+            found = _chains(loop, max_sides, tolerance, closed=True)
+            for k, fit in found.items():
+                if k >= 3:
+                    fits.setdefault(k, []).append(fit)
+            if attempt == 0 and found:
+                richest = found[max(found)]
+                inner = richest.indices[1:-1]
+                if not inner:
+                    break
+                turns = _turns(loop, richest.indices)
+                start = (start + inner[int(np.argmax(turns[:-1]))]) % len(pts)
+        return {k: sorted(v, key=lambda f: f.rss) for k, v in fits.items()}
+    return {k: [fit] for k, fit in _chains(pts, max_sides, tolerance, closed=False).items()}
+
+
+def _turns(pts: np.ndarray, indices: tuple[int, ...]) -> np.ndarray:
+    """Turning (radians, absolute) at each inner index of a closed chain, and at its start last."""
+    verts = pts[list(indices)]
+    heading = np.arctan2(*np.diff(verts, axis=0)[:, ::-1].T)
+    heading = np.append(heading, heading[0])
+    return np.abs((np.diff(heading) + np.pi) % (2 * np.pi) - np.pi)
 
 
 def _chains(pts: np.ndarray, max_segments: int, tolerance: float, *, closed: bool) -> dict[int, PolygonFit]:

@@ -66,7 +66,8 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     """Recognise one stroke given as (x, y) points (extra columns such as t are ignored).
 
     ``noise`` is the pen's jitter in the points' units (pass it scaled with the coordinates: a canvas in
-    fractions of its size has a noise of about 1 / its width in pixels). ``times`` are accepted for symmetry
+    fractions of its size has a noise of about 1 / its width in pixels); a stroke that is visibly shakier is
+    judged with its own, measured jitter (`stroke_geometry.jitter`). ``times`` are accepted for symmetry
     with pen input; the judgement is geometric. ``weights`` override the ranking's (for evaluation).
     """
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
@@ -81,7 +82,8 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         scale = float(np.abs(pts - origin).max())
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
-    unit_noise = noise / scale if math.isfinite(noise) and noise > 0 else 0.0
+    noise = max(noise if math.isfinite(noise) and noise > 0 else 0.0, sg.jitter(pts))  # the pen may be worse
+    unit_noise = noise / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
         result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS)
     if result.geometry is None:
@@ -121,14 +123,16 @@ class Weights:
             this and the pen's absolute noise.
     """
 
-    complexity: float = 2.0
-    relative_noise: float = 0.01
+    complexity: float = 2.5
+    relative_noise: float = 0.003
 
 
 DEFAULT_WEIGHTS = Weights()
 EFFECTIVE_SAMPLES = 64
 """How many independent samples a stroke's fit error is taken to rest on, whatever its point count."""
-MAX_JUDGED_POINTS = 360
+MAX_JUDGED_POINTS = 600
+OPEN_SPACING = 3.0
+"""Open strokes are judged on points at least this many noise widths apart."""
 BOUNDS_MARGIN = 0.05
 """A beautified shape must stay within the stroke's bounding box grown by this share of its diagonal."""
 OPEN_ROUND_MARGIN = 0.2
@@ -143,7 +147,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
     diag = sg.bbox_diagonal(raw)
     length = sg.path_length(raw)
     thickness = sg.thickness(raw)
-    spacing = max(min(diag / 40, max(thickness, diag / 200) / 8), 0.5 * noise, length / MAX_JUDGED_POINTS)
+    spacing = max(min(diag / 40, max(thickness, diag / 200) / 8), 2 * noise, length / MAX_JUDGED_POINTS)
     n = int(min(max(64, length / spacing), MAX_JUDGED_POINTS))
     work = sg.smooth(sg.resample(raw, n))
     special = _helix_or_scribble(work, n, diag, sg.path_length(work))
@@ -157,7 +161,9 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
         if _polygon_left_open(work, diag):
             closed, loop = True, work
     if not closed:
-        found = open_shapes.classify_open(work, noise)
+        # open strokes are judged by how they turn: on points a few noise widths apart, jitter makes no corners
+        coarse_n = int(min(n, max(32, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
+        found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise)
         round_left_open = found.kind in ("circle", "ellipse")
         if _inside(found.geometry, *_bounds(raw, noise, OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN)):
             return found
@@ -226,7 +232,7 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
     if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
         loop = sf.one_loop(work, th)  # round and round one way: once round is the shape, if it is round
         ellipse = fit_ellipse(loop)
-        if ellipse is not None and ellipse[4] < open_shapes.ROUND_ERROR:
+        if ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop
     if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th)  # a shape gone round twice over the same sides: once is enough

@@ -228,3 +228,25 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
         out[a + 1] = p[k] + t[k] * r[k]  # the crossing point replaces the loop
         keep[a + 2:b + 1] = False
     return out[keep]
+
+
+def jitter(pts: np.ndarray) -> float:
+    """The stroke's own pen jitter: a robust spread of the points across the path (the second difference's
+    component normal to the local direction, median-based), in the points' units; about 0.5 for a tablet that
+    rounds to whole pixels, about s for Gaussian jitter of s.
+
+    >>> line = np.column_stack([np.arange(50.0), np.zeros(50)])
+    >>> jitter(line)
+    0.0
+    """
+    if len(pts) < 5:
+        return 0.0
+    d2 = pts[:-2] - 2 * pts[1:-1] + pts[2:]
+    t = pts[2:] - pts[:-2]
+    norm = np.hypot(*t.T)
+    ok = norm > 0
+    if not ok.any():
+        return 0.0
+    normal = np.column_stack([-t[ok, 1], t[ok, 0]]) / norm[ok, None]
+    across = np.abs((d2[ok] * normal).sum(axis=1))
+    return float(1.4826 * np.median(across) / math.sqrt(6))

@@ -430,7 +430,7 @@ def pinball() -> Scenario:
         Step("the second ball straight down past paddle C", Stroke(((0.88, 0.10), (0.88, 0.95))),
              commands=(("seek", (PINBALL_EDIT_T,)),)),
         Step("the ball again from just after A: onto B right of its pivot and away to the right",
-             Stroke(((0.36, 0.27), (0.45, 0.40), (0.59, 0.487), (0.80, 0.40), (0.86, 0.30)))),
+             Stroke(((0.36, 0.27), (0.45, 0.40), (0.59, 0.487), (0.74, 0.42), (0.78, 0.36)))),
     )
     return Scenario("pinball", "thesis 2.3.5, 3.3, figures 2-10, 2-11, 3-10 to 3-18", steps, expect, seed=2404,
                     demo=demo)

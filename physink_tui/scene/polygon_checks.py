@@ -1,0 +1,102 @@
+"""Whether a polygonal fit's vertices are real corners, and flat ends for thin walls drawn as hairpins; no
+ranking, no I/O.
+
+A person's polygon turns by a real angle at every vertex, its sides are nearly straight, a short side between
+two gentle turns is a rounded corner cut off, and an outline never doubles back along itself at one vertex:
+the end of a thin wall (a basket's rim) is two corners a wall's thickness apart. `corners_of` says which of
+these a fit passes; `split_hairpins` turns each doubled-back vertex into that flat end.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+import numpy as np
+
+from physink_tui.scene.polygon_fit import PolygonFit
+
+MIN_CORNER_DEG = 25.0
+"""Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""
+HAIRPIN_DEG = 150.0
+HAIRPIN_GAP = 0.35
+"""A closed outline that turns back by more than `HAIRPIN_DEG` at a vertex whose two sides then run closer than
+`HAIRPIN_GAP` of their length is a thin wall's end (a star's tip, whose sides part, is a corner)."""
+CHAMFER = 0.25
+CHAMFER_TURN_DEG = 62.0
+"""A closed outline's side shorter than ``CHAMFER`` of its neighbours, turning less than this at both ends,
+is a rounded corner."""
+BOW_SHARE = 0.06
+"""Most points of a side (four in five) lie within this share of its length (plus the pen's noise) of the
+side's own line: a side bowed by more than about 15 % of its length is a curve, not a side."""
+
+
+@dataclass(frozen=True, slots=True)
+class Corners:
+    """A fit whose vertices are corners; ``hairpins`` are the vertices (positions in the fit's vertex list)
+    where a closed outline doubles back along itself."""
+
+    hairpins: tuple[int, ...] = ()
+
+
+def _side_line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    centre = run.mean(axis=0)
+    _, _, vt = np.linalg.svd(run - centre, full_matrices=False)
+    return centre, vt
+
+
+def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None:
+    """The fit's verdict: None when a vertex is no real corner or a side is bowed, else its hairpins."""
+    pts, idx = fit.points, fit.indices
+    verts = pts[list(idx)]
+    sides = np.diff(verts, axis=0)
+    lengths = np.hypot(*sides.T)
+    if (lengths == 0).any():
+        return None
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    if closed:
+        heading = np.append(heading, heading[0])
+    degrees = np.degrees(np.abs((np.diff(heading) + np.pi) % (2 * np.pi) - np.pi))
+    if len(degrees) and float(degrees.min()) < MIN_CORNER_DEG:
+        return None
+    hairpins: list[int] = []
+    if closed:
+        m = len(lengths)
+        for v in np.flatnonzero(degrees >= HAIRPIN_DEG):  # the turn at the end of side v, i.e. at vertex v + 1
+            apart = float(np.hypot(*(verts[v] - verts[(v + 2) % m])))  # the far ends of the sides meeting there
+            if apart < HAIRPIN_GAP * min(lengths[v], lengths[(v + 1) % m]):
+                hairpins.append(int(v + 1) % m)
+        for s in range(m):  # a short side between two gentle turns is a rounded corner cut off
+            shorter = min(lengths[s - 1], lengths[(s + 1) % m])
+            if lengths[s] < CHAMFER * shorter and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG:
+                return None
+    for (a, b), chord in zip(itertools.pairwise(idx), lengths, strict=True):
+        if b - a > 5 and chord > 10 * noise:  # a short side's bow is only where its corners' points fell
+            run = pts[a:b + 1]
+            centre, vt = _side_line(run)
+            off = np.abs((run - centre) @ vt[1])  # distance from the side's own line; a hook is a few points
+            if float(np.quantile(off, 0.8)) > BOW_SHARE * chord + 2 * noise:
+                return None
+    return Corners(tuple(hairpins))
+
+
+def split_hairpins(fit: PolygonFit, hairpins: tuple[int, ...]) -> np.ndarray:
+    """The fit's vertices with each hairpin replaced by a flat end: the point of the outline that reaches
+    farthest along the wall, projected onto each of the wall's two sides."""
+    pts, idx = fit.points, fit.indices
+    verts = list(fit.vertices)
+    m = len(idx) - 1
+    out: list[np.ndarray] = []
+    for v in range(m):
+        if v not in hairpins:
+            out.append(verts[v])
+            continue
+        before = pts[idx[v - 1]:idx[v] + 1] if v > 0 else pts[idx[m - 1]:idx[m] + 1]
+        after = pts[idx[v]:idx[v + 1] + 1]
+        (c1, vt1), (c2, vt2) = _side_line(before), _side_line(after)
+        along = vt1[0] if float((before[-1] - before[0]) @ vt1[0]) > 0 else -vt1[0]  # towards the wall's end
+        near = np.concatenate([before[-max(3, len(before) // 5):], after[:max(3, len(after) // 5)]])
+        tip = near[int(np.argmax(near @ along))]
+        out.append(c1 + float((tip - c1) @ vt1[0]) * vt1[0])
+        out.append(c2 + float((tip - c2) @ vt2[0]) * vt2[0])
+    return np.array(out)
