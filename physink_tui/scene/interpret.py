@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 import shapely
+import shapely.ops
 from shapely.geometry import MultiPoint, Point
 
 from physink_tui.scene.body_shapes import body_geometry, body_size, outline_of
@@ -115,12 +116,9 @@ def interpret(scene: Scene, recognition: Recognition,
             return _joint(scene, "pivot", host, anchor)
     if kind == "x":
         assert isinstance(geometry, XSymbol)
-        arm = (math.dist(geometry.first.start, geometry.first.end) + math.dist(geometry.second.start,
-                                                                             geometry.second.end)) / 2
-        hosts = bodies_at(scene, geometry.center) or [b for b in bodies_at(scene, geometry.center, reach=arm / 2)
-                                                      if b.shape == "polyline"]
-        if hosts:
-            return _joint(scene, "weld", hosts[0], geometry.center)
+        held = _x_host(scene, geometry)
+        if held is not None:
+            return _joint(scene, "weld", *held)
         first = _add_body(scene, geometry.first)
         second = _add_body(first.scene, geometry.second)
         return Interpretation(second.scene, "body", created=first.created + second.created,
@@ -131,6 +129,24 @@ def interpret(scene: Scene, recognition: Recognition,
     if kind in ("curve", "arc"):
         return _rope(scene, points)
     return _add_body(scene, geometry)
+
+
+def _x_host(scene: Scene, x: XSymbol) -> tuple[Body, tuple[float, float]] | None:
+    """The body an X welds and the weld's anchor: the topmost body holding the crossing; else, for an X drawn over
+    a thin body (a platform a few pixels thick, a line) with its crossing just off it, the body nearest the crossing
+    within half an arm, anchored at its point nearest the crossing."""
+    hosts = bodies_at(scene, x.center)
+    if hosts:
+        return hosts[0], x.center
+    arm = (math.dist(x.first.start, x.first.end) + math.dist(x.second.start, x.second.end)) / 2
+    centre = Point(x.center)
+    near = [(body_geometry(b).distance(centre), -z, b) for z, b in enumerate(scene.bodies())]
+    near = [n for n in near if n[0] <= arm / 2]
+    if not near:
+        return None
+    body = min(near, key=lambda n: n[:2])[2]
+    anchor = shapely.ops.nearest_points(body_geometry(body), centre)[0]
+    return body, (float(anchor.x), float(anchor.y))
 
 
 def _size(points: Sequence[tuple[float, float]]) -> float:

@@ -15,7 +15,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
 from physink_tui.errors import JournalError
-from physink_tui.input.gestures import Dwell, Gesture, PenMove, StrokeEnded, Tap
+from physink_tui.input.gestures import Dwell, Gesture, PenDown, PenMove, StrokeEnded, Tap
 from physink_tui.input.journal_replay import PEN_DEVICE, pen_input_for
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
@@ -26,8 +26,9 @@ from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import bodies_at, interpret
 from physink_tui.scene.primitives import Recognition
-from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
+from physink_tui.scene.recognize import recognize_stroke
 from physink_tui.scene.world import World
+from physink_tui.scene.x_pairing import pair_x, x_arm
 from physink_tui.session import adjust, demo
 from physink_tui.session.adjust import SETTLE_STEPS
 from physink_tui.session.history import History
@@ -42,7 +43,8 @@ from physink_tui.timeline.phrases import (
 )
 
 X_CANDIDATE = 0.08
-"""A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
+"""A nearly straight stroke (`x_pairing.x_arm`) shorter than this share of the canvas diagonal may be half of an X:
+it waits for the next stroke."""
 PIN_SIZE = 0.012
 """A circle with a radius under this share of the canvas diagonal looks like a pin."""
 OVERLAP = 0.02
@@ -50,7 +52,7 @@ OVERLAP = 0.02
 OVERLAP_DONE = 0.002
 MAX_CLEARING_ROUNDS = 20
 X_WAIT = 1.5
-"""Seconds a possible half-X waits for its second stroke before it is taken as a line on its own."""
+"""Seconds a possible half-X waits for its second stroke to begin before it is taken on its own."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,6 +92,7 @@ class Session:
     messages: list[Message] = field(default_factory=list)
     t: float = 0.0
     _pending: _Pending | None = None
+    _drawing: bool = False
     _adjust: adjust.Adjust | None = None
     _unsettled: tuple[str, ...] = ()
     journal: JournalWriter | None = None
@@ -128,7 +131,7 @@ class Session:
                 self.messages.append(Message(entry.t, str(exc)))
         if self._demo is not None:
             demo.advance_demo(self, entry.t)
-        if self._pending is not None and entry.t - self._pending.t > X_WAIT:
+        if self._pending is not None and not self._drawing and entry.t - self._pending.t > X_WAIT:
             self._flush_pending()
         if isinstance(entry, HidEntry):
             self._gestures(self.pen.handle(RawReport(entry.t, entry.data, entry.dev)))
@@ -166,6 +169,8 @@ class Session:
                 demo.demo_gesture(self, g)
             return
         for g in gestures:
+            if isinstance(g, PenDown | StrokeEnded | Tap):
+                self._drawing = isinstance(g, PenDown)  # a second stroke begun in time may still finish an X
             if isinstance(g, StrokeEnded):
                 self._stroke(g)
             elif isinstance(g, Tap):
@@ -196,17 +201,16 @@ class Session:
             self._flush_pending()
             self._eraser(points)
             return
-        recognition = recognize_stroke(points)
         if self._pending is not None:
             pending, self._pending = self._pending, None
-            if recognition.kind == "line":
-                pair = recognize_strokes([pending.points, points])
-                if pair.kind == "x":
-                    self._apply(pair, [pending.points, points], "X-symbol")
-                    return
-            self._apply(pending.recognition, [pending.points], "line")
-        if recognition.kind == "line" and self._is_short(points):
-            self._pending = _Pending(ended.t, points, recognition)
+            pair = pair_x(pending.points, points, self._x_arm_limit())
+            if pair is not None:
+                self._apply(pair, [pending.points, points], "X-symbol")
+                return
+            self._apply(pending.recognition, [pending.points], pending.recognition.kind or "stroke")
+        recognition = recognize_stroke(points)
+        if x_arm(points, self._x_arm_limit()) is not None:  # whatever the recogniser named it: a bowed or hooked
+            self._pending = _Pending(ended.t, points, recognition)  # half-X is seldom a clean line
             return
         self._apply(recognition, [points], recognition.kind or "stroke")
 
@@ -245,14 +249,13 @@ class Session:
             self.tell(f"{self._name(body_id, scene)} overlapped {names}; the physics pushed it clear")
         return scene
 
-    def _is_short(self, points: list[tuple[float, float]]) -> bool:
-        (x0, y0), (x1, y1) = points[0], points[-1]
-        return math.hypot(x1 - x0, y1 - y0) < X_CANDIDATE * math.hypot(*self.canvas)
+    def _x_arm_limit(self) -> float:
+        return X_CANDIDATE * math.hypot(*self.canvas)
 
     def _flush_pending(self) -> None:
         if self._pending is not None:
             pending, self._pending = self._pending, None
-            self._apply(pending.recognition, [pending.points], "line")
+            self._apply(pending.recognition, [pending.points], pending.recognition.kind or "stroke")
         self._settle()
 
     def _apply(self, recognition: Recognition, strokes: list[list[tuple[float, float]]], what: str) -> None:
