@@ -162,6 +162,11 @@ class Scene:
         """Component id -> the user's label, for every labelled component (what narration names them by)."""
         return {c.id: c.label for c in self.components.values() if getattr(c, "label", None)}
 
+    def fixed_bodies(self) -> frozenset[str]:
+        """Ids of the bodies welded to the background (one pass, for questions about every body)."""
+        return frozenset(end for c in self.components.values() if isinstance(c, Joint) and c.kind == "weld"
+                         and BACKGROUND in (c.a, c.b) for end in (c.a, c.b)) - {BACKGROUND}
+
     def is_fixed(self, body_id: str) -> bool:
         """Whether a body is welded to the background (or is the background)."""
         if body_id == BACKGROUND:

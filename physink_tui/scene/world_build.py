@@ -119,8 +119,9 @@ def build(scene: Scene, space: pymunk.Space) -> Built:
     space.add(background)
     built.bodies[BACKGROUND] = background
     built.rest_pose[background] = (0.0, 0.0, 0.0)
+    fixed = scene.fixed_bodies()
     for body in scene.bodies():
-        _add_body(built, body, fixed=scene.is_fixed(body.id))
+        _add_body(built, body, fixed=body.id in fixed)
     # Masses are known only once shapes are in the space, and springs need them for their damping.
     for component in scene.components.values():
         if isinstance(component, Joint):

@@ -22,15 +22,13 @@ from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.writer import JournalWriter
-from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import bodies_at, interpret
+from physink_tui.scene.overlaps import overlapped, push_clear
 from physink_tui.scene.primitives import Recognition
 from physink_tui.scene.recognize import recognize_stroke
-from physink_tui.scene.world import World
 from physink_tui.scene.x_pairing import pair_x, x_arm
 from physink_tui.session import adjust, demo
-from physink_tui.session.adjust import SETTLE_STEPS
 from physink_tui.session.history import History
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.phrases import (
@@ -47,10 +45,6 @@ X_CANDIDATE = 0.08
 it waits for the next stroke."""
 PIN_SIZE = 0.012
 """A circle with a radius under this share of the canvas diagonal looks like a pin."""
-OVERLAP = 0.02
-"""A new body overlapping another by more than this share of its area is pushed clear."""
-OVERLAP_DONE = 0.002
-MAX_CLEARING_ROUNDS = 20
 X_WAIT = 1.5
 """Seconds a possible half-X waits for its second stroke to begin before it is taken on its own."""
 
@@ -224,27 +218,12 @@ class Session:
     def _clear_overlaps(self, scene: Scene, created: tuple[str, ...]) -> Scene:
         """A new body drawn into others (not joined to it) is pushed clear by the physics, the others held still."""
         for body_id in created:
-            body = scene.components[body_id]
-            area = body_geometry(body)
-            joined = {end for c in scene.components.values() if isinstance(c, Joint) and body_id in (c.a, c.b)
-                      for end in (c.a, c.b)}
-            hit = [b.id for b in scene.bodies()
-                   if b.id != body_id and b.id not in joined
-                   and body_geometry(b).intersection(area).area > OVERLAP * area.area]
-            if not hit or scene.is_fixed(body_id):
+            if scene.is_fixed(body_id):
                 continue
-            world = World.from_scene(scene, gravity=(0.0, 0.0))
-            world.freeze_all_except(body_id)
-            for _ in range(MAX_CLEARING_ROUNDS):  # the solver pushes a little each step; stop once it is clear
-                world.step(SETTLE_STEPS)
-                world.set_velocity(body_id, (0.0, 0.0), 0.0)
-                moved = world.to_scene(scene).components[body_id]
-                area = body_geometry(moved)
-                if all(body_geometry(scene.components[h]).intersection(area).area <= OVERLAP_DONE * area.area
-                       for h in hit):
-                    break
-            world.unfreeze()
-            scene = world.to_scene(scene)
+            hit = overlapped(scene, body_id)
+            if not hit:
+                continue
+            scene = push_clear(scene, body_id, hit)
             names = ", ".join(self._name(h, scene) for h in hit)
             self.tell(f"{self._name(body_id, scene)} overlapped {names}; the physics pushed it clear")
         return scene
