@@ -27,6 +27,7 @@ from physink_tui.scene.interpret import bodies_at, interpret
 from physink_tui.scene.overlaps import overlapped, push_clear
 from physink_tui.scene.primitives import Recognition
 from physink_tui.scene.recognize import recognize_stroke
+from physink_tui.scene.world_live import LiveWorld
 from physink_tui.scene.x_pairing import pair_x, x_arm
 from physink_tui.session import adjust, demo
 from physink_tui.session.history import History
@@ -93,6 +94,7 @@ class Session:
     timeline: Timeline | None = None
     vocabulary: Vocabulary = DEFAULT_VOCABULARY
     _demo: demo.Demo | None = None
+    _world: LiveWorld | None = None
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
@@ -110,6 +112,16 @@ class Session:
     @property
     def scene(self) -> Scene:
         return self.history.current
+
+    @property
+    def world(self) -> LiveWorld:
+        """The sketch as a physics world without gravity, brought in step with the scene (what a view shows): only
+        what changed since the last call is added, moved or removed."""
+        if self._world is None:
+            self._world = LiveWorld.from_scene(self.scene)
+        else:
+            self._world.sync(self.scene)
+        return self._world
 
     # -- input ---------------------------------------------------------------------------------
 
