@@ -14,6 +14,7 @@ from shapely.geometry import LineString
 
 from physink_tui.scene.body_shapes import body_geometry, body_size
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope, Scene, Spring
+from physink_tui.scene.interpret import Near
 from physink_tui.scene.world import World
 
 OVERLAP = 0.02
@@ -25,15 +26,16 @@ ROUND_STEPS = 30
 """Steps per round; the body's velocity is zeroed between rounds so it is put down, not thrown."""
 
 
-def overlapped(scene: Scene, body_id: str) -> list[str]:
+def overlapped(scene: Scene, body_id: str, near: Near | None = None) -> list[str]:
     """Ids of the bodies that ``body_id`` overlaps by more than `OVERLAP` of its area, not counting those joined to
-    it, in scene order."""
+    it, in scene order (``near``: a spatial index of the scene's bodies, see `interpret.Near`)."""
     area = body_geometry(scene.components[body_id])
     x0, y0, x1, y1 = area.bounds
+    candidates = scene.bodies() if near is None else [scene.components[i] for i in reversed(near(area.bounds))]
     joined = {end for c in scene.components.values() if isinstance(c, Joint) and body_id in (c.a, c.b)
               for end in (c.a, c.b)}
     hit = []
-    for b in scene.bodies():
+    for b in candidates:
         if b.id == body_id or b.id in joined:
             continue
         geometry = body_geometry(b)

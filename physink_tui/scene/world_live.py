@@ -20,6 +20,10 @@ from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Rop
 from physink_tui.scene.world import DT, World
 from physink_tui.scene.world_build import add
 
+NEAR_MARGIN = 16.0
+"""Canvas units added round a query's box: a body's shapes and its area as interpret sees it (`body_geometry`) may
+differ by a few units (a polyline's collision radius against its thin strip, a circle against its polygon)."""
+
 
 class LiveWorld(World):
     """A `World` that follows a scene through `sync`; build it with `LiveWorld.from_scene`.
@@ -55,6 +59,16 @@ class LiveWorld(World):
     def scene(self) -> Scene:
         """The scene this world mirrors now."""
         return self._scene
+
+    def bodies_in(self, bounds: tuple[float, float, float, float]) -> list[str]:
+        """Ids of the bodies whose shapes' boxes come within `NEAR_MARGIN` of ``bounds`` (x0, y0, x1, y1), topmost
+        first: the world's spatial index answering for the scene it mirrors (see `interpret.Near`)."""
+        x0, y0, x1, y1 = bounds
+        m = NEAR_MARGIN
+        z = self._built.z
+        owners = {self._built.owner.get(s) for s in self._space.bb_query(pymunk.BB(x0 - m, y0 - m, x1 + m, y1 + m),
+                                                                          pymunk.ShapeFilter())}
+        return sorted((o for o in owners if o in z), key=z.__getitem__, reverse=True)
 
     def sync(self, scene: Scene) -> None:
         """Mirrors ``scene`` by changing only what differs from the scene mirrored so far.

@@ -23,7 +23,7 @@ from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.writer import JournalWriter
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
-from physink_tui.scene.interpret import bodies_at, interpret
+from physink_tui.scene.interpret import Near, bodies_at, interpret
 from physink_tui.scene.overlaps import overlapped, push_clear
 from physink_tui.scene.primitives import Recognition
 from physink_tui.scene.recognize import recognize_stroke
@@ -122,6 +122,14 @@ class Session:
         else:
             self._world.sync(self.scene)
         return self._world
+
+    def _near(self, scene: Scene) -> Near:
+        """The live world's spatial index, brought in step with ``scene`` (the current one or one on its way)."""
+        if self._world is None:
+            self._world = LiveWorld.from_scene(scene)
+        else:
+            self._world.sync(scene)
+        return self._world.bodies_in
 
     # -- input ---------------------------------------------------------------------------------
 
@@ -232,7 +240,7 @@ class Session:
         for body_id in created:
             if scene.is_fixed(body_id):
                 continue
-            hit = overlapped(scene, body_id)
+            hit = overlapped(scene, body_id, self._near(scene))
             if not hit:
                 continue
             scene = push_clear(scene, body_id, hit)
@@ -250,7 +258,7 @@ class Session:
         self._settle()
 
     def _apply(self, recognition: Recognition, strokes: list[list[tuple[float, float]]], what: str) -> None:
-        result = interpret(self.scene, recognition, strokes)
+        result = interpret(self.scene, recognition, strokes, self._near(self.scene))
         if result.message:
             self.tell(result.message)
         if result.scene != self.scene:
