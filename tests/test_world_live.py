@@ -135,3 +135,30 @@ def test_a_spring_or_rope_between_fixed_bodies_builds_a_world() -> None:
     world = World.from_scene(scene)
     world.step(10)
     assert world.pose("b1") == (100.0, 100.0, 0.0)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_live_worlds_index_gives_interpretation_the_same_answers_as_trying_every_body(seed: int) -> None:
+    from physink_tui.scene.interpret import bodies_at
+    from physink_tui.scene.overlaps import overlapped
+
+    rng = random.Random(seed)
+    scene = Scene()
+    live = LiveWorld.from_scene(scene)
+    for _ in range(40):
+        scene = random_action(rng, scene)
+        live.sync(scene)
+        for _ in range(10):
+            x, y = rng.uniform(0, 1600), rng.uniform(0, 1000)
+            reach = rng.choice((0.0, 30.0))
+            assert bodies_at(scene, (x, y), reach=reach) == bodies_at(scene, (x, y), reach=reach, near=live.bodies_in)
+            d = rng.uniform(5, 40)
+            arms = XSymbol((x, y), Line((x - d, y - d), (x + d, y + d)), Line((x - d, y + d), (x + d, y - d)))
+            strokes = [[(x - d, y - d), (x + d, y + d)], [(x - d, y + d), (x + d, y - d)]]
+            ring = [(x + d / 4, y), (x, y + d / 4), (x - d / 4, y), (x, y - d / 4)]
+            for rec, points in ((Recognition("x", 1.0, arms), strokes),
+                                (Recognition("circle", 1.0, Circle((x, y), d / 4)), [ring]),
+                                (Recognition("line", 1.0, Line((x - d, y), (x + d, y))), [[(x - d, y), (x + d, y)]])):
+                assert interpret(scene, rec, points) == interpret(scene, rec, points, near=live.bodies_in)
+        for body in scene.bodies():
+            assert overlapped(scene, body.id) == overlapped(scene, body.id, near=live.bodies_in)
