@@ -3,8 +3,12 @@ platform; the first arm waits for the second instead of becoming a body that is 
 
 from __future__ import annotations
 
+import math
+import random
+
 import pytest
 from hand_x import hand_x
+from strokegen.strokes import circle, line
 from test_session import circle_points, pen_header, pen_stroke
 
 from physink_tui.journal.entries import CommandEntry, PenEntry
@@ -95,3 +99,33 @@ def test_a_welded_platform_stays_put_when_the_ball_is_pushed_into_it_in_demo_mod
     events = session.timeline.events
     assert any(e.type == "contact" and set(e.components) == {"b1", "b2"} for e in events)
     assert not [e for e in events if e.type == "movement" and "b1" in e.components]
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_a_hand_drawn_ball_two_platforms_and_basket_get_both_platforms_welded(seed: int) -> None:
+    rng = random.Random(seed)
+    session = Session.from_header(pen_header())
+    t = 0.0
+
+    def draw(points: list[tuple[float, float]], gap: float = 1.0) -> None:
+        nonlocal t
+        entries = canvas_stroke(t + gap, points)
+        for entry in entries:
+            session.handle(entry)
+        t = entries[-1].t
+
+    platforms = (((500.0, 400.0), 0.25), ((1000.0, 600.0), -0.25))
+    for centre, tilt in platforms:
+        draw([(x, y) for x, y, _ in line(rng, size=300, angle=tilt, center=centre)])
+    draw([(x, y) for x, y, _ in circle(rng, size=50, center=(420, 250))])
+    draw([(1250.0, 620 + 2.0 * i) for i in range(40)] + [(1250 + 2.0 * i, 700.0) for i in range(60)]
+         + [(1370.0, 700 - 2.0 * i) for i in range(40)])
+    for (cx, cy), tilt in platforms:
+        x = cx + rng.uniform(-80, 80)
+        first, second = hand_x(f"scene:{seed}:{cx}", (x, cy + math.tan(tilt) * (x - cx)), rng.uniform(25, 60))
+        draw(first)
+        draw(second, rng.uniform(0.2, 1.2))
+    session.finish()
+    welds = [(c.a, c.b) for c in session.scene.components.values() if isinstance(c, Joint) and c.kind == "weld"]
+    assert welds == [("b1", BACKGROUND), ("b2", BACKGROUND)]
+    assert [b.shape for b in session.scene.bodies()] == ["polyline", "polyline", "circle", "polyline"]
