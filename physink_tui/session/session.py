@@ -198,7 +198,7 @@ class Session:
         return (x * self.canvas[0], y * self.canvas[1])
 
     def _tap(self, tap: Tap) -> None:
-        found = bodies_at(self.scene, self._to_canvas(tap.x, tap.y))
+        found = bodies_at(self.scene, self._to_canvas(tap.x, tap.y), near=self._near(self.scene))
         self.selected = found[0].id if found else None
         if self.selected:
             self.tell(f"selected {self._name(self.selected)}")
@@ -282,8 +282,9 @@ class Session:
 
     def _eraser(self, points: list[tuple[float, float]]) -> None:
         """An eraser stroke removes the topmost body it passes over (and what holds on to it)."""
+        near = self._near(self.scene)
         for point in points:
-            found = bodies_at(self.scene, point)
+            found = bodies_at(self.scene, point, near=near)
             if found:
                 gone = (found[0].id, *self.scene.attached_to(found[0].id))
                 self.history.push(self.scene.remove(*gone), f"erase: {found[0].id}")
