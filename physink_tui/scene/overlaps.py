@@ -48,27 +48,39 @@ def overlapped(scene: Scene, body_id: str, near: Near | None = None) -> list[str
 
 def push_clear(scene: Scene, body_id: str, hit: list[str]) -> Scene:
     """``scene`` with ``body_id`` (not fixed) pushed by the physics until it no longer overlaps the bodies ``hit``,
-    everything else held still (what is welded to it moves with it)."""
-    local = neighbourhood(scene, body_id)
-    world = World.from_scene(local, gravity=(0.0, 0.0))
-    world.freeze_all_except(body_id)
-    for _ in range(MAX_ROUNDS):  # the solver pushes a little each step; stop once it is clear
-        world.step(ROUND_STEPS)
-        world.set_velocity(body_id, (0.0, 0.0), 0.0)
-        area = body_geometry(world.to_scene(local).components[body_id])
-        if all(body_geometry(scene.components[h]).intersection(area).area <= OVERLAP_DONE * area.area for h in hit):
-            break
-    world.unfreeze()
-    return world.to_scene(scene)
+    everything else held still (what is welded to it moves with it).
+
+    The world holds the neighbourhood within the body's size (`neighbourhood`); should what moves end further than
+    that from where it was (so it might now meet a body the world did not hold), it is pushed again in a
+    neighbourhood twice as wide, up to the whole sketch.
+    """
+    reach = body_size(scene.components[body_id])
+    group = _weld_group(scene, body_id)
+    while True:
+        local = neighbourhood(scene, body_id, reach)
+        world = World.from_scene(local, gravity=(0.0, 0.0))
+        world.freeze_all_except(body_id)
+        for _ in range(MAX_ROUNDS):  # the solver pushes a little each step; stop once it is clear
+            world.step(ROUND_STEPS)
+            world.set_velocity(body_id, (0.0, 0.0), 0.0)
+            area = body_geometry(world.to_scene(local).components[body_id])
+            if all(body_geometry(scene.components[h]).intersection(area).area <= OVERLAP_DONE * area.area
+                   for h in hit):
+                break
+        world.unfreeze()
+        moved = world.to_scene(local)
+        travel = max(body_geometry(moved.components[b]).hausdorff_distance(body_geometry(scene.components[b]))
+                     for b in group)
+        if travel <= reach or len(local.components) == len(scene.components):
+            return world.to_scene(scene)
+        reach *= 2
 
 
-def neighbourhood(scene: Scene, body_id: str) -> Scene:
-    """The part of ``scene`` that pushing ``body_id`` clear can touch, in scene order: bodies and ropes within the
-    body's size of it, the bodies welded to it, whatever holds on to those (and the bodies at its other ends), and
+def neighbourhood(scene: Scene, body_id: str, reach: float) -> Scene:
+    """The part of ``scene`` that pushing ``body_id`` clear can touch, in scene order: bodies and ropes within
+    ``reach`` of it, the bodies welded to it, whatever holds on to those (and the bodies at its other ends), and
     every joint, spring and rope among the bodies kept."""
-    body = scene.components[body_id]
-    area = body_geometry(body)
-    reach = body_size(body)
+    area = body_geometry(scene.components[body_id])
     x0, y0, x1, y1 = area.bounds
     x0, y0, x1, y1 = x0 - reach, y0 - reach, x1 + reach, y1 + reach
     group = _weld_group(scene, body_id)
