@@ -2,10 +2,11 @@
 history, and journals what it consumed; the TUI, kiosk, CLI and tests all drive it the same way.
 
 Time is the entries' ``t``, never a clock. Pen input goes through the input side (decoder, mapping,
-gesture engine); each finished stroke is recognised and interpreted into the scene (sketch mode).
-A short line is held back until the next stroke shows whether the two make an X. In demo mode the pen
-demonstrates behaviour (`demo`), playback commands move timeline time, and phrases label its events;
-simulation arrives with a later issue (its command is accepted and reported).
+gesture engine); each finished stroke is recognised and interpreted into the scene (sketch mode), and
+the live physics world (`world`) follows the scene. A short, nearly straight stroke is held back until the next
+stroke shows whether the two make an X. In demo mode the pen demonstrates behaviour (`demo`), playback commands
+move timeline time, and phrases label its events; simulation arrives with a later issue (its command is accepted
+and reported).
 """
 
 from __future__ import annotations
