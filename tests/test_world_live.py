@@ -162,3 +162,11 @@ def test_the_live_worlds_index_gives_interpretation_the_same_answers_as_trying_e
                 assert interpret(scene, rec, points) == interpret(scene, rec, points, near=live.bodies_in)
         for body in scene.bodies():
             assert overlapped(scene, body.id) == overlapped(scene, body.id, near=live.bodies_in)
+
+
+def test_the_index_finds_the_edge_of_a_very_long_lines_strip() -> None:
+    from physink_tui.scene.interpret import bodies_at
+
+    scene = interpret(Scene(), Recognition("line", 1.0, Line((0.0, 500.0), (6000.0, 500.0))), []).scene
+    live = LiveWorld.from_scene(scene)  # the strip is 24 units either side; the collision segment 2
+    assert [b.id for b in bodies_at(scene, (3000.0, 522.0), near=live.bodies_in)] == ["b1"]

@@ -11,18 +11,21 @@ clear and demonstrating build worlds of their own, so their results never depend
 
 from __future__ import annotations
 
-from itertools import islice
+import math
+from itertools import islice, pairwise
 from typing import cast
 
 import pymunk
 
+from physink_tui.scene.body_shapes import THIN
 from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Rope, Scene
 from physink_tui.scene.world import DT, World
 from physink_tui.scene.world_build import add
 
 NEAR_MARGIN = 16.0
 """Canvas units added round a query's box: a body's shapes and its area as interpret sees it (`body_geometry`) may
-differ by a few units (a polyline's collision radius against its thin strip, a circle against its polygon)."""
+differ by a few units (a polyline's collision radius against its strip, a circle against its polygon). A polyline's
+strip grows with its length (`body_shapes.THIN`), so the margin grows with the widest strip in the world."""
 
 
 class LiveWorld(World):
@@ -44,6 +47,7 @@ class LiveWorld(World):
     _fixed: frozenset[str]
     _next_rope: int
     _rope_bits: dict[str, int]
+    _strips: dict[str, float]  # polyline id -> half-width of its strip as `body_geometry` draws it
 
     @classmethod
     def from_scene(cls, scene: Scene, *, gravity: tuple[float, float] = (0.0, 0.0), dt: float = DT) -> LiveWorld:
@@ -53,6 +57,7 @@ class LiveWorld(World):
         world._fixed = scene.fixed_bodies()
         world._next_rope = len(world._built.links)
         world._rope_bits = {rid: 1 << (i % 32) for i, rid in enumerate(world._built.links)}
+        world._strips = {b.id: _strip(b) for b in scene.bodies() if b.shape == "polyline"}
         return world
 
     @property
@@ -64,7 +69,7 @@ class LiveWorld(World):
         """Ids of the bodies whose shapes' boxes come within `NEAR_MARGIN` of ``bounds`` (x0, y0, x1, y1), topmost
         first: the world's spatial index answering for the scene it mirrors (see `interpret.Near`)."""
         x0, y0, x1, y1 = bounds
-        m = NEAR_MARGIN
+        m = NEAR_MARGIN + max(self._strips.values(), default=0.0)
         z = self._built.z
         owners = {self._built.owner.get(s) for s in self._space.bb_query(pymunk.BB(x0 - m, y0 - m, x1 + m, y1 + m),
                                                                           pymunk.ShapeFilter())}
@@ -135,9 +140,12 @@ class LiveWorld(World):
             self._next_rope += 1
         else:
             add(self._built, c, fixed=fixed)
+            if isinstance(c, Body) and c.shape == "polyline":
+                self._strips[c.id] = _strip(c)
 
     def _remove(self, cid: str, c: Component) -> None:
         built, space = self._built, self._space
+        self._strips.pop(cid, None)
         parts = built.constraints.pop(cid, ())
         for part in parts:
             if part in self._live:
@@ -176,6 +184,11 @@ class LiveWorld(World):
         if not fixed:
             body.velocity, body.angular_velocity = (0.0, 0.0), 0.0
         self._space.reindex_shapes_for_body(body)
+
+
+def _strip(body: Body) -> float:
+    """Half the width of a polyline body's strip (`body_shapes.body_geometry`)."""
+    return THIN * sum(math.dist(p, q) for p, q in pairwise(body.outline))
 
 
 def _same_solid(a: Body, b: Body) -> bool:
