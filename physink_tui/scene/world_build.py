@@ -131,10 +131,8 @@ def build(scene: Scene, space: pymunk.Space) -> Built:
 
 
 def add(built: Built, component: Component, *, fixed: bool = False, rope_index: int = 0) -> None:
-    """Mirrors one component into ``built.space`` (a joint, spring or rope after the bodies it holds).
-
-    ``fixed`` makes a body static; ``rope_index`` picks a rope's collision group and category bit (see `_add_rope`).
-    """
+    """Mirrors one component into ``built.space`` (a joint, spring or rope after the bodies it holds); ``fixed``
+    makes a body static, ``rope_index`` picks a rope's collision group and category bit (see `_add_rope`)."""
     if isinstance(component, Body):
         _add_body(built, component, fixed=fixed)
     elif isinstance(component, Joint):
