@@ -171,6 +171,11 @@ class Scene:
         kinds = {c.id: type(c).__name__.lower() for c in self.components.values() if isinstance(c, Spring | Rope)}
         return {**kinds, **self.labels()}
 
+    def fixed_bodies(self) -> frozenset[str]:
+        """Ids of the bodies welded to the background (one pass, for questions about every body)."""
+        return frozenset(end for c in self.components.values() if isinstance(c, Joint) and c.kind == "weld"
+                         and BACKGROUND in (c.a, c.b) for end in (c.a, c.b)) - {BACKGROUND}
+
     def is_fixed(self, body_id: str) -> bool:
         """Whether a body is welded to the background (or is the background)."""
         if body_id == BACKGROUND:

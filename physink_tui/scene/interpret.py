@@ -11,11 +11,12 @@ with a message for the user rather than an exception.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
 import shapely
+import shapely.ops
 from shapely.geometry import MultiPoint, Point
 
 from physink_tui.scene.body_shapes import body_geometry, body_size, outline_of
@@ -57,21 +58,34 @@ class Interpretation:
     message: str | None = None
 
 
+Near = Callable[[tuple[float, float, float, float]], Sequence[str]]
+"""A spatial index of a scene's bodies: ids of the bodies whose bounds may meet ``(x0, y0, x1, y1)``, topmost first
+(more may come back, never fewer). `world_live.LiveWorld.bodies_in` is one; without one every body is tried."""
+
+
+def _candidates(scene: Scene, bounds: tuple[float, float, float, float], near: Near | None) -> list[Body]:
+    """The bodies that may meet ``bounds``, topmost (created last) first."""
+    if near is None:
+        return list(reversed(scene.bodies()))
+    return [scene.components[i] for i in near(bounds)]  # type: ignore[misc]
+
+
 def bodies_at(scene: Scene, point: tuple[float, float], exclude: str | None = None,
-              reach: float = 0.0) -> list[Body]:
+              reach: float = 0.0, near: Near | None = None) -> list[Body]:
     """Bodies whose area contains the point (or lies within ``reach`` of it), topmost (created last) first."""
     p = Point(point)
-    return [b for b in reversed(scene.bodies())
+    bounds = (point[0] - reach, point[1] - reach, point[0] + reach, point[1] + reach)
+    return [b for b in _candidates(scene, bounds, near)
             if b.id != exclude and (body_geometry(b).covers(p) or (reach and body_geometry(b).distance(p) <= reach))]
 
 
-def under(scene: Scene, point: tuple[float, float], exclude: str) -> str:
+def under(scene: Scene, point: tuple[float, float], exclude: str, near: Near | None = None) -> str:
     """The body lying under ``point`` other than ``exclude``, or the background."""
-    found = bodies_at(scene, point, exclude)
+    found = bodies_at(scene, point, exclude, near=near)
     return found[0].id if found else BACKGROUND
 
 
-def _inside(scene: Scene, points: Sequence[tuple[float, float]]) -> Body | None:
+def _inside(scene: Scene, points: Sequence[tuple[float, float]], near: Near | None) -> Body | None:
     """The topmost body holding nearly all of the points; a thin body (a line, a polyline) holds a
     symbol drawn on it when the symbol's centre lies within the symbol's size of it."""
     if not points:
@@ -79,7 +93,7 @@ def _inside(scene: Scene, points: Sequence[tuple[float, float]]) -> Body | None:
     centre, size = Point(_centre(points)), _size(points)
     cloud = shapely.points(np.asarray(points, dtype=float))
     minx, miny, maxx, maxy = MultiPoint(points).bounds
-    for body in reversed(scene.bodies()):
+    for body in _candidates(scene, (minx - size, miny - size, maxx + size, maxy + size), near):
         area = body_geometry(body)
         bx0, by0, bx1, by1 = area.bounds
         if maxx < bx0 - size or minx > bx1 + size or maxy < by0 - size or miny > by1 + size:
@@ -92,45 +106,62 @@ def _inside(scene: Scene, points: Sequence[tuple[float, float]]) -> Body | None:
 
 
 def interpret(scene: Scene, recognition: Recognition,
-              strokes: Sequence[Sequence[tuple[float, float]]]) -> Interpretation:
+              strokes: Sequence[Sequence[tuple[float, float]]], near: Near | None = None) -> Interpretation:
     """Apply one recognised stroke (or X pair) to the scene.
 
     Args:
         scene: the sketch so far.
         recognition: what the stroke was recognised as.
         strokes: the stroke's points (two strokes for an X), canvas units.
+        near: a spatial index of ``scene``'s bodies (the same answers, sooner in a big sketch), or None.
     """
     kind, geometry = recognition.kind, recognition.geometry
     points = [tuple(p[:2]) for s in strokes for p in s]
     if kind is None or geometry is None:
         return Interpretation(scene, "none", message=f"stroke not used: {recognition.reason or 'not recognised'}")
     if kind == "line":
-        erased = _erase(scene, geometry)
+        erased = _erase(scene, geometry, near)
         if erased is not None:
             return erased
     if kind in ("circle", "ellipse", "curve", "arc"):
-        host = _inside(scene, points)
+        host = _inside(scene, points, near)
         if host is not None and _size(points) < JOINT_MAX_SIZE * body_size(host):
             anchor = geometry.center if isinstance(geometry, Circle | Ellipse) else _centre(points)
-            return _joint(scene, "pivot", host, anchor)
+            return _joint(scene, "pivot", host, anchor, near)
     if kind == "x":
         assert isinstance(geometry, XSymbol)
-        arm = (math.dist(geometry.first.start, geometry.first.end) + math.dist(geometry.second.start,
-                                                                             geometry.second.end)) / 2
-        hosts = bodies_at(scene, geometry.center) or [b for b in bodies_at(scene, geometry.center, reach=arm / 2)
-                                                      if b.shape == "polyline"]
-        if hosts:
-            return _joint(scene, "weld", hosts[0], geometry.center)
+        held = _x_host(scene, geometry, near)
+        if held is not None:
+            return _joint(scene, "weld", *held, near)
         first = _add_body(scene, geometry.first)
         second = _add_body(first.scene, geometry.second)
         return Interpretation(second.scene, "body", created=first.created + second.created,
                               message="an X pins a body to what lies under it, but this one is outside every "
                                       "body; it became two line bodies")
     if kind == "helix":
-        return _spring(scene, geometry, points)
+        return _spring(scene, geometry, points, near)
     if kind in ("curve", "arc"):
-        return _rope(scene, points)
+        return _rope(scene, points, near)
     return _add_body(scene, geometry)
+
+
+def _x_host(scene: Scene, x: XSymbol, near: Near | None) -> tuple[Body, tuple[float, float]] | None:
+    """The body an X welds and the weld's anchor: the topmost body holding the crossing; else, for an X drawn over
+    a thin body (a platform a few pixels thick, a line) with its crossing just off it, the body nearest the crossing
+    within half an arm, anchored at its point nearest the crossing."""
+    hosts = bodies_at(scene, x.center, near=near)
+    if hosts:
+        return hosts[0], x.center
+    reach = (math.dist(x.first.start, x.first.end) + math.dist(x.second.start, x.second.end)) / 4  # half an arm
+    (cx, cy), centre = x.center, Point(x.center)
+    found = [(body_geometry(b).distance(centre), rank, b)  # nearest first, then topmost
+             for rank, b in enumerate(_candidates(scene, (cx - reach, cy - reach, cx + reach, cy + reach), near))]
+    found = [n for n in found if n[0] <= reach]
+    if not found:
+        return None
+    body = min(found, key=lambda n: n[:2])[2]
+    anchor = shapely.ops.nearest_points(body_geometry(body), centre)[0]
+    return body, (float(anchor.x), float(anchor.y))
 
 
 def _size(points: Sequence[tuple[float, float]]) -> float:
@@ -143,10 +174,10 @@ def _centre(points: Sequence[tuple[float, float]]) -> tuple[float, float]:
     return (c.x, c.y)
 
 
-def _erase(scene: Scene, line: Line) -> Interpretation | None:
+def _erase(scene: Scene, line: Line, near: Near | None) -> Interpretation | None:
     """A line whose midpoint is in a body and whose ends are outside it erases that body."""
     mid = ((line.start[0] + line.end[0]) / 2, (line.start[1] + line.end[1]) / 2)
-    for body in bodies_at(scene, mid):
+    for body in bodies_at(scene, mid, near=near):
         area = body_geometry(body)
         if not area.covers(Point(line.start)) and not area.covers(Point(line.end)):
             gone = (body.id, *scene.attached_to(body.id))
@@ -154,9 +185,9 @@ def _erase(scene: Scene, line: Line) -> Interpretation | None:
     return None
 
 
-def _joint(scene: Scene, kind: str, host: Body, anchor: tuple[float, float]) -> Interpretation:
+def _joint(scene: Scene, kind: str, host: Body, anchor: tuple[float, float], near: Near | None) -> Interpretation:
     jid, scene2 = scene.new_id("j")
-    other = under(scene, anchor, host.id)
+    other = under(scene, anchor, host.id, near)
     joint = Joint(jid, kind, host.id, other, (float(anchor[0]), float(anchor[1])))
     return Interpretation(scene2.add(joint), kind, created=(jid,))
 
@@ -191,23 +222,23 @@ def _attach_rope_ends(scene: Scene, body: Body) -> tuple[Scene, list[str]]:
     return scene, attached
 
 
-def _rope(scene: Scene, points: Sequence[tuple[float, float]]) -> Interpretation:
+def _rope(scene: Scene, points: Sequence[tuple[float, float]], near: Near | None) -> Interpretation:
     rid, scene2 = scene.new_id("r")
-    start = bodies_at(scene, points[0])
-    end = bodies_at(scene, points[-1])
+    start = bodies_at(scene, points[0], near=near)
+    end = bodies_at(scene, points[-1], near=near)
     rope = Rope(rid, tuple((float(x), float(y)) for x, y in points),
                 start[0].id if start else None, end[0].id if end else None)
     return Interpretation(scene2.add(rope), "rope", created=(rid,))
 
 
-def _spring(scene: Scene, helix: Helix, points: Sequence[tuple[float, float]]) -> Interpretation:
+def _spring(scene: Scene, helix: Helix, points: Sequence[tuple[float, float]], near: Near | None) -> Interpretation:
     """A helix with an end in a fixed body is a spring along its dominant axis."""
     first, last = points[0], points[-1]
-    at_first, at_last = bodies_at(scene, first), bodies_at(scene, last)
+    at_first, at_last = bodies_at(scene, first, near=near), bodies_at(scene, last, near=near)
     fixed_first = next((b for b in at_first if scene.is_fixed(b.id)), None)
     fixed_last = next((b for b in at_last if scene.is_fixed(b.id)), None)
     if fixed_first is None and fixed_last is None:
-        result = _rope(scene, points)
+        result = _rope(scene, points, near)
         return replace(result, message="a spring needs one end in a fixed body (weld one with an X first); "
                                        "this helix was kept as a rope")
     if fixed_first is None:  # make the first end the fixed one

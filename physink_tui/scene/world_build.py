@@ -1,9 +1,10 @@
 """Builds the pymunk objects mirroring a `Scene` (bodies, joints, springs, ropes); stepping and queries are world.py's.
 
-Everything here runs once, when `world.World.from_scene` builds a world: it turns each component into pymunk bodies,
-shapes and constraints and records which component owns what. Bodies and shapes are added to the space here;
-constraints are not: `World` adds only those with at least one dynamic end (a constraint between two static bodies
-makes Chipmunk divide by a zero mass and fills the space with NaNs), and re-decides when it freezes or drags bodies.
+Everything here runs when `world.World.from_scene` builds a world, or `world_live` adds to one: it turns each
+component into pymunk bodies, shapes and constraints and records which component owns what. Bodies and shapes are
+added to the space here; constraints are not: `World` adds only those with at least one dynamic end (a constraint
+between two static bodies makes Chipmunk divide by a zero mass and fills the space with NaNs), and re-decides when
+it freezes or drags bodies.
 
 Surface codes. DESIGN.md wants a contact to take the larger restitution and the mean friction of its two shapes;
 Chipmunk multiplies them, and calling ``arbiter.shapes`` in a pre-solve callback for every contact every step makes
@@ -24,7 +25,7 @@ import pymunk
 import shapely
 
 from physink_tui.errors import SceneError
-from physink_tui.scene.components import BACKGROUND, Body, Joint, Material, Point, Rope, Scene, Spring
+from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Material, Point, Rope, Scene, Spring
 
 POLYLINE_RADIUS = 2.0
 """Half-thickness of an open polyline body's segments, in canvas units (a ramp is a 4-unit strip)."""
@@ -119,17 +120,27 @@ def build(scene: Scene, space: pymunk.Space) -> Built:
     space.add(background)
     built.bodies[BACKGROUND] = background
     built.rest_pose[background] = (0.0, 0.0, 0.0)
+    fixed = scene.fixed_bodies()
     for body in scene.bodies():
-        _add_body(built, body, fixed=scene.is_fixed(body.id))
+        add(built, body, fixed=body.id in fixed)
     # Masses are known only once shapes are in the space, and springs need them for their damping.
     for component in scene.components.values():
-        if isinstance(component, Joint):
-            _add_joint(built, component)
-        elif isinstance(component, Spring):
-            _add_spring(built, component)
-        elif isinstance(component, Rope):
-            _add_rope(built, component, index=len(built.links))
+        if not isinstance(component, Body):
+            add(built, component, rope_index=len(built.links))
     return built
+
+
+def add(built: Built, component: Component, *, fixed: bool = False, rope_index: int = 0) -> None:
+    """Mirrors one component into ``built.space`` (a joint, spring or rope after the bodies it holds); ``fixed``
+    makes a body static, ``rope_index`` picks a rope's collision group and category bit (see `_add_rope`)."""
+    if isinstance(component, Body):
+        _add_body(built, component, fixed=fixed)
+    elif isinstance(component, Joint):
+        _add_joint(built, component)
+    elif isinstance(component, Spring):
+        _add_spring(built, component)
+    elif isinstance(component, Rope):
+        _add_rope(built, component, index=rope_index)
 
 
 def _add_body(built: Built, spec: Body, *, fixed: bool) -> None:
@@ -269,6 +280,9 @@ def _add_spring(built: Built, spring: Spring) -> None:
     if a is b:
         raise SceneError(f"spring {spring.id!r} joins body {spring.a!r} to itself")
     built.carriers[spring.id] = (a, b)
+    if a.body_type != pymunk.Body.DYNAMIC and b.body_type != pymunk.Body.DYNAMIC:
+        built.constraints[spring.id] = ()  # both ends held still (a fixed body to the background): nothing to do
+        return
     fixed, free, fixed_at, free_at = a, b, spring.anchor_a, spring.anchor_b
     if a.body_type == pymunk.Body.DYNAMIC and b.body_type != pymunk.Body.DYNAMIC:
         fixed, free, fixed_at, free_at = b, a, spring.anchor_b, spring.anchor_a
@@ -376,7 +390,8 @@ def _add_rope(built: Built, rope: Rope, *, index: int) -> None:
         # (an iterative solver cannot keep a chain of light links taut under a body a thousand times heavier).
         a, b = built.bodies[rope.start_body], built.bodies[rope.end_body]
         length = sum(math.dist(p, q) for p, q in itertools.pairwise(path))
-        parts.append(pymunk.SlideJoint(a, b, a.world_to_local(path[0]), b.world_to_local(path[-1]), 0.0, length))
+        if pymunk.Body.DYNAMIC in (a.body_type, b.body_type):  # (between two fixed bodies it has nothing to do)
+            parts.append(pymunk.SlideJoint(a, b, a.world_to_local(path[0]), b.world_to_local(path[-1]), 0.0, length))
     built.links[rope.id] = tuple(links)
     built.shapes[rope.id] = tuple(shapes)
     built.constraints[rope.id] = tuple(parts)

@@ -2,10 +2,11 @@
 history, and journals what it consumed; the TUI, kiosk, CLI and tests all drive it the same way.
 
 Time is the entries' ``t``, never a clock. Pen input goes through the input side (decoder, mapping,
-gesture engine); each finished stroke is recognised and interpreted into the scene (sketch mode).
-A short line is held back until the next stroke shows whether the two make an X. In demo mode the pen
-demonstrates behaviour (`demo`), playback commands move timeline time, and phrases label its events;
-simulation arrives with a later issue (its command is accepted and reported).
+gesture engine); each finished stroke is recognised and interpreted into the scene (sketch mode), and
+the live physics world (`world`) follows the scene. A short, nearly straight stroke is held back until the next
+stroke shows whether the two make an X. In demo mode the pen demonstrates behaviour (`demo`), playback commands
+move timeline time, and phrases label its events; simulation arrives with a later issue (its command is accepted
+and reported).
 """
 
 from __future__ import annotations
@@ -15,21 +16,21 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
 from physink_tui.errors import JournalError
-from physink_tui.input.gestures import Dwell, Gesture, PenMove, StrokeEnded, Tap
+from physink_tui.input.gestures import Dwell, Gesture, PenDown, PenMove, StrokeEnded, Tap
 from physink_tui.input.journal_replay import PEN_DEVICE, pen_input_for
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.writer import JournalWriter
-from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
-from physink_tui.scene.interpret import bodies_at, interpret
+from physink_tui.scene.interpret import Near, bodies_at, interpret
+from physink_tui.scene.overlaps import overlapped, push_clear
 from physink_tui.scene.primitives import Recognition
-from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
-from physink_tui.scene.world import World
+from physink_tui.scene.recognize import recognize_stroke
+from physink_tui.scene.world_live import LiveWorld
+from physink_tui.scene.x_pairing import pair_x, x_arm
 from physink_tui.session import adjust, demo
-from physink_tui.session.adjust import SETTLE_STEPS
 from physink_tui.session.history import History
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.phrases import (
@@ -42,15 +43,12 @@ from physink_tui.timeline.phrases import (
 )
 
 X_CANDIDATE = 0.08
-"""A line shorter than this share of the canvas diagonal may be half of an X: it waits for the next stroke."""
+"""A nearly straight stroke (`x_pairing.x_arm`) shorter than this share of the canvas diagonal may be half of an X:
+it waits for the next stroke."""
 PIN_SIZE = 0.012
 """A circle with a radius under this share of the canvas diagonal looks like a pin."""
-OVERLAP = 0.02
-"""A new body overlapping another by more than this share of its area is pushed clear."""
-OVERLAP_DONE = 0.002
-MAX_CLEARING_ROUNDS = 20
 X_WAIT = 1.5
-"""Seconds a possible half-X waits for its second stroke before it is taken as a line on its own."""
+"""Seconds a possible half-X waits for its second stroke to begin before it is taken on its own."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,12 +88,14 @@ class Session:
     messages: list[Message] = field(default_factory=list)
     t: float = 0.0
     _pending: _Pending | None = None
+    _drawing: bool = False
     _adjust: adjust.Adjust | None = None
     _unsettled: tuple[str, ...] = ()
     journal: JournalWriter | None = None
     timeline: Timeline | None = None
     vocabulary: Vocabulary = DEFAULT_VOCABULARY
     _demo: demo.Demo | None = None
+    _world: LiveWorld | None = None
 
     @classmethod
     def from_header(cls, header: JournalHeader) -> Session:
@@ -114,6 +114,24 @@ class Session:
     def scene(self) -> Scene:
         return self.history.current
 
+    @property
+    def world(self) -> LiveWorld:
+        """The sketch as a physics world without gravity, brought in step with the scene (what a view shows): only
+        what changed since the last call is added, moved or removed."""
+        if self._world is None:
+            self._world = LiveWorld.from_scene(self.scene)
+        else:
+            self._world.sync(self.scene)
+        return self._world
+
+    def _near(self, scene: Scene) -> Near:
+        """The live world's spatial index, brought in step with ``scene`` (the current one or one on its way)."""
+        if self._world is None:
+            self._world = LiveWorld.from_scene(scene)
+        else:
+            self._world.sync(scene)
+        return self._world.bodies_in
+
     # -- input ---------------------------------------------------------------------------------
 
     def handle(self, entry: JournalEntry) -> None:
@@ -128,7 +146,7 @@ class Session:
                 self.messages.append(Message(entry.t, str(exc)))
         if self._demo is not None:
             demo.advance_demo(self, entry.t)
-        if self._pending is not None and entry.t - self._pending.t > X_WAIT:
+        if self._pending is not None and not self._drawing and entry.t - self._pending.t > X_WAIT:
             self._flush_pending()
         if isinstance(entry, HidEntry):
             self._gestures(self.pen.handle(RawReport(entry.t, entry.data, entry.dev)))
@@ -166,6 +184,8 @@ class Session:
                 demo.demo_gesture(self, g)
             return
         for g in gestures:
+            if isinstance(g, PenDown | StrokeEnded | Tap):
+                self._drawing = isinstance(g, PenDown)  # a second stroke begun in time may still finish an X
             if isinstance(g, StrokeEnded):
                 self._stroke(g)
             elif isinstance(g, Tap):
@@ -179,7 +199,7 @@ class Session:
         return (x * self.canvas[0], y * self.canvas[1])
 
     def _tap(self, tap: Tap) -> None:
-        found = bodies_at(self.scene, self._to_canvas(tap.x, tap.y))
+        found = bodies_at(self.scene, self._to_canvas(tap.x, tap.y), near=self._near(self.scene))
         self.selected = found[0].id if found else None
         if self.selected:
             self.tell(f"selected {self._name(self.selected)}")
@@ -196,17 +216,16 @@ class Session:
             self._flush_pending()
             self._eraser(points)
             return
-        recognition = recognize_stroke(points)
         if self._pending is not None:
             pending, self._pending = self._pending, None
-            if recognition.kind == "line":
-                pair = recognize_strokes([pending.points, points])
-                if pair.kind == "x":
-                    self._apply(pair, [pending.points, points], "X-symbol")
-                    return
-            self._apply(pending.recognition, [pending.points], "line")
-        if recognition.kind == "line" and self._is_short(points):
-            self._pending = _Pending(ended.t, points, recognition)
+            pair = pair_x(pending.points, points, self._x_arm_limit())
+            if pair is not None:
+                self._apply(pair, [pending.points, points], "X-symbol")
+                return
+            self._apply(pending.recognition, [pending.points], pending.recognition.kind or "stroke")
+        recognition = recognize_stroke(points)
+        if x_arm(points, self._x_arm_limit()) is not None:  # whatever the recogniser named it: a bowed or hooked
+            self._pending = _Pending(ended.t, points, recognition)  # half-X is seldom a clean line
             return
         self._apply(recognition, [points], recognition.kind or "stroke")
 
@@ -220,43 +239,27 @@ class Session:
     def _clear_overlaps(self, scene: Scene, created: tuple[str, ...]) -> Scene:
         """A new body drawn into others (not joined to it) is pushed clear by the physics, the others held still."""
         for body_id in created:
-            body = scene.components[body_id]
-            area = body_geometry(body)
-            joined = {end for c in scene.components.values() if isinstance(c, Joint) and body_id in (c.a, c.b)
-                      for end in (c.a, c.b)}
-            hit = [b.id for b in scene.bodies()
-                   if b.id != body_id and b.id not in joined
-                   and body_geometry(b).intersection(area).area > OVERLAP * area.area]
-            if not hit or scene.is_fixed(body_id):
+            if scene.is_fixed(body_id):
                 continue
-            world = World.from_scene(scene, gravity=(0.0, 0.0))
-            world.freeze_all_except(body_id)
-            for _ in range(MAX_CLEARING_ROUNDS):  # the solver pushes a little each step; stop once it is clear
-                world.step(SETTLE_STEPS)
-                world.set_velocity(body_id, (0.0, 0.0), 0.0)
-                moved = world.to_scene(scene).components[body_id]
-                area = body_geometry(moved)
-                if all(body_geometry(scene.components[h]).intersection(area).area <= OVERLAP_DONE * area.area
-                       for h in hit):
-                    break
-            world.unfreeze()
-            scene = world.to_scene(scene)
+            hit = overlapped(scene, body_id, self._near(scene))
+            if not hit:
+                continue
+            scene = push_clear(scene, body_id, hit)
             names = ", ".join(self._name(h, scene) for h in hit)
             self.tell(f"{self._name(body_id, scene)} overlapped {names}; the physics pushed it clear")
         return scene
 
-    def _is_short(self, points: list[tuple[float, float]]) -> bool:
-        (x0, y0), (x1, y1) = points[0], points[-1]
-        return math.hypot(x1 - x0, y1 - y0) < X_CANDIDATE * math.hypot(*self.canvas)
+    def _x_arm_limit(self) -> float:
+        return X_CANDIDATE * math.hypot(*self.canvas)
 
     def _flush_pending(self) -> None:
         if self._pending is not None:
             pending, self._pending = self._pending, None
-            self._apply(pending.recognition, [pending.points], "line")
+            self._apply(pending.recognition, [pending.points], pending.recognition.kind or "stroke")
         self._settle()
 
     def _apply(self, recognition: Recognition, strokes: list[list[tuple[float, float]]], what: str) -> None:
-        result = interpret(self.scene, recognition, strokes)
+        result = interpret(self.scene, recognition, strokes, self._near(self.scene))
         if result.message:
             self.tell(result.message)
         if result.scene != self.scene:
@@ -280,8 +283,9 @@ class Session:
 
     def _eraser(self, points: list[tuple[float, float]]) -> None:
         """An eraser stroke removes the topmost body it passes over (and what holds on to it)."""
+        near = self._near(self.scene)
         for point in points:
-            found = bodies_at(self.scene, point)
+            found = bodies_at(self.scene, point, near=near)
             if found:
                 gone = (found[0].id, *self.scene.attached_to(found[0].id))
                 self.history.push(self.scene.remove(*gone), f"erase: {found[0].id}")
