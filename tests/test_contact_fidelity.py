@@ -26,6 +26,7 @@ RNG_SEED = 1010
 FLOOR_TOP = 0.80  # canvas fraction (y down); the canvas is 1600 x 1000 units
 BLOCK_HALF = 0.04  # the block is 0.10 x 0.08 of the canvas: 160 x 80 units
 TREMOR = 0.008  # canvas fraction: 8 units each way
+PRESS = 0.004  # the pen presses the block this far into the floor (4 units), as a hand putting it down does
 
 
 def contacts(timeline: Timeline, a: str, b: str, kind: str = "contact") -> list[Event]:
@@ -71,13 +72,13 @@ def demonstrate(path: list[tuple[float, float]], t0: float = 3.5, dt: float = 0.
 
 def down_onto_the_floor(x: float) -> list[tuple[float, float]]:
     """From the block's drawn centre straight down onto the floor (0.4 s), held there 0.3 s."""
-    rest = FLOOR_TOP - BLOCK_HALF
+    rest = FLOOR_TOP - BLOCK_HALF + PRESS
     return [(x, 0.64 + (rest - 0.64) * k / 40) for k in range(41)] + [(x, rest)] * 30
 
 
 def test_a_block_pushed_along_the_floor_by_a_trembling_stop_and_go_pen_is_one_contact() -> None:
     rng = random.Random(RNG_SEED)
-    rest = FLOOR_TOP - BLOCK_HALF
+    rest = FLOOR_TOP - BLOCK_HALF + PRESS
     path = down_onto_the_floor(0.50)
     x, phase, k = 0.50, rng.uniform(0, 2 * math.pi), 0
     while x < 0.70:  # stop-and-go: pauses of up to 0.3 s, bursts of up to 0.4 s at up to 0.1 canvas/s
@@ -98,7 +99,7 @@ def test_a_block_pushed_along_the_floor_by_a_trembling_stop_and_go_pen_is_one_co
 
 
 def test_a_block_lifted_clear_of_the_floor_and_set_down_again_touches_it_twice() -> None:
-    rest = FLOOR_TOP - BLOCK_HALF
+    rest = FLOOR_TOP - BLOCK_HALF + PRESS
     path = down_onto_the_floor(0.50)
     path += [(0.50 + 0.001 * k, rest - 0.004 * k) for k in range(1, 41)]  # up 160 units: it has left
     path += [(0.54 + 0.001 * k, rest - 0.16 + 0.004 * k) for k in range(1, 41)]

@@ -46,8 +46,9 @@ def box_geometry(vertices: np.ndarray, tolerance_deg: float = 24.0) -> Box | Non
         if abs(math.degrees(math.acos(max(-1.0, min(1.0, cos)))) - 90.0) > slack:
             return None
     # the box's orientation: mean direction of the sides, folded onto a quarter turn
-    angles = [math.atan2(s[1], s[0]) % (math.pi / 2) for s in sides]
-    mean = math.atan2(sum(math.sin(4 * a) for a in angles), sum(math.cos(4 * a) for a in angles)) / 4
+    angles = [math.atan2(s[1], s[0]) % (math.pi / 2) for s in sides]  # weighted by length: long sides aim truer
+    mean = math.atan2(sum(n * math.sin(4 * a) for a, n in zip(angles, lengths, strict=True)),
+                      sum(n * math.cos(4 * a) for a, n in zip(angles, lengths, strict=True))) / 4
     c, s = math.cos(mean), math.sin(mean)
     centre = vertices.mean(axis=0)
     rel = vertices - centre
@@ -107,7 +108,10 @@ def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Heli
     off_axis = max(abs(float((c - centres[0]) @ np.array([-unit[1], unit[0]]))) for c in centres)
     if off_axis > 0.6 * radius + 0.15 * advance:
         return None  # the loops wander (flourishes round a box's corners), a spring's go straight
-    return Helix(_pt(centres[0]), _pt(centres[-1]), radius, turns)
+    # the spring reaches as far along its axis as the stroke does (its end loops' centres fall short of them)
+    reach = (work - centres[0]) @ unit
+    start, end = centres[0] + float(reach[0]) * unit, centres[0] + float(reach[-1]) * unit
+    return Helix(_pt(start), _pt(end), radius, turns)
 
 
 def x_symbol(a: Line, b: Line) -> tuple[XSymbol, float] | None:

@@ -19,7 +19,7 @@ from physink_tui.scene import stroke_geometry as sg
 from physink_tui.scene.beautify import arc_geometry, box_geometry, round_geometry
 from physink_tui.scene.polygon_checks import corners_of, split_hairpins
 from physink_tui.scene.polygon_fit import PolygonFit, best_polygons
-from physink_tui.scene.primitives import Curve, Geometry, Line, Polygon, Polyline
+from physink_tui.scene.primitives import Box, Curve, Geometry, Line, Polygon, Polyline
 from physink_tui.scene.shape_fits import fit_circle, fit_cubic, fit_ellipse
 
 CIRCLE_RATIO = 0.8
@@ -80,8 +80,29 @@ def _closed_candidate(k: int, fit: PolygonFit) -> Candidate:
     if k == 4:
         box = box_geometry(verts)
         if box is not None:
-            return Candidate("box", box, fit.rss, 8, 4)
+            return Candidate("box", _box_from_sides(box, fit), fit.rss, 8, 4)
     return Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k, k)
+
+
+def _box_from_sides(box: Box, fit: PolygonFit) -> Box:
+    """The box where its four drawn sides lie: each side's offset is the mean of its middle points across the
+    box's axes (a hook or an overshoot at a corner moves no side); the vertices' box when the sides do not
+    pair up two by two."""
+    c, s = math.cos(box.angle), math.sin(box.angle)
+    axes = np.array([[c, s], [-s, c]])
+    offsets: list[list[float]] = [[], []]  # across-u sides (positions along v), across-v sides (along u)
+    for a, b in itertools.pairwise(fit.indices):
+        run = fit.points[a:b + 1]
+        k = len(run)
+        core = run[k // 6: k - k // 6] if k >= 6 else run
+        direction = run[-1] - run[0]
+        along_u = abs(float(direction @ axes[0])) >= abs(float(direction @ axes[1]))
+        offsets[0 if along_u else 1].append(float((core @ axes[1 if along_u else 0]).mean()))
+    if sorted(map(len, offsets)) != [2, 2]:
+        return box
+    (v0, v1), (u0, u1) = sorted(offsets[0]), sorted(offsets[1])
+    centre = axes[0] * (u0 + u1) / 2 + axes[1] * (v0 + v1) / 2
+    return Box(_pt(centre), u1 - u0, v1 - v0, box.angle)
 
 
 def ellipse_distances(pts: np.ndarray, centre: np.ndarray, rx: float, ry: float, angle: float) -> np.ndarray:

@@ -232,9 +232,11 @@ def _rope(scene: Scene, points: Sequence[tuple[float, float]], near: Near | None
 
 
 def _spring(scene: Scene, helix: Helix, points: Sequence[tuple[float, float]], near: Near | None) -> Interpretation:
-    """A helix with an end in a fixed body is a spring along its dominant axis."""
+    """A helix with an end in (or its end loop touching) a fixed body is a spring along its dominant axis."""
     first, last = points[0], points[-1]
-    at_first, at_last = bodies_at(scene, first, near=near), bodies_at(scene, last, near=near)
+    reach = helix.radius  # a coil's end loop touching a body holds on to it, as drawn by a hurried hand
+    at_first, at_last = (bodies_at(scene, first, reach=reach, near=near),
+                         bodies_at(scene, last, reach=reach, near=near))
     fixed_first = next((b for b in at_first if scene.is_fixed(b.id)), None)
     fixed_last = next((b for b in at_last if scene.is_fixed(b.id)), None)
     if fixed_first is None and fixed_last is None:

@@ -16,16 +16,18 @@ import numpy as np
 
 from physink_tui.scene.polygon_fit import PolygonFit
 
-MIN_CORNER_DEG = 25.0
+MIN_CORNER_DEG = 35.0
 """Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""
 HAIRPIN_DEG = 150.0
 HAIRPIN_GAP = 0.35
 """A closed outline that turns back by more than `HAIRPIN_DEG` at a vertex whose two sides then run closer than
 `HAIRPIN_GAP` of their length is a thin wall's end (a star's tip, whose sides part, is a corner)."""
-CHAMFER = 0.25
+CHAMFER = 0.5
+CHAMFER_OF_LONGER = 0.1
 CHAMFER_TURN_DEG = 62.0
-"""A closed outline's side shorter than ``CHAMFER`` of its neighbours, turning less than this at both ends,
-is a rounded corner."""
+"""A closed outline's side shorter than ``CHAMFER`` of its shorter neighbour (or ``CHAMFER_OF_LONGER`` of the
+longer), turning less than this at both ends and
+about a right angle in all, is a corner rounded or cut back by a hurried hand, not a side."""
 BOW_SHARE = 0.06
 """Most points of a side (four in five) lie within this share of its length (plus the pen's noise) of the
 side's own line: a side bowed by more than about 15 % of its length is a curve, not a side."""
@@ -48,7 +50,7 @@ def _side_line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None:
     """The fit's verdict: None when a vertex is no real corner or a side is bowed, else its hairpins."""
     pts, idx = fit.points, fit.indices
-    verts = pts[list(idx)]
+    verts = np.concatenate([fit.vertices, fit.vertices[:1]]) if closed else fit.vertices
     sides = np.diff(verts, axis=0)
     lengths = np.hypot(*sides.T)
     if (lengths == 0).any():
@@ -68,7 +70,10 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None
                 hairpins.append(int(v + 1) % m)
         for s in range(m):  # a short side between two gentle turns is a rounded corner cut off
             shorter = min(lengths[s - 1], lengths[(s + 1) % m])
-            if lengths[s] < CHAMFER * shorter and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG:
+            longer = max(lengths[s - 1], lengths[(s + 1) % m])
+            short = lengths[s] < CHAMFER * shorter or lengths[s] < CHAMFER_OF_LONGER * longer
+            if (short and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG
+                    and 60.0 <= degrees[s - 1] + degrees[s] <= 120.0):  # together, about a right angle's turn
                 return None
     for (a, b), chord in zip(itertools.pairwise(idx), lengths, strict=True):
         if b - a > 5 and chord > 10 * noise:  # a short side's bow is only where its corners' points fell

@@ -33,6 +33,8 @@ from physink_tui.scene.shape_fits import fit_ellipse
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
+MIN_SIZE = 3.0
+"""A stroke less than this many noise widths across is a dot, not a shape."""
 PEN_NOISE = 1.0
 """The pen's jitter in the stroke's units when the caller does not say: a pixel of a canvas in pixels."""
 
@@ -83,6 +85,10 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
     noise = max(noise if math.isfinite(noise) and noise > 0 else 0.0, sg.jitter(pts))  # the pen may be worse
+    size = sg.bbox_diagonal(pts)
+    if size < MIN_SIZE * noise:
+        return Recognition(None, 0.0, None, (), f"{TOO_SHORT}: {size:.3g} units across, within the pen's noise "
+                                                f"({noise:.3g} units)")
     unit_noise = noise / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
         result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS)
@@ -131,6 +137,9 @@ DEFAULT_WEIGHTS = Weights()
 EFFECTIVE_SAMPLES = 64
 """How many independent samples a stroke's fit error is taken to rest on, whatever its point count."""
 MAX_JUDGED_POINTS = 600
+COIL_SHARPNESS = 0.7
+"""A spring's loops may be pointed (a hurried hand), but not turn as sharply as a star's corners (about 0.9 of
+their turning in the sharpest fifth)."""
 OPEN_SPACING = 3.0
 """Open strokes are judged on points at least this many noise widths apart."""
 BOUNDS_MARGIN = 0.05
@@ -162,7 +171,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
             closed, loop = True, work
     if not closed:
         # open strokes are judged by how they turn: on points a few noise widths apart, jitter makes no corners
-        coarse_n = int(min(n, max(32, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
+        coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
         found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise)
         round_left_open = found.kind in ("circle", "ellipse")
         if _inside(found.geometry, *_bounds(raw, noise, OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN)):
@@ -270,7 +279,7 @@ def _helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float) -> 
     if abs(total_turn) > 3.5 * math.pi:
         coil = sg.resample(sg.remove_hooks(work), n)
         coil_turn = sg.turning(coil)
-        if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < 0.5:  # smooth: a star winds twice too
+        if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < COIL_SHARPNESS:  # a star winds twice too
             helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
             if helix is not None:
                 return Recognition("helix", 0.9, helix, (("curve", 0.1),))
