@@ -34,6 +34,18 @@ KNOWN_FAILING: dict[str, tuple[str, Outline, str]] = {
                                              seed=134217727), "no kind: 'no shape fits the stroke'"),
     "thin_60x1.8_tilted": ("bounds", Outline("rectangle", _rect(30.0, 0.9), angle=1.849, start=0.007, closing=2.3,
                                              jitter=0.14, seed=302622), "no kind: 'no shape fits the stroke'"),
+    # a clean concave 7-gon 240 x 330 px (no rotation, no jitter, no closing gap) and a self-crossing 4-segment
+    # polyline 360 x 95 px: nothing at all
+    "concave_7gon_clean": ("bounds", Outline("concave", ((65.0, -6.0), (98.0, 158.0), (-8.0, 171.0), (-53.0, 20.0),
+                                                         (-125.0, -99.0), (-26.0, -162.0), (116.0, -145.0)),
+                                             jitter=0.0), "no kind: 'no shape fits the stroke'"),
+    "concave_7gon_jittered": ("bounds", Outline("concave", ((138.9, 8.5), (157.2, 197.2), (-8.0, 87.9), (-246.8, 51.9),
+                                                            (-71.9, -23.7), (-33.8, -148.1), (83.0, -131.6)),
+                                                angle=3.219, start=0.65, jitter=1.24, seed=7),
+                              "no kind: 'no shape fits the stroke'"),
+    "crossing_polyline_clean": ("bounds", Outline("polyline", ((-220.0, 30.0), (80.0, 30.0), (140.0, -5.0),
+                                                               (140.0, -65.0), (-145.0, 15.0)), jitter=0.0),
+                                "no kind: 'no shape fits the stroke'"),
     # a clean 592 x 106 px box (no jitter) reads as a 5-corner polygon one way round and a box the other
     "box_592x106_steep": ("reverse", Outline("rectangle", _rect(296.1, 53.1), angle=1.25, start=0.783, closing=5.6,
                                              jitter=0.0, seed=13982), "polygon forwards, box backwards"),
