@@ -1,4 +1,4 @@
-"""Real people's strokes ($1 gestures, three people) through recognition and through a Session's interpretation.
+"""Real people's strokes ($1 gestures, three people) through recognition and a Session's interpretation.
 
 The strokes are read in place from ``../shared/data/strokes/dollar1-dev.jsonl`` next to the repository, never
 copied into it; without that file every test here skips (see `people_rows`, the one place to make it fail).
