@@ -250,3 +250,11 @@ def jitter(pts: np.ndarray) -> float:
     normal = np.column_stack([-t[ok, 1], t[ok, 0]]) / norm[ok, None]
     across = np.abs((d2[ok] * normal).sum(axis=1))
     return float(1.4826 * np.median(across) / math.sqrt(6))
+
+
+def coarse_turning(pts: np.ndarray, noise: float, most: int = 40) -> np.ndarray:
+    """`turning` on the path resampled to ``most`` points, or fewer when the pen's ``noise`` would make steps
+    that short wobble (steps at least six noise widths long, and at least 16 points): how the stroke turns at
+    the scale of its shape."""
+    n = most if noise <= 0 else int(min(most, max(32, path_length(pts) / (6 * noise))))
+    return turning(resample(pts, n))
