@@ -40,8 +40,10 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
 def line(raw: np.ndarray, noise: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
-    coarse = sg.smooth(sg.resample(raw, 48))
-    coarse = sg.resample(sg.remove_hooks(coarse), 48)
+    # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
+    n = int(min(400, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
+    coarse = sg.smooth(sg.resample(raw, n))
+    coarse = sg.resample(sg.remove_hooks(coarse), n)
     _, _, err = fit_line(coarse)
     length = sg.path_length(coarse)
     chord = float(np.hypot(*(coarse[-1] - coarse[0])))
