@@ -9,8 +9,10 @@ points; arcs and ellipses span the stroke), so none reaches far outside it.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -51,37 +53,54 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def polygonal(work: np.ndarray, *, closed: bool, tolerance: float, noise: float) -> list[Candidate]:
-    """Lines, polylines, boxes and polygons: the best chain of chords for each number of sides."""
+@dataclass(frozen=True, slots=True)
+class Pending:
+    """Candidates not built yet: their error is known, and building them (judging the corners, beautifying)
+    is left until the ranking reaches them.
+
+    Attributes:
+        rss: their fit error, as `Candidate.rss`.
+        params: the least complexity any of them has.
+        build: makes them (possibly none, when the fit's corners are not real ones).
+    """
+
+    rss: float
+    params: int
+    build: Callable[[], list[Candidate]]
+
+
+def polygonal(work: np.ndarray, *, closed: bool, tolerance: float, noise: float) -> list[Pending]:
+    """Lines, polylines, boxes and polygons: the best chain of sides for each number of sides, to be built."""
     fits = best_polygons(work, closed=closed, max_sides=MAX_SIDES, tolerance=tolerance)
+    return [Pending(tried[0].rss, 2 * k if closed else 2 * (k + 1),
+                    functools.partial(_build_polygonal, k, tried, closed, noise))
+            for k, tried in sorted(fits.items())]
+
+
+def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float) -> list[Candidate]:
+    judged = [(f, corners_of(f, closed=closed, noise=noise)) for f in tried]
     out = []
-    for k, tried in sorted(fits.items()):
-        judged = [(f, corners_of(f, closed=closed, noise=noise)) for f in tried]
-        fit = next((f for f, corners in judged if corners is not None and not corners.hairpins), None)
-        if closed:
-            capped = next(((f, c) for f, c in judged if c is not None and c.hairpins), None)
-            if capped is not None:  # thin walls drawn as hairpins: their ends made flat, two corners each
-                verts = split_hairpins(capped[0], capped[1].hairpins)
-                out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), capped[0].rss, 2 * len(verts),
-                                     len(verts)))
-        if fit is None:
-            continue
-        if closed:
-            out.append(_closed_candidate(k, fit))
-        elif k == 1:
-            out.append(Candidate("line", Line(_pt(fit.vertices[0]), _pt(fit.vertices[-1])), fit.rss, 4, 1))
-        else:
-            out.append(Candidate("polyline", Polyline(tuple(map(_pt, fit.vertices))), fit.rss, 2 * (k + 1), k))
-    return out
-
-
-def _closed_candidate(k: int, fit: PolygonFit) -> Candidate:
-    verts = fit.vertices
-    if k == 4:
-        box = box_geometry(verts)
+    if closed:
+        capped = next(((f, c) for f, c in judged if c is not None and c.hairpins), None)
+        if capped is not None:  # thin walls drawn as hairpins: their ends made flat, two corners each
+            verts = split_hairpins(*capped)
+            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), capped[0].rss, 2 * len(verts),
+                                 len(verts)))
+    found = next(((f, c) for f, c in judged if c is not None and not c.hairpins), None)
+    if found is None:
+        return out
+    fit, verts = found[0], found[1].vertices
+    if closed:
+        box = box_geometry(verts) if k == 4 else None
         if box is not None:
-            return Candidate("box", _box_from_sides(box, fit), fit.rss, 8, 4)
-    return Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k, k)
+            out.append(Candidate("box", _box_from_sides(box, fit), fit.rss, 8, 4))
+        else:
+            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k, k))
+    elif k == 1:
+        out.append(Candidate("line", Line(_pt(verts[0]), _pt(verts[-1])), fit.rss, 4, 1))
+    else:
+        out.append(Candidate("polyline", Polyline(tuple(map(_pt, verts))), fit.rss, 2 * (k + 1), k))
+    return out
 
 
 def _box_from_sides(box: Box, fit: PolygonFit) -> Box:

@@ -40,8 +40,10 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
 def line(raw: np.ndarray, noise: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
-    coarse = sg.smooth(sg.resample(raw, 48))
-    coarse = sg.resample(sg.remove_hooks(coarse), 48)
+    # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
+    n = int(min(400, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
+    coarse = sg.smooth(sg.resample(raw, n))
+    coarse = sg.resample(sg.remove_hooks(coarse), n)
     _, _, err = fit_line(coarse)
     length = sg.path_length(coarse)
     chord = float(np.hypot(*(coarse[-1] - coarse[0])))
@@ -75,7 +77,7 @@ def classify_open(work: np.ndarray, noise: float) -> Recognition:
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
     straight_runs = [straight(work[a:b + 1], noise) or sg.path_length(work[a:b + 1]) < 0.06 * length
                      for a, b in itertools.pairwise(corners)]
-    coarse = sg.turning(sg.resample(work, 40))
+    coarse = sg.coarse_turning(work, noise)
     concentration = sf.turn_concentration(coarse)
     if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()):
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)
@@ -83,7 +85,7 @@ def classify_open(work: np.ndarray, noise: float) -> Recognition:
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-    if len(straight_runs) >= 2 and (all(straight_runs) or _bent_polyline(work, th, corners)):
+    if len(straight_runs) >= 2 and (all(straight_runs) or _bent_polyline(work, th, corners, noise)):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
@@ -93,13 +95,13 @@ def classify_open(work: np.ndarray, noise: float) -> Recognition:
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
 
 
-def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int]) -> bool:
+def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int], noise: float) -> bool:
     """A polyline drawn with bowed or curled sides (a check mark's arms): it turns at a really sharp
     corner, in at most three lobes none of which curls right round (a pigtail's loop), or mostly at
     sharp corners with nearly straight sides (an arrow whose head doubles back). A question mark's
     bend, where a corner finder may cut its curl, turns less than 90 degrees."""
     turns = sf.corner_turns(th, corners)
-    lobes = sf.lobes(work)
+    lobes = sf.lobes(work, noise=noise)
     few_lobes = len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0
     if few_lobes and max(turns) >= VERY_SHARP_CORNER:
         return True

@@ -9,12 +9,11 @@ these a fit passes; `split_hairpins` turns each doubled-back vertex into that fl
 
 from __future__ import annotations
 
-import itertools
 from dataclasses import dataclass
 
 import numpy as np
 
-from physink_tui.scene.polygon_fit import PolygonFit
+from physink_tui.scene.polygon_fit import PolygonFit, run_lines
 
 MIN_CORNER_DEG = 35.0
 """Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""
@@ -38,7 +37,9 @@ class Corners:
     """A fit whose vertices are corners; ``hairpins`` are the vertices (positions in the fit's vertex list)
     where a closed outline doubles back along itself."""
 
-    hairpins: tuple[int, ...] = ()
+    hairpins: tuple[int, ...]
+    vertices: np.ndarray
+    """The fit's vertices (`PolygonFit.vertices`), kept."""
 
 
 def _side_line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -50,7 +51,8 @@ def _side_line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None:
     """The fit's verdict: None when a vertex is no real corner or a side is bowed, else its hairpins."""
     pts, idx = fit.points, fit.indices
-    verts = np.concatenate([fit.vertices, fit.vertices[:1]]) if closed else fit.vertices
+    corners = fit.vertices
+    verts = np.concatenate([corners, corners[:1]]) if closed else corners
     sides = np.diff(verts, axis=0)
     lengths = np.hypot(*sides.T)
     if (lengths == 0).any():
@@ -75,21 +77,37 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None
             if (short and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG
                     and 60.0 <= degrees[s - 1] + degrees[s] <= 120.0):  # together, about a right angle's turn
                 return None
-    for (a, b), chord in zip(itertools.pairwise(idx), lengths, strict=True):
-        if b - a > 5 and chord > 10 * noise:  # a short side's bow is only where its corners' points fell
-            run = pts[a:b + 1]
-            centre, vt = _side_line(run)
-            off = np.abs((run - centre) @ vt[1])  # distance from the side's own line; a hook is a few points
-            if float(np.quantile(off, 0.8)) > BOW_SHARE * chord + 2 * noise:
-                return None
-    return Corners(tuple(hairpins))
+    if _bowed(pts, np.asarray(idx), lengths, noise):
+        return None
+    return Corners(tuple(hairpins), corners)
 
 
-def split_hairpins(fit: PolygonFit, hairpins: tuple[int, ...]) -> np.ndarray:
+def _bowed(pts: np.ndarray, idx: np.ndarray, chords: np.ndarray, noise: float) -> bool:
+    """Whether a side's points stray from the side's own line: four in five of them by more than `BOW_SHARE`
+    of its length plus twice the noise (a hook is a few points; a short side's bow is only where its corners'
+    points fell, so sides under 10 noise widths or 6 points are not judged)."""
+    a, b = idx[:-1], idx[1:]
+    judged = (b - a > 5) & (chords > 10 * noise)
+    if not judged.any():
+        return False
+    a, b, chords = a[judged], b[judged], chords[judged]
+    centres, dirs = run_lines(pts, a, b + 1)
+    sizes = b - a + 1
+    run = np.repeat(np.arange(len(a)), sizes)
+    point = np.concatenate([np.arange(lo, hi + 1) for lo, hi in zip(a, b, strict=True)])
+    rel = pts[point] - centres[run]
+    off = np.abs(rel[:, 0] * dirs[run, 1] - rel[:, 1] * dirs[run, 0])
+    order = np.lexsort((off, run))  # by run, then by distance within it
+    starts = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+    q80 = off[order][starts + (0.8 * (sizes - 1)).astype(int)]
+    return bool((q80 > BOW_SHARE * chords + 2 * noise).any())
+
+
+def split_hairpins(fit: PolygonFit, corners: Corners) -> np.ndarray:
     """The fit's vertices with each hairpin replaced by a flat end: the point of the outline that reaches
     farthest along the wall, projected onto each of the wall's two sides."""
     pts, idx = fit.points, fit.indices
-    verts = list(fit.vertices)
+    verts, hairpins = list(corners.vertices), corners.hairpins
     m = len(idx) - 1
     out: list[np.ndarray] = []
     for v in range(m):

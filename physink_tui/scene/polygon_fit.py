@@ -17,7 +17,6 @@ always points of the stroke itself, so nearly parallel sides never meet far away
 from __future__ import annotations
 
 import heapq
-import itertools
 from dataclasses import dataclass
 
 import numpy as np
@@ -25,25 +24,54 @@ import numpy as np
 
 @dataclass(frozen=True, slots=True)
 class PolygonFit:
-    """The best chain of ``len(indices) - 1`` chords through the stroke's points.
+    """The best chain of ``len(indices) - 1`` runs of the stroke's points, each close to a line.
 
     Attributes:
-        indices: indices into the (rotated, for closed strokes) point array, first and last included; for a
-            closed stroke the last index is the first point again, appended at the end.
-        vertices: the points at those indices (for a closed stroke without the repeated last one).
-        rss: sum over all points of the squared distance to their chord (stroke units squared).
+        indices: where the runs join, as indices into ``points``, first and last included; for a closed stroke
+            ``points`` is the loop from its chosen start with that start repeated at the end.
+        rss: sum over all points of the squared distance to their run's own line (stroke units squared).
         points: the point array the indices refer to.
+        closed: whether the chain is a closed outline (its last vertex joins its first).
+        reach: how far outside the points' bounds a vertex may lie (see `corner_points`).
     """
 
     indices: tuple[int, ...]
-    vertices: np.ndarray
     rss: float
     points: np.ndarray
+    closed: bool
+    reach: float
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """The chain's vertices (`corner_points`); computed on each call, so keep the answer."""
+        return corner_points(self.points, self.indices, closed=self.closed, reach=self.reach)
 
 
-def candidate_vertices(pts: np.ndarray, tolerance: float, limit: int = 40) -> list[int]:
-    """Indices a Douglas-Peucker pass at ``tolerance`` keeps (ends included), splitting the most deviating
-    piece first and stopping at ``limit`` points."""
+def candidate_vertices(pts: np.ndarray, tolerance: float, limit: int = 28) -> list[int]:
+    """Indices where a corner may be (ends included), at most about ``limit``: half of them from a
+    Douglas-Peucker pass at ``tolerance`` (splitting the most deviating piece first: the shape's big corners),
+    half the local peaks of how far a point stands out from the chord between its neighbours a few points either
+    side (small features: a thin wall's end)."""
+    n = len(pts)
+    chosen = set(_douglas_peucker(pts, tolerance, limit // 2))
+    i = np.arange(n)
+    score = np.zeros(n)
+    for w in (2, 4):
+        a, b = pts[np.maximum(i - w, 0)], pts[np.minimum(i + w, n - 1)]
+        chord = b - a
+        norm = np.hypot(*chord.T)
+        rel = pts - a
+        off = np.abs(rel[:, 0] * chord[:, 1] - rel[:, 1] * chord[:, 0]) / np.where(norm > 0, norm, 1.0)
+        score = np.maximum(score, np.where(norm > 0, off, 0.0))
+    padded = np.concatenate([[-1.0], score, [-1.0]])
+    peak = (score >= padded[:-2]) & (score >= padded[2:]) & (score > tolerance)
+    found = np.flatnonzero(peak)
+    chosen.update(found[np.argsort(-score[found], kind="stable")][: limit // 2].tolist())
+    return sorted(chosen)
+
+
+def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]:
+    """The points a Douglas-Peucker pass at ``tolerance`` keeps, the most deviating first, at most ``limit``."""
     n = len(pts)
     chosen = [0, n - 1]
     heap: list[tuple[float, int, int, int]] = []
@@ -65,7 +93,7 @@ def candidate_vertices(pts: np.ndarray, tolerance: float, limit: int = 40) -> li
         chosen.append(k)
         push(a, k)
         push(k, b)
-    return sorted(chosen)
+    return chosen
 
 
 def chord_costs(pts: np.ndarray, cand: np.ndarray) -> np.ndarray:
@@ -188,38 +216,52 @@ def _chains(pts: np.ndarray, max_segments: int, tolerance: float, *, closed: boo
             continue
         rss, path = found
         indices = tuple(int(cand[p]) for p in path)
-        out[k] = PolygonFit(indices, corner_points(pts, indices, closed=closed, reach=4 * tolerance), rss, pts)
+        out[k] = PolygonFit(indices, rss, pts, closed, 4 * tolerance)
     return out
 
 
+def _prefix(values: np.ndarray) -> np.ndarray:
+    return np.concatenate([np.zeros(1), np.cumsum(values)])
+
+
+def run_lines(pts: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Centre and unit direction of the total-least-squares line through each ``pts[lo:hi]`` (closed form, from
+    prefix sums: no per-run loop)."""
+    x, y = pts[:, 0], pts[:, 1]
+    sx, sy, sxx, syy, sxy = _prefix(x), _prefix(y), _prefix(x * x), _prefix(y * y), _prefix(x * y)
+    m = np.maximum(hi - lo, 1).astype(float)
+    px, py = sx[hi] - sx[lo], sy[hi] - sy[lo]
+    cxx = sxx[hi] - sxx[lo] - px * px / m
+    cyy = syy[hi] - syy[lo] - py * py / m
+    cxy = sxy[hi] - sxy[lo] - px * py / m
+    theta = 0.5 * np.arctan2(2 * cxy, cxx - cyy)
+    return np.column_stack([px / m, py / m]), np.column_stack([np.cos(theta), np.sin(theta)])
+
+
 def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, reach: float) -> np.ndarray:
-    """The vertices of a chain of runs: where the lines fitted to neighbouring runs meet, when that is near the
-    point where the runs join (within a third of the shorter run, and within ``reach`` of the points' bounds);
-    else that point itself (nearly parallel
-    sides never meet far away). The ends of an open chain are its first and last points."""
-    runs = list(itertools.pairwise(indices))
-    lines = []
-    for a, b in runs:
-        run = pts[a:b + 1]
-        k = len(run)
-        core = run[k // 6: k - k // 6] if k >= 6 else run
-        centre = core.mean(axis=0)
-        _, _, vt = np.linalg.svd(core - centre, full_matrices=False)
-        lines.append((centre, vt[0], float(np.hypot(*(run[-1] - run[0])))))
-    joins = range(len(runs)) if closed else range(1, len(runs))
+    """The vertices of a chain of runs: where the lines fitted to neighbouring runs (their middle two thirds)
+    meet, when that is near the point where the runs join (within a third of the shorter run, and within
+    ``reach`` of the points' bounds); else that point itself (nearly parallel sides never meet far away). The
+    ends of an open chain are its first and last points."""
+    idx = np.asarray(indices)
+    a, b = idx[:-1], idx[1:]
+    size = b - a + 1
+    trim = np.where(size >= 6, size // 6, 0)
+    centres, dirs = run_lines(pts, a + trim, b + 1 - trim)
+    chords = np.hypot(*(pts[b] - pts[a]).T)
+    runs = len(a)
+    second = np.arange(runs) if closed else np.arange(1, runs)
+    first = second - 1  # -1 wraps to the last run of a closed chain
+    p1, d1, p2, d2 = centres[first], dirs[first], centres[second], dirs[second]
+    at = pts[idx[second]]
+    denom = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
+    safe = np.where(np.abs(denom) > 1e-9, denom, 1.0)
+    t = ((p2 - p1)[:, 0] * d2[:, 1] - (p2 - p1)[:, 1] * d2[:, 0]) / safe
+    meet = p1 + t[:, None] * d1
     lo, hi = pts.min(axis=0) - reach, pts.max(axis=0) + reach
-    out = [] if closed else [pts[indices[0]]]
-    for r in joins:
-        (p1, d1, l1), (p2, d2, l2) = lines[r - 1], lines[r]
-        at = pts[indices[r]]
-        denom = d1[0] * d2[1] - d1[1] * d2[0]
-        vertex = at
-        if abs(denom) > 1e-9:
-            t = ((p2 - p1)[0] * d2[1] - (p2 - p1)[1] * d2[0]) / denom
-            meet = p1 + t * d1
-            if (float(np.hypot(*(meet - at))) <= min(l1, l2) / 3 and (meet >= lo).all() and (meet <= hi).all()):
-                vertex = meet
-        out.append(vertex)
-    if not closed:
-        out.append(pts[indices[-1]])
-    return np.array(out)
+    near = np.hypot(*(meet - at).T) <= np.minimum(chords[first], chords[second]) / 3
+    ok = (np.abs(denom) > 1e-9) & near & (meet >= lo).all(axis=1) & (meet <= hi).all(axis=1)
+    inner = np.where(ok[:, None], meet, at)
+    if closed:
+        return inner
+    return np.concatenate([pts[idx[:1]], inner, pts[idx[-1:]]])

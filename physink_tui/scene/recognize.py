@@ -16,6 +16,7 @@ stroke's bounds wins; the others become the alternatives. Springs and scribbles 
 
 from __future__ import annotations
 
+import heapq
 import itertools
 import math
 from collections.abc import Sequence
@@ -27,7 +28,7 @@ from physink_tui.scene import open_shapes
 from physink_tui.scene import stroke_features as sf
 from physink_tui.scene import stroke_geometry as sg
 from physink_tui.scene.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
-from physink_tui.scene.candidates import Candidate, polygonal, round_shape
+from physink_tui.scene.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.primitives import Geometry, Line, Recognition
 from physink_tui.scene.shape_fits import fit_ellipse
 
@@ -178,8 +179,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
             return found
         return _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
                      weights, raw, noise)
-    candidates: list[Candidate | None] = [*polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise),
-                                          round_shape(loop)]
+    candidates: list[Candidate | Pending | None] = [
+        *polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise), round_shape(loop)]
     return _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise)
 
 
@@ -203,22 +204,38 @@ def _bounds(raw: np.ndarray, noise: float, share: float = 0.0) -> tuple[np.ndarr
     return raw.min(axis=0) - margin, raw.max(axis=0) + margin
 
 
-def _score(c: Candidate, n: int, sigma: float, weights: Weights) -> float:
+def _score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> float:
     mse = c.rss / n
     return (EFFECTIVE_SAMPLES * math.log(mse + sigma * sigma)
             + weights.complexity * c.params * math.log(EFFECTIVE_SAMPLES))
 
 
-def _rank(candidates: list[Candidate], n: int, sigma: float, weights: Weights, raw: np.ndarray,
+def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
           noise: float) -> Recognition:
-    scored = sorted(((_score(c, n, sigma, weights), i, c) for i, c in enumerate(candidates)
-                     if math.isfinite(c.rss)), key=lambda t: (t[0], t[1]))
+    """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
+    as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
+    once what is left could not change the answer or its alternatives."""
+    heap: list[tuple[float, int, Candidate | Pending]] = []
+    for c in candidates:
+        if math.isfinite(c.rss):
+            heapq.heappush(heap, (_score(c, n, sigma, weights), len(heap), c))
     lo, hi = _bounds(raw, noise)
-    kept = [(s, c) for s, _, c in scored if _inside(c.geometry, lo, hi)]
+    kept: list[tuple[float, Candidate]] = []
+    seq = len(heap)
+    while heap:
+        score, _, c = heapq.heappop(heap)
+        if kept and (score - kept[0][0] > SEARCH_SPAN or len({k.kind for _, k in kept}) > 3):
+            break
+        if isinstance(c, Pending):
+            for built in c.build():
+                seq += 1
+                heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
+        elif _inside(c.geometry, lo, hi):
+            kept.append((score, c))
     if not kept:
         return Recognition(None, 0.0, None, (), "no shape fits the stroke")
     best_score = kept[0][0]
-    weight = {}
+    weight: dict[str, float] = {}
     for s, c in kept:
         weight.setdefault(c.kind, math.exp(-(s - best_score) / CONFIDENCE_SCALE))
     total = sum(weight.values())
@@ -227,6 +244,8 @@ def _rank(candidates: list[Candidate], n: int, sigma: float, weights: Weights, r
     return Recognition(best.kind, round(weight[best.kind] / total, 4), best.geometry, alternatives[:3])
 
 
+SEARCH_SPAN = 3 * 6.0
+"""Candidates scored this much worse than the best are not built (their share of confidence is under e^-3)."""
 CONFIDENCE_SCALE = 6.0
 """Score difference that divides a kind's weight by e when confidences are shared out."""
 
@@ -237,11 +256,13 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
     if sg.path_length(work) < 1.75 * diag:  # the smoothed path: jitter lengthens the raw one
         return False, work
     th = sg.turning(work)
-    coarse = sg.turning(sg.resample(work, 40))
+    coarse = sg.coarse_turning(work, sigma)
+    limit = max(CLOSED_GAP * diag, 4 * sigma)
     if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
         loop = sf.one_loop(work, th)  # round and round one way: once round is the shape, if it is round
         ellipse = fit_ellipse(loop)
-        if ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
+        back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit  # it came back to its start (a pigtail does not)
+        if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop
     if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th)  # a shape gone round twice over the same sides: once is enough
@@ -250,7 +271,6 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
     tail, head = work[n // 2:], work[: max(2, n // 2)]
     d_tail = np.hypot(*(tail - work[0]).T)
     d_head = np.hypot(*(head - work[-1]).T)
-    limit = max(CLOSED_GAP * diag, 4 * sigma)
     if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit:
         return False, work
     loop = work

@@ -22,10 +22,11 @@ def drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fraction
     return corners
 
 
-def lobes(work: np.ndarray, min_deg: float = 35.0) -> list[float]:
-    """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke,
-    ignoring runs under ``min_deg``: a brace has five such lobes, a check mark one or two."""
-    coarse = np.degrees(sg.turning(sg.resample(work, 40)))
+def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[float]:
+    """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke (coarser
+    when the pen's ``noise`` is large), ignoring runs under ``min_deg``: a brace has five such lobes, a check
+    mark one or two."""
+    coarse = np.degrees(sg.coarse_turning(work, noise))
     runs: list[float] = []
     for v in coarse.tolist():
         if runs and (v >= 0) == (runs[-1] >= 0):

@@ -231,22 +231,31 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
 
 
 def jitter(pts: np.ndarray) -> float:
-    """The stroke's own pen jitter: a robust spread of the points across the path (the second difference's
-    component normal to the local direction, median-based), in the points' units; about 0.5 for a tablet that
-    rounds to whole pixels, about s for Gaussian jitter of s.
+    """The stroke's own pen jitter, in the points' units: how much the path's bend changes from one point to
+    the next across the path (median-based), which white noise of spread s makes about s and a smooth curve,
+    however tightly it bends or however sparsely it is sampled, makes small; about 0.4 for a tablet that
+    rounds to whole pixels.
 
     >>> line = np.column_stack([np.arange(50.0), np.zeros(50)])
     >>> jitter(line)
     0.0
     """
-    if len(pts) < 5:
+    if len(pts) < 6:
         return 0.0
     d2 = pts[:-2] - 2 * pts[1:-1] + pts[2:]
     t = pts[2:] - pts[:-2]
     norm = np.hypot(*t.T)
     ok = norm > 0
-    if not ok.any():
+    if ok.sum() < 3:
         return 0.0
     normal = np.column_stack([-t[ok, 1], t[ok, 0]]) / norm[ok, None]
-    across = np.abs((d2[ok] * normal).sum(axis=1))
-    return float(1.4826 * np.median(across) / math.sqrt(6))
+    bend = (d2[ok] * normal).sum(axis=1)  # white noise: successive bends anticorrelated, var 6 s^2 each
+    return float(1.4826 * np.median(np.abs(np.diff(bend))) / math.sqrt(20))
+
+
+def coarse_turning(pts: np.ndarray, noise: float, most: int = 40) -> np.ndarray:
+    """`turning` on the path resampled to ``most`` points, or fewer when the pen's ``noise`` would make steps
+    that short wobble (steps at least six noise widths long, and at least 16 points): how the stroke turns at
+    the scale of its shape."""
+    n = most if noise <= 0 else int(min(most, max(32, path_length(pts) / (6 * noise))))
+    return turning(resample(pts, n))
