@@ -27,51 +27,82 @@ def _rect(half_long: float, half_short: float) -> tuple[tuple[float, float], ...
     return ((-half_long, -half_short), (half_long, -half_short), (half_long, half_short), (-half_long, half_short))
 
 
-KNOWN_FAILING: dict[str, tuple[str, Outline, str]] = {
-    # a clean 60 x 2.6 px box, no jitter, axis-aligned, started at a corner: nothing at all
-    "thin_60x2.6_clean": ("bounds", Outline("rectangle", _rect(30.0, 1.3), jitter=0.0),
-                          "no kind: 'no shape fits the stroke'"),
+FOUND: dict[str, tuple[str, Outline]] = {
+    # a clean 60 x 2.6 px box, no jitter, axis-aligned, started at a corner: nothing at all (fixed by 08e5de4)
+    "thin_60x2.6_clean": ("bounds", Outline("rectangle", _rect(30.0, 1.3), jitter=0.0)),
     "thin_60x1.6_tilted": ("bounds", Outline("rectangle", _rect(30.0, 0.8), angle=4.434, closing=4.4, jitter=0.25,
-                                             seed=134217727), "no kind: 'no shape fits the stroke'"),
+                                             seed=134217727)),
     "thin_60x1.8_tilted": ("bounds", Outline("rectangle", _rect(30.0, 0.9), angle=1.849, start=0.007, closing=2.3,
-                                             jitter=0.14, seed=302622), "no kind: 'no shape fits the stroke'"),
+                                             jitter=0.14, seed=302622)),
+    "thin_60x1.6_clean_tilted": ("bounds", Outline("rectangle", _rect(30.0, 0.8), angle=5.546, start=0.5,
+                                                   closing=-4.2, jitter=0.0)),
     # a clean concave 7-gon 240 x 330 px (no rotation, no jitter, no closing gap) and a self-crossing 4-segment
     # polyline 360 x 95 px: nothing at all
     "concave_7gon_clean": ("bounds", Outline("concave", ((65.0, -6.0), (98.0, 158.0), (-8.0, 171.0), (-53.0, 20.0),
                                                          (-125.0, -99.0), (-26.0, -162.0), (116.0, -145.0)),
-                                             jitter=0.0), "no kind: 'no shape fits the stroke'"),
+                                             jitter=0.0)),
     "concave_7gon_jittered": ("bounds", Outline("concave", ((138.9, 8.5), (157.2, 197.2), (-8.0, 87.9), (-246.8, 51.9),
                                                             (-71.9, -23.7), (-33.8, -148.1), (83.0, -131.6)),
-                                                angle=3.219, start=0.65, jitter=1.24, seed=7),
-                              "no kind: 'no shape fits the stroke'"),
+                                                angle=3.219, start=0.65, jitter=1.24, seed=7)),
     "crossing_polyline_clean": ("bounds", Outline("polyline", ((-220.0, 30.0), (80.0, 30.0), (140.0, -5.0),
-                                                               (140.0, -65.0), (-145.0, 15.0)), jitter=0.0),
-                                "no kind: 'no shape fits the stroke'"),
+                                                               (140.0, -65.0), (-145.0, 15.0)), jitter=0.0)),
     # a clean 592 x 106 px box (no jitter) reads as a 5-corner polygon one way round and a box the other
     "box_592x106_steep": ("reverse", Outline("rectangle", _rect(296.1, 53.1), angle=1.25, start=0.783, closing=5.6,
-                                             jitter=0.0, seed=13982), "polygon forwards, box backwards"),
+                                             jitter=0.0, seed=13982)),
     "box_592x106_tilted": ("reverse", Outline("rectangle", _rect(296.1, 53.1), angle=0.5, start=0.783, closing=5.6,
-                                              jitter=0.0, seed=13982), "box forwards, polygon backwards"),
+                                              jitter=0.0, seed=13982)),
     "thin_149x4.2": ("reverse", Outline("rectangle", _rect(74.7, 2.1), angle=5.82, start=0.391, closing=1.5,
-                                        jitter=1.46, seed=193), "box forwards, polygon backwards"),
+                                        jitter=1.46, seed=193)),
     "thin_131x3.4": ("reverse", Outline("rectangle", _rect(65.3, 1.7), angle=5.648, start=0.298, closing=4.4,
-                                        jitter=1.0, seed=330), "ellipse forwards, polygon backwards"),
+                                        jitter=1.0, seed=330)),
     "small_u_69x40_wall3": ("reverse", Outline("u_container", ((-34.6, -20.0), (-31.6, -20.0), (-31.6, 17.0),
                                                                (31.6, 17.0), (31.6, -20.0), (34.6, -20.0),
                                                                (34.6, 20.0), (-34.6, 20.0)),
-                                               angle=3.826, start=0.924, closing=-2.1, jitter=1.69, seed=6620171),
-                            "polygon forwards, box backwards"),
-    "thin_60x2.8": ("reverse", Outline("rectangle", _rect(30.0, 1.4), closing=2.0, jitter=1.0, seed=3),
-                    "ellipse forwards, polygon backwards"),
+                                               angle=3.826, start=0.924, closing=-2.1, jitter=1.69, seed=6620171)),
+    "thin_60x2.6_clean_backwards": ("reverse", Outline("rectangle", _rect(30.0, 1.3), jitter=0.0)),
+    "thin_100x3.8": ("reverse", Outline("rectangle", _rect(50.0, 1.9), angle=6.058, closing=5.6, jitter=1.1,
+                                        seed=23413393)),
+    "small_u_60x40_wall5": ("reverse", Outline("u_container", ((-30.0, -20.0), (-25.0, -20.0), (-25.0, 15.0),
+                                                               (25.0, 15.0), (25.0, -20.0), (30.0, -20.0),
+                                                               (30.0, 20.0), (-30.0, 20.0)),
+                                               start=0.577, closing=5.0, jitter=1.89, seed=3350)),
+    "thin_60x2.8": ("reverse", Outline("rectangle", _rect(30.0, 1.4), closing=2.0, jitter=1.0, seed=3)),
 }
-"""Counterexamples the properties below found that fail with today's recogniser (minimised by hypothesis or by
-hand): name -> (property, outline, what came out). Each runs as a strict xfail; while a property has any, its
-hypothesis test is a non-strict xfail (it may or may not meet one in 300 examples)."""
+"""Every counterexample the properties below have found (minimised by hypothesis or by hand): name -> (property,
+outline). Each is an explicit test, and an ``@example`` of its property once it passes."""
+
+KNOWN_FAILING: dict[str, str] = {
+    "thin_60x1.6_tilted": "no kind: 'no shape fits the stroke'",
+    "thin_60x1.8_tilted": "no kind: 'no shape fits the stroke'",
+    "concave_7gon_clean": "no kind: 'no shape fits the stroke'",
+    "crossing_polyline_clean": "no kind: 'no shape fits the stroke'",
+    "thin_60x1.6_clean_tilted": "no kind: 'no shape fits the stroke'",
+    "thin_60x2.6_clean_backwards": "polygon forwards, box backwards (since 08e5de4, which gave it a kind)",
+    "thin_100x3.8": "polygon forwards, ellipse backwards",
+    "small_u_60x40_wall5": "box forwards, polygon backwards",
+    "box_592x106_steep": "polygon forwards, box backwards",
+    "box_592x106_tilted": "box forwards, polygon backwards",
+    "thin_131x3.4": "ellipse forwards, polygon backwards",
+}
+"""The cases of `FOUND` that fail with today's recogniser, and what comes out. They run as strict xfails (a fix
+turns them red: delete the name here); while a property has any, its hypothesis test is a non-strict xfail (it
+may or may not meet one in 300 examples)."""
 
 
-def _while_known(prop: str) -> pytest.MarkDecorator:
-    known = sorted(name for name, (p, _, _) in KNOWN_FAILING.items() if p == prop)
-    return pytest.mark.xfail(bool(known), strict=False, reason=f"known counterexamples: {', '.join(known)}")
+def _found(prop: str) -> list[str]:
+    return sorted(name for name, (p, _) in FOUND.items() if p == prop)
+
+
+def _with_found(prop: str):
+    """The property's hypothesis test, marked xfail while any of its counterexamples fails, with every one of them
+    that passes as an ``@example``."""
+    def wrap(test):
+        for name in _found(prop):
+            if name not in KNOWN_FAILING:
+                test = example(FOUND[name][1])(test)
+        known = [name for name in _found(prop) if name in KNOWN_FAILING]
+        return pytest.mark.xfail(bool(known), strict=False, reason=f"known counterexamples: {', '.join(known)}")(test)
+    return wrap
 
 
 def bounds_failure(o: Outline) -> str | None:
@@ -91,7 +122,7 @@ def bounds_failure(o: Outline) -> str | None:
             f"outside the stroke's bbox {bbox}; geometry {result.geometry}")
 
 
-@_while_known("bounds")
+@_with_found("bounds")
 @PROPERTY
 @given(outlines())
 @example(Outline("rectangle", ((-300.0, -7.5), (300.0, -7.5), (300.0, 7.5), (-300.0, 7.5)), jitter=2.0))
@@ -99,6 +130,8 @@ def bounds_failure(o: Outline) -> str | None:
 @example(Outline("u_container", ((-30.0, -20.0), (-27.0, -20.0), (-27.0, 17.0), (27.0, 17.0), (27.0, -20.0),
                                  (30.0, -20.0), (30.0, 20.0), (-30.0, 20.0)), angle=1.0, start=0.5, jitter=2.0))
 @example(Outline("polyline", ((-100.0, 0.0), (100.0, 0.0), (-90.0, 5.0)), jitter=2.0))
+@example(Outline("u_container", ((-149.4, -23.6), (-143.5, -23.6), (-143.5, 17.7), (143.5, 17.7), (143.5, -23.6),
+                                 (149.4, -23.6), (149.4, 23.6), (-149.4, 23.6)), angle=5.905, jitter=1.6, seed=22784))
 def test_the_beautified_shape_stays_near_the_stroke_and_has_a_kind(o: Outline) -> None:
     note(repr(o))
     failure = bounds_failure(o)
@@ -111,7 +144,7 @@ def reverse_failure(o: Outline) -> str | None:
     return None if forward == backward else f"{o.kind} read as {forward} forwards but {backward} backwards"
 
 
-@_while_known("reverse")
+@_with_found("reverse")
 @PROPERTY
 @given(outlines(("rectangle", "u_container")))
 @example(Outline("rectangle", _rect(296.1, 53.1), angle=1.0, start=0.783, closing=5.6, jitter=0.0))
@@ -121,13 +154,15 @@ def test_a_box_or_u_container_drawn_backwards_reads_the_same(o: Outline) -> None
     assert failure is None, failure
 
 
-@pytest.mark.parametrize("name", list(KNOWN_FAILING))
-def test_known_failing_outlines(name: str, request) -> None:
-    prop, outline, seen = KNOWN_FAILING[name]
-    request.applymarker(pytest.mark.xfail(strict=True, reason=seen))
+@pytest.mark.parametrize("name", list(FOUND))
+def test_counterexamples_found_before(name: str, request) -> None:
+    prop, outline = FOUND[name]
+    if name in KNOWN_FAILING:
+        request.applymarker(pytest.mark.xfail(strict=True, reason=KNOWN_FAILING[name]))
     failure = bounds_failure(outline) if prop == "bounds" else reverse_failure(outline)
     assert failure is None, failure
 
 
-def test_every_known_failure_names_a_property() -> None:
-    assert {prop for prop, _, _ in KNOWN_FAILING.values()} <= {"bounds", "reverse"}
+def test_every_known_failure_is_a_counterexample_of_a_property() -> None:
+    assert set(KNOWN_FAILING) <= set(FOUND), sorted(set(KNOWN_FAILING) - set(FOUND))
+    assert {prop for prop, _ in FOUND.values()} <= {"bounds", "reverse"}

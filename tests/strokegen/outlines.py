@@ -50,7 +50,7 @@ def draw_outline(rng: random.Random, corners: list[Point], *, jitter: float = 1.
     for k in range(n + 1):
         d = (start * perimeter + total * k / n) % perimeter
         i = 0
-        while d > lengths[i]:
+        while d > lengths[i] and i < len(lengths) - 1:  # rounding may leave d a hair past the last side
             d -= lengths[i]
             i += 1
         (ax, ay), (bx, by) = sides[i]
