@@ -3,9 +3,11 @@ boxes and U containers.
 
 Usage: .venv/bin/python benchmarks/bench_recognition_robust.py PATH/TO/dollar1-dev.jsonl [--quick]
 
-Leave-one-person-out: for each person, the ranking's weights (`recognize.Weights`: complexity cost and relative
-noise floor) are chosen on a grid by accuracy on the other people only, then that person is scored with them;
-the product's defaults are printed beside the weights each fold chose. Stress variants change one thing at a
+Leave-one-person-out: for each person, the recogniser's weights (`recognize.Weights`: complexity cost, relative
+noise floor, how round a polyline's corner may be) are chosen on a grid by accuracy on the other people only,
+then that person is scored with them; the product's defaults are printed beside the weights each fold chose.
+The open-stroke thresholds inherited from issue 4 (straightness, corner sharpness, lobes) are fixed, and were
+set by looking at all three people: say so beside the figures. Stress variants change one thing at a
 time on every development stroke (scale 0.2x-20x with the pen's noise unchanged, half and double the points,
 0.5-2 px jitter on strokes at least 60 px across, rotation, closed strokes started mid-way round, fast and slow
 strokes) and are scored with the default weights. Thin boxes (120-420 px long, aspect up to 30, 1 px jitter)
@@ -32,7 +34,7 @@ from physink_tui.scene.recognize import DEFAULT_WEIGHTS, Weights, recognize_stro
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from strokegen.outlines import thin_box, u_container
 
-GRID = [Weights(c, r) for c in (1.5, 2.0, 2.5, 3.0) for r in (0.0, 0.003, 0.01)]
+GRID = [Weights(c, r, k) for c in (2.0, 2.5, 3.0) for r in (0.0, 0.003) for k in (0.6, 0.8, 1.2, math.inf)]
 CLOSED_LABELS = {"rectangle", "circle", "triangle", "star"}
 Row = dict
 
@@ -69,8 +71,9 @@ def leave_one_person_out(rows: list[Row]) -> None:
         def train_score(w: Weights, others: list[str] = others) -> tuple[float, float]:
             right = sum(cache[(w, p)][0] for p in others)
             total = sum(cache[(w, p)][1] for p in others)
-            closeness = -abs(w.complexity - DEFAULT_WEIGHTS.complexity) - abs(w.relative_noise
-                                                                              - DEFAULT_WEIGHTS.relative_noise)
+            closeness = -(abs(w.complexity - DEFAULT_WEIGHTS.complexity)
+                          + abs(w.relative_noise - DEFAULT_WEIGHTS.relative_noise)
+                          + abs(min(w.round_corner, 9.0) - DEFAULT_WEIGHTS.round_corner))
             return right / total, closeness
         chosen = max(GRID, key=train_score)
         right, total = cache[(chosen, held)]
@@ -78,13 +81,15 @@ def leave_one_person_out(rows: list[Row]) -> None:
             [r for r in rows if r["subject"] == held])
         pooled_right += right
         pooled_total += total
-        out.append([held, f"{chosen.complexity}, {chosen.relative_noise}", f"{train_score(chosen)[0]:.2%}",
+        out.append([held, f"{chosen.complexity}, {chosen.relative_noise}, {chosen.round_corner}",
+                    f"{train_score(chosen)[0]:.2%}",
                     total, right, f"{right / total:.2%}", f"{default_right / total:.2%}"])
     print("### Leave one person out\n")
     print(table(["held-out person", "weights chosen on the others", "their accuracy", "strokes", "right",
                  "held-out accuracy", "with the defaults"], out) + "\n")
     print(f"Pooled over the held-out folds: {pooled_right}/{pooled_total} = {pooled_right / pooled_total:.2%}; "
-          f"defaults ({DEFAULT_WEIGHTS.complexity}, {DEFAULT_WEIGHTS.relative_noise}).\n")
+          f"defaults ({DEFAULT_WEIGHTS.complexity}, {DEFAULT_WEIGHTS.relative_noise}, "
+          f"{DEFAULT_WEIGHTS.round_corner}).\n")
 
 
 def _resample(pts: np.ndarray, n: int) -> np.ndarray:

@@ -68,9 +68,9 @@ def straight(run: np.ndarray, noise: float) -> bool:
     return chord > 0 and sg.chord_deviation(run) * chord < max(STRAIGHT * chord, 1.5 * noise)
 
 
-def classify_open(work: np.ndarray, noise: float) -> Recognition:
-    """An open stroke (resampled, hooks and corner loops removed) as a round shape left open, a polyline, an
-    arc or a curve."""
+def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf) -> Recognition:
+    """An open stroke (resampled, hooks and corner loops removed) as a round shape left open, a polyline (whose
+    corners are no rounder than ``round_corner``, see `stroke_features.corner_roundness`), an arc or a curve."""
     length = sg.path_length(work)
     th = sg.turning(work)
     total_turn = float(th.sum())
@@ -85,7 +85,8 @@ def classify_open(work: np.ndarray, noise: float) -> Recognition:
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-    if len(straight_runs) >= 2 and (all(straight_runs) or _bent_polyline(work, th, corners, noise)):
+    sharp = max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
+    if len(straight_runs) >= 2 and sharp and (all(straight_runs) or _bent_polyline(work, th, corners, noise)):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)

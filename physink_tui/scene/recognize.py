@@ -128,10 +128,14 @@ class Weights:
             is the textbook value; larger prefers simpler shapes).
         relative_noise: hand inaccuracy as a share of the stroke's size; the error floor is the larger of
             this and the pen's absolute noise.
+        round_corner: see below.
     """
 
     complexity: float = 2.5
     relative_noise: float = 0.003
+    round_corner: float = 0.8
+    """A polyline's corners do most of their turning within this share of their shorter side (a bend rounder
+    than that is a curve's: a brace, a question mark)."""
 
 
 DEFAULT_WEIGHTS = Weights()
@@ -173,7 +177,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
     if not closed:
         # open strokes are judged by how they turn: on points a few noise widths apart, jitter makes no corners
         coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
-        found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise)
+        found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
+                                          weights.round_corner)
         round_left_open = found.kind in ("circle", "ellipse")
         if _inside(found.geometry, *_bounds(raw, noise, OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN)):
             return found

@@ -216,3 +216,30 @@ def polygon_vertices(work: np.ndarray, corners: list[int]) -> np.ndarray:
         t = ((p2 - p1)[0] * d2[1] - (p2 - p1)[1] * d2[0]) / denom
         verts.append(p1 + t * d1)
     return np.array(verts)
+
+
+def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8) -> list[float]:
+    """How round each inner corner is: the length of path, centred on the corner, over which the stroke does
+    ``share`` of the turning it does between the midpoints of its neighbouring sides, over the shorter of those
+    two sides. A drawn corner turns within a tenth or two of its sides; a brace's or a question mark's bend
+    takes as long as a side."""
+    th = sg.turning(work)  # th[k] is the turn at point k + 1
+    cum_turn = np.concatenate([[0.0], np.cumsum(th)])  # cum_turn[k]: turning done before point k + 1
+    seg = np.hypot(*np.diff(work, axis=0).T)
+    cum_len = np.concatenate([[0.0], np.cumsum(seg)])
+    n = len(work)
+    out = []
+    for a, c, b in zip(corners, corners[1:], corners[2:], strict=False):
+        lo, hi = (a + c) // 2, (c + b) // 2
+        total = abs(float(cum_turn[max(hi - 1, 0)] - cum_turn[max(lo - 1, 0)]))
+        shorter = min(cum_len[c] - cum_len[a], cum_len[b] - cum_len[c])
+        if total == 0.0 or shorter <= 0.0:
+            out.append(0.0)
+            continue
+        reach = np.arange(0, max(hi - lo, 1))
+        left, right = np.maximum(c - 1 - reach, 0), np.minimum(c + reach, n - 2)
+        held = np.abs(cum_turn[right] - cum_turn[left]) >= share * total
+        r = int(reach[np.argmax(held)]) if held.any() else int(reach[-1])
+        arc = cum_len[min(c + r, n - 1)] - cum_len[max(c - r, 0)]
+        out.append(float(arc / shorter))
+    return out
