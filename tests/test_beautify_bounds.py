@@ -86,7 +86,7 @@ KNOWN_FAILING: dict[str, str] = {
 }
 """The cases of `FOUND` that fail with today's recogniser, and what comes out. They run as strict xfails (a fix
 turns them red: delete the name here); while a property has any, its hypothesis test is a non-strict xfail (it
-may or may not meet one in 300 examples)."""
+may or may not meet one in 300 examples; ``--runxfail`` shows what it meets)."""
 
 
 def _found(prop: str) -> list[str]:
