@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 from bench_recognition import ACCEPTS, LABEL_CLASS, machine, table
 
-from physink_tui.scene.recognize import DEFAULT_WEIGHTS, Weights, recognize_stroke
+from physink_tui.scene.recognition.recognize import DEFAULT_WEIGHTS, Weights, recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from strokegen.outlines import thin_box, u_container

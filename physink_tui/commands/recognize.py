@@ -16,8 +16,8 @@ from dataclasses import fields
 from typing import Any
 
 from physink_tui.errors import PhysinkError
-from physink_tui.scene.primitives import Geometry, Line, Recognition
-from physink_tui.scene.recognize import recognize_strokes
+from physink_tui.scene.recognition.primitives import Geometry, Line, Recognition
+from physink_tui.scene.recognition.recognize import recognize_strokes
 
 
 def _num(v: float) -> float | None:

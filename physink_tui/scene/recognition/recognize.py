@@ -24,13 +24,13 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from physink_tui.scene import open_shapes
-from physink_tui.scene import stroke_features as sf
-from physink_tui.scene import stroke_geometry as sg
-from physink_tui.scene.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
-from physink_tui.scene.candidates import Candidate, Pending, polygonal, round_shape
-from physink_tui.scene.primitives import Geometry, Line, Recognition
-from physink_tui.scene.shape_fits import fit_ellipse
+from physink_tui.scene.recognition import open_shapes
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
+from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
+from physink_tui.scene.recognition.primitives import Geometry, Line, Recognition
+from physink_tui.scene.recognition.shape_fits import fit_ellipse
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
