@@ -115,7 +115,11 @@ def _jitter(sigma: float) -> Callable[[Row, np.ndarray], np.ndarray | None]:
 
 
 def _start_mid_way(row: Row, pts: np.ndarray) -> np.ndarray | None:
+    """A closed shape whose ends meet, drawn from half-way round (one drawn past its start has no such
+    start: joining its ends would add a jump back)."""
     if row["label"] not in CLOSED_LABELS:
+        return None
+    if float(np.hypot(*(pts[-1] - pts[0]))) > 0.1 * float(np.hypot(*np.ptp(pts, axis=0))):
         return None
     half = len(pts) // 2
     return np.concatenate([pts[half:], pts[1:half + 1]])
