@@ -27,8 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
-from physink_tui.scene.primitives import KINDS, Recognition
-from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
+from physink_tui.scene.recognition.primitives import KINDS, Recognition
+from physink_tui.scene.recognition.recognize import recognize_stroke, recognize_strokes
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from strokegen.strokes import generate

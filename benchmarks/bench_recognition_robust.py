@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 from bench_recognition import ACCEPTS, LABEL_CLASS, machine, table
 
-from physink_tui.scene.recognize import DEFAULT_WEIGHTS, Weights, recognize_stroke
+from physink_tui.scene.recognition.recognize import DEFAULT_WEIGHTS, Weights, recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from strokegen.outlines import thin_box, u_container
@@ -115,7 +115,11 @@ def _jitter(sigma: float) -> Callable[[Row, np.ndarray], np.ndarray | None]:
 
 
 def _start_mid_way(row: Row, pts: np.ndarray) -> np.ndarray | None:
+    """A closed shape whose ends meet, drawn from half-way round (one drawn past its start has no such
+    start: joining its ends would add a jump back)."""
     if row["label"] not in CLOSED_LABELS:
+        return None
+    if float(np.hypot(*(pts[-1] - pts[0]))) > 0.1 * float(np.hypot(*np.ptp(pts, axis=0))):
         return None
     half = len(pts) // 2
     return np.concatenate([pts[half:], pts[1:half + 1]])

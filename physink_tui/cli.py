@@ -125,6 +125,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("recognize", help="recognise strokes: one JSON line per input line")
     p.add_argument("strokes", metavar="STROKES.jsonl", help="one stroke per line")
+    p.add_argument("--noise", type=float, default=1.0, metavar="UNITS",
+                   help="the pen's jitter in the strokes' units (default: %(default)s, a pixel)")
 
     p = sub.add_parser("timeline", help="print a project's causal timeline")
     p.add_argument("project", metavar="PROJECT", help="a project (.physink.json)")

@@ -5,7 +5,7 @@ would report them); round and spiral shapes come from the small formulas below, 
 the case, so each case says exactly what it is. Nothing here is random. Coordinates are screen units, y down;
 a point is ``(x, y)`` or ``(x, y, t)`` with ``t`` in seconds.
 
-``expected_kind`` is a kind of `physink_tui.scene.primitives.KINDS`; None means the input cannot be recognised,
+``expected_kind`` is a kind of `primitives.KINDS` (scene.recognition); None means the input cannot be recognised,
 and the recogniser must say so (kind None and a reason) rather than raise; `NOT_X` means two strokes that are not
 an X-symbol (any answer but "x").
 

@@ -8,7 +8,7 @@ import pytest
 
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import interpret
-from physink_tui.scene.primitives import Box, Circle, Curve, Helix, Line, Polygon, Recognition, XSymbol
+from physink_tui.scene.recognition.primitives import Box, Circle, Curve, Helix, Line, Polygon, Recognition, XSymbol
 
 
 def rec(kind: str, geometry) -> Recognition:

@@ -1,6 +1,6 @@
 """The stroke recogniser on hand-made edge cases and on generated strokes; accuracy floors, invariances, bad input.
 
-The recogniser (`physink_tui.scene.recognize`) is imported inside the tests so that this module and its data load
+The recogniser (`scene.recognition.recognize`) is imported inside the tests so that this module and its data load
 without it. Accuracy floors are floors: `benchmarks/bench_recognition.py` reports the real numbers. Hand-made cases
 are in `stroke_cases.py`; generated strokes come from `tests/strokegen/strokes.py`, seeded by name.
 """
@@ -20,8 +20,8 @@ from hypothesis import strategies as st
 from stroke_cases import CASES, NOT_X, Case
 from strokegen.strokes import GENERATORS, generate
 
-from physink_tui.scene import primitives
-from physink_tui.scene.primitives import KINDS, Recognition
+from physink_tui.scene.recognition import primitives
+from physink_tui.scene.recognition.primitives import KINDS, Recognition
 
 SAMPLES_PER_KIND = 60
 # Regression floors, set a little under what the recogniser reaches on these seeds (see docs/BENCHMARKS.md for
@@ -53,7 +53,7 @@ def recognise(strokes: Strokes, noise: float = 1.0) -> Recognition:
     """One stroke through ``recognize_stroke`` (times passed when the points carry them), else ``recognize_strokes``;
     ``noise`` is the pen's jitter in the strokes' units (1 unit for strokes in pixels)."""
     try:
-        from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
+        from physink_tui.scene.recognition.recognize import recognize_stroke, recognize_strokes
     except ImportError as error:  # the recogniser is written in parallel with these tests
         pytest.fail(f"the recogniser cannot be imported: {error}")
     if len(strokes) != 1:
@@ -144,7 +144,7 @@ RECOGNISABLE = [case for case in CASES if case.expected_kind is not None and cas
 
 @pytest.mark.parametrize("case", SINGLE, ids=lambda case: case.name)
 def test_one_stroke_through_recognize_strokes_is_the_same(case: Case) -> None:
-    from physink_tui.scene.recognize import recognize_strokes
+    from physink_tui.scene.recognition.recognize import recognize_strokes
 
     alone = check_contract(recognise(case.strokes))
     assert check_contract(recognize_strokes(case.strokes)).kind == alone.kind

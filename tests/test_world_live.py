@@ -10,7 +10,7 @@ import pytest
 
 from physink_tui.scene.components import BACKGROUND, Body, Scene
 from physink_tui.scene.interpret import interpret
-from physink_tui.scene.primitives import Box, Circle, Curve, Helix, Line, Recognition, XSymbol
+from physink_tui.scene.recognition.primitives import Box, Circle, Curve, Helix, Line, Recognition, XSymbol
 from physink_tui.scene.world import World
 from physink_tui.scene.world_live import LiveWorld
 

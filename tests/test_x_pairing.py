@@ -7,7 +7,7 @@ import math
 import pytest
 from hand_x import hand_x
 
-from physink_tui.scene.recognize import recognize_stroke
+from physink_tui.scene.recognition.recognize import recognize_stroke
 from physink_tui.scene.x_pairing import pair_x, x_arm
 
 

@@ -16,8 +16,8 @@ from dataclasses import fields
 from typing import Any
 
 from physink_tui.errors import PhysinkError
-from physink_tui.scene.primitives import Geometry, Line, Recognition
-from physink_tui.scene.recognize import recognize_strokes
+from physink_tui.scene.recognition.primitives import Geometry, Line, Recognition
+from physink_tui.scene.recognition.recognize import recognize_strokes
 
 
 def _num(v: float) -> float | None:
@@ -76,6 +76,9 @@ def parse_line(text: str, path: str, lineno: int) -> list[list[list[float]]]:
 
 def run(args: argparse.Namespace) -> int:
     path = args.strokes
+    noise = getattr(args, "noise", 1.0)
+    if not (noise > 0 and noise < float("inf")):
+        raise PhysinkError(f"--noise: expected a positive number of units, got {noise!r}")
     try:
         stream = sys.stdin if path == "-" else open(path, encoding="utf-8")
     except OSError as exc:
@@ -86,6 +89,7 @@ def run(args: argparse.Namespace) -> int:
                 continue
             strokes = parse_line(text, path, lineno)
             points = [[p[:2] for p in s] for s in strokes]
-            result = recognize_strokes(points) if points else Recognition(None, 0.0, None, (), "no strokes")
+            result = (recognize_strokes(points, noise=noise) if points
+                      else Recognition(None, 0.0, None, (), "no strokes"))
             print(recognition_json(result))
     return 0

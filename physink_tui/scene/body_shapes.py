@@ -14,8 +14,8 @@ from shapely.geometry import LineString, MultiPolygon, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 
 from physink_tui.scene.components import Body
-from physink_tui.scene.primitives import Box, Circle, Ellipse, Geometry, Line, Polyline
-from physink_tui.scene.primitives import Polygon as PolygonPrim
+from physink_tui.scene.recognition.primitives import Box, Circle, Ellipse, Geometry, Line, Polyline
+from physink_tui.scene.recognition.primitives import Polygon as PolygonPrim
 
 ELLIPSE_SIDES = 32
 THIN = 0.004

@@ -30,7 +30,7 @@ from physink_tui.scene.components import (
     Spring,
     material_class,
 )
-from physink_tui.scene.primitives import Circle, Ellipse, Helix, Line, Recognition, XSymbol
+from physink_tui.scene.recognition.primitives import Circle, Ellipse, Helix, Line, Recognition, XSymbol
 
 JOINT_MAX_SIZE = 0.6
 """A circle or curve is a joint symbol only when smaller than this share of the body it is drawn in."""

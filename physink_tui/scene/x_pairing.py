@@ -19,8 +19,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from physink_tui.scene.primitives import Line, Recognition, XSymbol
-from physink_tui.scene.recognize import recognize_strokes
+from physink_tui.scene.recognition.primitives import Line, Recognition, XSymbol
+from physink_tui.scene.recognition.recognize import recognize_strokes
 
 CORE = (0.2, 0.8)
 """The part of a stroke (shares of its path length) that must be straight: its ends may hook."""

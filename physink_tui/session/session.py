@@ -26,8 +26,8 @@ from physink_tui.journal.writer import JournalWriter
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import Near, bodies_at, interpret
 from physink_tui.scene.overlaps import overlapped, push_clear
-from physink_tui.scene.primitives import Recognition
-from physink_tui.scene.recognize import recognize_stroke
+from physink_tui.scene.recognition.primitives import Recognition
+from physink_tui.scene.recognition.recognize import recognize_stroke
 from physink_tui.scene.world_live import LiveWorld
 from physink_tui.scene.x_pairing import pair_x, x_arm
 from physink_tui.session import adjust, demo

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from penmodels.journal import Drawn
-from physink_tui.scene.recognize import recognize_stroke, recognize_strokes
+from physink_tui.scene.recognition.recognize import recognize_stroke, recognize_strokes
 
 Points = Sequence[tuple[float, ...]]
 

@@ -8,8 +8,8 @@ import math
 
 import numpy as np
 
-from physink_tui.scene import stroke_geometry as sg
-from physink_tui.scene.shape_fits import fit_line
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.shape_fits import fit_line
 
 
 def drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fraction: float = 0.07) -> list[int]:

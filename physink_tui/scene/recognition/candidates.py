@@ -17,12 +17,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from physink_tui.scene import stroke_geometry as sg
-from physink_tui.scene.beautify import arc_geometry, box_geometry, round_geometry
-from physink_tui.scene.polygon_checks import corners_of, split_hairpins
-from physink_tui.scene.polygon_fit import PolygonFit, best_polygons
-from physink_tui.scene.primitives import Box, Curve, Geometry, Line, Polygon, Polyline
-from physink_tui.scene.shape_fits import fit_circle, fit_cubic, fit_ellipse
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.beautify import arc_geometry, box_geometry, round_geometry
+from physink_tui.scene.recognition.polygon_checks import corners_of, split_hairpins
+from physink_tui.scene.recognition.polygon_fit import PolygonFit, best_polygons
+from physink_tui.scene.recognition.primitives import Box, Curve, Geometry, Line, Polygon, Polyline
+from physink_tui.scene.recognition.shape_fits import fit_circle, fit_cubic, fit_ellipse
 
 CIRCLE_RATIO = 0.8
 """Minor/major axis ratio above which an ellipse is a circle."""

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from physink_tui.scene.polygon_fit import PolygonFit, run_lines
+from physink_tui.scene.recognition.polygon_fit import PolygonFit, run_lines
 
 MIN_CORNER_DEG = 35.0
 """Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""

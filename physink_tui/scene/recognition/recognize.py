@@ -24,13 +24,14 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from physink_tui.scene import open_shapes
-from physink_tui.scene import stroke_features as sf
-from physink_tui.scene import stroke_geometry as sg
-from physink_tui.scene.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
-from physink_tui.scene.candidates import Candidate, Pending, polygonal, round_shape
-from physink_tui.scene.primitives import Geometry, Line, Recognition
-from physink_tui.scene.shape_fits import fit_ellipse
+from physink_tui.scene.recognition import open_shapes
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
+from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
+from physink_tui.scene.recognition.polygon_fit import candidate_vertices
+from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
+from physink_tui.scene.recognition.shape_fits import fit_ellipse
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
@@ -182,11 +183,30 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
         round_left_open = found.kind in ("circle", "ellipse")
         if _inside(found.geometry, *_bounds(raw, noise, OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN)):
             return found
-        return _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
-                     weights, raw, noise)
+        ranked = _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
+                       weights, raw, noise)
+        return _or_freeform(ranked, work, closed=False, sigma=sigma)
     candidates: list[Candidate | Pending | None] = [
         *polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise), round_shape(loop)]
-    return _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise)
+    return _or_freeform(_rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise),
+                        loop, closed=True, sigma=sigma)
+
+
+FREEFORM_CONFIDENCE = 0.3
+
+
+def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: float) -> Recognition:
+    """``found``, or when no shape fits, the stroke as it was drawn: a freeform polygon (closed) or polyline
+    through its own most telling points, with a low confidence (never a shape outside the stroke)."""
+    if found.kind is not None:
+        return found
+    keep = candidate_vertices(work[:-1] if closed else work, sigma, limit=16)
+    points = tuple((float(x), float(y)) for x, y in work[keep])
+    if closed and len(points) >= 3:
+        return Recognition("polygon", FREEFORM_CONFIDENCE, Polygon(points), ())
+    if len(points) >= 3:
+        return Recognition("polyline", FREEFORM_CONFIDENCE, Polyline(points), ())
+    return Recognition("line", FREEFORM_CONFIDENCE, Line(points[0], points[-1]), ())
 
 
 def _polygon_left_open(work: np.ndarray, diag: float) -> bool:

@@ -12,8 +12,8 @@ from dataclasses import fields, replace
 
 import numpy as np
 
-from physink_tui.scene.primitives import Arc, Box, Circle, Curve, Ellipse, Geometry, Helix, Line, XSymbol
-from physink_tui.scene.shape_fits import fit_cubic
+from physink_tui.scene.recognition.primitives import Arc, Box, Circle, Curve, Ellipse, Geometry, Helix, Line, XSymbol
+from physink_tui.scene.recognition.shape_fits import fit_cubic
 
 _UNSCALED = {"angle", "start_angle", "sweep", "turns"}
 

@@ -14,11 +14,11 @@ import math
 
 import numpy as np
 
-from physink_tui.scene import stroke_features as sf
-from physink_tui.scene import stroke_geometry as sg
-from physink_tui.scene.beautify import arc_geometry, curve_geometry, round_geometry
-from physink_tui.scene.primitives import Line, Polyline, Recognition
-from physink_tui.scene.shape_fits import fit_circle, fit_ellipse, fit_line
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
+from physink_tui.scene.recognition.primitives import Line, Polyline, Recognition
+from physink_tui.scene.recognition.shape_fits import fit_circle, fit_ellipse, fit_line
 
 STRAIGHT = 0.12
 """A side is straight when it strays from its chord by less than this share of the chord (plus the noise)."""
