@@ -18,7 +18,7 @@ from shapely.geometry import Polygon
 from test_session import box_points, pen_header, pen_stroke
 
 from physink_tui.scene.components import BACKGROUND, Body, Joint
-from physink_tui.scene.recognize import recognize_stroke
+from physink_tui.scene.recognition.recognize import recognize_stroke
 from physink_tui.session.session import Session
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
@@ -27,13 +27,13 @@ from bench_recognition import ACCEPTS, LABEL_CLASS  # the benchmark's own mappin
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "strokes" / "dollar1-dev.jsonl"
 CANVAS = (1600.0, 1000.0)
 SUBJECT_FLOORS = {"s02": 98.6, "s03": 98.2, "s04": 98.0}
-"""Per person, % of their 480 strokes recognised right: today (main ed47070) 99.6, 99.2, 99.0; issue 10 asks 98."""
+"""Per person, % of their 480 strokes recognised right: today (main e00d849) 99.6, 99.2, 99.0; issue 10 asks 98."""
 LABEL_FLOORS = {
     "arrow": 97.5, "caret": 98.5, "check": 96.5, "circle": 97.5, "delete_mark": 98.5, "left_curly_brace": 97.5,
     "left_sq_bracket": 96.5, "pigtail": 98.5, "question_mark": 97.5, "rectangle": 98.5, "right_curly_brace": 96.5,
     "right_sq_bracket": 98.5, "star": 97.5, "triangle": 98.5, "v": 98.5, "x": 98.5,
 }
-"""Per label, % of its 90 strokes: one more miss than today's (main ed47070: check, left_sq_bracket and
+"""Per label, % of its 90 strokes: one more miss than today's (main e00d849: check, left_sq_bracket and
 right_curly_brace 97.8; arrow, circle, left_curly_brace, question_mark and star 98.9; the rest 100); none under
 90."""
 EVERY = 4
