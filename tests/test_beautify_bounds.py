@@ -20,7 +20,9 @@ from physink_tui.scene.recognition.recognize import recognize_stroke
 
 MARGIN = 0.10
 """Share of the stroke's bounding-box diagonal the beautified shape may reach beyond the box."""
-PROPERTY = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+PROPERTY = settings(max_examples=300, deadline=None, derandomize=True, database=None,
+                    suppress_health_check=[HealthCheck.too_slow])
+"""Derandomized: CI runs the same 300 examples each time (a wider search: see the module docstring)."""
 
 
 def _rect(half_long: float, half_short: float) -> tuple[tuple[float, float], ...]:
@@ -75,13 +77,9 @@ FOUND: dict[str, tuple[str, Outline]] = {
 outline). Each is an explicit test, and an ``@example`` of its property once it passes."""
 
 KNOWN_FAILING: dict[str, str] = {
-    "hooked_polyline_ellipse": "an ellipse 31 px past the stroke's bounds, 29 allowed (since e6a119a; the "
-                               "recogniser lets a round shape from an open stroke reach 20 %)",
     "thin_60x2.6_clean_backwards": "polygon forwards, box backwards (since 08e5de4, which gave it a kind)",
     "thin_100x3.8": "polygon forwards, ellipse backwards",
     "small_u_60x40_wall5": "box forwards, polygon backwards",
-    "box_592x106_steep": "polygon forwards, box backwards",
-    "box_592x106_tilted": "box forwards, polygon backwards",
     "thin_131x3.4": "ellipse forwards, polygon backwards",
 }
 """The cases of `FOUND` that fail with today's recogniser, and what comes out. They run as strict xfails (a fix

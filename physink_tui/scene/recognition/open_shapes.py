@@ -41,7 +41,7 @@ def line(raw: np.ndarray, noise: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
-    n = int(min(400, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
+    n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
     coarse = sg.smooth(sg.resample(raw, n))
     coarse = sg.resample(sg.remove_hooks(coarse), n)
     _, _, err = fit_line(coarse)
@@ -79,7 +79,9 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
                      for a, b in itertools.pairwise(corners)]
     coarse = sg.coarse_turning(work, noise)
     concentration = sf.turn_concentration(coarse)
-    if abs(total_turn) >= NEARLY_ROUND * math.pi and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()):
+    smooth = concentration < 0.55  # a polyline turning the same way at sharp corners is not round
+    if (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
+            and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum())):
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)
         open_ellipse = fit_ellipse(work)
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):

@@ -47,13 +47,19 @@ class PolygonFit:
         return corner_points(self.points, self.indices, closed=self.closed, reach=self.reach)
 
 
+DP_POINTS = 100
+"""The Douglas-Peucker pass for big corners looks at about this many of the stroke's points."""
+
+
 def candidate_vertices(pts: np.ndarray, tolerance: float, limit: int = 28) -> list[int]:
     """Indices where a corner may be (ends included), at most about ``limit``: half of them from a
     Douglas-Peucker pass at ``tolerance`` (splitting the most deviating piece first: the shape's big corners),
     half the local peaks of how far a point stands out from the chord between its neighbours a few points either
     side (small features: a thin wall's end)."""
     n = len(pts)
-    chosen = set(_douglas_peucker(pts, tolerance, limit // 2))
+    step = max(1, -(-n // DP_POINTS))  # the big corners are found on every step-th point
+    coarse = _douglas_peucker(np.concatenate([pts[::step], pts[-1:]]), tolerance, limit // 2)
+    chosen = {min(i * step, n - 1) for i in coarse}
     i = np.arange(n)
     score = np.zeros(n)
     for w in (2, 4):
