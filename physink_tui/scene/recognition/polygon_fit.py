@@ -1,9 +1,10 @@
-"""Best polygonal approximations of a stroke through its own points, for every number of sides; no decisions.
+"""Best polygonal approximations of a stroke, for every number of sides; no decisions.
 
-A k-segment polyline (open strokes) or k-gon (closed strokes) is chosen among candidate vertices (the points a
-fine Douglas-Peucker pass keeps: every corner's apex is one of them, however short its sides) by dynamic
-programming on the summed squared distance of the stroke's points to the chords between vertices. Vertices are
-always points of the stroke itself, so nearly parallel sides never meet far away. Which k to believe is left to
+A k-segment polyline (open strokes) or k-gon (closed strokes) splits the stroke's points into k runs at candidate
+vertices (`candidate_vertices`: every corner's apex, however short its sides); dynamic programming finds, for
+each k, the split whose runs lie closest to their own best-fitting lines (summed squared distances, from prefix
+sums). A vertex is where neighbouring runs' lines meet when that is near the join and inside the stroke's bounds,
+else the join point itself, so nearly parallel sides never meet far away. Which k to believe is left to
 `recognize`, which weighs each k's error against its complexity.
 
 >>> import numpy as np
@@ -102,43 +103,11 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
     return chosen
 
 
-def chord_costs(pts: np.ndarray, cand: np.ndarray) -> np.ndarray:
-    """``C[a, b]``: summed squared distance of ``pts[cand[a]..cand[b]]`` to the chord between its ends (inf for
-    ``a >= b``); a chord of no length measures distances to its point."""
-    x, y = pts[:, 0], pts[:, 1]
-    zero = np.zeros(1)
-    sx, sy = np.concatenate([zero, np.cumsum(x)]), np.concatenate([zero, np.cumsum(y)])
-    sxx, syy = np.concatenate([zero, np.cumsum(x * x)]), np.concatenate([zero, np.cumsum(y * y)])
-    sxy = np.concatenate([zero, np.cumsum(x * y)])
-    i, j = np.meshgrid(cand, cand, indexing="ij")
-    m = (j - i + 1).astype(float)
-    lo, hi = i, j + 1
-    with np.errstate(invalid="ignore"):
-        m = np.where(j > i, m, 1.0)
-        hi = np.where(j > i, hi, lo + 1)
-    ax, ay = x[i], y[i]
-    dx, dy = x[j] - ax, y[j] - ay
-    px, py = sx[hi] - sx[lo], sy[hi] - sy[lo]
-    pxx, pyy, pxy = sxx[hi] - sxx[lo], syy[hi] - syy[lo], sxy[hi] - sxy[lo]
-    c = ax * dy - ay * dx
-    norm2 = dx * dx + dy * dy
-    cross2 = dy * dy * pxx + dx * dx * pyy - 2 * dx * dy * pxy - 2 * c * (dy * px - dx * py) + m * c * c
-    point2 = pxx + pyy - 2 * (ax * px + ay * py) + m * (ax * ax + ay * ay)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        cost = np.where(norm2 > 0, cross2 / np.where(norm2 > 0, norm2, 1.0), point2)
-    cost = np.maximum(cost, 0.0)
-    cost[j <= i] = np.inf
-    return cost
-
-
 def line_costs(pts: np.ndarray, cand: np.ndarray) -> np.ndarray:
     """``C[a, b]``: summed squared distance of ``pts[cand[a]..cand[b]]`` to their own best-fitting line (total
     least squares; inf for ``a >= b``), so where exactly a corner's apex point lies costs nothing."""
     x, y = pts[:, 0], pts[:, 1]
-    zero = np.zeros(1)
-    sx, sy = np.concatenate([zero, np.cumsum(x)]), np.concatenate([zero, np.cumsum(y)])
-    sxx, syy = np.concatenate([zero, np.cumsum(x * x)]), np.concatenate([zero, np.cumsum(y * y)])
-    sxy = np.concatenate([zero, np.cumsum(x * y)])
+    sx, sy, sxx, syy, sxy = _prefix(x), _prefix(y), _prefix(x * x), _prefix(y * y), _prefix(x * y)
     i, j = np.meshgrid(cand, cand, indexing="ij")
     ok = j > i
     lo, hi = i, np.where(ok, j + 1, i + 1)
