@@ -79,7 +79,6 @@ outline). Each is an explicit test, and an ``@example`` of its property once it 
 KNOWN_FAILING: dict[str, str] = {
     "thin_60x2.6_clean_backwards": "polygon forwards, box backwards (since 08e5de4, which gave it a kind)",
     "thin_100x3.8": "polygon forwards, ellipse backwards",
-    "small_u_60x40_wall5": "box forwards, polygon backwards",
     "thin_131x3.4": "ellipse forwards, polygon backwards",
 }
 """The cases of `FOUND` that fail with today's recogniser, and what comes out. They run as strict xfails (a fix

@@ -35,6 +35,8 @@ from physink_tui.scene.recognition.shape_fits import fit_ellipse
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
+SHAKY = 1.5
+"""A stroke whose measured jitter is this many times the pen's stated noise is smoothed where it was sampled too."""
 MIN_SIZE = 3.0
 """A stroke less than this many noise widths across is a dot, not a shape."""
 PEN_NOISE = 1.0
@@ -86,14 +88,17 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         scale = float(np.abs(pts - origin).max())
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
-    noise = max(noise if math.isfinite(noise) and noise > 0 else 0.0, sg.jitter(pts))  # the pen may be worse
+    given = noise if math.isfinite(noise) and noise > 0 else 0.0
+    measured = sg.jitter(pts)
+    noise = max(given, measured)  # the pen may be worse than said
+    shaky = measured > SHAKY * given
     size = sg.bbox_diagonal(pts)
     if size < MIN_SIZE * noise:
         return Recognition(None, 0.0, None, (), f"{TOO_SHORT}: {size:.3g} units across, within the pen's noise "
                                                 f"({noise:.3g} units)")
     unit_noise = noise / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
-        result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS)
+        result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS, shaky)
     if result.geometry is None:
         return result
     return replace(result, geometry=scale_geometry(result.geometry, origin, scale))
@@ -155,7 +160,7 @@ OPEN_ROUND_MARGIN = 0.2
 short pokes out by about 15 % of the stroke's diagonal)."""
 
 
-def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
+def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool = False) -> Recognition:
     found = open_shapes.line(raw, noise)
     if found is not None:
         return found
@@ -164,7 +169,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights) -> Recognition:
     thickness = sg.thickness(raw)
     spacing = max(min(diag / 40, max(thickness, diag / 200) / 8), 2 * noise, length / MAX_JUDGED_POINTS)
     n = int(min(max(64, length / spacing), MAX_JUDGED_POINTS))
-    work = sg.smooth(sg.resample(raw, n))
+    # a shaky pen's points are smoothed where they were sampled first, then along the resampled path
+    work = sg.smooth(sg.resample(sg.smooth(raw) if shaky else raw, n))
     special = _helix_or_scribble(work, n, diag, sg.path_length(work))
     if special is not None:
         return special
