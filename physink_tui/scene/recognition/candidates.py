@@ -78,7 +78,11 @@ def polygonal(work: np.ndarray, *, closed: bool, tolerance: float, noise: float)
 
 
 def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float) -> list[Candidate]:
-    judged = [(f, corners_of(f, closed=closed, noise=noise)) for f in tried]
+    judged = []
+    for f in tried:  # least error first; the first whose corners are clean is enough
+        judged.append((f, corners_of(f, closed=closed, noise=noise)))
+        if judged[-1][1] is not None and not judged[-1][1].hairpins:
+            break
     out = []
     if closed:
         capped = next(((f, c) for f, c in judged if c is not None and c.hairpins), None)

@@ -77,12 +77,13 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None
             if (short and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG
                     and 60.0 <= degrees[s - 1] + degrees[s] <= 120.0):  # together, about a right angle's turn
                 return None
-    if _bowed(pts, np.asarray(idx), lengths, noise):
+    if _bowed(pts, np.asarray(idx), lengths, noise, fit.sums):
         return None
     return Corners(tuple(hairpins), corners)
 
 
-def _bowed(pts: np.ndarray, idx: np.ndarray, chords: np.ndarray, noise: float) -> bool:
+def _bowed(pts: np.ndarray, idx: np.ndarray, chords: np.ndarray, noise: float,
+           sums: tuple[np.ndarray, ...] | None = None) -> bool:
     """Whether a side's points stray from the side's own line: four in five of them by more than `BOW_SHARE`
     of its length plus twice the noise (a hook is a few points; a short side's bow is only where its corners'
     points fell, so sides under 10 noise widths or 6 points are not judged)."""
@@ -91,7 +92,7 @@ def _bowed(pts: np.ndarray, idx: np.ndarray, chords: np.ndarray, noise: float) -
     if not judged.any():
         return False
     a, b, chords = a[judged], b[judged], chords[judged]
-    centres, dirs = run_lines(pts, a, b + 1)
+    centres, dirs = run_lines(pts, a, b + 1, sums)
     sizes = b - a + 1
     run = np.repeat(np.arange(len(a)), sizes)
     point = np.concatenate([np.arange(lo, hi + 1) for lo, hi in zip(a, b, strict=True)])

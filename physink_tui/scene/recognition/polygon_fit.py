@@ -41,14 +41,17 @@ class PolygonFit:
     points: np.ndarray
     closed: bool
     reach: float
+    sums: tuple[np.ndarray, ...]
+    """`moments` of ``points``, shared by every fit of the same points."""
 
     @property
     def vertices(self) -> np.ndarray:
         """The chain's vertices (`corner_points`); computed on each call, so keep the answer."""
-        return corner_points(self.points, self.indices, closed=self.closed, reach=self.reach)
+        return corner_points(self.points, self.indices, closed=self.closed, reach=self.reach, sums=self.sums)
 
 
 DP_POINTS = 100
+DP_LIMIT = 10
 """The Douglas-Peucker pass for big corners looks at about this many of the stroke's points."""
 
 
@@ -59,7 +62,7 @@ def candidate_vertices(pts: np.ndarray, tolerance: float, limit: int = 28) -> li
     side (small features: a thin wall's end)."""
     n = len(pts)
     step = max(1, -(-n // DP_POINTS))  # the big corners are found on every step-th point
-    coarse = _douglas_peucker(np.concatenate([pts[::step], pts[-1:]]), tolerance, limit // 2)
+    coarse = _douglas_peucker(np.concatenate([pts[::step], pts[-1:]]), tolerance, DP_LIMIT)
     chosen = {min(i * step, n - 1) for i in coarse}
     i = np.arange(n)
     score = np.zeros(n)
@@ -103,11 +106,10 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
     return chosen
 
 
-def line_costs(pts: np.ndarray, cand: np.ndarray) -> np.ndarray:
+def line_costs(pts: np.ndarray, cand: np.ndarray, sums: tuple[np.ndarray, ...] | None = None) -> np.ndarray:
     """``C[a, b]``: summed squared distance of ``pts[cand[a]..cand[b]]`` to their own best-fitting line (total
     least squares; inf for ``a >= b``), so where exactly a corner's apex point lies costs nothing."""
-    x, y = pts[:, 0], pts[:, 1]
-    sx, sy, sxx, syy, sxy = _prefix(x), _prefix(y), _prefix(x * x), _prefix(y * y), _prefix(x * y)
+    sx, sy, sxx, syy, sxy = sums if sums is not None else moments(pts)
     i, j = np.meshgrid(cand, cand, indexing="ij")
     ok = j > i
     lo, hi = i, np.where(ok, j + 1, i + 1)
@@ -184,14 +186,15 @@ def _turns(pts: np.ndarray, indices: tuple[int, ...]) -> np.ndarray:
 
 def _chains(pts: np.ndarray, max_segments: int, tolerance: float, *, closed: bool) -> dict[int, PolygonFit]:
     cand = np.array(candidate_vertices(pts, tolerance))
-    cost = line_costs(pts, cand)
+    sums = moments(pts)
+    cost = line_costs(pts, cand, sums)
     out: dict[int, PolygonFit] = {}
     for k, found in enumerate(_segmentations(cost, min(max_segments, len(cand) - 1)), start=1):
         if found is None:
             continue
         rss, path = found
         indices = tuple(int(cand[p]) for p in path)
-        out[k] = PolygonFit(indices, rss, pts, closed, 4 * tolerance)
+        out[k] = PolygonFit(indices, rss, pts, closed, 4 * tolerance, sums)
     return out
 
 
@@ -199,11 +202,17 @@ def _prefix(values: np.ndarray) -> np.ndarray:
     return np.concatenate([np.zeros(1), np.cumsum(values)])
 
 
-def run_lines(pts: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Centre and unit direction of the total-least-squares line through each ``pts[lo:hi]`` (closed form, from
-    prefix sums: no per-run loop)."""
+def moments(pts: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Prefix sums of x, y, x^2, y^2 and xy: any run's line in O(1)."""
     x, y = pts[:, 0], pts[:, 1]
-    sx, sy, sxx, syy, sxy = _prefix(x), _prefix(y), _prefix(x * x), _prefix(y * y), _prefix(x * y)
+    return _prefix(x), _prefix(y), _prefix(x * x), _prefix(y * y), _prefix(x * y)
+
+
+def run_lines(pts: np.ndarray, lo: np.ndarray, hi: np.ndarray, sums: tuple[np.ndarray, ...] | None = None,
+              ) -> tuple[np.ndarray, np.ndarray]:
+    """Centre and unit direction of the total-least-squares line through each ``pts[lo:hi]`` (closed form, from
+    prefix sums, `moments` of ``pts`` when given: no per-run loop)."""
+    sx, sy, sxx, syy, sxy = sums if sums is not None else moments(pts)
     m = np.maximum(hi - lo, 1).astype(float)
     px, py = sx[hi] - sx[lo], sy[hi] - sy[lo]
     cxx = sxx[hi] - sxx[lo] - px * px / m
@@ -213,7 +222,8 @@ def run_lines(pts: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarr
     return np.column_stack([px / m, py / m]), np.column_stack([np.cos(theta), np.sin(theta)])
 
 
-def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, reach: float) -> np.ndarray:
+def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, reach: float,
+                  sums: tuple[np.ndarray, ...] | None = None) -> np.ndarray:
     """The vertices of a chain of runs: where the lines fitted to neighbouring runs (their middle two thirds)
     meet, when that is near the point where the runs join (within a third of the shorter run, and within
     ``reach`` of the points' bounds); else that point itself (nearly parallel sides never meet far away). The
@@ -222,7 +232,7 @@ def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, re
     a, b = idx[:-1], idx[1:]
     size = b - a + 1
     trim = np.where(size >= 6, size // 6, 0)
-    centres, dirs = run_lines(pts, a + trim, b + 1 - trim)
+    centres, dirs = run_lines(pts, a + trim, b + 1 - trim, sums)
     chords = np.hypot(*(pts[b] - pts[a]).T)
     runs = len(a)
     second = np.arange(runs) if closed else np.arange(1, runs)
