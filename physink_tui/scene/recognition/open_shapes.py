@@ -37,10 +37,10 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def line(raw: np.ndarray, noise: float) -> Recognition | None:
+def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
-    if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * sg.bbox_diagonal(raw):
+    if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
         return None  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
     n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48

@@ -98,7 +98,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
                                                 f"({noise:.3g} units)")
     unit_noise = noise / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
-        result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS, shaky)
+        result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale)
     if result.geometry is None:
         return result
     return replace(result, geometry=scale_geometry(result.geometry, origin, scale))
@@ -160,11 +160,11 @@ OPEN_ROUND_MARGIN = 0.2
 short pokes out by about 15 % of the stroke's diagonal)."""
 
 
-def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool = False) -> Recognition:
-    found = open_shapes.line(raw, noise)
+def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float) -> Recognition:
+    """``raw`` at unit size; ``diag`` its `stroke_geometry.bbox_diagonal`, ``noise`` in the same units."""
+    found = open_shapes.line(raw, noise, diag)
     if found is not None:
         return found
-    diag = sg.bbox_diagonal(raw)
     length = sg.path_length(raw)
     thickness = sg.thickness(raw)
     spacing = max(min(diag / 40, max(thickness, diag / 200) / 8), 2 * noise, length / MAX_JUDGED_POINTS)
@@ -187,15 +187,16 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool = Fal
         found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
                                           weights.round_corner)
         round_left_open = found.kind in ("circle", "ellipse")
-        if _inside(found.geometry, *_bounds(raw, noise, OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN)):
+        share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
+        if _inside(found.geometry, *_bounds(raw, noise, diag, share)):
             return found
         ranked = _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
-                       weights, raw, noise)
+                       weights, raw, noise, diag)
         return _or_freeform(ranked, work, closed=False, sigma=sigma)
     candidates: list[Candidate | Pending | None] = [
         *polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise), round_shape(loop)]
-    return _or_freeform(_rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise),
-                        loop, closed=True, sigma=sigma)
+    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag)
+    return _or_freeform(ranked, loop, closed=True, sigma=sigma)
 
 
 FREEFORM_CONFIDENCE = 0.3
@@ -230,8 +231,9 @@ def _polygon_left_open(work: np.ndarray, diag: float) -> bool:
             and sf.heading_home(work, corners))
 
 
-def _bounds(raw: np.ndarray, noise: float, share: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
-    margin = (share or BOUNDS_MARGIN) * sg.bbox_diagonal(raw) + noise
+def _bounds(raw: np.ndarray, noise: float, diag: float, share: float = BOUNDS_MARGIN,
+            ) -> tuple[np.ndarray, np.ndarray]:
+    margin = share * diag + noise
     return raw.min(axis=0) - margin, raw.max(axis=0) + margin
 
 
@@ -242,7 +244,7 @@ def _score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> fl
 
 
 def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
-          noise: float) -> Recognition:
+          noise: float, diag: float) -> Recognition:
     """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
     as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
     once what is left could not change the answer or its alternatives."""
@@ -250,7 +252,7 @@ def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: 
     for c in candidates:
         if math.isfinite(c.rss):
             heapq.heappush(heap, (_score(c, n, sigma, weights), len(heap), c))
-    lo, hi = _bounds(raw, noise)
+    lo, hi = _bounds(raw, noise, diag)
     kept: list[tuple[float, Candidate]] = []
     seq = len(heap)
     while heap:
