@@ -9,14 +9,12 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from shared_data import shared_path
 
 from physink_tui.input.capture import Capture
 from physink_tui.input.capture_writer import format_capture
 
-HID_DIR = Path(__file__).resolve().parents[2] / "shared" / "data" / "hid"
-
-if not HID_DIR.is_dir():
-    pytest.skip(f"shared capture folder {str(HID_DIR)!r} is not present", allow_module_level=True)
+HID_DIR = shared_path("hid", module_level=True)
 
 FILES = sorted(HID_DIR.glob("*.hid"))
 

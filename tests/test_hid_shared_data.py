@@ -16,6 +16,7 @@ from functools import cache
 from pathlib import Path
 
 import pytest
+from shared_data import shared_path
 
 from physink_tui.errors import DescriptorError
 from physink_tui.input.capture import Capture, CaptureEvent
@@ -23,10 +24,7 @@ from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.hid_descriptor import ReportDescriptor
 from physink_tui.input.pen_sample import PenSample
 
-HID_DIR = Path(__file__).resolve().parents[2] / "shared" / "data" / "hid"
-
-if not HID_DIR.is_dir():
-    pytest.skip(f"shared HID data folder {str(HID_DIR)!r} is not present", allow_module_level=True)
+HID_DIR = shared_path("hid", module_level=True)
 
 README_PATH = HID_DIR / "README.md"
 FILES = sorted(HID_DIR.glob("*.hid"))

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 from shapely.geometry import Polygon
+from shared_data import shared_path
 from test_session import box_points, pen_header, pen_stroke
 
 from physink_tui.scene.components import BACKGROUND, Body, Joint
@@ -24,7 +25,6 @@ from physink_tui.session.session import Session
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_recognition import ACCEPTS, LABEL_CLASS  # the benchmark's own mapping, not a copy
 
-DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "strokes" / "dollar1-dev.jsonl"
 CANVAS = (1600.0, 1000.0)
 SUBJECT_FLOORS = {"s02": 98.6, "s03": 98.2, "s04": 98.0}
 """Per person, % of their 480 strokes recognised right: today (main e00d849) 99.6, 99.2, 99.0; issue 10 asks 98."""
@@ -48,10 +48,8 @@ xfails: a fix turns them red; delete the entry then."""
 
 
 def people_rows() -> list[dict]:
-    """The labelled strokes; skips the calling test when the shared data is missing (make this fail in CI)."""
-    if not DATA.is_file():
-        pytest.skip(f"shared stroke data {str(DATA)!r} is not present")
-    return _read(DATA)
+    """The labelled strokes; without the shared data the calling test skips (or fails in CI, `shared_data`)."""
+    return _read(shared_path("strokes", "dollar1-dev.jsonl"))
 
 
 @cache
@@ -71,8 +69,7 @@ def _outcomes(path: Path) -> tuple[tuple[str, str, bool, str], ...]:
 
 
 def outcomes() -> tuple[tuple[str, str, bool, str], ...]:
-    people_rows()
-    return _outcomes(DATA)
+    return _outcomes(shared_path("strokes", "dollar1-dev.jsonl"))
 
 
 def _accuracy(key_index: int, key: str) -> tuple[float, list[str]]:

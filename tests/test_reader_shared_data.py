@@ -11,18 +11,16 @@ import os
 import queue
 import socket
 import threading
-from pathlib import Path
 
 import pytest
+from shared_data import shared_path
 
 from physink_tui.input.capture import Capture
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.hid_readers import HidrawReader
 from physink_tui.input.sources import RawReport, SourceEnded
 
-SHARED = Path(__file__).resolve().parents[2] / "shared" / "data" / "hid"
-if not SHARED.is_dir():
-    pytest.skip(f"shared tablet data not found at {SHARED}", allow_module_level=True)
+SHARED = shared_path("hid", module_level=True)
 
 # one capture per decoding path: UC-Logic v1 with learnt polarity, Huion v2 vendor reports with pad reports
 # and an undeclared id, KYE reports longer than declared, XP-Pen tilt, 10moons two reports per position
