@@ -27,6 +27,11 @@ from physink_tui.errors import CaptureFormatError
 BAD_TEXT_MAX = 80
 """`BadLine.text` keeps at most this many characters of the offending line."""
 
+MAX_SECONDS = 1e7
+"""No capture runs longer than this (about 4 months): a later stamp is a broken line."""
+GLITCH_SECONDS = 10.0
+"""A report stamped this far after both its neighbours is a glitch (captures pause for a second between
+segments, never jump ahead and back)."""
 _TIME = re.compile(r"\d+(?:\.\d+)?\Z", re.ASCII)
 _HEX_TOKEN = re.compile(r"[0-9a-fA-F]{2}\Z")
 _HEX_NUMBER = re.compile(r"[0-9a-fA-F]+\Z")
@@ -244,7 +249,12 @@ class _Parser:
                 if len(data) != int(declared):
                     self.bad_line(lineno, line, f"declared {int(declared)} bytes, found {len(data)}")
                     continue
-                events_append(CaptureEvent(float(stamp), data, lineno, dev.index))
+                t = float(stamp)
+                if not t <= MAX_SECONDS:  # 310 digits make inf; no capture runs for years
+                    self.bad_line(lineno, line, f"timestamp {stamp[:20]!r}{'...' if len(stamp) > 20 else ''} is "
+                                                f"not a time a capture could hold (over {MAX_SECONDS:g} s)")
+                    continue
+                events_append(CaptureEvent(t, data, lineno, dev.index))
             elif not line:
                 continue
             elif line[0] == "#":
@@ -312,6 +322,27 @@ class _Parser:
             return
         dev.bus, dev.vid, dev.pid = bus, vid, pid
 
+    def drop_glitches(self) -> None:
+        """Drop (as bad lines) single reports whose time jumps ahead by more than `GLITCH_SECONDS` and comes
+        straight back: one glitched stamp would otherwise hold every later report's time (time never goes back
+        in the gesture engine)."""
+        last: dict[int, CaptureEvent] = {}
+        glitches: set[int] = set()
+        events = self.events
+        for k, ev in enumerate(events):
+            before = last.get(ev.device)
+            ahead = before is not None and ev.t - before.t > GLITCH_SECONDS  # rare: only then look at the next
+            after = next((e for e in events[k + 1:k + 50] if e.device == ev.device), None) if ahead else None
+            if after is not None and ev.t - after.t > GLITCH_SECONDS:
+                glitches.add(k)
+                self.bad_line(ev.line, f"E: {ev.t:.6f} ({len(ev.data)} bytes)",
+                              f"timestamp jumps {ev.t - before.t:.6g} s ahead of the report before and back")
+                continue
+            last[ev.device] = ev
+        if glitches:
+            self.events = [ev for k, ev in enumerate(events) if k not in glitches]
+            self.bad.sort(key=lambda b: b.line)
+
     def select_device(self, lineno: int, line: str) -> None:
         value = line[2:].strip()
         if not (value.isascii() and value.isdigit()):
@@ -332,6 +363,7 @@ class _Parser:
                 raise self.error(
                     f"device {dev.index} has no report descriptor ('R:' line); it starts here", dev.first_line
                 )
+        self.drop_glitches()
         return Capture(
             devices=tuple(d.build() for d in self.devices.values()),
             events=tuple(self.events),
