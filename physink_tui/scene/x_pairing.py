@@ -84,12 +84,13 @@ def x_arm(points: Sequence[Sequence[float]], max_length: float = math.inf) -> Li
 
 
 def pair_x(first: Sequence[Sequence[float]], second: Sequence[Sequence[float]],
-           max_length: float = math.inf) -> Recognition | None:
+           max_length: float = math.inf, noise: float = 1.0) -> Recognition | None:
     """The X two consecutive strokes make, or None.
 
     The recogniser's own answer is taken when it finds an X; otherwise two arms (`x_arm`) that cross away from
     their ends at `MIN_ANGLE` degrees or more, neither more than `LENGTH_RATIO` times the other, make one. The first
-    arm must be at most ``max_length`` long; the second at most `LENGTH_RATIO` times the first.
+    arm must be at most ``max_length`` long; the second at most `LENGTH_RATIO` times the first. ``noise`` is the
+    pen's jitter in the strokes' units (`recognize.recognize_stroke`).
     """
     a = x_arm(first, max_length)
     if a is None:
@@ -97,7 +98,7 @@ def pair_x(first: Sequence[Sequence[float]], second: Sequence[Sequence[float]],
     b = x_arm(second, LENGTH_RATIO * math.dist(a.start, a.end))
     if b is None:
         return None
-    recognised = recognize_strokes([first, second])
+    recognised = recognize_strokes([first, second], noise=noise)
     if recognised.kind == "x":
         return recognised
     crossing = _crossing(a, b)

@@ -47,6 +47,9 @@ X_CANDIDATE = 0.08
 it waits for the next stroke."""
 PIN_SIZE = 0.012
 """A circle with a radius under this share of the canvas diagonal looks like a pin."""
+VIEW_PIXELS = 1600.0
+"""How many pixels across the canvas's longer side is taken to span on screen (the pen's noise is a pixel of it:
+1 canvas unit on the thesis's 1600 x 1000 canvas)."""
 X_WAIT = 1.5
 """Seconds a possible half-X waits for its second stroke to begin before it is taken on its own."""
 
@@ -218,16 +221,20 @@ class Session:
             return
         if self._pending is not None:
             pending, self._pending = self._pending, None
-            pair = pair_x(pending.points, points, self._x_arm_limit())
+            pair = pair_x(pending.points, points, self._x_arm_limit(), self._pen_noise())
             if pair is not None:
                 self._apply(pair, [pending.points, points], "X-symbol")
                 return
             self._apply(pending.recognition, [pending.points], pending.recognition.kind or "stroke")
-        recognition = recognize_stroke(points)
+        recognition = recognize_stroke(points, noise=self._pen_noise())
         if x_arm(points, self._x_arm_limit()) is not None:  # whatever the recogniser named it: a bowed or hooked
             self._pending = _Pending(ended.t, points, recognition)  # half-X is seldom a clean line
             return
         self._apply(recognition, [points], recognition.kind or "stroke")
+
+    def _pen_noise(self) -> float:
+        """The pen's jitter in canvas units: a pixel of a view `VIEW_PIXELS` wide showing the whole canvas."""
+        return max(self.canvas) / VIEW_PIXELS
 
     def _settle(self) -> None:
         """Push the bodies still waiting clear of what they overlap (as part of the action that made them)."""
