@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import pytest
 
-from physink_tui.input.device_facts import all_facts, match_device
-from physink_tui.input.fixed_layouts import FIXED_DEVICES
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.hid_descriptor import ReportDescriptor
 
@@ -77,6 +75,9 @@ def test_a_kernel_fixed_pd1011_descriptor_is_read_as_it_is() -> None:
 
 
 def test_device_facts_table_is_loaded_and_chooses_by_id_or_name() -> None:
+    from physink_tui.input.device_facts import all_facts, match_device
+    from physink_tui.input.fixed_layouts import FIXED_DEVICES
+
     facts = all_facts()
     assert len(facts) > 400
     assert match_device(0x0543, 0xE668).fact.model == "ViewSonic Woodpad PF1030"
