@@ -81,7 +81,7 @@ class FactMatch:
     Attributes:
         fact: the model chosen, or None when the table cannot choose.
         why: how it was chosen, or why not, for a warning.
-        candidates: how many models share the VID:PID.
+        candidates: how many rows (a model may have several) the table holds for the VID:PID.
     """
 
     fact: DeviceFact | None
@@ -106,4 +106,5 @@ def match_device(vid: int | None, pid: int | None, name: str | None = None) -> F
             return FactMatch(named[0], f"device facts for {named[0].model} ({ids}, matched by name)", len(found))
     if len({f.maxima for f in found}) == 1:
         return FactMatch(found[0], f"device facts for {ids} ({found[0].model})", len(found))
-    return FactMatch(None, f"{len(found)} models with different maxima share {ids}", len(found))
+    models = len({f.model for f in found})
+    return FactMatch(None, f"{models} models with different maxima share {ids}", models)

@@ -244,7 +244,7 @@ def device_layouts(
             layouts[0x07] = replace(layouts[0x07], frame_byte=(1, 0xF0, (0xE0,)))
     if protocol == "huion-v2" or (vid == VID_HUION and _has_vendor_report(descriptor, 0x08, 12)):
         if 0x08 not in layouts or layouts[0x08].source != "descriptor":
-            layouts[0x08] = huion_v2_layout(params or _fact_params(vid, pid, name, notes) or DEFAULT_V2_PARAMS)
+            layouts[0x08] = huion_v2_layout(params or _fact_params(vid, pid, name, notes) or _assumed(vid, pid, notes))
     elif not layouts and vid in (VID_HUION, VID_UCLOGIC) and descriptor.input_report(0x08) is not None:
         # recorded after the kernel switched the tablet on: only the vendor report 0x08 is declared,
         # often shorter than the 12 bytes the tablet sends, and no vendor-init note gives the maxima
@@ -265,6 +265,14 @@ def _fact_params(vid: int | None, pid: int | None, name: str | None, notes: list
     notes.append(f"maxima from {found.why}: x {found.fact.x_max}, y {found.fact.y_max}, "
                  f"pressure {found.fact.p_max}")
     return TabletParams(found.fact.x_max, found.fact.y_max, found.fact.p_max or DEFAULT_V2_PARAMS.p_max)
+
+
+def _assumed(vid: int | None, pid: int | None, notes: list[str]) -> TabletParams:
+    """The common v2 size when nothing names the model; ranges still widen past it."""
+    d = DEFAULT_V2_PARAMS
+    notes.append(f"maxima unknown ({match_device(vid, pid).why}): assumed x {d.x_max}, y {d.y_max}, "
+                 f"pressure {d.p_max}, the common v2 size (ranges widen if the pen goes further)")
+    return d
 
 
 def _inferred(vid: int | None, pid: int | None, notes: list[str]) -> TabletParams:
