@@ -108,3 +108,10 @@ def test_vendor_mode_huion_of_unknown_model_infers_maxima_with_a_warning() -> No
     decoder = HidPenDecoder(HUION_VENDOR_08, 0x256C, 0x006E, name="HUION Huion Tablet")
     assert decoder.layouts[0x08].source == "huion-v2"
     assert "inferred from the largest values seen" in decoder.stats.summary()
+
+
+def test_v2_maxima_assumed_without_facts_are_said_so() -> None:
+    twelve = bytes.fromhex("0600ff0901a101850875589501090181 02c0".replace(" ", ""))
+    decoder = HidPenDecoder(twelve, 0x256C, 0x006D, name="HUION Huion Tablet")
+    assert (decoder.layouts[0x08].x.hi, decoder.layouts[0x08].y.hi) == (50800, 31750)
+    assert "assumed x 50800, y 31750" in decoder.stats.summary()
