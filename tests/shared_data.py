@@ -25,7 +25,7 @@ def shared_root() -> Path | None:
     return next((p for p in _CANDIDATES if p is not None and p.is_dir()), None)
 
 
-def shared_path(*parts: str, module_level: bool = False) -> Path:
+def shared_path(*parts: str, module_level: bool = True) -> Path:
     """``../shared/data/<parts>``; skips the test (or module) when absent, or fails under
     ``PHYSINK_REQUIRE_SHARED_DATA=1``."""
     root = shared_root()

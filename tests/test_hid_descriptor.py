@@ -311,8 +311,6 @@ BROKEN = [
     ("report-count-20000", "05 01 09 02 a1 01 96 20 4e c0", 6),
     ("report-id-0", "05 01 09 02 a1 01 85 00 c0", 6),
     ("report-id-256", "05 01 86 00 01", 2),
-    ("reserved-item-type", "05 01 0c", 2),
-    ("reserved-item-type-with-data", "05 01 09 02 0d 01", 4),
     ("reversed-usage-range", "05 09 19 05 29 01", 4),
     ("report-past-16-KiB", "05 01 09 02 a1 01 76 00 01 96 00 30 81 02 c0", 12),
 ]

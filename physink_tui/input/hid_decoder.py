@@ -31,6 +31,8 @@ class DecodeStats:
             line or the report's index.
         backwards: reports whose timestamp went backwards.
         widened: names of values whose range had to widen past the declared logical range.
+        warnings: things the decoder chose for the user to know (descriptor items skipped,
+            maxima taken from device facts or inferred from the data), printed in the summary.
     """
 
     reports: int = 0
@@ -39,6 +41,7 @@ class DecodeStats:
     first_ignored: tuple[int, str] | None = None
     backwards: int = 0
     widened: set[str] = field(default_factory=set)
+    warnings: list[str] = field(default_factory=list)
 
     def ignore(self, where: int, reason: str) -> None:
         self.ignored[reason] += 1
@@ -48,6 +51,7 @@ class DecodeStats:
     def summary(self) -> str:
         """One paragraph for stderr: counts, reasons, first ignored report."""
         lines = [f"{self.reports} reports read, {self.samples} pen samples"]
+        lines.extend(f"  warning: {w}" for w in self.warnings)
         for reason, n in sorted(self.ignored.items(), key=lambda kv: (-kv[1], kv[0])):
             lines.append(f"  ignored {n}: {reason}")
         if self.first_ignored is not None:
@@ -77,9 +81,13 @@ class HidPenDecoder:
         pid: int | None = None,
         params: TabletParams | None = None,
         protocol: str | None = None,
+        name: str | None = None,
     ) -> None:
         self.descriptor = ReportDescriptor.from_bytes(descriptor)
-        self.layouts: dict[int, PenLayout] = device_layouts(self.descriptor, vid, pid, params, protocol)
+        notes: list[str] = []
+        self.layouts: dict[int, PenLayout] = device_layouts(
+            self.descriptor, vid, pid, params, protocol, name=name, notes=notes
+        )
         if not self.layouts:
             reports = ", ".join(f"0x{r.report_id:02x}" for r in self.descriptor.input_reports()) or "none"
             raise DescriptorError(
@@ -90,7 +98,7 @@ class HidPenDecoder:
         self._decoders = {rid: c.decode for rid, c in self.compiled.items()}
         self.uses_ids = self.descriptor.uses_report_ids
         self.known_ids = {rid for (_, rid) in self.descriptor.reports}
-        self.stats = DecodeStats()
+        self.stats = DecodeStats(warnings=[*self.descriptor.warnings, *notes])
         self._last_t = float("-inf")
 
     def decode(self, data: bytes, t: float, where: int = 0) -> PenSample | None:

@@ -136,12 +136,15 @@ class ReportDescriptor:
         uses_report_ids: whether reports start with a report-id byte.
         reports: every report, keyed by ``(kind, report_id)``.
         collections: every collection in order of appearance.
+        warnings: items skipped as the kernel skips them (unknown main item, reserved item type),
+            one message each naming the byte offset; empty for a clean descriptor.
     """
 
     raw: bytes
     uses_report_ids: bool
     reports: dict[tuple[str, int], Report]
     collections: tuple[Collection, ...]
+    warnings: tuple[str, ...] = ()
 
     @classmethod
     def from_bytes(cls, data: bytes) -> ReportDescriptor:
@@ -201,6 +204,7 @@ class _Parser:
         self.fields: dict[tuple[str, int], list[Field]] = {}
         self.bit_pos: dict[tuple[str, int], int] = {}
         self.uses_ids = False
+        self.warnings: list[str] = []
 
     def parse(self) -> ReportDescriptor:
         data, pos, n = self.data, 0, len(self.data)
@@ -229,8 +233,8 @@ class _Parser:
                 self._global(tag, value, size, pos)
             elif kind == LOCAL:
                 self._local(tag, value, size, pos)
-            else:
-                raise DescriptorError(f"reserved item type in prefix 0x{prefix:02x}", pos)
+            else:  # the kernel logs a reserved item type and carries on
+                self.warnings.append(f"byte {pos}: reserved item type in prefix 0x{prefix:02x} skipped")
             pos += 1 + size
         if self.open:
             raise DescriptorError(
@@ -240,7 +244,7 @@ class _Parser:
         for key, flds in self.fields.items():
             bits = self.bit_pos[key]
             reports[key] = Report(key[1], key[0], tuple(flds), (bits + 7) // 8)
-        return ReportDescriptor(self.data, self.uses_ids, reports, tuple(self.collections))
+        return ReportDescriptor(self.data, self.uses_ids, reports, tuple(self.collections), tuple(self.warnings))
 
     # -- items ---------------------------------------------------------------------------------
 
@@ -321,8 +325,8 @@ class _Parser:
             self.open.pop()
         elif tag in _MAIN_KINDS:
             self._add_field(_MAIN_KINDS[tag], value, pos)
-        else:
-            raise DescriptorError(f"unknown main item tag 0x{tag:x}", pos)
+        else:  # the kernel logs an unknown main item, drops its locals and carries on
+            self.warnings.append(f"byte {pos}: unknown main item tag 0x{tag:x} skipped")
         self.locals = _Locals()
 
     def _add_field(self, kind: str, flags: int, pos: int) -> None:

@@ -221,7 +221,7 @@ def pen_summaries(info: HidrawInfo) -> list[str]:
     if not info.descriptor:
         return []
     try:
-        decoder = HidPenDecoder(info.descriptor, info.vid, info.pid)
+        decoder = HidPenDecoder(info.descriptor, info.vid, info.pid, name=info.name or None)
     except DescriptorError:
         return []
     return [layout.summary() for layout in decoder.layouts.values()]

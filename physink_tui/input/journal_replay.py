@@ -34,7 +34,7 @@ def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
         raise JournalError(f"{where}: line 1: key \"mapping\": {exc}") from None
     pen = PenInput(mapping, GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up)))
     for device in header.devices:
-        pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid))
+        pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name))
     pen.add_sample_device(PEN_DEVICE, canvas_space=True)
     return pen
 

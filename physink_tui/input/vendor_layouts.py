@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from physink_tui.input.device_facts import match_device
+from physink_tui.input.fixed_layouts import FIXED_DEVICES, fixed_layouts
 from physink_tui.input.hid_descriptor import ReportDescriptor
 from physink_tui.input.pen_layout import PenLayout, ValueField, pen_layouts
 
@@ -200,6 +202,8 @@ def device_layouts(
     pid: int | None = None,
     params: TabletParams | None = None,
     protocol: str | None = None,
+    name: str | None = None,
+    notes: list[str] | None = None,
 ) -> dict[int, PenLayout]:
     """All pen layouts for a device: the descriptor's, patched by vendor knowledge, plus vendor
     reports the descriptor does not describe.
@@ -209,8 +213,17 @@ def device_layouts(
         vid, pid: USB ids, when known.
         params: maxima read from the device at initialisation (string descriptor 0x64 or 0xC8).
         protocol: force a vendor protocol (e.g. ``uclogic-v1`` after a v1 initialisation).
+        name: the device's name, to choose a model where one VID:PID covers several.
+        notes: warnings for the user are appended here (maxima from device facts or inferred).
     """
+    notes = notes if notes is not None else []
     layouts = pen_layouts(descriptor)
+    fixed = fixed_layouts(descriptor, vid, pid)
+    if fixed:
+        model = FIXED_DEVICES[(vid or 0, pid or 0)].name
+        notes.append(f"{model}: the descriptor is the device's own vendor one; pen report decoded "
+                     "from the layout Linux substitutes for it")
+        return {**layouts, **fixed}
     profile = PROFILES.get((vid or 0, pid or 0))
     if vid in TWO_BUTTON_FAMILIES:
         layouts = {rid: _two_button_fix(lay) for rid, lay in layouts.items()}
@@ -231,13 +244,42 @@ def device_layouts(
             layouts[0x07] = replace(layouts[0x07], frame_byte=(1, 0xF0, (0xE0,)))
     if protocol == "huion-v2" or (vid == VID_HUION and _has_vendor_report(descriptor, 0x08, 12)):
         if 0x08 not in layouts or layouts[0x08].source != "descriptor":
-            layouts[0x08] = huion_v2_layout(params or DEFAULT_V2_PARAMS)
+            layouts[0x08] = huion_v2_layout(params or _fact_params(vid, pid, name, notes) or _assumed(vid, pid, notes))
+    elif not layouts and vid in (VID_HUION, VID_UCLOGIC) and descriptor.input_report(0x08) is not None:
+        # recorded after the kernel switched the tablet on: only the vendor report 0x08 is declared,
+        # often shorter than the 12 bytes the tablet sends, and no vendor-init note gives the maxima
+        layouts[0x08] = huion_v2_layout(params or _fact_params(vid, pid, name, notes) or _inferred(vid, pid, notes))
     older_wacom = vid == VID_WACOM and (pid or 0) < OLDER_WACOM_PID_LIMIT
     if protocol == "wacom-graphire" or (older_wacom and not layouts and _has_vendor_report(descriptor, 0x02)):
         layouts[0x02] = wacom_graphire_layout(params or DEFAULT_GRAPHIRE_PARAMS)
     if protocol == "wacom-penpartner":
         layouts[0x01] = wacom_penpartner_layout(params or TabletParams(5040, 3780, 255))
     return layouts
+
+
+def _fact_params(vid: int | None, pid: int | None, name: str | None, notes: list[str]) -> TabletParams | None:
+    """Maxima from the device facts table when it can name the model."""
+    found = match_device(vid, pid, name)
+    if found.fact is None:
+        return None
+    notes.append(f"maxima from {found.why}: x {found.fact.x_max}, y {found.fact.y_max}, "
+                 f"pressure {found.fact.p_max}")
+    return TabletParams(found.fact.x_max, found.fact.y_max, found.fact.p_max or DEFAULT_V2_PARAMS.p_max)
+
+
+def _assumed(vid: int | None, pid: int | None, notes: list[str]) -> TabletParams:
+    """The common v2 size when nothing names the model; ranges still widen past it."""
+    d = DEFAULT_V2_PARAMS
+    notes.append(f"maxima unknown ({match_device(vid, pid).why}): assumed x {d.x_max}, y {d.y_max}, "
+                 f"pressure {d.p_max}, the common v2 size (ranges widen if the pen goes further)")
+    return d
+
+
+def _inferred(vid: int | None, pid: int | None, notes: list[str]) -> TabletParams:
+    """Maxima no fact gives: the ranges start empty and widen to the largest values seen, as libinput does."""
+    why = match_device(vid, pid).why
+    notes.append(f"maxima unknown ({why}): x, y and pressure ranges inferred from the largest values seen")
+    return TabletParams(1, 1, 1)
 
 
 def _has_vendor_report(descriptor: ReportDescriptor, report_id: int, min_length: int = 0) -> bool:
