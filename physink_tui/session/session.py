@@ -15,6 +15,8 @@ import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
+import shapely
+
 from physink_tui.errors import JournalError
 from physink_tui.input.gestures import Dwell, Gesture, PenDown, PenMove, StrokeEnded, Tap
 from physink_tui.input.journal_replay import PEN_DEVICE, pen_input_for
@@ -23,6 +25,7 @@ from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.sources import RawReport
 from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.writer import JournalWriter
+from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpret import Near, bodies_at, interpret
 from physink_tui.scene.overlaps import overlapped, push_clear
@@ -251,8 +254,13 @@ class Session:
             hit = overlapped(scene, body_id, self._near(scene))
             if not hit:
                 continue
-            scene = push_clear(scene, body_id, hit)
+            pushed = push_clear(scene, body_id, hit)
             names = ", ".join(self._name(h, scene) for h in hit)
+            if not body_geometry(pushed.components[body_id]).intersects(shapely.box(0, 0, *self.canvas)):
+                self.tell(f"{self._name(body_id, scene)} overlaps {names}; pushing it clear would put it off the "
+                          f"canvas, so it stays where it was drawn")
+                continue
+            scene = pushed
             self.tell(f"{self._name(body_id, scene)} overlapped {names}; the physics pushed it clear")
         return scene
 
