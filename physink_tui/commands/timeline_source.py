@@ -9,14 +9,14 @@ from pathlib import Path
 from physink_tui.commands.timeline_formats import parse_timeline_json
 from physink_tui.errors import PhysinkError
 from physink_tui.project.codec import FORMAT as PROJECT_FORMAT
-from physink_tui.project.files import load_project
+from physink_tui.project.codec import decode_project
 from physink_tui.timeline.events import Timeline, TimelineError
 
 
 def _is_project(text: str) -> bool:
     try:
         doc = json.loads(text)
-    except ValueError:
+    except (ValueError, RecursionError):
         return False  # parse_timeline_json says what is wrong with it
     return isinstance(doc, dict) and doc.get("format") == PROJECT_FORMAT
 
@@ -39,7 +39,7 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
             return parse_timeline_json(text)
         except TimelineError as e:
             raise TimelineError(f"{path}: {e}", e.event_id) from None
-    project = load_project(path)  # SceneError names the file and the bad field
+    project = decode_project(text, path)  # SceneError names the file and the bad field; the file is read once
     if project.timeline is None:
         raise PhysinkError(f"{path}: the project holds no timeline (demonstrate the machine in demo mode first)")
     try:
