@@ -76,10 +76,6 @@ def _bad(path: str, expected: str, value: Any) -> TimelineError:
     return TimelineError(f"{path}: expected {expected}, got {show(value)}")
 
 
-def _refuse_constant(name: str) -> float:
-    raise ValueError(f"{name} is not a number JSON allows")
-
-
 def _need(obj: dict[str, Any], key: str, path: str) -> Any:
     if key not in obj:
         raise TimelineError(f"{path}: missing key {key!r}")
@@ -115,8 +111,8 @@ def _num(value: Any, path: str) -> float:
         v = float(value)
     except OverflowError:
         v = math.inf
-    if not abs(v) <= MAX_VALUE:
-        raise _bad(path, f"a number of at most {MAX_VALUE:g} in size", value)
+    if not abs(v) <= MAX_VALUE:  # NaN and Infinity too
+        raise _bad(path, f"a finite number of at most {MAX_VALUE:g} in size", value)
     return v
 
 
@@ -195,7 +191,7 @@ def parse_timeline_json(text: str) -> tuple[Timeline, dict[str, str]]:
     Infinity and numbers beyond `MAX_VALUE` refused), `graph.CausalCycleError` for a cycle.
     """
     try:
-        doc = json.loads(text, object_pairs_hook=unique_pairs, parse_constant=_refuse_constant)
+        doc = json.loads(text, object_pairs_hook=unique_pairs)  # NaN and Infinity are refused by path below
     except DuplicateKey as exc:
         raise TimelineError(f"timeline JSON repeats key {exc.key!r}") from None
     except RecursionError:

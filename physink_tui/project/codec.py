@@ -87,11 +87,7 @@ class Project:
 
 
 # NaN and Infinity are let through the parser so that the check of the field can name it.
-def _refuse_constant(name: str) -> float:
-    raise ValueError(f"{name} is not a number JSON allows")
-
-
-_DECODER = json.JSONDecoder(object_pairs_hook=unique_pairs, parse_constant=_refuse_constant)
+_DECODER = json.JSONDecoder(object_pairs_hook=unique_pairs)
 
 
 def encode_project(project: Project, *, where: str = "project") -> str:
