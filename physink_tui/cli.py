@@ -161,6 +161,11 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def one_line(message: str) -> str:
+    """The message on one line: a line break quoted from a file is shown as ``\\n``."""
+    return message.replace("\r", "\\r").replace("\n", "\\n")
+
+
 def _not_available(command: str, why: str) -> int:
     print(f"{PROG} {command}: not available yet ({why})", file=sys.stderr)
     return EXIT_USAGE
@@ -203,7 +208,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         status = _dispatch(args)
     except PhysinkError as exc:
         guard.flush()  # what was printed before the error stays, in order
-        print(f"{PROG}: {exc}", file=sys.stderr)
+        print(f"{PROG}: {one_line(str(exc))}", file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt:
         return EXIT_INTERRUPTED
