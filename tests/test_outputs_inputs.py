@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 import threading
@@ -75,6 +76,24 @@ def test_a_file_that_cannot_be_written_is_one_line_naming_it(tmp_path, capsys, n
     assert main(["replay", str(JOURNAL), "--out", str(tmp_path)]) == 1
     one_line_error(capsys.readouterr().err, str(tmp_path / name), "cannot write")
     assert not [p for p in tmp_path.iterdir() if p.name.endswith(".tmp")]
+
+
+NO_DAC = ["setpriv", "--inh-caps=-dac_override,-dac_read_search", "--bounding-set=-dac_override,-dac_read_search", "--"]
+
+
+@pytest.mark.skipif(shutil.which("setpriv") is None, reason="needs util-linux setpriv to drop CAP_DAC_OVERRIDE")
+@pytest.mark.parametrize("command", [["demo", "--out"], ["replay", str(JOURNAL), "--out"]])
+def test_a_read_only_output_folder_is_one_line(tmp_path, command: list[str]) -> None:
+    # chmod does not stop root: the command runs without CAP_DAC_OVERRIDE, so 0o500 gives a real EACCES.
+    out = tmp_path / "out"
+    out.mkdir(mode=0o500)
+    try:
+        done = subprocess.run([*NO_DAC, sys.executable, "-m", "physink_tui", *command, str(out)], env=ENV,
+                              text=True, capture_output=True, timeout=120, cwd=ROOT)
+    finally:
+        out.chmod(0o700)
+    assert done.returncode == 1, done.stderr
+    one_line_error(done.stderr, str(out), "Permission denied")
 
 
 @pytest.mark.parametrize("command", [["decode", str(CAPTURE)], ["recognize", "STROKES"]])
