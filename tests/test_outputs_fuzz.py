@@ -80,8 +80,10 @@ def test_mutated_files_give_a_result_or_one_line(valid, tmp_path, capsys, kind: 
     paths = _paths(doc0)
     target = tmp_path / f"fuzz.{kind}.json"
 
+    forms = st.sampled_from(["json", "dot", "text", "equiv", "equiv-text"])
+
     @fuzz(600)
-    @given(st.sampled_from(paths), VALUES, st.booleans(), st.sampled_from(["json", "dot", "text", "equiv"]))
+    @given(st.sampled_from(paths), VALUES, st.booleans(), forms)
     def case(path: tuple, value: Any, delete: bool, form: str) -> None:
         doc = _mutate(json.loads(json.dumps(doc0)), path, value, delete)
         try:
@@ -89,8 +91,8 @@ def test_mutated_files_give_a_result_or_one_line(valid, tmp_path, capsys, kind: 
         except (ValueError, RecursionError):  # a 10**400 integer beyond the text conversion limit
             return
         target.write_text(text)
-        if form == "equiv":
-            _check(capsys, ["equiv", "--json", str(target), str(target)])
+        if form.startswith("equiv"):
+            _check(capsys, ["equiv", str(target), str(target), *(["--json"] if form == "equiv" else [])])
         else:
             _check(capsys, ["timeline", str(target), "--format", form])
 
@@ -106,7 +108,7 @@ def test_recognize_lines_give_a_result_or_one_line(tmp_path, capsys) -> None:
         st.builds(lambda v: json.dumps(v).encode(), VALUES),
     )
 
-    @fuzz(800)
+    @fuzz(700)
     @given(line)
     def case(raw: bytes) -> None:
         target.write_bytes(raw.replace(b"\n", b" ") + b"\n")

@@ -1,10 +1,11 @@
 """`physink replay`: runs the input side over a capture or a journal and reports the gestures found.
 
 A replay prints the gestures, one line each, and writes them to ``DIR/gestures.jsonl``; a journal
-also runs through the session, whose sketch is written to ``DIR/project.json`` (the timeline comes
-with a later issue). A capture is replayed device by device in file
-order as live reports would arrive; a journal's ``hid`` lines go through their device's decoder, its
-``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
+also runs through the session, whose sketch is written to ``DIR/project.json`` and, after a demonstration, its
+timeline to ``DIR/timeline.json`` and ``DIR/timeline.txt``. ``DIR`` holds only this run's files
+(`physink_tui.outputs.OutputFolder`); the input is read once, so a pipe or FIFO works. A capture is replayed
+device by device in file order as live reports would arrive; a journal's ``hid`` lines go through their device's
+decoder, its ``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
 """
 
 from __future__ import annotations
