@@ -242,3 +242,12 @@ def test_a_bad_timeline_inside_a_project_is_one_line(replayed, tmp_path, capsys,
     for command in (["timeline", str(bad), "--format", "dot"], ["equiv", "--json", str(bad), str(bad)]):
         assert main(command) == 1
         one_line_error(capsys.readouterr().err, str(bad), "timeline")
+
+
+def test_a_bad_journal_through_a_pipe_is_named_by_the_pipe(tmp_path) -> None:
+    bad = tmp_path / "bad.physink.jsonl"
+    bad.write_bytes(b"".join(JOURNAL.read_bytes().splitlines(keepends=True)[:3]) + b'{"t": 1, "bogus": 2}\n')
+    done = _bash(f"{sys.executable} -m physink_tui replay <(cat {bad}) --out {tmp_path / 'out'}")
+    assert done.returncode == 1
+    one_line_error(done.stderr, "/dev/fd/", "line 4")
+    assert "physink-input-" not in done.stderr and not (tmp_path / "out").exists()

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from physink_tui.commands.decode import decoder_for
 from physink_tui.commands.gesture_output import gesture_json, gesture_text
-from physink_tui.commands.input_file import read_bytes, regular_copy, sniff
+from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
 from physink_tui.commands.timeline_formats import timeline_json
 from physink_tui.errors import DescriptorError, PhysinkError
 from physink_tui.input.capture import Capture
@@ -84,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
               file=sys.stderr)
     data = read_bytes(path)  # once: the input may be a pipe or a FIFO
     if sniff(data, path) == "capture":
-        capture = Capture.from_text(data.decode("utf-8", errors="replace"), path=str(path))
+        capture = Capture.from_text(data.removeprefix(BOM).decode("utf-8", errors="replace"), path=str(path))
         gestures, notes = replay_capture(capture)
         out = OutputFolder.prepare(args.out)
         _write_gestures(out, [], gestures, notes)
