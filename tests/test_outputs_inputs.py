@@ -96,6 +96,30 @@ def test_a_read_only_output_folder_is_one_line(tmp_path, command: list[str]) -> 
     one_line_error(done.stderr, str(out), "Permission denied")
 
 
+def _can_mount() -> bool:
+    if shutil.which("unshare") is None:
+        return False
+    probe = subprocess.run(["unshare", "-m", "sh", "-c", "mount -t tmpfs -o size=4k tmpfs /mnt"],
+                           capture_output=True, timeout=30)
+    return probe.returncode == 0
+
+
+@pytest.mark.skipif(not _can_mount(), reason="needs unshare and mount (root) for a private full or read-only tmpfs")
+@pytest.mark.parametrize(("options", "command", "cause"), [
+    ("size=64k", ["demo", "--out"], "No space left on device"),
+    ("ro", ["replay", str(JOURNAL), "--out"], "Read-only file system"),
+])
+def test_a_full_or_read_only_file_system_is_one_line(tmp_path, options: str, command: list[str], cause: str) -> None:
+    # A tmpfs mounted in a private mount namespace: real ENOSPC and EROFS, gone when the command ends.
+    out = tmp_path / "out"
+    out.mkdir()
+    line = f"mount -t tmpfs -o {options} tmpfs {out} && exec {sys.executable} -m physink_tui {' '.join(command)} {out}"
+    done = subprocess.run(["unshare", "-m", "sh", "-c", line], env=ENV, text=True, capture_output=True, timeout=120,
+                          cwd=ROOT)
+    assert done.returncode == 1, done.stderr
+    one_line_error(done.stderr, str(out), cause)
+
+
 @pytest.mark.parametrize("command", [["decode", str(CAPTURE)], ["recognize", "STROKES"]])
 def test_a_full_stdout_is_one_line(tmp_path, command: list[str]) -> None:
     strokes = tmp_path / "s.jsonl"
