@@ -275,3 +275,15 @@ def test_a_bad_journal_through_a_pipe_is_named_by_the_pipe(tmp_path) -> None:
     assert done.returncode == 1
     one_line_error(done.stderr, "/dev/fd/", "line 4")
     assert "physink-input-" not in done.stderr and not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(("source", "fragment"), [
+    (JOURNAL, "this is a journal (.physink.jsonl)"),
+    (CAPTURE, "this is a capture (.hid)"),
+    (None, "empty file"),
+])
+def test_timeline_names_a_file_of_the_wrong_kind(tmp_path, capsys, source: Path | None, fragment: str) -> None:
+    path = tmp_path / "in.json"
+    path.write_bytes(b"" if source is None else source.read_bytes())
+    assert main(["timeline", str(path)]) == 1
+    one_line_error(capsys.readouterr().err, str(path), fragment, "takes a timeline JSON file or a project")

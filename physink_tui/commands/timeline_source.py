@@ -21,6 +21,23 @@ def _is_project(text: str) -> bool:
     return isinstance(doc, dict) and doc.get("format") == PROJECT_FORMAT
 
 
+def _refuse_other_kinds(text: str, path: Path) -> None:
+    """A journal, a capture or an empty file named as such: none holds a timeline."""
+    takes = "this command takes a timeline JSON file or a project (.physink.json)"
+    body = text.lstrip()
+    if not body:
+        raise TimelineError(f"{path}: empty file; {takes}")
+    first = body.split("\n", 1)[0]
+    if first.startswith(("#", "R:", "N:", "I:", "P:", "D:", "E:")):
+        raise TimelineError(f"{path}: this is a capture (.hid); {takes}")
+    try:
+        head = json.loads(first)
+    except (ValueError, RecursionError):
+        return
+    if isinstance(head, dict) and head.get("format") == "physink-journal":
+        raise TimelineError(f"{path}: this is a journal (.physink.jsonl); {takes}")
+
+
 def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
     """The timeline in a timeline JSON or project file, with its component labels (id -> label).
 
@@ -34,6 +51,8 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
         raise TimelineError(f"cannot read {path}: {e.strerror or e}") from None
     except UnicodeDecodeError as e:
         raise TimelineError(f"{path}: not UTF-8 text (byte {e.start})") from None
+    text = text.removeprefix("\ufeff")
+    _refuse_other_kinds(text, path)
     if not _is_project(text):
         try:
             return parse_timeline_json(text)
