@@ -5,19 +5,20 @@ Every subcommand of the DESIGN.md table is parsed here. A built subcommand names
 library. A subcommand not built yet names its plan in ``PLANNED`` and exits 2 with one line saying so.
 
 Exit status: 0 success, 1 a user error (a ``PhysinkError``, printed as one line), 2 bad usage or a subcommand
-not available yet, 130 interrupted.
+not available yet, 130 interrupted. A reader that closes stdout early (``| head -1``) only ends the printing:
+the command finishes its files and its status is what it would have been (0 on success).
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
-import os
 import sys
 from collections.abc import Callable, Sequence
 
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError
+from physink_tui.outputs import StdoutGuard
 
 PROG = "physink"
 
@@ -160,6 +161,11 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def one_line(message: str) -> str:
+    """The message on one line: a line break quoted from a file is shown as ``\\n``."""
+    return message.replace("\r", "\\r").replace("\n", "\\n")
+
+
 def _not_available(command: str, why: str) -> int:
     print(f"{PROG} {command}: not available yet ({why})", file=sys.stderr)
     return EXIT_USAGE
@@ -196,16 +202,21 @@ def main(argv: Sequence[str] | None = None) -> int:
         if exc.code is None:
             return 0
         return exc.code if isinstance(exc.code, int) else EXIT_USAGE
+    guard = StdoutGuard(sys.stdout)
+    sys.stdout = guard  # type: ignore[assignment]
     try:
-        return _dispatch(args)
+        status = _dispatch(args)
     except PhysinkError as exc:
-        print(f"{PROG}: {exc}", file=sys.stderr)
+        guard.flush()  # what was printed before the error stays, in order
+        print(f"{PROG}: {one_line(str(exc))}", file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt:
         return EXIT_INTERRUPTED
-    except BrokenPipeError:
-        # The reader went away (e.g. `physink decode ... | head`): stop quietly, and keep Python from
-        # complaining again when it flushes stdout at exit.
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
+    finally:
+        sys.stdout = guard.stream
+    guard.flush()  # a full stdout is an error of this run, not a warning at exit
+    if guard.error is not None:
+        print(f"{PROG}: {guard.error}", file=sys.stderr)
         return EXIT_USER_ERROR
+    return status
+

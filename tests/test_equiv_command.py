@@ -106,7 +106,7 @@ def test_a_missing_file_is_one_line_naming_it(tmp_path, capsys) -> None:
 
 @pytest.mark.parametrize(("text", "fragment"), [
     ("{not json", "not valid JSON"),
-    ('{"events": [{"id": "e1"}]}', "event 0: missing key 'components'"),
+    ('{"events": [{"id": "e1"}]}', "events[0]: missing key 'components'"),
     ('{"format": "physink-project", "version": 1}', "missing"),
     (b"\xff\xfe".decode("latin-1"), "not UTF-8"),
 ])

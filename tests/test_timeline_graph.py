@@ -301,8 +301,9 @@ def test_json_keeps_the_label_of_a_body_only_passed_by() -> None:
         ("[", "not valid JSON"),
         ('{"events": [], "events": []}', "repeats key 'events'"),
         ("{}", "missing key 'events'"),
-        ('{"events": [{"id": "e1"}]}', "event 0: missing key 'components'"),
-        ('{"events": [{"id": "e1", "type": "start", "components": [], "causes": [], "t0": true}]}', "'t0' is True"),
+        ('{"events": [{"id": "e1"}]}', "events[0]: missing key 'components'"),
+        ('{"events": [{"id": "e1", "type": "start", "components": [], "causes": [], "sides": [], "regions": [], '
+         '"trajectory": [], "t1": 0, "t0": true}]}', "events[0].t0: expected a number, got true"),
     ],
 )
 def test_bad_json_names_the_problem(text: str, fragment: str) -> None:

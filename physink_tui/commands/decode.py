@@ -18,11 +18,13 @@ TEXT_HEADER = "       t        x        y        p tip rng era b1 b2  tilt_x  ti
 
 
 def read_capture(path: str) -> Capture:
-    """Read a capture, turning a missing or unreadable file into a one-line user error."""
+    """Read a capture once (a pipe or FIFO works; a UTF-8 BOM is skipped); an unreadable file is a one-line error."""
     try:
-        return Capture.from_file(path)
+        with open(path, "rb") as f:
+            raw = f.read()
     except OSError as exc:
         raise CaptureFormatError(f"cannot read capture: {exc.strerror or exc}", path) from None
+    return Capture.from_text(raw.removeprefix(b"\xef\xbb\xbf").decode("utf-8", errors="replace"), path=path)
 
 
 def decoder_for(device: CaptureDevice) -> HidPenDecoder:

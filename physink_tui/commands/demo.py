@@ -14,9 +14,7 @@ import io
 import json
 import sys
 from collections import Counter
-from pathlib import Path
 
-from physink_tui.atomic_write import write_text_atomic
 from physink_tui.commands.decode import decode_capture, summary, write_jsonl
 from physink_tui.commands.timeline_formats import timeline_json
 from physink_tui.demo_data import DEMO_FILE, TABLET_ASPECT, demo_capture_text, demo_script
@@ -25,6 +23,7 @@ from physink_tui.input.capture import Capture
 from physink_tui.input.mapping import TabletMapping
 from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
 from physink_tui.journal.reader import read_journal
+from physink_tui.outputs import OutputFolder, reason
 from physink_tui.project.codec import Project
 from physink_tui.project.files import save_project
 from physink_tui.render.braille import braille_plot
@@ -53,24 +52,23 @@ def describe(session: Session) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    out = Path(args.out)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise PhysinkError(f"{out}: cannot create the output folder: {exc.strerror or exc}") from None
+    folder = OutputFolder.prepare(args.out)  # holds only this run's files
+    out = folder.path
     capture = Capture.from_text(demo_capture_text(), path=f"<bundled {DEMO_FILE}>")
     results = decode_capture(capture)
     _, _, cols = results[0]
     samples = io.StringIO()
     write_jsonl(cols, samples)
-    write_text_atomic(out / "samples.jsonl", samples.getvalue())
-    write_text_atomic(out / "summary.txt", summary(capture, results) + "\n")
+    folder.write("samples.jsonl", samples.getvalue())
+    folder.write("summary.txt", summary(capture, results) + "\n")
 
     mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=TABLET_ASPECT,
                             tablet_height=1.0)
     journal_path = out / JOURNAL
-    journal_path.unlink(missing_ok=True)  # a journal is never overwritten: the demo starts a fresh one
-    write_journal(journal_path, header_for_capture(capture, mapping), capture_entries(capture), demo_script())
+    try:  # prepare removed the last run's journal: a journal is never overwritten, the demo starts a fresh one
+        write_journal(journal_path, header_for_capture(capture, mapping), capture_entries(capture), demo_script())
+    except OSError as exc:
+        raise PhysinkError(f"{journal_path}: cannot write: {reason(exc)}") from None
     journal = read_journal(journal_path)
     session = Session.from_header(journal.header).run(journal.entries)
     names = session.scene.names()
@@ -78,9 +76,9 @@ def run(args: argparse.Namespace) -> int:
     narration = ""
     if session.timeline is not None:
         text = timeline_json(session.timeline, names)
-        write_text_atomic(out / "timeline.json", text)
+        folder.write("timeline.json", text)
         narration = timeline_text(session.timeline, names)
-        write_text_atomic(out / "timeline.txt", narration + "\n")
+        folder.write("timeline.txt", narration + "\n")
         timeline_doc = json.loads(text)
     save_project(Project(session.scene, (), timeline_doc, session.canvas), out / "project.json")
 

@@ -16,8 +16,12 @@ from dataclasses import fields
 from typing import Any
 
 from physink_tui.errors import PhysinkError
+from physink_tui.project.checks import show
 from physink_tui.scene.recognition.primitives import Geometry, Line, Recognition
 from physink_tui.scene.recognition.recognize import recognize_strokes
+
+#: The largest coordinate or time accepted: squares and sums of such numbers stay far from overflow.
+MAX_COORDINATE = 1e9
 
 
 def _num(v: float) -> float | None:
@@ -54,13 +58,31 @@ def recognition_json(r: Recognition) -> str:
     return json.dumps(obj, separators=(",", ":"))
 
 
+def _no_constant(name: str) -> float:
+    raise ValueError(f"{name} is not a number JSON allows")
+
+
+def _coordinate(c: object) -> bool:
+    """A number recognition can work with: finite, and far from overflowing when squared."""
+    if isinstance(c, bool) or not isinstance(c, int | float):
+        return False
+    try:
+        return abs(float(c)) <= MAX_COORDINATE
+    except OverflowError:
+        return False
+
+
 def parse_line(text: str, path: str, lineno: int) -> list[list[list[float]]]:
     """The strokes of one input line; PhysinkError naming the line and what was expected."""
     where = f"{path}:{lineno}"
     try:
-        obj = json.loads(text)
+        obj = json.loads(text, parse_constant=_no_constant)
     except json.JSONDecodeError as exc:
         raise PhysinkError(f"{where}: not JSON ({exc.msg} at column {exc.colno})") from None
+    except RecursionError:
+        raise PhysinkError(f"{where}: not usable JSON (nested too deeply)") from None
+    except ValueError as exc:  # a number too long to convert, NaN or Infinity
+        raise PhysinkError(f"{where}: not usable JSON ({exc})") from None
     strokes = obj.get("strokes") if isinstance(obj, dict) else None
     if not isinstance(strokes, list):
         raise PhysinkError(f'{where}: expected an object with "strokes": [[[x, y, t?], ...], ...]')
@@ -69,8 +91,9 @@ def parse_line(text: str, path: str, lineno: int) -> list[list[list[float]]]:
             raise PhysinkError(f"{where}: stroke {i} must be a list of points")
         for j, point in enumerate(stroke):
             if (not isinstance(point, list) or len(point) < 2
-                    or not all(isinstance(c, int | float) and not isinstance(c, bool) for c in point)):
-                raise PhysinkError(f"{where}: stroke {i} point {j} must be [x, y] or [x, y, t] numbers, got {point!r}")
+                    or not all(_coordinate(c) for c in point)):
+                raise PhysinkError(f"{where}: stroke {i} point {j} must be [x, y] or [x, y, t] numbers of at most "
+                                   f"{MAX_COORDINATE:g} in size, got {show(point)}")
     return strokes
 
 
@@ -80,11 +103,15 @@ def run(args: argparse.Namespace) -> int:
     if not (noise > 0 and noise < float("inf")):
         raise PhysinkError(f"--noise: expected a positive number of units, got {noise!r}")
     try:
-        stream = sys.stdin if path == "-" else open(path, encoding="utf-8")
+        stream = sys.stdin.buffer if path == "-" else open(path, "rb")
     except OSError as exc:
         raise PhysinkError(f"{path}: cannot read: {exc.strerror or exc}") from None
     with stream:
-        for lineno, text in enumerate(stream, 1):
+        for lineno, raw in enumerate(stream, 1):
+            try:
+                text = raw.decode("utf-8")
+            except UnicodeDecodeError as exc:
+                raise PhysinkError(f"{path}:{lineno}: not UTF-8 text (byte {exc.start + 1} of the line)") from None
             if not text.strip():
                 continue
             strokes = parse_line(text, path, lineno)

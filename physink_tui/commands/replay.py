@@ -1,10 +1,11 @@
 """`physink replay`: runs the input side over a capture or a journal and reports the gestures found.
 
 A replay prints the gestures, one line each, and writes them to ``DIR/gestures.jsonl``; a journal
-also runs through the session, whose sketch is written to ``DIR/project.json`` (the timeline comes
-with a later issue). A capture is replayed device by device in file
-order as live reports would arrive; a journal's ``hid`` lines go through their device's decoder, its
-``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
+also runs through the session, whose sketch is written to ``DIR/project.json`` and, after a demonstration, its
+timeline to ``DIR/timeline.json`` and ``DIR/timeline.txt``. ``DIR`` holds only this run's files
+(`physink_tui.outputs.OutputFolder`); the input is read once, so a pipe or FIFO works. A capture is replayed
+device by device in file order as live reports would arrive; a journal's ``hid`` lines go through their device's
+decoder, its ``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
 """
 
 from __future__ import annotations
@@ -15,9 +16,9 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-from physink_tui.atomic_write import write_text_atomic
-from physink_tui.commands.decode import decoder_for, read_capture
+from physink_tui.commands.decode import decoder_for
 from physink_tui.commands.gesture_output import gesture_json, gesture_text
+from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
 from physink_tui.commands.timeline_formats import timeline_json
 from physink_tui.errors import DescriptorError, PhysinkError
 from physink_tui.input.capture import Capture
@@ -27,6 +28,7 @@ from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_layout import tablet_size
 from physink_tui.input.sources import RawReport, SourceEnded
 from physink_tui.journal.reader import read_journal
+from physink_tui.outputs import OutputFolder
 from physink_tui.project.codec import Project
 from physink_tui.project.files import save_project
 from physink_tui.session.session import Session
@@ -34,16 +36,6 @@ from physink_tui.timeline.narrate import timeline_text
 from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary
 
 PLURAL = {"body": "bodies"}
-
-
-def is_journal(path: Path) -> bool:
-    """A journal is JSON Lines (its first character is ``{``); a capture is hid-recorder text."""
-    try:
-        with open(path, "rb") as f:
-            head = f.read(64).lstrip()
-    except OSError as exc:
-        raise PhysinkError(f"{path}: cannot read: {exc.strerror or exc}") from None
-    return head.startswith(b"{")
 
 
 def replay_capture(capture: Capture) -> tuple[list[Gesture], list[str]]:
@@ -90,28 +82,37 @@ def run(args: argparse.Namespace) -> int:
     if args.video or args.frames:
         print("physink replay: --video and --frames need the renderer (a later issue); not written",
               file=sys.stderr)
-    events: list[str] = []
-    if is_journal(path):
-        gestures, events, notes = replay_journal(path)
-    else:
-        gestures, notes = replay_capture(read_capture(str(path)))
-    out = Path(args.out)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise PhysinkError(f"{out}: cannot create the output folder: {exc.strerror or exc}") from None
+    data = read_bytes(path)  # once: the input may be a pipe or a FIFO
+    if sniff(data, path) == "capture":
+        capture = Capture.from_text(data.removeprefix(BOM).decode("utf-8", errors="replace"), path=str(path))
+        gestures, notes = replay_capture(capture)
+        out = OutputFolder.prepare(args.out)
+        _write_gestures(out, [], gestures, notes)
+        return 0
+    with regular_copy(path, data) as copy:
+        try:
+            gestures, events, notes = replay_journal(copy)
+            out = OutputFolder.prepare(args.out)
+            _write_gestures(out, events, gestures, notes)
+            write_session_outputs(copy, out, vocabulary)
+        except PhysinkError as exc:
+            if copy == path:
+                raise
+            raise PhysinkError(str(exc).replace(str(copy), str(path))) from None
+    return 0
+
+
+def _write_gestures(out: OutputFolder, events: list[str], gestures: list[Gesture], notes: list[str]) -> None:
+    """Prints the gesture lines and writes DIR/gestures.jsonl."""
     for line in _merge(events, gestures):
         print(line)
     body = "".join(f"{j}\n" for g in gestures if (j := gesture_json(g)) is not None)
-    write_text_atomic(out / "gestures.jsonl", body)
+    target = out.write("gestures.jsonl", body)
     strokes = sum(1 for g in gestures if type(g).__name__ == "StrokeEnded")
     taps = sum(1 for g in gestures if type(g).__name__ == "Tap")
-    print(f"replay: {strokes} strokes, {taps} taps; gestures written to {out / 'gestures.jsonl'}", file=sys.stderr)
+    print(f"replay: {strokes} strokes, {taps} taps; gestures written to {target}", file=sys.stderr)
     for note in notes:
         print(f"  {note}", file=sys.stderr)
-    if is_journal(path):
-        write_session_outputs(path, out, vocabulary)
-    return 0
 
 
 def read_vocabulary(path: str | None) -> Vocabulary | None:
@@ -126,7 +127,7 @@ def read_vocabulary(path: str | None) -> Vocabulary | None:
     return parse_vocabulary(text, path)
 
 
-def write_session_outputs(path: Path, out: Path, vocabulary: Vocabulary | None = None) -> None:
+def write_session_outputs(path: Path, out: OutputFolder, vocabulary: Vocabulary | None = None) -> None:
     """Run the journal through the session and write DIR/project.json (the sketch as it ends) and, after a
     demonstration, the timeline; ``vocabulary`` adds words for phrases to those the journal's header gives."""
     journal = read_journal(path)
@@ -138,16 +139,16 @@ def write_session_outputs(path: Path, out: Path, vocabulary: Vocabulary | None =
     timeline = None
     if session.timeline is not None:
         text = timeline_json(session.timeline, names)
-        write_text_atomic(out / "timeline.json", text + ("" if text.endswith("\n") else "\n"))
-        write_text_atomic(out / "timeline.txt", timeline_text(session.timeline, names) + "\n")
+        out.write("timeline.json", text + ("" if text.endswith("\n") else "\n"))
+        out.write("timeline.txt", timeline_text(session.timeline, names) + "\n")
         timeline = json.loads(text)
     project = Project(session.scene, (), timeline, session.canvas)
-    save_project(project, out / "project.json")
+    save_project(project, out.file("project.json"))
     for message in session.messages:
         print(f"{message.t:9.3f}  told          {message.text}")
     kinds = Counter(type(c).__name__.lower() for c in session.scene.components.values())
     summary = ", ".join(f"{n} {PLURAL.get(k, k + 's') if n > 1 else k}" for k, n in sorted(kinds.items())) or "nothing"
-    print(f"replay: the sketch has {summary}; written to {out / 'project.json'}", file=sys.stderr)
+    print(f"replay: the sketch has {summary}; written to {out.file('project.json')}", file=sys.stderr)
 
 
 def _merge(events: list[str], gestures: list[Gesture]) -> list[str]:

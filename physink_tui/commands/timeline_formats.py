@@ -9,9 +9,11 @@ bytes. `parse_timeline_json` reads it back (``label`` is the narration shown; ``
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Mapping
 from typing import Any
 
+from physink_tui.project.checks import show
 from physink_tui.strict_json import DuplicateKey, unique_pairs
 from physink_tui.timeline.events import Event, Timeline, TimelineError, TrajectoryPoint, event_label
 from physink_tui.timeline.graph import check_acyclic
@@ -47,10 +49,6 @@ def _frames(frames: tuple[TrajectoryPoint, ...]) -> list[list[float]]:
     return [[_r(p.t), _r(p.x), _r(p.y), _r(p.angle), _r(p.vx), _r(p.vy)] for p in frames]
 
 
-def _read_frames(rows: Any) -> tuple[TrajectoryPoint, ...]:
-    return tuple(TrajectoryPoint(*(float(v) for v in row)) for row in rows)
-
-
 def timeline_json(timeline: Timeline, names: Mapping[str, str]) -> str:
     """The timeline as one deterministic JSON document (ending in a newline)."""
     doc = {"events": [_event_obj(ev, names) for ev in timeline.events]}
@@ -70,62 +68,140 @@ def timeline_dot(timeline: Timeline, names: Mapping[str, str]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _need(obj: Any, key: str, kind: type | tuple[type, ...], where: str) -> Any:
-    if not isinstance(obj, dict) or key not in obj:
-        raise TimelineError(f"{where}: missing key {key!r}")
-    value = obj[key]
-    kinds = kind if isinstance(kind, tuple) else (kind,)
-    if not isinstance(value, kinds) or (isinstance(value, bool) and bool not in kinds):
-        raise TimelineError(f"{where}: {key!r} is {value!r}; expected {kind}")
+#: The largest time or coordinate a timeline may hold: distances between such values stay far from overflow.
+MAX_VALUE = 1e9
+
+
+def _bad(path: str, expected: str, value: Any) -> TimelineError:
+    return TimelineError(f"{path}: expected {expected}, got {show(value)}")
+
+
+def _need(obj: dict[str, Any], key: str, path: str) -> Any:
+    if key not in obj:
+        raise TimelineError(f"{path}: missing key {key!r}")
+    return obj[key]
+
+
+def _obj(value: Any, path: str, expected: str = "an object") -> dict[str, Any]:
+    if not isinstance(value, dict):
+        raise _bad(path, expected, value)
     return value
+
+
+def _list(value: Any, path: str, expected: str = "a list") -> list[Any]:
+    if not isinstance(value, list):
+        raise _bad(path, expected, value)
+    return value
+
+
+def _str(value: Any, path: str, expected: str = "a string") -> str:
+    if not isinstance(value, str):
+        raise _bad(path, expected, value)
+    return value
+
+
+def _opt_str(value: Any, path: str) -> str | None:
+    return None if value is None else _str(value, path, "a string or null")
+
+
+def _num(value: Any, path: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise _bad(path, "a number", value)
+    try:
+        v = float(value)
+    except OverflowError:
+        v = math.inf
+    if not abs(v) <= MAX_VALUE:  # NaN and Infinity too
+        raise _bad(path, f"a finite number of at most {MAX_VALUE:g} in size", value)
+    return v
+
+
+def _frames_at(rows: Any, path: str) -> tuple[TrajectoryPoint, ...]:
+    frames = []
+    for i, row in enumerate(_list(rows, path)):
+        row = _list(row, f"{path}[{i}]", "a row [t, x, y, angle, vx, vy]")
+        if len(row) != 6:
+            raise _bad(f"{path}[{i}]", "a row [t, x, y, angle, vx, vy]", row)
+        frames.append(TrajectoryPoint(*(_num(v, f"{path}[{i}][{j}]") for j, v in enumerate(row))))
+    return tuple(frames)
+
+
+def _event(obj: Any, path: str, names: dict[str, str]) -> Event:
+    obj = _obj(obj, path, "an event object")
+    components = []
+    for j, comp in enumerate(_list(_need(obj, "components", path), f"{path}.components")):
+        at = f"{path}.components[{j}]"
+        comp = _obj(comp, at, 'an object {"id", "label"}')
+        cid = _str(_need(comp, "id", at), f"{at}.id")
+        components.append(cid)
+        label = _opt_str(comp.get("label"), f"{at}.label")
+        if label is not None:
+            names[cid] = label
+    sides = []
+    for j, part in enumerate(_list(_need(obj, "sides", path), f"{path}.sides")):
+        at = f"{path}.sides[{j}]"
+        part = _obj(part, at, 'an object {"component", "side"}')
+        side = _str(_need(part, "side", at), f"{at}.side")
+        sides.append((_str(_need(part, "component", at), f"{at}.component"), side))
+        label = _opt_str(part.get("label"), f"{at}.label")
+        if label is not None:  # bodies touched but not among the components
+            names[sides[-1][0]] = label
+    regions = []
+    for j, part in enumerate(_list(_need(obj, "regions", path), f"{path}.regions")):
+        at = f"{path}.regions[{j}]"
+        part = _obj(part, at, 'an object {"component", "regions"}')
+        crossed = _list(_need(part, "regions", at), f"{at}.regions")
+        regions.append((_str(_need(part, "component", at), f"{at}.component"),
+                        tuple(_str(r, f"{at}.regions[{k}]") for k, r in enumerate(crossed))))
+        label = _opt_str(part.get("label"), f"{at}.label")
+        if label is not None:  # bodies passed by but never touched
+            names[regions[-1][0]] = label
+    point = obj.get("point")
+    if point is not None:
+        if not isinstance(point, list) or len(point) != 2:
+            raise _bad(f"{path}.point", "null or a point [x, y]", point)
+        point = (_num(point[0], f"{path}.point[0]"), _num(point[1], f"{path}.point[1]"))
+    tracks = []
+    for j, track in enumerate(_list(obj.get("tracks", []), f"{path}.tracks")):  # absent before tracks existed
+        at = f"{path}.tracks[{j}]"
+        track = _obj(track, at, 'an object {"component", "trajectory"}')
+        tracks.append((_str(_need(track, "component", at), f"{at}.component"),
+                       _frames_at(_need(track, "trajectory", at), f"{at}.trajectory")))
+    causes = _list(_need(obj, "causes", path), f"{path}.causes", "a list of event ids")
+    return Event(
+        id=_str(_need(obj, "id", path), f"{path}.id"),
+        type=_str(_need(obj, "type", path), f"{path}.type"),
+        components=tuple(components),
+        causes=tuple(_str(c, f"{path}.causes[{j}]", "an event id (a string)") for j, c in enumerate(causes)),
+        t0=_num(_need(obj, "t0", path), f"{path}.t0"),
+        t1=_num(_need(obj, "t1", path), f"{path}.t1"),
+        label=_opt_str(obj.get("user_label"), f"{path}.user_label"),
+        sides=tuple(sides),
+        regions=tuple(regions),
+        point=point,
+        trajectory=_frames_at(_need(obj, "trajectory", path), f"{path}.trajectory"),
+        tracks=tuple(tracks),
+    )
 
 
 def parse_timeline_json(text: str) -> tuple[Timeline, dict[str, str]]:
     """The timeline and the component labels (id -> label) from `timeline_json` output.
 
-    Raises `TimelineError` naming the event and key for malformed input, `graph.CausalCycleError` for a cycle.
+    Raises `TimelineError` naming the JSON path of the first bad value (``events[2].sides[0].side``; NaN,
+    Infinity and numbers beyond `MAX_VALUE` refused), `graph.CausalCycleError` for a cycle.
     """
     try:
-        doc = json.loads(text, object_pairs_hook=unique_pairs)
+        doc = json.loads(text, object_pairs_hook=unique_pairs)  # NaN and Infinity are refused by path below
     except DuplicateKey as exc:
         raise TimelineError(f"timeline JSON repeats key {exc.key!r}") from None
+    except RecursionError:
+        raise TimelineError("timeline JSON is nested too deeply") from None
     except ValueError as exc:
         raise TimelineError(f"timeline JSON is not valid JSON: {exc}") from None
-    events: list[Event] = []
+    doc = _obj(doc, "timeline JSON", 'an object {"events": [...]}')
     names: dict[str, str] = {}
-    num = (int, float)
-    for i, obj in enumerate(_need(doc, "events", list, "timeline JSON")):
-        where = f"timeline JSON event {i}"
-        components = []
-        for comp in _need(obj, "components", list, where):
-            cid = _need(comp, "id", str, where)
-            components.append(cid)
-            if isinstance(comp.get("label"), str):
-                names[cid] = comp["label"]
-        for part in (*obj.get("sides", []), *obj.get("regions", [])):  # bodies passed by but never touched
-            if isinstance(part, dict) and isinstance(part.get("component"), str) and isinstance(part.get("label"), str):
-                names[part["component"]] = part["label"]
-        point = obj.get("point")
-        try:
-            events.append(Event(
-                id=_need(obj, "id", str, where),
-                type=_need(obj, "type", str, where),
-                components=tuple(components),
-                causes=tuple(_need(obj, "causes", list, where)),
-                t0=float(_need(obj, "t0", num, where)),
-                t1=float(_need(obj, "t1", num, where)),
-                label=obj.get("user_label"),
-                sides=tuple((_need(s, "component", str, where), _need(s, "side", str, where))
-                            for s in _need(obj, "sides", list, where)),
-                regions=tuple((_need(r, "component", str, where), tuple(_need(r, "regions", list, where)))
-                              for r in _need(obj, "regions", list, where)),
-                point=None if point is None else (float(point[0]), float(point[1])),
-                trajectory=_read_frames(_need(obj, "trajectory", list, where)),
-                tracks=tuple((_need(tr, "component", str, where), _read_frames(_need(tr, "trajectory", list, where)))
-                             for tr in obj.get("tracks", [])),  # absent in timelines written before tracks
-            ))
-        except (TypeError, IndexError, ValueError) as exc:
-            raise TimelineError(f"{where}: malformed value ({exc})") from None
+    events = [_event(obj, f"events[{i}]", names)
+              for i, obj in enumerate(_list(_need(doc, "events", "timeline JSON"), "events"))]
     timeline = Timeline(tuple(events))
     check_acyclic(timeline)
     return timeline, names

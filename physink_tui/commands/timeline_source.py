@@ -9,16 +9,33 @@ from pathlib import Path
 from physink_tui.commands.timeline_formats import parse_timeline_json
 from physink_tui.errors import PhysinkError
 from physink_tui.project.codec import FORMAT as PROJECT_FORMAT
-from physink_tui.project.files import load_project
+from physink_tui.project.codec import decode_project
 from physink_tui.timeline.events import Timeline, TimelineError
 
 
 def _is_project(text: str) -> bool:
     try:
         doc = json.loads(text)
-    except ValueError:
+    except (ValueError, RecursionError):
         return False  # parse_timeline_json says what is wrong with it
     return isinstance(doc, dict) and doc.get("format") == PROJECT_FORMAT
+
+
+def _refuse_other_kinds(text: str, path: Path) -> None:
+    """A journal, a capture or an empty file named as such: none holds a timeline."""
+    takes = "this command takes a timeline JSON file or a project (.physink.json)"
+    body = text.lstrip()
+    if not body:
+        raise TimelineError(f"{path}: empty file; {takes}")
+    first = body.split("\n", 1)[0]
+    if first.startswith(("#", "R:", "N:", "I:", "P:", "D:", "E:")):
+        raise TimelineError(f"{path}: this is a capture (.hid); {takes}")
+    try:
+        head = json.loads(first)
+    except (ValueError, RecursionError):
+        return
+    if isinstance(head, dict) and head.get("format") == "physink-journal":
+        raise TimelineError(f"{path}: this is a journal (.physink.jsonl); {takes}")
 
 
 def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
@@ -34,12 +51,14 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
         raise TimelineError(f"cannot read {path}: {e.strerror or e}") from None
     except UnicodeDecodeError as e:
         raise TimelineError(f"{path}: not UTF-8 text (byte {e.start})") from None
+    text = text.removeprefix("\ufeff")
+    _refuse_other_kinds(text, path)
     if not _is_project(text):
         try:
             return parse_timeline_json(text)
         except TimelineError as e:
             raise TimelineError(f"{path}: {e}", e.event_id) from None
-    project = load_project(path)  # SceneError names the file and the bad field
+    project = decode_project(text, path)  # SceneError names the file and the bad field; the file is read once
     if project.timeline is None:
         raise PhysinkError(f"{path}: the project holds no timeline (demonstrate the machine in demo mode first)")
     try:

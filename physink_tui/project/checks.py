@@ -128,7 +128,7 @@ def _json_value(where: str, key: str, value: Any) -> None:
                 raise bad(where, key, "an object with string keys", value)
             if k:
                 _text(where, f"{key} key", k, "a string")
-            _json_value(where, f"{key}.{k}", item)
+            _json_value(where, f"{key}.{k}" if k.isidentifier() else f"{key}[{show(k)}]", item)
     else:
         raise bad(where, key, "a JSON value (object, list, string, number, true, false or null)", value)
 
