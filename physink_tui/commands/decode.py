@@ -31,8 +31,9 @@ def decoder_for(device: CaptureDevice) -> HidPenDecoder:
     """The device's decoder, with the vendor protocol and maxima `physink record` noted in the capture."""
     init = find_vendor_init(device.comments)
     if init is None:
-        return HidPenDecoder(device.descriptor, device.vid, device.pid)
-    return HidPenDecoder(device.descriptor, device.vid, device.pid, params=init.params, protocol=init.protocol)
+        return HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
+    return HidPenDecoder(device.descriptor, device.vid, device.pid, params=init.params, protocol=init.protocol,
+                         name=device.name or None)
 
 
 def decode_capture(capture: Capture) -> list[tuple[int, HidPenDecoder, PenColumns]]:
