@@ -9,15 +9,15 @@ from __future__ import annotations
 
 import os
 
-from physink_tui.errors import JournalError
+from physink_tui.errors import DescriptorError, JournalError
 from physink_tui.input.gestures import Gesture, GestureConfig
 from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.mapping import TabletMapping, mapping_from_header
+from physink_tui.input.mapping import mapping_from_header
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport, SourceEnded
-from physink_tui.journal.entries import CommandEntry, HidEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.journal.entries import CommandEntry, HidEntry, JournalDevice, JournalHeader, PenEntry, SayEntry
 from physink_tui.journal.reader import read_journal
 
 PEN_DEVICE = "pen"
@@ -26,17 +26,37 @@ PEN_DEVICE = "pen"
 
 def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
     """The input side a journal header describes: its devices' decoders, its mapping and tip thresholds, and
-    the canvas-space device of its ``pen`` lines. A bad mapping is a `JournalError` naming the key."""
+    the canvas-space device of its ``pen`` lines.
+
+    Mapping keys the header leaves out take the identity: the canvas size is the header's, the tablet's
+    proportions are the canvas's and the whole area is used, so tablet (x, y) in 0..1 lands on canvas (x, y).
+
+    Raises:
+        JournalError: ``<where>: line 1: ...`` for a mapping that leaves no usable area or a device whose
+            descriptor cannot be decoded (naming the device id).
+    """
+    defaults = {"canvas_width": header.canvas_width, "canvas_height": header.canvas_height}
+    defaults |= {"tablet_width": header.canvas_width, "tablet_height": header.canvas_height}
     try:
-        mapping = mapping_from_header(header.mapping) if header.mapping else TabletMapping(
-            canvas_width=header.canvas_width, canvas_height=header.canvas_height)
-    except ValueError as exc:
-        raise JournalError(f"{where}: line 1: key \"mapping\": {exc}") from None
+        mapping = mapping_from_header({**defaults, **header.mapping})
+        mapping.to_canvas(0.5, 0.5)  # proportions too extreme for floats leave a zero-sized area
+    except (ValueError, ArithmeticError) as exc:
+        raise JournalError(f'{where}: line 1: key "mapping": {exc or "leaves no usable area"}') from None
     pen = PenInput(mapping, GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up)))
     for device in header.devices:
-        pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid))
+        add_journal_device(pen, device, f"{where}: line 1")
     pen.add_sample_device(PEN_DEVICE, canvas_space=True)
     return pen
+
+
+def add_journal_device(pen: PenInput, device: JournalDevice, where: str) -> None:
+    """Add a journal device's decoder to ``pen``; a descriptor that cannot be decoded is a `JournalError`
+    naming ``where`` (file and line) and the device id."""
+    try:
+        decoder = HidPenDecoder(device.descriptor, device.vid, device.pid)
+    except DescriptorError as exc:
+        raise JournalError(f"{where}: device {device.id!r}: {exc}") from None
+    pen.add_hid_device(device.id, decoder)
 
 
 def replay_journal_input(path: str | os.PathLike[str]) -> tuple[list[Gesture], list[str], list[str]]:

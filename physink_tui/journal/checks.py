@@ -31,9 +31,16 @@ MODES = ("sketch", "demo")
 LABEL_TARGETS = ("last", "selected")
 """``label`` targets besides a component id."""
 
+MAX_SECONDS = 366 * 24 * 3600.0
+"""The latest ``t`` (and ``seek`` time) a journal may hold, in seconds: a year and a day. Larger finite values
+(``1e308``) are refused, since time arithmetic on them overflows and no session lasts that long."""
+
+SECONDS_EXPECTED = f"a number in [0, {MAX_SECONDS:.0f}] (seconds since the session start)"
+"""What a ``t`` must be, in error messages."""
+
 _USAGE = {
     "mode": 'one argument, "sketch" or "demo",',
-    "seek": "one argument, a number >= 0 (seconds of timeline time),",
+    "seek": f"one argument, a number in [0, {MAX_SECONDS:.0f}] (seconds of timeline time),",
     "label": 'two arguments, TARGET ("last", "selected" or a component id) and a non-empty TEXT,',
     "save": "one argument, a non-empty PATH,",
 }
@@ -99,7 +106,7 @@ def _real(value: Any) -> float | None:
 
 
 def seconds(where: str, key: str, value: Any, previous: float | None = None) -> float:
-    """A time in seconds: finite, >= 0, and >= ``previous`` when given.
+    """A time in seconds: finite, in [0, `MAX_SECONDS`], and >= ``previous`` when given.
 
     >>> seconds("line 12", "t", 3.2, previous=3.5)
     Traceback (most recent call last):
@@ -107,8 +114,8 @@ def seconds(where: str, key: str, value: Any, previous: float | None = None) -> 
     physink_tui.errors.JournalError: line 12: key "t": expected a number >= the previous t 3.5, got 3.2
     """
     t = _real(value)
-    if t is None or t < 0:
-        raise bad(where, key, "a number >= 0 (seconds since the session start)", value)
+    if t is None or not 0 <= t <= MAX_SECONDS:
+        raise bad(where, key, SECONDS_EXPECTED, value)
     if previous is not None and t < previous:
         raise bad(where, key, f"a number >= the previous t {previous!r}", value)
     return t
@@ -203,7 +210,7 @@ def _args_ok(name: str, args: list[Any] | tuple[Any, ...]) -> tuple[str | float,
         return (args[0],) if len(args) == 1 and args[0] in MODES and isinstance(args[0], str) else None
     if name == "seek":
         t = _real(args[0]) if len(args) == 1 else None
-        return (t,) if t is not None and t >= 0 else None
+        return (t,) if t is not None and 0 <= t <= MAX_SECONDS else None
     if name == "label":
         return (args[0], args[1]) if len(args) == 2 and is_text(args[0]) and is_text(args[1]) else None
     if name == "save":

@@ -189,7 +189,7 @@ def decode_line(
         raise checks.kinds_error(where, found)
     kind = found[0]
     t = checks.seconds(
-        where, "t", get(obj, where, "t", "t", "a number >= 0 (seconds since the session start)"), previous_t
+        where, "t", get(obj, where, "t", "t", checks.SECONDS_EXPECTED), previous_t
     )
     if warnings is not None and len(obj) > 2:
         warnings.extend(checks.unknown_key(where, key) for key in obj if key not in _ALLOWED[kind])

@@ -1,7 +1,10 @@
 """The journal header's JSON line, both ways, checked key by key; entries are `codec`'s, files are not here.
 
+Only ``format``, ``version``, ``canvas`` and ``devices`` are required on reading; ``program`` defaults to
+``"unknown"``, ``mapping`` to ``{}`` (the tablet's area onto the whole canvas), ``tip_thresholds`` to libinput's
+5 % down / 1 % up, ``vocabulary`` to none. Unknown keys are ignored and reported as warnings.
 The header is written in a fixed key order (``format``, ``version``, ``program``, ``canvas``, ``devices``,
-``mapping``, ``tip_thresholds``), devices in the order given and the opaque ``mapping`` with sorted keys, so
+``mapping``, ``tip_thresholds``), devices in the order given and ``mapping`` with sorted keys, so
 the same header always gives the same bytes and a header read back re-encodes to the bytes it was read from.
 """
 
@@ -13,7 +16,16 @@ from physink_tui.errors import JournalError
 from physink_tui.journal import checks
 from physink_tui.journal.checks import bad, get, show
 from physink_tui.journal.codec import compact_json, json_string, parse_object
-from physink_tui.journal.entries import FORMAT, FORMAT_VERSION, JournalDevice, JournalHeader
+from physink_tui.journal.entries import (
+    DEFAULT_TIP_DOWN,
+    DEFAULT_TIP_UP,
+    FORMAT,
+    FORMAT_VERSION,
+    UNKNOWN_PROGRAM,
+    JournalDevice,
+    JournalHeader,
+)
+from physink_tui.journal.header_checks import check_mapping, check_vocabulary
 
 HEADER_KEYS = ("format", "version", "program", "canvas", "devices", "mapping", "tip_thresholds", "vocabulary")
 """The header's keys, in the order written."""
@@ -56,9 +68,9 @@ def encode_header(header: JournalHeader) -> str:
             "pid": checks.optional_int(where, f"{key}.pid", dev.pid, 0xFFFF),
             "descriptor": checks.report_bytes(where, f"{key}.descriptor", dev.descriptor).hex(" "),
         }
-    if not isinstance(header.mapping, dict):
-        raise bad(where, "mapping", "an object", header.mapping)
-    checks.json_value(where, "mapping", header.mapping)
+    check_mapping(where, header.mapping, None, strict=True)
+    if header.vocabulary:
+        check_vocabulary(where, header.vocabulary)
     down, up = _tip_thresholds(where, header.tip_down, header.tip_up)
     parts = [
         f'"format":{json_string(FORMAT)}',
@@ -103,22 +115,21 @@ def decode_header(text: str, lineno: int = 1, warnings: list[str] | None = None)
     version = get(obj, where, "version", "version", f"{FORMAT_VERSION}")
     if type(version) is not int or version != FORMAT_VERSION:
         raise bad(where, "version", f"{FORMAT_VERSION} (the newest version this program reads)", version)
-    program = checks.text(where, "program", get(obj, where, "program", "program", "a string"), empty=False)
+    program = checks.text(where, "program", obj.get("program", UNKNOWN_PROGRAM), empty=False)
     canvas = _sub_object(obj, where, "canvas", ("width", "height"), warnings)
     width = checks.positive(where, "canvas.width", get(canvas, where, "width", "canvas.width", "a number > 0"))
     height = checks.positive(where, "canvas.height", get(canvas, where, "height", "canvas.height", "a number > 0"))
-    devices = tuple(_decode_devices(where, get(obj, where, "devices", "devices", "an object"), warnings))
-    mapping = get(obj, where, "mapping", "mapping", "an object")
-    if not isinstance(mapping, dict):
-        raise bad(where, "mapping", "an object", mapping)
-    checks.json_value(where, "mapping", mapping)
-    tips = _sub_object(obj, where, "tip_thresholds", ("down", "up"), warnings)
-    down, up = _tip_thresholds(
-        where,
-        get(tips, where, "down", "tip_thresholds.down", "a number in (0, 1]"),
-        get(tips, where, "up", "tip_thresholds.up", "a number in [0, 1)"),
-    )
-    vocabulary = checks.text(where, "vocabulary", obj.get("vocabulary", ""))
+    devices = tuple(decode_devices(where, get(obj, where, "devices", "devices", "an object"), warnings))
+    mapping = check_mapping(where, obj.get("mapping", {}), warnings)
+    down, up = DEFAULT_TIP_DOWN, DEFAULT_TIP_UP
+    if "tip_thresholds" in obj:
+        tips = _sub_object(obj, where, "tip_thresholds", ("down", "up"), warnings)
+        down, up = _tip_thresholds(
+            where,
+            get(tips, where, "down", "tip_thresholds.down", "a number in (0, 1]"),
+            get(tips, where, "up", "tip_thresholds.up", "a number in [0, 1)"),
+        )
+    vocabulary = check_vocabulary(where, obj.get("vocabulary", ""))
     if warnings is not None:
         warnings.extend(checks.unknown_key(where, key) for key in obj if key not in HEADER_KEYS)
     return JournalHeader(width, height, devices, mapping, down, up, program, vocabulary)
@@ -136,13 +147,15 @@ def _sub_object(
     return value
 
 
-def _decode_devices(where: str, devices: Any, warnings: list[str] | None) -> list[JournalDevice]:
+def decode_devices(where: str, devices: Any, warnings: list[str] | None, key: str = "devices") -> list[JournalDevice]:
+    """The devices of a header's ``devices`` object (or of a ``device`` line, with ``key="device"``), checked."""
     if not isinstance(devices, dict):
-        raise bad(where, "devices", "an object of device id -> device", devices)
+        raise bad(where, key, "an object of device id -> device", devices)
     out = []
+    top = key
     for dev_id, dev in devices.items():
-        checks.text(where, "devices", dev_id, empty=False)
-        key = f"devices.{dev_id}"
+        checks.text(where, top, dev_id, empty=False)
+        key = f"{top}.{dev_id}"
         expected = "an object with " + ", ".join(DEVICE_KEYS)
         if not isinstance(dev, dict):
             raise bad(where, key, expected, dev)

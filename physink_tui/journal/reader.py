@@ -1,8 +1,9 @@
 """Reads a journal file back, whole or streamed, stopping at the first malformed line; replays nothing.
 
-A last line that is not complete JSON (the process or the machine died while writing it) is not an error:
-everything before it is returned and its line number is reported as `Journal.truncated`. A malformed
-complete line anywhere raises `JournalError` naming the path, the line and the key. Blank lines are skipped.
+A UTF-8 byte order mark before the header is skipped. A last line that is not complete JSON (the process or
+the machine died while writing it) is not an error: everything before it is returned and its line number is
+reported as `Journal.truncated`. A malformed complete line anywhere raises `JournalError` naming the path, the
+line and the key. Blank lines are skipped.
 """
 
 from __future__ import annotations
@@ -17,6 +18,28 @@ from physink_tui.errors import JournalError
 from physink_tui.journal.codec import decode_line, is_json
 from physink_tui.journal.entries import JournalEntry, JournalHeader
 from physink_tui.journal.header_codec import decode_header
+
+BOM = b"\xef\xbb\xbf"
+"""The UTF-8 byte order mark: accepted (and skipped) at the start of a journal."""
+
+JOURNAL_SUFFIX = ".physink.jsonl"
+"""The file name ending of a journal."""
+
+
+def looks_like_journal(first_line: bytes, name: str = "") -> bool:
+    """Whether a file whose first bytes are ``first_line`` (and whose name is ``name``) is meant as a journal,
+    not a capture: JSON text after an optional byte order mark and blanks, or an empty file named
+    ``*.physink.jsonl`` (which `read_journal` then reports as an empty journal).
+
+    >>> looks_like_journal(BOM + b'{"format":"physink-journal"}'), looks_like_journal(b"D: 0")
+    (True, False)
+    >>> looks_like_journal(b"", "s.physink.jsonl"), looks_like_journal(b"", "s.hid")
+    (True, False)
+    """
+    head = first_line.removeprefix(BOM).lstrip(b" \t\r\n")
+    if not head:
+        return os.fspath(name).endswith(JOURNAL_SUFFIX)
+    return head.startswith(b"{")
 
 
 @dataclass(frozen=True, slots=True)
@@ -115,8 +138,9 @@ class JournalReader:
             raw = self._file.readline()
         except OSError as e:
             raise JournalError(f"cannot read journal {self.path}: {e.strerror or e}") from None
+        raw = raw.removeprefix(BOM)  # editors on Windows start UTF-8 files with one
         if not raw:
-            raise JournalError(f"{self.path}: the file is empty; expected the journal header on line 1")
+            raise JournalError(f"{self.path}: empty journal: no header line")
         cut = JournalError(f"{self.path}: line 1: the header is cut off (the file ends inside it)")
         try:
             text = raw.decode("utf-8")
