@@ -24,6 +24,7 @@ from physink_tui.journal.checks import COMMANDS, MAX_SECONDS, MODES
 from physink_tui.journal.codec import decode_line, encode_entry
 from physink_tui.journal.entries import (
     CommandEntry,
+    DeviceEntry,
     HidEntry,
     JournalDevice,
     JournalEntry,
@@ -142,6 +143,10 @@ ENTRIES = st.one_of(
     st.builds(CommandEntry, TIMES, st.just("save"), st.tuples(WORDS)),
     st.builds(CommandEntry, TIMES, st.sampled_from(NO_ARGS), st.just(())),
     st.builds(SayEntry, TIMES, st.text()),
+    st.builds(DeviceEntry, TIMES, st.lists(st.builds(
+        JournalDevice, st.sampled_from(DEVICE_IDS), st.none() | st.text(), st.none() | st.integers(0, 0xFFFF),
+        st.none() | st.integers(0, 0xFFFF), st.none() | st.integers(0, 0xFFFF), st.binary(min_size=1, max_size=16),
+    ), min_size=1, max_size=2, unique_by=lambda d: d.id).map(tuple)),
 )
 @given(ENTRIES)
 def test_any_entry_round_trips_exactly(entry: JournalEntry) -> None:
@@ -300,7 +305,7 @@ PEN_NO_B2 = PEN.replace(',"b2":false', "")
         pytest.param(f'{{"t":-0.5,{PEN}}}', 'key "t": expected a number in \\[0, .*, got -0.5', id="t-negative"),
         pytest.param(f'{{"t":NaN,{PEN}}}', "not valid JSON: NaN is not a number JSON allows", id="t-nan"),
         pytest.param(f'{{"t":1e400,{PEN}}}', 'key "t": expected a number in \\[0, ', id="t-overflow"),
-        pytest.param('{"t":1.5}', "expected exactly one of hid, pen, cmd, say; found none", id="kind-none"),
+        pytest.param('{"t":1.5}', "expected exactly one of hid, pen, cmd, say, device; found none", id="kind-none"),
         pytest.param(
             '{"t":1.5,"say":"a","cmd":"play","args":[]}', "expected exactly one .*; found cmd and say", id="kind-two"
         ),

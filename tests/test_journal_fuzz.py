@@ -24,6 +24,8 @@ VALID: list[dict[str, Any]] = [
     HEADER,
     {"t": 0.0, "hid": "07 40 eb 07 9a 0e 00 00", "dev": "tablet0"},
     {"t": 0.01, "hid": "07 41 eb 07 9a 0e 80 00", "dev": "tablet0"},
+    {"t": 0.2, "device": {"tablet1": HEADER["devices"]["tablet0"]}},
+    {"t": 0.3, "hid": "07 41 eb 07 9a 0e 80 00", "dev": "tablet1"},
     {"t": 0.5, "pen": PEN},
     {"t": 0.6, "pen": {**PEN, "x": 0.5}},
     {"t": 0.8, "cmd": "seek", "args": [1.5]},

@@ -171,6 +171,50 @@ def test_a_bad_entry_names_its_line(tmp_path: Path, line: str, key: str | None) 
         read_journal(path)
 
 
+# ------------------------------------------------------------------------- device lines (hot-plug)
+
+REPORTS = [json.loads(line) for line in (JOURNALS / "basketball.physink.jsonl").read_text().splitlines()[1:400]]
+
+
+def plugged_in_later(**device: object) -> list[dict]:
+    """Reports of ``tablet1``, a device announced by a ``device`` line at t = 0 (its descriptor as given)."""
+    return [{"t": 0.0, "device": {"tablet1": {**DEVICE, **device}}},
+            *({**r, "dev": "tablet1"} for r in REPORTS if "hid" in r)]
+
+
+def test_a_device_line_adds_a_tablet_whose_reports_replay(tmp_path: Path) -> None:
+    header = {**MINIMAL, "devices": {}}
+    gestures, events, notes = replay_journal_input(journal(tmp_path, header, *plugged_in_later()))
+    assert sum(type(g).__name__ == "StrokeEnded" for g in gestures) >= 1
+    assert any("tablet1 appeared" in e for e in events)
+    assert any(n.startswith("tablet1: ") and "pen samples" in n for n in notes)
+
+
+def test_a_report_before_its_device_line_names_the_line(tmp_path: Path) -> None:
+    lines = plugged_in_later()
+    path = journal(tmp_path, {**MINIMAL, "devices": {}}, lines[1], lines[0])
+    with pytest.raises(JournalError, match=f'^{re.escape(str(path))}: line 2: "dev" "tablet1" is not a device'):
+        read_journal(path)
+
+
+@pytest.mark.parametrize(
+    ("device", "key"),
+    [({"vid": 70000}, "device.tablet1.vid"), ({"bus": "usb"}, "device.tablet1.bus"),
+     ({"descriptor": "5 0d"}, "device.tablet1.descriptor"), ({"name": 3}, "device.tablet1.name")],
+    ids=str,
+)
+def test_a_bad_device_line_names_its_line_and_key(tmp_path: Path, device: dict, key: str) -> None:
+    path = journal(tmp_path, None, LINES[0], *plugged_in_later(**device)[:3])
+    with pytest.raises(JournalError, match=fails_at(path, 3, key)):
+        read_journal(path)
+
+
+def test_a_device_line_with_a_bad_descriptor_names_file_line_and_device(tmp_path: Path) -> None:
+    path = journal(tmp_path, None, LINES[0], *plugged_in_later(descriptor="05 01 09 02 a1 01 c0")[:3])
+    with pytest.raises(JournalError, match=f"^{re.escape(str(path))}: line 3: device 'tablet1': descriptor"):
+        replay_journal_input(path)
+
+
 # ------------------------------------------------------------------------- 4. BOM, empty file, file kind
 
 

@@ -19,7 +19,7 @@ from physink_tui.errors import JournalError
 SHOW_MAX = 60
 """Offending values are shown with at most this many characters."""
 
-KINDS = ("hid", "pen", "cmd", "say")
+KINDS = ("hid", "pen", "cmd", "say", "device")
 """The keys that say what an entry is; a line has exactly one of them."""
 
 COMMANDS = ("mode", "play", "pause", "stop", "seek", "clear", "undo", "redo", "label", "simulate", "save")

@@ -175,5 +175,22 @@ class SayEntry:
     text: str
 
 
-JournalEntry = HidEntry | PenEntry | CommandEntry | SayEntry
+@dataclass(frozen=True, slots=True)
+class DeviceEntry:
+    """Devices that appeared after the header (hot-plug), written before their first report.
+
+    Attributes:
+        t: seconds since the session start (>= 0, never less than the previous entry's).
+        devices: the devices, ids unique within the line; an id already known (a reconnected tablet)
+            replaces that device from here on.
+    """
+
+    t: float
+    devices: tuple[JournalDevice, ...]
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "devices", tuple(self.devices))
+
+
+JournalEntry = HidEntry | PenEntry | CommandEntry | SayEntry | DeviceEntry
 """Any line of the journal after the header."""

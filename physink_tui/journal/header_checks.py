@@ -1,4 +1,4 @@
-"""Checks the journal header's optional parts (mapping, vocabulary) key by key; no JSON text, no I/O.
+"""Checks the journal header's devices, mapping and vocabulary key by key (and ``device`` lines'); no JSON, no I/O.
 
 The ``mapping`` object is the tablet-to-canvas mapping of `physink_tui.input.mapping.TabletMapping`: every key
 is optional (a missing one takes the identity default, see `physink_tui.input.journal_replay.pen_input_for`),
@@ -12,7 +12,8 @@ from typing import Any
 
 from physink_tui.errors import JournalError, PhysinkError
 from physink_tui.journal import checks
-from physink_tui.journal.checks import bad
+from physink_tui.journal.checks import bad, get, show
+from physink_tui.journal.entries import JournalDevice
 
 MAPPING_SIZES = ("canvas_width", "canvas_height", "tablet_width", "tablet_height")
 """Mapping keys holding a size: finite numbers > 0 (only their ratios matter)."""
@@ -26,6 +27,11 @@ MAPPING_KEYS = (*MAPPING_SIZES, "area", "rotation", *MAPPING_FLAGS)
 ROTATIONS = (0, 90, 180, 270)
 """The values ``mapping.rotation`` takes (degrees clockwise)."""
 
+DEVICE_KEYS = ("name", "bus", "vid", "pid", "descriptor")
+"""The keys of each device object, in the order written."""
+
+_INT = "null or an integer in 0..65535"
+_HEX = 'hex bytes separated by spaces, e.g. "05 0d 09 02"'
 _AREA = "a list of 4 numbers [x0, y0, x1, y1] in [0, 1] with x0 < x1 and y0 < y1"
 
 
@@ -90,3 +96,57 @@ vocabulary:2: 'verb': expected at least one word after 'verb'
         except PhysinkError as exc:
             raise JournalError(f'{where}: key "vocabulary": expected the text of a vocabulary file; {exc}') from None
     return text
+
+
+def decode_devices(where: str, devices: Any, warnings: list[str] | None, top: str = "devices") -> list[JournalDevice]:
+    """The devices of a header's ``devices`` object, or of a ``device`` line's with ``top="device"``, checked.
+
+    >>> decode_devices("line 7", {"pad1": {"name": None, "bus": 3, "vid": -1, "pid": 0, "descriptor": "a1 c0"}},
+    ...                None, "device")
+    Traceback (most recent call last):
+    ...
+    physink_tui.errors.JournalError: line 7: key "device.pad1.vid": expected null or an integer in 0..65535, got -1
+    """
+    if not isinstance(devices, dict) or (top == "device" and not devices):
+        raise bad(where, top, "an object of device id -> device", devices)
+    out = []
+    for dev_id, dev in devices.items():
+        checks.text(where, top, dev_id, empty=False)
+        key = f"{top}.{dev_id}"
+        if not isinstance(dev, dict):
+            raise bad(where, key, "an object with " + ", ".join(DEVICE_KEYS), dev)
+        name = get(dev, where, "name", f"{key}.name", "a string or null")
+        out.append(
+            JournalDevice(
+                dev_id,
+                None if name is None else checks.text(where, f"{key}.name", name),
+                *(
+                    checks.optional_int(where, f"{key}.{k}", get(dev, where, k, f"{key}.{k}", _INT), 0xFFFF)
+                    for k in ("bus", "vid", "pid")
+                ),
+                checks.hex_bytes(where, f"{key}.descriptor", get(dev, where, "descriptor", f"{key}.descriptor", _HEX)),
+            )
+        )
+        if warnings is not None:
+            warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in dev if k not in DEVICE_KEYS)
+    return out
+
+
+def encode_devices(where: str, top: str, devices: Any) -> dict[str, Any]:
+    """Devices as the JSON object of a header's ``devices`` or a ``device`` line, after checking each field."""
+    out: dict[str, Any] = {}
+    for dev in devices:
+        if not isinstance(dev, JournalDevice):
+            raise bad(where, top, "JournalDevice values", dev)
+        checks.text(where, top, dev.id, empty=False)
+        if dev.id in out:
+            raise JournalError(f'{where}: key "{top}": device id {show(dev.id)} appears twice')
+        key = f"{top}.{dev.id}"
+        out[dev.id] = {
+            "name": dev.name if dev.name is None else checks.text(where, f"{key}.name", dev.name),
+            "bus": checks.optional_int(where, f"{key}.bus", dev.bus, 0xFFFF),
+            "vid": checks.optional_int(where, f"{key}.vid", dev.vid, 0xFFFF),
+            "pid": checks.optional_int(where, f"{key}.pid", dev.pid, 0xFFFF),
+            "descriptor": checks.report_bytes(where, f"{key}.descriptor", dev.descriptor).hex(" "),
+        }
+    return out

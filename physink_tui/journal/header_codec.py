@@ -12,9 +12,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from physink_tui.errors import JournalError
 from physink_tui.journal import checks
-from physink_tui.journal.checks import bad, get, show
+from physink_tui.journal.checks import bad, get
 from physink_tui.journal.codec import compact_json, json_string, parse_object
 from physink_tui.journal.entries import (
     DEFAULT_TIP_DOWN,
@@ -22,24 +21,19 @@ from physink_tui.journal.entries import (
     FORMAT,
     FORMAT_VERSION,
     UNKNOWN_PROGRAM,
-    JournalDevice,
     JournalHeader,
 )
-from physink_tui.journal.header_checks import check_mapping, check_vocabulary
+from physink_tui.journal.header_checks import check_mapping, check_vocabulary, decode_devices, encode_devices
 
 HEADER_KEYS = ("format", "version", "program", "canvas", "devices", "mapping", "tip_thresholds", "vocabulary")
 """The header's keys, in the order written."""
 
-DEVICE_KEYS = ("name", "bus", "vid", "pid", "descriptor")
-"""The keys of each device object, in the order written."""
-
-_INT = "null or an integer in 0..65535"
-_HEX = 'hex bytes separated by spaces, e.g. "05 0d 09 02"'
 
 
 def encode_header(header: JournalHeader) -> str:
     """The header as one line (without the newline), after checking every field.
 
+    >>> from physink_tui.journal.entries import JournalDevice
     >>> h = JournalHeader(800, 600, (JournalDevice("pen0", "Pen", 3, 0x56A, 0x350, b"\\xa1\\xc0"),), {}, 0.05, 0.01,
     ...                   program="physink-tui 0.1.0")
     >>> encode_header(h)
@@ -52,22 +46,7 @@ def encode_header(header: JournalHeader) -> str:
         "width": checks.positive(where, "canvas.width", header.canvas_width),
         "height": checks.positive(where, "canvas.height", header.canvas_height),
     }
-    devices: dict[str, Any] = {}
-    for dev in header.devices:
-        if not isinstance(dev, JournalDevice):
-            raise bad(where, "devices", "JournalDevice values", dev)
-        checks.text(where, "devices", dev.id, empty=False)
-        if dev.id in devices:
-            raise JournalError(f'{where}: key "devices": device id {show(dev.id)} appears twice')
-        key = f"devices.{dev.id}"
-        name = dev.name if dev.name is None else checks.text(where, f"{key}.name", dev.name)
-        devices[dev.id] = {
-            "name": name,
-            "bus": checks.optional_int(where, f"{key}.bus", dev.bus, 0xFFFF),
-            "vid": checks.optional_int(where, f"{key}.vid", dev.vid, 0xFFFF),
-            "pid": checks.optional_int(where, f"{key}.pid", dev.pid, 0xFFFF),
-            "descriptor": checks.report_bytes(where, f"{key}.descriptor", dev.descriptor).hex(" "),
-        }
+    devices = encode_devices(where, "devices", header.devices)
     check_mapping(where, header.mapping, None, strict=True)
     if header.vocabulary:
         check_vocabulary(where, header.vocabulary)
@@ -145,32 +124,3 @@ def _sub_object(
     if warnings is not None:
         warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in value if k not in keys)
     return value
-
-
-def decode_devices(where: str, devices: Any, warnings: list[str] | None, key: str = "devices") -> list[JournalDevice]:
-    """The devices of a header's ``devices`` object (or of a ``device`` line, with ``key="device"``), checked."""
-    if not isinstance(devices, dict):
-        raise bad(where, key, "an object of device id -> device", devices)
-    out = []
-    top = key
-    for dev_id, dev in devices.items():
-        checks.text(where, top, dev_id, empty=False)
-        key = f"{top}.{dev_id}"
-        expected = "an object with " + ", ".join(DEVICE_KEYS)
-        if not isinstance(dev, dict):
-            raise bad(where, key, expected, dev)
-        name = get(dev, where, "name", f"{key}.name", "a string or null")
-        out.append(
-            JournalDevice(
-                dev_id,
-                None if name is None else checks.text(where, f"{key}.name", name),
-                *(
-                    checks.optional_int(where, f"{key}.{k}", get(dev, where, k, f"{key}.{k}", _INT), 0xFFFF)
-                    for k in ("bus", "vid", "pid")
-                ),
-                checks.hex_bytes(where, f"{key}.descriptor", get(dev, where, "descriptor", f"{key}.descriptor", _HEX)),
-            )
-        )
-        if warnings is not None:
-            warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in dev if k not in DEVICE_KEYS)
-    return out

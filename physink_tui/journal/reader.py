@@ -16,7 +16,7 @@ from typing import BinaryIO
 
 from physink_tui.errors import JournalError
 from physink_tui.journal.codec import decode_line, is_json
-from physink_tui.journal.entries import JournalEntry, JournalHeader
+from physink_tui.journal.entries import DeviceEntry, JournalEntry, JournalHeader
 from physink_tui.journal.header_codec import decode_header
 
 BOM = b"\xef\xbb\xbf"
@@ -101,6 +101,7 @@ class JournalReader:
         path: the file.
         header: its header.
         warnings: messages about unknown keys seen so far.
+        line: the 1-based line number of the entry last yielded (1 before any), for messages about it.
         truncated: line number of an incomplete last line, set when the iteration reaches it; else None.
     """
 
@@ -117,7 +118,8 @@ class JournalReader:
         except BaseException:
             self._file.close()
             raise
-        self._devices = frozenset(d.id for d in self.header.devices)
+        self._devices = {d.id for d in self.header.devices}
+        self.line = 1
         self._entries = self._read_entries()
 
     def __iter__(self) -> Iterator[JournalEntry]:
@@ -181,6 +183,9 @@ class JournalReader:
                 except JournalError as e:
                     raise JournalError(f"{self.path}: {e}") from None
                 previous = entry.t
+                if isinstance(entry, DeviceEntry):
+                    self._devices.update(d.id for d in entry.devices)
+                self.line = lineno
                 yield entry
         except OSError as e:
             raise JournalError(f"{self.path}: line {lineno}: cannot read: {e.strerror or e}") from None
