@@ -27,9 +27,11 @@ JOURNAL_SUFFIX = ".physink.jsonl"
 
 
 def looks_like_journal(first_line: bytes, name: str = "") -> bool:
-    """Whether a file whose first bytes are ``first_line`` (and whose name is ``name``) is meant as a journal,
-    not a capture: JSON text after an optional byte order mark and blanks, or an empty file named
-    ``*.physink.jsonl`` (which `read_journal` then reports as an empty journal).
+    """Whether a file starting with ``first_line`` and named ``name`` is meant as a journal, not a capture.
+
+    A journal is JSON text after an optional UTF-8 byte order mark and blanks, or an empty file named
+    ``*.physink.jsonl`` (which `read_journal` then reports as an empty journal). `physink replay` should call
+    this on the first line it reads instead of looking for ``{`` itself.
 
     >>> looks_like_journal(BOM + b'{"format":"physink-journal"}'), looks_like_journal(b"D: 0")
     (True, False)
