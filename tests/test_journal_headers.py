@@ -183,7 +183,7 @@ def plugged_in_later(**device: object) -> list[dict]:
 
 
 def test_a_device_line_adds_a_tablet_whose_reports_replay(tmp_path: Path) -> None:
-    header = {**MINIMAL, "devices": {}}
+    header = {**FULL_HEADER, "devices": {}}
     gestures, events, notes = replay_journal_input(journal(tmp_path, header, *plugged_in_later()))
     assert sum(type(g).__name__ == "StrokeEnded" for g in gestures) >= 1
     assert any("tablet1 appeared" in e for e in events)
@@ -192,7 +192,7 @@ def test_a_device_line_adds_a_tablet_whose_reports_replay(tmp_path: Path) -> Non
 
 def test_a_report_before_its_device_line_names_the_line(tmp_path: Path) -> None:
     lines = plugged_in_later()
-    path = journal(tmp_path, {**MINIMAL, "devices": {}}, lines[1], lines[0])
+    path = journal(tmp_path, {**FULL_HEADER, "devices": {}}, lines[1], lines[0])
     with pytest.raises(JournalError, match=f'^{re.escape(str(path))}: line 2: "dev" "tablet1" is not a device'):
         read_journal(path)
 
@@ -204,13 +204,13 @@ def test_a_report_before_its_device_line_names_the_line(tmp_path: Path) -> None:
     ids=str,
 )
 def test_a_bad_device_line_names_its_line_and_key(tmp_path: Path, device: dict, key: str) -> None:
-    path = journal(tmp_path, None, LINES[0], *plugged_in_later(**device)[:3])
+    path = journal(tmp_path, FULL_HEADER, LINES[0], *plugged_in_later(**device)[:3])
     with pytest.raises(JournalError, match=fails_at(path, 3, key)):
         read_journal(path)
 
 
 def test_a_device_line_with_a_bad_descriptor_names_file_line_and_device(tmp_path: Path) -> None:
-    path = journal(tmp_path, None, LINES[0], *plugged_in_later(descriptor="05 01 09 02 a1 01 c0")[:3])
+    path = journal(tmp_path, FULL_HEADER, LINES[0], *plugged_in_later(descriptor="05 01 09 02 a1 01 c0")[:3])
     with pytest.raises(JournalError, match=f"^{re.escape(str(path))}: line 3: device 'tablet1': descriptor"):
         replay_journal_input(path)
 
@@ -219,7 +219,7 @@ def test_a_device_line_with_a_bad_descriptor_names_file_line_and_device(tmp_path
 
 
 def test_a_byte_order_mark_before_the_header_is_accepted(tmp_path: Path) -> None:
-    path = journal(tmp_path)
+    path = journal(tmp_path, FULL_HEADER)
     path.write_bytes(BOM + path.read_bytes())
     assert looks_like_journal(path.read_bytes()[:64], path.name)
     assert len(read_journal(path).entries) == len(LINES)
