@@ -144,6 +144,12 @@ def test_a_bad_descriptor_names_file_line_and_device(tmp_path: Path, capsys: pyt
     assert f"{path}: line 1: device 'pad7'" in capsys.readouterr().err
 
 
+def test_a_canvas_too_thin_for_floats_is_refused_naming_the_mapping(tmp_path: Path) -> None:
+    path = journal(tmp_path, {**MINIMAL, "canvas": {"width": 1e300, "height": 1e-300}})
+    with pytest.raises(JournalError, match=fails_at(path, 1, "mapping") + "canvas and tablet proportions"):
+        replay_journal_input(path)
+
+
 # ------------------------------------------------------------------------- 3. entry lines
 
 

@@ -48,8 +48,11 @@ def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
     try:
         mapping = mapping_from_header({**defaults, **header.mapping})
         mapping.to_canvas(0.5, 0.5)  # proportions too extreme for floats leave a zero-sized area
-    except (ValueError, ArithmeticError) as exc:
-        raise JournalError(f'{where}: line 1: key "mapping": {exc or "leaves no usable area"}') from None
+    except ValueError as exc:
+        raise JournalError(f'{where}: line 1: key "mapping": {exc}') from None
+    except ArithmeticError:
+        raise JournalError(f'{where}: line 1: key "mapping": expected canvas and tablet proportions that leave a '
+                           f'usable area, got canvas {header.canvas_width!r} x {header.canvas_height!r}') from None
     pen = PenInput(mapping, GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up)))
     for device in header.devices:
         add_journal_device(pen, device, f"{where}: line 1")
