@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import json
 import math
-import tempfile
 from pathlib import Path
 from typing import Any
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -101,13 +101,15 @@ def _text(rows: list[Any]) -> bytes:
     return b"\n".join(lines) + b"\n"
 
 
-FOLDER = Path(tempfile.mkdtemp(prefix="physink-journal-fuzz-"))
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return tmp_path_factory.mktemp("fuzz")
 
 
 @settings(max_examples=2000, derandomize=True, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(mutated_journal())
-def test_a_mutated_journal_is_replayed_or_refused_with_a_journal_error(rows: list[Any]) -> None:
-    path = FOLDER / "fuzz.physink.jsonl"
+def test_a_mutated_journal_is_replayed_or_refused_with_a_journal_error(folder: Path, rows: list[Any]) -> None:
+    path = folder / "fuzz.physink.jsonl"
     path.write_bytes(_text(rows))
     try:
         journal = read_journal(path)

@@ -150,6 +150,15 @@ def test_a_canvas_too_thin_for_floats_is_refused_naming_the_mapping(tmp_path: Pa
         replay_journal_input(path)
 
 
+def test_keys_with_control_characters_stay_on_one_line(tmp_path: Path) -> None:
+    path = journal(tmp_path, {**FULL_HEADER, "x\ny": 1, "devices": {"tab\nlet": {**DEVICE, "vid": None}}}, LINES[1])
+    assert read_journal(path).warnings == ('line 1: unknown key "x\\ny" ignored',)
+    path = journal(tmp_path, {**FULL_HEADER, "devices": {"tab\nlet": {**DEVICE, "vid": -1}}}, LINES[1])
+    with pytest.raises(JournalError, match=fails_at(path, 1, "devices.tab\\nlet.vid")) as caught:
+        read_journal(path)
+    assert "\n" not in str(caught.value)
+
+
 # ------------------------------------------------------------------------- 3. entry lines
 
 

@@ -70,12 +70,23 @@ def bad(where: str, key: str, expected: str, got: Any = _MISSING) -> JournalErro
     line 3: key "pen.tip": expected true or false, but it is missing
     """
     found = "but it is missing" if got is _MISSING else f"got {show(got)}"
-    return JournalError(f'{where}: key "{key}": expected {expected}, {found}')
+    return JournalError(f'{where}: key "{printable(key)}": expected {expected}, {found}')
+
+
+def printable(key: str) -> str:
+    """A key path as one printable line: control and other unprintable characters escaped.
+
+    >>> printable("devices.tab\\nlet")
+    'devices.tab\\\\nlet'
+    """
+    if key.isprintable():
+        return key
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in key)
 
 
 def unknown_key(where: str, key: str) -> str:
     """The warning for a key the format does not define (it is ignored)."""
-    return f'{where}: unknown key "{key}" ignored'
+    return f'{where}: unknown key "{printable(key)}" ignored'
 
 
 def kinds_error(where: str, found: list[str]) -> JournalError:
