@@ -1,24 +1,32 @@
 """Runs a journal's inputs through the input side: its HID and pen lines to gestures; no scene.
 
-The header gives each device's descriptor, the tablet-to-canvas mapping and the tip thresholds, so
-the replay decodes exactly as the session did. Commands and utterances are listed with their times
-for the caller (the session that will act on them comes with a later issue).
+The header gives each device's descriptor (``device`` lines those plugged in later), the tablet-to-canvas
+mapping and the tip thresholds, so the replay decodes exactly as the session did. Commands and utterances
+are listed with their times for the caller (the session that will act on them comes with a later issue).
 """
 
 from __future__ import annotations
 
 import os
 
-from physink_tui.errors import JournalError
+from physink_tui.errors import DescriptorError, JournalError
 from physink_tui.input.gestures import Gesture, GestureConfig
 from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.mapping import TabletMapping, mapping_from_header
+from physink_tui.input.mapping import mapping_from_header
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import TipThresholds
 from physink_tui.input.sources import RawReport, SourceEnded
-from physink_tui.journal.entries import CommandEntry, HidEntry, JournalHeader, PenEntry, SayEntry
-from physink_tui.journal.reader import read_journal
+from physink_tui.journal.entries import (
+    CommandEntry,
+    DeviceEntry,
+    HidEntry,
+    JournalDevice,
+    JournalHeader,
+    PenEntry,
+    SayEntry,
+)
+from physink_tui.journal.reader import iter_journal
 
 PEN_DEVICE = "pen"
 """The device id of journal ``pen`` lines (canvas samples from the mouse, serial tablets, scripts)."""
@@ -26,46 +34,76 @@ PEN_DEVICE = "pen"
 
 def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
     """The input side a journal header describes: its devices' decoders, its mapping and tip thresholds, and
-    the canvas-space device of its ``pen`` lines. A bad mapping is a `JournalError` naming the key."""
+    the canvas-space device of its ``pen`` lines.
+
+    Mapping keys the header leaves out take the identity: the canvas size is the header's, the tablet's
+    proportions are the canvas's and the whole area is used, so tablet (x, y) in 0..1 lands on canvas (x, y).
+
+    Raises:
+        JournalError: ``<where>: line 1: ...`` for a mapping that leaves no usable area or a device whose
+            descriptor cannot be decoded (naming the device id).
+    """
+    defaults = {"canvas_width": header.canvas_width, "canvas_height": header.canvas_height}
+    defaults |= {"tablet_width": header.canvas_width, "tablet_height": header.canvas_height}
     try:
-        mapping = mapping_from_header(header.mapping) if header.mapping else TabletMapping(
-            canvas_width=header.canvas_width, canvas_height=header.canvas_height)
+        mapping = mapping_from_header({**defaults, **header.mapping})
+        mapping.to_canvas(0.5, 0.5)  # proportions too extreme for floats leave a zero-sized area
     except ValueError as exc:
-        raise JournalError(f"{where}: line 1: key \"mapping\": {exc}") from None
+        raise JournalError(f'{where}: line 1: key "mapping": {exc}') from None
+    except ArithmeticError:
+        raise JournalError(f'{where}: line 1: key "mapping": expected canvas and tablet proportions that leave a '
+                           f'usable area, got canvas {header.canvas_width!r} x {header.canvas_height!r}') from None
     pen = PenInput(mapping, GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up)))
     for device in header.devices:
-        pen.add_hid_device(device.id, HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name))
+        add_journal_device(pen, device, f"{where}: line 1")
     pen.add_sample_device(PEN_DEVICE, canvas_space=True)
     return pen
 
 
+def add_journal_device(pen: PenInput, device: JournalDevice, where: str) -> None:
+    """Add a journal device's decoder to ``pen``; a descriptor that cannot be decoded is a `JournalError`
+    naming ``where`` (file and line) and the device id."""
+    try:
+        decoder = HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
+    except DescriptorError as exc:
+        raise JournalError(f"{where}: device {device.id!r}: {exc}") from None
+    pen.add_hid_device(device.id, decoder)
+
+
 def replay_journal_input(path: str | os.PathLike[str]) -> tuple[list[Gesture], list[str], list[str]]:
     """Gestures of a journal, one line per command or utterance (time first), and notes."""
-    journal = read_journal(path)
-    header = journal.header
-    pen = pen_input_for(header, str(path))
-    gestures: list[Gesture] = []
-    events: list[str] = []
-    last_t = 0.0
-    for entry in journal.entries:
-        last_t = entry.t
-        if isinstance(entry, HidEntry):
-            gestures += pen.handle(RawReport(entry.t, entry.data, entry.dev))
-        elif isinstance(entry, PenEntry):
-            sample = PenSample(entry.t, entry.x, entry.y, entry.p, entry.tip, entry.range, entry.eraser,
-                               entry.b1, entry.b2, None, None, 0)
-            gestures += pen.feed_canvas_sample(PEN_DEVICE, sample)
-        elif isinstance(entry, CommandEntry):
-            args = " ".join(str(a) for a in entry.args)
-            events.append(f"{entry.t:9.3f}  command       {entry.name} {args}".rstrip())
-        elif isinstance(entry, SayEntry):
-            events.append(f"{entry.t:9.3f}  said          {entry.text!r}")
+    with iter_journal(path) as reader:
+        header = reader.header
+        pen = pen_input_for(header, str(path))
+        gestures: list[Gesture] = []
+        events: list[str] = []
+        last_t = 0.0
+        for entry in reader:
+            last_t = entry.t
+            if isinstance(entry, HidEntry):
+                gestures += pen.handle(RawReport(entry.t, entry.data, entry.dev))
+            elif isinstance(entry, PenEntry):
+                sample = PenSample(entry.t, entry.x, entry.y, entry.p, entry.tip, entry.range, entry.eraser,
+                                   entry.b1, entry.b2, None, None, 0)
+                gestures += pen.feed_canvas_sample(PEN_DEVICE, sample)
+            elif isinstance(entry, CommandEntry):
+                args = " ".join(str(a) for a in entry.args)
+                events.append(f"{entry.t:9.3f}  command       {entry.name} {args}".rstrip())
+            elif isinstance(entry, SayEntry):
+                events.append(f"{entry.t:9.3f}  said          {entry.text!r}")
+            elif isinstance(entry, DeviceEntry):
+                for device in entry.devices:
+                    if device.id in pen.devices:  # a reconnected device: its gesture so far ends here
+                        gestures += pen.handle(SourceEnded(entry.t, device.id, None))
+                    add_journal_device(pen, device, f"{reader.path}: line {reader.line}")
+                events.append(f"{entry.t:9.3f}  device        {', '.join(d.id for d in entry.devices)} appeared")
     for device_id in list(pen.devices):
         gestures += pen.handle(SourceEnded(last_t, device_id, None))
-    notes = list(journal.warnings)
-    if journal.truncated is not None:
-        notes.append(f"line {journal.truncated} is incomplete (the writer stopped mid-line); read up to it")
-    for device in header.devices:
-        stats = pen.devices[device.id].decoder.stats
-        notes.append(f"{device.id}: {stats.reports} reports, {stats.samples} pen samples")
+    notes = list(reader.warnings)
+    if reader.truncated is not None:
+        notes.append(f"line {reader.truncated} is incomplete (the writer stopped mid-line); read up to it")
+    for device_id, device in pen.devices.items():
+        if device.decoder is not None:
+            stats = device.decoder.stats
+            notes.append(f"{device_id}: {stats.reports} reports, {stats.samples} pen samples")
     return gestures, events, notes

@@ -19,7 +19,7 @@ from physink_tui.errors import JournalError
 SHOW_MAX = 60
 """Offending values are shown with at most this many characters."""
 
-KINDS = ("hid", "pen", "cmd", "say")
+KINDS = ("hid", "pen", "cmd", "say", "device")
 """The keys that say what an entry is; a line has exactly one of them."""
 
 COMMANDS = ("mode", "play", "pause", "stop", "seek", "clear", "undo", "redo", "label", "simulate", "save")
@@ -31,9 +31,16 @@ MODES = ("sketch", "demo")
 LABEL_TARGETS = ("last", "selected")
 """``label`` targets besides a component id."""
 
+MAX_SECONDS = 366 * 24 * 3600.0
+"""The latest ``t`` (and ``seek`` time) a journal may hold, in seconds: a year and a day. Larger finite values
+(``1e308``) are refused, since time arithmetic on them overflows and no session lasts that long."""
+
+SECONDS_EXPECTED = f"a number in [0, {MAX_SECONDS:.0f}] (seconds since the session start)"
+"""What a ``t`` must be, in error messages."""
+
 _USAGE = {
     "mode": 'one argument, "sketch" or "demo",',
-    "seek": "one argument, a number >= 0 (seconds of timeline time),",
+    "seek": f"one argument, a number in [0, {MAX_SECONDS:.0f}] (seconds of timeline time),",
     "label": 'two arguments, TARGET ("last", "selected" or a component id) and a non-empty TEXT,',
     "save": "one argument, a non-empty PATH,",
 }
@@ -63,12 +70,23 @@ def bad(where: str, key: str, expected: str, got: Any = _MISSING) -> JournalErro
     line 3: key "pen.tip": expected true or false, but it is missing
     """
     found = "but it is missing" if got is _MISSING else f"got {show(got)}"
-    return JournalError(f'{where}: key "{key}": expected {expected}, {found}')
+    return JournalError(f'{where}: key "{printable(key)}": expected {expected}, {found}')
+
+
+def printable(key: str) -> str:
+    """A key path as one printable line: control and other unprintable characters escaped.
+
+    >>> printable("devices.tab\\nlet")
+    'devices.tab\\\\nlet'
+    """
+    if key.isprintable():
+        return key
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in key)
 
 
 def unknown_key(where: str, key: str) -> str:
     """The warning for a key the format does not define (it is ignored)."""
-    return f'{where}: unknown key "{key}" ignored'
+    return f'{where}: unknown key "{printable(key)}" ignored'
 
 
 def kinds_error(where: str, found: list[str]) -> JournalError:
@@ -99,7 +117,7 @@ def _real(value: Any) -> float | None:
 
 
 def seconds(where: str, key: str, value: Any, previous: float | None = None) -> float:
-    """A time in seconds: finite, >= 0, and >= ``previous`` when given.
+    """A time in seconds: finite, in [0, `MAX_SECONDS`], and >= ``previous`` when given.
 
     >>> seconds("line 12", "t", 3.2, previous=3.5)
     Traceback (most recent call last):
@@ -107,8 +125,8 @@ def seconds(where: str, key: str, value: Any, previous: float | None = None) -> 
     physink_tui.errors.JournalError: line 12: key "t": expected a number >= the previous t 3.5, got 3.2
     """
     t = _real(value)
-    if t is None or t < 0:
-        raise bad(where, key, "a number >= 0 (seconds since the session start)", value)
+    if t is None or not 0 <= t <= MAX_SECONDS:
+        raise bad(where, key, SECONDS_EXPECTED, value)
     if previous is not None and t < previous:
         raise bad(where, key, f"a number >= the previous t {previous!r}", value)
     return t
@@ -203,7 +221,7 @@ def _args_ok(name: str, args: list[Any] | tuple[Any, ...]) -> tuple[str | float,
         return (args[0],) if len(args) == 1 and args[0] in MODES and isinstance(args[0], str) else None
     if name == "seek":
         t = _real(args[0]) if len(args) == 1 else None
-        return (t,) if t is not None and t >= 0 else None
+        return (t,) if t is not None and 0 <= t <= MAX_SECONDS else None
     if name == "label":
         return (args[0], args[1]) if len(args) == 2 and is_text(args[0]) and is_text(args[1]) else None
     if name == "save":

@@ -8,6 +8,7 @@ that says what the entry is::
     {"t":0.51,"pen":{"x":0.25,"y":0.5,"p":0.0,"tip":false,"range":true,"eraser":false,"b1":false,"b2":false}}
     {"t":1.0,"cmd":"seek","args":[2.5]}
     {"t":1.25,"say":"label ball"}
+    {"t":2.0,"device":{"tablet1":{"name":null,"bus":3,"vid":9580,"pid":110,"descriptor":"05 0d ..."}}}
 
 Non-ASCII text is written as UTF-8, not escaped. Reading refuses what plain ``json`` lets pass: NaN and
 Infinity, and a key twice in one object. Encoding checks every value with the same rules as decoding
@@ -23,13 +24,15 @@ from typing import Any
 from physink_tui.errors import JournalError
 from physink_tui.journal import checks
 from physink_tui.journal.checks import bad, get, show
-from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, PenEntry, SayEntry
+from physink_tui.journal.entries import CommandEntry, DeviceEntry, HidEntry, JournalEntry, PenEntry, SayEntry
+from physink_tui.journal.header_checks import decode_devices, encode_devices
 from physink_tui.strict_json import DuplicateKey, unique_pairs
 
 PEN_KEYS = ("x", "y", "p", "tip", "range", "eraser", "b1", "b2")
 """The keys of a ``pen`` object, in the order written."""
 
-_ALLOWED = {"hid": {"t", "hid", "dev"}, "pen": {"t", "pen"}, "cmd": {"t", "cmd", "args"}, "say": {"t", "say"}}
+_ALLOWED = {"hid": {"t", "hid", "dev"}, "pen": {"t", "pen"}, "cmd": {"t", "cmd", "args"}, "say": {"t", "say"},
+            "device": {"t", "device"}}
 _BOOL = {True: "true", False: "false"}
 _PEN_EXPECTED = "an object with " + ", ".join(PEN_KEYS)
 
@@ -145,6 +148,12 @@ def encode_entry(
         where = "say entry"
         t = checks.seconds(where, "t", entry.t, previous_t)
         return f'{{"t":{t!r},"say":{json_string(checks.text(where, "say", entry.text))}}}'
+    if kind is DeviceEntry:
+        where = "device entry"
+        t = checks.seconds(where, "t", entry.t, previous_t)
+        if not entry.devices:
+            raise bad(where, "device", "at least one device", [])
+        return f'{{"t":{t!r},"device":{compact_json(encode_devices(where, "device", entry.devices))}}}'
     raise TypeError(f"not a journal entry: {entry!r}")
 
 
@@ -169,7 +178,8 @@ def decode_line(
         text: the line, with or without its newline.
         lineno: its 1-based line number, for messages.
         previous_t: the previous entry's t, when known: a smaller t is an error.
-        devices: the header's device ids, when known: a ``hid`` line naming another device is an error.
+        devices: the device ids known so far (the header's and earlier ``device`` lines'), when known: a ``hid``
+            line naming another device is an error. The caller adds the ids of a `DeviceEntry` returned.
         warnings: when given, one message per unknown key (which is ignored) is appended.
 
     Raises:
@@ -180,7 +190,7 @@ def decode_line(
     >>> decode_line('{"t":1.5}', 4)
     Traceback (most recent call last):
     ...
-    physink_tui.errors.JournalError: line 4: expected exactly one of hid, pen, cmd, say; found none
+    physink_tui.errors.JournalError: line 4: expected exactly one of hid, pen, cmd, say, device; found none
     """
     where = f"line {lineno}"
     obj = parse_object(text, where)
@@ -189,7 +199,7 @@ def decode_line(
         raise checks.kinds_error(where, found)
     kind = found[0]
     t = checks.seconds(
-        where, "t", get(obj, where, "t", "t", "a number >= 0 (seconds since the session start)"), previous_t
+        where, "t", get(obj, where, "t", "t", checks.SECONDS_EXPECTED), previous_t
     )
     if warnings is not None and len(obj) > 2:
         warnings.extend(checks.unknown_key(where, key) for key in obj if key not in _ALLOWED[kind])
@@ -200,6 +210,8 @@ def decode_line(
         data = checks.hex_bytes(where, "hid", value)
         dev = checks.text(where, "dev", get(obj, where, "dev", "dev", "a device id of the header"), empty=False)
         return HidEntry(t, _device(where, dev, devices), data)
+    if kind == "device":
+        return DeviceEntry(t, tuple(decode_devices(where, value, warnings, "device")))
     if kind == "cmd":
         args = checks.command(where, value, get(obj, where, "args", "args", "a list of arguments"))
         return CommandEntry(t, value, args)

@@ -20,7 +20,16 @@ FORMAT_VERSION = 1
 """The header's ``"version"``: the one this program writes and the newest it reads."""
 
 PROGRAM = f"physink-tui {__version__}"
-"""The header's default ``"program"``: this program and its version."""
+"""The header's ``"program"`` as this program writes it: its name and version."""
+
+UNKNOWN_PROGRAM = "unknown"
+"""``"program"`` of a header read without one (other programs and people write journals too)."""
+
+DEFAULT_TIP_DOWN = 0.05
+"""``tip_thresholds.down`` of a header read without one: libinput's 5 % of the pressure range."""
+
+DEFAULT_TIP_UP = 0.01
+"""``tip_thresholds.up`` of a header read without one: libinput's 1 % of the pressure range."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -53,12 +62,17 @@ class JournalHeader:
         canvas_width: width of the canvas, in canvas units (> 0); pen x is a fraction of it.
         canvas_height: height of the canvas, in canvas units (> 0); pen y is a fraction of it.
         devices: the raw devices, in the order written; ids unique.
-        mapping: the tablet-to-canvas mapping as a JSON object (str keys; None, bool, int, finite float, str,
-            list and object values). Opaque here: `physink_tui.input.mapping` owns its meaning. A deep copy of
-            what was passed, so changing the caller's dict later changes nothing; not part of the hash.
-        tip_down: tip contact begins when normalised pressure rises above this (0..1).
-        tip_up: tip contact ends when normalised pressure falls below this (0 <= tip_up < tip_down).
-        program: the program and version that wrote the journal, e.g. ``"physink-tui 0.1.0"``.
+        mapping: the tablet-to-canvas mapping as a JSON object: the keys of
+            `physink_tui.journal.header_checks.MAPPING_KEYS`, each optional; ``{}`` (the default when a header
+            has none) maps the tablet's area onto the whole canvas, one to one. `physink_tui.input.mapping`
+            owns its meaning. A deep copy of what was passed, so changing the caller's dict later changes
+            nothing; not part of the hash.
+        tip_down: tip contact begins when normalised pressure rises above this (0 < tip_down <= 1);
+            `DEFAULT_TIP_DOWN` when a header has no ``tip_thresholds``.
+        tip_up: tip contact ends when normalised pressure falls below this (0 <= tip_up < tip_down);
+            `DEFAULT_TIP_UP` when a header has no ``tip_thresholds``.
+        program: the program and version that wrote the journal, e.g. ``"physink-tui 0.1.0"``;
+            `UNKNOWN_PROGRAM` when a header read has none.
         vocabulary: the text of the user's vocabulary file (extra verbs and prepositions for phrases, see
             `physink_tui.timeline.phrases.parse_vocabulary`), or "" for none; written only when given.
     """
@@ -161,5 +175,22 @@ class SayEntry:
     text: str
 
 
-JournalEntry = HidEntry | PenEntry | CommandEntry | SayEntry
+@dataclass(frozen=True, slots=True)
+class DeviceEntry:
+    """Devices that appeared after the header (hot-plug), written before their first report.
+
+    Attributes:
+        t: seconds since the session start (>= 0, never less than the previous entry's).
+        devices: the devices, ids unique within the line; an id already known (a reconnected tablet)
+            replaces that device from here on.
+    """
+
+    t: float
+    devices: tuple[JournalDevice, ...]
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "devices", tuple(self.devices))
+
+
+JournalEntry = HidEntry | PenEntry | CommandEntry | SayEntry | DeviceEntry
 """Any line of the journal after the header."""

@@ -1,7 +1,10 @@
 """The journal header's JSON line, both ways, checked key by key; entries are `codec`'s, files are not here.
 
+Only ``format``, ``version``, ``canvas`` and ``devices`` are required on reading; ``program`` defaults to
+``"unknown"``, ``mapping`` to ``{}`` (the tablet's area onto the whole canvas), ``tip_thresholds`` to libinput's
+5 % down / 1 % up, ``vocabulary`` to none. Unknown keys are ignored and reported as warnings.
 The header is written in a fixed key order (``format``, ``version``, ``program``, ``canvas``, ``devices``,
-``mapping``, ``tip_thresholds``), devices in the order given and the opaque ``mapping`` with sorted keys, so
+``mapping``, ``tip_thresholds``), devices in the order given and ``mapping`` with sorted keys, so
 the same header always gives the same bytes and a header read back re-encodes to the bytes it was read from.
 """
 
@@ -9,25 +12,28 @@ from __future__ import annotations
 
 from typing import Any
 
-from physink_tui.errors import JournalError
 from physink_tui.journal import checks
-from physink_tui.journal.checks import bad, get, show
+from physink_tui.journal.checks import bad, get
 from physink_tui.journal.codec import compact_json, json_string, parse_object
-from physink_tui.journal.entries import FORMAT, FORMAT_VERSION, JournalDevice, JournalHeader
+from physink_tui.journal.entries import (
+    DEFAULT_TIP_DOWN,
+    DEFAULT_TIP_UP,
+    FORMAT,
+    FORMAT_VERSION,
+    UNKNOWN_PROGRAM,
+    JournalHeader,
+)
+from physink_tui.journal.header_checks import check_mapping, check_vocabulary, decode_devices, encode_devices
 
 HEADER_KEYS = ("format", "version", "program", "canvas", "devices", "mapping", "tip_thresholds", "vocabulary")
 """The header's keys, in the order written."""
 
-DEVICE_KEYS = ("name", "bus", "vid", "pid", "descriptor")
-"""The keys of each device object, in the order written."""
-
-_INT = "null or an integer in 0..65535"
-_HEX = 'hex bytes separated by spaces, e.g. "05 0d 09 02"'
 
 
 def encode_header(header: JournalHeader) -> str:
     """The header as one line (without the newline), after checking every field.
 
+    >>> from physink_tui.journal.entries import JournalDevice
     >>> h = JournalHeader(800, 600, (JournalDevice("pen0", "Pen", 3, 0x56A, 0x350, b"\\xa1\\xc0"),), {}, 0.05, 0.01,
     ...                   program="physink-tui 0.1.0")
     >>> encode_header(h)
@@ -40,25 +46,10 @@ def encode_header(header: JournalHeader) -> str:
         "width": checks.positive(where, "canvas.width", header.canvas_width),
         "height": checks.positive(where, "canvas.height", header.canvas_height),
     }
-    devices: dict[str, Any] = {}
-    for dev in header.devices:
-        if not isinstance(dev, JournalDevice):
-            raise bad(where, "devices", "JournalDevice values", dev)
-        checks.text(where, "devices", dev.id, empty=False)
-        if dev.id in devices:
-            raise JournalError(f'{where}: key "devices": device id {show(dev.id)} appears twice')
-        key = f"devices.{dev.id}"
-        name = dev.name if dev.name is None else checks.text(where, f"{key}.name", dev.name)
-        devices[dev.id] = {
-            "name": name,
-            "bus": checks.optional_int(where, f"{key}.bus", dev.bus, 0xFFFF),
-            "vid": checks.optional_int(where, f"{key}.vid", dev.vid, 0xFFFF),
-            "pid": checks.optional_int(where, f"{key}.pid", dev.pid, 0xFFFF),
-            "descriptor": checks.report_bytes(where, f"{key}.descriptor", dev.descriptor).hex(" "),
-        }
-    if not isinstance(header.mapping, dict):
-        raise bad(where, "mapping", "an object", header.mapping)
-    checks.json_value(where, "mapping", header.mapping)
+    devices = encode_devices(where, "devices", header.devices)
+    check_mapping(where, header.mapping, None, strict=True)
+    if header.vocabulary:
+        check_vocabulary(where, header.vocabulary)
     down, up = _tip_thresholds(where, header.tip_down, header.tip_up)
     parts = [
         f'"format":{json_string(FORMAT)}',
@@ -103,22 +94,21 @@ def decode_header(text: str, lineno: int = 1, warnings: list[str] | None = None)
     version = get(obj, where, "version", "version", f"{FORMAT_VERSION}")
     if type(version) is not int or version != FORMAT_VERSION:
         raise bad(where, "version", f"{FORMAT_VERSION} (the newest version this program reads)", version)
-    program = checks.text(where, "program", get(obj, where, "program", "program", "a string"), empty=False)
+    program = checks.text(where, "program", obj.get("program", UNKNOWN_PROGRAM), empty=False)
     canvas = _sub_object(obj, where, "canvas", ("width", "height"), warnings)
     width = checks.positive(where, "canvas.width", get(canvas, where, "width", "canvas.width", "a number > 0"))
     height = checks.positive(where, "canvas.height", get(canvas, where, "height", "canvas.height", "a number > 0"))
-    devices = tuple(_decode_devices(where, get(obj, where, "devices", "devices", "an object"), warnings))
-    mapping = get(obj, where, "mapping", "mapping", "an object")
-    if not isinstance(mapping, dict):
-        raise bad(where, "mapping", "an object", mapping)
-    checks.json_value(where, "mapping", mapping)
-    tips = _sub_object(obj, where, "tip_thresholds", ("down", "up"), warnings)
-    down, up = _tip_thresholds(
-        where,
-        get(tips, where, "down", "tip_thresholds.down", "a number in (0, 1]"),
-        get(tips, where, "up", "tip_thresholds.up", "a number in [0, 1)"),
-    )
-    vocabulary = checks.text(where, "vocabulary", obj.get("vocabulary", ""))
+    devices = tuple(decode_devices(where, get(obj, where, "devices", "devices", "an object"), warnings))
+    mapping = check_mapping(where, obj.get("mapping", {}), warnings)
+    down, up = DEFAULT_TIP_DOWN, DEFAULT_TIP_UP
+    if "tip_thresholds" in obj:
+        tips = _sub_object(obj, where, "tip_thresholds", ("down", "up"), warnings)
+        down, up = _tip_thresholds(
+            where,
+            get(tips, where, "down", "tip_thresholds.down", "a number in (0, 1]"),
+            get(tips, where, "up", "tip_thresholds.up", "a number in [0, 1)"),
+        )
+    vocabulary = check_vocabulary(where, obj.get("vocabulary", ""))
     if warnings is not None:
         warnings.extend(checks.unknown_key(where, key) for key in obj if key not in HEADER_KEYS)
     return JournalHeader(width, height, devices, mapping, down, up, program, vocabulary)
@@ -134,30 +124,3 @@ def _sub_object(
     if warnings is not None:
         warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in value if k not in keys)
     return value
-
-
-def _decode_devices(where: str, devices: Any, warnings: list[str] | None) -> list[JournalDevice]:
-    if not isinstance(devices, dict):
-        raise bad(where, "devices", "an object of device id -> device", devices)
-    out = []
-    for dev_id, dev in devices.items():
-        checks.text(where, "devices", dev_id, empty=False)
-        key = f"devices.{dev_id}"
-        expected = "an object with " + ", ".join(DEVICE_KEYS)
-        if not isinstance(dev, dict):
-            raise bad(where, key, expected, dev)
-        name = get(dev, where, "name", f"{key}.name", "a string or null")
-        out.append(
-            JournalDevice(
-                dev_id,
-                None if name is None else checks.text(where, f"{key}.name", name),
-                *(
-                    checks.optional_int(where, f"{key}.{k}", get(dev, where, k, f"{key}.{k}", _INT), 0xFFFF)
-                    for k in ("bus", "vid", "pid")
-                ),
-                checks.hex_bytes(where, f"{key}.descriptor", get(dev, where, "descriptor", f"{key}.descriptor", _HEX)),
-            )
-        )
-        if warnings is not None:
-            warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in dev if k not in DEVICE_KEYS)
-    return out

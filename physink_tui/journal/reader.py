@@ -1,8 +1,9 @@
 """Reads a journal file back, whole or streamed, stopping at the first malformed line; replays nothing.
 
-A last line that is not complete JSON (the process or the machine died while writing it) is not an error:
-everything before it is returned and its line number is reported as `Journal.truncated`. A malformed
-complete line anywhere raises `JournalError` naming the path, the line and the key. Blank lines are skipped.
+A UTF-8 byte order mark before the header is skipped. A last line that is not complete JSON (the process or
+the machine died while writing it) is not an error: everything before it is returned and its line number is
+reported as `Journal.truncated`. A malformed complete line anywhere raises `JournalError` naming the path, the
+line and the key. Blank lines are skipped.
 """
 
 from __future__ import annotations
@@ -15,8 +16,32 @@ from typing import BinaryIO
 
 from physink_tui.errors import JournalError
 from physink_tui.journal.codec import decode_line, is_json
-from physink_tui.journal.entries import JournalEntry, JournalHeader
+from physink_tui.journal.entries import DeviceEntry, JournalEntry, JournalHeader
 from physink_tui.journal.header_codec import decode_header
+
+BOM = b"\xef\xbb\xbf"
+"""The UTF-8 byte order mark: accepted (and skipped) at the start of a journal."""
+
+JOURNAL_SUFFIX = ".physink.jsonl"
+"""The file name ending of a journal."""
+
+
+def looks_like_journal(first_line: bytes, name: str = "") -> bool:
+    """Whether a file starting with ``first_line`` and named ``name`` is meant as a journal, not a capture.
+
+    A journal is JSON text after an optional UTF-8 byte order mark and blanks, or an empty file named
+    ``*.physink.jsonl`` (which `read_journal` then reports as an empty journal). `physink replay` should call
+    this on the first line it reads instead of looking for ``{`` itself.
+
+    >>> looks_like_journal(BOM + b'{"format":"physink-journal"}'), looks_like_journal(b"D: 0")
+    (True, False)
+    >>> looks_like_journal(b"", "s.physink.jsonl"), looks_like_journal(b"", "s.hid")
+    (True, False)
+    """
+    head = first_line.removeprefix(BOM).lstrip(b" \t\r\n")
+    if not head:
+        return os.fspath(name).endswith(JOURNAL_SUFFIX)
+    return head.startswith(b"{")
 
 
 @dataclass(frozen=True, slots=True)
@@ -78,6 +103,7 @@ class JournalReader:
         path: the file.
         header: its header.
         warnings: messages about unknown keys seen so far.
+        line: the 1-based line number of the entry last yielded (1 before any), for messages about it.
         truncated: line number of an incomplete last line, set when the iteration reaches it; else None.
     """
 
@@ -94,7 +120,8 @@ class JournalReader:
         except BaseException:
             self._file.close()
             raise
-        self._devices = frozenset(d.id for d in self.header.devices)
+        self._devices = {d.id for d in self.header.devices}
+        self.line = 1
         self._entries = self._read_entries()
 
     def __iter__(self) -> Iterator[JournalEntry]:
@@ -115,8 +142,9 @@ class JournalReader:
             raw = self._file.readline()
         except OSError as e:
             raise JournalError(f"cannot read journal {self.path}: {e.strerror or e}") from None
+        raw = raw.removeprefix(BOM)  # editors on Windows start UTF-8 files with one
         if not raw:
-            raise JournalError(f"{self.path}: the file is empty; expected the journal header on line 1")
+            raise JournalError(f"{self.path}: empty journal: no header line")
         cut = JournalError(f"{self.path}: line 1: the header is cut off (the file ends inside it)")
         try:
             text = raw.decode("utf-8")
@@ -157,6 +185,9 @@ class JournalReader:
                 except JournalError as e:
                     raise JournalError(f"{self.path}: {e}") from None
                 previous = entry.t
+                if isinstance(entry, DeviceEntry):
+                    self._devices.update(d.id for d in entry.devices)
+                self.line = lineno
                 yield entry
         except OSError as e:
             raise JournalError(f"{self.path}: line {lineno}: cannot read: {e.strerror or e}") from None

@@ -24,7 +24,7 @@ from types import TracebackType
 from physink_tui.atomic_write import fsync_directory
 from physink_tui.errors import JournalError
 from physink_tui.journal.codec import encode_entry
-from physink_tui.journal.entries import JournalEntry, JournalHeader
+from physink_tui.journal.entries import DeviceEntry, JournalEntry, JournalHeader
 from physink_tui.journal.header_codec import encode_header
 
 FSYNC_INTERVAL = 0.1
@@ -55,7 +55,7 @@ class JournalWriter:
         self._fd = fd
         self._size = size
         self._clock = clock
-        self._devices = frozenset(d.id for d in header.devices)
+        self._devices = {d.id for d in header.devices}
         self._buffer: list[str] = []
         self._buffered_bytes = 0
         self._last_t: float | None = None
@@ -107,7 +107,8 @@ class JournalWriter:
 
         Raises:
             JournalError: the entry is invalid (its t is before the previous entry's, its device is not in
-                the header, a value is out of range; it is not written and the writer goes on), or the writer
+                the header nor an earlier device entry, a value is out of range; it is not written and the
+                writer goes on), or the writer
                 is closed or stopped.
         """
         self._check_usable()
@@ -118,6 +119,8 @@ class JournalWriter:
         self._buffer.append(line)
         self._buffered_bytes += len(line) + 1
         self._last_t = entry.t
+        if isinstance(entry, DeviceEntry):
+            self._devices.update(d.id for d in entry.devices)
         if self._buffered_bytes >= AUTO_FLUSH_BYTES:
             self.flush()
 
