@@ -205,6 +205,19 @@ def test_a_device_line_adds_a_tablet_whose_reports_replay(tmp_path: Path) -> Non
     assert any(n.startswith("tablet1: ") and "pen samples" in n for n in notes)
 
 
+def test_a_tablet_plugged_in_during_the_session_draws_in_it(tmp_path: Path) -> None:
+    """The session, not only the input side, takes the device line: the tablet's strokes become the scene."""
+    from physink_tui.journal.reader import read_journal as read
+    from physink_tui.session.session import Session
+
+    more = [json.loads(line) for line in (JOURNALS / "basketball.physink.jsonl").read_text().splitlines()[1:1500]]
+    lines = [{"t": 0.0, "device": {"tablet1": DEVICE}}, *({**r, "dev": "tablet1"} for r in more if "hid" in r)]
+    path = journal(tmp_path, {**FULL_HEADER, "devices": {}}, *lines)
+    parsed = read(path)
+    session = Session.from_header(parsed.header).run(parsed.entries)
+    assert session.scene.bodies(), [m.text for m in session.messages]
+
+
 def test_a_report_before_its_device_line_names_the_line(tmp_path: Path) -> None:
     lines = plugged_in_later()
     path = journal(tmp_path, {**FULL_HEADER, "devices": {}}, lines[1], lines[0])

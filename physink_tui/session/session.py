@@ -19,11 +19,19 @@ import shapely
 
 from physink_tui.errors import JournalError
 from physink_tui.input.gestures import Dwell, Gesture, PenDown, PenMove, StrokeEnded, Tap
-from physink_tui.input.journal_replay import PEN_DEVICE, pen_input_for
+from physink_tui.input.journal_replay import PEN_DEVICE, add_journal_device, pen_input_for
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.sources import RawReport
-from physink_tui.journal.entries import CommandEntry, HidEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.journal.entries import (
+    CommandEntry,
+    DeviceEntry,
+    HidEntry,
+    JournalEntry,
+    JournalHeader,
+    PenEntry,
+    SayEntry,
+)
 from physink_tui.journal.writer import JournalWriter
 from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
@@ -164,6 +172,9 @@ class Session:
             self._command(entry)
         elif isinstance(entry, SayEntry):
             self._say(entry)
+        elif isinstance(entry, DeviceEntry):  # a tablet plugged in during the session
+            for device in entry.devices:
+                add_journal_device(self.pen, device, f"journal at t={entry.t:g}")
 
     def run(self, entries: Iterable[JournalEntry]) -> Session:
         for entry in entries:
