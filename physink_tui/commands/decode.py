@@ -3,17 +3,19 @@
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import sys
 from typing import TextIO
 
+from physink_tui.commands.decode_jsonl import format_jsonl
 from physink_tui.errors import CaptureFormatError, DescriptorError
 from physink_tui.input.capture import Capture, CaptureDevice
 from physink_tui.input.hid_batch import PenColumns, decode_batch
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.vendor_init import find_vendor_init
 
+CHUNK_ROWS = 65536
+"""Samples formatted and written at a time."""
 TEXT_HEADER = "       t        x        y        p tip rng era b1 b2  tilt_x  tilt_y  report"
 
 
@@ -55,20 +57,11 @@ def _tilt(v: float) -> float | None:
     return None if math.isnan(v) else round(v, 2)
 
 
-def write_jsonl(cols: PenColumns, out: TextIO) -> None:
-    """One DESIGN.md pen-sample object per line (values rounded to 6 decimals: byte-stable output)."""
-    dumps = json.dumps
-    rows = zip(
-        cols.t.tolist(), cols.x.tolist(), cols.y.tolist(), cols.p.tolist(), cols.tip.tolist(),
-        cols.range.tolist(), cols.eraser.tolist(), cols.b1.tolist(), cols.b2.tolist(),
-        cols.tilt_x.tolist(), cols.tilt_y.tolist(), cols.report.tolist(), strict=True,
-    )
-    for t, x, y, p, tip, rng, era, b1, b2, tx, ty, rid in rows:
-        out.write(dumps({
-            "t": round(t, 6), "x": round(x, 6), "y": round(y, 6), "p": round(p, 6), "tip": tip,
-            "range": rng, "eraser": era, "b1": b1, "b2": b2, "tilt_x": _tilt(tx), "tilt_y": _tilt(ty),
-            "report": rid,
-        }) + "\n")
+def write_jsonl(cols: PenColumns, out: TextIO, chunk: int = CHUNK_ROWS) -> None:
+    """One DESIGN.md pen-sample object per line (values rounded to 6 decimals: byte-stable output), written
+    ``chunk`` samples at a time."""
+    for start in range(0, len(cols), chunk):
+        out.write(format_jsonl(cols.rows(start, start + chunk)))
 
 
 def write_text(cols: PenColumns, out: TextIO) -> None:

@@ -48,6 +48,10 @@ class PenColumns:
     def __len__(self) -> int:
         return len(self.t)
 
+    def rows(self, start: int, stop: int) -> PenColumns:
+        """The samples ``start:stop`` (views, not copies)."""
+        return PenColumns(*(getattr(self, f)[start:stop] for f in self.__dataclass_fields__))
+
     def samples(self) -> list[PenSample]:
         """The columns as `PenSample`s (None for absent tilt)."""
         tx = [None if v != v else v for v in self.tilt_x.tolist()]
