@@ -61,3 +61,11 @@ def test_edge_values_match_json_dumps() -> None:
                  tilt_y=[float("nan")] * 5, tip=[True, False, True, False, True], b2=[False, True, False, True, True])
     assert format_jsonl(cols) == _old_lines(cols)
     assert format_jsonl(_cols(t=[])) == ""
+
+
+def test_random_values_at_every_scale_match_json_dumps() -> None:
+    rng = np.random.default_rng(11)
+    values = np.concatenate([rng.random(3000), rng.random(3000) * 10.0 ** rng.integers(-9, 10, 3000),
+                             np.round(rng.random(3000) * 1e4, 6), rng.integers(0, 4096, 3000) / 4095])
+    cols = _cols(t=values, x=values[::-1].copy(), p=values, tilt_x=(values - 0.5) * 120)
+    assert format_jsonl(cols) == _old_lines(cols)

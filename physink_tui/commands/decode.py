@@ -5,12 +5,15 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from collections.abc import Callable
 from typing import TextIO
 
 from physink_tui.commands.decode_jsonl import format_jsonl
 from physink_tui.errors import CaptureFormatError, DescriptorError
-from physink_tui.input.capture import Capture, CaptureDevice
+from physink_tui.input.capture import Capture, CaptureColumns, CaptureDevice
+from physink_tui.input.capture_parser import parse_capture_file
 from physink_tui.input.hid_batch import PenColumns, decode_batch
+from physink_tui.input.hid_chunks import decode_in_chunks
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.vendor_init import find_vendor_init
 
@@ -42,15 +45,20 @@ def decode_capture(capture: Capture) -> list[tuple[int, HidPenDecoder, PenColumn
     """Decode every device of a capture in batch; ``(device index, decoder, columns)`` each."""
     results = []
     for device in capture.devices:
-        try:
-            decoder = decoder_for(device)
-        except DescriptorError as exc:
-            where = f"device {device.index} ({device.name or 'unnamed'})"
-            raise DescriptorError(f"{capture.path or 'capture'}: {where}: {exc}") from None
+        decoder = _decoder_of(capture.path, device)
         events = capture.events_for(device.index)
         cols = decode_batch(decoder, [e.t for e in events], [e.data for e in events], [e.line for e in events])
         results.append((device.index, decoder, cols))
     return results
+
+
+def _decoder_of(path: str | None, device: CaptureDevice) -> HidPenDecoder:
+    """`decoder_for`, its error naming the capture and the device."""
+    try:
+        return decoder_for(device)
+    except DescriptorError as exc:
+        where = f"device {device.index} ({device.name or 'unnamed'})"
+        raise DescriptorError(f"{path or 'capture'}: {where}: {exc}") from None
 
 
 def _tilt(v: float) -> float | None:
@@ -67,6 +75,10 @@ def write_jsonl(cols: PenColumns, out: TextIO, chunk: int = CHUNK_ROWS) -> None:
 def write_text(cols: PenColumns, out: TextIO) -> None:
     """Aligned columns for reading by eye."""
     out.write(TEXT_HEADER + "\n")
+    _write_text_rows(cols, out)
+
+
+def _write_text_rows(cols: PenColumns, out: TextIO) -> None:
     flag = {True: "  1", False: "  ."}
     for i in range(len(cols)):
         tx, ty = _tilt(float(cols.tilt_x[i])), _tilt(float(cols.tilt_y[i]))
@@ -78,7 +90,7 @@ def write_text(cols: PenColumns, out: TextIO) -> None:
         )
 
 
-def summary(capture: Capture, results: list[tuple[int, HidPenDecoder, PenColumns]]) -> str:
+def summary(capture: Capture | CaptureColumns, results: list[tuple[int, HidPenDecoder, PenColumns | None]]) -> str:
     """The stderr summary: per device, reports read, samples, ignored by reason, first bad line."""
     lines = []
     for index, decoder, _ in results:
@@ -92,12 +104,38 @@ def summary(capture: Capture, results: list[tuple[int, HidPenDecoder, PenColumns
     return "\n".join(lines)
 
 
+def read_capture_columns(path: str) -> CaptureColumns:
+    """Parse a capture a chunk of lines at a time (a pipe or FIFO works; a UTF-8 BOM is skipped); an unreadable
+    file is a one-line error."""
+    try:
+        with open(path, "rb") as f:
+            return parse_capture_file(f, path)
+    except OSError as exc:
+        raise CaptureFormatError(f"cannot read capture: {exc.strerror or exc}", path) from None
+
+
+def stream_decode(capture: CaptureColumns, write: Callable[[PenColumns, TextIO], None], out: TextIO, head: str = ""
+                  ) -> list[tuple[int, HidPenDecoder, None]]:
+    """Decode each device of a parsed capture a chunk at a time, writing ``head`` and then each chunk as it is
+    decoded."""
+    results: list[tuple[int, HidPenDecoder, None]] = []
+    for device in capture.devices:
+        decoder = _decoder_of(capture.path, device)
+        rows = capture.rows_of(device.index)
+        out.write(head)
+        for cols in decode_in_chunks(decoder, capture.t[rows], lambda a, b, r=rows: capture.reports(r[a:b]),
+                                     capture.line[rows]):
+            write(cols, out)
+        results.append((device.index, decoder, None))
+    return results
+
+
 def run(args: argparse.Namespace) -> int:
-    capture = read_capture(args.file)
-    results = decode_capture(capture)
-    writer = write_jsonl if args.format == "jsonl" else write_text
-    for _, _, cols in results:
-        writer(cols, sys.stdout)
+    capture = read_capture_columns(args.file)
+    if args.format == "jsonl":
+        results = stream_decode(capture, write_jsonl, sys.stdout)
+    else:
+        results = stream_decode(capture, _write_text_rows, sys.stdout, TEXT_HEADER + "\n")
     sys.stdout.flush()
     print(summary(capture, results), file=sys.stderr)
     return 0

@@ -23,10 +23,26 @@ def _number(v: float) -> str:
     return "NaN" if v != v else ("Infinity" if v > 0 else "-Infinity")
 
 
-def _rounded(col: np.ndarray, digits: int, none_if_nan: bool = False) -> list[str]:
-    """``round(v, digits)`` of each value as JSON text, each distinct value formatted once."""
+def _as_rounded(values: np.ndarray, digits: int) -> list[str]:
+    """``round(v, digits)`` of each value as JSON text.
+
+    A value that numpy's rounding leaves unchanged is already what ``round`` gives (it is the double nearest a
+    number of ``digits`` decimals, and for magnitudes below 1e9 Python's exact rounding keeps it), so only the
+    others go through ``round``."""
+    same = (np.round(values, digits) == values) & (np.abs(values) < 1e9)
+    if same.all():
+        return list(map(repr, values.tolist()))
+    return [repr(v) if s else _number(round(v, digits)) for v, s in zip(values.tolist(), same.tolist(), strict=True)]
+
+
+def _rounded(col: np.ndarray, digits: int, none_if_nan: bool = False, distinct: bool = True) -> list[str]:
+    """``round(v, digits)`` of each value as JSON text; with ``distinct``, each distinct value formatted once."""
+    if not distinct and not none_if_nan:
+        return _as_rounded(col, digits)
     values, inverse = np.unique(col, return_inverse=True)
-    text = [("null" if none_if_nan and v != v else _number(round(v, digits))) for v in values.tolist()]
+    text = _as_rounded(values, digits)
+    if none_if_nan:
+        text = ["null" if v != v else x for v, x in zip(values.tolist(), text, strict=True)]
     if none_if_nan and len(values) and values[-1] != values[-1]:  # np.unique keeps every NaN apart
         nan_at = np.flatnonzero(np.isnan(values))
         text = text[: nan_at[0]] + ["null"] * len(nan_at)
@@ -44,6 +60,6 @@ def format_jsonl(cols: PenColumns) -> str:
         _rounded(cols.tilt_x, 2, True), _rounded(cols.tilt_y, 2, True), cols.report.tolist(), strict=True)]
     return "".join([
         f'{{"t": {t}, "x": {x}, "y": {y}, "p": {p}, {f}{rest}' for t, x, y, p, f, rest in zip(
-            _rounded(cols.t, 6), _rounded(cols.x, 6), _rounded(cols.y, 6), _rounded(cols.p, 6), flags, tail,
-            strict=True)
+            _rounded(cols.t, 6, distinct=False), _rounded(cols.x, 6), _rounded(cols.y, 6), _rounded(cols.p, 6),
+            flags, tail, strict=True)
     ])

@@ -89,16 +89,24 @@ def _bit(m: np.ndarray, bit: int | None) -> np.ndarray:
     return (m[:, bit // 8] >> (bit % 8)) & 1 == 1
 
 
-def _normalise(raw: np.ndarray, v: ValueField, use: np.ndarray) -> tuple[np.ndarray, bool]:
-    lo, hi = v.lo, v.hi
-    if use.any():
+def _normalise(raw: np.ndarray, v: ValueField, use: np.ndarray, name: str, learned: dict, seen: dict
+               ) -> tuple[np.ndarray, bool]:
+    """Scale ``raw`` to 0..1 by the range ``learned[name]`` or else the declared one widened to the ``use`` rows;
+    the range used goes to ``seen[name]``."""
+    lo, hi = learned.get(name, (v.lo, v.hi))
+    if name not in learned and use.any():
         lo, hi = min(lo, int(raw[use].min())), max(hi, int(raw[use].max()))
+    seen[name] = (lo, hi)
     widened = (lo, hi) != (v.lo, v.hi)
     return np.clip((raw - lo) / (hi - lo), 0.0, 1.0), widened
 
 
-def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.ndarray) -> tuple[dict, np.ndarray]:
-    """Decode the rows of one report id; return columns and the mask of rows that are samples."""
+def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.ndarray, learned: dict, seen: dict
+                  ) -> tuple[dict, np.ndarray]:
+    """Decode the rows of one report id; return columns and the mask of rows that are samples.
+
+    What the rows teach (ranges, the in-range polarity's counts) is taken from ``learned`` when there, else from
+    the rows, and goes to ``seen``: see `decode_batch`."""
     keep = np.ones(len(m), dtype=bool)
     if lay.frame_byte is not None:
         index, mask, values = lay.frame_byte
@@ -127,7 +135,7 @@ def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.n
     else:
         tip = erase.copy()
     if rp is not None:
-        p, p_wide = _normalise(rp, lay.pressure, keep)
+        p, p_wide = _normalise(rp, lay.pressure, keep, "pressure", learned, seen)
         if lay.b1 is not None or lay.b2 is not None:
             tip &= ~((rp <= lay.pressure.lo) & (b1 | b2))
         p = np.where(tip, p, 0.0)
@@ -138,16 +146,16 @@ def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.n
         in_value = not lay.in_range_inverted
         if lay.learn_in_range:
             strong = keep & (tip | (p > 0) | b1 | b2)
-            if strong.any():
-                in_value = bool(np.count_nonzero(ib[strong]) * 2 >= np.count_nonzero(strong))
-            elif keep.any():
-                in_value = bool(np.count_nonzero(ib[keep]) * 2 >= np.count_nonzero(keep))
+            counts = (np.count_nonzero(strong), np.count_nonzero(ib[strong]), np.count_nonzero(keep),
+                      np.count_nonzero(ib[keep]))
+            seen["in_counts"] = counts
+            in_value = learned.get("in_value", polarity(counts, in_value))
         rng = (ib == in_value) | tip
     else:
         rng = np.ones(len(m), dtype=bool)
     rx, ry = _raw(m, lay.x), _raw(m, lay.y)
-    x, x_wide = _normalise(rx, lay.x, keep & rng)
-    y, y_wide = _normalise(ry, lay.y, keep & rng)
+    x, x_wide = _normalise(rx, lay.x, keep & rng, "x", learned, seen)
+    y, y_wide = _normalise(ry, lay.y, keep & rng, "y", learned, seen)
     for name, wide in (("x", x_wide), ("y", y_wide), ("pressure", p_wide)):
         if wide:
             stats.widened.add(f"0x{lay.report_id:02x} {name}")
@@ -159,6 +167,14 @@ def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.n
         else:
             cols[name] = np.clip(_raw(m, tv) * tv.scale + tv.offset, -TILT_LIMIT, TILT_LIMIT)
     return cols, keep
+
+
+def polarity(counts: tuple[int, int, int, int], default: bool) -> bool:
+    """The in-range bit's value while in range: the majority of the strong rows', else of all kept rows'."""
+    strong, strong_set, kept, kept_set = counts
+    if strong:
+        return strong_set * 2 >= strong
+    return kept_set * 2 >= kept if kept else default
 
 
 def _ignore_rows(stats: DecodeStats, lines: np.ndarray, reason: str) -> None:
@@ -174,6 +190,11 @@ def decode_batch(
     times: Sequence[float] | np.ndarray,
     reports: Sequence[bytes],
     lines: Sequence[int] | None = None,
+    *,
+    learned: dict[int, dict] | None = None,
+    seen: dict[int, dict] | None = None,
+    stats: DecodeStats | None = None,
+    t_before: float | None = None,
 ) -> PenColumns:
     """Decode a whole sequence of reports; counts go to ``decoder.stats`` as in streaming mode.
 
@@ -182,14 +203,24 @@ def decode_batch(
         times: the time of each report.
         reports: the raw reports.
         lines: where each report came from (capture line numbers), for the summary.
+        learned: per report id, what the whole capture taught (``"pressure"``, ``"x"``, ``"y"``: ranges;
+            ``"in_value"``: the in-range polarity), used instead of learning from these reports alone: a capture
+            decoded a chunk at a time then gives the samples the whole capture at once would (`hid_chunks`).
+        seen: filled per report id with the ranges used and ``"in_counts"`` (polarity counts) of these reports.
+        stats: where the counts go instead of ``decoder.stats``.
+        t_before: the time of the report before these, to count time going backwards across chunks.
     """
     n = len(reports)
-    stats = decoder.stats
+    stats = decoder.stats if stats is None else stats
+    learned = {} if learned is None else learned
+    seen = {} if seen is None else seen
     t_all = np.asarray(times, dtype=np.float64)
     line_arr = np.asarray(lines if lines is not None else range(n), dtype=np.int64)
     stats.reports += n
     if n > 1:
         stats.backwards += int(np.count_nonzero(np.diff(t_all) < 0))
+    if n and t_before is not None and t_all[0] < t_before:
+        stats.backwards += 1
     lengths = np.fromiter((len(r) for r in reports), dtype=np.int64, count=n)
     empty = lengths == 0
     _ignore_rows(stats, line_arr[empty], "empty report")
@@ -214,7 +245,7 @@ def decode_batch(
         length = lay.length
         blob = b"".join(reports[i][:length] for i in members.tolist())
         m = np.frombuffer(blob, dtype=np.uint8).reshape(len(members), length)
-        cols, keep = _decode_group(lay, m, stats, line_arr[members])
+        cols, keep = _decode_group(lay, m, stats, line_arr[members], learned.get(rid, {}), seen.setdefault(rid, {}))
         cols = {k: v[keep] for k, v in cols.items()}
         cols["report"] = np.full(int(keep.sum()), rid, dtype=np.uint8)
         parts.append((members[keep], cols))
