@@ -121,10 +121,9 @@ def stream_decode(capture: CaptureColumns, write: Callable[[PenColumns, TextIO],
     results: list[tuple[int, HidPenDecoder, None]] = []
     for device in capture.devices:
         decoder = _decoder_of(capture.path, device)
-        rows = capture.rows_of(device.index)
+        times, lines, take = capture.of_device(device.index)
         out.write(head)
-        for cols in decode_in_chunks(decoder, capture.t[rows], lambda a, b, r=rows: capture.reports(r[a:b]),
-                                     capture.line[rows]):
+        for cols in decode_in_chunks(decoder, times, take, lines):
             write(cols, out)
         results.append((device.index, decoder, None))
     return results

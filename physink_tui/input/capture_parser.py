@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 from array import array
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import BinaryIO
 
@@ -25,7 +25,7 @@ _HEX_NUMBER = re.compile(r"[0-9a-fA-F]+\Z")
 _FAST_EVENTS = re.compile(r"^E: (\d+(?:\.\d+)?) (\d+)((?: [0-9a-fA-F]{2})*)[ \t\r]*$", re.ASCII | re.MULTILINE)
 """A run of well-formed ``E:`` lines, one match per line (the hex group keeps each byte's leading space)."""
 _KINDS = "#, D:, R:, N:, P:, I: or E:"
-CHUNK_BYTES = 1 << 22
+CHUNK_BYTES = 1 << 20
 """Bytes of whole lines read and parsed at a time from a file."""
 
 
@@ -54,14 +54,27 @@ class CaptureColumns:
     def __len__(self) -> int:
         return len(self.t)
 
-    def rows_of(self, device_index: int) -> np.ndarray:
-        """Positions of one device's reports, in file order."""
+    def rows_of(self, device_index: int) -> np.ndarray | slice:
+        """Positions of one device's reports, in file order (a slice when the capture has one device: no copies)."""
+        if len(self.devices) == 1:
+            return slice(0, len(self.t)) if self.devices[0].index == device_index else slice(0, 0)
         return np.flatnonzero(self.device == device_index)
 
-    def reports(self, rows: np.ndarray) -> list[bytes]:
-        """The reports at ``rows``."""
-        blob, offsets = self.blob, self.offsets.tolist()
-        return [blob[offsets[k]:offsets[k + 1]] for k in rows.tolist()]
+    def of_device(self, index: int) -> tuple[np.ndarray, np.ndarray, Callable[[int, int], list[bytes]]]:
+        """One device's report times, lines, and ``take(a, b)`` giving its reports ``a:b``."""
+        rows = self.rows_of(index)
+        if isinstance(rows, slice):
+            return self.t[rows], self.line[rows], lambda a, b: self.reports(slice(a, b))
+        return self.t[rows], self.line[rows], lambda a, b: self.reports(rows[a:b])
+
+    def reports(self, rows: np.ndarray | slice) -> list[bytes]:
+        """The reports at ``rows`` (positions or a slice)."""
+        blob = self.blob
+        if isinstance(rows, slice):
+            starts, ends = self.offsets[:-1][rows], self.offsets[1:][rows]
+        else:
+            starts, ends = self.offsets[rows], self.offsets[rows + 1]
+        return [blob[a:b] for a, b in zip(starts.tolist(), ends.tolist(), strict=True)]
 
 
 @dataclass(slots=True)
@@ -344,13 +357,12 @@ class CaptureParser:
                 raise self.error(
                     f"device {dev.index} has no report descriptor ('R:' line); it starts here", dev.first_line
                 )
-        t = np.frombuffer(self.t, dtype=np.float64) if len(self.t) else np.zeros(0)
-        line = np.asarray(self.line, dtype=np.int64)
-        device = np.asarray(self.device, dtype=np.int64)
-        lengths = np.asarray(self.lengths, dtype=np.int64)
+        t, line, device, lengths = (np.frombuffer(a, dtype=np.float64 if a.typecode == "d" else np.int64)
+                                    for a in (self.t, self.line, self.device, self.lengths))  # views, no copies
         offsets = np.zeros(len(t) + 1, dtype=np.int64)
         np.cumsum(lengths, out=offsets[1:])
         blob = bytes(self.blob)
+        del self.blob[:]
         keep = self.drop_glitches(t, device, line, lengths)
         if not keep.all():
             kept = np.flatnonzero(keep)
@@ -361,7 +373,7 @@ class CaptureParser:
             np.cumsum(ends - starts, out=offsets[1:])
         self.bad.sort(key=lambda b: b.line)
         return CaptureColumns(tuple(d.build() for d in self.devices.values()), tuple(self.bad), self.path,
-                              t.copy(), line, device, offsets, blob)
+                              t, line, device, offsets, blob)
 
 
 def parse_capture_file(f: BinaryIO, path: str | None, chunk_bytes: int = CHUNK_BYTES) -> CaptureColumns:

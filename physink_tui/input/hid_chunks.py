@@ -16,7 +16,7 @@ import numpy as np
 from physink_tui.input.hid_batch import PenColumns, decode_batch, polarity
 from physink_tui.input.hid_decoder import DecodeStats, HidPenDecoder
 
-CHUNK_REPORTS = 131072
+CHUNK_REPORTS = 65536
 """Reports decoded at a time."""
 
 

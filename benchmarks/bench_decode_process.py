@@ -1,0 +1,85 @@
+"""Benchmark: `physink decode` as a whole process beside a hid-tools script doing the same job, and its peak memory.
+
+hid-tools is GPL and never a dependency: `benchmarks/hidtools_decode.py` uses its public API from a scratch venv.
+
+    python3 -m venv /tmp/htvenv && /tmp/htvenv/bin/pip install hid-tools
+    .venv/bin/python benchmarks/bench_decode_process.py [--runs 5] [--hidtools-python /tmp/htvenv/bin/python]
+
+Both commands run as subprocesses (interpreter start-up included) writing their JSON lines to /dev/null,
+alternating, on the largest shared capture and on a big synthetic one made in /tmp by repeating that capture's
+events with increasing times (about 41 MB; never committed). Peak RSS is the child's ``ru_maxrss``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+SHARED = ROOT.parent / "shared" / "data" / "hid"
+LARGEST = SHARED / "digimend__KYE_EasyPen_M506__if0.hid"
+
+
+def make_big(source: Path, target: Path, megabytes: float) -> Path:
+    """``source``'s header and its events repeated, each copy 1 s after the last, until ``megabytes``."""
+    lines = source.read_text(encoding="utf-8").splitlines()
+    header = [x for x in lines if not x.startswith("E:")]
+    events = [x.split(" ", 2) for x in lines if x.startswith("E:")]
+    span = max(float(e[1]) for e in events) + 1.0
+    with target.open("w", encoding="utf-8") as f:
+        f.write("\n".join(header) + "\n")
+        copy = 0
+        while f.tell() < megabytes * 1e6:
+            f.write("".join(f"E: {float(e[1]) + copy * span:013.6f} {e[2]}\n" for e in events))
+            copy += 1
+    return target
+
+
+def run(cmd: list[str]) -> float:
+    """Wall seconds of one child process writing to /dev/null."""
+    start = time.perf_counter()
+    subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True,
+                   env={**os.environ, "PYTHONPATH": str(ROOT)})
+    return time.perf_counter() - start
+
+
+def peak_rss(cmd: list[str]) -> float:
+    """Peak RSS (MB) of one child, measured in a fresh process so earlier children do not count."""
+    probe = ("import resource, subprocess, sys; subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, "
+             "stderr=subprocess.DEVNULL, check=True); print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
+    out = subprocess.run([sys.executable, "-c", probe, *cmd], capture_output=True, text=True, check=True,
+                         env={**os.environ, "PYTHONPATH": str(ROOT)})
+    return int(out.stdout) / 1024
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--runs", type=int, default=5)
+    ap.add_argument("--big-runs", type=int, default=3, help="runs on the big capture (hid-tools takes ~40 s each)")
+    ap.add_argument("--hidtools-python", default="/tmp/htvenv/bin/python")
+    ap.add_argument("--big-mb", type=float, default=41.0)
+    args = ap.parse_args()
+    big = make_big(LARGEST, Path("/tmp/physink-bench-big.hid"), args.big_mb)
+    ours = [sys.executable, "-m", "physink_tui", "decode"]
+    theirs = [args.hidtools_python, str(ROOT / "benchmarks" / "hidtools_decode.py")]
+    print(f"python {sys.version.split()[0]}, {os.cpu_count()} cores; medians of alternating runs\n")
+    print("| capture | size | runs | physink decode | hid-tools script | ratio | physink peak RSS |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for path, runs in ((LARGEST, args.runs), (big, args.big_runs)):
+        a, b = [], []
+        for _ in range(runs):
+            a.append(run([*ours, str(path)]))
+            b.append(run([*theirs, str(path)]))
+        rss = peak_rss([*ours, str(path)])
+        ma, mb = statistics.median(a), statistics.median(b)
+        print(f"| {path.name} | {path.stat().st_size / 1e6:.1f} MB | {runs} | {ma:.3f} s | {mb:.3f} s "
+              f"| {mb / ma:.1f}x | {rss:.0f} MB |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
