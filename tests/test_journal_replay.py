@@ -56,3 +56,20 @@ def test_malformed_journal_line_is_one_line_error(tmp_path, capsys) -> None:
     assert main(["replay", str(journal), "--out", str(tmp_path / "out")]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "line 6" in err[0] and "bad.physink.jsonl" in err[0]
+
+
+def test_journal_is_read_and_decoded_once(tmp_path, capsys, monkeypatch) -> None:
+    """The replay lists the gestures the session decoded: each HID line is decoded once, the file read once."""
+    from physink_tui.input.hid_decoder import HidPenDecoder
+    from physink_tui.journal import reader
+
+    journal = tmp_path / "s.physink.jsonl"
+    make_journal(journal)
+    hid_lines = sum('"hid"' in line for line in journal.read_text().splitlines())
+    decoded, opened = [], []
+    real_decode, real_iter = HidPenDecoder.decode, reader.iter_journal
+    monkeypatch.setattr(HidPenDecoder, "decode", lambda self, *a, **k: decoded.append(1) or real_decode(self, *a, **k))
+    monkeypatch.setattr(reader, "iter_journal", lambda path: opened.append(path) or real_iter(path))
+    assert main(["replay", str(journal), "--out", str(tmp_path / "out")]) == 0
+    assert len(decoded) == hid_lines and len(opened) == 1
+    assert "5 strokes" in capsys.readouterr().err

@@ -27,6 +27,7 @@ from physink_tui.input.mapping import TabletMapping
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_layout import tablet_size
 from physink_tui.input.sources import RawReport, SourceEnded
+from physink_tui.journal.entries import DeviceEntry
 from physink_tui.journal.reader import read_journal
 from physink_tui.outputs import OutputFolder
 from physink_tui.project.codec import Project
@@ -69,11 +70,36 @@ def replay_capture(capture: Capture) -> tuple[list[Gesture], list[str]]:
     return gestures, notes
 
 
-def replay_journal(path: Path) -> tuple[list[Gesture], list[str], list[str]]:
-    """Gestures of a journal, the lines for its commands and utterances, and notes."""
-    from physink_tui.input.journal_replay import replay_journal_input  # the journal package is an edge too
+def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None) -> None:
+    """Read the journal once, run it through the session (which decodes it, once) and write the gestures the
+    session's input side found, DIR/project.json and, after a demonstration, the timeline."""
+    from physink_tui.input.journal_replay import decoder_notes, entry_line, pen_input_for
 
-    return replay_journal_input(path)
+    journal = read_journal(path)
+    pen = pen_input_for(journal.header, str(path), logged=True)
+    session = Session.from_header(journal.header)
+    session.pen = pen
+    if vocabulary is not None:
+        session.vocabulary = session.vocabulary.extended(vocabulary)
+    events: list[str] = []
+    for entry in journal.entries:
+        if isinstance(entry, DeviceEntry):
+            for device in entry.devices:
+                if device.id in pen.devices:  # a reconnected device: its gesture so far ends (listed, not sketched)
+                    pen.handle(SourceEnded(entry.t, device.id, None))
+        session.handle(entry)
+        if (line := entry_line(entry)) is not None:
+            events.append(line)
+    session.finish()
+    last_t = journal.entries[-1].t if journal.entries else 0.0
+    for device_id in list(pen.devices):
+        pen.handle(SourceEnded(last_t, device_id, None))
+    notes = list(journal.warnings)
+    if journal.truncated is not None:
+        notes.append(f"line {journal.truncated} is incomplete (the writer stopped mid-line); read up to it")
+    out = OutputFolder.prepare(out_dir)
+    _write_gestures(out, events, pen.log, notes + decoder_notes(pen))
+    write_session_outputs(session, out)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -91,10 +117,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     with regular_copy(path, data) as copy:
         try:
-            gestures, events, notes = replay_journal(copy)
-            out = OutputFolder.prepare(args.out)
-            _write_gestures(out, events, gestures, notes)
-            write_session_outputs(copy, out, vocabulary)
+            replay_journal(copy, args.out, vocabulary)
         except PhysinkError as exc:
             if copy == path:
                 raise
@@ -127,14 +150,8 @@ def read_vocabulary(path: str | None) -> Vocabulary | None:
     return parse_vocabulary(text, path)
 
 
-def write_session_outputs(path: Path, out: OutputFolder, vocabulary: Vocabulary | None = None) -> None:
-    """Run the journal through the session and write DIR/project.json (the sketch as it ends) and, after a
-    demonstration, the timeline; ``vocabulary`` adds words for phrases to those the journal's header gives."""
-    journal = read_journal(path)
-    session = Session.from_header(journal.header)
-    if vocabulary is not None:
-        session.vocabulary = session.vocabulary.extended(vocabulary)
-    session.run(journal.entries)
+def write_session_outputs(session: Session, out: OutputFolder) -> None:
+    """Write DIR/project.json (the sketch of a session that has run) and, after a demonstration, the timeline."""
     names = session.scene.names()
     timeline = None
     if session.timeline is not None:

@@ -16,12 +16,13 @@ from physink_tui.input.mapping import mapping_from_header
 from physink_tui.input.pen_input import PenInput
 from physink_tui.input.pen_sample import PenSample
 from physink_tui.input.pen_state import TipThresholds
-from physink_tui.input.sources import RawReport, SourceEnded
+from physink_tui.input.sources import RawReport, SourceEnded, SourceItem
 from physink_tui.journal.entries import (
     CommandEntry,
     DeviceEntry,
     HidEntry,
     JournalDevice,
+    JournalEntry,
     JournalHeader,
     PenEntry,
     SayEntry,
@@ -32,7 +33,26 @@ PEN_DEVICE = "pen"
 """The device id of journal ``pen`` lines (canvas samples from the mouse, serial tablets, scripts)."""
 
 
-def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
+class LoggedPenInput(PenInput):
+    """A `PenInput` that also keeps every gesture it returns in `log`: a replay lists the gestures of the session's
+    own decoding instead of decoding the journal a second time."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.log: list[Gesture] = []
+
+    def handle(self, item: SourceItem) -> list[Gesture]:
+        gestures = super().handle(item)
+        self.log += gestures
+        return gestures
+
+    def feed_canvas_sample(self, device_id: str, sample: PenSample) -> list[Gesture]:
+        gestures = super().feed_canvas_sample(device_id, sample)
+        self.log += gestures
+        return gestures
+
+
+def pen_input_for(header: JournalHeader, where: str = "journal", logged: bool = False) -> PenInput:
     """The input side a journal header describes: its devices' decoders, its mapping and tip thresholds, and
     the canvas-space device of its ``pen`` lines.
 
@@ -53,7 +73,8 @@ def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
     except ArithmeticError:
         raise JournalError(f'{where}: line 1: key "mapping": expected canvas and tablet proportions that leave a '
                            f'usable area, got canvas {header.canvas_width!r} x {header.canvas_height!r}') from None
-    pen = PenInput(mapping, GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up)))
+    config = GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up))
+    pen = (LoggedPenInput if logged else PenInput)(mapping, config)
     for device in header.devices:
         add_journal_device(pen, device, f"{where}: line 1")
     pen.add_sample_device(PEN_DEVICE, canvas_space=True)
@@ -68,6 +89,24 @@ def add_journal_device(pen: PenInput, device: JournalDevice, where: str) -> None
     except DescriptorError as exc:
         raise JournalError(f"{where}: device {device.id!r}: {exc}") from None
     pen.add_hid_device(device.id, decoder)
+
+
+def entry_line(entry: JournalEntry) -> str | None:
+    """A command's, utterance's or device line's row in the replay's listing (time first), else None."""
+    if isinstance(entry, CommandEntry):
+        args = " ".join(str(a) for a in entry.args)
+        return f"{entry.t:9.3f}  command       {entry.name} {args}".rstrip()
+    if isinstance(entry, SayEntry):
+        return f"{entry.t:9.3f}  said          {entry.text!r}"
+    if isinstance(entry, DeviceEntry):
+        return f"{entry.t:9.3f}  device        {', '.join(d.id for d in entry.devices)} appeared"
+    return None
+
+
+def decoder_notes(pen: PenInput) -> list[str]:
+    """Reports read and samples decoded per HID device, for a replay's summary."""
+    return [f"{device_id}: {d.decoder.stats.reports} reports, {d.decoder.stats.samples} pen samples"
+            for device_id, d in pen.devices.items() if d.decoder is not None]
 
 
 def replay_journal_input(path: str | os.PathLike[str]) -> tuple[list[Gesture], list[str], list[str]]:
@@ -86,24 +125,16 @@ def replay_journal_input(path: str | os.PathLike[str]) -> tuple[list[Gesture], l
                 sample = PenSample(entry.t, entry.x, entry.y, entry.p, entry.tip, entry.range, entry.eraser,
                                    entry.b1, entry.b2, None, None, 0)
                 gestures += pen.feed_canvas_sample(PEN_DEVICE, sample)
-            elif isinstance(entry, CommandEntry):
-                args = " ".join(str(a) for a in entry.args)
-                events.append(f"{entry.t:9.3f}  command       {entry.name} {args}".rstrip())
-            elif isinstance(entry, SayEntry):
-                events.append(f"{entry.t:9.3f}  said          {entry.text!r}")
             elif isinstance(entry, DeviceEntry):
                 for device in entry.devices:
                     if device.id in pen.devices:  # a reconnected device: its gesture so far ends here
                         gestures += pen.handle(SourceEnded(entry.t, device.id, None))
                     add_journal_device(pen, device, f"{reader.path}: line {reader.line}")
-                events.append(f"{entry.t:9.3f}  device        {', '.join(d.id for d in entry.devices)} appeared")
+            if (line := entry_line(entry)) is not None:
+                events.append(line)
     for device_id in list(pen.devices):
         gestures += pen.handle(SourceEnded(last_t, device_id, None))
     notes = list(reader.warnings)
     if reader.truncated is not None:
         notes.append(f"line {reader.truncated} is incomplete (the writer stopped mid-line); read up to it")
-    for device_id, device in pen.devices.items():
-        if device.decoder is not None:
-            stats = device.decoder.stats
-            notes.append(f"{device_id}: {stats.reports} reports, {stats.samples} pen samples")
-    return gestures, events, notes
+    return gestures, events, notes + decoder_notes(pen)
