@@ -35,31 +35,38 @@ def _as_rounded(values: np.ndarray, digits: int) -> list[str]:
     return [repr(v) if s else _number(round(v, digits)) for v, s in zip(values.tolist(), same.tolist(), strict=True)]
 
 
-def _rounded(col: np.ndarray, digits: int, none_if_nan: bool = False, distinct: bool = True) -> list[str]:
-    """``round(v, digits)`` of each value as JSON text; with ``distinct``, each distinct value formatted once."""
-    if not distinct and not none_if_nan:
-        return _as_rounded(col, digits)
+def _texts(col: np.ndarray, digits: int, before: str = "", after: str = "", distinct: bool = True,
+           nan: str = "NaN") -> list[str]:
+    """``before + round(v, digits) + after`` of each value as JSON text (NaN as ``nan``); with ``distinct``, each
+    distinct value is formatted once."""
+    if not distinct:
+        return [before + x + after for x in _as_rounded(col, digits)]
     values, inverse = np.unique(col, return_inverse=True)
-    text = _as_rounded(values, digits)
-    if none_if_nan:
-        text = ["null" if v != v else x for v, x in zip(values.tolist(), text, strict=True)]
-    if none_if_nan and len(values) and values[-1] != values[-1]:  # np.unique keeps every NaN apart
-        nan_at = np.flatnonzero(np.isnan(values))
-        text = text[: nan_at[0]] + ["null"] * len(nan_at)
-    return [text[i] for i in inverse.ravel().tolist()]
+    table = np.array([before + (nan if v != v else x) + after
+                      for v, x in zip(values.tolist(), _as_rounded(values, digits), strict=True)] or [""], dtype=object)
+    return table[inverse.ravel()].tolist()
 
 
 def format_jsonl(cols: PenColumns) -> str:
-    """The lines ``json.dumps`` of each sample's dict would give (values rounded to 6 decimals, tilt to 2)."""
-    if not len(cols):
+    """The lines ``json.dumps`` of each sample's dict would give (values rounded to 6 decimals, tilt to 2, absent
+    tilt null): each column's text is made in bulk and the pieces of all lines are joined once."""
+    n = len(cols)
+    if not n:
         return ""
     code = (cols.tip.astype(np.int64) | cols.range.astype(np.int64) << 1 | cols.eraser.astype(np.int64) << 2
             | cols.b1.astype(np.int64) << 3 | cols.b2.astype(np.int64) << 4)
-    flags = [_BOOL_TEXT[c] for c in code.tolist()]
-    tail = [f'"tilt_x": {a}, "tilt_y": {b}, "report": {r}}}\n' for a, b, r in zip(
-        _rounded(cols.tilt_x, 2, True), _rounded(cols.tilt_y, 2, True), cols.report.tolist(), strict=True)]
-    return "".join([
-        f'{{"t": {t}, "x": {x}, "y": {y}, "p": {p}, {f}{rest}' for t, x, y, p, f, rest in zip(
-            _rounded(cols.t, 6, distinct=False), _rounded(cols.x, 6), _rounded(cols.y, 6), _rounded(cols.p, 6),
-            flags, tail, strict=True)
-    ])
+    columns = [
+        ['{"t": '] * n,
+        _texts(cols.t, 6, distinct=False),
+        _texts(cols.x, 6, ', "x": '),
+        _texts(cols.y, 6, ', "y": '),
+        _texts(cols.p, 6, ', "p": ', ", "),
+        np.array(_BOOL_TEXT, dtype=object)[code].tolist(),
+        _texts(cols.tilt_x, 2, '"tilt_x": ', nan="null"),
+        _texts(cols.tilt_y, 2, ', "tilt_y": ', ', "report": ', nan="null"),
+        np.array([f"{r}}}\n" for r in range(256)], dtype=object)[cols.report].tolist(),
+    ]
+    pieces: list[str] = [""] * (n * len(columns))
+    for k, column in enumerate(columns):
+        pieces[k::len(columns)] = column
+    return "".join(pieces)
