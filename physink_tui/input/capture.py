@@ -23,12 +23,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from physink_tui.input.capture_parser import CaptureColumns, parse_capture_file, parse_capture_text
+from physink_tui.input.capture_parser import parse_capture_file, parse_capture_text
 from physink_tui.input.capture_types import (
     BAD_TEXT_MAX,
     GLITCH_SECONDS,
     MAX_SECONDS,
     BadLine,
+    CaptureColumns,
     CaptureDevice,
     CaptureEvent,
 )

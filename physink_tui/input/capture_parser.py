@@ -10,14 +10,22 @@ from __future__ import annotations
 
 import re
 from array import array
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import BinaryIO
 
 import numpy as np
 
 from physink_tui.errors import CaptureFormatError
-from physink_tui.input.capture_types import BAD_TEXT_MAX, GLITCH_SECONDS, MAX_SECONDS, BadLine, CaptureDevice
+from physink_tui.input.capture_events import strict_events
+from physink_tui.input.capture_types import (
+    BAD_TEXT_MAX,
+    GLITCH_SECONDS,
+    MAX_SECONDS,
+    BadLine,
+    CaptureColumns,
+    CaptureDevice,
+)
 
 _TIME = re.compile(r"\d+(?:\.\d+)?\Z", re.ASCII)
 _HEX_TOKEN = re.compile(r"[0-9a-fA-F]{2}\Z")
@@ -27,54 +35,6 @@ _FAST_EVENTS = re.compile(r"^E: (\d+(?:\.\d+)?) (\d+)((?: [0-9a-fA-F]{2})*)[ \t\
 _KINDS = "#, D:, R:, N:, P:, I: or E:"
 CHUNK_BYTES = 1 << 20
 """Bytes of whole lines read and parsed at a time from a file."""
-
-
-@dataclass(frozen=True, slots=True)
-class CaptureColumns:
-    """A parsed capture with its reports as columns (what `Capture` holds as objects).
-
-    Attributes:
-        devices: as `Capture.devices`.
-        bad_lines: as `Capture.bad_lines`.
-        path: the file, or None.
-        t: float64 seconds of each report, file order. line: int64 source lines. device: int64 ``D:`` indexes.
-        offsets: int64, ``len(t) + 1`` of them: report ``k`` is ``blob[offsets[k]:offsets[k + 1]]``.
-        blob: every report's bytes, concatenated.
-    """
-
-    devices: tuple[CaptureDevice, ...]
-    bad_lines: tuple[BadLine, ...]
-    path: str | None
-    t: np.ndarray
-    line: np.ndarray
-    device: np.ndarray
-    offsets: np.ndarray
-    blob: bytes
-
-    def __len__(self) -> int:
-        return len(self.t)
-
-    def rows_of(self, device_index: int) -> np.ndarray | slice:
-        """Positions of one device's reports, in file order (a slice when the capture has one device: no copies)."""
-        if len(self.devices) == 1:
-            return slice(0, len(self.t)) if self.devices[0].index == device_index else slice(0, 0)
-        return np.flatnonzero(self.device == device_index)
-
-    def of_device(self, index: int) -> tuple[np.ndarray, np.ndarray, Callable[[int, int], list[bytes]]]:
-        """One device's report times, lines, and ``take(a, b)`` giving its reports ``a:b``."""
-        rows = self.rows_of(index)
-        if isinstance(rows, slice):
-            return self.t[rows], self.line[rows], lambda a, b: self.reports(slice(a, b))
-        return self.t[rows], self.line[rows], lambda a, b: self.reports(rows[a:b])
-
-    def reports(self, rows: np.ndarray | slice) -> list[bytes]:
-        """The reports at ``rows`` (positions or a slice)."""
-        blob = self.blob
-        if isinstance(rows, slice):
-            starts, ends = self.offsets[:-1][rows], self.offsets[1:][rows]
-        else:
-            starts, ends = self.offsets[rows], self.offsets[rows + 1]
-        return [blob[a:b] for a, b in zip(starts.tolist(), ends.tolist(), strict=True)]
 
 
 @dataclass(slots=True)
@@ -170,7 +130,17 @@ class CaptureParser:
     def events(self, lines: list[str], first: int) -> None:
         """A run of lines starting ``"E: "``, the first being line ``first``: all at once when each is well formed."""
         dev = self.current
-        rows = _FAST_EVENTS.findall("\n".join(lines)) if dev is not None and dev.descriptor else ()
+        ready = dev is not None and bool(dev.descriptor)
+        strict = strict_events(lines, MAX_SECONDS) if ready else None
+        if strict is not None:  # the usual case: checked and read a column at a time
+            self.pending.clear()
+            self.t.frombytes(strict[0].tobytes())
+            self.line.frombytes(np.arange(first, first + len(lines), dtype=np.int64).tobytes())
+            self.device.frombytes(np.full(len(lines), dev.index, dtype=np.int64).tobytes())
+            self.lengths.frombytes(strict[1].tobytes())
+            self.blob += strict[2]
+            return
+        rows = _FAST_EVENTS.findall("\n".join(lines)) if ready else ()
         if len(rows) != len(lines):  # something to report, or no descriptor yet: line by line
             for k, raw in enumerate(lines):
                 self.slow_line(first + k, raw.strip())

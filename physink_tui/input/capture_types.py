@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
+
+import numpy as np
 
 BAD_TEXT_MAX = 80
 """`BadLine.text` keeps at most this many characters of the offending line."""
@@ -72,3 +75,51 @@ class BadLine:
     line: int
     text: str
     reason: str
+
+
+@dataclass(frozen=True, slots=True)
+class CaptureColumns:
+    """A parsed capture with its reports as columns (what `Capture` holds as objects).
+
+    Attributes:
+        devices: as `Capture.devices`.
+        bad_lines: as `Capture.bad_lines`.
+        path: the file, or None.
+        t: float64 seconds of each report, file order. line: int64 source lines. device: int64 ``D:`` indexes.
+        offsets: int64, ``len(t) + 1`` of them: report ``k`` is ``blob[offsets[k]:offsets[k + 1]]``.
+        blob: every report's bytes, concatenated.
+    """
+
+    devices: tuple[CaptureDevice, ...]
+    bad_lines: tuple[BadLine, ...]
+    path: str | None
+    t: np.ndarray
+    line: np.ndarray
+    device: np.ndarray
+    offsets: np.ndarray
+    blob: bytes
+
+    def __len__(self) -> int:
+        return len(self.t)
+
+    def rows_of(self, device_index: int) -> np.ndarray | slice:
+        """Positions of one device's reports, in file order (a slice when the capture has one device: no copies)."""
+        if len(self.devices) == 1:
+            return slice(0, len(self.t)) if self.devices[0].index == device_index else slice(0, 0)
+        return np.flatnonzero(self.device == device_index)
+
+    def of_device(self, index: int) -> tuple[np.ndarray, np.ndarray, Callable[[int, int], list[bytes]]]:
+        """One device's report times, lines, and ``take(a, b)`` giving its reports ``a:b``."""
+        rows = self.rows_of(index)
+        if isinstance(rows, slice):
+            return self.t[rows], self.line[rows], lambda a, b: self.reports(slice(a, b))
+        return self.t[rows], self.line[rows], lambda a, b: self.reports(rows[a:b])
+
+    def reports(self, rows: np.ndarray | slice) -> list[bytes]:
+        """The reports at ``rows`` (positions or a slice)."""
+        blob = self.blob
+        if isinstance(rows, slice):
+            starts, ends = self.offsets[:-1][rows], self.offsets[1:][rows]
+        else:
+            starts, ends = self.offsets[rows], self.offsets[rows + 1]
+        return [blob[a:b] for a, b in zip(starts.tolist(), ends.tolist(), strict=True)]
