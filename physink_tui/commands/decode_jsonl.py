@@ -40,7 +40,8 @@ def _texts(col: np.ndarray, digits: int, before: str = "", after: str = "", dist
     """``before + round(v, digits) + after`` of each value as JSON text (NaN as ``nan``); with ``distinct``, each
     distinct value is formatted once."""
     if not distinct:
-        return [before + x + after for x in _as_rounded(col, digits)]
+        texts = _as_rounded(col, digits)
+        return texts if not (before or after) else [before + x + after for x in texts]
     values, inverse = np.unique(col, return_inverse=True)
     table = np.array([before + (nan if v != v else x) + after
                       for v, x in zip(values.tolist(), _as_rounded(values, digits), strict=True)] or [""], dtype=object)

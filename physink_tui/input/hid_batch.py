@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from operator import itemgetter
 
 import numpy as np
 
@@ -221,10 +222,12 @@ def decode_batch(
         stats.backwards += int(np.count_nonzero(np.diff(t_all) < 0))
     if n and t_before is not None and t_all[0] < t_before:
         stats.backwards += 1
-    lengths = np.fromiter((len(r) for r in reports), dtype=np.int64, count=n)
+    lengths = np.fromiter(map(len, reports), dtype=np.int64, count=n)
     empty = lengths == 0
     _ignore_rows(stats, line_arr[empty], "empty report")
-    if decoder.uses_ids:
+    if decoder.uses_ids and not empty.any():
+        rids = np.fromiter(map(itemgetter(0), reports), dtype=np.int64, count=n)
+    elif decoder.uses_ids:
         rids = np.fromiter((r[0] if r else 0 for r in reports), dtype=np.int64, count=n)
     else:
         rids = np.zeros(n, dtype=np.int64)
@@ -243,7 +246,10 @@ def decode_batch(
         if not len(members):
             continue
         length = lay.length
-        blob = b"".join(reports[i][:length] for i in members.tolist())
+        if (lengths[members] == length).all():
+            blob = b"".join(map(reports.__getitem__, members.tolist()))
+        else:
+            blob = b"".join([reports[i][:length] for i in members.tolist()])
         m = np.frombuffer(blob, dtype=np.uint8).reshape(len(members), length)
         cols, keep = _decode_group(lay, m, stats, line_arr[members], learned.get(rid, {}), seen.setdefault(rid, {}))
         cols = {k: v[keep] for k, v in cols.items()}
