@@ -69,3 +69,10 @@ def test_random_values_at_every_scale_match_json_dumps() -> None:
                              np.round(rng.random(3000) * 1e4, 6), rng.integers(0, 4096, 3000) / 4095])
     cols = _cols(t=values, x=values[::-1].copy(), p=values, tilt_x=(values - 0.5) * 120)
     assert format_jsonl(cols) == _old_lines(cols)
+
+
+def test_times_made_from_integers_match_json_dumps() -> None:
+    stamps = [-0.0, 0.0, 0.0001, 0.00009, 0.000001, 999999999.999999, 1e9, 5.0, 0.1, 128.75182, 1e-4 + 1e-10,
+              float("nan"), float("inf"), 3.0000005, 12345.000010]
+    cols = _cols(t=stamps)
+    assert format_jsonl(cols) == _old_lines(cols)
