@@ -17,7 +17,7 @@ from physink_tui.input.hid_chunks import decode_in_chunks
 from physink_tui.input.hid_decoder import HidPenDecoder
 from physink_tui.input.vendor_init import find_vendor_init
 
-CHUNK_ROWS = 65536
+CHUNK_ROWS = 16384
 """Samples formatted and written at a time."""
 TEXT_HEADER = "       t        x        y        p tip rng era b1 b2  tilt_x  tilt_y  report"
 
