@@ -77,3 +77,14 @@ def test_two_devices_stream_as_the_whole_capture_decodes(tmp_path, capsys, fmt) 
     assert out == expected.getvalue() and (fmt == "jsonl" or out.count(TEXT_HEADER) == 2)
     assert err.strip() == summary(capture, whole)
     assert "device 1" in err
+
+
+def test_a_bad_second_descriptor_stops_decode_before_any_output(tmp_path, capsys) -> None:
+    from physink_tui.cli import main
+
+    lines = (RECORDED / "uclogic-v1-strokes.hid").read_text().splitlines()
+    path = tmp_path / "bad.hid"
+    path.write_text("D: 0\n" + "\n".join(lines) + "\nD: 1\nR: 4 05 0d c0 c0\nN: Broken\n")
+    assert main(["decode", str(path)]) == 1
+    out, err = capsys.readouterr()
+    assert out == "" and "device 1 (Broken)" in err

@@ -117,15 +117,13 @@ def read_capture_columns(path: str) -> CaptureColumns:
 def stream_decode(capture: CaptureColumns, write: Callable[[PenColumns, TextIO], None], out: TextIO, head: str = ""
                   ) -> list[tuple[int, HidPenDecoder, None]]:
     """Decode each device of a parsed capture a chunk at a time, writing ``head`` and then each chunk as it is
-    decoded."""
-    results: list[tuple[int, HidPenDecoder, None]] = []
-    for device in capture.devices:
-        decoder = _decoder_of(capture.path, device)
-        times, lines, take = capture.of_device(device.index)
+    decoded (every device's decoder is made first: a bad descriptor stops the run before anything is written)."""
+    results = [(device.index, _decoder_of(capture.path, device), None) for device in capture.devices]
+    for index, decoder, _ in results:
+        times, lines, take = capture.of_device(index)
         out.write(head)
         for cols in decode_in_chunks(decoder, times, take, lines):
             write(cols, out)
-        results.append((device.index, decoder, None))
     return results
 
 
