@@ -232,7 +232,7 @@ def decode_batch(
     else:
         rids = np.zeros(n, dtype=np.int64)
     parts: list[tuple[np.ndarray, dict]] = []
-    for rid in np.unique(rids[~empty]).tolist():
+    for rid in np.flatnonzero(np.bincount(rids[~empty], minlength=1)).tolist():  # ids present, ascending
         members = np.flatnonzero((rids == rid) & ~empty)
         lay = decoder.layouts.get(rid)
         if lay is None:
