@@ -22,7 +22,11 @@ def _pt(v: np.ndarray) -> tuple[float, float]:
     return (float(v[0]), float(v[1]))
 
 
-def round_geometry(ellipse: tuple, circle_ratio: float) -> tuple[Circle | Ellipse, str]:
+CIRCLE_RATIO = 0.8
+"""Minor/major axis ratio above which a round shape is a circle."""
+
+
+def round_geometry(ellipse: tuple, circle_ratio: float = CIRCLE_RATIO) -> tuple[Circle | Ellipse, str]:
     centre, rx, ry, angle, _ = ellipse
     if ry / rx >= circle_ratio:
         return Circle(_pt(centre), (rx + ry) / 2), "circle"

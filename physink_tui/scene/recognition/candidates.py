@@ -2,9 +2,9 @@
 
 Every candidate is measured on the same points (the stroke resampled along its length), so their errors compare:
 ``rss`` is the summed squared distance of those points to the candidate's shape, in the units the stroke is
-judged at, and ``params`` counts the numbers the shape needs (a line 4, a k-gon 2k, an ellipse 5, a cubic curve 6
-per segment + 2). `recognize` ranks them. Shapes are built from the stroke's own points (vertices are stroke
-points; arcs and ellipses span the stroke), so none reaches far outside it.
+judged at, and ``params`` counts the numbers the shape needs (a line 4, a k-segment polyline 2(k+1), a k-gon 2k,
+a circle 3, an ellipse 5). `recognize` ranks them. Vertices lie on or next to the stroke's own points, so no
+polygonal shape reaches far outside it; open strokes' curves and arcs are judged in `open_shapes`.
 """
 
 from __future__ import annotations
@@ -17,15 +17,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import arc_geometry, box_geometry, round_geometry
+from physink_tui.scene.recognition.beautify import box_geometry, round_geometry
 from physink_tui.scene.recognition.polygon_checks import corners_of, split_hairpins
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, best_polygons
-from physink_tui.scene.recognition.primitives import Box, Curve, Geometry, Line, Polygon, Polyline
-from physink_tui.scene.recognition.shape_fits import fit_circle, fit_cubic, fit_ellipse
+from physink_tui.scene.recognition.primitives import Box, Geometry, Line, Polygon, Polyline
+from physink_tui.scene.recognition.shape_fits import fit_ellipse
 
-CIRCLE_RATIO = 0.8
-"""Minor/major axis ratio above which an ellipse is a circle."""
 MAX_SIDES = 10
 """The most sides a polygon or polyline candidate may have."""
 
@@ -39,14 +36,12 @@ class Candidate:
         geometry: its beautified shape, in the units the stroke was judged at.
         rss: summed squared distance of the judged points to the shape (those units squared).
         params: how many numbers the shape needs (its complexity).
-        sides: segments of a polyline or polygon, else 0.
     """
 
     kind: str
     geometry: Geometry
     rss: float
     params: int
-    sides: int = 0
 
 
 def _pt(p: np.ndarray) -> tuple[float, float]:
@@ -88,8 +83,7 @@ def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float
         capped = next(((f, c) for f, c in judged if c is not None and c.hairpins), None)
         if capped is not None:  # thin walls drawn as hairpins: their ends made flat, two corners each
             verts = split_hairpins(*capped)
-            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), capped[0].rss, 2 * len(verts),
-                                 len(verts)))
+            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), capped[0].rss, 2 * len(verts)))
     found = next(((f, c) for f, c in judged if c is not None and not c.hairpins), None)
     if found is None:
         return out
@@ -97,13 +91,13 @@ def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float
     if closed:
         box = box_geometry(verts) if k == 4 else None
         if box is not None:
-            out.append(Candidate("box", _box_from_sides(box, fit), fit.rss, 8, 4))
+            out.append(Candidate("box", _box_from_sides(box, fit), fit.rss, 8))
         else:
-            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k, k))
+            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k))
     elif k == 1:
-        out.append(Candidate("line", Line(_pt(verts[0]), _pt(verts[-1])), fit.rss, 4, 1))
+        out.append(Candidate("line", Line(_pt(verts[0]), _pt(verts[-1])), fit.rss, 4))
     else:
-        out.append(Candidate("polyline", Polyline(tuple(map(_pt, verts))), fit.rss, 2 * (k + 1), k))
+        out.append(Candidate("polyline", Polyline(tuple(map(_pt, verts))), fit.rss, 2 * (k + 1)))
     return out
 
 
@@ -149,80 +143,5 @@ def round_shape(work: np.ndarray) -> Candidate | None:
     if not (math.isfinite(rx) and math.isfinite(ry)) or ry <= 0:
         return None
     rss = float(np.sum(ellipse_distances(work, centre, rx, ry, angle) ** 2))
-    geometry, kind = round_geometry(ellipse, CIRCLE_RATIO)
+    geometry, kind = round_geometry(ellipse)
     return Candidate(kind, geometry, rss, 3 if kind == "circle" else 5)
-
-
-def arc(work: np.ndarray) -> Candidate | None:
-    """Part of a circle, turning one way by less than 1.8 pi."""
-    centre, radius, _ = fit_circle(work)
-    if not math.isfinite(radius):
-        return None
-    geometry = arc_geometry(work, centre, radius)
-    if not 0.3 < abs(geometry.sweep) < 1.8 * math.pi:
-        return None
-    rss = float(np.sum((np.hypot(*(work - centre).T) - radius) ** 2))
-    return Candidate("arc", geometry, rss, 5)
-
-
-def curve(work: np.ndarray, corners: list[int], tolerance: float) -> Candidate:
-    """Cubic Bézier segments between the stroke's sharp corners, split until each fits within ``tolerance``
-    (an absolute distance)."""
-    ctrl: list[tuple[float, float]] = [_pt(work[0])]
-    rss = 0.0
-    segments = 0
-
-    def add(a: int, b: int, depth: int) -> None:
-        nonlocal rss, segments
-        run = work[a:b + 1]
-        cubic, fitted = fit_cubic_points(run)
-        dist = np.hypot(*(fitted - run).T)
-        if float(dist.max()) > tolerance and depth < 5 and b - a >= 8:
-            mid = (a + b) // 2
-            add(a, mid, depth + 1)
-            add(mid, b, depth + 1)
-            return
-        rss += float(np.sum(dist ** 2))
-        segments += 1
-        ctrl.extend(_pt(p) for p in cubic[1:])
-
-    for a, b in itertools.pairwise(corners):
-        add(a, b, 0)
-    return Candidate("curve", Curve(tuple(ctrl)), rss, 6 * segments + 2, segments)
-
-
-def fit_cubic_points(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """One cubic Bézier through the run's ends and the fitted points at the run's own parameters."""
-    ctrl, _ = fit_cubic(run)
-    n = len(run)
-    seg = np.hypot(*np.diff(run, axis=0).T)
-    u = np.concatenate([[0.0], np.cumsum(seg)])
-    u = u / u[-1] if u[-1] else np.linspace(0, 1, n)
-    b = np.column_stack([(1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3])
-    return ctrl, b @ ctrl
-
-
-def sharp_corners(work: np.ndarray, min_turn_deg: float = 100.0, reach: int = 3) -> list[int]:
-    """Indices (ends included) where the path turns by at least ``min_turn_deg`` within a few points: the
-    cusps a smooth curve must break at (a caret's tip), not the bends it follows."""
-    th = sg.turning(work)
-    n = len(work)
-    if n < 2 * reach + 3:
-        return [0, n - 1]
-    window = np.convolve(th, np.ones(2 * reach + 1), mode="same")
-    strong = np.abs(window) >= math.radians(min_turn_deg)
-    out = [0]
-    i = 0
-    while i < len(strong):
-        if strong[i]:
-            j = i
-            while j < len(strong) and strong[j]:
-                j += 1
-            k = i + int(np.argmax(np.abs(window[i:j])))
-            if k + 1 - out[-1] >= reach and n - 1 - (k + 1) >= reach:
-                out.append(k + 1)
-            i = j
-        else:
-            i += 1
-    out.append(n - 1)
-    return out

@@ -30,7 +30,6 @@ VERY_SHARP_CORNER = 100.0
 SHARP_CORNER = 62.0
 CORNER_SHARE = 0.45
 NEARLY_ROUND = 1.25
-CIRCLE_RATIO = 0.8
 
 
 def _pt(p: np.ndarray) -> tuple[float, float]:
@@ -87,7 +86,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)
         open_ellipse = fit_ellipse(work)
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
-            geom, kind = round_geometry(open_ellipse, CIRCLE_RATIO)
+            geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
     sharp = max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
     if len(straight_runs) >= 2 and sharp and (all(straight_runs) or _bent_polyline(work, th, corners, noise)):

@@ -9,7 +9,6 @@ import math
 import numpy as np
 
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.shape_fits import fit_line
 
 
 def drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fraction: float = 0.07) -> list[int]:
@@ -97,24 +96,6 @@ def heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) ->
     return angle(work[-1] - work[corners[-2]]) <= max_deg or angle(work[corners[1]] - work[0]) >= 180.0 - max_deg
 
 
-def trim_closed_hooks(work: np.ndarray, corners: list[int], length: float,
-                       ) -> tuple[np.ndarray, list[int]] | None:
-    """Cut a hook off either end of a closed stroke: a first or last piece shorter than 6 % of the
-    path that is not straight (a straight short piece is a side and stays)."""
-    start, end = 0, len(work) - 1
-    if len(corners) > 3:
-        a, b = corners[0], corners[1]
-        if sg.path_length(work[a:b + 1]) < 0.06 * length and sg.chord_deviation(work[a:b + 1]) >= 0.2:
-            start = b
-        a, b = corners[-2], corners[-1]
-        if sg.path_length(work[a:b + 1]) < 0.06 * length and sg.chord_deviation(work[a:b + 1]) >= 0.2:
-            end = a
-    if (start, end) == (0, len(work) - 1):
-        return None
-    kept = [c - start for c in corners if start <= c <= end]
-    return work[start:end + 1], kept
-
-
 def closure(work: np.ndarray, diag: float) -> float:
     """How nearly the stroke returns to its start, over its size: the gap between its ends, or, for a
     stroke drawn past its start (or started before it), twice the closest approach of one end to
@@ -159,63 +140,6 @@ def turn_concentration(th: np.ndarray) -> float:
         return 0.0
     k = max(1, len(a) // 5)
     return float(np.sort(a)[-k:].sum()) / total
-
-
-def polygon_vertices(work: np.ndarray, corners: list[int]) -> np.ndarray:
-    """The closed polygon's vertices: where its sides' fitted lines meet.
-
-    Sides are the runs between corners, with the runs on either side of the pen's start joined when
-    they continue each other (a shape started mid-side) and slivers under 4 % of the perimeter
-    dropped at the start or end (half a rounded corner on either side of the start), so neither where the pen started
-    nor how round the corners are moves a vertex.
-    """
-    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
-    if len(runs) >= 3:
-        first, last = runs[0], runs[-1]
-        d1, d2 = first[-1] - first[0], last[-1] - last[0]
-        norms = float(np.hypot(*d1) * np.hypot(*d2))
-        if norms and float(d1 @ d2) / norms > math.cos(math.radians(35)):
-            runs = [np.concatenate([last, first[1:]]), *runs[1:-1]]
-    perimeter = sum(sg.path_length(r) for r in runs)
-    # a sliver can only come from a corner the pen's start split in two: the first or last run
-    def sliver(run: np.ndarray) -> bool:  # short and bowed: half a rounded corner, not a short straight side
-        return sg.path_length(run) < 0.04 * perimeter and sg.chord_deviation(run) > 0.08
-
-    def crossing(a: np.ndarray, b: np.ndarray) -> bool:  # their lines meet at a real corner (not parallel)
-        da, db = a[-1] - a[0], b[-1] - b[0]
-        norms = float(np.hypot(*da) * np.hypot(*db))
-        return norms > 0 and abs(float(da @ db)) / norms < math.cos(math.radians(30))
-
-    # a rounded corner the pen's start split: its pieces sit at the ends, and the sides they join
-    # still meet at a corner once they are gone (a thin box's short end joins two parallel sides)
-    if len(runs) > 4 and sliver(runs[0]) and sliver(runs[-1]) and crossing(runs[-2], runs[1]):
-        runs = runs[1:-1]
-    elif len(runs) > 3 and sliver(runs[0]) and crossing(runs[-1], runs[1]):
-        runs = runs[1:]
-    elif len(runs) > 3 and sliver(runs[-1]) and crossing(runs[-2], runs[0]):
-        runs = runs[:-1]
-    if len(runs) < 3:
-        return np.array([r[0] for r in runs])
-    lines = []
-    for r in runs:
-        k = len(r)
-        chord = r[-1] - r[0]
-        span = float(np.hypot(*chord))
-        if sg.path_length(r) < 0.1 * perimeter and span > 0:
-            lines.append(((r[0] + r[-1]) / 2, chord / span))  # a short side: its rounded ends would tilt a fit
-            continue
-        core = r[int(k * 0.15): max(int(k * 0.85), int(k * 0.15) + 2)]
-        point, direction, _ = fit_line(core if len(core) >= 2 else r)
-        lines.append((point, direction))
-    verts = []
-    for (p1, d1), (p2, d2) in zip(lines[-1:] + lines[:-1], lines, strict=True):
-        denom = d1[0] * d2[1] - d1[1] * d2[0]
-        if abs(denom) < 1e-9:
-            verts.append((p1 + p2) / 2)
-            continue
-        t = ((p2 - p1)[0] * d2[1] - (p2 - p1)[1] * d2[0]) / denom
-        verts.append(p1 + t * d1)
-    return np.array(verts)
 
 
 def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8) -> list[float]:
