@@ -21,7 +21,7 @@ import statistics
 import time
 
 from physink_tui.journal.entries import JournalHeader, PenEntry
-from physink_tui.scene.world import World
+from physink_tui.scene.physics.world import World
 from physink_tui.session.session import Session
 
 Points = list[tuple[float, float]]

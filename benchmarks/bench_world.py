@@ -24,7 +24,7 @@ import time
 import pymunk
 
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Rope, Scene
-from physink_tui.scene.world import World
+from physink_tui.scene.physics.world import World
 
 
 def _box(body_id: str, x: float, y: float, w: float, h: float, angle: float = 0.0) -> Body:

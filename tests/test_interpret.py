@@ -7,7 +7,7 @@ import math
 import pytest
 
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Rope, Scene, Spring
-from physink_tui.scene.interpret import interpret
+from physink_tui.scene.interpretation.interpret import interpret
 from physink_tui.scene.recognition.primitives import Box, Circle, Curve, Helix, Line, Polygon, Recognition, XSymbol
 
 

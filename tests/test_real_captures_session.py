@@ -15,8 +15,8 @@ from physink_tui.commands.replay import replay_capture
 from physink_tui.input.capture import Capture
 from physink_tui.input.gestures import PenMove, StrokeEnded, Tap
 from physink_tui.journal.compose import capture_entries, header_for_capture
-from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body
+from physink_tui.scene.interpretation.body_shapes import body_geometry
 from physink_tui.session.session import Session
 
 HID = shared_path("hid", module_level=True)

@@ -13,7 +13,7 @@ from test_session import circle_points, pen_header, pen_stroke
 
 from physink_tui.journal.entries import CommandEntry, PenEntry
 from physink_tui.scene.components import BACKGROUND, Body, Joint
-from physink_tui.scene.interpret import interpret
+from physink_tui.scene.interpretation.interpret import interpret
 from physink_tui.scene.recognition.primitives import Box, Recognition
 from physink_tui.session.history import History
 from physink_tui.session.session import Session

@@ -11,8 +11,8 @@ import shapely
 
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Material, Rope, Scene, Spring
-from physink_tui.scene.world import GRAVITY, ContactRecord, World
-from physink_tui.scene.world_build import SPRING_UNITS
+from physink_tui.scene.physics.build import SPRING_UNITS
+from physink_tui.scene.physics.world import GRAVITY, ContactRecord, World
 
 G = GRAVITY[1]
 

@@ -9,10 +9,10 @@ import pymunk
 import pytest
 
 from physink_tui.scene.components import BACKGROUND, Body, Scene
-from physink_tui.scene.interpret import interpret
+from physink_tui.scene.interpretation.interpret import interpret
+from physink_tui.scene.physics.live import LiveWorld
+from physink_tui.scene.physics.world import World
 from physink_tui.scene.recognition.primitives import Box, Circle, Curve, Helix, Line, Recognition, XSymbol
-from physink_tui.scene.world import World
-from physink_tui.scene.world_live import LiveWorld
 
 
 def describe(world: World, scene: Scene) -> dict:
@@ -139,8 +139,8 @@ def test_a_spring_or_rope_between_fixed_bodies_builds_a_world() -> None:
 
 @pytest.mark.parametrize("seed", range(3))
 def test_the_live_worlds_index_gives_interpretation_the_same_answers_as_trying_every_body(seed: int) -> None:
-    from physink_tui.scene.interpret import bodies_at
-    from physink_tui.scene.overlaps import overlapped
+    from physink_tui.scene.interpretation.interpret import bodies_at
+    from physink_tui.scene.physics.overlaps import overlapped
 
     rng = random.Random(seed)
     scene = Scene()
@@ -165,7 +165,7 @@ def test_the_live_worlds_index_gives_interpretation_the_same_answers_as_trying_e
 
 
 def test_the_index_finds_the_edge_of_a_very_long_lines_strip() -> None:
-    from physink_tui.scene.interpret import bodies_at
+    from physink_tui.scene.interpretation.interpret import bodies_at
 
     scene = interpret(Scene(), Recognition("line", 1.0, Line((0.0, 500.0), (6000.0, 500.0))), []).scene
     live = LiveWorld.from_scene(scene)  # the strip is 24 units either side; the collision segment 2

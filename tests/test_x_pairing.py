@@ -7,8 +7,8 @@ import math
 import pytest
 from hand_x import hand_x
 
+from physink_tui.scene.interpretation.x_pairing import pair_x, x_arm
 from physink_tui.scene.recognition.recognize import recognize_stroke
-from physink_tui.scene.x_pairing import pair_x, x_arm
 
 
 def test_hand_drawn_xs_pair_whatever_the_recogniser_calls_their_arms() -> None:

@@ -8,9 +8,9 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from physink_tui.input.gestures import Dwell, PenMove
-from physink_tui.scene.body_shapes import body_size
-from physink_tui.scene.interpret import bodies_at
-from physink_tui.scene.world import World
+from physink_tui.scene.interpretation.body_shapes import body_size
+from physink_tui.scene.interpretation.interpret import bodies_at
+from physink_tui.scene.physics.world import World
 
 if TYPE_CHECKING:
     from physink_tui.session.session import Session

@@ -33,14 +33,14 @@ from physink_tui.journal.entries import (
     SayEntry,
 )
 from physink_tui.journal.writer import JournalWriter
-from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
-from physink_tui.scene.interpret import Near, bodies_at, interpret
-from physink_tui.scene.overlaps import overlapped, push_clear
+from physink_tui.scene.interpretation.body_shapes import body_geometry
+from physink_tui.scene.interpretation.interpret import Near, bodies_at, interpret
+from physink_tui.scene.interpretation.x_pairing import pair_x, x_arm
+from physink_tui.scene.physics.live import LiveWorld
+from physink_tui.scene.physics.overlaps import overlapped, push_clear
 from physink_tui.scene.recognition.primitives import Recognition
 from physink_tui.scene.recognition.recognize import recognize_stroke
-from physink_tui.scene.world_live import LiveWorld
-from physink_tui.scene.x_pairing import pair_x, x_arm
 from physink_tui.session import adjust, demo
 from physink_tui.session.history import History
 from physink_tui.timeline.events import Timeline

@@ -3,8 +3,8 @@ what, and which movable bodies touch at the start. Reads the scene only; steppin
 
 from __future__ import annotations
 
-from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import Joint, Rope, Scene, Spring
+from physink_tui.scene.interpretation.body_shapes import body_geometry
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.qualitative import outline_of
 from physink_tui.timeline.recorder import Recorder

@@ -16,8 +16,8 @@ from shapely.geometry import LineString, Polygon
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 
-from physink_tui.scene.body_shapes import body_geometry, body_size
 from physink_tui.scene.components import Body
+from physink_tui.scene.interpretation.body_shapes import body_geometry, body_size
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]  # min x, min y, max x, max y (canvas units, y down)

@@ -7,8 +7,8 @@ import math
 
 from shapely.geometry import LineString
 
-from physink_tui.scene.body_shapes import body_geometry
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope, Scene, Spring
+from physink_tui.scene.interpretation.body_shapes import body_geometry
 
 CENTROID_SHARE = 0.05
 """How far (share of the canvas diagonal) a body's centroid may be from its counterpart's."""

@@ -16,9 +16,9 @@ import pymunk
 
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Point, Rope, Scene, Spring
-from physink_tui.scene.world_build import Built, Pose, build
-from physink_tui.scene.world_contacts import ContactListener, ContactRecord
-from physink_tui.scene.world_speed import limit_speed
+from physink_tui.scene.physics.build import Built, Pose, build
+from physink_tui.scene.physics.contacts import ContactListener, ContactRecord
+from physink_tui.scene.physics.speed import limit_speed
 
 GRAVITY: Point = (0.0, 900.0)
 """Gravity in canvas units per second squared, pointing down the canvas (+y).

@@ -17,10 +17,10 @@ from typing import cast
 
 import pymunk
 
-from physink_tui.scene.body_shapes import THIN
 from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Rope, Scene
-from physink_tui.scene.world import DT, World
-from physink_tui.scene.world_build import add
+from physink_tui.scene.interpretation.body_shapes import THIN
+from physink_tui.scene.physics.build import add
+from physink_tui.scene.physics.world import DT, World
 
 NEAR_MARGIN = 16.0
 """Canvas units added round a query's box: a body's shapes and its area as interpret sees it (`body_geometry`) may

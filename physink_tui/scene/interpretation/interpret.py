@@ -19,7 +19,6 @@ import shapely
 import shapely.ops
 from shapely.geometry import MultiPoint, Point
 
-from physink_tui.scene.body_shapes import body_geometry, body_size, outline_of
 from physink_tui.scene.components import (
     BACKGROUND,
     MATERIALS,
@@ -30,6 +29,7 @@ from physink_tui.scene.components import (
     Spring,
     material_class,
 )
+from physink_tui.scene.interpretation.body_shapes import body_geometry, body_size, outline_of
 from physink_tui.scene.recognition.primitives import Circle, Ellipse, Helix, Line, Recognition, XSymbol
 
 JOINT_MAX_SIZE = 0.6

@@ -12,10 +12,10 @@ from dataclasses import replace
 
 from shapely.geometry import LineString
 
-from physink_tui.scene.body_shapes import body_geometry, body_size
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope, Scene, Spring
-from physink_tui.scene.interpret import Near
-from physink_tui.scene.world import World
+from physink_tui.scene.interpretation.body_shapes import body_geometry, body_size
+from physink_tui.scene.interpretation.interpret import Near
+from physink_tui.scene.physics.world import World
 
 OVERLAP = 0.02
 """A new body overlapping another by more than this share of its area is pushed clear."""
