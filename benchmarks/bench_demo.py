@@ -20,7 +20,7 @@ import sys
 import time
 from pathlib import Path
 
-from physink_tui.journal.reader import read_journal
+from physink_tui.formats.journal.reader import read_journal
 from physink_tui.session import demo as demo_mode
 from physink_tui.session.session import Session
 from physink_tui.timeline.recorder import Recorder

@@ -13,10 +13,10 @@ import statistics
 import time
 from pathlib import Path
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.hid_batch import decode_batch
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_descriptor import ReportDescriptor
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.batch import decode_batch
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.descriptor import ReportDescriptor
 
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "data" / "hid"
 

@@ -20,10 +20,10 @@ import threading
 import time
 from pathlib import Path
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_readers import HidrawReader
-from physink_tui.input.pen_input import PenInput
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.readers import HidrawReader
+from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.sources import RawReport, SourceEnded
 
 CAPTURE = Path(__file__).resolve().parents[1] / "tests" / "recorded_hid" / "windows-ink-strokes.hid"

@@ -20,7 +20,7 @@ import math
 import statistics
 import time
 
-from physink_tui.journal.entries import JournalHeader, PenEntry
+from physink_tui.formats.journal.entries import JournalHeader, PenEntry
 from physink_tui.scene.physics.world import World
 from physink_tui.session.session import Session
 

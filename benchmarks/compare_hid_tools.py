@@ -20,9 +20,9 @@ from pathlib import Path
 
 import hidtools.hid as ht
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.hid_batch import decode_batch
-from physink_tui.input.hid_decoder import HidPenDecoder
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.batch import decode_batch
+from physink_tui.input.hid.decoder import HidPenDecoder
 
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "data" / "hid"
 

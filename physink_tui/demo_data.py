@@ -11,11 +11,11 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.capture_writer import format_capture, write_capture
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.formats.journal.entries import CommandEntry
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.captures.writer import format_capture, write_capture
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
 from physink_tui.input.virtual_pen import Stroke, VirtualPen
-from physink_tui.journal.entries import CommandEntry
 
 DEMO_FILE = "egg-cracker.hid"
 SETTLE_S = 2.0

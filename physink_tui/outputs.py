@@ -19,8 +19,8 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, TextIO
 
-from physink_tui.atomic_write import write_text_atomic
 from physink_tui.errors import PhysinkError
+from physink_tui.formats.atomic_write import write_text_atomic
 
 #: Every file name a run of this program writes into an output folder (and so removes from a reused one).
 OWN_FILES = ("project.json", "timeline.json", "timeline.txt", "gestures.jsonl", "samples.jsonl", "summary.txt",

@@ -8,14 +8,14 @@ import os
 import pytest
 
 from physink_tui.errors import CaptureFormatError
-from physink_tui.input.capture import (
+from physink_tui.input.captures.capture import (
     BAD_TEXT_MAX,
     BadLine,
     Capture,
     CaptureDevice,
     CaptureEvent,
 )
-from physink_tui.input.capture_writer import format_capture, write_capture
+from physink_tui.input.captures.writer import format_capture, write_capture
 
 DESCRIPTOR = bytes.fromhex("05 0d 09 02 a1 01 85 02 c0 c0")
 BEFORE_R = "event before the report descriptor ('R:' line) of device"

@@ -6,8 +6,8 @@ import random
 
 import pytest
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.capture_events import strict_events
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.captures.events import strict_events
 
 VARIANTS = [
     "E: 000001.959698 3 01 a0 FF", "E: 1.959698 3 01 a0 ff", "E: 9 3 01 02 03", "E: 0.000001 1 7f",

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 from shared_data import shared_path
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.capture_writer import format_capture
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.captures.writer import format_capture
 
 HID_DIR = shared_path("hid", module_level=True)
 

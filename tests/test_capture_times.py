@@ -8,7 +8,7 @@ import math
 from pathlib import Path
 
 from physink_tui.cli import main
-from physink_tui.input.capture import Capture
+from physink_tui.input.captures.capture import Capture
 
 RECORDED = Path(__file__).resolve().parent / "recorded_hid"
 

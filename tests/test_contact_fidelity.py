@@ -16,8 +16,8 @@ from scenarios.thesis import all_scenarios
 from test_session import box_points, pen_header, pen_stroke
 from test_thesis_scenarios import session_over
 
-from physink_tui.commands.timeline_formats import timeline_json
-from physink_tui.journal.entries import CommandEntry, PenEntry
+from physink_tui.formats.journal.entries import CommandEntry, PenEntry
+from physink_tui.formats.timeline_formats import timeline_json
 from physink_tui.session.session import Session
 from physink_tui.timeline import recorder as recorder_module
 from physink_tui.timeline.events import Event, Timeline, event_label

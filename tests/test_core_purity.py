@@ -35,8 +35,7 @@ FORBIDDEN_MODULES = (
     "physink_tui.render",
     "physink_tui.commands",
     "physink_tui.cli",
-    "physink_tui.journal",
-    "physink_tui.project",
+    "physink_tui.formats",
     "physink_tui.session",
 )
 

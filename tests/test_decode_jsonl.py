@@ -12,7 +12,7 @@ from shared_data import shared_path
 from physink_tui.commands.decode import decode_capture, read_capture
 from physink_tui.commands.decode_jsonl import format_jsonl
 from physink_tui.errors import PhysinkError
-from physink_tui.input.hid_batch import PenColumns
+from physink_tui.input.hid.batch import PenColumns
 
 HID_DIR = shared_path("hid", module_level=True)
 

@@ -11,9 +11,9 @@ from shared_data import shared_path
 
 from physink_tui.commands.decode import decode_capture, decoder_for, summary
 from physink_tui.errors import PhysinkError
-from physink_tui.input.capture import Capture
-from physink_tui.input.capture_parser import parse_capture_file
-from physink_tui.input.hid_chunks import decode_in_chunks
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.captures.parser import parse_capture_file
+from physink_tui.input.hid.chunks import decode_in_chunks
 
 HID_DIR = shared_path("hid", module_level=True)
 RECORDED = Path(__file__).resolve().parent / "recorded_hid"

@@ -5,8 +5,8 @@ from __future__ import annotations
 from test_session import box_points, circle_points, pen_header, pen_stroke
 
 from physink_tui.cli import main
-from physink_tui.journal.compose import write_journal
-from physink_tui.journal.entries import CommandEntry, PenEntry
+from physink_tui.formats.journal.entries import CommandEntry, PenEntry
+from physink_tui.input.journal_compose import write_journal
 from physink_tui.session.session import Session
 from physink_tui.timeline.graph import check_acyclic, descendants
 from physink_tui.timeline.narrate import timeline_text

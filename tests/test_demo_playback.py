@@ -9,8 +9,8 @@ import pytest
 from test_session import circle_points, pen_header, pen_stroke
 
 from physink_tui.cli import main
-from physink_tui.journal.compose import write_journal
-from physink_tui.journal.entries import CommandEntry, PenEntry, SayEntry
+from physink_tui.formats.journal.entries import CommandEntry, PenEntry, SayEntry
+from physink_tui.input.journal_compose import write_journal
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Scene
 from physink_tui.session.history import History
 from physink_tui.session.session import Session

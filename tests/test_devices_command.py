@@ -23,14 +23,14 @@ from test_hidraw_discovery import KEYBOARD, make_node, make_reference_node, run_
 from physink_tui import __version__
 from physink_tui.commands import devices, record
 from physink_tui.errors import DeviceError
-from physink_tui.input.capture import Capture, CaptureDevice, CaptureEvent
-from physink_tui.input.capture_writer import format_capture
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hidraw import UDEV_INSTALL
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.captures.capture import Capture, CaptureDevice, CaptureEvent
+from physink_tui.input.captures.writer import format_capture
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.hidraw import UDEV_INSTALL
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.hid.vendor_init import VendorInit, find_vendor_init
+from physink_tui.input.hid.vendor_layouts import TabletParams
 from physink_tui.input.sources import RawReport, SourceEnded
-from physink_tui.input.vendor_init import VendorInit, find_vendor_init
-from physink_tui.input.vendor_layouts import TabletParams
 
 RECORDED = Path(__file__).resolve().parent / "recorded_hid"
 
@@ -107,7 +107,7 @@ def test_unusable_pyusb_is_said_in_one_line(fake_machine, monkeypatch, capsys) -
 def test_usb_devices_without_hidraw_nodes_are_listed(fake_machine, monkeypatch, capsys) -> None:
     sysfs, dev = fake_machine
     make_reference_node(sysfs, dev, 0, "wacom-ff0d")
-    from physink_tui.input.usb_reader import UsbDevice
+    from physink_tui.input.hid.usb_reader import UsbDevice
 
     usb = [UsbDevice(1, 5, 0x256C, 0x006D, "Huion/Gaomon"), UsbDevice(1, 6, 0x056A, 0x0374, "Wacom")]
     monkeypatch.setattr(devices, "list_usb", lambda: usb)

@@ -12,9 +12,9 @@ from test_demo_mode import block_demo_journal
 from test_equivalence import FIG_2_15, NAMES, ON_A, ON_B, UNDER_B, behaviour, renamed
 
 from physink_tui.cli import main
-from physink_tui.commands.timeline_formats import timeline_json
-from physink_tui.project.codec import Project
-from physink_tui.project.files import save_project
+from physink_tui.formats.project.codec import Project
+from physink_tui.formats.project.files import save_project
+from physink_tui.formats.timeline_formats import timeline_json
 from physink_tui.scene.components import MATERIALS, Body, Scene
 from physink_tui.timeline.events import Timeline
 

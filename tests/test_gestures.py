@@ -8,8 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.gestures import (
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.pen.gestures import (
     Dwell,
     GestureConfig,
     GestureEngine,
@@ -18,12 +19,11 @@ from physink_tui.input.gestures import (
     StrokeEnded,
     Tap,
 )
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.mapping import TabletMapping
-from physink_tui.input.pen_input import PenInput
-from physink_tui.input.pen_sample import PenSample
+from physink_tui.input.pen.mapping import TabletMapping
+from physink_tui.input.pen.pen_input import PenInput
+from physink_tui.input.pen.sample import PenSample
+from physink_tui.input.pen.smoothing import PositionSmoother
 from physink_tui.input.scripted_sources import CaptureReplaySource, ProgrammaticPenSource
-from physink_tui.input.smoothing import PositionSmoother
 from physink_tui.input.sources import SourceEnded
 
 RECORDED = Path(__file__).resolve().parent / "recorded_hid"

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from physink_tui.errors import DescriptorError
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_descriptor import (
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.descriptor import (
     FEATURE,
     INPUT,
     MAX_REPORT_COUNT,
@@ -15,7 +15,7 @@ from physink_tui.input.hid_descriptor import (
     Field,
     ReportDescriptor,
 )
-from physink_tui.input.pen_layout import pen_layouts
+from physink_tui.input.hid.pen_layout import pen_layouts
 
 GD_X, GD_Y, GD_MOUSE = 0x0001_0030, 0x0001_0031, 0x0001_0002
 DG_PEN, DG_STYLUS = 0x000D_0002, 0x000D_0020

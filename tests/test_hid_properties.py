@@ -9,10 +9,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from physink_tui.errors import DescriptorError
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_descriptor import MAX_REPORT_BYTES, ReportDescriptor
-from physink_tui.input.pen_layout import pen_layouts
-from physink_tui.input.pen_sample import PenSample
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.descriptor import MAX_REPORT_BYTES, ReportDescriptor
+from physink_tui.input.hid.pen_layout import pen_layouts
+from physink_tui.input.pen.sample import PenSample
 
 SETTINGS = settings(max_examples=300, deadline=None)
 SIZES = (0, 1, 2, 4)

@@ -23,10 +23,10 @@ import pytest
 from test_hidraw_discovery import KEYBOARD, make_node, make_reference_node
 
 from physink_tui.errors import DeviceError
-from physink_tui.input.capture import Capture
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_readers import HidapiReader, HidrawReader, choose_tablet, open_reader
-from physink_tui.input.hidraw import UDEV_INSTALL, discover_hidraw, open_error
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.hidraw import UDEV_INSTALL, discover_hidraw, open_error
+from physink_tui.input.hid.readers import HidapiReader, HidrawReader, choose_tablet, open_reader
 from physink_tui.input.sources import RawReport, SourceEnded
 
 RECORDED = Path(__file__).resolve().parent / "recorded_hid"
@@ -321,7 +321,7 @@ def usb_util(monkeypatch):
 
 
 def test_pyusb_reader_skips_time_outs_and_ends_on_enodev(usb_util) -> None:
-    from physink_tui.input.usb_reader import PyusbInterruptReader
+    from physink_tui.input.hid.usb_reader import PyusbInterruptReader
 
     core = usb_core()
     timeout = core.USBTimeoutError("Operation timed out", errno=errno.ETIMEDOUT)
@@ -339,7 +339,7 @@ def test_pyusb_reader_skips_time_outs_and_ends_on_enodev(usb_util) -> None:
 
 
 def test_pyusb_reader_without_permission_names_the_udev_rule(usb_util, monkeypatch) -> None:
-    from physink_tui.input.usb_reader import PyusbInterruptReader
+    from physink_tui.input.hid.usb_reader import PyusbInterruptReader
 
     core = usb_core()
 
@@ -355,7 +355,7 @@ def test_pyusb_reader_without_permission_names_the_udev_rule(usb_util, monkeypat
 
 
 def test_pyusb_reader_stop_gives_the_interface_back(usb_util) -> None:
-    from physink_tui.input.usb_reader import PyusbInterruptReader
+    from physink_tui.input.hid.usb_reader import PyusbInterruptReader
 
     fake = FakeUsb([], kernel_driver=False)
     reader = PyusbInterruptReader(0x256C, 0x006D, 0, 0x81, packet_size=64, timeout_ms=10, usb_device=fake)
@@ -438,7 +438,7 @@ def test_reconnecting_source_stops_while_waiting_for_the_device() -> None:
 
 
 def test_hidapi_reader_fills_in_the_descriptor_hidapi_reports() -> None:
-    from physink_tui.input.hidraw import HidrawInfo
+    from physink_tui.input.hid.hidraw import HidrawInfo
 
     fake = FakeHid([])
     fake.get_report_descriptor = lambda: [0x05, 0x0D, 0xC0]

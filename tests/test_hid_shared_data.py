@@ -19,10 +19,10 @@ import pytest
 from shared_data import shared_path
 
 from physink_tui.errors import DescriptorError
-from physink_tui.input.capture import Capture, CaptureEvent
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_descriptor import ReportDescriptor
-from physink_tui.input.pen_sample import PenSample
+from physink_tui.input.captures.capture import Capture, CaptureEvent
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.descriptor import ReportDescriptor
+from physink_tui.input.pen.sample import PenSample
 
 HID_DIR = shared_path("hid", module_level=True)
 

@@ -16,8 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hidraw import (
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.hidraw import (
     UDEV_INSTALL,
     UDEV_RULES_FILE,
     discover_hidraw,
@@ -27,7 +27,7 @@ from physink_tui.input.hidraw import (
     parse_hid_id,
     pen_summaries,
 )
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -194,7 +194,7 @@ def test_open_error_names_the_udev_rule_when_permission_is_missing(tmp_path: Pat
     node = tmp_path / "hidraw0"
     node.write_bytes(b"")
     node.chmod(0o000)
-    result = run_unprivileged(f"from physink_tui.input.hidraw import open_error; print(open_error({str(node)!r}))")
+    result = run_unprivileged(f"from physink_tui.input.hid.hidraw import open_error; print(open_error({str(node)!r}))")
     assert result.returncode == 0, result.stderr
     message = result.stdout.strip()
     assert message.startswith(f"permission denied on {node}")

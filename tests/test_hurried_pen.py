@@ -13,7 +13,7 @@ from penmodels.journal import hurried_drawing, write_hurried_journal
 from penmodels.shapes import XMark, box, circle, polygon, u_container
 from scenarios.thesis import egg_cracker
 
-from physink_tui.journal.reader import read_journal
+from physink_tui.formats.journal.reader import read_journal
 
 SEEDS = range(6)
 CORNERS = ((650.0, 440.0), (950.0, 440.0), (950.0, 560.0), (650.0, 560.0))

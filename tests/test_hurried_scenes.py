@@ -15,7 +15,7 @@ from penmodels.structure import reference_names, structure_diff
 from scenarios.bouncing import hits_a
 from scenarios.thesis import MAPPING, Scenario, all_scenarios
 
-from physink_tui.journal.compose import capture_entries, header_for_capture
+from physink_tui.input.journal_compose import capture_entries, header_for_capture
 from physink_tui.scene.components import Scene
 from physink_tui.session.session import Session
 

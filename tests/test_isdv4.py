@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from physink_tui.errors import DeviceError
-from physink_tui.input.isdv4 import (
+from physink_tui.input.serial_tablets.isdv4 import (
     FALLBACK_QUERY,
     Isdv4Parser,
     Isdv4Query,

@@ -19,10 +19,9 @@ from hypothesis import strategies as st
 
 from physink_tui import __version__
 from physink_tui.errors import JournalError
-from physink_tui.journal import writer as writer_module
-from physink_tui.journal.checks import COMMANDS, MAX_SECONDS, MODES
-from physink_tui.journal.codec import decode_line, encode_entry
-from physink_tui.journal.entries import (
+from physink_tui.formats.journal import writer as writer_module
+from physink_tui.formats.journal.codec import decode_line, encode_entry
+from physink_tui.formats.journal.entries import (
     CommandEntry,
     DeviceEntry,
     HidEntry,
@@ -32,9 +31,10 @@ from physink_tui.journal.entries import (
     PenEntry,
     SayEntry,
 )
-from physink_tui.journal.header_codec import decode_header, encode_header
-from physink_tui.journal.reader import iter_journal, read_journal
-from physink_tui.journal.writer import FSYNC_INTERVAL, JournalWriter
+from physink_tui.formats.journal.header_codec import decode_header, encode_header
+from physink_tui.formats.journal.reader import iter_journal, read_journal
+from physink_tui.formats.journal.writer import FSYNC_INTERVAL, JournalWriter
+from physink_tui.formats.json_checks import COMMANDS, MAX_SECONDS, MODES
 
 REPO = Path(__file__).resolve().parent.parent
 DESCRIPTOR = bytes.fromhex("05 0d 09 02 a1 01 85 02 09 20 a1 00 09 42 15 00 25 01 75 01 95 01 81 02 c0 c0")
@@ -638,8 +638,8 @@ def test_a_header_that_cannot_be_written_leaves_no_file(tmp_path: Path, monkeypa
 
 KILLED_WRITER = r"""
 import sys
-from physink_tui.journal.entries import CommandEntry, HidEntry, JournalDevice, JournalHeader, PenEntry, SayEntry
-from physink_tui.journal.writer import JournalWriter
+from physink_tui.formats.journal.entries import CommandEntry, HidEntry, JournalDevice, JournalHeader, PenEntry, SayEntry
+from physink_tui.formats.journal.writer import JournalWriter
 
 header = JournalHeader(1, 1, (JournalDevice("tablet0", "Pen", 3, 0x56A, 0x350, b"\xa1\xc0"),), {}, 0.05, 0.01)
 w = JournalWriter.create(sys.argv[1], header)

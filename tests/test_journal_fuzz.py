@@ -12,8 +12,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from physink_tui.errors import JournalError
+from physink_tui.formats.journal.reader import read_journal
 from physink_tui.input.journal_replay import replay_journal_input
-from physink_tui.journal.reader import read_journal
 from physink_tui.session.session import Session
 
 JOURNALS = Path(__file__).resolve().parent / "journals"

@@ -10,9 +10,9 @@ import pytest
 
 from physink_tui.cli import main
 from physink_tui.errors import JournalError
+from physink_tui.formats.journal.entries import DEFAULT_TIP_DOWN, DEFAULT_TIP_UP, UNKNOWN_PROGRAM
+from physink_tui.formats.journal.reader import BOM, looks_like_journal, read_journal
 from physink_tui.input.journal_replay import pen_input_for, replay_journal_input
-from physink_tui.journal.entries import DEFAULT_TIP_DOWN, DEFAULT_TIP_UP, UNKNOWN_PROGRAM
-from physink_tui.journal.reader import BOM, looks_like_journal, read_journal
 from physink_tui.session.session import Session
 
 JOURNALS = Path(__file__).resolve().parent / "journals"
@@ -207,7 +207,7 @@ def test_a_device_line_adds_a_tablet_whose_reports_replay(tmp_path: Path) -> Non
 
 def test_a_tablet_plugged_in_during_the_session_draws_in_it(tmp_path: Path) -> None:
     """The session, not only the input side, takes the device line: the tablet's strokes become the scene."""
-    from physink_tui.journal.reader import read_journal as read
+    from physink_tui.formats.journal.reader import read_journal as read
     from physink_tui.session.session import Session
 
     more = [json.loads(line) for line in (JOURNALS / "basketball.physink.jsonl").read_text().splitlines()[1:1500]]

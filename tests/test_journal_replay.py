@@ -6,9 +6,9 @@ import json
 from pathlib import Path
 
 from physink_tui.cli import main
-from physink_tui.input.capture import Capture
-from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
-from physink_tui.journal.entries import CommandEntry, PenEntry, SayEntry
+from physink_tui.formats.journal.entries import CommandEntry, PenEntry, SayEntry
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
 
 RECORDED = Path(__file__).resolve().parent / "recorded_hid"
 
@@ -60,8 +60,8 @@ def test_malformed_journal_line_is_one_line_error(tmp_path, capsys) -> None:
 
 def test_journal_is_read_and_decoded_once(tmp_path, capsys, monkeypatch) -> None:
     """The replay lists the gestures the session decoded: each HID line is decoded once, the file read once."""
-    from physink_tui.input.hid_decoder import HidPenDecoder
-    from physink_tui.journal import reader
+    from physink_tui.formats.journal import reader
+    from physink_tui.input.hid.decoder import HidPenDecoder
 
     journal = tmp_path / "s.physink.jsonl"
     make_journal(journal)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from physink_tui.input.mapping import TabletMapping, mapping_from_header, mapping_to_header
+from physink_tui.input.pen.mapping import TabletMapping, mapping_from_header, mapping_to_header
 
 
 @pytest.mark.parametrize(

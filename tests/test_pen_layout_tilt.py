@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from physink_tui.input import descriptor_builder as d
-from physink_tui.input.hid_decoder import HidPenDecoder
+from physink_tui.input.hid import descriptor_builder as d
+from physink_tui.input.hid.decoder import HidPenDecoder
 
 
 def pen_with_tilt(tilt_items: bytes, tilt_size: int) -> bytes:

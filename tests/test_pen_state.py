@@ -6,8 +6,8 @@ import itertools
 
 import pytest
 
-from physink_tui.input.pen_sample import PenSample
-from physink_tui.input.pen_state import (
+from physink_tui.input.pen.sample import PenSample
+from physink_tui.input.pen.state import (
     VALID_TRANSITIONS,
     PenState,
     PenStateError,

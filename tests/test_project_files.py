@@ -14,8 +14,8 @@ from hypothesis import strategies as st
 
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError, SceneError
-from physink_tui.project.codec import FORMAT_VERSION, Project, decode_project, encode_project
-from physink_tui.project.files import load_project, save_project
+from physink_tui.formats.project.codec import FORMAT_VERSION, Project, decode_project, encode_project
+from physink_tui.formats.project.files import load_project, save_project
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Material, Rope, Scene, Spring
 
 

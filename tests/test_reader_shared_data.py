@@ -15,9 +15,9 @@ import threading
 import pytest
 from shared_data import shared_path
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_readers import HidrawReader
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.readers import HidrawReader
 from physink_tui.input.sources import RawReport, SourceEnded
 
 SHARED = shared_path("hid", module_level=True)

@@ -12,9 +12,9 @@ import shapely
 from shared_data import shared_path
 
 from physink_tui.commands.replay import replay_capture
-from physink_tui.input.capture import Capture
-from physink_tui.input.gestures import PenMove, StrokeEnded, Tap
-from physink_tui.journal.compose import capture_entries, header_for_capture
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.journal_compose import capture_entries, header_for_capture
+from physink_tui.input.pen.gestures import PenMove, StrokeEnded, Tap
 from physink_tui.scene.components import Body
 from physink_tui.scene.interpretation.body_shapes import body_geometry
 from physink_tui.session.session import Session

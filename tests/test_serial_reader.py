@@ -15,8 +15,8 @@ import pytest
 import serial
 
 from physink_tui.errors import DeviceError
-from physink_tui.input.isdv4 import Isdv4Query, encode_pen_packet, encode_query_reply
-from physink_tui.input.serial_reader import SerialPenSource, probe_isdv4
+from physink_tui.input.serial_tablets.isdv4 import Isdv4Query, encode_pen_packet, encode_query_reply
+from physink_tui.input.serial_tablets.reader import SerialPenSource, probe_isdv4
 from physink_tui.input.sources import PenSource, SampleReady, SourceEnded
 
 QUERY = Isdv4Query(x_max=26202, y_max=16325, p_max=1023, version=0x0105)

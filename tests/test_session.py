@@ -10,10 +10,10 @@ import pytest
 
 from physink_tui.cli import main
 from physink_tui.demo_data import drawing_capture
-from physink_tui.input.mapping import TabletMapping
-from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
-from physink_tui.journal.entries import CommandEntry, JournalHeader, PenEntry, SayEntry
-from physink_tui.journal.reader import read_journal
+from physink_tui.formats.journal.entries import CommandEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
+from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope
 from physink_tui.session.session import Session
 
@@ -216,7 +216,7 @@ def test_a_pin_in_a_welded_body_then_a_body_drawn_over_it_does_not_break_the_wor
 
 
 def test_a_live_session_journals_what_it_consumes_and_the_journal_replays_to_the_same_scene(tmp_path) -> None:
-    from physink_tui.journal.writer import JournalWriter
+    from physink_tui.formats.journal.writer import JournalWriter
 
     entries = pen_stroke(0.0, box_points(0.1, 0.1, 0.3, 0.3)) + pen_stroke(1.0, circle_points(0.6, 0.5, 0.08))
     entries += [SayEntry(1.9, "label ball"), CommandEntry(2.0, "undo"), CommandEntry(2.1, "redo")]

@@ -11,7 +11,7 @@ from hand_x import hand_x
 from strokegen.strokes import circle, line
 from test_session import circle_points, pen_header, pen_stroke
 
-from physink_tui.journal.entries import CommandEntry, PenEntry
+from physink_tui.formats.journal.entries import CommandEntry, PenEntry
 from physink_tui.scene.components import BACKGROUND, Body, Joint
 from physink_tui.scene.interpretation.interpret import interpret
 from physink_tui.scene.recognition.primitives import Box, Recognition

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_descriptor import ReportDescriptor
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.descriptor import ReportDescriptor
 
 # A plain pen: report 0x01, tip and in-range bits, X/Y 0..32767, pressure 0..1023.
 PEN_HEAD = bytes.fromhex(
@@ -75,8 +75,8 @@ def test_a_kernel_fixed_pd1011_descriptor_is_read_as_it_is() -> None:
 
 
 def test_device_facts_table_is_loaded_and_chooses_by_id_or_name() -> None:
-    from physink_tui.input.device_facts import all_facts, match_device
-    from physink_tui.input.fixed_layouts import FIXED_DEVICES
+    from physink_tui.input.hid.device_facts import all_facts, match_device
+    from physink_tui.input.hid.fixed_layouts import FIXED_DEVICES
 
     facts = all_facts()
     assert len(facts) > 400

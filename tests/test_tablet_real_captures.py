@@ -9,10 +9,10 @@ import pytest
 from shared_data import shared_path
 
 from physink_tui.commands.decode import decode_capture, summary
-from physink_tui.input.capture import Capture
-from physink_tui.input.hid_batch import decode_batch
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.vendor_init import COMMENT_PREFIX
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.batch import decode_batch
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.vendor_init import COMMENT_PREFIX
 
 HID = shared_path("hid")
 

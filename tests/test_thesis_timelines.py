@@ -11,8 +11,8 @@ from scenarios.thesis import PINBALL_EDIT_T, all_scenarios
 from test_thesis_scenarios import session_over
 
 from physink_tui.cli import main
-from physink_tui.journal.entries import CommandEntry
-from physink_tui.journal.reader import read_journal
+from physink_tui.formats.journal.entries import CommandEntry
+from physink_tui.formats.journal.reader import read_journal
 from physink_tui.session.session import Session
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.graph import ancestors, check_acyclic, descendants

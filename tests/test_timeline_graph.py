@@ -8,8 +8,8 @@ import re
 
 import pytest
 
-from physink_tui.commands.timeline_formats import EVENT_KEYS, parse_timeline_json, timeline_dot, timeline_json
 from physink_tui.errors import PhysinkError
+from physink_tui.formats.timeline_formats import EVENT_KEYS, parse_timeline_json, timeline_dot, timeline_json
 from physink_tui.timeline.events import Event, Timeline, TimelineError, TrajectoryPoint, default_label
 from physink_tui.timeline.graph import (
     CausalCycleError,

@@ -11,18 +11,18 @@ import errno
 import pytest
 
 from physink_tui.errors import DeviceError
-from physink_tui.input.capture import Capture
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hidraw import UDEV_INSTALL
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
-from physink_tui.input.vendor_init import (
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.hidraw import UDEV_INSTALL
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.hid.vendor_init import (
     VendorInit,
     find_vendor_init,
     initialise,
     initialise_usb,
     needs_vendor_init,
 )
-from physink_tui.input.vendor_layouts import TabletParams
+from physink_tui.input.hid.vendor_layouts import TabletParams
 
 usb_core = pytest.importorskip("usb.core")
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from physink_tui.errors import DescriptorError
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.vendor_layouts import VID_HUION, VID_UCLOGIC, VID_WACOM, TabletParams
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.vendor_layouts import VID_HUION, VID_UCLOGIC, VID_WACOM, TabletParams
 
 # A Wacom descriptor that only declares a relative mouse report 0x01 (older Wacom tablets).
 WACOM_MOUSE_ONLY = bytes.fromhex(

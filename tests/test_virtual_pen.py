@@ -11,16 +11,16 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from physink_tui.input import descriptor_builder as d
-from physink_tui.input.capture import Capture
-from physink_tui.input.capture_writer import format_capture
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.hid_descriptor import ReportDescriptor
-from physink_tui.input.pen_decoder import CompiledLayout
-from physink_tui.input.pen_layout import PenLayout
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
-from physink_tui.input.report_encoder import PenState, encode_report
-from physink_tui.input.vendor_layouts import (
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.captures.writer import format_capture
+from physink_tui.input.hid import descriptor_builder as d
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.descriptor import ReportDescriptor
+from physink_tui.input.hid.pen_decoder import CompiledLayout
+from physink_tui.input.hid.pen_layout import PenLayout
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.hid.report_encoder import PenState, encode_report
+from physink_tui.input.hid.vendor_layouts import (
     TabletParams,
     uclogic_v1_layout,
     wacom_graphire_layout,

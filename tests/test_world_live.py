@@ -93,7 +93,7 @@ def test_the_live_world_matches_a_world_built_afresh_through_edits_undo_and_redo
 def test_the_sessions_world_follows_strokes_erasing_adjusting_undo_and_redo() -> None:
     from test_session import box_points, circle_points, pen_header, pen_stroke
 
-    from physink_tui.journal.entries import CommandEntry, PenEntry
+    from physink_tui.formats.journal.entries import CommandEntry, PenEntry
     from physink_tui.session.session import Session
 
     entries = pen_stroke(0.0, box_points(0.1, 0.6, 0.4, 0.7))                      # a platform

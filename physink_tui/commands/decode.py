@@ -10,12 +10,12 @@ from typing import TextIO
 
 from physink_tui.commands.decode_jsonl import format_jsonl
 from physink_tui.errors import CaptureFormatError, DescriptorError
-from physink_tui.input.capture import Capture, CaptureColumns, CaptureDevice
-from physink_tui.input.capture_parser import parse_capture_file
-from physink_tui.input.hid_batch import PenColumns, decode_batch
-from physink_tui.input.hid_chunks import decode_in_chunks
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.vendor_init import find_vendor_init
+from physink_tui.input.captures.capture import Capture, CaptureColumns, CaptureDevice
+from physink_tui.input.captures.parser import parse_capture_file
+from physink_tui.input.hid.batch import PenColumns, decode_batch
+from physink_tui.input.hid.chunks import decode_in_chunks
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.vendor_init import find_vendor_init
 
 CHUNK_ROWS = 16384
 """Samples formatted and written at a time."""

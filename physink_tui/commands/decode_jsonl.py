@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from physink_tui.input.hid_batch import PenColumns
+from physink_tui.input.hid.batch import PenColumns
 
 _FLAGS = ("tip", "range", "eraser", "b1", "b2")
 _HEAD = '{"t": '

@@ -16,16 +16,16 @@ import sys
 from collections import Counter
 
 from physink_tui.commands.decode import decode_capture, summary, write_jsonl
-from physink_tui.commands.timeline_formats import timeline_json
 from physink_tui.demo_data import DEMO_FILE, TABLET_ASPECT, demo_capture_text, demo_script
 from physink_tui.errors import PhysinkError
-from physink_tui.input.capture import Capture
-from physink_tui.input.mapping import TabletMapping
-from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
-from physink_tui.journal.reader import read_journal
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.formats.project.codec import Project
+from physink_tui.formats.project.files import save_project
+from physink_tui.formats.timeline_formats import timeline_json
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
+from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.outputs import OutputFolder, reason
-from physink_tui.project.codec import Project
-from physink_tui.project.files import save_project
 from physink_tui.render.braille import braille_plot
 from physink_tui.scene.components import Body, Joint
 from physink_tui.session.session import Session

@@ -17,7 +17,7 @@ from collections.abc import Callable
 from typing import Any, TextIO
 
 from physink_tui.errors import DeviceError
-from physink_tui.input.hidraw import (
+from physink_tui.input.hid.hidraw import (
     BUS_BLUETOOTH,
     BUS_I2C,
     BUS_USB,
@@ -27,7 +27,7 @@ from physink_tui.input.hidraw import (
     open_error,
     pen_summaries,
 )
-from physink_tui.input.vendor_layouts import PROFILES
+from physink_tui.input.hid.vendor_layouts import PROFILES
 
 ENV_SYSFS_ROOT = "PHYSINK_SYSFS_ROOT"
 ENV_DEV_ROOT = "PHYSINK_DEV_ROOT"
@@ -75,7 +75,7 @@ def hidraw_lines(sysfs_root: str, dev_root: str) -> tuple[int, list[str], set[tu
 
 def list_usb() -> list[Any]:
     """Tablet-vendor USB devices through pyusb (`usb_reader.list_usb_tablets`); raises DeviceError if unusable."""
-    from physink_tui.input.usb_reader import list_usb_tablets
+    from physink_tui.input.hid.usb_reader import list_usb_tablets
 
     return list_usb_tablets()
 
@@ -108,9 +108,9 @@ def serial_ports() -> list[Any]:
 
 
 def isdv4_prober() -> tuple[Callable[..., Any] | None, str]:
-    """``(probe_isdv4, "")``, or ``(None, why)`` while `physink_tui.input.serial_reader` is not available."""
+    """``(probe_isdv4, "")``, or ``(None, why)`` while `physink_tui.input.serial_tablets.reader` is not available."""
     try:
-        from physink_tui.input.serial_reader import probe_isdv4
+        from physink_tui.input.serial_tablets.reader import probe_isdv4
     except ImportError as exc:
         return None, f"ISDV4 probing not available ({exc})"
     return probe_isdv4, ""

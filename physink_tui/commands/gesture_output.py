@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from physink_tui.input.gestures import Dwell, Gesture, ProximityChanged, StrokeEnded, Tap
+from physink_tui.input.pen.gestures import Dwell, Gesture, ProximityChanged, StrokeEnded, Tap
 
 
 def _r(v: float) -> float:

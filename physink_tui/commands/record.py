@@ -19,13 +19,13 @@ from typing import TextIO
 from physink_tui import __version__
 from physink_tui.commands.devices import roots_from_env
 from physink_tui.errors import CaptureFormatError, DeviceError
-from physink_tui.input.capture import Capture, CaptureDevice
-from physink_tui.input.capture_writer import event_line as capture_event_line
-from physink_tui.input.capture_writer import format_capture
-from physink_tui.input.hid_readers import open_reader
-from physink_tui.input.hidraw import BUS_USB, HidrawInfo
+from physink_tui.input.captures.capture import Capture, CaptureDevice
+from physink_tui.input.captures.writer import event_line as capture_event_line
+from physink_tui.input.captures.writer import format_capture
+from physink_tui.input.hid.hidraw import BUS_USB, HidrawInfo
+from physink_tui.input.hid.readers import open_reader
+from physink_tui.input.hid.vendor_init import VendorInit, initialise_usb, needs_vendor_init
 from physink_tui.input.sources import RawReport, SourceEnded, SourceItem
-from physink_tui.input.vendor_init import VendorInit, initialise_usb, needs_vendor_init
 
 DEVICE_ID = "tablet0"
 EXIT_USAGE = 2

@@ -19,19 +19,19 @@ from pathlib import Path
 from physink_tui.commands.decode import decoder_for
 from physink_tui.commands.gesture_output import gesture_json, gesture_text
 from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
-from physink_tui.commands.timeline_formats import timeline_json
 from physink_tui.errors import DescriptorError, PhysinkError
-from physink_tui.input.capture import Capture
-from physink_tui.input.gestures import Gesture
-from physink_tui.input.mapping import TabletMapping
-from physink_tui.input.pen_input import PenInput
-from physink_tui.input.pen_layout import tablet_size
+from physink_tui.formats.journal.entries import DeviceEntry
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.formats.project.codec import Project
+from physink_tui.formats.project.files import save_project
+from physink_tui.formats.timeline_formats import timeline_json
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.pen_layout import tablet_size
+from physink_tui.input.pen.gestures import Gesture
+from physink_tui.input.pen.mapping import TabletMapping
+from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.sources import RawReport, SourceEnded
-from physink_tui.journal.entries import DeviceEntry
-from physink_tui.journal.reader import read_journal
 from physink_tui.outputs import OutputFolder
-from physink_tui.project.codec import Project
-from physink_tui.project.files import save_project
 from physink_tui.session.session import Session
 from physink_tui.timeline.narrate import timeline_text
 from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary

@@ -6,8 +6,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from physink_tui.commands.timeline_formats import timeline_dot, timeline_json
 from physink_tui.commands.timeline_source import load_timeline
+from physink_tui.formats.timeline_formats import timeline_dot, timeline_json
 from physink_tui.timeline.narrate import timeline_text
 
 

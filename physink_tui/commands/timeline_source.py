@@ -6,10 +6,10 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from physink_tui.commands.timeline_formats import parse_timeline_json
 from physink_tui.errors import PhysinkError
-from physink_tui.project.codec import FORMAT as PROJECT_FORMAT
-from physink_tui.project.codec import decode_project
+from physink_tui.formats.project.codec import FORMAT as PROJECT_FORMAT
+from physink_tui.formats.project.codec import decode_project
+from physink_tui.formats.timeline_formats import parse_timeline_json
 from physink_tui.timeline.events import Timeline, TimelineError
 
 

@@ -10,14 +10,7 @@ from __future__ import annotations
 import os
 
 from physink_tui.errors import DescriptorError, JournalError
-from physink_tui.input.gestures import Gesture, GestureConfig
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.mapping import mapping_from_header
-from physink_tui.input.pen_input import PenInput
-from physink_tui.input.pen_sample import PenSample
-from physink_tui.input.pen_state import TipThresholds
-from physink_tui.input.sources import RawReport, SourceEnded, SourceItem
-from physink_tui.journal.entries import (
+from physink_tui.formats.journal.entries import (
     CommandEntry,
     DeviceEntry,
     HidEntry,
@@ -27,7 +20,14 @@ from physink_tui.journal.entries import (
     PenEntry,
     SayEntry,
 )
-from physink_tui.journal.reader import iter_journal
+from physink_tui.formats.journal.reader import iter_journal
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.pen.gestures import Gesture, GestureConfig
+from physink_tui.input.pen.mapping import mapping_from_header
+from physink_tui.input.pen.pen_input import PenInput
+from physink_tui.input.pen.sample import PenSample
+from physink_tui.input.pen.state import TipThresholds
+from physink_tui.input.sources import RawReport, SourceEnded, SourceItem
 
 PEN_DEVICE = "pen"
 """The device id of journal ``pen`` lines (canvas samples from the mouse, serial tablets, scripts)."""

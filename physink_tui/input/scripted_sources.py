@@ -13,8 +13,8 @@ import threading
 import time
 from collections.abc import Callable
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.pen_sample import PenSample
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.sources import RawReport, SampleReady, SourceEnded, SourceItem
 
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Protocol, runtime_checkable
 
 from physink_tui.errors import DeviceError
-from physink_tui.input.pen_sample import PenSample
+from physink_tui.input.pen.sample import PenSample
 
 
 @dataclass(frozen=True, slots=True)

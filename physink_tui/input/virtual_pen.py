@@ -26,11 +26,11 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from typing import Literal
 
-from physink_tui.input.capture import Capture, CaptureDevice, CaptureEvent
-from physink_tui.input.hid_decoder import HidPenDecoder
-from physink_tui.input.pen_layout import PenLayout
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES, ReferenceDevice
-from physink_tui.input.report_encoder import PenState, encode_report
+from physink_tui.input.captures.capture import Capture, CaptureDevice, CaptureEvent
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.pen_layout import PenLayout
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES, ReferenceDevice
+from physink_tui.input.hid.report_encoder import PenState, encode_report
 
 __all__ = ["REFERENCE_DEVICES", "PenState", "ScriptedSample", "Stroke", "VirtualPen", "movement_seconds"]
 

@@ -7,7 +7,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from physink_tui.input.gestures import Dwell, PenMove
+from physink_tui.input.pen.gestures import Dwell, PenMove
 from physink_tui.scene.interpretation.body_shapes import body_size
 from physink_tui.scene.interpretation.interpret import bodies_at
 from physink_tui.scene.physics.world import World

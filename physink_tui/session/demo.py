@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from physink_tui.input.gestures import Gesture, PenDown, PenMove, StrokeEnded, Tap
+from physink_tui.input.pen.gestures import Gesture, PenDown, PenMove, StrokeEnded, Tap
 from physink_tui.scene.physics.world import World
 from physink_tui.timeline.demo_setup import recorder_for
 from physink_tui.timeline.recorder import ContactSeen, Observation, Recorder

@@ -18,12 +18,7 @@ from dataclasses import dataclass, field, replace
 import shapely
 
 from physink_tui.errors import JournalError
-from physink_tui.input.gestures import Dwell, Gesture, PenDown, PenMove, StrokeEnded, Tap
-from physink_tui.input.journal_replay import PEN_DEVICE, add_journal_device, pen_input_for
-from physink_tui.input.pen_input import PenInput
-from physink_tui.input.pen_sample import PenSample
-from physink_tui.input.sources import RawReport
-from physink_tui.journal.entries import (
+from physink_tui.formats.journal.entries import (
     CommandEntry,
     DeviceEntry,
     HidEntry,
@@ -32,7 +27,12 @@ from physink_tui.journal.entries import (
     PenEntry,
     SayEntry,
 )
-from physink_tui.journal.writer import JournalWriter
+from physink_tui.formats.journal.writer import JournalWriter
+from physink_tui.input.journal_replay import PEN_DEVICE, add_journal_device, pen_input_for
+from physink_tui.input.pen.gestures import Dwell, Gesture, PenDown, PenMove, StrokeEnded, Tap
+from physink_tui.input.pen.pen_input import PenInput
+from physink_tui.input.pen.sample import PenSample
+from physink_tui.input.sources import RawReport
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
 from physink_tui.scene.interpretation.body_shapes import body_geometry
 from physink_tui.scene.interpretation.interpret import Near, bodies_at, interpret

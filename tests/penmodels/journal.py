@@ -9,8 +9,8 @@ from dataclasses import dataclass
 
 from penmodels.hurried import HurriedPen, PenPoint, touching
 from penmodels.shapes import CANVAS, Shape, group_scenario_strokes
-from physink_tui.journal.compose import write_journal
-from physink_tui.journal.entries import CommandEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.formats.journal.entries import CommandEntry, JournalEntry, JournalHeader, PenEntry, SayEntry
+from physink_tui.input.journal_compose import write_journal
 from physink_tui.session.session import Session
 
 SPEECH_DELAY = 0.12

@@ -19,8 +19,8 @@ from typing import NamedTuple
 if __name__ == "__main__":  # run as a script: make the repository's package importable
     sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
-from physink_tui.input.capture_writer import format_capture
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.captures.writer import format_capture
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
 from physink_tui.input.virtual_pen import Stroke, VirtualPen
 
 HERE = Path(__file__).resolve().parent

@@ -13,8 +13,8 @@ import sys
 from functools import cache
 from pathlib import Path
 
-from physink_tui.journal.compose import capture_entries, header_for_capture, write_journal
-from physink_tui.journal.reader import read_journal
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
 from physink_tui.session.session import Session
 
 try:

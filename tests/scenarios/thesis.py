@@ -15,11 +15,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from physink_tui.input.capture import Capture
-from physink_tui.input.mapping import TabletMapping
-from physink_tui.input.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.formats.journal.entries import CommandEntry, SayEntry
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.virtual_pen import Stroke, VirtualPen
-from physink_tui.journal.entries import CommandEntry, SayEntry
 
 BACKGROUND = "background"
 """Joints and springs name the background by this id (`physink_tui.scene.components.BACKGROUND`)."""

@@ -1,0 +1,1 @@
+"""Captures in the hid-recorder text format: parsing, streaming events, writing."""

@@ -1,0 +1,1 @@
+"""Serial pen tablets (ISDV4/TPC protocol): probing, decoding, reading."""
