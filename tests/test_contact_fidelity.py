@@ -61,7 +61,7 @@ def demonstrate(path: list[tuple[float, float]], t0: float = 3.5, dt: float = 0.
     observe = recorder_module.Recorder.observe
 
     def spying(self, obs):  # what the physics reported, before the recorder decides what is one contact
-        reports.extend(obs.t for c in obs.contacts if {c.a, c.b} == {"b1", "b2"})
+        reports.extend(obs.t for c in obs.contacts if {c.a_id, c.b_id} == {"b1", "b2"})
         observe(self, obs)
 
     with pytest.MonkeyPatch.context() as mp:

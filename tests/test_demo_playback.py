@@ -12,7 +12,7 @@ from physink_tui.cli import main
 from physink_tui.formats.journal.entries import CommandEntry, PenEntry, SayEntry
 from physink_tui.input.journal_compose import write_journal
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Scene
-from physink_tui.session.history import History
+from physink_tui.session.history import Document
 from physink_tui.session.session import Session
 from physink_tui.timeline.tape import Tape
 
@@ -34,9 +34,7 @@ def machine() -> Scene:
 
 
 def session_for(scene: Scene) -> Session:
-    session = Session.from_header(pen_header())
-    session.history = History(scene)
-    return session
+    return Session.from_header(pen_header(), Document(scene))
 
 
 def feed(session: Session, entries) -> Session:
@@ -62,47 +60,47 @@ def test_grabbing_a_fixed_body_says_it_cannot_move_and_records_nothing() -> None
     session = session_for(machine())
     feed(session, [CommandEntry(0.1, "mode", ("demo",)), *pen_stroke(0.5, [(800 / W, 0.5), (800 / W, 0.6)])])
     assert session.messages[-1].text == "wall (b2) is fixed: it cannot be moved in the demonstration"
-    assert not session._demo.recorder.snapshot().events
+    assert session.timeline is None
 
 
 def test_seeking_past_the_end_is_refused_and_names_the_timeline_length() -> None:
     session = demonstrated()
-    demo = session._demo
-    clock, duration = demo.clock, demo.duration
+    clock, duration = session.view().clock, session.view().duration
     feed(session, [CommandEntry(5.0, "seek", (duration + 5,))])
     assert session.messages[-1].text == (f"seek {duration + 5:g}: the timeline runs from 0 to {duration:.2f} s; "
                                          f"stayed at {clock:.2f} s")
-    assert demo.clock == clock
+    assert session.view().clock == clock
     feed(session, [CommandEntry(5.1, "seek", (-1.0,))])
     assert "the timeline runs from 0" in session.messages[-1].text
 
 
 def test_seek_shows_the_recorded_state_and_play_pause_stop_move_timeline_time() -> None:
     session = demonstrated()
-    demo = session._demo
-    tape = Tape(demo.recorder.snapshot())
+    tape = Tape(session.timeline)
     feed(session, [CommandEntry(5.0, "seek", (0.5,))])
-    assert demo.clock == 0.5
-    assert demo.world.pose("b1")[:2] == pytest.approx(tape.pose("b1", 0.5)[:2], abs=1e-6)
+    assert session.view().clock == 0.5
+    assert session.view().poses["b1"][:2] == pytest.approx(tape.pose("b1", 0.5)[:2], abs=1e-6)
     feed(session, [CommandEntry(5.5, "play", ()), CommandEntry(5.75, "pause", ())])
-    assert demo.clock == pytest.approx(0.75, abs=0.01)  # a quarter second of input, a quarter of timeline
-    assert demo.world.pose("b1")[1] == pytest.approx(tape.pose("b1", demo.clock)[1], abs=1.0)
-    paused = demo.clock
+    assert session.view().clock == pytest.approx(0.75, abs=0.01)  # a quarter second of input, a quarter of timeline
+    assert session.view().poses["b1"][1] == pytest.approx(tape.pose("b1", session.view().clock)[1], abs=1.0)
+    paused = session.view().clock
     feed(session, [CommandEntry(7.0, "seek", (paused,))])  # time passes; paused, nothing moves
-    assert demo.clock == paused
+    assert session.view().clock == paused
     feed(session, [CommandEntry(8.0, "stop", ())])
-    assert demo.clock == 0 and demo.world.pose("b1")[:2] == pytest.approx(tape.pose("b1", 0.0)[:2], abs=1e-6)
-    events = session._demo.recorder.snapshot().events
+    view = session.view()
+    assert view.clock == 0 and view.poses["b1"][:2] == pytest.approx(tape.pose("b1", 0.0)[:2], abs=1e-6)
+    events = session.timeline.events
     feed(session, [CommandEntry(8.5, "play", ()), CommandEntry(12.0, "pause", ())])
-    assert demo.clock == pytest.approx(demo.duration, abs=0.01)  # played to the end and stopped there
-    assert session._demo.recorder.snapshot().events == events  # playing back records nothing new
+    view = session.view()
+    assert view.clock == pytest.approx(view.duration, abs=0.01)  # played to the end and stopped there
+    assert session.timeline.events == events  # playing back records nothing new
 
 
 def test_a_phrase_labels_the_nearest_event_and_an_unknown_object_is_told_the_labels() -> None:
     session = demonstrated()
     feed(session, [SayEntry(4.5, "the ball rises"), SayEntry(4.6, "the ball lands in the skillet")])
     first, second = session.messages[-2:]
-    movement = next(e for e in session._demo.recorder.snapshot().events if e.type == "movement")
+    movement = next(e for e in session.timeline.events if e.type == "movement")
     assert first.text == f"{movement.id} is now narrated 'the ball rises'" and movement.label == "the ball rises"
     assert "no component is called 'skillet'" in second.text and "ball, block, wall" in second.text
 
@@ -113,9 +111,8 @@ def test_a_body_dragged_at_absurd_speed_does_not_pass_through_a_wall() -> None:
             PenEntry(1.01, 300 / W, 0.5, 0.6, True, True, False, False, False)]
     jump += [PenEntry(1.02 + 0.01 * k, 1500 / W, 0.5, 0.6, True, True, False, False, False) for k in range(100)]
     feed(session, [CommandEntry(0.5, "mode", ("demo",)), *jump])
-    demo = session._demo
-    assert demo.world.pose("b1")[0] < 800 - 10 - 40 + 2  # held against the wall's left face, not through it
-    contact = next(e for e in demo.recorder.snapshot().events if e.type == "contact")
+    assert session.view().poses["b1"][0] < 800 - 10 - 40 + 2  # held against the wall's left face, not through it
+    contact = next(e for e in session.timeline.events if e.type == "contact")
     assert set(contact.components) == {"b1", "b2"} and dict(contact.sides) == {"b1": "right", "b2": "left"}
 
 

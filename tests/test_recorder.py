@@ -6,10 +6,11 @@ from __future__ import annotations
 
 import math
 
+from physink_tui.scene.physics.contacts import ContactRecord
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.graph import check_acyclic, descendants
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides
-from physink_tui.timeline.recorder import ContactSeen, Observation, Recorder
+from physink_tui.timeline.recorder import Observation, Recorder
 
 DT = 1 / 120
 
@@ -79,7 +80,7 @@ def test_contact_sides_come_from_the_normal_and_a_container_holds_what_lands_in_
 def test_reports_of_one_pair_within_15_frames_are_one_contact() -> None:
     recorder = Recorder({"ball": box("ball", 20, 20), "p": box("p", 200, 20)}, frozenset({"ball"}))
     run = Run(recorder)
-    hit = ContactSeen("ball", "p", (300, 390), (0.0, 1.0))
+    hit = ContactRecord(0, "ball", "p", (300, 390), (0.0, 1.0))
     on, away = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}, {"ball": moving(300, 300, 0, -100),
                                                                         "p": still(300, 400)}
     run.step(away, grabbed="ball")
@@ -98,7 +99,7 @@ def test_a_body_that_lifts_off_by_less_than_half_its_size_and_touches_again_stay
     # a 20 x 20 box (size: a disc of its area, 22.6 across) rattles on a platform, then really bounces
     recorder = Recorder({"ball": box("ball", 20, 20), "p": box("p", 200, 20)}, frozenset({"ball"}))
     run = Run(recorder)
-    hit = ContactSeen("ball", "p", (300, 390), (0.0, 1.0))
+    hit = ContactRecord(0, "ball", "p", (300, 390), (0.0, 1.0))
     on = {"ball": moving(300, 380, 0, 100), "p": still(300, 400)}
     run.step({"ball": moving(300, 300, 0, 100), "p": still(300, 400)}, grabbed="ball")
     for _ in range(5):
@@ -178,8 +179,8 @@ def two_balls() -> Run:
     outlines = {"a": box("a", 20, 20), "b": box("b", 20, 20), "p": box("p", 100, 10), "q": box("q", 100, 10)}
     run = Run(Recorder(outlines, frozenset({"a", "b", "p", "q"})))
     for k in range(30):
-        contacts = [ContactSeen("a", "p", (100, 95), (0.0, 1.0))] if k == 10 else []
-        contacts += [ContactSeen("a", "q", (300, 95), (0.0, 1.0))] if k == 25 else []
+        contacts = [ContactRecord(0, "a", "p", (100, 95), (0.0, 1.0))] if k == 10 else []
+        contacts += [ContactRecord(0, "a", "q", (300, 95), (0.0, 1.0))] if k == 25 else []
         run.step({"a": moving(100 + 10 * k, 80, 1200, 0), "b": moving(600, 10 * k, 0, 1200),
                   "p": still(100, 100), "q": still(300, 100)}, contacts, grabbed="a" if k < 20 else "b")
     return run
@@ -203,14 +204,14 @@ def test_a_contact_with_a_body_playing_back_splits_its_recorded_movement() -> No
     outlines = {"a": box("a", 20, 20), "b": box("b", 20, 20), "k": cup("k")}
     run = Run(Recorder(outlines, frozenset({"a", "b"})))
     for k in range(40):  # first b alone, into the basket at frame 30
-        contacts = [ContactSeen("b", "k", (500, 500), (0.0, 1.0))] if k == 30 else []
+        contacts = [ContactRecord(0, "b", "k", (500, 500), (0.0, 1.0))] if k == 30 else []
         run.step({"b": moving(200 + 10 * k, 500, 1200, 0), "a": still(0, 0), "k": still(500, 500)}, contacts,
                  grabbed="b")
     recorded = run.recorder.pause()
     (b_move,) = [e for e in recorded.events if e.type == "movement" and e.causes == ("e1",)]
     run.frame = 0
     for k in range(20):  # then a, while b plays back; they meet at frame 12
-        contacts = [ContactSeen("a", "b", (320, 500), (1.0, 0.0))] if k == 12 else []
+        contacts = [ContactRecord(0, "a", "b", (320, 500), (1.0, 0.0))] if k == 12 else []
         run.step({"a": moving(200 + 10 * k, 500, 1200, 0), "b": moving(200 + 10 * k, 500, 1200, 0),
                   "k": still(500, 500)}, contacts, grabbed="a", playing={"b"})
     timeline = run.recorder.pause()
@@ -230,7 +231,7 @@ def test_a_body_set_moving_again_in_a_contact_that_goes_on_is_moved_by_that_cont
     recorder = Recorder(outlines, frozenset(outlines))
     run = Run(recorder)
     run.step({"peg": moving(60, 90, 120, 0), "platform": still(100, 100)}, grabbed="peg")
-    hit = ContactSeen("peg", "platform", (60, 95), (0.0, 1.0))
+    hit = ContactRecord(0, "peg", "platform", (60, 95), (0.0, 1.0))
     run.step({"peg": moving(61, 90, 120, 0), "platform": moving(100, 100, 0, 30)}, [hit], grabbed="peg",
              touching=[("peg", "platform")])
     for k in range(40):  # the platform comes to rest under the sliding peg, then bobs up again

@@ -12,10 +12,10 @@ from strokegen.strokes import circle, line
 from test_session import circle_points, pen_header, pen_stroke
 
 from physink_tui.formats.journal.entries import CommandEntry, PenEntry
-from physink_tui.scene.components import BACKGROUND, Body, Joint
+from physink_tui.scene.components import BACKGROUND, Body, Joint, Scene
 from physink_tui.scene.interpretation.interpret import interpret
 from physink_tui.scene.recognition.primitives import Box, Recognition
-from physink_tui.session.history import History
+from physink_tui.session.history import Document
 from physink_tui.session.session import Session
 
 W, H = 1600, 1000
@@ -29,10 +29,8 @@ def canvas_stroke(t0: float, points: list[tuple[float, float]]) -> list[PenEntry
 
 def on_thin_platform() -> Session:
     """A session whose sketch holds a 300 x 12 platform (as the recogniser beautifies a box), id ``b1``."""
-    session = Session.from_header(pen_header())
     platform = Recognition("box", 1.0, Box(PLATFORM, 300.0, 12.0, 0.0))
-    session.history = History(interpret(session.scene, platform, []).scene)
-    return session
+    return Session.from_header(pen_header(), Document(interpret(Scene(), platform, []).scene))
 
 
 def draw_x(session: Session, t0: float, seed: str, centre: tuple[float, float], size: float, gap: float) -> float:
@@ -94,7 +92,7 @@ def test_a_welded_platform_stays_put_when_the_ball_is_pushed_into_it_in_demo_mod
     session.handle(PenEntry(t + 1.02, 0.5, 0.6, 0.0, False, True, False, False, False))
     for k in range(30):
         session.handle(PenEntry(t + 1.1 + 0.1 * k, 0.9, 0.9, 0.0, False, False, False, False, False))
-    assert session._demo.world.pose("b1") == (*PLATFORM, 0.0)
+    assert session.view().poses["b1"] == (*PLATFORM, 0.0)
     session.handle(CommandEntry(t + 5.0, "mode", ("sketch",)))
     events = session.timeline.events
     assert any(e.type == "contact" and set(e.components) == {"b1", "b2"} for e in events)

@@ -92,7 +92,7 @@ def pinball_before_the_edit() -> tuple[Session, Timeline]:
         session.handle(entry)
         if isinstance(entry, CommandEntry) and entry.name == "seek" and entry.args == (PINBALL_EDIT_T,):
             break
-    return session, session._demo.recorder.snapshot()
+    return session, session.timeline
 
 
 def test_the_pinball_edit_deletes_what_the_old_movement_caused_and_nothing_else() -> None:

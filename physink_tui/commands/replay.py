@@ -20,7 +20,6 @@ from physink_tui.commands.decode import decoder_for
 from physink_tui.commands.gesture_output import gesture_json, gesture_text
 from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
 from physink_tui.errors import DescriptorError, PhysinkError
-from physink_tui.formats.journal.entries import DeviceEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import save_project
@@ -83,10 +82,6 @@ def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None) -> N
         session.vocabulary = session.vocabulary.extended(vocabulary)
     events: list[str] = []
     for entry in journal.entries:
-        if isinstance(entry, DeviceEntry):
-            for device in entry.devices:
-                if device.id in pen.devices:  # a reconnected device: its gesture so far ends (listed, not sketched)
-                    pen.handle(SourceEnded(entry.t, device.id, None))
         session.handle(entry)
         if (line := entry_line(entry)) is not None:
             events.append(line)

@@ -171,6 +171,11 @@ class Scene:
         kinds = {c.id: type(c).__name__.lower() for c in self.components.values() if isinstance(c, Spring | Rope)}
         return {**kinds, **self.labels()}
 
+    def called(self, component_id: str) -> str:
+        """How a message names a component: ``ball (b2)`` when labelled, else its id."""
+        label = getattr(self.components.get(component_id), "label", None)
+        return f"{label} ({component_id})" if label else component_id
+
     def fixed_bodies(self) -> frozenset[str]:
         """Ids of the bodies welded to the background (one pass, for questions about every body)."""
         return frozenset(end for c in self.components.values() if isinstance(c, Joint) and c.kind == "weld"

@@ -1,26 +1,35 @@
-"""Undo and redo over immutable scenes: every sketch action is one entry; no I/O."""
+"""Undo and redo over immutable documents (a scene and its timeline): every action is one entry; no I/O."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
 from physink_tui.scene.components import Scene
+from physink_tui.timeline.events import Timeline
+
+
+@dataclass(frozen=True, slots=True)
+class Document:
+    """What the user has made: the sketch and, once demonstrated, its timeline."""
+
+    scene: Scene = field(default_factory=Scene)
+    timeline: Timeline | None = None
 
 
 @dataclass
 class History:
-    """The scenes before each action, for undo, and the ones undone, for redo.
+    """The documents before each action, for undo, and the ones undone, for redo.
 
-    >>> h = History(Scene())
-    >>> h.push(Scene().new_id("b")[1], "stroke"); h.can_undo
+    >>> h = History(Document())
+    >>> h.push(Document(Scene().new_id("b")[1]), "stroke"); h.can_undo
     True
-    >>> h.undo() == Scene(), h.can_redo
+    >>> h.undo() == Document(), h.can_redo
     (True, True)
     """
 
-    current: Scene
-    _undo: list[tuple[Scene, str]] = field(default_factory=list)
-    _redo: list[tuple[Scene, str]] = field(default_factory=list)
+    current: Document
+    _undo: list[tuple[Document, str]] = field(default_factory=list)
+    _redo: list[tuple[Document, str]] = field(default_factory=list)
 
     @property
     def can_undo(self) -> bool:
@@ -30,17 +39,17 @@ class History:
     def can_redo(self) -> bool:
         return bool(self._redo)
 
-    def push(self, scene: Scene, description: str) -> None:
-        """Record that ``description`` turned the current scene into ``scene``."""
+    def push(self, document: Document, description: str) -> None:
+        """Record that ``description`` turned the current document into ``document``."""
         self._undo.append((self.current, description))
         self._redo.clear()
-        self.current = scene
+        self.current = document
 
-    def amend(self, scene: Scene) -> None:
-        """Replace the current scene as part of the last action (its undo still goes back before it)."""
-        self.current = scene
+    def amend(self, document: Document) -> None:
+        """Replace the current document as part of the last action (its undo still goes back before it)."""
+        self.current = document
 
-    def undo(self) -> Scene | None:
+    def undo(self) -> Document | None:
         """Go back one action; None when there is nothing to undo."""
         if not self._undo:
             return None
@@ -49,7 +58,7 @@ class History:
         self.current = before
         return before
 
-    def redo(self) -> Scene | None:
+    def redo(self) -> Document | None:
         """Do again the last undone action; None when there is nothing to redo."""
         if not self._redo:
             return None

@@ -8,13 +8,12 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 
+from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.events import REGIONS, Event, TrajectoryPoint
 from physink_tui.timeline.qualitative import BodyOutline, Box, bounds, placed, regions_at
 
-Pose = tuple[float, float, float, float, float, float]  # x, y, angle, vx, vy, angular velocity
 
-
-def speed(pose: Pose, radius: float) -> float:
+def speed(pose: Motion, radius: float) -> float:
     """How fast a body moves: its centre, or its rim when it spins faster."""
     return max(math.hypot(pose[3], pose[4]), abs(pose[5]) * radius)
 
@@ -26,7 +25,7 @@ class Bounds:
     outlines: Mapping[str, BodyOutline]
     _cache: dict[str, tuple[tuple[float, float, float], Box]] = field(default_factory=dict)
 
-    def of(self, body: str, pose: Pose) -> Box:
+    def of(self, body: str, pose: Motion) -> Box:
         at = (pose[0], pose[1], pose[2])
         cached = self._cache.get(body)
         if cached is None or cached[0] != at:
@@ -62,8 +61,8 @@ class OpenMovement:
             frames[c] = list(track)
         return cls(event.id, bodies, frames, {c: set(rs) for c, rs in event.regions})
 
-    def record(self, t: float, poses: Mapping[str, Pose], held: bool, radius: Callable[[str], float],
-               others: Callable[[str], bool], box: Callable[[str, Pose], Box], reach: float,
+    def record(self, t: float, poses: Mapping[str, Motion], held: bool, radius: Callable[[str], float],
+               others: Callable[[str], bool], box: Callable[[str, Motion], Box], reach: float,
                moving_speed: float) -> None:
         """One frame: the poses of ``bodies``, the regions the moving body is in (of the bodies ``others``
         accepts), and whether anything moved (``held``: the pen holds one of them)."""

@@ -27,9 +27,11 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
+from physink_tui.scene.physics.contacts import ContactRecord
+from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
-from physink_tui.timeline.movement_record import Bounds, OpenMovement, Pose
+from physink_tui.timeline.movement_record import Bounds, OpenMovement
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
 from physink_tui.timeline.touches import Touches
 
@@ -42,16 +44,6 @@ SEPARATION_GAP = 4.0
 RECENT_SEPARATION = 1.0
 """Seconds after two bodies stop touching during which a body starting to move by itself was released by it."""
 
-
-
-@dataclass(frozen=True, slots=True)
-class ContactSeen:
-    """A contact begun in the last step: the two bodies, a contact point, the normal from ``a`` towards ``b``."""
-
-    a: str
-    b: str
-    point: tuple[float, float]
-    normal: tuple[float, float]
 
 
 @dataclass(frozen=True, slots=True)
@@ -68,8 +60,8 @@ class Observation:
     """
 
     t: float
-    poses: Mapping[str, Pose]
-    contacts: Sequence[ContactSeen] = ()
+    poses: Mapping[str, Motion]
+    contacts: Sequence[ContactRecord] = ()
     grabbed: str | None = None
     touching: frozenset[frozenset[str]] = frozenset()
     playing: frozenset[str] = frozenset()
@@ -184,6 +176,12 @@ class Recorder:
 
     finish = pause
 
+    def relabel(self, timeline: Timeline) -> None:
+        """Take ``timeline``: this recorder's events with other labels (narration), nothing else changed."""
+        if [ev.id for ev in timeline.events] != [ev.id for ev in self.timeline.events]:
+            raise ValueError("relabel: the timeline has other events than the recorder's")
+        self.timeline = timeline
+
     def redemonstrate(self, body: str, t: float) -> Timeline:
         """The assisted edit (thesis 3.3.2): ``body`` is demonstrated again from ``t``.
 
@@ -277,8 +275,8 @@ class Recorder:
         """The latest movement of ``body``'s mechanism (open or ended), which a new grab continues."""
         return covering(self.timeline, self.group_bodies(body), math.inf)
 
-    def _contact(self, obs: Observation, contact: ContactSeen) -> None:
-        a, b = contact.a, contact.b
+    def _contact(self, obs: Observation, contact: ContactRecord) -> None:
+        a, b = contact.a_id, contact.b_id
         pair = frozenset((a, b))
         if a == b or a not in self.outlines or b not in self.outlines:
             return

@@ -11,9 +11,8 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from physink_tui.scene.physics.state import Pose, Velocity
 from physink_tui.timeline.events import Timeline
-
-Pose = tuple[float, float, float]
 
 
 class Tape:
@@ -52,13 +51,13 @@ class Tape:
         >>> move = Event("e1", "movement", ("b1",), (), 0.0, 1.0,
         ...              trajectory=(TrajectoryPoint(0, 0, 0, 0, 0, 0), TrajectoryPoint(1, 10, 20, 1, 0, 0)))
         >>> Tape(Timeline((move,))).pose("b1", 0.25)
-        (2.5, 5.0, 0.25)
+        Pose(x=2.5, y=5.0, angle=0.25)
         """
         table = self._frames[body]
         ts = table[:, 0]
-        return tuple(float(np.interp(t, ts, table[:, k])) for k in (1, 2, 3))  # type: ignore[return-value]
+        return Pose(*(float(np.interp(t, ts, table[:, k])) for k in (1, 2, 3)))
 
-    def velocity(self, body: str, t: float, dt: float) -> Pose:
+    def velocity(self, body: str, t: float, dt: float) -> Velocity:
         """The recorded velocity (vx, vy, angular) over the step from ``t`` to ``t + dt``."""
         a, b = self.pose(body, t), self.pose(body, t + dt)
-        return ((b[0] - a[0]) / dt, (b[1] - a[1]) / dt, (b[2] - a[2]) / dt)
+        return Velocity((b[0] - a[0]) / dt, (b[1] - a[1]) / dt, (b[2] - a[2]) / dt)

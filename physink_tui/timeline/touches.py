@@ -33,6 +33,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
+from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.qualitative import BodyOutline, hull_gap
 
 SAME_CONTACT_FRAMES = 15
@@ -42,7 +43,6 @@ LEAVE_FRACTION = 0.5
 MIN_LEAVE_GAP = 4.0
 """Canvas units: the least separation that counts as leaving (thin bodies, pen tremor)."""
 
-Pose = tuple[float, ...]
 
 
 def body_size(outline: BodyOutline) -> float:
@@ -81,7 +81,7 @@ class Touches:
     _going: dict[frozenset[str], _Going] = field(default_factory=dict)
     _size: dict[str, float] = field(default_factory=dict)
     _radius: dict[str, float] = field(default_factory=dict)
-    _seen: dict[str, Pose] = field(default_factory=dict)  # each body's pose at the last step
+    _seen: dict[str, Motion] = field(default_factory=dict)  # each body's pose at the last step
 
     def __post_init__(self) -> None:
         self._size = {body: body_size(outline) for body, outline in self.outlines.items()}
@@ -119,7 +119,7 @@ class Touches:
         self._going.pop(pair, None)
         self._last_report.pop(pair, None)
 
-    def observe(self, poses: Mapping[str, Pose], touching: frozenset[frozenset[str]]) -> None:
+    def observe(self, poses: Mapping[str, Motion], touching: frozenset[frozenset[str]]) -> None:
         """One step: pairs in a recorded contact that have come apart by their leave gap have left it."""
         moved = {body: self._moved(body, poses.get(body)) for pair in self._going for body in pair}
         for pair in sorted(self._going, key=sorted):
@@ -139,7 +139,7 @@ class Touches:
                 going.slack = going.leave - gap
         self._seen = {body: poses[body] for body in moved if body in poses}
 
-    def _moved(self, body: str, pose: Pose | None) -> float:
+    def _moved(self, body: str, pose: Motion | None) -> float:
         """How far any point of ``body`` can have moved since the last step (0 when unknown)."""
         before = self._seen.get(body)
         if pose is None or before is None:

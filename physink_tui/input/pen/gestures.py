@@ -164,6 +164,8 @@ class GestureEngine:
             t = self._last_t
         self._last_t = t
         out: list[Gesture] = []
+        if self._points:
+            self._check_dwell(t, out)  # the pen stayed where it was until now: as if time had been ticked to t
         before = self.machine.state
         for state in self.machine.follow(sample):
             self._enter(before, state, t, sample, out)
@@ -174,8 +176,14 @@ class GestureEngine:
             out.append(PenMove(t, sample.x, sample.y, 0.0, False))
         return out
 
+    @property
+    def ink(self) -> tuple[StrokePoint, ...]:
+        """The points of the stroke being drawn (empty when the pen is up)."""
+        return tuple(self._points)
+
     def tick(self, t: float) -> list[Gesture]:
-        """Let time pass without a sample (the session's clock from other inputs): may complete a dwell."""
+        """Let time pass without a sample (the session's clock): may complete a dwell. The dwell is stamped with
+        the moment it completed, so ticking often, seldom or never before the next sample gives the same gestures."""
         if not self._points or t < self._last_t:
             return []
         out: list[Gesture] = []
@@ -227,9 +235,9 @@ class GestureEngine:
             self._can_dwell = False
             return
         if t - self._anchor.t >= cfg.dwell_seconds:
-            self._dwell_t = t
+            self._dwell_t = max(self._anchor.t + cfg.dwell_seconds, self._points[-1].t)
             self._can_dwell = False
-            out.append(Dwell(t, self._anchor.x, self._anchor.y))
+            out.append(Dwell(self._dwell_t, self._anchor.x, self._anchor.y))
 
     def _finish(self, t: float, ended_by: str, out: list[Gesture]) -> None:
         points = tuple(self._points)

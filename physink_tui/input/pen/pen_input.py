@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 from physink_tui.errors import DeviceError
 from physink_tui.input.hid.decoder import HidPenDecoder
-from physink_tui.input.pen.gestures import Gesture, GestureConfig, GestureEngine
+from physink_tui.input.pen.gestures import Gesture, GestureConfig, GestureEngine, StrokePoint
 from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.smoothing import PositionSmoother
@@ -78,6 +78,14 @@ class PenInput:
             dev.ended.append(item)
             return dev.engine.device_lost(item.t) if item.error is not None or dev.engine.drawing else []
         raise TypeError(f"not a source item: {item!r}")
+
+    def tick(self, t: float) -> list[Gesture]:
+        """Time passed to ``t`` without input: the gestures that completes (a dwell), device by device."""
+        return [g for dev in self.devices.values() for g in dev.engine.tick(t)]
+
+    def ink(self) -> tuple[tuple[StrokePoint, ...], ...]:
+        """The strokes being drawn now, one per device with its pen down (canvas fractions)."""
+        return tuple(ink for dev in self.devices.values() if (ink := dev.engine.ink))
 
     def feed_canvas_sample(self, device_id: str, sample: PenSample) -> list[Gesture]:
         """A sample already in canvas coordinates (journal ``pen`` lines)."""

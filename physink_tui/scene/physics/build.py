@@ -26,6 +26,7 @@ import shapely
 
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Material, Point, Rope, Scene, Spring
+from physink_tui.scene.physics.state import Pose
 
 POLYLINE_RADIUS = 2.0
 """Half-thickness of an open polyline body's segments, in canvas units (a ramp is a 4-unit strip)."""
@@ -46,7 +47,6 @@ invert, and stretch as far as any canvas needs."""
 AXES = {"horizontal": (1.0, 0.0), "vertical": (0.0, 1.0)}
 """A spring's axis name -> the unit direction it may stretch along."""
 
-Pose = tuple[float, float, float]
 
 
 @dataclass(slots=True)

@@ -8,8 +8,10 @@ grow with the size of the sketch, and the result depends only on the scene, neve
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 
+import shapely
 from shapely.geometry import LineString
 
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope, Scene, Spring
@@ -24,6 +26,31 @@ OVERLAP_DONE = 0.002
 MAX_ROUNDS = 20
 ROUND_STEPS = 30
 """Steps per round; the body's velocity is zeroed between rounds so it is put down, not thrown."""
+
+
+def clear_overlaps(scene: Scene, created: tuple[str, ...], near_of: Callable[[Scene], Near],
+                   canvas: tuple[float, float]) -> tuple[Scene, list[str]]:
+    """Push each new body of ``created`` that overlaps others (not joined to it) clear of them, the others held
+    still; a push that would leave the canvas is not made. Returns the scene and what to tell the user.
+
+    ``near_of(scene)`` gives a spatial index of a scene's bodies (`interpret.Near`), brought in step with it.
+    """
+    notes = []
+    for body_id in created:
+        if body_id not in scene.components or scene.is_fixed(body_id):
+            continue
+        hit = overlapped(scene, body_id, near_of(scene))
+        if not hit:
+            continue
+        pushed = push_clear(scene, body_id, hit)
+        others, name = ", ".join(scene.called(h) for h in hit), scene.called(body_id)
+        if not body_geometry(pushed.components[body_id]).intersects(shapely.box(0, 0, *canvas)):
+            notes.append(f"{name} overlaps {others}; pushing it clear would put it off the canvas, so it stays "
+                         "where it was drawn")
+            continue
+        scene = pushed
+        notes.append(f"{name} overlapped {others}; the physics pushed it clear")
+    return scene, notes
 
 
 def overlapped(scene: Scene, body_id: str, near: Near | None = None) -> list[str]:

@@ -16,9 +16,10 @@ import pymunk
 
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Point, Rope, Scene, Spring
-from physink_tui.scene.physics.build import Built, Pose, build
+from physink_tui.scene.physics.build import Built, build
 from physink_tui.scene.physics.contacts import ContactListener, ContactRecord
 from physink_tui.scene.physics.speed import limit_speed
+from physink_tui.scene.physics.state import REST, Motion, Pose, Velocity, WorldState
 
 GRAVITY: Point = (0.0, 900.0)
 """Gravity in canvas units per second squared, pointing down the canvas (+y).
@@ -135,8 +136,8 @@ class World:
         return self._built.shapes[component_id]
 
     def constraints_of(self, component_id: str) -> tuple[pymunk.Constraint, ...]:
-        """The constraints of a joint, spring or rope (including constraints not in the space right now)."""
-        return self._built.constraints[component_id]
+        """The pymunk constraints that hold a joint, spring or rope (whether in the space now or not)."""
+        return tuple(self._built.constraints.get(component_id, ()))
 
     def links_of(self, rope_id: str) -> tuple[pymunk.Body, ...]:
         return self._built.links[rope_id]
@@ -163,15 +164,38 @@ class World:
         return hits[0] if hits else None
 
     def pose(self, body_id: str) -> Pose:
-        """``(x, y, angle)`` of a body's origin (`Body.position`) and its rotation in radians."""
+        """Where a body's origin (`Body.position`) is and its rotation in radians."""
         body = self._get(body_id)
-        return body.position.x, body.position.y, body.angle
+        return Pose(body.position.x, body.position.y, body.angle)
 
-    def velocity(self, body_id: str) -> Pose:
-        """``(vx, vy, angular velocity)`` of a body's origin, canvas units and radians per second."""
+    def velocity(self, body_id: str) -> Velocity:
+        """How fast a body's origin moves (canvas units per second) and turns (radians per second)."""
         body = self._get(body_id)
         v = body.velocity_at_world_point(body.position)
-        return v.x, v.y, body.angular_velocity
+        return Velocity(v.x, v.y, body.angular_velocity)
+
+    def motion(self, body_id: str) -> Motion:
+        """A body's pose and velocity together."""
+        body = self._get(body_id)
+        v = body.velocity_at_world_point(body.position)
+        return Motion(body.position.x, body.position.y, body.angle, v.x, v.y, body.angular_velocity)
+
+    def state(self) -> WorldState:
+        """The world now as a frozen value: every body's motion, the steps taken and the gravity."""
+        return WorldState(self._steps, {cid: self.motion(cid) for cid in self._by_z}, self.gravity)
+
+    @classmethod
+    def from_state(cls, scene: Scene, state: WorldState, *, dt: float = DT) -> World:
+        """A world of ``scene`` with its bodies where ``state`` has them, moving as they moved, and its step count:
+        a search forks any number of worlds from one state. Contact caches and drags are not part of a state, so a
+        forked world agrees with the original to the solver's warm start, not bit for bit."""
+        world = cls.from_scene(scene, gravity=state.gravity, dt=dt)
+        for cid, motion in state.bodies.items():
+            if cid in world._built.bodies:
+                world.place(cid, motion.pose, motion.velocity)
+        world._steps = state.step
+        world._listener.step = state.step
+        return world
 
     def set_velocity(self, body_id: str, velocity: Point, angular_velocity: float = 0.0) -> None:
         """Gives a dynamic body a velocity (of its centre of mass) and an angular velocity."""
@@ -201,7 +225,7 @@ class World:
 
     # -- demonstrating and playing back ---------------------------------------------------------------------------
 
-    def follow(self, body_id: str, pose: Pose, velocity: Pose) -> None:
+    def follow(self, body_id: str, pose: Pose, velocity: Velocity) -> None:
         """Moves a body along a recording: kinematic (it pushes what it meets and nothing pushes it), placed at
         ``pose`` (x, y, angle) and moving with ``velocity`` (vx, vy, angular) until the next call or `let_go`."""
         body = self._get(body_id)
@@ -219,7 +243,7 @@ class World:
             body.velocity, body.angular_velocity = velocity, spin
             self._sync_constraints()
 
-    def place(self, body_id: str, pose: Pose, velocity: Pose = (0.0, 0.0, 0.0)) -> None:
+    def place(self, body_id: str, pose: Pose, velocity: Velocity = REST) -> None:
         """Puts a body that is not fixed at ``pose`` (x, y, angle) with ``velocity`` (vx, vy, angular)."""
         body = self._get(body_id)
         if body.body_type == pymunk.Body.STATIC:

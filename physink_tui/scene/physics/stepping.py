@@ -1,0 +1,64 @@
+"""Running a world for the modes and for SIMULATE: the gravity-free demo world, one observed step at a time,
+and putting an adjusted body down; which steps to take and what they mean is left to the caller."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+
+from physink_tui.scene.components import Scene
+from physink_tui.scene.physics.contacts import ContactRecord
+from physink_tui.scene.physics.state import REST, Motion
+from physink_tui.scene.physics.world import World
+
+DEMO_DAMPING = 0.1
+"""Share of its velocity a free body keeps after one second in demo mode: a released body comes to rest (DESIGN.md),
+as on a table top."""
+CATCH_UP_STEPS = 60
+"""Steps an adjusted body gets to catch up with where the pen lifted (unless something blocks it)."""
+SETTLE_STEPS = 30
+"""Steps after an adjusted body is put down in which overlaps resolve, so bodies end flush (thesis figure 2-6)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    """What one step of a world showed.
+
+    Attributes:
+        step: the world's step count after the step.
+        motions: the pose and velocity of every body observed.
+        contacts: contacts begun in this step between observed bodies, in the order they began.
+        touching: the pairs of observed bodies touching after the step.
+    """
+
+    step: int
+    motions: Mapping[str, Motion]
+    contacts: tuple[ContactRecord, ...]
+    touching: frozenset[frozenset[str]]
+
+
+def demo_world(scene: Scene) -> World:
+    """The world of demo mode: no gravity, a little damping, no tunnelling; contacts and joints still act."""
+    world = World.from_scene(scene, gravity=(0.0, 0.0))
+    world.space.damping = DEMO_DAMPING
+    world.limit_speeds()
+    return world
+
+
+def step_and_observe(world: World, bodies: Iterable[str]) -> Frame:
+    """Advance ``world`` one step and observe ``bodies``: their motions, the contacts begun among them, and which
+    of them touch."""
+    world.step(1)
+    motions = {body: world.motion(body) for body in bodies}
+    contacts = tuple(c for c in world.take_contacts() if c.a_id in motions and c.b_id in motions)
+    touching = frozenset(pair for pair in world.touching() if all(c in motions for c in pair))
+    return Frame(world.steps, motions, contacts, touching)
+
+
+def put_down(world: World, body_id: str) -> None:
+    """End a drag the way an adjustment ends: the body catches up with the pen, is let go without being thrown,
+    and the world settles so what it was pushed into ends flush against it."""
+    world.step(CATCH_UP_STEPS)
+    world.release()
+    world.set_velocity(body_id, REST[:2], REST.w)
+    world.step(SETTLE_STEPS)
