@@ -17,7 +17,7 @@ from typing import Any
 
 from physink_tui.errors import DeviceError
 from physink_tui.input.hid.hidraw import BUS_USB, TABLET_VENDORS, UDEV_INSTALL, HidrawInfo
-from physink_tui.input.hid.readers import POLL_TIMEOUT_S, ThreadedReader
+from physink_tui.input.hid.threaded_reader import POLL_TIMEOUT_S, ThreadedReader
 from physink_tui.input.sources import RawReport, SourceItem
 
 DEFAULT_PACKET_SIZE = 64
