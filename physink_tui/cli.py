@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import math
 import sys
 from collections.abc import Callable, Sequence
 
@@ -55,6 +56,16 @@ def _positive_int(text: str) -> int:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
     if value < 1:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _positive_rate(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"expected a positive number per second, got {text!r}")
     return value
 
 
@@ -123,6 +134,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--frames", action="store_true", help="also write DIR/frames/NNNNN.png")
     p.add_argument("--vocabulary", metavar="FILE",
                    help="extra verbs and prepositions for phrases, lines 'verb WORD...' or 'prep WORD...'")
+    p.add_argument("--ticks", type=_positive_rate, metavar="HZ",
+                   help="advance the clock HZ times a second between inputs, as a live driver does "
+                        "(the outputs are the same)")
 
     p = sub.add_parser("recognize", help="recognise strokes: one JSON line per input line")
     p.add_argument("strokes", metavar="STROKES.jsonl", help="one stroke per line")

@@ -248,7 +248,6 @@ def test_an_exception_on_the_worker_thread_is_raised_by_stop() -> None:
     assert session.calls[-1][0] == "finish"
 
 
-@pytest.mark.xfail(reason="needs the session API of issue 12", strict=False)
 def test_a_real_session_journals_every_entry_with_its_stamp_and_the_end(tmp_path) -> None:
     from physink_tui.session.session import Session
 

@@ -31,6 +31,7 @@ from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.sources import RawReport, SourceEnded
 from physink_tui.outputs import OutputFolder
+from physink_tui.session.replay_driver import replay
 from physink_tui.session.session import Session
 from physink_tui.timeline.narrate import timeline_text
 from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary
@@ -69,7 +70,7 @@ def replay_capture(capture: Capture) -> tuple[list[Gesture], list[str]]:
     return gestures, notes
 
 
-def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None) -> None:
+def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, ticks: float | None = None) -> None:
     """Read the journal once, run it through the session (which decodes it, once) and write the gestures the
     session's input side found, DIR/project.json and, after a demonstration, the timeline."""
     from physink_tui.input.journal_replay import decoder_notes, entry_line, pen_input_for
@@ -80,12 +81,8 @@ def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None) -> N
     session.pen = pen
     if vocabulary is not None:
         session.vocabulary = session.vocabulary.extended(vocabulary)
-    events: list[str] = []
-    for entry in journal.entries:
-        session.handle(entry)
-        if (line := entry_line(entry)) is not None:
-            events.append(line)
-    session.finish()
+    replay(session, journal.entries, ticks)
+    events = [line for entry in journal.entries if (line := entry_line(entry)) is not None]
     last_t = journal.entries[-1].t if journal.entries else 0.0
     for device_id in list(pen.devices):
         pen.handle(SourceEnded(last_t, device_id, None))
@@ -112,7 +109,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     with regular_copy(path, data) as copy:
         try:
-            replay_journal(copy, args.out, vocabulary)
+            replay_journal(copy, args.out, vocabulary, getattr(args, "ticks", None))
         except PhysinkError as exc:
             if copy == path:
                 raise

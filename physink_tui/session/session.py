@@ -15,6 +15,7 @@ from __future__ import annotations
 import traceback
 from collections.abc import Iterable
 from dataclasses import replace
+from types import MappingProxyType
 
 from physink_tui.errors import JournalError, PhysinkError
 from physink_tui.formats.journal.entries import (
@@ -38,7 +39,7 @@ from physink_tui.session.history import Document, History
 from physink_tui.session.modes.base import Mode
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import SketchMode
-from physink_tui.session.view import Message, SessionView, view_of
+from physink_tui.session.view import Message, SessionView
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.phrases import DEFAULT_VOCABULARY, Vocabulary, parse_vocabulary
 
@@ -123,13 +124,43 @@ class Session:
 
     def view(self) -> SessionView:
         """An immutable snapshot of everything a view shows."""
-        return view_of(self)
+        mode = self.current
+        width, height = self.canvas
+        ink = tuple(tuple((p.x * width, p.y * height) for p in stroke) for stroke in self.pen.ink())
+        pending = self.sketch.pending
+        timeline = mode.timeline()
+        demo = mode if isinstance(mode, DemoMode) else None
+        return SessionView(
+            revision=self.revision,
+            t=self.t,
+            mode=mode.name,
+            scene=self.scene,
+            poses=MappingProxyType(dict(mode.poses())),
+            ink=ink,
+            pending=(pending.points,) if pending is not None else (),
+            selected=self.selected,
+            can_undo=self.history.can_undo or (demo is not None and demo.has_take),
+            can_redo=self.history.can_redo,
+            timeline=timeline,
+            clock=demo.clock if demo else 0.0,
+            duration=max((ev.t1 for ev in timeline.events), default=0.0) if timeline else 0.0,
+            playing=demo.playing if demo else False,
+            messages=tuple(self.messages),
+        )
 
     # -- input ---------------------------------------------------------------------------------------------
 
     def handle(self, entry: JournalEntry) -> None:
         """Consume one input: time first advances to its ``t``; then it is acted on (or refused, with a message);
-        then it is journaled. Nothing an input can do raises out of here."""
+        then it is journaled. An entry the journal cannot hold (a value out of range, time going backwards) is
+        refused before it is acted on, so a replay of the journal sees what the session saw. Nothing an input can
+        do raises out of here."""
+        if self.journal is not None:
+            try:
+                self.journal.check(entry)
+            except JournalError as exc:
+                self.tell(f"input refused: {exc}")
+                return
         try:
             self.advance(entry.t)
             self._act(entry)

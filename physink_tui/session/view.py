@@ -1,18 +1,14 @@
-"""What a view is given: `SessionView`, an immutable snapshot of a session (`view_of`), and `Message`; no drawing."""
+"""What a view is given: `SessionView`, an immutable snapshot of a session (built by `Session.view`), and
+`Message`; no drawing."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from types import MappingProxyType
-from typing import TYPE_CHECKING
 
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
 from physink_tui.timeline.events import Timeline
-
-if TYPE_CHECKING:  # the session builds views; a view never reaches back into it
-    from physink_tui.session.session import Session
 
 Stroke = tuple[tuple[float, float], ...]
 
@@ -72,32 +68,3 @@ class SessionView:
     playing: bool
     messages: tuple[Message, ...]
     search: SearchProgress | None = None
-
-
-def view_of(session: Session) -> SessionView:
-    """The snapshot of ``session`` now."""
-    from physink_tui.session.modes.demo import DemoMode
-
-    mode = session.current
-    width, height = session.canvas
-    ink = tuple(tuple((p.x * width, p.y * height) for p in stroke) for stroke in session.pen.ink())
-    pending = session.sketch.pending
-    timeline = mode.timeline()
-    demo = mode if isinstance(mode, DemoMode) else None
-    return SessionView(
-        revision=session.revision,
-        t=session.t,
-        mode=mode.name,
-        scene=session.scene,
-        poses=MappingProxyType(dict(mode.poses())),
-        ink=ink,
-        pending=(pending.points,) if pending is not None else (),
-        selected=session.selected,
-        can_undo=session.history.can_undo or (demo is not None and demo.has_take),
-        can_redo=session.history.can_redo,
-        timeline=timeline,
-        clock=demo.clock if demo else 0.0,
-        duration=max((ev.t1 for ev in timeline.events), default=0.0) if timeline else 0.0,
-        playing=demo.playing if demo else False,
-        messages=tuple(session.messages),
-    )

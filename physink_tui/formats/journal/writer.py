@@ -102,6 +102,13 @@ class JournalWriter:
         fsync_directory(os.path.dirname(os.path.abspath(target)))
         return cls(target, fd, header, len(data), clock)
 
+    def check(self, entry: JournalEntry) -> None:
+        """Whether `append` would take ``entry``: raises the `JournalError` it would raise for an invalid one."""
+        try:
+            encode_entry(entry, previous_t=self._last_t, devices=self._devices)
+        except JournalError as e:
+            raise JournalError(f"journal {self.path}: {e}") from None
+
     def append(self, entry: JournalEntry) -> None:
         """Check and buffer one entry; flushes by itself when `AUTO_FLUSH_BYTES` are waiting.
 
