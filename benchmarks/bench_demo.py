@@ -3,9 +3,9 @@
 Usage: .venv/bin/python benchmarks/bench_demo.py [--runs 5]
 
 Replays ``tests/journals/egg_cracker.physink.jsonl`` (the drawing, then the demonstration of figure 3-4) through the
-session. Every call of the session's `advance_demo` is timed with `time.perf_counter`, and so is every
+session. Every call of demo mode's `DemoMode.advance` is timed with `time.perf_counter`, and so is every
 `Recorder.observe` inside it; the world's step counter gives the frames stepped. A frame's cost is the time in
-`advance_demo` divided by the frames it stepped (pose and contact gathering, the world step, tape following and the
+`DemoMode.advance` divided by the frames it stepped (pose and contact gathering, the world step, tape following and the
 recorder), reported as the median over runs of the per-run mean, with the recorder's share apart and the largest
 single call per frame. Prints Markdown rows for docs/BENCHMARKS.md.
 """
@@ -21,7 +21,7 @@ import time
 from pathlib import Path
 
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.session import demo as demo_mode
+from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.session import Session
 from physink_tui.timeline.recorder import Recorder
 
@@ -31,30 +31,31 @@ JOURNAL = Path(__file__).resolve().parents[1] / "tests" / "journals" / "egg_crac
 def one_run() -> dict[str, float]:
     journal = read_journal(JOURNAL)
     session = Session.from_header(journal.header)
-    advance, observe = demo_mode.advance_demo, Recorder.observe
+    advance, observe = DemoMode.advance, Recorder.observe
     totals = {"advance": 0.0, "observe": 0.0, "frames": 0, "worst": 0.0}
 
-    def timed_advance(s: Session, t: float) -> None:
-        before = s._demo.world.steps
+    def timed_advance(mode: DemoMode, t: float) -> bool:
+        before = mode.world.steps
         t0 = time.perf_counter()
-        advance(s, t)
+        stepped = advance(mode, t)
         spent = time.perf_counter() - t0
-        frames = s._demo.world.steps - before
+        frames = mode.world.steps - before
         totals["advance"] += spent
         totals["frames"] += frames
         if frames:
             totals["worst"] = max(totals["worst"], spent / frames)
+        return stepped
 
     def timed_observe(self: Recorder, obs) -> None:
         t0 = time.perf_counter()
         observe(self, obs)
         totals["observe"] += time.perf_counter() - t0
 
-    demo_mode.advance_demo, Recorder.observe = timed_advance, timed_observe
+    DemoMode.advance, Recorder.observe = timed_advance, timed_observe
     try:
         session.run(journal.entries)
     finally:
-        demo_mode.advance_demo, Recorder.observe = advance, observe
+        DemoMode.advance, Recorder.observe = advance, observe
     frames = max(totals["frames"], 1)
     return {"frames": totals["frames"], "events": len(session.timeline),
             "frame_us": 1e6 * totals["advance"] / frames, "recorder_us": 1e6 * totals["observe"] / frames,
