@@ -33,8 +33,8 @@ from physink_tui.formats.journal.entries import (
 )
 from physink_tui.formats.journal.header_codec import decode_header, encode_header
 from physink_tui.formats.journal.reader import iter_journal, read_journal
+from physink_tui.formats.journal.value_checks import COMMANDS, MAX_SECONDS, MODES
 from physink_tui.formats.journal.writer import FSYNC_INTERVAL, JournalWriter
-from physink_tui.formats.json_checks import COMMANDS, MAX_SECONDS, MODES
 
 REPO = Path(__file__).resolve().parent.parent
 DESCRIPTOR = bytes.fromhex("05 0d 09 02 a1 01 85 02 09 20 a1 00 09 42 15 00 25 01 75 01 95 01 81 02 c0 c0")

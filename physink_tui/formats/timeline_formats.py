@@ -13,7 +13,7 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from physink_tui.formats.project.checks import show
+from physink_tui.formats.json_checks import show
 from physink_tui.formats.strict_json import DuplicateKey, unique_pairs
 from physink_tui.timeline.events import Event, Timeline, TimelineError, TrajectoryPoint, event_label
 from physink_tui.timeline.graph import check_acyclic

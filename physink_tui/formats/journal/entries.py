@@ -1,8 +1,8 @@
-"""The journal's header and entries as frozen values; no checking (see ``checks``), no JSON, no I/O.
+"""The journal's header and entries as frozen values; no checking (see `value_checks`), no JSON, no I/O.
 
 A journal is one `JournalHeader` followed by `JournalEntry` values in time order. The values are built
-directly by whoever journals (the session) and by the reader; `checks` says which ones are valid and
-`codec` turns them into lines.
+directly by whoever journals (the session) and by the reader; `value_checks` (over
+`physink_tui.formats.json_checks`) says which ones are valid and `codec` turns them into lines.
 """
 
 from __future__ import annotations
@@ -151,8 +151,8 @@ class CommandEntry:
 
     Attributes:
         t: seconds since the session start (>= 0, never less than the previous entry's).
-        name: one of `physink_tui.formats.json_checks.COMMANDS` (mode, play, pause, stop, seek, clear, undo, redo,
-            label, simulate, save).
+        name: one of `physink_tui.formats.journal.value_checks.COMMANDS` (mode, play, pause, stop, seek, clear,
+            undo, redo, label, simulate, save).
         args: its arguments: ``("sketch",)`` or ``("demo",)`` for mode, one float (seconds of timeline time,
             >= 0) for seek, ``(target, text)`` for label, ``(path,)`` for save, ``()`` for the others.
     """

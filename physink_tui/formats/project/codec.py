@@ -33,38 +33,24 @@ from typing import Any
 
 from physink_tui import __version__
 from physink_tui.errors import SceneError
-from physink_tui.formats.project.checks import (
-    _MISSING,
-    _Fields,
-    _json_value,
-    _object,
-    _text,
-    bad,
-    show,
+from physink_tui.formats import json_checks as checks
+from physink_tui.formats.json_checks import MISSING, Place, show
+from physink_tui.formats.project.scene_fields import (
+    Fields,
+    decode_components,
+    decode_next_id,
+    plain,
+    plain_component,
+    sub_object,
 )
 from physink_tui.formats.strict_json import DuplicateKey, unique_pairs
-from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Material, Rope, Scene, Spring
+from physink_tui.scene.components import Scene
 
 FORMAT = "physink-project"
 FORMAT_VERSION = 1
 """The version this program writes, and the newest it reads."""
 
 TOP_KEYS = ("format", "version", "program", "canvas", "components", "next_id", "vocabulary", "timeline")
-COMPONENT_KEYS = {
-    "body": ("id", "type", "shape", "outline", "radius", "position", "angle", "material", "label"),
-    "joint": ("id", "type", "kind", "a", "b", "anchor"),
-    "rope": ("id", "type", "points", "start_body", "end_body", "label"),
-    "spring": ("id", "type", "a", "b", "anchor_a", "anchor_b", "axis", "rest_length", "k", "label"),
-}
-"""Each component type's keys, in the order written."""
-MATERIAL_KEYS = ("density", "restitution", "friction")
-SHAPES = ("box", "circle", "ellipse", "polygon", "polyline")
-MIN_POINTS = {"box": 3, "ellipse": 3, "polygon": 3, "polyline": 2}
-"""The fewest outline points each non-circle shape may have."""
-JOINT_KINDS = ("pivot", "weld")
-AXES = ("horizontal", "vertical")
-"""Offending values are shown with at most this many characters."""
-
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,8 +96,9 @@ def encode_project(project: Project, *, where: str = "project") -> str:
       "timeline": null
     }
     """
-    checked = _project(_plain_project(project, where), where, None)
-    return _emit(_plain_project(checked, where))
+    at = Place(where, SceneError)
+    checked = _project(_plain_project(project, at), at, None)
+    return _emit(_plain_project(checked, at))
 
 
 def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -> Project:
@@ -143,15 +130,10 @@ def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -
         raise SceneError(f"{where}: not valid JSON ({e})") from None
     if not isinstance(value, dict):
         raise SceneError(f"{where}: expected a JSON object (a physink project), got {show(value)}")
-    return _project(value, where, warnings)
+    return _project(value, Place(where, SceneError), warnings)
 
 
 # --- writing -----------------------------------------------------------------------------------------------------
-
-
-def _plain(value: Any) -> Any:
-    """Tuples (points, outlines) as lists; everything else as it is, for the checks to judge."""
-    return [_plain(v) for v in value] if isinstance(value, tuple | list) else value
 
 
 def _plain_json(value: Any) -> Any:
@@ -160,39 +142,20 @@ def _plain_json(value: Any) -> Any:
     return [_plain_json(v) for v in value] if isinstance(value, tuple | list) else value
 
 
-def _plain_component(c: Component) -> dict[str, Any]:
-    if isinstance(c, Body):
-        m = c.material
-        material = {"density": m.density, "restitution": m.restitution, "friction": m.friction} if isinstance(
-            m, Material) else m
-        return {"id": c.id, "type": "body", "shape": c.shape, "outline": _plain(c.outline), "radius": c.radius,
-                "position": _plain(c.position), "angle": c.angle, "material": material, "label": c.label}
-    if isinstance(c, Joint):
-        return {"id": c.id, "type": "joint", "kind": c.kind, "a": c.a, "b": c.b, "anchor": _plain(c.anchor)}
-    if isinstance(c, Rope):
-        return {"id": c.id, "type": "rope", "points": _plain(c.points), "start_body": c.start_body,
-                "end_body": c.end_body, "label": c.label}
-    if isinstance(c, Spring):
-        return {"id": c.id, "type": "spring", "a": c.a, "b": c.b, "anchor_a": _plain(c.anchor_a),
-                "anchor_b": _plain(c.anchor_b), "axis": c.axis, "rest_length": c.rest_length, "k": c.k,
-                "label": c.label}
-    raise TypeError(f"not a scene component: {c!r}")
-
-
-def _plain_project(project: Project, where: str) -> dict[str, Any]:
+def _plain_project(project: Project, where: Place) -> dict[str, Any]:
     if not isinstance(project, Project):
         raise TypeError(f"not a Project: {project!r}")
     if not isinstance(project.scene, Scene):
         raise TypeError(f"not a Scene: {project.scene!r}")
     components = []
     for i, (key, c) in enumerate(project.scene.components.items()):
-        plain = _plain_component(c)
-        if plain["id"] != key:
-            raise bad(where, f"components[{i}].id", f"{show(key)}, the key the scene keeps it under", plain["id"])
-        components.append(plain)
+        plain_c = plain_component(c)
+        if plain_c["id"] != key:
+            raise where.bad(f"components[{i}].id", f"{show(key)}, the key the scene keeps it under", plain_c["id"])
+        components.append(plain_c)
     canvas = project.canvas
     if not isinstance(canvas, tuple | list) or len(canvas) != 2:
-        raise bad(where, "canvas", "(width, height)", _plain(canvas))
+        raise where.bad("canvas", "(width, height)", plain(canvas))
     width, height = canvas
     return {
         "format": FORMAT,
@@ -201,7 +164,7 @@ def _plain_project(project: Project, where: str) -> dict[str, Any]:
         "canvas": {"width": width, "height": height},
         "components": components,
         "next_id": dict(project.scene.next_id) if isinstance(project.scene.next_id, dict) else project.scene.next_id,
-        "vocabulary": _plain(project.vocabulary),
+        "vocabulary": plain(project.vocabulary),
         "timeline": _plain_json(project.timeline),
     }
 
@@ -230,138 +193,33 @@ def _emit(obj: dict[str, Any]) -> str:
 # --- checking ----------------------------------------------------------------------------------------------------
 
 
-def _project(obj: dict[str, Any], where: str, warnings: list[str] | None) -> Project:
+def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> Project:
     """The project in a parsed (or plain-built) JSON object, every field checked in the order written."""
-    top = _Fields(where, "", obj, {})
-    fmt = obj.get("format", _MISSING)
+    fmt = obj.get("format", MISSING)
     if fmt != FORMAT:
-        raise bad(where, "format", show(FORMAT), fmt)
-    version = top.get("version", f"an integer from 1 to {FORMAT_VERSION}")
+        raise where.bad("format", show(FORMAT), fmt)
+    version = checks.get(obj, where, "version", "version", f"an integer from 1 to {FORMAT_VERSION}")
     if isinstance(version, bool) or not isinstance(version, int) or version < 1:
-        raise bad(where, "version", f"an integer from 1 to {FORMAT_VERSION}", version)
+        raise where.bad("version", f"an integer from 1 to {FORMAT_VERSION}", version)
     if version > FORMAT_VERSION:
         raise SceneError(f"{where} was written by format version {version}; this program reads version "
                          f"{FORMAT_VERSION} (upgrade physink-tui)")
-    _object(where, "", obj, TOP_KEYS, "an object", warnings)
+    checks.known_keys(where, "", obj, TOP_KEYS, warnings)
+    top = Fields(where, "", obj, {})
     top.text("program", "a string naming the program that wrote it")
     expected = 'an object {"width": number > 0, "height": number > 0}'
-    canvas = _Fields(where, "canvas", _object(where, "canvas", top.get("canvas", expected), ("width", "height"),
-                                              expected, warnings), {})
+    canvas = Fields(where, "canvas", sub_object(where, "canvas", top.get("canvas", expected), ("width", "height"),
+                                                expected, warnings), {})
     width = canvas.number("width", "a number > 0", above=0.0)
     height = canvas.number("height", "a number > 0", above=0.0)
-    components = _components(top, warnings)
-    next_id = _next_id(top, components)
-    vocabulary = top.get("vocabulary", "a list of words (strings)")
-    if not isinstance(vocabulary, list):
-        raise bad(where, "vocabulary", "a list of words (strings)", vocabulary)
-    words = tuple(_text(where, f"vocabulary[{i}]", w) for i, w in enumerate(vocabulary))
+    components = decode_components(where, top.get("components", "a list of components"), warnings)
+    next_id = decode_next_id(where, top.get("next_id", 'an object of id counters, e.g. {"b": 3, "j": 1}'),
+                             components)
+    vocabulary = checks.a_list(where, "vocabulary", top.get("vocabulary", "a list of words (strings)"),
+                               "a list of words (strings)")
+    words = tuple(checks.text(where, f"vocabulary[{i}]", w, empty=False) for i, w in enumerate(vocabulary))
     timeline = top.get("timeline", "null or an object")
     if timeline is not None and not isinstance(timeline, dict):
-        raise bad(where, "timeline", "null or an object", timeline)
-    _json_value(where, "timeline", timeline)
+        raise where.bad("timeline", "null or an object", timeline)
+    checks.json_value(where, "timeline", timeline)
     return Project(Scene({c.id: c for c in components}, next_id), words, timeline, (width, height))
-
-
-def _components(top: _Fields, warnings: list[str] | None) -> list[Component]:
-    where = top.where
-    raw = top.get("components", "a list of components")
-    if not isinstance(raw, list):
-        raise bad(where, "components", "a list of components", raw)
-    kinds: dict[str, str] = {}  # id -> type where first named, so that a rope end may name a later body
-    for item in raw:
-        if isinstance(item, dict) and isinstance(item.get("id"), str) and isinstance(item.get("type"), str):
-            kinds.setdefault(item["id"], item["type"])
-    seen: dict[str, int] = {}
-    out: list[Component] = []
-    for i, item in enumerate(raw):
-        path = f"components[{i}]"
-        if not isinstance(item, dict):
-            raise bad(where, path, "an object (a component)", item)
-        f = _Fields(where, path, item, kinds)
-        cid = f.text("id")
-        if cid == BACKGROUND:
-            raise bad(where, f.key("id"), f"an id other than {show(BACKGROUND)} (it names the background)", cid)
-        if cid in seen:
-            raise bad(where, f.key("id"), "an id no other component has", cid,
-                      f" (already the id of components[{seen[cid]}])")
-        seen[cid] = i
-        kind = f.one_of("type", tuple(COMPONENT_KEYS))
-        _object(where, path, item, COMPONENT_KEYS[kind], "an object", warnings)
-        out.append(_READERS[kind](f, cid, warnings))
-    return out
-
-
-def _body(f: _Fields, cid: str, warnings: list[str] | None) -> Body:
-    shape = f.one_of("shape", SHAPES)
-    if shape == "circle":
-        outline = f.get("outline", "[] (a circle is given by its radius)")
-        if outline != []:
-            raise bad(f.where, f.key("outline"), "[] (a circle is given by its radius)", outline)
-        points: tuple[tuple[float, float], ...] = ()
-        radius = f.number("radius", "a number > 0", above=0.0)
-    else:
-        points = f.points("outline", MIN_POINTS[shape])
-        radius = f.number("radius", "0 (only a circle has a radius)", low=0.0, high=0.0)
-    position = f.point("position")
-    angle = f.number("angle", "a finite number (radians)")
-    expected = 'an object {"density", "restitution", "friction"}'
-    m = _Fields(f.where, f.key("material"),
-                _object(f.where, f.key("material"), f.get("material", expected), MATERIAL_KEYS, expected, warnings),
-                {})
-    material = Material(
-        m.number("density", "a number > 0", above=0.0),
-        m.number("restitution", "a number in [0, 1]", low=0.0, high=1.0),
-        m.number("friction", "a number >= 0", low=0.0),
-    )
-    return Body(cid, shape, points, radius, position, angle, material, f.label())
-
-
-def _joint(f: _Fields, cid: str, warnings: list[str] | None) -> Joint:
-    kind = f.one_of("kind", JOINT_KINDS)
-    a = f.body("a", background=False)
-    return Joint(cid, kind, a, f.body("b", other=a), f.point("anchor"))
-
-
-def _rope(f: _Fields, cid: str, warnings: list[str] | None) -> Rope:
-    points = f.points("points", 2)
-    return Rope(cid, points, f.end("start_body"), f.end("end_body"), f.label())
-
-
-def _spring(f: _Fields, cid: str, warnings: list[str] | None) -> Spring:
-    a = f.body("a")
-    b = f.body("b", other=a)
-    anchor_a, anchor_b = f.point("anchor_a"), f.point("anchor_b")
-    axis = f.one_of("axis", AXES)
-    rest = f.number("rest_length", "a number >= 0", low=0.0)
-    return Spring(cid, a, b, anchor_a, anchor_b, axis, rest, f.number("k", "a number > 0", above=0.0), f.label())
-
-
-_READERS = {"body": _body, "joint": _joint, "rope": _rope, "spring": _spring}
-
-
-def _next_id(top: _Fields, components: list[Component]) -> dict[str, int]:
-    """The id counters: integers >= 1, each above every id already made from its prefix (ids are never reused)."""
-    where = top.where
-    expected = 'an object of id counters, e.g. {"b": 3, "j": 1}'
-    raw = top.get("next_id", expected)
-    if not isinstance(raw, dict):
-        raise bad(where, "next_id", expected, raw)
-    counters: dict[str, int] = {}
-    for prefix, n in raw.items():
-        _text(where, "next_id", prefix, "an object whose keys are id prefixes (non-empty strings)")
-        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-            raise bad(where, f"next_id.{prefix}", "an integer >= 1", n)
-        counters[prefix] = n
-    for prefix in sorted({*counters, "b", "j", "r", "s"}):
-        used = []
-        for i, c in enumerate(components):
-            digits = c.id[len(prefix):] if c.id.startswith(prefix) else ""
-            if digits.isascii() and digits.isdecimal() and digits[0] != "0":
-                used.append((int(digits), i))
-        if used:
-            highest, index = max(used)
-            if counters.get(prefix, 1) <= highest:
-                note = f" (components[{index}] has the id {show(components[index].id)})"
-                raise bad(where, f"next_id.{prefix}", f"an integer > {highest}, so that no id is made twice",
-                          counters.get(prefix, _MISSING), note)
-    return counters
