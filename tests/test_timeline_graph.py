@@ -9,7 +9,10 @@ import re
 import pytest
 
 from physink_tui.errors import PhysinkError
-from physink_tui.formats.timeline_formats import EVENT_KEYS, parse_timeline_json, timeline_dot, timeline_json
+from physink_tui.formats.timeline_dot import encode_timeline_dot as timeline_dot
+from physink_tui.formats.timeline_json import EVENT_KEYS
+from physink_tui.formats.timeline_json import decode_timeline_json as parse_timeline_json
+from physink_tui.formats.timeline_json import encode_timeline_json as timeline_json
 from physink_tui.timeline.events import Event, Timeline, TimelineError, TrajectoryPoint, default_label
 from physink_tui.timeline.graph import (
     CausalCycleError,
@@ -300,8 +303,8 @@ def test_json_keeps_the_label_of_a_body_only_passed_by() -> None:
     [
         ("[", "not valid JSON"),
         ('{"events": [], "events": []}', "repeats key 'events'"),
-        ("{}", "missing key 'events'"),
-        ('{"events": [{"id": "e1"}]}', "events[0]: missing key 'components'"),
+        ("{}", "events: expected a list of events, but it is missing"),
+        ('{"events": [{"id": "e1"}]}', "events[0].components: expected a list, but it is missing"),
         ('{"events": [{"id": "e1", "type": "start", "components": [], "causes": [], "sides": [], "regions": [], '
          '"trajectory": [], "t1": 0, "t0": true}]}', "events[0].t0: expected a number, got true"),
     ],

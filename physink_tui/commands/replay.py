@@ -11,7 +11,6 @@ decoder, its ``pen`` lines are canvas samples already, and its commands and utte
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from collections import Counter
 from pathlib import Path
@@ -24,7 +23,7 @@ from physink_tui.formats.journal.entries import DeviceEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import save_project
-from physink_tui.formats.timeline_formats import timeline_json
+from physink_tui.formats.timeline_json import encode_timeline_json, timeline_object
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.hid.pen_layout import tablet_size
 from physink_tui.input.pen.gestures import Gesture
@@ -155,10 +154,10 @@ def write_session_outputs(session: Session, out: OutputFolder) -> None:
     names = session.scene.names()
     timeline = None
     if session.timeline is not None:
-        text = timeline_json(session.timeline, names)
+        text = encode_timeline_json(session.timeline, names)
         out.write("timeline.json", text + ("" if text.endswith("\n") else "\n"))
         out.write("timeline.txt", timeline_text(session.timeline, names) + "\n")
-        timeline = json.loads(text)
+        timeline = timeline_object(session.timeline, names)
     project = Project(session.scene, (), timeline, session.canvas)
     save_project(project, out.file("project.json"))
     for message in session.messages:

@@ -136,6 +136,25 @@ def number(where: Place, key: str, value: Any, expected: str = "a finite number"
     return v
 
 
+def limited(where: Place, key: str, value: Any, limit: float) -> float:
+    """A number no larger than ``limit`` either way (NaN and infinity refused), as a float.
+
+    >>> limited(Place(""), "events[0].t0", 2e9, 1e9)
+    Traceback (most recent call last):
+    ...
+    physink_tui.errors.PhysinkError: events[0].t0: expected a finite number of at most 1e+09 in size, got 2000000000.0
+    """
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise where.bad(key, "a number", value)
+    try:
+        v = float(value)
+    except OverflowError:
+        v = math.inf
+    if not abs(v) <= limit:  # NaN too
+        raise where.bad(key, f"a finite number of at most {limit:g} in size", value)
+    return v
+
+
 def unit(where: Place, key: str, value: Any) -> float:
     """A number in [0, 1]."""
     return number(where, key, value, "a number in [0, 1]", low=0.0, high=1.0)
