@@ -14,7 +14,7 @@ from test_equivalence import FIG_2_15, NAMES, ON_A, ON_B, UNDER_B, behaviour, re
 from physink_tui.cli import main
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import save_project
-from physink_tui.formats.timeline_json import encode_timeline_json, timeline_object
+from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.scene.components import MATERIALS, Body, Scene
 from physink_tui.timeline.events import Timeline
 
@@ -27,8 +27,7 @@ def write_timeline(path: Path, timeline: Timeline, names: dict[str, str] = NAMES
 def write_project(path: Path, timeline: Timeline | None, labels: dict[str, str] = NAMES) -> str:
     bodies = {bid: Body(bid, "circle", (), 10.0, (100.0 + 50 * i, 100.0), 0.0, MATERIALS["round"], label)
               for i, (bid, label) in enumerate(sorted(labels.items()))}
-    doc = None if timeline is None else timeline_object(timeline, {})  # labels only in the scene
-    save_project(Project(Scene(bodies, {"b": len(bodies) + 1}), (), doc, (800.0, 600.0)), path)
+    save_project(Project(Scene(bodies, {"b": len(bodies) + 1}), (), timeline, (800.0, 600.0)), path)
     return str(path)
 
 

@@ -20,7 +20,7 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import save_project
-from physink_tui.formats.timeline_json import encode_timeline_json, timeline_object
+from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
 from physink_tui.input.pen.mapping import TabletMapping
@@ -71,15 +71,13 @@ def run(args: argparse.Namespace) -> int:
     journal = read_journal(journal_path)
     session = Session.from_header(journal.header).run(journal.entries)
     names = session.scene.names()
-    timeline_doc = None
     narration = ""
     if session.timeline is not None:
         text = encode_timeline_json(session.timeline, names)
         folder.write("timeline.json", text)
         narration = timeline_text(session.timeline, names)
         folder.write("timeline.txt", narration + "\n")
-        timeline_doc = timeline_object(session.timeline, names)
-    save_project(Project(session.scene, (), timeline_doc, session.canvas), out / "project.json")
+    save_project(Project(session.scene, (), session.timeline, session.canvas), out / "project.json")
 
     tip = cols.tip.tolist()
     touching = [(x, y) for x, y, down in zip(cols.x.tolist(), cols.y.tolist(), tip, strict=True) if down]

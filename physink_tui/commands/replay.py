@@ -23,7 +23,7 @@ from physink_tui.formats.journal.entries import DeviceEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import save_project
-from physink_tui.formats.timeline_json import encode_timeline_json, timeline_object
+from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.hid.pen_layout import tablet_size
 from physink_tui.input.pen.gestures import Gesture
@@ -152,13 +152,11 @@ def read_vocabulary(path: str | None) -> Vocabulary | None:
 def write_session_outputs(session: Session, out: OutputFolder) -> None:
     """Write DIR/project.json (the sketch of a session that has run) and, after a demonstration, the timeline."""
     names = session.scene.names()
-    timeline = None
     if session.timeline is not None:
         text = encode_timeline_json(session.timeline, names)
         out.write("timeline.json", text + ("" if text.endswith("\n") else "\n"))
         out.write("timeline.txt", timeline_text(session.timeline, names) + "\n")
-        timeline = timeline_object(session.timeline, names)
-    project = Project(session.scene, (), timeline, session.canvas)
+    project = Project(session.scene, (), session.timeline, session.canvas)
     save_project(project, out.file("project.json"))
     for message in session.messages:
         print(f"{message.t:9.3f}  told          {message.text}")

@@ -61,10 +61,5 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
     project = decode_project(text, path)  # SceneError names the file and the bad field; the file is read once
     if project.timeline is None:
         raise PhysinkError(f"{path}: the project holds no timeline (demonstrate the machine in demo mode first)")
-    try:
-        timeline, labels = decode_timeline_json(json.dumps(project.timeline))
-    except TimelineError as e:
-        raise TimelineError(f"{path}: timeline: {e}", e.event_id) from None
-    # the scene's names (labels, and what an unlabelled spring or rope is) win over those written in the timeline
-    names = project.scene.names()
-    return timeline, {**labels, **names}
+    # the scene's names: its labels, and what an unlabelled spring or rope is
+    return project.timeline, project.scene.names()

@@ -13,16 +13,18 @@ writes them, so a value read back equals the one written and the same project al
         {"id": "j1", "type": "joint", "kind": "pivot", "a": "b1", "b": "background", "anchor": [100.0, 50.0]}
       ],
       "next_id": {"b": 2, "j": 2, "r": 1, "s": 1},
-      "vocabulary": ["ball"],
-      "timeline": null
+      "vocabulary": ["verb plummets topples", "prep amid"],
+      "timeline": {"events": [...]}
     }
 
 Components are in scene order. Numbers of the scene and canvas are written as floats (``5`` reads back as
-``5.0``); ``next_id`` is written with sorted keys; the ``timeline`` object is kept as given (its key order
-too). Reading names the first bad field by its JSON path and says what was expected, e.g.
-``project.json: components[3].material.friction: expected a number >= 0, got "high"``; unknown keys are
-ignored with a warning. Encoding checks the project with the same rules, so whatever is written reads back.
-Both raise `SceneError`.
+``5.0``); ``next_id`` is written with sorted keys. ``vocabulary`` holds the lines of the user's vocabulary
+(`physink_tui.timeline.phrases.parse_vocabulary`), each checked as such; ``timeline`` is null or the object
+`physink_tui.formats.timeline_json.timeline_object` writes (its component labels are the scene's names, and
+reading takes the names from the scene), versioned by the project's version. Reading names the first bad
+field by its JSON path and says what was expected, e.g. ``project.json: components[3].material.friction:
+expected a number >= 0, got "high"``; unknown keys are ignored with a warning. Encoding checks the project
+with the same rules, so whatever is written reads back. Both raise `SceneError`.
 """
 
 from __future__ import annotations
@@ -32,7 +34,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from physink_tui import __version__
-from physink_tui.errors import SceneError
+from physink_tui.errors import PhysinkError, SceneError
 from physink_tui.formats import json_checks as checks
 from physink_tui.formats.json_checks import MISSING, Place, show
 from physink_tui.formats.project.scene_fields import (
@@ -44,7 +46,10 @@ from physink_tui.formats.project.scene_fields import (
     sub_object,
 )
 from physink_tui.formats.strict_json import DuplicateKey, unique_pairs
+from physink_tui.formats.timeline_json import timeline_from_object, timeline_object
 from physink_tui.scene.components import Scene
+from physink_tui.timeline.events import Timeline, TimelineError
+from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary
 
 FORMAT = "physink-project"
 FORMAT_VERSION = 1
@@ -59,15 +64,37 @@ class Project:
 
     Attributes:
         scene: the sketch's components, in scene order, and its id counters.
-        vocabulary: the user's own words for labels and verbs, in the order given; may be empty.
-        timeline: the demonstrated timeline as a JSON object, or None; opaque here, kept exactly as given.
+        vocabulary: the user's vocabulary, one line of a vocabulary file each (``"verb plummets topples"``,
+            ``"prep amid"``), in the order given; may be empty. `vocabulary_lines` and `project_vocabulary`
+            convert from and to the session's `Vocabulary` extension.
+        timeline: the demonstrated timeline, or None. Its numbers are written rounded to 6 decimals, so a
+            timeline read back equals the one written once they are (as every timeline read from a file is).
         canvas: (width, height) of the canvas in canvas units, both > 0.
     """
 
     scene: Scene
     vocabulary: tuple[str, ...]
-    timeline: dict[str, Any] | None
+    timeline: Timeline | None
     canvas: tuple[float, float]
+
+
+def vocabulary_lines(vocabulary: Vocabulary) -> tuple[str, ...]:
+    """The lines a project keeps for a vocabulary: its verbs, then its prepositions, each sorted; none if empty.
+
+    >>> vocabulary_lines(Vocabulary(frozenset({"topples", "plummets"}), frozenset({"amid"})))
+    ('verb plummets topples', 'prep amid')
+    """
+    lines = []
+    if vocabulary.verbs:
+        lines.append("verb " + " ".join(sorted(vocabulary.verbs)))
+    if vocabulary.prepositions:
+        lines.append("prep " + " ".join(sorted(vocabulary.prepositions)))
+    return tuple(lines)
+
+
+def project_vocabulary(project: Project) -> Vocabulary:
+    """The project's vocabulary lines as a `Vocabulary` (to extend `DEFAULT_VOCABULARY` with)."""
+    return parse_vocabulary("\n".join(project.vocabulary), "project vocabulary")
 
 
 
@@ -87,12 +114,12 @@ def encode_project(project: Project, *, where: str = "project") -> str:
         SceneError: ``<where>: <json path>: expected ..., got ...`` for the first bad field.
         TypeError: ``project`` is not a `Project`, its scene not a `Scene`, or a component of no known kind.
 
-    >>> text = encode_project(Project(Scene(), ("ball",), None, (800, 600)))
+    >>> text = encode_project(Project(Scene(), ("verb topples",), None, (800, 600)))
     >>> print(text.partition('"canvas"')[2].strip())
     : {"width": 800.0, "height": 600.0},
       "components": [],
       "next_id": {"b": 1, "j": 1, "r": 1, "s": 1},
-      "vocabulary": ["ball"],
+      "vocabulary": ["verb topples"],
       "timeline": null
     }
     """
@@ -136,12 +163,6 @@ def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -
 # --- writing -----------------------------------------------------------------------------------------------------
 
 
-def _plain_json(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {k: _plain_json(v) for k, v in value.items()}
-    return [_plain_json(v) for v in value] if isinstance(value, tuple | list) else value
-
-
 def _plain_project(project: Project, where: Place) -> dict[str, Any]:
     if not isinstance(project, Project):
         raise TypeError(f"not a Project: {project!r}")
@@ -157,6 +178,7 @@ def _plain_project(project: Project, where: Place) -> dict[str, Any]:
     if not isinstance(canvas, tuple | list) or len(canvas) != 2:
         raise where.bad("canvas", "(width, height)", plain(canvas))
     width, height = canvas
+    timeline = project.timeline
     return {
         "format": FORMAT,
         "version": FORMAT_VERSION,
@@ -165,7 +187,7 @@ def _plain_project(project: Project, where: Place) -> dict[str, Any]:
         "components": components,
         "next_id": dict(project.scene.next_id) if isinstance(project.scene.next_id, dict) else project.scene.next_id,
         "vocabulary": plain(project.vocabulary),
-        "timeline": _plain_json(project.timeline),
+        "timeline": None if timeline is None else timeline_object(timeline, project.scene.names()),
     }
 
 
@@ -215,11 +237,28 @@ def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> P
     components = decode_components(where, top.get("components", "a list of components"), warnings)
     next_id = decode_next_id(where, top.get("next_id", 'an object of id counters, e.g. {"b": 3, "j": 1}'),
                              components)
-    vocabulary = checks.a_list(where, "vocabulary", top.get("vocabulary", "a list of words (strings)"),
-                               "a list of words (strings)")
-    words = tuple(checks.text(where, f"vocabulary[{i}]", w, empty=False) for i, w in enumerate(vocabulary))
-    timeline = top.get("timeline", "null or an object")
-    if timeline is not None and not isinstance(timeline, dict):
-        raise where.bad("timeline", "null or an object", timeline)
-    checks.json_value(where, "timeline", timeline)
+    vocabulary = checks.a_list(where, "vocabulary", top.get("vocabulary", "a list of vocabulary lines (strings)"),
+                               "a list of vocabulary lines (strings)")
+    words = tuple(_vocabulary_line(where, f"vocabulary[{i}]", w) for i, w in enumerate(vocabulary))
+    raw = checks.optional(checks.an_object, where, "timeline", top.get("timeline", "null or an object"),
+                          "null or an object")
+    timeline = None
+    if raw is not None:
+        try:
+            timeline, _ = timeline_from_object(raw, where, "timeline")
+        except TimelineError as e:  # an event's own rules, or a cycle: not tied to one key
+            raise SceneError(f"{where}: timeline: {e}") from None
     return Project(Scene({c.id: c for c in components}, next_id), words, timeline, (width, height))
+
+
+def _vocabulary_line(where: Place, key: str, value: Any) -> str:
+    """One line of a vocabulary file, with at least one word and no line break."""
+    expected = "a vocabulary line, 'verb WORD...' or 'prep WORD...'"
+    line = checks.text(where, key, value, expected, empty=False)
+    try:
+        vocabulary = parse_vocabulary(line)
+    except PhysinkError:
+        raise where.bad(key, expected, value) from None
+    if "\n" in line or "\r" in line or not (vocabulary.verbs or vocabulary.prepositions):
+        raise where.bad(key, expected, value)
+    return line
