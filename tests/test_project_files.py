@@ -308,7 +308,8 @@ ERRORS = [
                  "of at most 1e+09 in size, got NaN", id="timeline-nan"),
     pytest.param(_drop(("timeline", "events", 2, "sides")), "timeline.events[2].sides: expected a list, but it is "
                  "missing", id="timeline-missing-sides"),
-    pytest.param(_set(("timeline", "events", 0, "causes"), ["e3"]), "timeline: the timeline has a causal cycle", id="timeline-cycle"),
+    pytest.param(_set(("timeline", "events", 0, "causes"), ["e3"]), "timeline: the timeline has a causal cycle",
+                 id="timeline-cycle"),
     pytest.param(_set(("version",), "1"), 'version: expected an integer from 1 to 1, got "1"', id="version-text"),
     pytest.param(_set(("format",), "physink-journal"), 'format: expected "physink-project", got "physink-journal"',
                  id="wrong-format"),
