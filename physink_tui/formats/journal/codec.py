@@ -7,10 +7,12 @@ that says what the entry is::
     {"t":0.5,"hid":"02 c1 00","dev":"tablet0"}
     {"t":0.51,"pen":{"x":0.25,"y":0.5,"p":0.0,"tip":false,"range":true,"eraser":false,"b1":false,"b2":false}}
     {"t":1.0,"cmd":"seek","args":[2.5]}
+    {"t":1.1,"cmd":"load","args":["egg.physink.json"],"project":{"format":"physink-project","version":1,...}}
     {"t":1.25,"say":"label ball"}
     {"t":2.0,"device":{"tablet1":{"name":null,"bus":3,"vid":9580,"pid":110,"descriptor":"05 0d ..."}}}
 
-Non-ASCII text is written as UTF-8, not escaped. Reading refuses what plain ``json`` lets pass: NaN and
+A ``load`` line embeds the loaded project's JSON object, checked as a project file is (a replay needs no
+other file); ``end`` (no arguments) says the session ended at t. Non-ASCII text is written as UTF-8, not escaped. Reading refuses what plain ``json`` lets pass: NaN and
 Infinity, and a key twice in one object. Encoding checks every value with the same rules as decoding
 (`value_checks` over `physink_tui.formats.json_checks`), so everything written reads back. Both raise
 `JournalError`. No file I/O.
@@ -29,14 +31,16 @@ from physink_tui.formats.journal.entries import CommandEntry, DeviceEntry, HidEn
 from physink_tui.formats.journal.header_checks import decode_devices, encode_devices
 from physink_tui.formats.journal.value_checks import at
 from physink_tui.formats.json_checks import Place, bad, get, show
+from physink_tui.formats.project.codec import decode_project_object
 from physink_tui.formats.strict_json import DuplicateKey, unique_pairs
 
 PEN_KEYS = ("x", "y", "p", "tip", "range", "eraser", "b1", "b2")
 """The keys of a ``pen`` object, in the order written."""
 
-_ALLOWED = {"hid": {"t", "hid", "dev"}, "pen": {"t", "pen"}, "cmd": {"t", "cmd", "args"}, "say": {"t", "say"},
-            "device": {"t", "device"}}
+_ALLOWED = {"hid": {"t", "hid", "dev"}, "pen": {"t", "pen"}, "cmd": {"t", "cmd", "args", "project"},
+            "say": {"t", "say"}, "device": {"t", "device"}}
 _BOOL = {True: "true", False: "false"}
+_LOAD_EXPECTED = "the loaded project's JSON object (a replay needs the project embedded)"
 _PEN_EXPECTED = "an object with " + ", ".join(PEN_KEYS)
 
 
@@ -146,7 +150,9 @@ def encode_entry(
         t = value_checks.seconds(where, "t", entry.t, previous_t)
         args = value_checks.command(where, entry.name, entry.args)
         listed = ",".join(repr(a) if isinstance(a, float) else json_string(a) for a in args)
-        return f'{{"t":{t!r},"cmd":{json_string(entry.name)},"args":[{listed}]}}'
+        embedded = _embedded_project(where, entry.name, entry.project, entry.project is not None)
+        project = "" if embedded is None else f',"project":{compact_json(embedded)}'
+        return f'{{"t":{t!r},"cmd":{json_string(entry.name)},"args":[{listed}]{project}}}'
     if kind is SayEntry:
         where = at("say entry")
         t = value_checks.seconds(where, "t", entry.t, previous_t)
@@ -158,6 +164,21 @@ def encode_entry(
             raise bad(where, "device", "at least one device", [])
         return f'{{"t":{t!r},"device":{compact_json(encode_devices(where, "device", entry.devices))}}}'
     raise TypeError(f"not a journal entry: {entry!r}")
+
+
+def _embedded_project(where: Place, name: str, project: Any, present: bool,
+                      warnings: list[str] | None = None) -> dict[str, Any] | None:
+    """A ``load`` command's embedded project, checked as a project file is (errors name the line and the field's
+    path in the project); None for the other commands, which embed none."""
+    if name != "load":
+        if present:
+            raise where.bad("project", 'nothing: only "load" embeds a project', project)
+        return None
+    if not present:
+        raise where.bad("project", _LOAD_EXPECTED)
+    checks.json_value(where, "project", project)
+    decode_project_object(project, Place(f'{where}: key "project"', JournalError), warnings)
+    return project
 
 
 def _device(where: Place, dev: str, devices: Collection[str] | None) -> str:
@@ -217,7 +238,8 @@ def decode_line(
         return DeviceEntry(t, tuple(decode_devices(where, value, warnings, "device")))
     if kind == "cmd":
         args = value_checks.command(where, value, get(obj, where, "args", "args", "a list of arguments"))
-        return CommandEntry(t, value, args)
+        project = _embedded_project(where, value, obj.get("project"), "project" in obj, warnings)
+        return CommandEntry(t, value, args, project)
     return SayEntry(t, checks.text(where, "say", value))
 
 

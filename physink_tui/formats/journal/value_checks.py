@@ -17,7 +17,8 @@ from physink_tui.formats.json_checks import Place, real, show
 KINDS = ("hid", "pen", "cmd", "say", "device")
 """The keys that say what an entry is; a line has exactly one of them."""
 
-COMMANDS = ("mode", "play", "pause", "stop", "seek", "clear", "undo", "redo", "label", "simulate", "save")
+COMMANDS = ("mode", "play", "pause", "stop", "seek", "clear", "undo", "redo", "label", "simulate", "save", "load",
+            "end")
 """Command names, as the session knows them."""
 
 MODES = ("sketch", "demo")
@@ -38,6 +39,7 @@ _USAGE = {
     "seek": f"one argument, a number in [0, {MAX_SECONDS:.0f}] (seconds of timeline time),",
     "label": 'two arguments, TARGET ("last", "selected" or a component id) and a non-empty TEXT,',
     "save": "one argument, a non-empty PATH,",
+    "load": "one argument, a non-empty PATH,",
 }
 _HEX = re.compile(r"[0-9a-fA-F]{2}(?: [0-9a-fA-F]{2})*\Z")
 
@@ -118,6 +120,6 @@ def _args_ok(name: str, args: list[Any] | tuple[Any, ...]) -> tuple[str | float,
         return (t,) if t is not None and 0 <= t <= MAX_SECONDS else None
     if name == "label":
         return (args[0], args[1]) if len(args) == 2 and is_text(args[0]) and is_text(args[1]) else None
-    if name == "save":
+    if name in ("save", "load"):
         return (args[0],) if len(args) == 1 and is_text(args[0]) else None
     return () if not args else None

@@ -215,6 +215,16 @@ def _emit(obj: dict[str, Any]) -> str:
 # --- checking ----------------------------------------------------------------------------------------------------
 
 
+def decode_project_object(obj: Any, where: Place, warnings: list[str] | None = None) -> Project:
+    """The project in a parsed JSON object (a journal's ``load`` line embeds one), checked as a file is.
+
+    Raises ``where.error`` (`JournalError` for a journal line) naming the first bad field's JSON path.
+    """
+    if not isinstance(obj, dict):
+        raise where.fail(f"expected a JSON object (a physink project), got {show(obj)}")
+    return _project(obj, where, warnings)
+
+
 def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> Project:
     """The project in a parsed (or plain-built) JSON object, every field checked in the order written."""
     fmt = obj.get("format", MISSING)
@@ -224,8 +234,8 @@ def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> P
     if isinstance(version, bool) or not isinstance(version, int) or version < 1:
         raise where.bad("version", f"an integer from 1 to {FORMAT_VERSION}", version)
     if version > FORMAT_VERSION:
-        raise SceneError(f"{where} was written by format version {version}; this program reads version "
-                         f"{FORMAT_VERSION} (upgrade physink-tui)")
+        raise where.error(f"{where} was written by format version {version}; this program reads version "
+                          f"{FORMAT_VERSION} (upgrade physink-tui)")
     checks.known_keys(where, "", obj, TOP_KEYS, warnings)
     top = Fields(where, "", obj, {})
     top.text("program", "a string naming the program that wrote it")
@@ -247,7 +257,7 @@ def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> P
         try:
             timeline, _ = timeline_from_object(raw, where, "timeline")
         except TimelineError as e:  # an event's own rules, or a cycle: not tied to one key
-            raise SceneError(f"{where}: timeline: {e}") from None
+            raise where.fail(f"timeline: {e}") from None
     return Project(Scene({c.id: c for c in components}, next_id), words, timeline, (width, height))
 
 
