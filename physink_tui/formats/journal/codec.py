@@ -12,10 +12,10 @@ that says what the entry is::
     {"t":2.0,"device":{"tablet1":{"name":null,"bus":3,"vid":9580,"pid":110,"descriptor":"05 0d ..."}}}
 
 A ``load`` line embeds the loaded project's JSON object, checked as a project file is (a replay needs no
-other file); ``end`` (no arguments) says the session ended at t. Non-ASCII text is written as UTF-8, not escaped. Reading refuses what plain ``json`` lets pass: NaN and
-Infinity, and a key twice in one object. Encoding checks every value with the same rules as decoding
-(`value_checks` over `physink_tui.formats.json_checks`), so everything written reads back. Both raise
-`JournalError`. No file I/O.
+other file); ``end`` (no arguments) says the session ended at t. Non-ASCII text is written as UTF-8, not
+escaped. Reading refuses what plain ``json`` lets pass: NaN and Infinity, and a key twice in one object.
+Encoding checks every value with the same rules as decoding (`value_checks` over
+`physink_tui.formats.json_checks`), so everything written reads back. Both raise `JournalError`. No file I/O.
 """
 
 from __future__ import annotations
