@@ -19,7 +19,7 @@ from collections.abc import Callable, Sequence
 
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError
-from physink_tui.outputs import StdoutGuard
+from physink_tui.formats.outputs import StdoutGuard
 
 PROG = "physink"
 

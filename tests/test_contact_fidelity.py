@@ -17,7 +17,7 @@ from test_session import box_points, pen_header, pen_stroke
 from test_thesis_scenarios import session_over
 
 from physink_tui.formats.journal.entries import CommandEntry, PenEntry
-from physink_tui.formats.timeline_formats import timeline_json
+from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.session.session import Session
 from physink_tui.timeline import recorder as recorder_module
 from physink_tui.timeline.events import Event, Timeline, event_label
@@ -129,7 +129,7 @@ def test_every_event_names_components_as_the_user_labelled_them(name: str) -> No
     session = session_over(name)
     labels, names = session.scene.labels(), session.scene.names()
     hidden = {cid for cid, c in session.scene.components.items() if cid in labels or type(c).__name__ != "Body"}
-    doc = json.loads(timeline_json(session.timeline, names))
+    doc = json.loads(encode_timeline_json(session.timeline, names))
     for event, row in zip(session.timeline.events, doc["events"], strict=True):
         text = event_label(event, names)
         assert not set(re.findall(r"\b[a-z]\d+\b", text)) & hidden, text

@@ -14,21 +14,20 @@ from test_equivalence import FIG_2_15, NAMES, ON_A, ON_B, UNDER_B, behaviour, re
 from physink_tui.cli import main
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import save_project
-from physink_tui.formats.timeline_formats import timeline_json
+from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.scene.components import MATERIALS, Body, Scene
 from physink_tui.timeline.events import Timeline
 
 
 def write_timeline(path: Path, timeline: Timeline, names: dict[str, str] = NAMES) -> str:
-    path.write_text(timeline_json(timeline, names), encoding="utf-8")
+    path.write_text(encode_timeline_json(timeline, names), encoding="utf-8")
     return str(path)
 
 
 def write_project(path: Path, timeline: Timeline | None, labels: dict[str, str] = NAMES) -> str:
     bodies = {bid: Body(bid, "circle", (), 10.0, (100.0 + 50 * i, 100.0), 0.0, MATERIALS["round"], label)
               for i, (bid, label) in enumerate(sorted(labels.items()))}
-    doc = None if timeline is None else json.loads(timeline_json(timeline, {}))  # labels only in the scene
-    save_project(Project(Scene(bodies, {"b": len(bodies) + 1}), (), doc, (800.0, 600.0)), path)
+    save_project(Project(Scene(bodies, {"b": len(bodies) + 1}), (), timeline, (800.0, 600.0)), path)
     return str(path)
 
 
@@ -106,7 +105,7 @@ def test_a_missing_file_is_one_line_naming_it(tmp_path, capsys) -> None:
 
 @pytest.mark.parametrize(("text", "fragment"), [
     ("{not json", "not valid JSON"),
-    ('{"events": [{"id": "e1"}]}', "events[0]: missing key 'components'"),
+    ('{"events": [{"id": "e1"}]}', "events[0].components: expected a list, but it is missing"),
     ('{"format": "physink-project", "version": 1}', "missing"),
     (b"\xff\xfe".decode("latin-1"), "not UTF-8"),
 ])

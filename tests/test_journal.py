@@ -33,8 +33,8 @@ from physink_tui.formats.journal.entries import (
 )
 from physink_tui.formats.journal.header_codec import decode_header, encode_header
 from physink_tui.formats.journal.reader import iter_journal, read_journal
+from physink_tui.formats.journal.value_checks import COMMANDS, MAX_SECONDS, MODES
 from physink_tui.formats.journal.writer import FSYNC_INTERVAL, JournalWriter
-from physink_tui.formats.json_checks import COMMANDS, MAX_SECONDS, MODES
 
 REPO = Path(__file__).resolve().parent.parent
 DESCRIPTOR = bytes.fromhex("05 0d 09 02 a1 01 85 02 09 20 a1 00 09 42 15 00 25 01 75 01 95 01 81 02 c0 c0")
@@ -133,7 +133,9 @@ TIMES = st.floats(min_value=0, max_value=MAX_SECONDS) | st.sampled_from(
 )
 UNITS = st.floats(min_value=0, max_value=1) | st.sampled_from([5e-324, 1e-310, 1 - 2**-53, 0.1, 1 / 3])
 WORDS = st.text(min_size=1)
-NO_ARGS = [c for c in COMMANDS if c not in {"mode", "seek", "label", "save"}]
+NO_ARGS = [c for c in COMMANDS if c not in {"mode", "seek", "label", "save", "load"}]
+EMPTY_PROJECT = {"format": "physink-project", "version": 1, "program": "x", "canvas": {"width": 8.0, "height": 6.0},
+                 "components": [], "next_id": {}, "vocabulary": [], "timeline": None}
 ENTRIES = st.one_of(
     st.builds(HidEntry, TIMES, st.sampled_from(DEVICE_IDS), st.binary(min_size=1, max_size=64)),
     st.builds(PenEntry, TIMES, UNITS, UNITS, UNITS, *[st.booleans()] * 5),
@@ -141,6 +143,7 @@ ENTRIES = st.one_of(
     st.builds(CommandEntry, TIMES, st.just("seek"), st.tuples(TIMES)),
     st.builds(CommandEntry, TIMES, st.just("label"), st.tuples(st.sampled_from(["last", "selected"]) | WORDS, WORDS)),
     st.builds(CommandEntry, TIMES, st.just("save"), st.tuples(WORDS)),
+    st.builds(CommandEntry, TIMES, st.just("load"), st.tuples(WORDS), st.just(EMPTY_PROJECT)),
     st.builds(CommandEntry, TIMES, st.sampled_from(NO_ARGS), st.just(())),
     st.builds(SayEntry, TIMES, st.text()),
     st.builds(DeviceEntry, TIMES, st.lists(st.builds(

@@ -14,9 +14,19 @@ from hypothesis import strategies as st
 
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError, SceneError
-from physink_tui.formats.project.codec import FORMAT_VERSION, Project, decode_project, encode_project
+from physink_tui.formats.project.codec import (
+    FORMAT_VERSION,
+    Project,
+    decode_project,
+    encode_project,
+    project_vocabulary,
+    vocabulary_lines,
+)
 from physink_tui.formats.project.files import load_project, save_project
+from physink_tui.formats.timeline_json import timeline_object
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Material, Rope, Scene, Spring
+from physink_tui.timeline.events import Event, Timeline, TrajectoryPoint
+from physink_tui.timeline.phrases import Vocabulary
 
 
 def _ellipse(rx: float, ry: float, sides: int = 32) -> tuple[tuple[float, float], ...]:
@@ -50,8 +60,20 @@ def _every_kind() -> Scene:
     return scene.add(Spring(sid, floor, egg, (380.0, 540.0), (250.5, 315.25), "vertical", 224.75, 20.0, "spring"))
 
 
-PROJECT = Project(_every_kind(), ("ball", "frying pan", "œuf"), {"events": [], "note": "kept as given"}, (800.0, 600.0))
-"""Every component kind, user words, a timeline; the base of the error cases below."""
+def _demonstration() -> Timeline:
+    """The ball (b2) falls onto the floor (b1) and bounces; numbers as a file holds them (6 decimals)."""
+    frames = (TrajectoryPoint(0.0, 0.3, 100.0, 0.0, 0.0, 0.0), TrajectoryPoint(0.5, 0.3, 520.5, 0.125, 0.0, 490.5))
+    return Timeline((
+        Event("e1", "start"),
+        Event("e2", "movement", ("b2", "r1"), ("e1",), 0.0, 0.5, None, (), (("b5", ("above",)),), frames),
+        Event("e3", "contact", ("b2", "b1"), ("e2",), 0.5, 0.5, "the ball lands", (("b2", "bottom"), ("b1", "top")),
+              (), (), (0.3, 540.0)),
+    ))
+
+
+PROJECT = Project(_every_kind(), ("verb plummets Topples", "prep amid", "verb écrase"), _demonstration(),
+                  (800.0, 600.0))
+"""Every component kind, user vocabulary, a timeline; the base of the error cases below."""
 
 
 def _raw() -> dict[str, Any]:
@@ -92,9 +114,12 @@ def test_the_layout_is_indented_json_with_one_component_a_line_in_a_fixed_key_or
                          '"anchor": [600.0, 200.0]},')
     assert lines[13] == ('    {"id": "r1", "type": "rope", "points": [[0.3, 120.0], [10.0, 150.0], [20.0, 180.5]], '
                          '"start_body": "b2", "end_body": null, "label": "string"},')
+    timeline = json.dumps(timeline_object(_demonstration(), PROJECT.scene.names()), ensure_ascii=False,
+                          separators=(", ", ": "))
     assert lines[-5:] == ["  ],", '  "next_id": {"b": 6, "j": 3, "r": 2, "s": 2},',
-                          '  "vocabulary": ["ball", "frying pan", "œuf"],',
-                          '  "timeline": {"events": [], "note": "kept as given"}', "}"]
+                          '  "vocabulary": ["verb plummets Topples", "prep amid", "verb écrase"],',
+                          f'  "timeline": {timeline}', "}"]
+    assert '"components": [{"id": "b2", "label": "ball"}, {"id": "r1", "label": "string"}]' in timeline
 
 
 def test_floats_are_written_exactly_and_integers_become_floats() -> None:
@@ -111,14 +136,24 @@ def test_floats_are_written_exactly_and_integers_become_floats() -> None:
     assert encode_project(back) == text
 
 
-def test_the_timeline_is_kept_as_given_key_order_and_integers_included() -> None:
-    timeline = {"z": 1, "a": [1.5, {"y": None, "x": True}], "ü": "ß"}
-    project = Project(Scene(), (), timeline, (10.0, 10.0))
+def test_the_timeline_is_typed_and_named_by_the_scene() -> None:
+    back = decode_project(encode_project(PROJECT), "p.json")
+
+    assert isinstance(back.timeline, Timeline) and back.timeline == _demonstration()
+    raw = _raw()
+    raw["timeline"]["events"][1]["components"][0]["label"] = "not the scene's name"
+    assert decode_project(json.dumps(raw), "p.json") == PROJECT  # names come from the scene's labels
+
+
+def test_the_vocabulary_round_trips_as_the_sessions_vocabulary() -> None:
+    vocabulary = Vocabulary(frozenset({"plummets", "topples"}), frozenset({"amid"}))
+    project = Project(Scene(), vocabulary_lines(vocabulary), None, (10.0, 10.0))
 
     back = decode_project(encode_project(project), "p.json")
 
-    assert back.timeline == timeline and list(back.timeline) == ["z", "a", "ü"]
-    assert type(back.timeline["z"]) is int
+    assert back.vocabulary == ("verb plummets topples", "prep amid")
+    assert project_vocabulary(back) == vocabulary
+    assert project_vocabulary(PROJECT) == Vocabulary(frozenset({"plummets", "topples", "écrase"}), frozenset({"amid"}))
 
 
 finite = st.floats(allow_nan=False, allow_infinity=False)
@@ -142,7 +177,8 @@ def bodies(draw: st.DrawFn, bid: str) -> Body:
 
 @settings(max_examples=150, deadline=None)
 @given(st.integers(min_value=0, max_value=6).flatmap(lambda n: st.tuples(*(bodies(f"b{i + 1}") for i in range(n)))),
-       st.lists(st.text(min_size=1, max_size=12), max_size=4))
+       st.lists(st.sampled_from(["verb plummets", "prep amid AMONG", "verb écrase", "verb it's  re-lands"]),
+                max_size=4))
 def test_random_bodies_round_trip_exactly(drawn: tuple[Body, ...], words: list[str]) -> None:
     scene = Scene({b.id: b for b in drawn}, {"b": len(drawn) + 1, "j": 1, "r": 1, "s": 1})
     project = Project(scene, tuple(words), None, (640.0, 480.0))
@@ -194,7 +230,7 @@ ERRORS = [
                  "missing", id="missing-position"),
     pytest.param(_drop(("canvas", "height")), "canvas.height: expected a number > 0, but it is missing",
                  id="missing-canvas-height"),
-    pytest.param(_drop(("vocabulary",)), "vocabulary: expected a list of words (strings), but it is missing",
+    pytest.param(_drop(("vocabulary",)), "vocabulary: expected a list of vocabulary lines (strings), but it is missing",
                  id="missing-vocabulary"),
     pytest.param(_set(("components", 5, "type"), "motor"),
                  'components[5].type: expected one of "body", "joint", "rope", "spring", got "motor"',
@@ -261,11 +297,19 @@ ERRORS = [
     pytest.param(_set(("next_id", "b"), 3), "next_id.b: expected an integer > 5, so that no id is made twice, got 3 "
                  '(components[4] has the id "b5")', id="next-id-would-reuse"),
     pytest.param(_set(("next_id", "j"), 1.5), "next_id.j: expected an integer >= 1, got 1.5", id="next-id-float"),
-    pytest.param(_set(("vocabulary", 1), 7), "vocabulary[1]: expected a non-empty string, got 7",
-                 id="vocabulary-number"),
+    pytest.param(_set(("vocabulary", 1), 7), "vocabulary[1]: expected a vocabulary line, 'verb WORD...' or "
+                 "'prep WORD...', got 7", id="vocabulary-number"),
+    pytest.param(_set(("vocabulary", 1), "ball"), "vocabulary[1]: expected a vocabulary line, 'verb WORD...' or "
+                 "'prep WORD...', got \"ball\"", id="vocabulary-not-a-line"),
+    pytest.param(_set(("vocabulary", 1), "verb a\nprep b"), "vocabulary[1]: expected a vocabulary line",
+                 id="vocabulary-two-lines"),
     pytest.param(_set(("timeline",), [1]), "timeline: expected null or an object, got [1]", id="timeline-list"),
-    pytest.param(_set(("timeline", "events"), [{"t": math.nan}]), "timeline.events[0].t: expected a finite number, "
-                 "got NaN", id="timeline-nan"),
+    pytest.param(_set(("timeline", "events", 1, "t0"), math.nan), "timeline.events[1].t0: expected a finite number "
+                 "of at most 1e+09 in size, got NaN", id="timeline-nan"),
+    pytest.param(_drop(("timeline", "events", 2, "sides")), "timeline.events[2].sides: expected a list, but it is "
+                 "missing", id="timeline-missing-sides"),
+    pytest.param(_set(("timeline", "events", 0, "causes"), ["e3"]), "timeline: the timeline has a causal cycle",
+                 id="timeline-cycle"),
     pytest.param(_set(("version",), "1"), 'version: expected an integer from 1 to 1, got "1"', id="version-text"),
     pytest.param(_set(("format",), "physink-journal"), 'format: expected "physink-project", got "physink-journal"',
                  id="wrong-format"),
@@ -343,8 +387,13 @@ def test_encoding_checks_the_project_with_the_same_rules() -> None:
     with pytest.raises(SceneError, match=r'components\[0\]\.id: expected "b1", the key the scene keeps it under'):
         encode_project(Project(Scene({"b1": moved}, {"b": 3}), (), None, (10.0, 10.0)))
 
-    with pytest.raises(SceneError, match=r"^out\.json: timeline\.t: expected a finite number, got Infinity$"):
-        encode_project(Project(Scene(), (), {"t": math.inf}, (10.0, 10.0)), where="out.json")
+    endless = Timeline((Event("e1", "start", t1=math.inf),))
+    with pytest.raises(SceneError, match=r"^out\.json: timeline\.events\[0\]\.t1: expected a finite number of at "
+                                         r"most 1e\+09 in size, got Infinity$"):
+        encode_project(Project(Scene(), (), endless, (10.0, 10.0)), where="out.json")
+
+    with pytest.raises(TypeError):
+        encode_project(Project(Scene(), (), {"events": []}, (10.0, 10.0)))  # type: ignore[arg-type]
 
     with pytest.raises(TypeError):
         encode_project(Scene())  # type: ignore[arg-type]

@@ -137,11 +137,11 @@ class SessionMachine(RuleBasedStateMachine):
         session.finish(self.t)
         expected = outputs(session)
         journal = read_journal(self.path)
-        # TEMP until end lands: assert journal.entries[-1] == CommandEntry(self.t, "end", ())
+        assert journal.entries[-1] == CommandEntry(self.t, "end", ())
         for ticks in (None, 10, 30, 120):
             again = replay(Session.from_header(journal.header), journal.entries, ticks)
             assert outputs(again) == expected, f"replayed with ticks={ticks}"
-            assert [m.text for m in again.messages] == [m.text for m in session.messages if "\"end\"" not in m.text]  # TEMP
+            assert [m.text for m in again.messages] == [m.text for m in session.messages]
 
 
 SessionMachine.TestCase.settings = settings(max_examples=25, stateful_step_count=18, deadline=None,

@@ -4,6 +4,7 @@ physics), mode changes ending an adjustment, views, and nothing an input does es
 from __future__ import annotations
 
 import dataclasses
+import json
 
 import pytest
 from session_outputs import outputs
@@ -58,7 +59,7 @@ def test_undo_demo_redo_then_a_drag_moves_the_redone_body_and_the_journal_replay
 
 
 def test_undo_in_demo_mode_takes_back_the_demonstration(tmp_path) -> None:
-    entries = platform_and_ball() + [CommandEntry(2.0, "mode", ("demo",))]
+    entries = [*platform_and_ball(), CommandEntry(2.0, "mode", ("demo",))]
     entries += drag(2.5, (0.7, 0.3), (0.7, 0.45))
     entries += [CommandEntry(6.0, "undo")]
     session = Session.from_header(pen_header())
@@ -73,7 +74,7 @@ def test_undo_in_demo_mode_takes_back_the_demonstration(tmp_path) -> None:
 
 @pytest.mark.parametrize("hz", [10, 30, 120])
 def test_a_flick_then_silence_ends_the_same_whether_the_clock_ticks_or_not(tmp_path, hz: float) -> None:
-    entries = platform_and_ball() + [CommandEntry(2.0, "mode", ("demo",))]
+    entries = [*platform_and_ball(), CommandEntry(2.0, "mode", ("demo",))]
     entries += drag(2.5, (0.7, 0.3), (0.9, 0.3), n=5)  # a fast flick to the right, let go mid-flight
     entries += [hover(8.0, 0.05, 0.05), CommandEntry(8.1, "mode", ("sketch",))]
     plain = live(entries, tmp_path / "plain.physink.jsonl")
@@ -133,3 +134,26 @@ def test_commands_that_make_no_sense_in_the_mode_are_told_not_raised() -> None:
         session.handle(entry)
         assert len(session.messages) == k + 1
     assert not session.errors
+
+
+def test_a_loaded_project_becomes_the_document_and_replays_from_the_journal_alone(tmp_path) -> None:
+    drawn = live([*platform_and_ball(), CommandEntry(2.0, "label", ("b2", "ball"))], tmp_path / "a.physink.jsonl")
+    project = json.loads(outputs(drawn)["project.json"])
+    entries = [CommandEntry(0.5, "load", ("machine.physink.json",), project=project),
+               CommandEntry(2.0, "undo"), CommandEntry(2.5, "redo"), *drag(3.0, (0.3, 0.63), (0.3, 0.5))]
+    session = live(entries, tmp_path / "b.physink.jsonl")
+    assert session.scene.labels() == {"b2": "ball"} and sorted(session.scene.components) == ["b1", "b2", "b3"]
+    assert session.messages[0].text == "loaded machine.physink.json: 2 components" and not session.errors
+    assert outputs(replayed(tmp_path / "b.physink.jsonl")) == outputs(session)
+
+
+def test_an_entry_the_journal_cannot_hold_is_refused_before_it_acts(tmp_path) -> None:
+    session = Session.from_header(pen_header())
+    session.journal = JournalWriter.create(tmp_path / "s.physink.jsonl", pen_header())
+    session.handle(CommandEntry(1.0, "mode", ("demo",)))
+    session.handle(PenEntry(0.5, 0.5, 0.5, 0.0, False, True, False, False, False))  # time going backwards
+    assert session.mode == "demo" and "input refused" in session.messages[-1].text
+    session.handle(CommandEntry(2.0, "mode", ("sketch",)))  # the journal goes on
+    session.finish()
+    names = [getattr(e, "name", None) for e in read_journal(tmp_path / "s.physink.jsonl").entries]
+    assert names == ["mode", "mode", "end"]

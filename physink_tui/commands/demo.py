@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import argparse
 import io
-import json
 import sys
 from collections import Counter
 
@@ -19,13 +18,11 @@ from physink_tui.commands.decode import decode_capture, summary, write_jsonl
 from physink_tui.demo_data import DEMO_FILE, TABLET_ASPECT, demo_capture_text, demo_script
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.formats.project.codec import Project
-from physink_tui.formats.project.files import save_project
-from physink_tui.formats.timeline_formats import timeline_json
+from physink_tui.formats.outputs import OutputFolder, reason
+from physink_tui.formats.session_outputs import write_session_outputs
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
 from physink_tui.input.pen.mapping import TabletMapping
-from physink_tui.outputs import OutputFolder, reason
 from physink_tui.render.braille import braille_plot
 from physink_tui.scene.components import Body, Joint
 from physink_tui.session.session import Session
@@ -71,16 +68,8 @@ def run(args: argparse.Namespace) -> int:
         raise PhysinkError(f"{journal_path}: cannot write: {reason(exc)}") from None
     journal = read_journal(journal_path)
     session = Session.from_header(journal.header).run(journal.entries)
-    names = session.scene.names()
-    timeline_doc = None
-    narration = ""
-    if session.timeline is not None:
-        text = timeline_json(session.timeline, names)
-        folder.write("timeline.json", text)
-        narration = timeline_text(session.timeline, names)
-        folder.write("timeline.txt", narration + "\n")
-        timeline_doc = json.loads(text)
-    save_project(Project(session.scene, (), timeline_doc, session.canvas), out / "project.json")
+    write_session_outputs(folder, session.scene, session.timeline, session.canvas, session.vocabulary_lines())
+    narration = "" if session.timeline is None else timeline_text(session.timeline, session.scene.names())
 
     tip = cols.tip.tolist()
     touching = [(x, y) for x, y, down in zip(cols.x.tolist(), cols.y.tolist(), tip, strict=True) if down]

@@ -1,5 +1,5 @@
 """`physink equiv A B [--json]`: are two timelines (or projects) qualitatively equivalent; the comparison itself is
-`physink_tui.timeline.equivalence`'s, the file formats `timeline_formats`' and the project codec's.
+`physink_tui.timeline.equivalence`'s, the file formats `timeline_json`'s and the project codec's.
 
 A and B are each a timeline JSON file (``physink timeline --format json``, ``physink replay``'s timeline.json)
 or a project file holding a timeline; a file whose top-level ``"format"`` is ``physink-project`` is a project.

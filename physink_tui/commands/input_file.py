@@ -12,7 +12,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from physink_tui.errors import PhysinkError
-from physink_tui.outputs import reason
+from physink_tui.formats.outputs import reason
 
 BOM = b"\xef\xbb\xbf"
 PROJECT_FORMAT = "physink-project"  # the project codec's FORMAT, kept here so sniffing imports no codec

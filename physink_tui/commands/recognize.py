@@ -16,7 +16,7 @@ from dataclasses import fields
 from typing import Any
 
 from physink_tui.errors import PhysinkError
-from physink_tui.formats.project.checks import show
+from physink_tui.formats.json_checks import show
 from physink_tui.scene.recognition.primitives import Geometry, Line, Recognition
 from physink_tui.scene.recognition.recognize import recognize_strokes
 

@@ -3,7 +3,7 @@
 A replay prints the gestures, one line each, and writes them to ``DIR/gestures.jsonl``; a journal
 also runs through the session, whose sketch is written to ``DIR/project.json`` and, after a demonstration, its
 timeline to ``DIR/timeline.json`` and ``DIR/timeline.txt``. ``DIR`` holds only this run's files
-(`physink_tui.outputs.OutputFolder`); the input is read once, so a pipe or FIFO works. A capture is replayed
+(`physink_tui.formats.outputs.OutputFolder`); the input is read once, so a pipe or FIFO works. A capture is replayed
 device by device in file order as live reports would arrive; a journal's ``hid`` lines go through their device's
 decoder, its ``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
 """
@@ -11,7 +11,6 @@ decoder, its ``pen`` lines are canvas samples already, and its commands and utte
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from collections import Counter
 from pathlib import Path
@@ -21,19 +20,16 @@ from physink_tui.commands.gesture_output import gesture_json, gesture_text
 from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
 from physink_tui.errors import DescriptorError, PhysinkError
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.formats.project.codec import Project
-from physink_tui.formats.project.files import save_project
-from physink_tui.formats.timeline_formats import timeline_json
+from physink_tui.formats.outputs import OutputFolder
+from physink_tui.formats.session_outputs import write_session_outputs
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.hid.pen_layout import tablet_size
 from physink_tui.input.pen.gestures import Gesture
 from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.sources import RawReport, SourceEnded
-from physink_tui.outputs import OutputFolder
 from physink_tui.session.replay_driver import replay
 from physink_tui.session.session import Session
-from physink_tui.timeline.narrate import timeline_text
 from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary
 
 PLURAL = {"body": "bodies"}
@@ -80,7 +76,7 @@ def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, tick
     session = Session.from_header(journal.header)
     session.pen = pen
     if vocabulary is not None:
-        session.vocabulary = session.vocabulary.extended(vocabulary)
+        session.add_words(vocabulary)
     replay(session, journal.entries, ticks)
     events = [line for entry in journal.entries if (line := entry_line(entry)) is not None]
     last_t = journal.entries[-1].t if journal.entries else 0.0
@@ -91,7 +87,9 @@ def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, tick
         notes.append(f"line {journal.truncated} is incomplete (the writer stopped mid-line); read up to it")
     out = OutputFolder.prepare(out_dir)
     _write_gestures(out, events, pen.log, notes + decoder_notes(pen))
-    write_session_outputs(session, out)
+    target = write_session_outputs(out, session.scene, session.timeline, session.canvas,
+                                   session.vocabulary_lines())
+    _print_session(session, target)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -142,22 +140,13 @@ def read_vocabulary(path: str | None) -> Vocabulary | None:
     return parse_vocabulary(text, path)
 
 
-def write_session_outputs(session: Session, out: OutputFolder) -> None:
-    """Write DIR/project.json (the sketch of a session that has run) and, after a demonstration, the timeline."""
-    names = session.scene.names()
-    timeline = None
-    if session.timeline is not None:
-        text = timeline_json(session.timeline, names)
-        out.write("timeline.json", text + ("" if text.endswith("\n") else "\n"))
-        out.write("timeline.txt", timeline_text(session.timeline, names) + "\n")
-        timeline = json.loads(text)
-    project = Project(session.scene, (), timeline, session.canvas)
-    save_project(project, out.file("project.json"))
+def _print_session(session: Session, project: Path) -> None:
+    """Prints what the session told the user, and a summary of the sketch written to ``project``."""
     for message in session.messages:
         print(f"{message.t:9.3f}  told          {message.text}")
     kinds = Counter(type(c).__name__.lower() for c in session.scene.components.values())
     summary = ", ".join(f"{n} {PLURAL.get(k, k + 's') if n > 1 else k}" for k, n in sorted(kinds.items())) or "nothing"
-    print(f"replay: the sketch has {summary}; written to {out.file('project.json')}", file=sys.stderr)
+    print(f"replay: the sketch has {summary}; written to {project}", file=sys.stderr)
 
 
 def _merge(events: list[str], gestures: list[Gesture]) -> list[str]:

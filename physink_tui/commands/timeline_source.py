@@ -1,5 +1,5 @@
 """Reads the timeline a command is pointed at: a timeline JSON file or a project holding one, with its labels;
-the formats themselves are `timeline_formats`' and the project codec's."""
+the formats themselves are `timeline_json`'s and the project codec's."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from pathlib import Path
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.project.codec import FORMAT as PROJECT_FORMAT
 from physink_tui.formats.project.codec import decode_project
-from physink_tui.formats.timeline_formats import parse_timeline_json
+from physink_tui.formats.timeline_json import decode_timeline_json
 from physink_tui.timeline.events import Timeline, TimelineError
 
 
@@ -17,7 +17,7 @@ def _is_project(text: str) -> bool:
     try:
         doc = json.loads(text)
     except (ValueError, RecursionError):
-        return False  # parse_timeline_json says what is wrong with it
+        return False  # decode_timeline_json says what is wrong with it
     return isinstance(doc, dict) and doc.get("format") == PROJECT_FORMAT
 
 
@@ -55,16 +55,11 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
     _refuse_other_kinds(text, path)
     if not _is_project(text):
         try:
-            return parse_timeline_json(text)
+            return decode_timeline_json(text)
         except TimelineError as e:
             raise TimelineError(f"{path}: {e}", e.event_id) from None
     project = decode_project(text, path)  # SceneError names the file and the bad field; the file is read once
     if project.timeline is None:
         raise PhysinkError(f"{path}: the project holds no timeline (demonstrate the machine in demo mode first)")
-    try:
-        timeline, labels = parse_timeline_json(json.dumps(project.timeline))
-    except TimelineError as e:
-        raise TimelineError(f"{path}: timeline: {e}", e.event_id) from None
-    # the scene's names (labels, and what an unlabelled spring or rope is) win over those written in the timeline
-    names = project.scene.names()
-    return timeline, {**labels, **names}
+    # the scene's names: its labels, and what an unlabelled spring or rope is
+    return project.timeline, project.scene.names()

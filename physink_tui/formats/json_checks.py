@@ -1,9 +1,11 @@
-"""The journal's rules for single values, and the words of its errors; knows no JSON text and does no I/O.
+"""The one JSON checker of every format: reads a value at a key path and says what was expected; no format, no I/O.
 
-The codec checks with these functions in both directions, so whatever the writer accepts the reader reads
-back. Each check takes ``where`` (``"line 12"`` when reading, ``"pen entry"`` when writing) and the key's
-dotted path (``"pen.x"``), and raises `JournalError` worded ``<where>: key "<key>": expected <what>, got
-<value>``, the value shown as it appears in JSON.
+Each check takes a `Place` (which file or line the value comes from, which error to raise and how keys read),
+the key's path (``"pen.x"``, ``"components[3].material.friction"``, ``"events[2].t0"``) and the value, returns the
+value checked (numbers as floats) and raises ``place.error`` worded ``<place>: <key>: expected <what>, got
+<value>`` (or ``..., but it is missing``), the value shown as it appears in JSON. The journal names its keys
+``key "pen.x"`` (`Place.quoted`); the project and the timeline by their bare path. The formats' own words (the
+journal's commands, a project's component references) stay with their codecs.
 """
 
 from __future__ import annotations
@@ -11,66 +13,32 @@ from __future__ import annotations
 import json
 import math
 import numbers
-import re
-from typing import Any
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, TypeVar
 
-from physink_tui.errors import JournalError
+from physink_tui.errors import PhysinkError
 
 SHOW_MAX = 60
 """Offending values are shown with at most this many characters."""
 
-KINDS = ("hid", "pen", "cmd", "say", "device")
-"""The keys that say what an entry is; a line has exactly one of them."""
+MISSING: Any = object()
+"""Stands for a key that is absent, where a value is expected."""
 
-COMMANDS = ("mode", "play", "pause", "stop", "seek", "clear", "undo", "redo", "label", "simulate", "save")
-"""Command names, as the session knows them."""
-
-MODES = ("sketch", "demo")
-"""The arguments ``mode`` takes."""
-
-LABEL_TARGETS = ("last", "selected")
-"""``label`` targets besides a component id."""
-
-MAX_SECONDS = 366 * 24 * 3600.0
-"""The latest ``t`` (and ``seek`` time) a journal may hold, in seconds: a year and a day. Larger finite values
-(``1e308``) are refused, since time arithmetic on them overflows and no session lasts that long."""
-
-SECONDS_EXPECTED = f"a number in [0, {MAX_SECONDS:.0f}] (seconds since the session start)"
-"""What a ``t`` must be, in error messages."""
-
-_USAGE = {
-    "mode": 'one argument, "sketch" or "demo",',
-    "seek": f"one argument, a number in [0, {MAX_SECONDS:.0f}] (seconds of timeline time),",
-    "label": 'two arguments, TARGET ("last", "selected" or a component id) and a non-empty TEXT,',
-    "save": "one argument, a non-empty PATH,",
-}
-_HEX = re.compile(r"[0-9a-fA-F]{2}(?: [0-9a-fA-F]{2})*\Z")
-_MISSING = object()
+T = TypeVar("T")
 
 
 def show(value: Any) -> str:
     """The value as it would appear in JSON, shortened.
 
-    >>> show(3.2), show("pad1"), show(True), show(None), show([1, "a"])
-    ('3.2', '"pad1"', 'true', 'null', '[1, "a"]')
+    >>> show(3.2), show("pad1"), show(True), show(None), show([1, "a"]), show(float("nan"))
+    ('3.2', '"pad1"', 'true', 'null', '[1, "a"]', 'NaN')
     """
     try:
         text = json.dumps(value, ensure_ascii=False)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, RecursionError):
         text = repr(value)
     return text if len(text) <= SHOW_MAX else text[: SHOW_MAX - 3] + "..."
-
-
-def bad(where: str, key: str, expected: str, got: Any = _MISSING) -> JournalError:
-    """The error for one key: what was expected and what was found (or that the key is missing).
-
-    >>> print(bad("line 12", "t", "a number >= the previous t 3.5", 3.2))
-    line 12: key "t": expected a number >= the previous t 3.5, got 3.2
-    >>> print(bad("line 3", "pen.tip", "true or false"))
-    line 3: key "pen.tip": expected true or false, but it is missing
-    """
-    found = "but it is missing" if got is _MISSING else f"got {show(got)}"
-    return JournalError(f'{where}: key "{printable(key)}": expected {expected}, {found}')
 
 
 def printable(key: str) -> str:
@@ -84,26 +52,68 @@ def printable(key: str) -> str:
     return "".join(c if c.isprintable() else repr(c)[1:-1] for c in key)
 
 
-def unknown_key(where: str, key: str) -> str:
-    """The warning for a key the format does not define (it is ignored)."""
-    return f'{where}: unknown key "{printable(key)}" ignored'
+@dataclass(frozen=True, slots=True)
+class Place:
+    """Where checked values come from, which error a bad one raises, and how its key is named.
+
+    Attributes:
+        name: what messages start with: ``"line 12"``, ``"pen entry"``, ``"project.json"``; "" for nothing.
+        error: the `PhysinkError` subclass raised (`JournalError`, `SceneError`, `TimelineError`).
+        quoted: keys read ``key "pen.x"`` (the journal's wording) rather than ``pen.x``.
+    """
+
+    name: str
+    error: type[PhysinkError] = PhysinkError
+    quoted: bool = False
+
+    def __str__(self) -> str:
+        return self.name
+
+    def key(self, path: str) -> str:
+        """The key as messages name it."""
+        return f'key "{printable(path)}"' if self.quoted else printable(path)
+
+    def fail(self, message: str) -> PhysinkError:
+        """The error for a message about the whole place (no key): ``<place>: <message>``."""
+        return self.error(f"{self.name}: {message}" if self.name else message)
+
+    def bad(self, path: str, expected: str, got: Any = MISSING, note: str = "") -> PhysinkError:
+        """The error for one key: what was expected and what was found (or that the key is missing).
+
+        >>> from physink_tui.errors import JournalError, SceneError
+        >>> print(Place("line 12", JournalError, quoted=True).bad("t", "a number >= the previous t 3.5", 3.2))
+        line 12: key "t": expected a number >= the previous t 3.5, got 3.2
+        >>> print(Place("project.json", SceneError).bad("canvas", "an object"))
+        project.json: canvas: expected an object, but it is missing
+        """
+        found = "but it is missing" if got is MISSING else f"got {show(got)}"
+        return self.fail(f"{self.key(path)}: expected {expected}, {found}{note}")
+
+    def unknown_key(self, path: str) -> str:
+        """The warning for a key the format does not define (it is ignored)."""
+        prefix = f"{self.name}: " if self.name else ""
+        return f'{prefix}unknown key "{printable(path)}" ignored'
 
 
-def kinds_error(where: str, found: list[str]) -> JournalError:
-    """The error for a line with none or several of ``hid``, ``pen``, ``cmd``, ``say``."""
-    what = " and ".join(found) if found else "none"
-    return JournalError(f"{where}: expected exactly one of {', '.join(KINDS)}; found {what}")
+def bad(where: Place, key: str, expected: str, got: Any = MISSING, note: str = "") -> PhysinkError:
+    """`Place.bad` as a function: the error for ``key`` at ``where``."""
+    return where.bad(key, expected, got, note)
 
 
-def get(obj: dict[str, Any], where: str, key: str, path: str, expected: str) -> Any:
+def joined(path: str, key: str) -> str:
+    """``key`` under ``path`` (``"canvas.width"``), or ``key`` alone at the top."""
+    return f"{path}.{key}" if path else key
+
+
+def get(obj: dict[str, Any], where: Place, key: str, path: str, expected: str) -> Any:
     """``obj[key]``, or the "missing" error naming ``path`` and what was expected."""
     try:
         return obj[key]
     except KeyError:
-        raise bad(where, path, expected) from None
+        raise where.bad(path, expected) from None
 
 
-def _real(value: Any) -> float | None:
+def real(value: Any) -> float | None:
     """The value as a finite float, or None if it is no finite real number (bools are not numbers)."""
     if type(value) is float:
         return value if math.isfinite(value) else None
@@ -116,121 +126,124 @@ def _real(value: Any) -> float | None:
     return value if math.isfinite(value) else None
 
 
-def seconds(where: str, key: str, value: Any, previous: float | None = None) -> float:
-    """A time in seconds: finite, in [0, `MAX_SECONDS`], and >= ``previous`` when given.
-
-    >>> seconds("line 12", "t", 3.2, previous=3.5)
-    Traceback (most recent call last):
-    ...
-    physink_tui.errors.JournalError: line 12: key "t": expected a number >= the previous t 3.5, got 3.2
-    """
-    t = _real(value)
-    if t is None or not 0 <= t <= MAX_SECONDS:
-        raise bad(where, key, SECONDS_EXPECTED, value)
-    if previous is not None and t < previous:
-        raise bad(where, key, f"a number >= the previous t {previous!r}", value)
-    return t
-
-
-def unit(where: str, key: str, value: Any) -> float:
-    """A number in [0, 1]."""
-    v = _real(value)
-    if v is None or not 0.0 <= v <= 1.0:
-        raise bad(where, key, "a number in [0, 1]", value)
+def number(where: Place, key: str, value: Any, expected: str = "a finite number", *, low: float | None = None,
+           high: float | None = None, above: float | None = None) -> float:
+    """A finite number, within the bounds given (``above`` is exclusive), as a float."""
+    v = real(value)
+    if v is None or (low is not None and v < low) or (high is not None and v > high) or (
+            above is not None and v <= above):
+        raise where.bad(key, expected, value)
     return v
 
 
-def positive(where: str, key: str, value: Any) -> int | float:
+def limited(where: Place, key: str, value: Any, limit: float) -> float:
+    """A number no larger than ``limit`` either way (NaN and infinity refused), as a float.
+
+    >>> limited(Place(""), "events[0].t0", 2e9, 1e9)
+    Traceback (most recent call last):
+    ...
+    physink_tui.errors.PhysinkError: events[0].t0: expected a finite number of at most 1e+09 in size, got 2000000000.0
+    """
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise where.bad(key, "a number", value)
+    try:
+        v = float(value)
+    except OverflowError:
+        v = math.inf
+    if not abs(v) <= limit:  # NaN too
+        raise where.bad(key, f"a finite number of at most {limit:g} in size", value)
+    return v
+
+
+def unit(where: Place, key: str, value: Any) -> float:
+    """A number in [0, 1]."""
+    return number(where, key, value, "a number in [0, 1]", low=0.0, high=1.0)
+
+
+def positive(where: Place, key: str, value: Any) -> int | float:
     """A finite number > 0, kept an int when it is one (so it is written back the same way)."""
-    v = _real(value)
-    if v is None or v <= 0:
-        raise bad(where, key, "a number > 0", value)
+    v = number(where, key, value, "a number > 0", above=0.0)
     return value if type(value) is int else v
 
 
-def flag(where: str, key: str, value: Any) -> bool:
+def flag(where: Place, key: str, value: Any) -> bool:
     """``true`` or ``false``, nothing else (not 0 or 1)."""
     if value is True or value is False:
         return value
-    raise bad(where, key, "true or false", value)
+    raise where.bad(key, "true or false", value)
 
 
-def text(where: str, key: str, value: Any, *, empty: bool = True) -> str:
+def text(where: Place, key: str, value: Any, expected: str | None = None, *, empty: bool = True) -> str:
     """A string of valid Unicode (no lone surrogates), non-empty unless ``empty``."""
+    if expected is None:
+        expected = "a string" if empty else "a non-empty string"
     if not isinstance(value, str) or (not empty and not value):
-        raise bad(where, key, "a string" if empty else "a non-empty string", value)
+        raise where.bad(key, expected, value)
     try:
         value.encode("utf-8")
     except UnicodeEncodeError:
-        raise bad(where, key, "valid Unicode text (no lone surrogates)", value) from None
+        raise where.bad(key, "valid Unicode text (no lone surrogates)", value) from None
     return value
 
 
-def optional_int(where: str, key: str, value: Any, high: int) -> int | None:
+def optional(check: Callable[..., T], where: Place, key: str, value: Any, *args: Any, **kwargs: Any) -> T | None:
+    """None for ``null``, else ``check(where, key, value, ...)``."""
+    return None if value is None else check(where, key, value, *args, **kwargs)
+
+
+def optional_int(where: Place, key: str, value: Any, high: int) -> int | None:
     """``null`` or an integer in 0..high."""
     if value is None:
         return None
     if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= high:
-        raise bad(where, key, f"null or an integer in 0..{high}", value)
+        raise where.bad(key, f"null or an integer in 0..{high}", value)
     return int(value)
 
 
-def hex_bytes(where: str, key: str, value: Any) -> bytes:
-    """Bytes from their hex form, two digits each, separated by one space (``"02 c1 00"``), at least one."""
-    if not isinstance(value, str) or not _HEX.match(value):
-        raise bad(where, key, 'hex bytes separated by spaces, e.g. "02 c1 00"', value)
-    return bytes.fromhex(value)
+def one_of(where: Place, key: str, value: Any, choices: tuple[str, ...]) -> str:
+    """One of the strings ``choices``."""
+    if not isinstance(value, str) or value not in choices:
+        raise where.bad(key, "one of " + ", ".join(show(c) for c in choices), value)
+    return value
 
 
-def report_bytes(where: str, key: str, value: Any) -> bytes:
-    """Bytes built in code: a non-empty ``bytes``-like value."""
-    if not isinstance(value, bytes | bytearray | memoryview) or not len(value):
-        raise bad(where, key, "non-empty bytes", value)
-    return bytes(value)
+def an_object(where: Place, key: str, value: Any, expected: str = "an object") -> dict[str, Any]:
+    """A JSON object (a dict)."""
+    if not isinstance(value, dict):
+        raise where.bad(key, expected, value)
+    return value
 
 
-def command(where: str, name: Any, args: Any) -> tuple[str | float, ...]:
-    """A command's name and arguments, minimally checked; the arguments as a tuple (seek's as a float).
-
-    >>> command("line 5", "seek", [2])
-    (2.0,)
-    >>> command("line 5", "mode", ["draw"])
-    Traceback (most recent call last):
-    ...
-    physink_tui.errors.JournalError: line 5: key "args": expected one argument, "sketch" or "demo", for "mode", \
-got ["draw"]
-    """
-    if not isinstance(name, str) or name not in COMMANDS:
-        raise bad(where, "cmd", f"one of {', '.join(COMMANDS)}", name)
-    if not isinstance(args, list | tuple):
-        raise bad(where, "args", "a list", args)
-    ok = _args_ok(name, args)
-    if ok is None:
-        raise bad(where, "args", f"{_USAGE.get(name, 'no arguments')} for {show(name)}", list(args))
-    return ok
+def a_list(where: Place, key: str, value: Any, expected: str = "a list") -> list[Any]:
+    """A JSON array (a list)."""
+    if not isinstance(value, list):
+        raise where.bad(key, expected, value)
+    return value
 
 
-def _args_ok(name: str, args: list[Any] | tuple[Any, ...]) -> tuple[str | float, ...] | None:
-    def is_text(value: Any) -> bool:
-        try:
-            return isinstance(value, str) and bool(value) and bool(value.encode("utf-8"))
-        except UnicodeEncodeError:
-            return False
-
-    if name == "mode":
-        return (args[0],) if len(args) == 1 and args[0] in MODES and isinstance(args[0], str) else None
-    if name == "seek":
-        t = _real(args[0]) if len(args) == 1 else None
-        return (t,) if t is not None and 0 <= t <= MAX_SECONDS else None
-    if name == "label":
-        return (args[0], args[1]) if len(args) == 2 and is_text(args[0]) and is_text(args[1]) else None
-    if name == "save":
-        return (args[0],) if len(args) == 1 and is_text(args[0]) else None
-    return () if not args else None
+def known_keys(where: Place, path: str, obj: dict[str, Any], keys: tuple[str, ...],
+               warnings: list[str] | None) -> None:
+    """Appends to ``warnings`` (when given) one warning per key of ``obj`` not in ``keys``."""
+    if warnings is not None:
+        warnings.extend(where.unknown_key(joined(path, k)) for k in obj if k not in keys)
 
 
-def json_value(where: str, key: str, value: Any) -> None:
-    """Checks that ``value`` is plain JSON this format can write and read back exactly.
+def point(where: Place, key: str, value: Any, expected: str = "a point [x, y]") -> tuple[float, float]:
+    """A point ``[x, y]`` of finite numbers."""
+    if not isinstance(value, list) or len(value) != 2:
+        raise where.bad(key, expected, value)
+    return number(where, f"{key}[0]", value[0]), number(where, f"{key}[1]", value[1])
+
+
+def points(where: Place, key: str, value: Any, least: int) -> tuple[tuple[float, float], ...]:
+    """A list of at least ``least`` points."""
+    if not isinstance(value, list) or len(value) < least:
+        raise where.bad(key, f"a list of at least {least} points [x, y]", value)
+    return tuple(point(where, f"{key}[{i}]", p) for i, p in enumerate(value))
+
+
+def json_value(where: Place, key: str, value: Any) -> None:
+    """Checks that ``value`` is plain JSON a format can write and read back exactly.
 
     Objects with string keys, lists (or tuples), strings of valid Unicode, finite floats, ints, bools, null.
     """
@@ -238,20 +251,17 @@ def json_value(where: str, key: str, value: Any) -> None:
         return
     if isinstance(value, float):
         if not math.isfinite(value):
-            raise bad(where, key, "a finite number", value)
-        return
-    if isinstance(value, str):
+            raise where.bad(key, "a finite number", value)
+    elif isinstance(value, str):
         text(where, key, value)
-        return
-    if isinstance(value, list | tuple):
+    elif isinstance(value, list | tuple):
         for i, item in enumerate(value):
             json_value(where, f"{key}[{i}]", item)
-        return
-    if isinstance(value, dict):
+    elif isinstance(value, dict):
         for k, item in value.items():
             if not isinstance(k, str):
-                raise bad(where, key, "an object with string keys", value)
+                raise where.bad(key, "an object with string keys", value)
             text(where, f"{key}.{k}", k)
             json_value(where, f"{key}.{k}", item)
-        return
-    raise bad(where, key, "a JSON value (object, list, string, number, true, false or null)", value)
+    else:
+        raise where.bad(key, "a JSON value (object, list, string, number, true, false or null)", value)

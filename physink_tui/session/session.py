@@ -17,7 +17,7 @@ from collections.abc import Iterable
 from dataclasses import replace
 from types import MappingProxyType
 
-from physink_tui.errors import JournalError, PhysinkError
+from physink_tui.errors import JournalError, PhysinkError, SceneError
 from physink_tui.formats.journal.entries import (
     CommandEntry,
     DeviceEntry,
@@ -28,6 +28,8 @@ from physink_tui.formats.journal.entries import (
     SayEntry,
 )
 from physink_tui.formats.journal.writer import JournalWriter
+from physink_tui.formats.json_checks import Place
+from physink_tui.formats.project.codec import decode_project_object, project_vocabulary, vocabulary_lines
 from physink_tui.input.journal_replay import PEN_DEVICE, add_journal_device, pen_input_for
 from physink_tui.input.pen.gestures import Gesture
 from physink_tui.input.pen.pen_input import PenInput
@@ -68,7 +70,7 @@ class Session:
         self.canvas = canvas
         self.pen = pen
         self.history = History(document or Document())
-        self.vocabulary: Vocabulary = DEFAULT_VOCABULARY
+        self.words = Vocabulary()  # the user's own verbs and prepositions (the project keeps them)
         self.selected: str | None = None
         self.messages: list[Message] = []
         self.errors: list[str] = []
@@ -89,7 +91,7 @@ class Session:
         session = cls((header.canvas_width, header.canvas_height), pen_input_for(header), document)
         if header.vocabulary:
             words = parse_vocabulary(header.vocabulary, "journal header vocabulary")
-            session.vocabulary = DEFAULT_VOCABULARY.extended(words)
+            session.add_words(words)
         return session
 
     # -- what a view and a driver read -----------------------------------------------------------------------
@@ -106,6 +108,19 @@ class Session:
     def timeline(self) -> Timeline | None:
         """The timeline as it stands now (while demonstrating, what has been recorded so far)."""
         return self.current.timeline()
+
+    @property
+    def vocabulary(self) -> Vocabulary:
+        """The words phrases may use: the default ones and the user's."""
+        return DEFAULT_VOCABULARY.extended(self.words)
+
+    def add_words(self, words: Vocabulary) -> None:
+        """The user's vocabulary grows by ``words`` (a vocabulary file)."""
+        self.words = self.words.extended(words)
+
+    def vocabulary_lines(self) -> tuple[str, ...]:
+        """The user's words as a project keeps them."""
+        return vocabulary_lines(self.words)
 
     @property
     def mode(self) -> str:
@@ -266,11 +281,13 @@ class Session:
             self._switch(str(args[0]), t)
         elif name in ("undo", "redo", "clear"):
             self._edit(name, t)
+        elif name == "load":
+            self._load(entry)
         elif name == "end":  # the driver finishes next; input after it would still be handled
             self._end()
         else:
             self.sketch.flush(t)
-            self.tell(f"{name}: not available yet (simulation, saving and loading come with later issues)")
+            self.tell(f"{name}: not available yet (simulation and saving come with later issues)")
 
     def _switch(self, mode: str, t: float) -> None:
         """``mode sketch`` or ``mode demo``: what the current mode was doing is committed first."""
@@ -301,6 +318,28 @@ class Session:
         self._forget_gone()
         if demonstrating:
             self.current = DemoMode(self, t)
+
+    def _load(self, entry: CommandEntry) -> None:
+        """``load PATH`` with the project embedded: it becomes the document (one undoable action) and its words
+        join the vocabulary; a demonstration starts again from it."""
+        where = f"load {entry.args[0] if entry.args else ''}".strip()
+        if entry.project is None:
+            self.tell(f"{where}: the project is not embedded in the input, so nothing was loaded")
+            return
+        project = decode_project_object(entry.project, Place(where, SceneError))
+        self.current.close(entry.t)
+        self.sketch.close(entry.t)
+        demonstrating = isinstance(self.current, DemoMode)
+        self.current = self.sketch
+        self.commit(Document(project.scene, project.timeline), where)
+        self.add_words(project_vocabulary(project))
+        if tuple(project.canvas) != tuple(self.canvas):
+            self.tell(f"{where}: the project was drawn on a {project.canvas[0]:g} x {project.canvas[1]:g} canvas, "
+                      f"this session's is {self.canvas[0]:g} x {self.canvas[1]:g}; it is shown as drawn")
+        self.tell(f"loaded {entry.args[0] if entry.args else 'a project'}: {len(project.scene.components)} "
+                  "components" + (", a timeline" if project.timeline is not None else ""))
+        if demonstrating:
+            self.current = DemoMode(self, entry.t)
 
     def _end(self) -> None:
         self.current.close(self.t)

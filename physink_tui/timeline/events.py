@@ -2,7 +2,7 @@
 
 A `Timeline` is a directed acyclic graph kept as a tuple of events in creation order; each event names the events
 that cause it (`Event.causes`), so edges run cause -> effect. Graph algorithms (ancestors, descendants,
-generations, cycle checks, assisted editing) are free functions in `graph`; narration in `narrate`.
+generations, cycle checks) are free functions in `graph`, assisted editing in `edits`; narration in `narrate`.
 Times are seconds of timeline time; coordinates are canvas units with y down, angles radians (as in the scene).
 """
 

@@ -101,14 +101,3 @@ def topological_generations(timeline: Timeline) -> list[list[str]]:
     if placed != len(timeline):
         check_acyclic(timeline)
     return generations
-
-
-def remove_caused_by(timeline: Timeline, event_id: str) -> Timeline:
-    """The timeline without every event ``event_id`` causes, directly or indirectly; nothing else changes.
-
-    The assisted-editing primitive of thesis 3.3.2: when a body is re-demonstrated, the events its changed
-    movement caused may no longer happen, while earlier events and unrelated branches stay untouched.
-    Raises `CausalCycleError` when the timeline has a cycle.
-    """
-    check_acyclic(timeline)
-    return timeline.remove(descendants(timeline, event_id))

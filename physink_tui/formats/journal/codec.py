@@ -7,12 +7,15 @@ that says what the entry is::
     {"t":0.5,"hid":"02 c1 00","dev":"tablet0"}
     {"t":0.51,"pen":{"x":0.25,"y":0.5,"p":0.0,"tip":false,"range":true,"eraser":false,"b1":false,"b2":false}}
     {"t":1.0,"cmd":"seek","args":[2.5]}
+    {"t":1.1,"cmd":"load","args":["egg.physink.json"],"project":{"format":"physink-project","version":1,...}}
     {"t":1.25,"say":"label ball"}
     {"t":2.0,"device":{"tablet1":{"name":null,"bus":3,"vid":9580,"pid":110,"descriptor":"05 0d ..."}}}
 
-Non-ASCII text is written as UTF-8, not escaped. Reading refuses what plain ``json`` lets pass: NaN and
-Infinity, and a key twice in one object. Encoding checks every value with the same rules as decoding
-(`physink_tui.formats.json_checks`), so everything written reads back. Both raise `JournalError`. No file I/O.
+A ``load`` line embeds the loaded project's JSON object, checked as a project file is (a replay needs no
+other file); ``end`` (no arguments) says the session ended at t. Non-ASCII text is written as UTF-8, not
+escaped. Reading refuses what plain ``json`` lets pass: NaN and Infinity, and a key twice in one object.
+Encoding checks every value with the same rules as decoding (`value_checks` over
+`physink_tui.formats.json_checks`), so everything written reads back. Both raise `JournalError`. No file I/O.
 """
 
 from __future__ import annotations
@@ -23,17 +26,21 @@ from typing import Any
 
 from physink_tui.errors import JournalError
 from physink_tui.formats import json_checks as checks
+from physink_tui.formats.journal import value_checks
 from physink_tui.formats.journal.entries import CommandEntry, DeviceEntry, HidEntry, JournalEntry, PenEntry, SayEntry
 from physink_tui.formats.journal.header_checks import decode_devices, encode_devices
-from physink_tui.formats.json_checks import bad, get, show
+from physink_tui.formats.journal.value_checks import at
+from physink_tui.formats.json_checks import Place, bad, get, show
+from physink_tui.formats.project.codec import decode_project_object
 from physink_tui.formats.strict_json import DuplicateKey, unique_pairs
 
 PEN_KEYS = ("x", "y", "p", "tip", "range", "eraser", "b1", "b2")
 """The keys of a ``pen`` object, in the order written."""
 
-_ALLOWED = {"hid": {"t", "hid", "dev"}, "pen": {"t", "pen"}, "cmd": {"t", "cmd", "args"}, "say": {"t", "say"},
-            "device": {"t", "device"}}
+_ALLOWED = {"hid": {"t", "hid", "dev"}, "pen": {"t", "pen"}, "cmd": {"t", "cmd", "args", "project"},
+            "say": {"t", "say"}, "device": {"t", "device"}}
 _BOOL = {True: "true", False: "false"}
+_LOAD_EXPECTED = "the loaded project's JSON object (a replay needs the project embedded)"
 _PEN_EXPECTED = "an object with " + ", ".join(PEN_KEYS)
 
 
@@ -63,7 +70,7 @@ def compact_json(value: Any, *, sort_keys: bool = False) -> str:
     return json.dumps(value, ensure_ascii=False, separators=(",", ":"), allow_nan=False, sort_keys=sort_keys)
 
 
-def parse_object(text: str, where: str) -> dict[str, Any]:
+def parse_object(text: str, where: Place | str) -> dict[str, Any]:
     """The JSON object on one line; `JournalError` starting with ``where`` if it is not valid JSON or no object.
 
     >>> parse_object('{"t":1,"t":2}', "line 5")
@@ -122,8 +129,8 @@ def encode_entry(
     """
     kind = type(entry)
     if kind is PenEntry:
-        where = "pen entry"
-        t = checks.seconds(where, "t", entry.t, previous_t)
+        where = at("pen entry")
+        t = value_checks.seconds(where, "t", entry.t, previous_t)
         unit, flag = checks.unit, checks.flag
         return (
             f'{{"t":{t!r},"pen":{{"x":{unit(where, "pen.x", entry.x)!r},"y":{unit(where, "pen.y", entry.y)!r},'
@@ -133,31 +140,48 @@ def encode_entry(
             f'"b1":{_BOOL[flag(where, "pen.b1", entry.b1)]},"b2":{_BOOL[flag(where, "pen.b2", entry.b2)]}}}}}'
         )
     if kind is HidEntry:
-        where = "hid entry"
-        t = checks.seconds(where, "t", entry.t, previous_t)
-        data = checks.report_bytes(where, "hid", entry.data)
+        where = at("hid entry")
+        t = value_checks.seconds(where, "t", entry.t, previous_t)
+        data = value_checks.report_bytes(where, "hid", entry.data)
         dev = _device(where, checks.text(where, "dev", entry.dev, empty=False), devices)
         return f'{{"t":{t!r},"hid":"{data.hex(" ")}","dev":{json_string(dev)}}}'
     if kind is CommandEntry:
-        where = "cmd entry"
-        t = checks.seconds(where, "t", entry.t, previous_t)
-        args = checks.command(where, entry.name, entry.args)
+        where = at("cmd entry")
+        t = value_checks.seconds(where, "t", entry.t, previous_t)
+        args = value_checks.command(where, entry.name, entry.args)
         listed = ",".join(repr(a) if isinstance(a, float) else json_string(a) for a in args)
-        return f'{{"t":{t!r},"cmd":{json_string(entry.name)},"args":[{listed}]}}'
+        embedded = _embedded_project(where, entry.name, entry.project, entry.project is not None)
+        project = "" if embedded is None else f',"project":{compact_json(embedded)}'
+        return f'{{"t":{t!r},"cmd":{json_string(entry.name)},"args":[{listed}]{project}}}'
     if kind is SayEntry:
-        where = "say entry"
-        t = checks.seconds(where, "t", entry.t, previous_t)
+        where = at("say entry")
+        t = value_checks.seconds(where, "t", entry.t, previous_t)
         return f'{{"t":{t!r},"say":{json_string(checks.text(where, "say", entry.text))}}}'
     if kind is DeviceEntry:
-        where = "device entry"
-        t = checks.seconds(where, "t", entry.t, previous_t)
+        where = at("device entry")
+        t = value_checks.seconds(where, "t", entry.t, previous_t)
         if not entry.devices:
             raise bad(where, "device", "at least one device", [])
         return f'{{"t":{t!r},"device":{compact_json(encode_devices(where, "device", entry.devices))}}}'
     raise TypeError(f"not a journal entry: {entry!r}")
 
 
-def _device(where: str, dev: str, devices: Collection[str] | None) -> str:
+def _embedded_project(where: Place, name: str, project: Any, present: bool,
+                      warnings: list[str] | None = None) -> dict[str, Any] | None:
+    """A ``load`` command's embedded project, checked as a project file is (errors name the line and the field's
+    path in the project); None for the other commands, which embed none."""
+    if name != "load":
+        if present:
+            raise where.bad("project", 'nothing: only "load" embeds a project', project)
+        return None
+    if not present:
+        raise where.bad("project", _LOAD_EXPECTED)
+    checks.json_value(where, "project", project)
+    decode_project_object(project, Place(f'{where}: key "project"', JournalError), warnings)
+    return project
+
+
+def _device(where: Place, dev: str, devices: Collection[str] | None) -> str:
     if devices is not None and dev not in devices:
         known = ", ".join(show(d) for d in devices) or "none"
         raise JournalError(f'{where}: "dev" {show(dev)} is not a device of the header (devices: {known})')
@@ -192,33 +216,34 @@ def decode_line(
     ...
     physink_tui.errors.JournalError: line 4: expected exactly one of hid, pen, cmd, say, device; found none
     """
-    where = f"line {lineno}"
+    where = at(f"line {lineno}")
     obj = parse_object(text, where)
-    found = [k for k in checks.KINDS if k in obj]
+    found = [k for k in value_checks.KINDS if k in obj]
     if len(found) != 1:
-        raise checks.kinds_error(where, found)
+        raise value_checks.kinds_error(where, found)
     kind = found[0]
-    t = checks.seconds(
-        where, "t", get(obj, where, "t", "t", checks.SECONDS_EXPECTED), previous_t
+    t = value_checks.seconds(
+        where, "t", get(obj, where, "t", "t", value_checks.SECONDS_EXPECTED), previous_t
     )
     if warnings is not None and len(obj) > 2:
-        warnings.extend(checks.unknown_key(where, key) for key in obj if key not in _ALLOWED[kind])
+        warnings.extend(where.unknown_key(key) for key in obj if key not in _ALLOWED[kind])
     value = obj[kind]
     if kind == "pen":
         return _decode_pen(where, t, value, warnings)
     if kind == "hid":
-        data = checks.hex_bytes(where, "hid", value)
+        data = value_checks.hex_bytes(where, "hid", value)
         dev = checks.text(where, "dev", get(obj, where, "dev", "dev", "a device id of the header"), empty=False)
         return HidEntry(t, _device(where, dev, devices), data)
     if kind == "device":
         return DeviceEntry(t, tuple(decode_devices(where, value, warnings, "device")))
     if kind == "cmd":
-        args = checks.command(where, value, get(obj, where, "args", "args", "a list of arguments"))
-        return CommandEntry(t, value, args)
+        args = value_checks.command(where, value, get(obj, where, "args", "args", "a list of arguments"))
+        project = _embedded_project(where, value, obj.get("project"), "project" in obj, warnings)
+        return CommandEntry(t, value, args, project)
     return SayEntry(t, checks.text(where, "say", value))
 
 
-def _decode_pen(where: str, t: float, pen: Any, warnings: list[str] | None) -> PenEntry:
+def _decode_pen(where: Place, t: float, pen: Any, warnings: list[str] | None) -> PenEntry:
     if not isinstance(pen, dict):
         raise bad(where, "pen", _PEN_EXPECTED, pen)
     try:
@@ -227,7 +252,7 @@ def _decode_pen(where: str, t: float, pen: Any, warnings: list[str] | None) -> P
         key = next(k for k in PEN_KEYS if k not in pen)
         raise bad(where, f"pen.{key}", "a number in [0, 1]" if key in "xyp" else "true or false") from None
     if warnings is not None and len(pen) > len(PEN_KEYS):
-        warnings.extend(checks.unknown_key(where, f"pen.{k}") for k in pen if k not in PEN_KEYS)
+        warnings.extend(where.unknown_key(f"pen.{k}") for k in pen if k not in PEN_KEYS)
     unit, flag = checks.unit, checks.flag
     return PenEntry(
         t,

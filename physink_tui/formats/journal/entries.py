@@ -1,8 +1,8 @@
-"""The journal's header and entries as frozen values; no checking (see ``checks``), no JSON, no I/O.
+"""The journal's header and entries as frozen values; no checking (see `value_checks`), no JSON, no I/O.
 
 A journal is one `JournalHeader` followed by `JournalEntry` values in time order. The values are built
-directly by whoever journals (the session) and by the reader; `checks` says which ones are valid and
-`codec` turns them into lines.
+directly by whoever journals (the session) and by the reader; `value_checks` (over
+`physink_tui.formats.json_checks`) says which ones are valid and `codec` turns them into lines.
 """
 
 from __future__ import annotations
@@ -151,15 +151,24 @@ class CommandEntry:
 
     Attributes:
         t: seconds since the session start (>= 0, never less than the previous entry's).
-        name: one of `physink_tui.formats.json_checks.COMMANDS` (mode, play, pause, stop, seek, clear, undo, redo,
-            label, simulate, save).
+        name: one of `physink_tui.formats.journal.value_checks.COMMANDS` (mode, play, pause, stop, seek, clear,
+            undo, redo, label, simulate, save, load, end).
         args: its arguments: ``("sketch",)`` or ``("demo",)`` for mode, one float (seconds of timeline time,
-            >= 0) for seek, ``(target, text)`` for label, ``(path,)`` for save, ``()`` for the others.
+            >= 0) for seek, ``(target, text)`` for label, ``(path,)`` for save and load, ``()`` for the others
+            (``end``: the session ended at t).
+        project: ``load`` only, and required there: the loaded project's JSON object as its file holds it
+            (`physink_tui.formats.project.codec`), so that a replay needs no other file; None otherwise. A deep
+            copy of what was passed; not part of the hash.
     """
 
     t: float
     name: str
     args: tuple[str | float, ...] = ()
+    project: dict[str, Any] | None = field(default=None, hash=False)
+
+    def __post_init__(self) -> None:
+        if self.project is not None:
+            object.__setattr__(self, "project", copy.deepcopy(self.project))
 
 
 @dataclass(frozen=True, slots=True)

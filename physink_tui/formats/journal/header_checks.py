@@ -12,8 +12,9 @@ from typing import Any
 
 from physink_tui.errors import JournalError, PhysinkError
 from physink_tui.formats import json_checks as checks
+from physink_tui.formats.journal import value_checks
 from physink_tui.formats.journal.entries import JournalDevice
-from physink_tui.formats.json_checks import bad, get, show
+from physink_tui.formats.json_checks import Place, bad, get, show
 
 MAPPING_SIZES = ("canvas_width", "canvas_height", "tablet_width", "tablet_height")
 """Mapping keys holding a size: finite numbers > 0 (only their ratios matter)."""
@@ -35,11 +36,12 @@ _HEX = 'hex bytes separated by spaces, e.g. "05 0d 09 02"'
 _AREA = "a list of 4 numbers [x0, y0, x1, y1] in [0, 1] with x0 < x1 and y0 < y1"
 
 
-def check_mapping(where: str, mapping: Any, warnings: list[str] | None, *, strict: bool = False) -> dict[str, Any]:
+def check_mapping(where: Place, mapping: Any, warnings: list[str] | None, *, strict: bool = False) -> dict[str, Any]:
     """The header's ``mapping`` with its known keys checked and unknown ones dropped (and warned about), or
     refused when ``strict`` (writing: what is written must read back the same).
 
-    >>> check_mapping("line 1", {"area": [None, 0, 1, 1]}, None)
+    >>> from physink_tui.formats.journal.value_checks import at
+    >>> check_mapping(at("line 1"), {"area": [None, 0, 1, 1]}, None)
     Traceback (most recent call last):
     ...
     physink_tui.errors.JournalError: line 1: key "mapping.area[0]": expected a number in [0, 1], got null
@@ -62,13 +64,13 @@ def check_mapping(where: str, mapping: Any, warnings: list[str] | None, *, stric
             raise bad(where, path, f"no other keys than {', '.join(MAPPING_KEYS)}", value)
         else:
             if warnings is not None:
-                warnings.append(checks.unknown_key(where, path))
+                warnings.append(where.unknown_key(path))
             continue
         out[key] = value
     return out
 
 
-def _check_area(where: str, path: str, area: Any) -> None:
+def _check_area(where: Place, path: str, area: Any) -> None:
     if not isinstance(area, list) or len(area) != 4:
         raise bad(where, path, _AREA, area)
     x0, y0, x1, y1 = (checks.unit(where, f"{path}[{i}]", v) for i, v in enumerate(area))
@@ -78,10 +80,11 @@ def _check_area(where: str, path: str, area: Any) -> None:
         raise bad(where, f"{path}[3]", f"a number above y0 {y0!r} (the area's bottom edge)", area[3])
 
 
-def check_vocabulary(where: str, vocabulary: Any) -> str:
+def check_vocabulary(where: Place, vocabulary: Any) -> str:
     """The header's ``vocabulary`` text, checked line by line as a vocabulary file is.
 
-    >>> check_vocabulary("line 1", "verb topples\\nverb")
+    >>> from physink_tui.formats.journal.value_checks import at
+    >>> check_vocabulary(at("line 1"), "verb topples\\nverb")
     Traceback (most recent call last):
     ...
     physink_tui.errors.JournalError: line 1: key "vocabulary": expected the text of a vocabulary file; \
@@ -98,10 +101,11 @@ vocabulary:2: 'verb': expected at least one word after 'verb'
     return text
 
 
-def decode_devices(where: str, devices: Any, warnings: list[str] | None, top: str = "devices") -> list[JournalDevice]:
+def decode_devices(where: Place, devices: Any, warnings: list[str] | None, top: str = "devices") -> list[JournalDevice]:
     """The devices of a header's ``devices`` object, or of a ``device`` line's with ``top="device"``, checked.
 
-    >>> decode_devices("line 7", {"pad1": {"name": None, "bus": 3, "vid": -1, "pid": 0, "descriptor": "a1 c0"}},
+    >>> from physink_tui.formats.journal.value_checks import at
+    >>> decode_devices(at("line 7"), {"pad1": {"name": None, "bus": 3, "vid": -1, "pid": 0, "descriptor": "a1 c0"}},
     ...                None, "device")
     Traceback (most recent call last):
     ...
@@ -124,15 +128,17 @@ def decode_devices(where: str, devices: Any, warnings: list[str] | None, top: st
                     checks.optional_int(where, f"{key}.{k}", get(dev, where, k, f"{key}.{k}", _INT), 0xFFFF)
                     for k in ("bus", "vid", "pid")
                 ),
-                checks.hex_bytes(where, f"{key}.descriptor", get(dev, where, "descriptor", f"{key}.descriptor", _HEX)),
+                value_checks.hex_bytes(
+                    where, f"{key}.descriptor", get(dev, where, "descriptor", f"{key}.descriptor", _HEX)
+                ),
             )
         )
         if warnings is not None:
-            warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in dev if k not in DEVICE_KEYS)
+            warnings.extend(where.unknown_key(f"{key}.{k}") for k in dev if k not in DEVICE_KEYS)
     return out
 
 
-def encode_devices(where: str, top: str, devices: Any) -> dict[str, Any]:
+def encode_devices(where: Place, top: str, devices: Any) -> dict[str, Any]:
     """Devices as the JSON object of a header's ``devices`` or a ``device`` line, after checking each field."""
     out: dict[str, Any] = {}
     for dev in devices:
@@ -147,6 +153,6 @@ def encode_devices(where: str, top: str, devices: Any) -> dict[str, Any]:
             "bus": checks.optional_int(where, f"{key}.bus", dev.bus, 0xFFFF),
             "vid": checks.optional_int(where, f"{key}.vid", dev.vid, 0xFFFF),
             "pid": checks.optional_int(where, f"{key}.pid", dev.pid, 0xFFFF),
-            "descriptor": checks.report_bytes(where, f"{key}.descriptor", dev.descriptor).hex(" "),
+            "descriptor": value_checks.report_bytes(where, f"{key}.descriptor", dev.descriptor).hex(" "),
         }
     return out

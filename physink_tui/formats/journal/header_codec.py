@@ -23,7 +23,8 @@ from physink_tui.formats.journal.entries import (
     JournalHeader,
 )
 from physink_tui.formats.journal.header_checks import check_mapping, check_vocabulary, decode_devices, encode_devices
-from physink_tui.formats.json_checks import bad, get
+from physink_tui.formats.journal.value_checks import at
+from physink_tui.formats.json_checks import Place, bad, get
 
 HEADER_KEYS = ("format", "version", "program", "canvas", "devices", "mapping", "tip_thresholds", "vocabulary")
 """The header's keys, in the order written."""
@@ -41,7 +42,7 @@ def encode_header(header: JournalHeader) -> str:
     >>> print(encode_header(h).partition('"devices":')[2])
     {"pen0":{"name":"Pen","bus":3,"vid":1386,"pid":848,"descriptor":"a1 c0"}},"mapping":{},"tip_thresholds":{...}}
     """
-    where = "header"
+    where = at("header")
     canvas = {
         "width": checks.positive(where, "canvas.width", header.canvas_width),
         "height": checks.positive(where, "canvas.height", header.canvas_height),
@@ -65,7 +66,7 @@ def encode_header(header: JournalHeader) -> str:
     return "{" + ",".join(parts) + "}"
 
 
-def _tip_thresholds(where: str, down: Any, up: Any) -> tuple[float, float]:
+def _tip_thresholds(where: Place, down: Any, up: Any) -> tuple[float, float]:
     down = checks.unit(where, "tip_thresholds.down", down)
     if down <= 0.0:
         raise bad(where, "tip_thresholds.down", "a number in (0, 1]", down)
@@ -86,7 +87,7 @@ def decode_header(text: str, lineno: int = 1, warnings: list[str] | None = None)
     ...
     physink_tui.errors.JournalError: line 1: key "version": expected 1 (the newest version this program reads), got 2
     """
-    where = f"line {lineno}"
+    where = at(f"line {lineno}")
     obj = parse_object(text, where)
     found = get(obj, where, "format", "format", f'"{FORMAT}" (the first line must be the journal header)')
     if found != FORMAT:
@@ -110,17 +111,17 @@ def decode_header(text: str, lineno: int = 1, warnings: list[str] | None = None)
         )
     vocabulary = check_vocabulary(where, obj.get("vocabulary", ""))
     if warnings is not None:
-        warnings.extend(checks.unknown_key(where, key) for key in obj if key not in HEADER_KEYS)
+        warnings.extend(where.unknown_key(key) for key in obj if key not in HEADER_KEYS)
     return JournalHeader(width, height, devices, mapping, down, up, program, vocabulary)
 
 
 def _sub_object(
-    obj: dict[str, Any], where: str, key: str, keys: tuple[str, ...], warnings: list[str] | None
+    obj: dict[str, Any], where: Place, key: str, keys: tuple[str, ...], warnings: list[str] | None
 ) -> dict[str, Any]:
     expected = "an object with " + " and ".join(keys)
     value = get(obj, where, key, key, expected)
     if not isinstance(value, dict):
         raise bad(where, key, expected, value)
     if warnings is not None:
-        warnings.extend(checks.unknown_key(where, f"{key}.{k}") for k in value if k not in keys)
+        warnings.extend(where.unknown_key(f"{key}.{k}") for k in value if k not in keys)
     return value

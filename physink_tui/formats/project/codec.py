@@ -13,16 +13,18 @@ writes them, so a value read back equals the one written and the same project al
         {"id": "j1", "type": "joint", "kind": "pivot", "a": "b1", "b": "background", "anchor": [100.0, 50.0]}
       ],
       "next_id": {"b": 2, "j": 2, "r": 1, "s": 1},
-      "vocabulary": ["ball"],
-      "timeline": null
+      "vocabulary": ["verb plummets topples", "prep amid"],
+      "timeline": {"events": [...]}
     }
 
 Components are in scene order. Numbers of the scene and canvas are written as floats (``5`` reads back as
-``5.0``); ``next_id`` is written with sorted keys; the ``timeline`` object is kept as given (its key order
-too). Reading names the first bad field by its JSON path and says what was expected, e.g.
-``project.json: components[3].material.friction: expected a number >= 0, got "high"``; unknown keys are
-ignored with a warning. Encoding checks the project with the same rules, so whatever is written reads back.
-Both raise `SceneError`.
+``5.0``); ``next_id`` is written with sorted keys. ``vocabulary`` holds the lines of the user's vocabulary
+(`physink_tui.timeline.phrases.parse_vocabulary`), each checked as such; ``timeline`` is null or the object
+`physink_tui.formats.timeline_json.timeline_object` writes (its component labels are the scene's names, and
+reading takes the names from the scene), versioned by the project's version. Reading names the first bad
+field by its JSON path and says what was expected, e.g. ``project.json: components[3].material.friction:
+expected a number >= 0, got "high"``; unknown keys are ignored with a warning. Encoding checks the project
+with the same rules, so whatever is written reads back. Both raise `SceneError`.
 """
 
 from __future__ import annotations
@@ -32,39 +34,28 @@ from dataclasses import dataclass
 from typing import Any
 
 from physink_tui import __version__
-from physink_tui.errors import SceneError
-from physink_tui.formats.project.checks import (
-    _MISSING,
-    _Fields,
-    _json_value,
-    _object,
-    _text,
-    bad,
-    show,
+from physink_tui.errors import PhysinkError, SceneError
+from physink_tui.formats import json_checks as checks
+from physink_tui.formats.json_checks import MISSING, Place, show
+from physink_tui.formats.project.scene_fields import (
+    Fields,
+    decode_components,
+    decode_next_id,
+    plain,
+    plain_component,
+    sub_object,
 )
 from physink_tui.formats.strict_json import DuplicateKey, unique_pairs
-from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Material, Rope, Scene, Spring
+from physink_tui.formats.timeline_json import timeline_from_object, timeline_object
+from physink_tui.scene.components import Scene
+from physink_tui.timeline.events import Timeline, TimelineError
+from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary
 
 FORMAT = "physink-project"
 FORMAT_VERSION = 1
 """The version this program writes, and the newest it reads."""
 
 TOP_KEYS = ("format", "version", "program", "canvas", "components", "next_id", "vocabulary", "timeline")
-COMPONENT_KEYS = {
-    "body": ("id", "type", "shape", "outline", "radius", "position", "angle", "material", "label"),
-    "joint": ("id", "type", "kind", "a", "b", "anchor"),
-    "rope": ("id", "type", "points", "start_body", "end_body", "label"),
-    "spring": ("id", "type", "a", "b", "anchor_a", "anchor_b", "axis", "rest_length", "k", "label"),
-}
-"""Each component type's keys, in the order written."""
-MATERIAL_KEYS = ("density", "restitution", "friction")
-SHAPES = ("box", "circle", "ellipse", "polygon", "polyline")
-MIN_POINTS = {"box": 3, "ellipse": 3, "polygon": 3, "polyline": 2}
-"""The fewest outline points each non-circle shape may have."""
-JOINT_KINDS = ("pivot", "weld")
-AXES = ("horizontal", "vertical")
-"""Offending values are shown with at most this many characters."""
-
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,15 +64,37 @@ class Project:
 
     Attributes:
         scene: the sketch's components, in scene order, and its id counters.
-        vocabulary: the user's own words for labels and verbs, in the order given; may be empty.
-        timeline: the demonstrated timeline as a JSON object, or None; opaque here, kept exactly as given.
+        vocabulary: the user's vocabulary, one line of a vocabulary file each (``"verb plummets topples"``,
+            ``"prep amid"``), in the order given; may be empty. `vocabulary_lines` and `project_vocabulary`
+            convert from and to the session's `Vocabulary` extension.
+        timeline: the demonstrated timeline, or None. Its numbers are written rounded to 6 decimals, so a
+            timeline read back equals the one written once they are (as every timeline read from a file is).
         canvas: (width, height) of the canvas in canvas units, both > 0.
     """
 
     scene: Scene
     vocabulary: tuple[str, ...]
-    timeline: dict[str, Any] | None
+    timeline: Timeline | None
     canvas: tuple[float, float]
+
+
+def vocabulary_lines(vocabulary: Vocabulary) -> tuple[str, ...]:
+    """The lines a project keeps for a vocabulary: its verbs, then its prepositions, each sorted; none if empty.
+
+    >>> vocabulary_lines(Vocabulary(frozenset({"topples", "plummets"}), frozenset({"amid"})))
+    ('verb plummets topples', 'prep amid')
+    """
+    lines = []
+    if vocabulary.verbs:
+        lines.append("verb " + " ".join(sorted(vocabulary.verbs)))
+    if vocabulary.prepositions:
+        lines.append("prep " + " ".join(sorted(vocabulary.prepositions)))
+    return tuple(lines)
+
+
+def project_vocabulary(project: Project) -> Vocabulary:
+    """The project's vocabulary lines as a `Vocabulary` (to extend `DEFAULT_VOCABULARY` with)."""
+    return parse_vocabulary("\n".join(project.vocabulary), "project vocabulary")
 
 
 
@@ -101,17 +114,18 @@ def encode_project(project: Project, *, where: str = "project") -> str:
         SceneError: ``<where>: <json path>: expected ..., got ...`` for the first bad field.
         TypeError: ``project`` is not a `Project`, its scene not a `Scene`, or a component of no known kind.
 
-    >>> text = encode_project(Project(Scene(), ("ball",), None, (800, 600)))
+    >>> text = encode_project(Project(Scene(), ("verb topples",), None, (800, 600)))
     >>> print(text.partition('"canvas"')[2].strip())
     : {"width": 800.0, "height": 600.0},
       "components": [],
       "next_id": {"b": 1, "j": 1, "r": 1, "s": 1},
-      "vocabulary": ["ball"],
+      "vocabulary": ["verb topples"],
       "timeline": null
     }
     """
-    checked = _project(_plain_project(project, where), where, None)
-    return _emit(_plain_project(checked, where))
+    at = Place(where, SceneError)
+    checked = _project(_plain_project(project, at), at, None)
+    return _emit(_plain_project(checked, at))
 
 
 def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -> Project:
@@ -143,57 +157,28 @@ def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -
         raise SceneError(f"{where}: not valid JSON ({e})") from None
     if not isinstance(value, dict):
         raise SceneError(f"{where}: expected a JSON object (a physink project), got {show(value)}")
-    return _project(value, where, warnings)
+    return _project(value, Place(where, SceneError), warnings)
 
 
 # --- writing -----------------------------------------------------------------------------------------------------
 
 
-def _plain(value: Any) -> Any:
-    """Tuples (points, outlines) as lists; everything else as it is, for the checks to judge."""
-    return [_plain(v) for v in value] if isinstance(value, tuple | list) else value
-
-
-def _plain_json(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {k: _plain_json(v) for k, v in value.items()}
-    return [_plain_json(v) for v in value] if isinstance(value, tuple | list) else value
-
-
-def _plain_component(c: Component) -> dict[str, Any]:
-    if isinstance(c, Body):
-        m = c.material
-        material = {"density": m.density, "restitution": m.restitution, "friction": m.friction} if isinstance(
-            m, Material) else m
-        return {"id": c.id, "type": "body", "shape": c.shape, "outline": _plain(c.outline), "radius": c.radius,
-                "position": _plain(c.position), "angle": c.angle, "material": material, "label": c.label}
-    if isinstance(c, Joint):
-        return {"id": c.id, "type": "joint", "kind": c.kind, "a": c.a, "b": c.b, "anchor": _plain(c.anchor)}
-    if isinstance(c, Rope):
-        return {"id": c.id, "type": "rope", "points": _plain(c.points), "start_body": c.start_body,
-                "end_body": c.end_body, "label": c.label}
-    if isinstance(c, Spring):
-        return {"id": c.id, "type": "spring", "a": c.a, "b": c.b, "anchor_a": _plain(c.anchor_a),
-                "anchor_b": _plain(c.anchor_b), "axis": c.axis, "rest_length": c.rest_length, "k": c.k,
-                "label": c.label}
-    raise TypeError(f"not a scene component: {c!r}")
-
-
-def _plain_project(project: Project, where: str) -> dict[str, Any]:
+def _plain_project(project: Project, where: Place) -> dict[str, Any]:
     if not isinstance(project, Project):
         raise TypeError(f"not a Project: {project!r}")
     if not isinstance(project.scene, Scene):
         raise TypeError(f"not a Scene: {project.scene!r}")
     components = []
     for i, (key, c) in enumerate(project.scene.components.items()):
-        plain = _plain_component(c)
-        if plain["id"] != key:
-            raise bad(where, f"components[{i}].id", f"{show(key)}, the key the scene keeps it under", plain["id"])
-        components.append(plain)
+        plain_c = plain_component(c)
+        if plain_c["id"] != key:
+            raise where.bad(f"components[{i}].id", f"{show(key)}, the key the scene keeps it under", plain_c["id"])
+        components.append(plain_c)
     canvas = project.canvas
     if not isinstance(canvas, tuple | list) or len(canvas) != 2:
-        raise bad(where, "canvas", "(width, height)", _plain(canvas))
+        raise where.bad("canvas", "(width, height)", plain(canvas))
     width, height = canvas
+    timeline = project.timeline
     return {
         "format": FORMAT,
         "version": FORMAT_VERSION,
@@ -201,8 +186,8 @@ def _plain_project(project: Project, where: str) -> dict[str, Any]:
         "canvas": {"width": width, "height": height},
         "components": components,
         "next_id": dict(project.scene.next_id) if isinstance(project.scene.next_id, dict) else project.scene.next_id,
-        "vocabulary": _plain(project.vocabulary),
-        "timeline": _plain_json(project.timeline),
+        "vocabulary": plain(project.vocabulary),
+        "timeline": None if timeline is None else timeline_object(timeline, project.scene.names()),
     }
 
 
@@ -230,138 +215,60 @@ def _emit(obj: dict[str, Any]) -> str:
 # --- checking ----------------------------------------------------------------------------------------------------
 
 
-def _project(obj: dict[str, Any], where: str, warnings: list[str] | None) -> Project:
+def decode_project_object(obj: Any, where: Place, warnings: list[str] | None = None) -> Project:
+    """The project in a parsed JSON object (a journal's ``load`` line embeds one), checked as a file is.
+
+    Raises ``where.error`` (`JournalError` for a journal line) naming the first bad field's JSON path.
+    """
+    if not isinstance(obj, dict):
+        raise where.fail(f"expected a JSON object (a physink project), got {show(obj)}")
+    return _project(obj, where, warnings)
+
+
+def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> Project:
     """The project in a parsed (or plain-built) JSON object, every field checked in the order written."""
-    top = _Fields(where, "", obj, {})
-    fmt = obj.get("format", _MISSING)
+    fmt = obj.get("format", MISSING)
     if fmt != FORMAT:
-        raise bad(where, "format", show(FORMAT), fmt)
-    version = top.get("version", f"an integer from 1 to {FORMAT_VERSION}")
+        raise where.bad("format", show(FORMAT), fmt)
+    version = checks.get(obj, where, "version", "version", f"an integer from 1 to {FORMAT_VERSION}")
     if isinstance(version, bool) or not isinstance(version, int) or version < 1:
-        raise bad(where, "version", f"an integer from 1 to {FORMAT_VERSION}", version)
+        raise where.bad("version", f"an integer from 1 to {FORMAT_VERSION}", version)
     if version > FORMAT_VERSION:
-        raise SceneError(f"{where} was written by format version {version}; this program reads version "
-                         f"{FORMAT_VERSION} (upgrade physink-tui)")
-    _object(where, "", obj, TOP_KEYS, "an object", warnings)
+        raise where.error(f"{where} was written by format version {version}; this program reads version "
+                          f"{FORMAT_VERSION} (upgrade physink-tui)")
+    checks.known_keys(where, "", obj, TOP_KEYS, warnings)
+    top = Fields(where, "", obj, {})
     top.text("program", "a string naming the program that wrote it")
     expected = 'an object {"width": number > 0, "height": number > 0}'
-    canvas = _Fields(where, "canvas", _object(where, "canvas", top.get("canvas", expected), ("width", "height"),
-                                              expected, warnings), {})
+    canvas = Fields(where, "canvas", sub_object(where, "canvas", top.get("canvas", expected), ("width", "height"),
+                                                expected, warnings), {})
     width = canvas.number("width", "a number > 0", above=0.0)
     height = canvas.number("height", "a number > 0", above=0.0)
-    components = _components(top, warnings)
-    next_id = _next_id(top, components)
-    vocabulary = top.get("vocabulary", "a list of words (strings)")
-    if not isinstance(vocabulary, list):
-        raise bad(where, "vocabulary", "a list of words (strings)", vocabulary)
-    words = tuple(_text(where, f"vocabulary[{i}]", w) for i, w in enumerate(vocabulary))
-    timeline = top.get("timeline", "null or an object")
-    if timeline is not None and not isinstance(timeline, dict):
-        raise bad(where, "timeline", "null or an object", timeline)
-    _json_value(where, "timeline", timeline)
+    components = decode_components(where, top.get("components", "a list of components"), warnings)
+    next_id = decode_next_id(where, top.get("next_id", 'an object of id counters, e.g. {"b": 3, "j": 1}'),
+                             components)
+    vocabulary = checks.a_list(where, "vocabulary", top.get("vocabulary", "a list of vocabulary lines (strings)"),
+                               "a list of vocabulary lines (strings)")
+    words = tuple(_vocabulary_line(where, f"vocabulary[{i}]", w) for i, w in enumerate(vocabulary))
+    raw = checks.optional(checks.an_object, where, "timeline", top.get("timeline", "null or an object"),
+                          "null or an object")
+    timeline = None
+    if raw is not None:
+        try:
+            timeline, _ = timeline_from_object(raw, where, "timeline")
+        except TimelineError as e:  # an event's own rules, or a cycle: not tied to one key
+            raise where.fail(f"timeline: {e}") from None
     return Project(Scene({c.id: c for c in components}, next_id), words, timeline, (width, height))
 
 
-def _components(top: _Fields, warnings: list[str] | None) -> list[Component]:
-    where = top.where
-    raw = top.get("components", "a list of components")
-    if not isinstance(raw, list):
-        raise bad(where, "components", "a list of components", raw)
-    kinds: dict[str, str] = {}  # id -> type where first named, so that a rope end may name a later body
-    for item in raw:
-        if isinstance(item, dict) and isinstance(item.get("id"), str) and isinstance(item.get("type"), str):
-            kinds.setdefault(item["id"], item["type"])
-    seen: dict[str, int] = {}
-    out: list[Component] = []
-    for i, item in enumerate(raw):
-        path = f"components[{i}]"
-        if not isinstance(item, dict):
-            raise bad(where, path, "an object (a component)", item)
-        f = _Fields(where, path, item, kinds)
-        cid = f.text("id")
-        if cid == BACKGROUND:
-            raise bad(where, f.key("id"), f"an id other than {show(BACKGROUND)} (it names the background)", cid)
-        if cid in seen:
-            raise bad(where, f.key("id"), "an id no other component has", cid,
-                      f" (already the id of components[{seen[cid]}])")
-        seen[cid] = i
-        kind = f.one_of("type", tuple(COMPONENT_KEYS))
-        _object(where, path, item, COMPONENT_KEYS[kind], "an object", warnings)
-        out.append(_READERS[kind](f, cid, warnings))
-    return out
-
-
-def _body(f: _Fields, cid: str, warnings: list[str] | None) -> Body:
-    shape = f.one_of("shape", SHAPES)
-    if shape == "circle":
-        outline = f.get("outline", "[] (a circle is given by its radius)")
-        if outline != []:
-            raise bad(f.where, f.key("outline"), "[] (a circle is given by its radius)", outline)
-        points: tuple[tuple[float, float], ...] = ()
-        radius = f.number("radius", "a number > 0", above=0.0)
-    else:
-        points = f.points("outline", MIN_POINTS[shape])
-        radius = f.number("radius", "0 (only a circle has a radius)", low=0.0, high=0.0)
-    position = f.point("position")
-    angle = f.number("angle", "a finite number (radians)")
-    expected = 'an object {"density", "restitution", "friction"}'
-    m = _Fields(f.where, f.key("material"),
-                _object(f.where, f.key("material"), f.get("material", expected), MATERIAL_KEYS, expected, warnings),
-                {})
-    material = Material(
-        m.number("density", "a number > 0", above=0.0),
-        m.number("restitution", "a number in [0, 1]", low=0.0, high=1.0),
-        m.number("friction", "a number >= 0", low=0.0),
-    )
-    return Body(cid, shape, points, radius, position, angle, material, f.label())
-
-
-def _joint(f: _Fields, cid: str, warnings: list[str] | None) -> Joint:
-    kind = f.one_of("kind", JOINT_KINDS)
-    a = f.body("a", background=False)
-    return Joint(cid, kind, a, f.body("b", other=a), f.point("anchor"))
-
-
-def _rope(f: _Fields, cid: str, warnings: list[str] | None) -> Rope:
-    points = f.points("points", 2)
-    return Rope(cid, points, f.end("start_body"), f.end("end_body"), f.label())
-
-
-def _spring(f: _Fields, cid: str, warnings: list[str] | None) -> Spring:
-    a = f.body("a")
-    b = f.body("b", other=a)
-    anchor_a, anchor_b = f.point("anchor_a"), f.point("anchor_b")
-    axis = f.one_of("axis", AXES)
-    rest = f.number("rest_length", "a number >= 0", low=0.0)
-    return Spring(cid, a, b, anchor_a, anchor_b, axis, rest, f.number("k", "a number > 0", above=0.0), f.label())
-
-
-_READERS = {"body": _body, "joint": _joint, "rope": _rope, "spring": _spring}
-
-
-def _next_id(top: _Fields, components: list[Component]) -> dict[str, int]:
-    """The id counters: integers >= 1, each above every id already made from its prefix (ids are never reused)."""
-    where = top.where
-    expected = 'an object of id counters, e.g. {"b": 3, "j": 1}'
-    raw = top.get("next_id", expected)
-    if not isinstance(raw, dict):
-        raise bad(where, "next_id", expected, raw)
-    counters: dict[str, int] = {}
-    for prefix, n in raw.items():
-        _text(where, "next_id", prefix, "an object whose keys are id prefixes (non-empty strings)")
-        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-            raise bad(where, f"next_id.{prefix}", "an integer >= 1", n)
-        counters[prefix] = n
-    for prefix in sorted({*counters, "b", "j", "r", "s"}):
-        used = []
-        for i, c in enumerate(components):
-            digits = c.id[len(prefix):] if c.id.startswith(prefix) else ""
-            if digits.isascii() and digits.isdecimal() and digits[0] != "0":
-                used.append((int(digits), i))
-        if used:
-            highest, index = max(used)
-            if counters.get(prefix, 1) <= highest:
-                note = f" (components[{index}] has the id {show(components[index].id)})"
-                raise bad(where, f"next_id.{prefix}", f"an integer > {highest}, so that no id is made twice",
-                          counters.get(prefix, _MISSING), note)
-    return counters
+def _vocabulary_line(where: Place, key: str, value: Any) -> str:
+    """One line of a vocabulary file, with at least one word and no line break."""
+    expected = "a vocabulary line, 'verb WORD...' or 'prep WORD...'"
+    line = checks.text(where, key, value, expected, empty=False)
+    try:
+        vocabulary = parse_vocabulary(line)
+    except PhysinkError:
+        raise where.bad(key, expected, value) from None
+    if "\n" in line or "\r" in line or not (vocabulary.verbs or vocabulary.prepositions):
+        raise where.bad(key, expected, value)
+    return line
