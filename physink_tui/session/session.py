@@ -15,7 +15,6 @@ from __future__ import annotations
 import traceback
 from collections.abc import Iterable
 from dataclasses import replace
-from types import MappingProxyType
 
 from physink_tui.errors import JournalError, PhysinkError, SceneError
 from physink_tui.formats.journal.entries import (
@@ -41,7 +40,7 @@ from physink_tui.session.history import Document, History
 from physink_tui.session.modes.base import Mode
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import SketchMode
-from physink_tui.session.view import Message, SessionView
+from physink_tui.session.view import Message, SessionView, snapshot
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.phrases import DEFAULT_VOCABULARY, Vocabulary, parse_vocabulary
 
@@ -139,29 +138,8 @@ class Session:
 
     def view(self) -> SessionView:
         """An immutable snapshot of everything a view shows."""
-        mode = self.current
-        width, height = self.canvas
-        ink = tuple(tuple((p.x * width, p.y * height) for p in stroke) for stroke in self.pen.ink())
-        pending = self.sketch.pending
-        timeline = mode.timeline()
-        demo = mode if isinstance(mode, DemoMode) else None
-        return SessionView(
-            revision=self.revision,
-            t=self.t,
-            mode=mode.name,
-            scene=self.scene,
-            poses=MappingProxyType(dict(mode.poses())),
-            ink=ink,
-            pending=(pending.points,) if pending is not None else (),
-            selected=self.selected,
-            can_undo=self.history.can_undo or (demo is not None and demo.has_take),
-            can_redo=self.history.can_redo,
-            timeline=timeline,
-            clock=demo.clock if demo else 0.0,
-            duration=max((ev.t1 for ev in timeline.events), default=0.0) if timeline else 0.0,
-            playing=demo.playing if demo else False,
-            messages=tuple(self.messages),
-        )
+        return snapshot(self.revision, self.t, self.current, self.scene, self.canvas, self.pen.ink(),
+                        self.sketch.pending, self.selected, self.history, self.messages)
 
     # -- input ---------------------------------------------------------------------------------------------
 

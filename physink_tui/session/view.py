@@ -1,13 +1,19 @@
-"""What a view is given: `SessionView`, an immutable snapshot of a session (built by `Session.view`), and
-`Message`; no drawing."""
+"""What a view is given: `SessionView`, an immutable snapshot of a session (`snapshot`, for `Session.view`),
+and `Message`; no drawing."""
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from types import MappingProxyType
 
+from physink_tui.input.pen.gestures import StrokePoint
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
+from physink_tui.session.history import History
+from physink_tui.session.modes.base import Mode
+from physink_tui.session.modes.demo import DemoMode
+from physink_tui.session.modes.sketch import PendingStroke
 from physink_tui.timeline.events import Timeline
 
 Stroke = tuple[tuple[float, float], ...]
@@ -68,3 +74,29 @@ class SessionView:
     playing: bool
     messages: tuple[Message, ...]
     search: SearchProgress | None = None
+
+
+def snapshot(revision: int, t: float, mode: Mode, scene: Scene, canvas: tuple[float, float],
+             ink: Sequence[Sequence[StrokePoint]], pending: PendingStroke | None, selected: str | None,
+             history: History, messages: Sequence[Message]) -> SessionView:
+    """The view of a session in ``mode`` (``ink``: the strokes being drawn, in canvas fractions)."""
+    width, height = canvas
+    timeline = mode.timeline()
+    demo = mode if isinstance(mode, DemoMode) else None
+    return SessionView(
+        revision=revision,
+        t=t,
+        mode=mode.name,
+        scene=scene,
+        poses=MappingProxyType(dict(mode.poses())),
+        ink=tuple(tuple((p.x * width, p.y * height) for p in stroke) for stroke in ink),
+        pending=(pending.points,) if pending is not None else (),
+        selected=selected,
+        can_undo=history.can_undo or (demo is not None and demo.has_take),
+        can_redo=history.can_redo,
+        timeline=timeline,
+        clock=demo.clock if demo else 0.0,
+        duration=max((ev.t1 for ev in timeline.events), default=0.0) if timeline else 0.0,
+        playing=demo.playing if demo else False,
+        messages=tuple(messages),
+    )
