@@ -10,6 +10,7 @@ import pytest
 from session_outputs import outputs
 from test_session import box_points, circle_points, pen_header, pen_stroke
 
+from physink_tui.cli import main
 from physink_tui.formats.journal.entries import CommandEntry, PenEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.journal.writer import JournalWriter
@@ -157,3 +158,23 @@ def test_an_entry_the_journal_cannot_hold_is_refused_before_it_acts(tmp_path) ->
     session.finish()
     names = [getattr(e, "name", None) for e in read_journal(tmp_path / "s.physink.jsonl").entries]
     assert names == ["mode", "mode", "end"]
+
+
+def test_physink_replay_with_ticks_writes_the_same_files_and_lists_the_dwell(tmp_path, capsys) -> None:
+    entries = platform_and_ball() + [hover(2.0, 0.7, 0.3)]
+    entries += [PenEntry(2.0 + 0.01 * k, 0.7, 0.3, 0.5, True, True, False, False, False) for k in range(1, 51)]
+    entries += drag(2.6, (0.7, 0.3), (0.6, 0.4))[1:]
+    entries += [CommandEntry(4.0, "mode", ("demo",)), *drag(4.5, (0.6, 0.4), (0.8, 0.4), n=5)]
+    live(entries, tmp_path / "s.physink.jsonl")
+    folders = {}
+    for ticks in (None, "30", "120"):
+        folders[ticks] = tmp_path / f"out-{ticks}"
+        extra = ["--ticks", ticks] if ticks else []
+        assert main(["replay", str(tmp_path / "s.physink.jsonl"), "--out", str(folders[ticks]), *extra]) == 0
+    names = sorted(p.name for p in folders[None].iterdir())
+    assert names == ["gestures.jsonl", "project.json", "timeline.json", "timeline.txt"]
+    for ticks in ("30", "120"):
+        for name in names:
+            assert (folders[ticks] / name).read_bytes() == (folders[None] / name).read_bytes(), (ticks, name)
+    assert '"gesture":"dwell"' in (folders[None] / "gestures.jsonl").read_text()
+    assert main(["replay", str(tmp_path / "s.physink.jsonl"), "--out", str(tmp_path / "x"), "--ticks", "0"]) == 2

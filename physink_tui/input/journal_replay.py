@@ -51,6 +51,11 @@ class LoggedPenInput(PenInput):
         self.log += gestures
         return gestures
 
+    def tick(self, t: float) -> list[Gesture]:
+        gestures = super().tick(t)
+        self.log += gestures
+        return gestures
+
 
 def pen_input_for(header: JournalHeader, where: str = "journal", logged: bool = False) -> PenInput:
     """The input side a journal header describes: its devices' decoders, its mapping and tip thresholds, and
