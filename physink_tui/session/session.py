@@ -17,6 +17,7 @@ from collections.abc import Iterable
 from dataclasses import replace
 
 from physink_tui.errors import JournalError, PhysinkError, SceneError
+from physink_tui.formats.journal.codec import encode_entry
 from physink_tui.formats.journal.entries import (
     CommandEntry,
     DeviceEntry,
@@ -148,12 +149,10 @@ class Session:
         then it is journaled. An entry the journal cannot hold (a value out of range, time going backwards) is
         refused before it is acted on, so a replay of the journal sees what the session saw. Nothing an input can
         do raises out of here."""
-        if self.journal is not None:
-            try:
-                self.journal.check(entry)
-            except JournalError as exc:
-                self.tell(f"input refused: {exc}")
-                return
+        refusal = self._refusal(entry)
+        if refusal is not None:
+            self.tell(f"input refused: {refusal}")
+            return
         try:
             self.advance(entry.t)
             self._act(entry)
@@ -367,6 +366,19 @@ class Session:
             self.selected = None
         if self.sketch.last_created not in components:
             self.sketch.last_created = None
+
+    def _refusal(self, entry: JournalEntry) -> str | None:
+        """Why ``entry`` cannot be taken (what a journal could not hold, or time going backwards), or None."""
+        if entry.t < self.t:
+            return f"input at {entry.t:g} s after the session reached {self.t:g} s (inputs come in time order)"
+        try:
+            if self.journal is not None:
+                self.journal.check(entry)
+            else:
+                encode_entry(entry, devices=self.pen.devices)
+        except (JournalError, TypeError) as exc:
+            return str(exc)
+        return None
 
     def _journal(self, entry: JournalEntry) -> None:
         if self.journal is None:
