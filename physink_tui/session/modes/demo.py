@@ -59,7 +59,9 @@ class DemoMode:
 
     @property
     def duration(self) -> float:
-        return max((ev.t1 for ev in self.recorder.timeline.events), default=0.0)
+        """The timeline's length, movements being recorded included (always from an up-to-date snapshot, so it
+        never depends on whether a view looked in between)."""
+        return max((ev.t1 for ev in self.recorder.snapshot().events), default=0.0)
 
     def gesture(self, g: Gesture) -> Mode | None:
         world = self.world
@@ -183,7 +185,7 @@ class DemoMode:
         recorder = self.recorder
         group = recorder.group_bodies(body_id)
         later = any(ev.t1 > self.clock + 1e-9 and set(group) & set(ev.components)
-                    for ev in recorder.timeline.events if ev.type != "start")
+                    for ev in recorder.snapshot().events if ev.type != "start")
         if later:
             recorder.redemonstrate(body_id, self.clock)
             if self.clock < self.duration:
