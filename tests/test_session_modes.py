@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+from pathlib import Path
 
 import pytest
 from session_outputs import outputs
@@ -178,3 +179,20 @@ def test_physink_replay_with_ticks_writes_the_same_files_and_lists_the_dwell(tmp
             assert (folders[ticks] / name).read_bytes() == (folders[None] / name).read_bytes(), (ticks, name)
     assert '"gesture":"dwell"' in (folders[None] / "gestures.jsonl").read_text()
     assert main(["replay", str(tmp_path / "s.physink.jsonl"), "--out", str(tmp_path / "x"), "--ticks", "0"]) == 2
+
+
+def test_views_taken_during_a_demonstration_change_nothing_it_records() -> None:
+    """A live driver looks at the session 30 times a second, a replay never: the egg cracker's timeline is the
+    same either way, and grabbing the egg while it still moves continues its movement (no re-demonstration)."""
+    journal = read_journal(Path(__file__).parent / "journals" / "egg_cracker.physink.jsonl")
+    watched = Session.from_header(journal.header)
+    next_view = 0.0
+    for entry in journal.entries:
+        watched.handle(entry)
+        if entry.t >= next_view:
+            watched.view()
+            next_view = entry.t + 1 / 30
+    watched.finish()
+    alone = replay(Session.from_header(journal.header), journal.entries)
+    assert outputs(watched) == outputs(alone)
+    assert not [m for m in watched.messages if "re-demonstrating" in m.text]

@@ -25,6 +25,8 @@ from physink_tui.timeline.phrases import PhraseError, Vocabulary, label_event, p
 from physink_tui.timeline.recorder import Observation
 from physink_tui.timeline.tape import Tape
 
+TIME_EPSILON = 1e-6
+"""Timeline times are kept to the microsecond: a recorded time within this of the clock is now, not later."""
 STEP_EPSILON = 1e-9
 """Slack (in steps) when counting the steps up to an input time, so float rounding never loses a step."""
 
@@ -124,7 +126,7 @@ class DemoMode:
     def seek(self, t: float, now: float) -> None:
         """The world shows the recorded state at timeline time ``t``; playback pauses."""
         duration = self.duration
-        if not 0 <= t <= duration + 1e-9:
+        if not 0 <= t <= duration + TIME_EPSILON:
             self.host.tell(f"seek {t:g}: the timeline runs from 0 to {duration:.2f} s; stayed at {self.clock:.2f} s",
                            now)
             return
@@ -143,7 +145,7 @@ class DemoMode:
         if self.duration <= 0:
             self.host.tell("play: nothing has been demonstrated yet", now)
             return
-        self.seek(0.0 if self.clock >= self.duration - 1e-9 else self.clock, now)
+        self.seek(0.0 if self.clock >= self.duration - TIME_EPSILON else self.clock, now)
         self.playing = True
 
     def pause(self, now: float) -> None:
@@ -184,7 +186,7 @@ class DemoMode:
         """The pen takes ``body_id`` at timeline time `clock`: what it did from then on is demonstrated again."""
         recorder = self.recorder
         group = recorder.group_bodies(body_id)
-        later = any(ev.t1 > self.clock + 1e-9 and set(group) & set(ev.components)
+        later = any(ev.t1 > self.clock + TIME_EPSILON and set(group) & set(ev.components)
                     for ev in recorder.snapshot().events if ev.type != "start")
         if later:
             recorder.redemonstrate(body_id, self.clock)
