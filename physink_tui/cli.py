@@ -100,7 +100,8 @@ def build_parser() -> argparse.ArgumentParser:
         "demo",
         help="the embedded default: the TUI replaying a bundled session (the egg cracker)",
         description="Open the TUI on a bundled session being replayed; with --headless (automatic when "
-        "stdout is not a terminal) run the whole pipeline and write the outputs to --out.",
+        "stdout is not a terminal) run the whole pipeline and write the outputs to --out. Until the TUI is "
+        "built (a later issue) every run is headless.",
     )
     p.add_argument("--headless", action="store_true", help="no UI: run the pipeline and write the outputs")
     p.add_argument(

@@ -194,6 +194,11 @@ def test_replay_names_a_project_as_a_project(replayed: Path, tmp_path, capsys) -
     one_line_error(capsys.readouterr().err, "this is a project (.physink.json); replay takes a journal")
 
 
+def test_replay_names_a_timeline_as_a_timeline(replayed: Path, tmp_path, capsys) -> None:
+    assert main(["replay", str(replayed / "timeline.json"), "--out", str(tmp_path / "out")]) == 1
+    one_line_error(capsys.readouterr().err, "this is a timeline (timeline.json); replay takes a journal")
+
+
 def test_replay_names_an_empty_file(tmp_path, capsys) -> None:
     (tmp_path / "e.physink.jsonl").write_bytes(b"")
     assert main(["replay", str(tmp_path / "e.physink.jsonl"), "--out", str(tmp_path / "out")]) == 1

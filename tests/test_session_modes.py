@@ -162,7 +162,7 @@ def test_an_entry_the_journal_cannot_hold_is_refused_before_it_acts(tmp_path) ->
 
 
 def test_physink_replay_with_ticks_writes_the_same_files_and_lists_the_dwell(tmp_path, capsys) -> None:
-    entries = platform_and_ball() + [hover(2.0, 0.7, 0.3)]
+    entries = [*platform_and_ball(), hover(2.0, 0.7, 0.3)]
     entries += [PenEntry(2.0 + 0.01 * k, 0.7, 0.3, 0.5, True, True, False, False, False) for k in range(1, 51)]
     entries += drag(2.6, (0.7, 0.3), (0.6, 0.4))[1:]
     entries += [CommandEntry(4.0, "mode", ("demo",)), *drag(4.5, (0.6, 0.4), (0.8, 0.4), n=5)]

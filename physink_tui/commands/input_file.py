@@ -13,6 +13,7 @@ from pathlib import Path
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.outputs import reason
+from physink_tui.formats.timeline_json import FORMAT as TIMELINE_FORMAT
 
 BOM = b"\xef\xbb\xbf"
 PROJECT_FORMAT = "physink-project"  # the project codec's FORMAT, kept here so sniffing imports no codec
@@ -54,7 +55,9 @@ def sniff(data: bytes, path: str | os.PathLike[str], command: str = "replay") ->
         head = _first_json(body.replace(b"\n", b" "))
     if isinstance(head, dict) and head.get("format") == PROJECT_FORMAT:
         raise PhysinkError(f"{name}: this is a project (.physink.json); {takes}")
-    if isinstance(head, dict) and "events" in head and "format" not in head:
+    timeline = isinstance(head, dict) and (head.get("format") == TIMELINE_FORMAT
+                                           or ("events" in head and "format" not in head))  # versions 1 and 0
+    if timeline:
         raise PhysinkError(f"{name}: this is a timeline (timeline.json); {takes}")
     return "journal"
 

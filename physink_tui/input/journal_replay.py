@@ -1,8 +1,8 @@
 """Runs a journal's inputs through the input side: its HID and pen lines to gestures; no scene.
 
 The header gives each device's descriptor (``device`` lines those plugged in later), the tablet-to-canvas
-mapping and the tip thresholds, so the replay decodes exactly as the session did. Commands and utterances
-are listed with their times for the caller (the session that will act on them comes with a later issue).
+mapping and the tip thresholds, so the replay decodes exactly as the session did; `entry_line` lists commands
+and utterances with their times. Acting on the entries is the session's job.
 """
 
 from __future__ import annotations

@@ -1,9 +1,10 @@
 """What every input source hands on: timestamped raw reports, pen samples and its own end; no reading.
 
 Readers (hidraw, hidapi, pyusb, serial, capture replay, the TUI's mouse, scripts) run on their own
-thread and put these frozen items on a `queue.Queue`; exactly one consumer (the gesture engine, later
-the session) takes them off in order. A reader never raises into its consumer: it ends with a
-`SourceEnded` whose ``error`` says why (None for a clean stop or the end of a file).
+thread and put these frozen items on a `queue.Queue`; exactly one consumer takes them off in order (a
+`session.source_pump.SourcePump`, which stamps them as journal entries for the session's runner, or a
+`PenInput`). A reader never raises into its consumer: it ends with a `SourceEnded` whose ``error`` says why
+(None for a clean stop or the end of a file).
 """
 
 from __future__ import annotations

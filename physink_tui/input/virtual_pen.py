@@ -8,7 +8,7 @@ finds in the device's descriptor. Report times follow the nominal rate with Gaus
 backwards; the position carries a little Gaussian sensor noise. Everything random comes from one
 `random.Random(seed)`, so the same inputs give a byte-identical capture. `VirtualPen.samples` returns the
 intended (noise-free) states with their report times, for tests to compare decoded samples against.
-Writing the capture to a file is `capture.write_capture`'s job.
+Writing the capture to a file is `captures.writer.write_capture`'s job.
 
 >>> pen = VirtualPen(REFERENCE_DEVICES["windows-ink"])
 >>> capture = pen.record([Stroke.line((0.2, 0.5), (0.8, 0.5))])

@@ -8,7 +8,8 @@ own threads. Each entry is stamped with the runner's clock when it arrives (seco
 and never restamped. The worker is the session's only caller: it hands the queued entries to
 ``session.handle`` in arrival order, moves time on with ``session.advance(now)`` at a fixed rate, never past an
 entry it has not handled (see `inbox`), and publishes ``session.view()`` to subscribers at most `MAX_FPS` times a
-second. The session journals every entry it handled (refused ones included); `SessionRunner.stop` ends the
+second. The session journals every entry it handled (commands it refused included; an entry a journal cannot hold
+is refused before it acts and is not journaled); `SessionRunner.stop` ends the
 session with ``session.finish(now)``, which journals the end, so a replay runs the physics exactly as long.
 
 A replay needs none of this: it calls ``handle`` for each journal entry and ``finish`` at the end's time.

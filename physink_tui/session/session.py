@@ -7,7 +7,8 @@ snapshot for views, `finish(t)` ends it. Time is always the input's: the session
 (decoder, mapping, gesture engine) to the current mode (`modes`: sketch, adjust, demo), which owns its world;
 the document (scene and timeline) changes only through the history, so undo, redo and clear mean the same in every
 mode. Nothing an input can do raises out of `handle`: what cannot be done is told. With a journal attached, every
-entry is journaled once handled, refused ones included, and the end of the session too.
+entry is journaled once handled (a command that makes no sense in the mode included: a replay tells the same),
+and the end of the session too; an entry the journal cannot hold is refused before it acts, and not journaled.
 """
 
 from __future__ import annotations
@@ -153,6 +154,7 @@ class Session:
         if refusal is not None:
             self.tell(f"input refused: {refusal}")
             return
+        errors = len(self.errors)
         try:
             self.advance(entry.t)
             self._act(entry)
@@ -163,7 +165,7 @@ class Session:
             self.tell(f"internal error handling the input at {entry.t:g} s: {exc!r} (reported; carrying on)")
         self.revision += 1
         self._journal(entry)
-        if self.errors and self.raise_internal_errors:
+        if len(self.errors) > errors and self.raise_internal_errors:
             raise AssertionError(f"internal error in the session:\n{self.errors[-1]}")
 
     def advance(self, t: float) -> None:

@@ -206,7 +206,7 @@ def decode_batch(
         lines: where each report came from (capture line numbers), for the summary.
         learned: per report id, what the whole capture taught (``"pressure"``, ``"x"``, ``"y"``: ranges;
             ``"in_value"``: the in-range polarity), used instead of learning from these reports alone: a capture
-            decoded a chunk at a time then gives the samples the whole capture at once would (`hid_chunks`).
+            decoded a chunk at a time then gives the samples the whole capture at once would (`chunks`).
         seen: filled per report id with the ranges used and ``"in_counts"`` (polarity counts) of these reports.
         stats: where the counts go instead of ``decoder.stats``.
         t_before: the time of the report before these, to count time going backwards across chunks.

@@ -3,7 +3,7 @@
 Builds the layouts of one device (descriptor plus vendor knowledge), compiles each, and routes
 every report by its id. It never raises on a report: truncated, unknown or non-pen reports are
 counted by reason, and the first one is remembered for the summary. Batch decoding of whole
-captures lives in `hid_batch`; reading devices lives elsewhere.
+captures lives in `batch`; reading devices lives elsewhere.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Builds HID report descriptor bytes from readable item calls; parsing them is `hid_descriptor`'s job.
+"""Builds HID report descriptor bytes from readable item calls; parsing them is `descriptor`'s job.
 
 Each function returns the bytes of one short item (HID 1.11 section 6.2.2.2) in its shortest correct encoding:
 one, two or four data bytes. Values the specification reads as signed (logical and physical extents) are

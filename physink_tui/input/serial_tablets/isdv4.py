@@ -13,7 +13,7 @@ which is what lets a reader find packet boundaries again after noise. The first 
 X and Y are 16 bits split over three bytes (7 + 7 + 2), pressure 10 bits (7 + 3), tilt 7 bits each, in the
 same places in pen packets and in the query reply; this follows the Linux kernel's
 ``drivers/input/touchscreen/wacom_w8001.c`` and xf86-input-wacom's ``isdv4.h`` / ``src/wcmISDV4.c``.
-Opening the port, the handshake and the reading thread live in `serial_reader`.
+Opening the port, the handshake and the reading thread live in `serial_tablets.reader`.
 
 >>> parser = Isdv4Parser(Isdv4Query(x_max=20000, y_max=15000, p_max=255))
 >>> [s] = parser.feed(encode_pen_packet(10000, 3000, 51, tip=True), t=1.5)

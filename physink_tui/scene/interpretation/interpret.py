@@ -60,7 +60,7 @@ class Interpretation:
 
 Near = Callable[[tuple[float, float, float, float]], Sequence[str]]
 """A spatial index of a scene's bodies: ids of the bodies whose bounds may meet ``(x0, y0, x1, y1)``, topmost first
-(more may come back, never fewer). `world_live.LiveWorld.bodies_in` is one; without one every body is tried."""
+(more may come back, never fewer). `physics.live.LiveWorld.bodies_in` is one; without one every body is tried."""
 
 
 def _candidates(scene: Scene, bounds: tuple[float, float, float, float], near: Near | None) -> list[Body]:

@@ -1,6 +1,6 @@
 """Builds the pymunk objects mirroring a `Scene` (bodies, joints, springs, ropes); stepping and queries are world.py's.
 
-Everything here runs when `world.World.from_scene` builds a world, or `world_live` adds to one: it turns each
+Everything here runs when `world.World.from_scene` builds a world, or `live.LiveWorld` adds to one: it turns each
 component into pymunk bodies, shapes and constraints and records which component owns what. Bodies and shapes are
 added to the space here; constraints are not: `World` adds only those with at least one dynamic end (a constraint
 between two static bodies makes Chipmunk divide by a zero mass and fills the space with NaNs), and re-decides when

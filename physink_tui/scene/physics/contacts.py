@@ -3,7 +3,7 @@
 The world's pymunk space calls a `ContactListener` for every contact: ``begin`` appends a frozen
 `ContactRecord` (one per pair of components per step) and counts the pair as touching until ``separate``;
 ``pre_solve`` turns the product of the two shapes' surface
-codes (see world_build.py) back into the pair's restitution (the larger) and friction (the mean), bouncing only
+codes (see build.py) back into the pair's restitution (the larger) and friction (the mean), bouncing only
 on a fast first contact.
 """
 
@@ -93,7 +93,7 @@ class ContactListener:
             self._touching.pop(pair, None)
 
     def pre_solve(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
-        # Chipmunk multiplied the two shapes' surface codes (world_build.py): the product names the two materials.
+        # Chipmunk multiplied the two shapes' surface codes (build.py): the product names the two materials.
         restitution, friction = self._contact_values[arbiter.restitution]
         if restitution > 0.0 and not (arbiter.is_first_contact and _approach_speed(arbiter) > BOUNCE_THRESHOLD):
             restitution = 0.0

@@ -79,7 +79,7 @@ class LiveWorld(World):
         """Mirrors ``scene`` by changing only what differs from the scene mirrored so far.
 
         Raises:
-            SceneError: a new component the world cannot build (see `world_build.build`).
+            SceneError: a new component the world cannot build (see `build.build`).
         """
         old = self._scene
         if scene is old:

@@ -1,7 +1,7 @@
 """The physics world: one pymunk space mirroring a Scene, stepped on a fixed dt, queried and dragged by component id.
 
 `World` owns the space, the fixed time step and the two-way maps between component ids and pymunk objects (built by
-world_build.py). It answers which body lies under a point, where a body is and how fast it moves; it freezes bodies
+build.py). It answers which body lies under a point, where a body is and how fast it moves; it freezes bodies
 and drags one through a soft constraint for editing and demonstrating; it records where contacts begin and writes
 poses back into a Scene. Deciding what strokes become (interpret), what contacts mean (timeline) and when to step
 (session) is left to others.
@@ -61,7 +61,7 @@ class World:
     Contacts take the larger restitution and the mean friction of the two shapes (DESIGN.md; pymunk would multiply
     them), set on each arbiter before it is solved; restitution acts only when a contact begins faster than
     `BOUNCE_THRESHOLD`. The world owns the space's collision handler: shapes carry surface codes, not their
-    materials' values (see world_build.py), so no other handler may replace it.
+    materials' values (see build.py), so no other handler may replace it.
 
     >>> from physink_tui.scene.components import MATERIALS
     >>> ball = Body("b1", "circle", (), 20.0, (100.0, 100.0), 0.0, MATERIALS["round"])
@@ -72,7 +72,7 @@ class World:
     """
 
     def __init__(self, built: Built, *, dt: float) -> None:
-        """Use `from_scene`; this takes the output of `world_build.build`."""
+        """Use `from_scene`; this takes the output of `build.build`."""
         self._built = built
         self._space = built.space
         self._dt = dt
@@ -91,7 +91,7 @@ class World:
         """Builds the world for ``scene``.
 
         Raises:
-            SceneError: a component the world cannot build (see `world_build.build`), or a non-positive ``dt``.
+            SceneError: a component the world cannot build (see `build.build`), or a non-positive ``dt``.
         """
         if not dt > 0:
             raise SceneError(f"time step {dt!r} is not positive")
@@ -253,7 +253,7 @@ class World:
         self._space.reindex_shapes_for_body(body)
 
     def limit_speeds(self) -> None:
-        """No tunnelling: every body that can move (not the rope links) gets `world_speed.limit_speed`."""
+        """No tunnelling: every body that can move (not the rope links) gets `speed.limit_speed`."""
         for cid in self._by_z:
             if self._built.bodies[cid].body_type == pymunk.Body.DYNAMIC:
                 limit_speed(self._built.bodies[cid], self._dt)
