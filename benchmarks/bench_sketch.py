@@ -29,6 +29,7 @@ HEADER = JournalHeader(1600, 1000, (), {}, 0.05, 0.01)
 
 
 def stroke(t0: float, points: Points) -> list[PenEntry]:
+    points = [(min(max(x, 0.0), 1.0), min(max(y, 0.0), 1.0)) for x, y in points]  # a pen line stays on the canvas
     out = [PenEntry(t0, *points[0], 0.0, False, True, False, False, False)]
     out += [PenEntry(t0 + 0.005 * i, x, y, 0.6, True, True, False, False, False) for i, (x, y) in enumerate(points, 1)]
     out.append(PenEntry(t0 + 0.005 * (len(points) + 1), *points[-1], 0.0, False, True, False, False, False))
