@@ -279,3 +279,52 @@ def test_a_real_session_journals_every_entry_with_its_stamp_and_the_end(tmp_path
     journal = read_journal(tmp_path / "live.physink.jsonl")
     assert list(journal.entries[:-1]) == submitted
     assert journal.entries[-1] == CommandEntry(clock.now, "end")
+
+
+def test_a_live_session_on_the_real_clock_and_thread_replays_to_the_same_files(tmp_path) -> None:
+    """The runner as the TUI and kiosk will use it: its own thread, the monotonic clock, input from another
+    thread while time passes; the journal it leaves replays (with and without ticks) to the same files."""
+    import itertools
+    import threading
+    import time
+
+    from session_outputs import outputs
+
+    from physink_tui.session.replay_driver import replay
+    from physink_tui.session.session import Session
+
+    header = JournalHeader(1600.0, 1000.0, (), {}, 0.05, 0.01)
+    session = Session.from_header(header)
+    session.journal = JournalWriter.create(tmp_path / "live.physink.jsonl", header)
+    runner = SessionRunner(session)
+    views = []
+    runner.subscribe(views.append)
+    runner.start()
+
+    def hand() -> None:  # a box, demo mode, the box pushed and let go, a label
+        corners = [(0.3, 0.3), (0.5, 0.3), (0.5, 0.45), (0.3, 0.45), (0.3, 0.3)]
+        path = [(ax + (bx - ax) * k / 10, ay + (by - ay) * k / 10)
+                for (ax, ay), (bx, by) in itertools.pairwise(corners) for k in range(10)]
+        for points in ([*path, corners[0]], [(0.4, 0.37 + 0.01 * k) for k in range(20)]):
+            runner.submit(PenEntry(0.0, *points[0], 0.0, False, True, False, False, False))
+            for x, y in points:
+                runner.submit(PenEntry(0.0, x, y, 0.6, True, True, False, False, False))
+                time.sleep(0.004)
+            runner.submit(PenEntry(0.0, *points[-1], 0.0, False, True, False, False, False))
+            if runner.command("mode", "demo") is None:
+                return
+            time.sleep(0.05)
+        runner.say("label block")
+
+    worker = threading.Thread(target=hand)
+    worker.start()
+    worker.join(timeout=20)
+    time.sleep(0.3)  # the pushed box slides on while nothing is input
+    runner.stop()
+    assert not session.errors and views and views[-1].mode == "sketch"
+    journal = read_journal(tmp_path / "live.physink.jsonl")
+    assert journal.entries[-1].name == "end"
+    expected = outputs(session)
+    assert "timeline.json" in expected and session.scene.labels()
+    for ticks in (None, 30, 120):
+        assert outputs(replay(Session.from_header(journal.header), journal.entries, ticks)) == expected
