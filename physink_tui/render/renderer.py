@@ -63,6 +63,19 @@ def _paint(color: int, width: float | None = None) -> skia.Paint:
     return paint
 
 
+class _Plan:
+    """A scene's components sorted by how they are drawn, kept while the scene is the same object."""
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+        parts = list(scene.components.values())
+        self.bodies = [c for c in parts if isinstance(c, Body)]
+        self.joints = [c for c in parts if isinstance(c, Joint)]
+        self.springs = [c for c in parts if isinstance(c, Spring)]
+        self.ropes = [c for c in parts if isinstance(c, Rope)]
+        self.fixed = scene.fixed_bodies()
+
+
 class Renderer:
     """Draws frames of one canvas at one output size in one theme.
 
@@ -93,7 +106,9 @@ class Renderer:
                                      alphaType=skia.kPremul_AlphaType)
         self._canvas = self._surface.getCanvas()
         self._matrix = skia.Matrix.Translate(self.box[0], self.box[1]).preScale(self.scale, self.scale)
-        self._static: tuple[Scene, frozenset[str], np.ndarray] | None = None
+        self._static_pixels = np.zeros_like(self._pixels)
+        self._static: tuple[Scene, tuple[object, ...], tuple[Trail, ...]] | None = None
+        self._scene_plan: _Plan | None = None
         self._bodies: dict[str, tuple[Body, skia.Path]] = {}
         self._ropes: dict[str, tuple[Rope, RopeShape, tuple[object, ...] | None, skia.Path]] = {}
         self._trails: dict[int, tuple[tuple[tuple[float, float], ...], skia.Path, int]] = {}
@@ -176,26 +191,35 @@ class Renderer:
 
     # -- the layer that does not move -----------------------------------------------------------------------
 
-    def _static_layer(self, scene: Scene, still: frozenset[str]) -> np.ndarray:
-        """The pixels of the bars, the paper and the fixed bodies ``still`` (with labels and joints), drawn once."""
+    def _plan(self, scene: Scene) -> _Plan:
+        if self._scene_plan is None or self._scene_plan.scene is not scene:
+            self._scene_plan = _Plan(scene)
+        return self._scene_plan
+
+    def _static_layer(self, plan: _Plan, still: frozenset[str], done: tuple[Trail, ...]) -> np.ndarray:
+        """The pixels of the bars, the paper, the fixed bodies ``still`` (with labels and joints) and the trails
+        ``done`` (complete: they grow no more), drawn once for as long as those stay the same."""
+        key = (still, tuple(id(trail.points) for trail in done), tuple(trail.kind for trail in done))
         cached = self._static
-        if cached is not None and cached[0] is scene and cached[1] == still:
-            return cached[2]
-        pixels = np.zeros_like(self._pixels)
+        if cached is not None and cached[0] is plan.scene and cached[1] == key:
+            return self._static_pixels
+        pixels = self._static_pixels
         surface = skia.Surface(pixels, colorType=skia.kRGBA_8888_ColorType, alphaType=skia.kPremul_AlphaType)
         canvas = surface.getCanvas()
         canvas.clear(self.theme.bars)
         canvas.drawRect(skia.Rect.MakeXYWH(*self.box), _paint(self.theme.background))
         canvas.setMatrix(self._matrix)
-        for body in scene.bodies():
+        for body in plan.bodies:
             if body.id in still:
                 self._draw_body(canvas, body, body.position[0], body.position[1], body.angle, fixed=True)
-        for c in scene.components.values():
-            if isinstance(c, Joint) and {c.a, c.b} <= still | {BACKGROUND}:
-                self._draw_joint(canvas, c, c.anchor)
+        for joint in plan.joints:
+            if {joint.a, joint.b} <= still | {BACKGROUND}:
+                self._draw_joint(canvas, joint, joint.anchor)
+        for trail in done:
+            canvas.drawPath(polyline(trail.points), self._p[trail.kind])
         surface.flushAndSubmit()
         del canvas, surface
-        self._static = (scene, still, pixels)
+        self._static = (plan.scene, key, done)  # the trails are kept so that their ids stay theirs
         return pixels
 
     # -- frames ---------------------------------------------------------------------------------------------
@@ -211,29 +235,30 @@ class Renderer:
         if tuple(content.canvas) != self.canvas:
             raise RenderError(f"frame of a {content.canvas!r} canvas given to a renderer of a {self.canvas!r} canvas")
         scene, poses = content.scene, content.poses
-        fixed = scene.fixed_bodies()
-        still = frozenset(b for b in fixed if b not in poses or self._unmoved(scene, b, poses[b]))
-        np.copyto(self._pixels, self._static_layer(scene, still))  # a copy is far faster than drawing an image
+        plan = self._plan(scene)
+        still = frozenset(b for b in plan.fixed if b not in poses or self._unmoved(scene, b, poses[b]))
+        done = tuple(t for t in content.trails if t.shown == len(t.points) and t.head is None)
+        growing = tuple(t for t in content.trails if t.shown and not (t.shown == len(t.points) and t.head is None))
+        np.copyto(self._pixels, self._static_layer(plan, still, done))  # a copy is far faster than drawing
         canvas = self._canvas
         canvas.resetMatrix()
         canvas.save()
         canvas.clipRect(skia.Rect.MakeXYWH(*self.box))
         canvas.setMatrix(self._matrix)
-        self._draw_trails(canvas, content.trails)
-        for c in scene.components.values():
-            if isinstance(c, Spring):
-                a = carried(c.anchor_a, c.a, scene, poses)
-                b = carried(c.anchor_b, c.b, scene, poses)
-                canvas.drawPath(zigzag(a, b, c.rest_length), self._p["spring"])
-            elif isinstance(c, Rope):
-                canvas.drawPath(self._rope_path(c, scene, poses), self._p["rope"])
-        for body in scene.bodies():
+        self._draw_trails(canvas, growing)
+        for spring in plan.springs:
+            a = carried(spring.anchor_a, spring.a, scene, poses)
+            b = carried(spring.anchor_b, spring.b, scene, poses)
+            canvas.drawPath(zigzag(a, b, spring.rest_length), self._p["spring"])
+        for rope in plan.ropes:
+            canvas.drawPath(self._rope_path(rope, scene, poses), self._p["rope"])
+        for body in plan.bodies:
             if body.id not in still:
                 x, y, angle = content.pose(body)
-                self._draw_body(canvas, body, x, y, angle, fixed=body.id in fixed)
-        for c in scene.components.values():
-            if isinstance(c, Joint) and not {c.a, c.b} <= still | {BACKGROUND}:
-                self._draw_joint(canvas, c, carried(c.anchor, c.a, scene, poses))
+                self._draw_body(canvas, body, x, y, angle, fixed=body.id in plan.fixed)
+        for joint in plan.joints:
+            if not {joint.a, joint.b} <= still | {BACKGROUND}:
+                self._draw_joint(canvas, joint, carried(joint.anchor, joint.a, scene, poses))
         self._draw_contacts(canvas, content)
         for stroke in content.ink:
             if len(stroke) == 1:
