@@ -103,15 +103,19 @@ def demonstration_frame(scene: Scene, timeline: Timeline, canvas: tuple[float, f
 
 
 _prepared: list[Demonstration] = []
+"""The last demonstration `view_frame` prepared: a view arrives many times per timeline, and preparing one (the
+tape, the trails) costs more than a frame. Only a memo: a stale or raced entry is rebuilt, never wrong."""
 
 
 def _demonstration(scene: Scene, timeline: Timeline, canvas: tuple[float, float]) -> Demonstration:
-    """The last demonstration prepared for this scene and timeline (views arrive many times per timeline)."""
-    if _prepared and _prepared[0].scene is scene and _prepared[0].timeline is timeline \
-            and _prepared[0].canvas == (float(canvas[0]), float(canvas[1])):
-        return _prepared[0]
-    _prepared[:] = [Demonstration(scene, timeline, canvas)]
-    return _prepared[0]
+    """The demonstration of this scene and timeline, the last one prepared when it is the same."""
+    last = _prepared[0] if _prepared else None
+    if last is not None and last.scene is scene and last.timeline is timeline \
+            and last.canvas == (float(canvas[0]), float(canvas[1])):
+        return last
+    demo = Demonstration(scene, timeline, canvas)
+    _prepared[:] = [demo]
+    return demo
 
 
 def view_frame(view: SessionView, canvas: tuple[float, float]) -> FrameContent:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Mapping
 
 import numpy as np
 import skia
@@ -20,6 +21,7 @@ from physink_tui.render.frame import FrameContent, TimeBar, Trail
 from physink_tui.render.shapes import body_path, cross, extend, lowest, polyline, zigzag
 from physink_tui.render.theme import Theme, theme_named
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope, Scene, Spring
+from physink_tui.scene.physics.state import Pose
 
 FONT_PATH = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 """The one font every text is drawn with, so that images are the same on every machine."""
@@ -274,19 +276,20 @@ class Renderer:
         return self._pixels
 
     @staticmethod
-    def _unmoved(scene: Scene, body_id: str, pose: tuple[float, float, float]) -> bool:
+    def _unmoved(scene: Scene, body_id: str, pose: Pose) -> bool:
         body = scene.components[body_id]
         return isinstance(body, Body) and (pose[0], pose[1], pose[2]) == (*body.position, body.angle)
 
-    def _rope_path(self, rope: Rope, scene: Scene, poses: object) -> skia.Path:
+    def _rope_path(self, rope: Rope, scene: Scene, poses: Mapping[str, Pose]) -> skia.Path:
+        """The rope's path with its bodies at ``poses``, made again only when one of them has moved."""
         found = self._ropes.get(rope.id)
         if found is None or found[0] is not rope:
             shape = RopeShape(rope, scene)
             found = (rope, shape, None, skia.Path())
         rope_, shape, key, path = found
-        now = tuple(poses.get(b) for b in shape.bodies())  # type: ignore[attr-defined]
+        now = tuple(poses.get(b) for b in shape.bodies())
         if now != key:
-            points = shape.at(scene, poses).tolist()  # type: ignore[arg-type]
+            points = shape.at(scene, poses).tolist()
             path = polyline(points)
             self._ropes[rope.id] = (rope_, shape, now, path)
         return path
