@@ -254,3 +254,22 @@ def test_a_trail_knows_what_it_shows() -> None:
         Trail((), "sketch", 0)
     with pytest.raises(ValueError, match="4"):
         Trail(((0.0, 0.0),), "demonstration", 4)
+
+
+def test_a_demonstration_frame_shows_what_the_session_shows_after_a_seek() -> None:
+    journal = read_journal(JOURNALS / "egg_cracker.physink.jsonl")
+    entries = [e for e in journal.entries if not (isinstance(e, CommandEntry) and e.name == "end")]
+    session = Session.from_header(journal.header)
+    for entry in entries:
+        session.handle(entry)
+    later = entries[-1].t + 1.0
+    session.handle(CommandEntry(later, "mode", ("demo",)))
+    session.handle(CommandEntry(later, "seek", (2.0,)))
+    view = session.view()
+    assert view.mode == "demo" and view.clock == 2.0 and view.timeline is not None
+    frame = demonstration_frame(view.scene, view.timeline, session.canvas, 2.0)
+    for body, pose in frame.poses.items():
+        assert tuple(pose) == pytest.approx(tuple(view.poses[body]), abs=1e-6), body
+    shown = view_frame(view, session.canvas)
+    assert (shown.trails, shown.contacts, shown.subtitle, shown.time_bar) == (
+        frame.trails, frame.contacts, frame.subtitle, frame.time_bar)
