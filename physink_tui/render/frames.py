@@ -11,7 +11,7 @@ from physink_tui.render.frame import ContactMarker, FrameContent, Point, TimeBar
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
 from physink_tui.session.view import SessionView
-from physink_tui.timeline.events import Timeline, event_label
+from physink_tui.timeline.events import Timeline, TrajectoryPoint, event_label
 from physink_tui.timeline.tape import Tape
 
 RECENT = 0.5
@@ -22,8 +22,13 @@ RECENT = 0.5
 class _Track:
     """One movement's recorded path: its times and points (the points tuple is shared by every frame)."""
 
+    trajectory: tuple[TrajectoryPoint, ...]
     times: tuple[float, ...]
     points: tuple[Point, ...]
+
+    @classmethod
+    def of(cls, trajectory: tuple[TrajectoryPoint, ...]) -> _Track:
+        return cls(trajectory, tuple(p.t for p in trajectory), tuple((p.x, p.y) for p in trajectory))
 
 
 class Demonstration:
@@ -31,17 +36,22 @@ class Demonstration:
 
     Poses come from `Tape`, the playback the session's seek uses: a body with recorded motion is where the tape
     has it at t (held at its first or last frame outside them), any other body where it was drawn.
+
+    ``previous``: a demonstration of an earlier snapshot of the same recording, whose paths are reused for the
+    movements that have not changed (so a renderer keeps what it drew of them).
     """
 
-    def __init__(self, scene: Scene, timeline: Timeline, canvas: tuple[float, float]) -> None:
+    def __init__(self, scene: Scene, timeline: Timeline, canvas: tuple[float, float],
+                 previous: Demonstration | None = None) -> None:
         self.scene = scene
         self.timeline = timeline
         self.canvas = (float(canvas[0]), float(canvas[1]))
         self.tape = Tape(timeline)
         self.duration = self.tape.duration
         names = scene.names()
+        known = {id(track.trajectory): track for track in previous._tracks} if previous is not None else {}
         self._tracks = tuple(
-            _Track(tuple(p.t for p in ev.trajectory), tuple((p.x, p.y) for p in ev.trajectory))
+            known[id(ev.trajectory)] if id(ev.trajectory) in known else _Track.of(ev.trajectory)
             for ev in timeline.events if ev.type == "movement" and len(ev.trajectory) >= 2)
         self._contacts = sorted(
             ((ev.t0, ev.point, " / ".join(f"{names.get(c) or c} {side}" for c, side in ev.sides))
@@ -113,7 +123,7 @@ def _demonstration(scene: Scene, timeline: Timeline, canvas: tuple[float, float]
     if last is not None and last.scene is scene and last.timeline is timeline \
             and last.canvas == (float(canvas[0]), float(canvas[1])):
         return last
-    demo = Demonstration(scene, timeline, canvas)
+    demo = Demonstration(scene, timeline, canvas, previous=last)
     _prepared[:] = [demo]
     return demo
 
