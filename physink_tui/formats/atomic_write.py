@@ -1,4 +1,4 @@
-"""Atomic file writes: a complete new file or the old one untouched; knows no file format."""
+"""Atomic file writes (text or bytes): a complete new file or the old one untouched; knows no file format."""
 
 from __future__ import annotations
 
@@ -7,7 +7,16 @@ import tempfile
 
 
 def write_text_atomic(path: str | os.PathLike[str], text: str) -> None:
-    """Write ``text`` to ``path`` through a temporary file in the same folder, flushed, fsynced and renamed.
+    """Write ``text`` (UTF-8, newlines as written) to ``path`` atomically; see `write_bytes_atomic`.
+
+    Raises:
+        OSError: the file cannot be written; the temporary file is removed and ``path`` is unchanged.
+    """
+    write_bytes_atomic(path, text.encode("utf-8"))
+
+
+def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary file in the same folder, flushed, fsynced and renamed.
 
     A file already at ``path`` keeps its permission bits; a new file gets 0o644.
 
@@ -22,8 +31,8 @@ def write_text_atomic(path: str | os.PathLike[str], text: str) -> None:
         mode = 0o644
     fd, tmp = tempfile.mkstemp(prefix=f".{base}.", suffix=".tmp", dir=directory)
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
-            f.write(text)
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
             f.flush()
             os.fchmod(f.fileno(), mode)
             os.fsync(f.fileno())
