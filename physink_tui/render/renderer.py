@@ -41,7 +41,9 @@ def load_typeface(path: str = FONT_PATH) -> skia.Typeface:
     Raises:
         RenderError: the file is missing or is not a font.
     """
-    typeface = skia.Typeface.MakeFromFile(path) if os.path.isfile(path) else None
+    # a font manager of its own, without fontconfig: nothing depends on the system's font setup (whose newer
+    # config files skia's bundled fontconfig warns about on stderr)
+    typeface = skia.FontMgr.New_Custom_Empty().makeFromFile(path) if os.path.isfile(path) else None
     if typeface is None:
         raise RenderError(f"font {path!r} is missing or unreadable; the renderer draws text with DejaVu Sans only "
                           "(install the DejaVu fonts, e.g. the fonts-dejavu-core package)")
