@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import math
+import re
 import sys
 from collections.abc import Callable, Sequence
 
@@ -32,6 +33,7 @@ HANDLERS: dict[str, str] = {
     "demo": "physink_tui.commands.demo:run",
     "decode": "physink_tui.commands.decode:run",
     "replay": "physink_tui.commands.replay:run",
+    "export": "physink_tui.commands.export:run",
     "devices": "physink_tui.commands.devices:run",
     "record": "physink_tui.commands.record:run",
     "recognize": "physink_tui.commands.recognize:run",
@@ -45,8 +47,13 @@ PLANNED: dict[str, str] = {
     "kiosk": "a later issue: the headless recording service",
     "simulate": "a later issue: the SIMULATE parameter search",
     "listen": "a later issue: speech commands",
-    "export": "a later issue: video and frame export",
 }
+
+
+MIN_SIDE, MAX_SIDE = 16, 7680
+"""Picture sides a renderer draws (pixels)."""
+MAX_FPS = 120
+"""The most video frames a second."""
 
 
 def _positive_int(text: str) -> int:
@@ -67,6 +74,44 @@ def _positive_rate(text: str) -> float:
     if not (math.isfinite(value) and value > 0):
         raise argparse.ArgumentTypeError(f"expected a positive number per second, got {text!r}")
     return value
+
+
+def _frame_size(text: str) -> tuple[int, int]:
+    match = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", text)
+    width, height = (int(match[1]), int(match[2])) if match else (0, 0)
+    if not (MIN_SIDE <= width <= MAX_SIDE and MIN_SIDE <= height <= MAX_SIDE):
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, each {MIN_SIDE} to {MAX_SIDE} "
+                                         f"(e.g. 1280x800), got {text!r}")
+    return width, height
+
+
+def _frame_rate(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if not 1 <= value <= MAX_FPS:
+        raise argparse.ArgumentTypeError(f"expected whole frames a second from 1 to {MAX_FPS} (30 or 60 are usual), "
+                                         f"got {text!r}")
+    return value
+
+
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value >= 0):
+        raise argparse.ArgumentTypeError(f"expected seconds >= 0, got {text!r}")
+    return value
+
+
+def _add_look(p: argparse.ArgumentParser) -> None:
+    """--size, --fps, --theme: how pictures and videos are drawn."""
+    p.add_argument("--size", type=_frame_size, default=(1280, 800), metavar="WxH",
+                   help="picture size in pixels, the canvas's proportions kept (default: 1280x800)")
+    p.add_argument("--fps", type=_frame_rate, default=30, metavar="N", help="video frames a second (default: 30)")
+    p.add_argument("--theme", choices=("light", "dark"), default="light", help="(default: %(default)s)")
 
 
 def _label_list(text: str) -> list[str]:
@@ -167,11 +212,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--labels", metavar="a,b,...", type=_label_list, help="comma-separated labels to expect")
     p.add_argument("--vosk-model", metavar="DIR", help="use the Vosk model in DIR")
 
-    p = sub.add_parser("export", help="offline export of a project's video, frames and timeline")
+    p = sub.add_parser("export", help="a project's demonstration as a video, PNG frames, a picture or a timeline")
     p.add_argument("project", metavar="PROJECT", help="a project (.physink.json)")
-    p.add_argument("--video", metavar="FILE.mp4|.gif", required=True, help="video file to write")
-    p.add_argument("--frames", metavar="DIR", help="also write PNG frames into DIR")
-    p.add_argument("--timeline", metavar="FILE", help="also write the timeline to FILE")
+    p.add_argument("--video", metavar="FILE.mp4|.gif|.webm", help="the demonstration as a video")
+    p.add_argument("--frames", metavar="DIR", help="every frame as DIR/NNNNN.png")
+    p.add_argument("--still", metavar="FILE.png", help="one picture (at the end of the demonstration, or --at)")
+    p.add_argument("--at", metavar="T", type=_seconds, help="timeline time of --still, in seconds")
+    p.add_argument("--timeline", metavar="FILE", help="the timeline as FILE (.json, .txt or .dot)")
+    _add_look(p)
 
     return parser
 

@@ -1,0 +1,87 @@
+"""`physink export PROJECT`: a project's demonstration as a video (MP4, GIF, WebM), numbered PNG frames, one
+picture, or its timeline file; drawing and encoding are `render.export`'s, this module picks the files.
+
+``--video FILE`` (the suffix picks the format), ``--frames DIR`` (``DIR/00000.png`` ... at the video's rate; frames
+an earlier export left there are removed first), ``--still FILE.png [--at T]`` (one picture, by default at the end
+of the demonstration, trails and contacts showing everything that happened) and ``--timeline FILE`` (``.json``,
+``.txt`` or ``.dot``); ``--size WxH``, ``--fps N`` and ``--theme light|dark`` say how. A project without a
+timeline gives a one-second still of its scene, and says so.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import sys
+from pathlib import Path
+
+from physink_tui.errors import PhysinkError
+from physink_tui.formats.atomic_write import write_text_atomic
+from physink_tui.formats.outputs import reason
+from physink_tui.formats.project.files import load_project
+from physink_tui.formats.timeline_dot import encode_timeline_dot
+from physink_tui.formats.timeline_json import encode_timeline_json
+from physink_tui.formats.timeline_text import encode_timeline_text
+from physink_tui.progress import ProgressBar
+from physink_tui.render.export import Export, Look
+
+FRAME_FILE = re.compile(r"^\d{5}\.png$")
+TIMELINE_WRITERS = {".json": encode_timeline_json, ".txt": encode_timeline_text, ".dot": encode_timeline_dot}
+
+
+def run(args: argparse.Namespace) -> int:
+    if not (args.video or args.frames or args.still or args.timeline):
+        raise PhysinkError("export: nothing to write; give --video FILE, --frames DIR, --still FILE.png or "
+                           "--timeline FILE")
+    if args.timeline and Path(args.timeline).suffix.lower() not in TIMELINE_WRITERS:
+        raise PhysinkError(f"{args.timeline}: a timeline is written as .json, .txt or .dot")
+    project = load_project(args.project)
+    width, height = args.size
+    export = Export(project.scene, project.timeline, project.canvas, Look(width, height, args.fps, args.theme))
+    written = []
+    if args.video:
+        with ProgressBar(f"video {args.video}", "frames") as bar:
+            export.video(args.video, progress=bar)
+        written.append(args.video)
+    if args.frames:
+        folder = prepare_frames_folder(args.frames)
+        with ProgressBar(f"frames {args.frames}", "frames") as bar:
+            count = export.frames(folder, progress=bar)
+        written.append(f"{count} frames in {folder}")
+    if args.still:
+        at = export.still(args.still, args.at)
+        written.append(f"{args.still} (at {at:.2f} s)")
+    if args.timeline:
+        if project.timeline is None:
+            raise PhysinkError(f"{args.project}: the project has no timeline to write to {args.timeline}")
+        encode = TIMELINE_WRITERS[Path(args.timeline).suffix.lower()]
+        text = encode(project.timeline, project.scene.names())
+        try:
+            write_text_atomic(args.timeline, text if text.endswith("\n") else text + "\n")
+        except OSError as exc:
+            raise PhysinkError(f"{args.timeline}: cannot write: {reason(exc)}") from None
+        written.append(args.timeline)
+    for note in export.notes:
+        print(f"export: {note}", file=sys.stderr)
+    print(f"export: wrote {', '.join(written)}", file=sys.stderr)
+    return 0
+
+
+def prepare_frames_folder(path: str | os.PathLike[str]) -> Path:
+    """``path`` made if needed and cleared of the frames an earlier export left (only ``NNNNN.png`` files).
+
+    Raises:
+        PhysinkError: the folder cannot be made or cleared (path and cause named).
+    """
+    folder = Path(path)
+    if folder.exists() and not folder.is_dir():
+        raise PhysinkError(f"{folder}: cannot write frames there: it exists and is not a folder")
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        for old in folder.iterdir():
+            if FRAME_FILE.match(old.name) and old.is_file():
+                old.unlink()
+    except OSError as exc:
+        raise PhysinkError(f"{folder}: cannot prepare the frames folder: {reason(exc)}") from None
+    return folder
