@@ -54,26 +54,38 @@ def ball_scene() -> Scene:
 
 
 def test_the_canvas_keeps_its_aspect_between_bars() -> None:
-    renderer = Renderer(400, 100, CANVAS)
+    renderer = Renderer(400, 100, CANVAS, controls=False)
     pixels = renderer.render(FrameContent(Scene(), CANVAS))
     assert renderer.box == pytest.approx((120.0, 0.0, 160.0, 100.0))
     assert tuple(pixels[50, 10, :3]) == rgb(LIGHT.bars)
     assert tuple(pixels[50, 390, :3]) == rgb(LIGHT.bars)
     assert tuple(pixels[50, 200, :3]) == rgb(LIGHT.background)
-    tall = Renderer(100, 400, CANVAS).render(FrameContent(Scene(), CANVAS))
+    tall = Renderer(100, 400, CANVAS, controls=False).render(FrameContent(Scene(), CANVAS))
     assert tuple(tall[5, 50, :3]) == rgb(LIGHT.bars) and tuple(tall[200, 50, :3]) == rgb(LIGHT.background)
 
 
+def test_the_narration_and_time_bar_sit_below_the_canvas_never_over_it() -> None:
+    renderer = Renderer(320, 220, CANVAS)
+    left, top, width, height = renderer.box
+    assert top + height <= 220 - 22 + 0.5 and width / height == pytest.approx(CANVAS[0] / CANVAS[1])
+    bare = renderer.render(FrameContent(Scene(), CANVAS)).copy()
+    told = renderer.render(FrameContent(Scene(), CANVAS, subtitle="Movement of ball CAUSES",
+                                        time_bar=TimeBar(1.0, 2.0, (0.5, 1.5))))
+    changed = (told[..., :3] != bare[..., :3]).any(axis=2)
+    assert changed[int(top + height):].any()  # drawn in the strip
+    assert not changed[: int(top + height)].any()  # the canvas untouched
+
+
 def test_an_empty_scene_is_a_blank_canvas() -> None:
-    renderer = Renderer(160, 100, CANVAS)
+    renderer = Renderer(160, 100, CANVAS, controls=False)
     pixels = renderer.render(FrameContent(Scene(), CANVAS))
     assert (pixels[..., :3] == rgb(LIGHT.background)).all()
     assert (pixels[..., 3] == 255).all()
 
 
 def test_the_dark_theme_is_dark_and_the_light_one_light() -> None:
-    dark = Renderer(160, 100, CANVAS, "dark").render(FrameContent(ball_scene(), CANVAS)).copy()
-    light = Renderer(160, 100, CANVAS, "light").render(FrameContent(ball_scene(), CANVAS)).copy()
+    dark = Renderer(160, 100, CANVAS, "dark", controls=False).render(FrameContent(ball_scene(), CANVAS)).copy()
+    light = Renderer(160, 100, CANVAS, "light", controls=False).render(FrameContent(ball_scene(), CANVAS)).copy()
     assert dark[..., :3].mean() < 60 < 200 < light[..., :3].mean()
     assert tuple(dark[90, 150, :3]) == rgb(DARK.background)
 

@@ -67,6 +67,10 @@ def _paint(color: int, width: float | None = None) -> skia.Paint:
     return paint
 
 
+CONTROLS = 0.1
+"""Share of the output's height kept below the canvas for the narration and the time bar."""
+
+
 class _Plan:
     """A scene's components sorted by how they are drawn, kept while the scene is the same object."""
 
@@ -87,13 +91,16 @@ class Renderer:
         width, height: the output in pixels, whole numbers from 16 to 7680.
         canvas: (width, height) of the canvas in canvas units; it is scaled to fit, its aspect kept.
         theme: ``light`` or ``dark``.
+        controls: keep a strip below the canvas for the narration and the time bar (`CONTROLS` of the height), so
+            they never cover the machine; without it they are drawn over the canvas's bottom edge.
 
     Raises:
         ValueError: a size, the canvas or the theme is not one of those.
         RenderError: the font is missing.
     """
 
-    def __init__(self, width: int, height: int, canvas: tuple[float, float], theme: str = "light") -> None:
+    def __init__(self, width: int, height: int, canvas: tuple[float, float], theme: str = "light",
+                 controls: bool = True) -> None:
         self.width, self.height = _size("width", width), _size("height", height)
         cw, ch = canvas
         if not (isinstance(cw, int | float) and isinstance(ch, int | float) and cw > 0 and ch > 0
@@ -101,9 +108,13 @@ class Renderer:
             raise ValueError(f"canvas: expected a positive (width, height), got {canvas!r}")
         self.canvas = (float(cw), float(ch))
         self.theme: Theme = theme_named(theme)
-        self.scale = min(width / cw, height / ch)
-        self.box = ((width - cw * self.scale) / 2, (height - ch * self.scale) / 2, cw * self.scale, ch * self.scale)
+        strip = round(CONTROLS * height) if controls else 0
+        above = height - strip
+        self.scale = min(width / cw, above / ch)
+        self.box = ((width - cw * self.scale) / 2, (above - ch * self.scale) / 2, cw * self.scale, ch * self.scale)
         """The canvas inside the output: left, top, width, height in pixels."""
+        self.controls = (0.0, float(above), float(width), float(strip)) if strip else self.box
+        """Where the narration and the time bar go: the strip below the canvas, or the canvas itself."""
         self._typeface = load_typeface()
         self._pixels = np.zeros((height, width, 4), dtype=np.uint8)
         self._surface = skia.Surface(self._pixels, colorType=skia.kRGBA_8888_ColorType,
@@ -337,12 +348,16 @@ class Renderer:
             self._text(canvas, marker.sides, left, top + size, size, self._p["contact_text"], centred=False)
 
     def _draw_subtitle(self, canvas: skia.Canvas, text: str, above_bar: bool) -> None:
-        left, top, width, height = self.box
-        size = max(MIN_TEXT, 0.04 * height)
+        left, top, width, height = self.controls
+        if self.controls is not self.box:  # in the strip: the text above the bar, as large as the strip allows
+            size = max(MIN_TEXT, 0.34 * height)
+            bottom = top + (0.52 if above_bar else 0.7) * height
+        else:
+            size = max(MIN_TEXT, 0.04 * height)
+            bottom = top + height - (0.07 if above_bar else 0.03) * height
         blob, advance = self._blob(text, size)
         if blob is None:
             return
-        bottom = top + height - (0.07 if above_bar else 0.03) * height
         pad = 0.4 * size
         x = left + (width - advance) / 2
         back = skia.Rect.MakeLTRB(x - pad, bottom - size - pad * 0.5, x + advance + pad, bottom + pad)
@@ -350,10 +365,14 @@ class Renderer:
         canvas.drawTextBlob(blob, x, bottom - 0.2 * size, self._p["subtitle"])
 
     def _draw_time_bar(self, canvas: skia.Canvas, bar: TimeBar) -> None:
-        left, top, width, height = self.box
-        thick = max(2.0, 0.008 * height)
+        left, top, width, height = self.controls
+        if self.controls is not self.box:
+            thick = max(2.0, 0.07 * height)
+            y = top + 0.78 * height
+        else:
+            thick = max(2.0, 0.008 * height)
+            y = top + height - 0.03 * height
         margin = 0.03 * width
-        y = top + height - 0.03 * height
         x0, x1 = left + margin, left + width - margin
         track = skia.Rect.MakeLTRB(x0, y - thick / 2, x1, y + thick / 2)
         canvas.drawRoundRect(track, thick / 2, thick / 2, self._p["bar_track"])
