@@ -176,8 +176,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("file", metavar="FILE", help="a journal (.physink.jsonl) or capture (.hid)")
     p.add_argument("--out", metavar="DIR", required=True, help="output folder")
-    p.add_argument("--video", action="store_true", help="also write DIR/video.mp4")
-    p.add_argument("--frames", action="store_true", help="also write DIR/frames/NNNNN.png")
+    p.add_argument("--video", action="store_true", help="also write the demonstration as DIR/video.mp4")
+    p.add_argument("--frames", action="store_true", help="also write every frame as DIR/frames/NNNNN.png")
+    _add_look(p)
     p.add_argument("--vocabulary", metavar="FILE",
                    help="extra verbs and prepositions for phrases, lines 'verb WORD...' or 'prep WORD...'")
     p.add_argument("--ticks", type=_positive_rate, metavar="HZ",

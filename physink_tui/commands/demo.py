@@ -3,7 +3,8 @@
 Until the Textual UI exists (a later issue) the demo is headless whatever the terminal: it journals the bundled
 capture (the egg cracker drawn and then demonstrated with the virtual pen, `demo_data`) with what is typed in
 between (labels, ``mode demo``) as a session, runs it through decoding, gestures, recognition, interpretation
-and demo mode, writes the samples, the journal, the project and the timeline to the output folder, and shows
+and demo mode, writes the samples, the journal, the project, the timeline, the demonstration as a video
+(``demo.mp4``) and its last frame (``scene.png``) to the output folder, and shows
 the strokes as braille dots and the demonstration as the thesis narrates it.
 """
 
@@ -20,6 +21,8 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.outputs import OutputFolder, reason
 from physink_tui.formats.session_outputs import write_session_outputs
+from physink_tui.progress import ProgressBar
+from physink_tui.render.export import Export, Look
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
 from physink_tui.input.pen.mapping import TabletMapping
@@ -69,6 +72,10 @@ def run(args: argparse.Namespace) -> int:
     journal = read_journal(journal_path)
     session = Session.from_header(journal.header).run(journal.entries)
     write_session_outputs(folder, session.scene, session.timeline, session.canvas, session.vocabulary_lines())
+    export = Export(session.scene, session.timeline, session.canvas, Look())
+    with ProgressBar("demo.mp4", "frames") as bar:
+        export.video(folder.file("demo.mp4"), progress=bar)
+    export.still(folder.file("scene.png"))
     narration = "" if session.timeline is None else timeline_text(session.timeline, session.scene.names())
 
     tip = cols.tip.tolist()
@@ -88,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
     if narration:
         print("\nThe demonstration, as the thesis narrates it:\n" + narration)
     print(f"\nwritten to {out}/: samples.jsonl, summary.txt, {JOURNAL} (replay it with physink replay), project.json,"
-          " timeline.json and timeline.txt")
+          " timeline.json, timeline.txt, demo.mp4 (the demonstration as a video) and scene.png (its last frame)")
     if args.headless is False and sys.stdout.isatty():
         print("(the interactive TUI is not built yet; this run was headless)")
     return 0

@@ -11,14 +11,12 @@ timeline gives a one-second still of its scene, and says so.
 from __future__ import annotations
 
 import argparse
-import os
-import re
 import sys
 from pathlib import Path
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.atomic_write import write_text_atomic
-from physink_tui.formats.outputs import reason
+from physink_tui.formats.outputs import prepare_frames_folder, reason
 from physink_tui.formats.project.files import load_project
 from physink_tui.formats.timeline_dot import encode_timeline_dot
 from physink_tui.formats.timeline_json import encode_timeline_json
@@ -26,7 +24,6 @@ from physink_tui.formats.timeline_text import encode_timeline_text
 from physink_tui.progress import ProgressBar
 from physink_tui.render.export import Export, Look
 
-FRAME_FILE = re.compile(r"^\d{5}\.png$")
 TIMELINE_WRITERS = {".json": encode_timeline_json, ".txt": encode_timeline_text, ".dot": encode_timeline_dot}
 
 
@@ -66,22 +63,3 @@ def run(args: argparse.Namespace) -> int:
         print(f"export: {note}", file=sys.stderr)
     print(f"export: wrote {', '.join(written)}", file=sys.stderr)
     return 0
-
-
-def prepare_frames_folder(path: str | os.PathLike[str]) -> Path:
-    """``path`` made if needed and cleared of the frames an earlier export left (only ``NNNNN.png`` files).
-
-    Raises:
-        PhysinkError: the folder cannot be made or cleared (path and cause named).
-    """
-    folder = Path(path)
-    if folder.exists() and not folder.is_dir():
-        raise PhysinkError(f"{folder}: cannot write frames there: it exists and is not a folder")
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-        for old in folder.iterdir():
-            if FRAME_FILE.match(old.name) and old.is_file():
-                old.unlink()
-    except OSError as exc:
-        raise PhysinkError(f"{folder}: cannot prepare the frames folder: {reason(exc)}") from None
-    return folder

@@ -2,7 +2,8 @@
 
 A replay prints the gestures, one line each, and writes them to ``DIR/gestures.jsonl``; a journal
 also runs through the session, whose sketch is written to ``DIR/project.json`` and, after a demonstration, its
-timeline to ``DIR/timeline.json`` and ``DIR/timeline.txt``. ``DIR`` holds only this run's files
+timeline to ``DIR/timeline.json`` and ``DIR/timeline.txt``; with ``--video`` and ``--frames`` its demonstration
+also as ``DIR/video.mp4`` and ``DIR/frames/NNNNN.png`` (`render.export`). ``DIR`` holds only this run's files
 (`physink_tui.formats.outputs.OutputFolder`); the input is read once, so a pipe or FIFO works. A capture is replayed
 device by device in file order as live reports would arrive; a journal's ``hid`` lines go through their device's
 decoder, its ``pen`` lines are canvas samples already, and its commands and utterances are listed as they come.
@@ -13,6 +14,7 @@ from __future__ import annotations
 import argparse
 import sys
 from collections import Counter
+from dataclasses import dataclass
 from pathlib import Path
 
 from physink_tui.commands.decode import decoder_for
@@ -20,7 +22,7 @@ from physink_tui.commands.gesture_output import gesture_json, gesture_text
 from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
 from physink_tui.errors import DescriptorError, PhysinkError
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.formats.outputs import OutputFolder
+from physink_tui.formats.outputs import OutputFolder, prepare_frames_folder
 from physink_tui.formats.session_outputs import write_session_outputs
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.hid.pen_layout import tablet_size
@@ -66,7 +68,8 @@ def replay_capture(capture: Capture) -> tuple[list[Gesture], list[str]]:
     return gestures, notes
 
 
-def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, ticks: float | None = None) -> None:
+def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, ticks: float | None = None,
+                   pictures: Pictures | None = None) -> None:
     """Read the journal once, run it through the session (which decodes it, once) and write the gestures the
     session's input side found, DIR/project.json and, after a demonstration, the timeline."""
     from physink_tui.input.journal_replay import decoder_notes, entry_line, pen_input_for
@@ -90,24 +93,59 @@ def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, tick
     target = write_session_outputs(out, session.scene, session.timeline, session.canvas,
                                    session.vocabulary_lines())
     _print_session(session, target)
+    if pictures is not None:
+        write_pictures(session, out, pictures)
+
+
+@dataclass(frozen=True, slots=True)
+class Pictures:
+    """What ``--video`` and ``--frames`` ask a replay for, drawn at ``size`` (pixels), ``fps`` and ``theme``."""
+
+    video: bool
+    frames: bool
+    size: tuple[int, int]
+    fps: int
+    theme: str
+
+
+def write_pictures(session: Session, out: OutputFolder, pictures: Pictures) -> None:
+    """DIR/video.mp4 and DIR/frames/NNNNN.png of the session's demonstration (a still without one)."""
+    from physink_tui.progress import ProgressBar  # the renderer's libraries load only when pictures are asked for
+    from physink_tui.render.export import Export, Look
+
+    look = Look(*pictures.size, pictures.fps, pictures.theme)
+    export = Export(session.scene, session.timeline, session.canvas, look)
+    if pictures.video:
+        with ProgressBar("video.mp4", "frames") as bar:
+            export.video(out.file("video.mp4"), progress=bar)
+        print(f"replay: the demonstration's video written to {out.file('video.mp4')}", file=sys.stderr)
+    if pictures.frames:
+        folder = prepare_frames_folder(out.path / "frames")
+        with ProgressBar("frames", "frames") as bar:
+            count = export.frames(folder, progress=bar)
+        print(f"replay: {count} frames written to {folder}", file=sys.stderr)
+    for note in export.notes:
+        print(f"replay: {note}", file=sys.stderr)
 
 
 def run(args: argparse.Namespace) -> int:
     path = Path(args.file)
     vocabulary = read_vocabulary(args.vocabulary)  # a bad file stops the replay before anything is written
+    pictures = None
     if args.video or args.frames:
-        print("physink replay: --video and --frames need the renderer (a later issue); not written",
-              file=sys.stderr)
+        pictures = Pictures(args.video, args.frames, args.size, args.fps, args.theme)
     data = read_bytes(path)  # once: the input may be a pipe or a FIFO
     if sniff(data, path) == "capture":
         capture = Capture.from_text(data.removeprefix(BOM).decode("utf-8", errors="replace"), path=str(path))
         gestures, notes = replay_capture(capture)
+        if pictures is not None:
+            notes.append("--video and --frames draw a session: a capture alone has no scene (replay a journal)")
         out = OutputFolder.prepare(args.out)
         _write_gestures(out, [], gestures, notes)
         return 0
     with regular_copy(path, data) as copy:
         try:
-            replay_journal(copy, args.out, vocabulary, getattr(args, "ticks", None))
+            replay_journal(copy, args.out, vocabulary, getattr(args, "ticks", None), pictures)
         except PhysinkError as exc:
             if copy == path:
                 raise

@@ -24,10 +24,31 @@ from physink_tui.formats.atomic_write import write_text_atomic
 
 #: Every file name a run of this program writes into an output folder (and so removes from a reused one).
 OWN_FILES = ("project.json", "timeline.json", "timeline.txt", "gestures.jsonl", "samples.jsonl", "summary.txt",
-             "session.physink.jsonl", "result.json", "video.mp4", "video.gif")
+             "session.physink.jsonl", "result.json", "video.mp4", "video.gif", "video.webm", "demo.mp4", "scene.png")
 
-#: The temporary files `write_text_atomic` makes for those names: ``.NAME.<random>.tmp``.
-_OWN_TMP = re.compile(r"^\.(" + "|".join(re.escape(n) for n in OWN_FILES) + r")\.[^/]+\.tmp$")
+#: The temporary files the atomic writers make for those names: ``.NAME.<random>.tmp`` (``.part`` for videos).
+_OWN_TMP = re.compile(r"^\.(" + "|".join(re.escape(n) for n in OWN_FILES) + r")\.[^/]+\.(tmp|part)$")
+#: Frame files in a frames folder: ``00000.png`` ... (and their temporary files).
+FRAME_FILE = re.compile(r"^(\d{5}\.png|\.\d{5}\.png\.[^/]+\.tmp)$")
+
+
+def prepare_frames_folder(path: str | os.PathLike[str]) -> Path:
+    """``path`` made if needed and cleared of the frames an earlier run left there (only ``NNNNN.png`` files).
+
+    Raises:
+        PhysinkError: the folder cannot be made or cleared (path and cause named).
+    """
+    folder = Path(path)
+    if folder.exists() and not folder.is_dir():
+        raise PhysinkError(f"{folder}: cannot write frames there: it exists and is not a folder")
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        for old in folder.iterdir():
+            if FRAME_FILE.match(old.name) and old.is_file():
+                old.unlink()
+    except OSError as exc:
+        raise PhysinkError(f"{folder}: cannot prepare the frames folder: {reason(exc)}") from None
+    return folder
 
 
 def reason(exc: OSError) -> str:
