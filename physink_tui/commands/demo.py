@@ -21,12 +21,12 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.outputs import OutputFolder, reason
 from physink_tui.formats.session_outputs import write_session_outputs
-from physink_tui.progress import ProgressBar
-from physink_tui.render.export import Export, Look
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.journal_compose import capture_entries, header_for_capture, write_journal
 from physink_tui.input.pen.mapping import TabletMapping
+from physink_tui.progress import ProgressBar
 from physink_tui.render.braille import braille_plot
+from physink_tui.render.export import Export, Look
 from physink_tui.scene.components import Body, Joint
 from physink_tui.session.session import Session
 from physink_tui.timeline.narrate import timeline_text
