@@ -66,7 +66,7 @@ def test_the_canvas_keeps_its_aspect_between_bars() -> None:
 
 def test_the_narration_and_time_bar_sit_below_the_canvas_never_over_it() -> None:
     renderer = Renderer(320, 220, CANVAS)
-    left, top, width, height = renderer.box
+    _, top, width, height = renderer.box
     assert top + height <= 220 - 22 + 0.5 and width / height == pytest.approx(CANVAS[0] / CANVAS[1])
     bare = renderer.render(FrameContent(Scene(), CANVAS)).copy()
     told = renderer.render(FrameContent(Scene(), CANVAS, subtitle="Movement of ball CAUSES",
