@@ -158,8 +158,7 @@ def _run_pipelined(encoder: FrameEncoder, frames: Any, total: int, progress: Pro
 
     workers = [threading.Thread(target=convert_all, name="physink-video-convert", daemon=True),
                threading.Thread(target=encode_all, name="physink-video-encode", daemon=True)]
-    interval = sys.getswitchinterval()
-    sys.setswitchinterval(min(interval, SWITCH_INTERVAL))
+    _fast_switching(True)
     for worker in workers:
         worker.start()
     try:
@@ -175,11 +174,29 @@ def _run_pipelined(encoder: FrameEncoder, frames: Any, total: int, progress: Pro
         staged.put(None)
         for worker in workers:
             worker.join()
-        sys.setswitchinterval(interval)
+        _fast_switching(False)
     if failure:
         raise failure[0]
     if progress is not None:
         progress(total, total)
+
+
+_switching_lock = threading.Lock()
+_switching_users = [0, 0.0]  # exports running, the interval before the first of them began
+
+
+def _fast_switching(begin: bool) -> None:
+    """Lowers the GIL switch interval while any pipelined export runs (several may overlap); restores it after."""
+    with _switching_lock:
+        if begin:
+            if _switching_users[0] == 0:
+                _switching_users[1] = sys.getswitchinterval()
+                sys.setswitchinterval(min(_switching_users[1], SWITCH_INTERVAL))
+            _switching_users[0] += 1
+        else:
+            _switching_users[0] -= 1
+            if _switching_users[0] == 0:
+                sys.setswitchinterval(_switching_users[1])
 
 
 def _checked_frame(rgba: Any, index: int, shape: tuple[int, ...] | None) -> np.ndarray:
