@@ -5,6 +5,7 @@ from __future__ import annotations
 import errno
 import io
 import os
+import sys
 
 import av
 import numpy as np
@@ -288,3 +289,11 @@ def test_side_by_side_puts_left_then_right():
     assert both.shape == (4, 5, 4) and (both[:, :3] == 0).all() and (both[:, 3:] == 9).all()
     with pytest.raises(RenderError, match="heights 4 and 5"):
         side_by_side(left, np.zeros((5, 2, 4), np.uint8))
+
+
+def test_the_switch_interval_is_restored_after_an_export_even_a_failed_one(tmp_path):
+    before = sys.getswitchinterval()
+    write_video(tmp_path / "clip.mp4", 5, MovingSquare(), 30)
+    with pytest.raises(ValueError):
+        write_video(tmp_path / "clip.mp4", 5, MovingSquare(fail_at=3), 30)
+    assert sys.getswitchinterval() == before

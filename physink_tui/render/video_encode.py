@@ -7,7 +7,7 @@ from typing import Any
 
 import av
 import numpy as np
-from av.video.reformatter import VideoReformatter
+from av.video.reformatter import Interpolation, VideoReformatter
 
 from physink_tui.render.gif_palette import Palette
 from physink_tui.render.video_spec import VideoSpec
@@ -22,19 +22,23 @@ X264_CRF = "20"
 VP9_OPTIONS = {"deadline": "realtime", "cpu-used": "8", "row-mt": "1", "crf": "32", "b": "0"}
 """libvpx-vp9 in its fastest mode at constant quality (``b`` 0 lifts the bit-rate cap so ``crf`` rules)."""
 
-ENCODER_THREADS = 0
-"""Encoder threads (0: the encoder decides, two on two cores); see benchmarks/bench_video.py for the comparison."""
+ENCODER_THREADS = 1
+"""Encoder threads: one, on the pipeline's encoding thread. Drawing, conversion and encoding already run at once
+on three threads, and letting x264 add its own (0: it decides) was no faster on two cores (bench_video --sweep)."""
 
 SCALER_THREADS = 1
-"""Threads swscale uses for RGBA->yuv420p; one, because the drawing thread already keeps the other core busy."""
+"""Threads swscale uses for RGBA->yuv420p; one, because drawing and encoding keep the other core busy."""
+
+SCALER_INTERPOLATION = Interpolation.FAST_BILINEAR
+"""swscale's chroma filter; FAST_BILINEAR converts 1920x1080 RGBA in 4-5 ms where BILINEAR takes 5-6 ms, and
+flat drawn colours come out the same (the decoded-colour tests hold either way)."""
 
 
 class FrameEncoder:
-    """Encodes one video stream: `stage` copies a caller's frame into a pooled buffer (the caller may then reuse
-    its array), `encode` converts a staged buffer and muxes the packets, `finish` flushes the encoder.
-
-    `stage` and `encode` may run on different threads; the caller must not stage into a buffer that is still
-    being encoded (`write_video` keeps a pool of buffers for that).
+    """Encodes one video stream in three steps that may run on three threads, in frame order each:
+    `stage` copies a caller's frame into a pooled buffer (the caller may then reuse its array), `convert` makes
+    the encoder's pixel format from a staged buffer (the buffer may then be staged into again), `encode` encodes
+    and muxes; `finish` flushes the encoder. `write_video` keeps the pool of buffers.
     """
 
     def __init__(self, container: Any, spec: VideoSpec) -> None:
@@ -81,19 +85,22 @@ class FrameEncoder:
         """Copies ``rgba`` into ``buffer``; afterwards the caller may overwrite ``rgba``."""
         np.copyto(buffer[1], rgba)
 
-    def encode(self, buffer: tuple[Any, np.ndarray]) -> None:
-        """Converts the staged pixels, encodes them as the next frame and muxes what the encoder hands back."""
+    def convert(self, buffer: tuple[Any, np.ndarray]) -> Any:
+        """A new frame in the encoder's pixel format from the staged pixels; the buffer may then be reused."""
         frame, pixels = buffer
         if self.is_gif:
             if self.palette is None:
                 self.palette = Palette.from_frame(pixels)
-            out = av.VideoFrame.from_ndarray((self.palette.indices(pixels), self.palette.argb), format="pal8")
-        else:
-            out = self.reformatter.reformat(frame, format="yuv420p", threads=SCALER_THREADS)
-        out.pts = self.frames
-        out.time_base = self.time_base
+            return av.VideoFrame.from_ndarray((self.palette.indices(pixels), self.palette.argb), format="pal8")
+        return self.reformatter.reformat(frame, format="yuv420p", threads=SCALER_THREADS,
+                                         interpolation=SCALER_INTERPOLATION)
+
+    def encode(self, frame: Any) -> None:
+        """Encodes a converted frame as the next one and muxes the packets the encoder hands back."""
+        frame.pts = self.frames
+        frame.time_base = self.time_base
         self.frames += 1
-        self.container.mux(self.stream.encode(out))
+        self.container.mux(self.stream.encode(frame))
 
     def finish(self) -> None:
         """Flushes the frames the encoder still holds into the container."""
