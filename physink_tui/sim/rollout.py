@@ -34,12 +34,19 @@ from physink_tui.timeline.recorder import MOVING_SPEED, STILL_FRAMES, Observatio
 
 SETTLE_DAMPING = 0.05
 """Share of its velocity a body keeps after one second while the scene settles (drawn bodies come to rest fast)."""
-SETTLE_MAX_STEPS = 360
-"""At most this many steps (3 s) of settling: a scene that never rests (a swinging pendulum) starts anyway."""
+SETTLE_MAX_STEPS = 720
+"""At most this many steps (6 s) of settling: a scene that never rests (a swinging pendulum, a body falling for
+ever) starts anyway, its bodies moving as they were."""
+SETTLE_SPEED = MOVING_SPEED / 5
+"""Canvas units per second below which a body has settled: well below `MOVING_SPEED`, so that a spring creeping to
+its equilibrium does not start moving again once the damping of the settling is gone."""
 REST_STEPS = STILL_FRAMES
-"""Consecutive steps with every body below `MOVING_SPEED` after which a world is at rest."""
+"""Consecutive steps with every body slow enough after which a world is at rest (settled, or done)."""
 OFF_CANVAS_MARGIN = 0.25
 """Share of the canvas diagonal beyond the canvas's edges past which a body is gone (it can change nothing)."""
+FLUSH_DISTANCE = 10.0
+"""Canvas units a body may move while the scene settles (coming flush with what it rests on); one that moved
+further was not drawn at rest under gravity (the egg cracker's knife and egg), which a rollout flags."""
 EXPLODED_SPEED = 1.0e5
 """Canvas units per second (about 75 canvas heights a second) above which the physics has blown up."""
 
@@ -58,8 +65,9 @@ class RolloutResult:
         steps: physics steps recorded (the settling steps are not counted).
         stopped_because: `AT_REST` (every body still, or gone off the canvas), `OFF_CANVAS` (the same, at least one
             body gone), `MAX_SECONDS` or `EXPLODED` (NaN or a speed above `EXPLODED_SPEED`: discard the candidate).
-        flagged: one sentence per body and kind the first time it went faster than demo mode's speed limit or than
-            would tunnel through the thinnest body; empty for a trustworthy rollout.
+        flagged: one sentence per body that moved more than `FLUSH_DISTANCE` while settling, and per body and kind
+            the first time it went faster than demo mode's speed limit or than could pass through the thinnest body
+            in one step; empty for a trustworthy rollout of a scene drawn at rest.
     """
 
     timeline: Timeline
@@ -85,7 +93,7 @@ def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Paramet
         world.take_contacts()
         if _exploded(world, movable):
             break
-        moving = any(_speed(world, b) > MOVING_SPEED for b in movable if _inside(world, b, bounds))
+        moving = any(_speed(world, b) > SETTLE_SPEED for b in movable if _inside(world, b, bounds))
         still = 0 if moving else still + 1
         if still >= REST_STEPS:
             break
@@ -120,7 +128,7 @@ def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], p
         world.set_velocity(body, (vx, vy))
     limits = _speed_limits(world, bodies, world.dt)
     bounds = _bounds(canvas)
-    flagged: dict[tuple[str, str], str] = {}
+    flagged = _unsettled(applied, state)
     max_steps = int(max_seconds / world.dt + 1e-9)
     stopped, still, steps = MAX_SECONDS, 0, 0
     while steps < max_steps:
@@ -150,6 +158,17 @@ def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], p
 
 
 # -- internals ------------------------------------------------------------------------------------------------------
+
+def _unsettled(scene: Scene, state: WorldState) -> dict[tuple[str, str], str]:
+    out = {}
+    for body in scene.bodies():
+        m = state.bodies.get(body.id)
+        if m is not None:
+            moved = math.hypot(m.x - body.position[0], m.y - body.position[1])
+            if moved > FLUSH_DISTANCE:
+                out[(body.id, "settle")] = f"{body.id} moved {moved:.0f} units while the scene settled"
+    return out
+
 
 def _speed(world: World, body: str) -> float:
     vx, vy, _ = world.velocity(body)
