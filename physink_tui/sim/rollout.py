@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.speed import MIN_SPEED_LIMIT, SPEED_LIMIT
-from physink_tui.scene.physics.state import REST, WorldState
+from physink_tui.scene.physics.state import REST, Motion, WorldState
 from physink_tui.scene.physics.stepping import step_and_observe
 from physink_tui.scene.physics.world import GRAVITY, World
 from physink_tui.sim.parameters import Parameters, apply
@@ -43,7 +43,8 @@ its equilibrium does not start moving again once the damping of the settling is 
 REST_STEPS = STILL_FRAMES
 """Consecutive steps with every body slow enough after which a world is at rest (settled, or done)."""
 OFF_CANVAS_MARGIN = 0.25
-"""Share of the canvas diagonal beyond the canvas's edges past which a body is gone (it can change nothing)."""
+"""Share of the canvas diagonal beyond the canvas's sides or bottom past which a body is gone (nothing there can
+bring it back; a body thrown above the canvas falls back and is not gone)."""
 FLUSH_DISTANCE = 10.0
 """Canvas units a body may move while the scene settles (coming flush with what it rests on); one that moved
 further was not drawn at rest under gravity (the egg cracker's knife and egg), which a rollout flags."""
@@ -135,7 +136,7 @@ def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], p
         frame = step_and_observe(world, bodies)
         steps += 1
         t = round(steps * world.dt, 6)
-        if _exploded(world, movable):
+        if any(_blown(frame.motions[body]) for body in movable):
             stopped = EXPLODED
             break
         recorder.observe(Observation(t, frame.motions, frame.contacts, None, frame.touching))
@@ -175,12 +176,12 @@ def _speed(world: World, body: str) -> float:
     return math.hypot(vx, vy)
 
 
+def _blown(m: Motion) -> bool:
+    return not all(math.isfinite(v) for v in m) or math.hypot(m.vx, m.vy) > EXPLODED_SPEED
+
+
 def _exploded(world: World, bodies: list[str]) -> bool:
-    for body in bodies:
-        x, y, a, vx, vy, w = world.motion(body)
-        if not all(math.isfinite(v) for v in (x, y, a, vx, vy, w)) or math.hypot(vx, vy) > EXPLODED_SPEED:
-            return True
-    return False
+    return any(_blown(world.motion(body)) for body in bodies)
 
 
 def _bounds(canvas: tuple[float, float]) -> tuple[float, float, float, float]:
@@ -189,7 +190,8 @@ def _bounds(canvas: tuple[float, float]) -> tuple[float, float, float, float]:
 
 
 def _inside_xy(x: float, y: float, bounds: tuple[float, float, float, float]) -> bool:
-    return bounds[0] <= x <= bounds[2] and bounds[1] <= y <= bounds[3]
+    """Not gone: a body above the canvas falls back, one beyond its sides or below it never returns."""
+    return bounds[0] <= x <= bounds[2] and y <= bounds[3]
 
 
 def _inside(world: World, body: str, bounds: tuple[float, float, float, float]) -> bool:
