@@ -138,7 +138,7 @@ def test_settling_brings_the_egg_flush_and_holds_the_start_body() -> None:
     state = settled_state(s.scene, s.canvas, params)
     ball = s.scene.components["b2"]
     assert state.bodies["b2"][:2] == pytest.approx(ball.position, abs=1e-6)
-    assert all(math.hypot(m.vx, m.vy) < 5.0 for m in state.bodies.values())
+    assert all(math.hypot(state.bodies[b.id].vx, state.bodies[b.id].vy) < 5.0 for b in s.scene.bodies())
     # the knife and the egg are not held up under gravity: they fall while settling, and rollouts say so
     result = rollout(s.scene, s.canvas, params, max_seconds=1.0)
     assert any(flag.startswith("b6 moved") for flag in result.flagged)
@@ -198,3 +198,20 @@ def test_settled_state_forks_a_world() -> None:
     state = settled_state(s.scene, s.canvas, params)
     world = World.from_state(apply(s.scene, params), state)
     assert world.steps == state.step > 0
+
+
+def test_a_fork_puts_the_rope_where_settling_left_it() -> None:
+    """The knife falls while the egg cracker settles; the fork's rope still ends at the knife, not where drawn."""
+    s = demonstrated("egg_cracker")
+    params = seed(s.scene, s.timeline, s.canvas)
+    state = settled_state(s.scene, s.canvas, params)
+    assert any(key.startswith("r1/") for key in state.bodies)
+    scene = apply(s.scene, params)
+    forked = rollout_from(s.scene, state, s.canvas, params, max_seconds=0.1)
+    assert forked.stopped_because != EXPLODED
+    from physink_tui.sim.rollout import _place_links  # the fork's own step, checked on a world we can inspect
+    world = World.from_state(scene, state)
+    _place_links(world, scene, state)
+    end = world.to_scene(scene).components["r1"].points[-1]
+    knife = state.bodies["b5"]
+    assert math.hypot(end[0] - knife.x, end[1] - knife.y) < 100.0
