@@ -1,0 +1,256 @@
+"""Runs one candidate: the scene with its parameters under gravity, settled, then recorded as a simulated timeline
+by demo mode's recorder until nothing can change it any more; no search, no comparison, no clock.
+
+A rollout (thesis 3.4.2) is in two parts. `settled_state`: the world of ``apply(scene, parameters)`` under gravity
+with the start-moved bodies held still (kinematic at their drawn pose), lightly damped, stepped unrecorded until
+every body rests or `SETTLE_MAX_STEPS`; bodies drawn resting on others come flush (the egg on its paddles) and that
+settling is no event. `rollout_from`: a world forked from that state (`World.from_state`), undamped, the start
+bodies given their initial velocities, stepped and observed exactly as demo mode observes (`step_and_observe`, the
+recorder of `recorder_for`, no pen); a body starting to move by itself with nothing to explain it gets the start
+event, as in a demonstration. `rollout` is the two in a row, so a full rollout and a fork agree bit for bit.
+
+`World.state()` holds the bodies only, so a settled state also carries every rope link's motion, under the key
+``"<rope id>/<link index>"`` (which `World.from_state` ignores); `rollout_from` puts the links back, else a rope
+whose ends moved while settling would start the rollout stretched from where it was drawn to where its ends are.
+
+A fork is valid for candidates whose `Parameters.structure()` equals the settled one's: settling depends on the
+masses, frictions and springs and on which bodies are held, not on the initial velocities.
+
+Speed: `World.limit_speeds` is demo mode's and is never applied here; a body faster than demo mode's limit for it,
+or than could pass through the thinnest body in one step (the two half-sizes per step), is flagged. NaN or a speed above
+`EXPLODED_SPEED` stops the rollout as "exploded" (the search discards and counts it).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+from physink_tui.scene.components import Rope, Scene
+from physink_tui.scene.physics.speed import MIN_SPEED_LIMIT, SPEED_LIMIT
+from physink_tui.scene.physics.state import REST, Motion, WorldState
+from physink_tui.scene.physics.stepping import step_and_observe
+from physink_tui.scene.physics.world import GRAVITY, World
+from physink_tui.sim.parameters import Parameters, apply
+from physink_tui.timeline.demo_setup import recorder_for
+from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.recorder import MOVING_SPEED, STILL_FRAMES, Observation
+
+SETTLE_DAMPING = 0.05
+"""Share of its velocity a body keeps after one second while the scene settles (drawn bodies come to rest fast)."""
+SETTLE_MAX_STEPS = 720
+"""At most this many steps (6 s) of settling: a scene that never rests (a swinging pendulum, a body falling for
+ever) starts anyway, its bodies moving as they were."""
+SETTLE_SPEED = MOVING_SPEED / 5
+"""Canvas units per second below which a body has settled: well below `MOVING_SPEED`, so that a spring creeping to
+its equilibrium does not start moving again once the damping of the settling is gone."""
+REST_STEPS = STILL_FRAMES
+"""Consecutive steps with every body slow enough after which a world is at rest (settled, or done)."""
+OFF_CANVAS_MARGIN = 0.25
+"""Share of the canvas diagonal beyond the canvas's sides or bottom past which a body is gone (nothing there can
+bring it back; a body thrown above the canvas falls back and is not gone)."""
+FLUSH_DISTANCE = 10.0
+"""Canvas units a body may move while the scene settles (coming flush with what it rests on); one that moved
+further was not drawn at rest under gravity (the egg cracker's knife and egg), which a rollout flags."""
+EXPLODED_SPEED = 1.0e5
+"""Canvas units per second (about 75 canvas heights a second) above which the physics has blown up."""
+
+AT_REST = "at rest"
+OFF_CANVAS = "off canvas"
+MAX_SECONDS = "max seconds"
+EXPLODED = "exploded"
+
+
+@dataclass(frozen=True, slots=True)
+class RolloutResult:
+    """What one rollout gave.
+
+    Attributes:
+        timeline: the simulated timeline (movements still open when it stopped are closed at the last step).
+        steps: physics steps recorded (the settling steps are not counted).
+        stopped_because: `AT_REST` (every body still, or gone off the canvas), `OFF_CANVAS` (the same, at least one
+            body gone), `MAX_SECONDS` or `EXPLODED` (NaN or a speed above `EXPLODED_SPEED`: discard the candidate).
+        flagged: one sentence per body that moved more than `FLUSH_DISTANCE` while settling, and per body and kind
+            the first time it went faster than demo mode's speed limit or than could pass through the thinnest body
+            in one step; empty for a trustworthy rollout of a scene drawn at rest.
+    """
+
+    timeline: Timeline
+    steps: int
+    stopped_because: str
+    flagged: tuple[str, ...] = ()
+
+
+def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Parameters) -> WorldState:
+    """The world of ``scene`` with ``parameters`` after settling (see the module docstring); ``canvas`` bounds the
+    bodies that count (one gone off the canvas need not rest)."""
+    applied = apply(scene, parameters)
+    world = World.from_scene(applied, gravity=GRAVITY)
+    world.space.damping = SETTLE_DAMPING
+    held = {b: world.pose(b) for b in parameters.start_bodies}
+    for body, pose in held.items():
+        world.follow(body, pose, REST)
+    movable = [b.id for b in applied.bodies() if not applied.is_fixed(b.id) and b.id not in held]
+    bounds = _bounds(canvas)
+    still = 0
+    for _ in range(SETTLE_MAX_STEPS):
+        world.step(1)
+        world.take_contacts()
+        if _exploded(world, movable):
+            break
+        moving = any(_speed(world, b) > SETTLE_SPEED for b in movable if _inside(world, b, bounds))
+        still = 0 if moving else still + 1
+        if still >= REST_STEPS:
+            break
+    for body in held:
+        world.let_go(body)
+        world.place(body, held[body], REST)
+    return _with_links(world, applied)
+
+
+def rollout(scene: Scene, canvas: tuple[float, float], parameters: Parameters, *,
+            max_seconds: float) -> RolloutResult:
+    """Settle ``scene`` with ``parameters``, then record its simulated timeline (see the module docstring).
+
+    Raises:
+        SimulationError: parameters that do not fit the scene or are out of range (`parameters.apply`).
+    """
+    return rollout_from(scene, settled_state(scene, canvas, parameters), canvas, parameters,
+                        max_seconds=max_seconds)
+
+
+def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], parameters: Parameters, *,
+                 max_seconds: float) -> RolloutResult:
+    """Record the simulated timeline from ``state`` (from `settled_state` of ``scene`` with parameters of the same
+    `Parameters.structure()`), the start bodies given ``parameters.velocities``, for at most ``max_seconds``."""
+    applied = apply(scene, parameters)
+    world = World.from_state(applied, state)
+    _place_links(world, applied, state)
+    settled = world.to_scene(applied)
+    recorder = recorder_for(settled, canvas, world.dt)
+    bodies = tuple(b.id for b in applied.bodies())
+    movable = [b for b in bodies if not applied.is_fixed(b)]
+    for body, (vx, vy) in sorted(parameters.velocities.items()):
+        world.set_velocity(body, (vx, vy))
+    limits = _speed_limits(world, bodies, world.dt)
+    bounds = _bounds(canvas)
+    flagged = _unsettled(applied, state)
+    max_steps = int(max_seconds / world.dt + 1e-9)
+    stopped, still, steps = MAX_SECONDS, 0, 0
+    while steps < max_steps:
+        frame = step_and_observe(world, bodies)
+        steps += 1
+        t = round(steps * world.dt, 6)
+        if any(_blown(frame.motions[body]) for body in movable):
+            stopped = EXPLODED
+            break
+        recorder.observe(Observation(t, frame.motions, frame.contacts, None, frame.touching))
+        gone = False
+        moving = False
+        for body in movable:
+            m = frame.motions[body]
+            if not _inside_xy(m.x, m.y, bounds):
+                gone = True
+                continue
+            speed = math.hypot(m.vx, m.vy)
+            moving = moving or speed > MOVING_SPEED
+            _flag(flagged, body, speed, t, limits)
+        still = 0 if moving else still + 1
+        if still >= REST_STEPS:  # the recorder's own stop never fires for a body falling off the canvas
+            stopped = OFF_CANVAS if gone else AT_REST
+            break
+    timeline = recorder.finish()
+    return RolloutResult(timeline, steps, stopped, tuple(flagged.values()))
+
+
+# -- internals ------------------------------------------------------------------------------------------------------
+
+def _link_key(rope_id: str, index: int) -> str:
+    return f"{rope_id}/{index}"
+
+
+def _with_links(world: World, scene: Scene) -> WorldState:
+    """The world's state, every rope link's motion included (see the module docstring)."""
+    state = world.state()
+    bodies = dict(state.bodies)
+    for rope in scene.components.values():
+        if isinstance(rope, Rope):
+            for i, link in enumerate(world.links_of(rope.id)):
+                v = link.velocity
+                bodies[_link_key(rope.id, i)] = Motion(link.position.x, link.position.y, link.angle, v.x, v.y,
+                                                       link.angular_velocity)
+    return replace(state, bodies=bodies)
+
+
+def _place_links(world: World, scene: Scene, state: WorldState) -> None:
+    for rope in scene.components.values():
+        if isinstance(rope, Rope):
+            for i, link in enumerate(world.links_of(rope.id)):
+                m = state.bodies.get(_link_key(rope.id, i))
+                if m is not None:
+                    link.position, link.angle = (m.x, m.y), m.angle
+                    link.velocity, link.angular_velocity = (m.vx, m.vy), m.w
+                    world.space.reindex_shapes_for_body(link)
+
+
+def _unsettled(scene: Scene, state: WorldState) -> dict[tuple[str, str], str]:
+    out = {}
+    for body in scene.bodies():
+        m = state.bodies.get(body.id)
+        if m is not None:
+            moved = math.hypot(m.x - body.position[0], m.y - body.position[1])
+            if moved > FLUSH_DISTANCE:
+                out[(body.id, "settle")] = f"{body.id} moved {moved:.0f} units while the scene settled"
+    return out
+
+
+def _speed(world: World, body: str) -> float:
+    vx, vy, _ = world.velocity(body)
+    return math.hypot(vx, vy)
+
+
+def _blown(m: Motion) -> bool:
+    return not all(math.isfinite(v) for v in m) or math.hypot(m.vx, m.vy) > EXPLODED_SPEED
+
+
+def _exploded(world: World, bodies: list[str]) -> bool:
+    return any(_blown(world.motion(body)) for body in bodies)
+
+
+def _bounds(canvas: tuple[float, float]) -> tuple[float, float, float, float]:
+    margin = OFF_CANVAS_MARGIN * math.hypot(*canvas)
+    return (-margin, -margin, canvas[0] + margin, canvas[1] + margin)
+
+
+def _inside_xy(x: float, y: float, bounds: tuple[float, float, float, float]) -> bool:
+    """Not gone: a body above the canvas falls back, one beyond its sides or below it never returns."""
+    return bounds[0] <= x <= bounds[2] and y <= bounds[3]
+
+
+def _inside(world: World, body: str, bounds: tuple[float, float, float, float]) -> bool:
+    x, y, _ = world.pose(body)
+    return _inside_xy(x, y, bounds)
+
+
+def _half_size(world: World, body: str) -> float:
+    shapes = world.shapes_of(body)
+    return min((min(s.bb.right - s.bb.left, s.bb.top - s.bb.bottom) / 2 for s in shapes), default=math.inf)
+
+
+def _speed_limits(world: World, bodies: tuple[str, ...], dt: float) -> dict[str, tuple[float, float]]:
+    """Per body: demo mode's speed limit for it (`speed.limit_speed`) and the speed at which it could pass through
+    the thinnest body of the scene in one step (its own half-size plus the thinnest one's, per step)."""
+    halves = {b: _half_size(world, b) for b in bodies}
+    thinnest = min(halves.values(), default=math.inf)
+    return {b: (max(SPEED_LIMIT * halves[b] / dt, MIN_SPEED_LIMIT), (halves[b] + thinnest) / dt) for b in bodies}
+
+
+def _flag(flagged: dict[tuple[str, str], str], body: str, speed: float, t: float,
+          limits: dict[str, tuple[float, float]]) -> None:
+    demo, tunnel = limits[body]
+    if speed > demo and (body, "demo") not in flagged:
+        flagged[(body, "demo")] = f"{body} reached {speed:.0f} units/s at {t:.3f} s, beyond demo mode's limit " \
+                                  f"{demo:.0f}"
+    if speed > tunnel and (body, "tunnel") not in flagged:
+        flagged[(body, "tunnel")] = f"{body} reached {speed:.0f} units/s at {t:.3f} s: it may tunnel through the " \
+                                    f"thinnest body ({tunnel:.0f} units/s)"
