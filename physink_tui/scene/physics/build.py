@@ -12,9 +12,11 @@ every step a contact lasts, and a Python pre-solve callback for every contact on
 slower than pymunk alone. So each distinct material gets a *surface type*, a small positive ``collision_type``; a
 shape's ``elasticity`` is 0.0 (Chipmunk's product is then the inelastic value every contact has after its first
 step, and the world's begin callback sets the pair's restitution, `Built.bounces`, on a fast first contact) and its
-``friction`` is its material's; the pairs of surfaces whose product is not their mean friction are listed in
-`Built.frictions`, and the world registers a pre-solve callback for those pairs alone, writing the mean back. Read
-a shape's material values with `Built.surface`.
+``friction`` is a *grip* chosen so that the product is exactly the mean friction for as many pairs of surfaces as
+can be (`_grip`; the project's materials come first: with boxes and balls at 1.0, freeform's 0.0 becomes 0.5, exact
+against both, wrong only against itself); the pairs left are listed in `Built.frictions`, and the world registers a
+pre-solve callback for those pairs alone, writing the mean back. Read a shape's material values with
+`Built.surface`.
 """
 
 from __future__ import annotations
@@ -27,7 +29,18 @@ import pymunk
 import shapely
 
 from physink_tui.errors import SceneError
-from physink_tui.scene.components import BACKGROUND, Body, Component, Joint, Material, Point, Rope, Scene, Spring
+from physink_tui.scene.components import (
+    BACKGROUND,
+    MATERIALS,
+    Body,
+    Component,
+    Joint,
+    Material,
+    Point,
+    Rope,
+    Scene,
+    Spring,
+)
 from physink_tui.scene.physics.state import Pose
 
 POLYLINE_RADIUS = 2.0
@@ -69,6 +82,7 @@ class Built:
         paths: rope id -> its link ends when built (`rope_path` of its points).
         welds: the pairs of pymunk bodies welded together (not counting welds to the background).
         surfaces: surface type (a shape's ``collision_type``) -> its material's (restitution, friction).
+        grips: surface type -> the ``friction`` its shapes carry (see the module docstring).
         bounces: (surface type, surface type), both orders -> the larger restitution of the two.
         frictions: (surface type, surface type), one order -> the mean friction, for the pairs whose product (what
             Chipmunk computes) is not the mean.
@@ -86,9 +100,16 @@ class Built:
     paths: dict[str, tuple[Point, ...]] = field(default_factory=dict)
     welds: list[tuple[pymunk.Body, pymunk.Body]] = field(default_factory=list)
     surfaces: dict[int, tuple[float, float]] = field(default_factory=dict)
+    grips: dict[int, float] = field(default_factory=dict)
     bounces: dict[tuple[int, int], float] = field(default_factory=dict)
     frictions: dict[tuple[int, int], float] = field(default_factory=dict)
     _types: dict[tuple[float, float], int] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        # The project's own materials first, in a fixed order, so their grips do not depend on which a scene has
+        # first (a freeform body drawn before any box would keep a grip of 0.0, inexact against boxes and balls).
+        for material in (*MATERIALS.values(), ROPE_MATERIAL):
+            self.surface_type(material.restitution, material.friction)
 
     def surface_type(self, restitution: float, friction: float) -> int:
         """The surface type of a material, extending `bounces` and `frictions` with its pairs when it is new."""
@@ -97,10 +118,12 @@ class Built:
             kind = len(self._types) + 1  # collision type 0 is pymunk's default: left to shapes not built here
             self._types[(restitution, friction)] = kind
             self.surfaces[kind] = (restitution, friction)
+            self.grips[kind] = grip = _grip(friction, [(f, self.grips[o]) for o, (_, f) in self.surfaces.items()
+                                                       if o != kind])
             for other, (e, f) in self.surfaces.items():
                 self.bounces[kind, other] = self.bounces[other, kind] = max(restitution, e)
                 mean = (friction + f) / 2
-                if friction * f != mean:
+                if grip * self.grips[other] != mean:
                     self.frictions[other, kind] = mean
         return kind
 
@@ -112,7 +135,26 @@ class Built:
         """Gives ``shape`` the surface of a material: its surface type, no elasticity of its own, the friction."""
         shape.collision_type = self.surface_type(restitution, friction)
         shape.elasticity = 0.0
-        shape.friction = friction
+        shape.friction = self.grips[shape.collision_type]
+
+
+def _grip(friction: float, others: list[tuple[float, float]]) -> float:
+    """The ``friction`` for the shapes of a new surface: of the candidates (its own friction, and for each surface
+    already there the grip that would make that pair exact), the one whose product with itself and with the others'
+    grips equals the mean friction exactly for the most pairs; the first such, so ties keep the material's own value.
+
+    ``others`` holds each existing surface's (friction, grip).
+
+    >>> _grip(0.0, [(1.0, 1.0)])  # against a grip of 1.0, 0.5 gives (1.0 + 0.0) / 2 exactly
+    0.5
+    """
+    candidates = [friction] + [(friction + f) / 2 / g for f, g in others if g != 0.0]
+
+    def exact(grip: float) -> int:
+        pairs = [(friction, grip), *others]
+        return sum(grip * g == (friction + f) / 2 for f, g in pairs)
+
+    return max(candidates, key=exact)  # max keeps the first of equals
 
 
 def build(scene: Scene, space: pymunk.Space) -> Built:

@@ -72,7 +72,7 @@ class ContactListener:
         restitution = self._bounces[sa.collision_type, sb.collision_type]
         if restitution > 0.0:
             points = arbiter.contact_point_set
-            if _approach_speed(arbiter, points) > BOUNCE_THRESHOLD:
+            if _approach_speed(sa.body, sb.body, points) > BOUNCE_THRESHOLD:
                 # Chipmunk multiplies the shapes' elasticities (0.0) again on the contact's next step: one bounce.
                 arbiter.restitution = restitution
         a, b = self._owner.get(sa), self._owner.get(sb)
@@ -106,11 +106,10 @@ def set_friction(arbiter: pymunk.Arbiter, space: pymunk.Space, friction: float) 
     arbiter.friction = friction
 
 
-def _approach_speed(arbiter: pymunk.Arbiter, points: pymunk.ContactPointSet) -> float:
-    """How fast the two shapes close along the contact normal at the first contact point (> 0: approaching)."""
+def _approach_speed(a: pymunk.Body, b: pymunk.Body, points: pymunk.ContactPointSet) -> float:
+    """How fast bodies ``a`` and ``b`` close along the contact normal at the first contact point (> 0: approaching)."""
     if not points.points:
         return 0.0
     at = points.points[0].point_a
-    a, b = arbiter.bodies
     va, vb = a.velocity_at_world_point(at), b.velocity_at_world_point(at)
     return (va.x - vb.x) * points.normal.x + (va.y - vb.y) * points.normal.y
