@@ -145,8 +145,10 @@ def _grip(friction: float, others: list[tuple[float, float]]) -> float:
 
     ``others`` holds each existing surface's (friction, grip).
 
-    >>> _grip(0.0, [(1.0, 1.0)])  # against a grip of 1.0, 0.5 gives (1.0 + 0.0) / 2 exactly
+    >>> _grip(0.0, [(1.0, 1.0), (1.0, 1.0)])  # 0.5 makes both pairs exact (0.5 * 1.0 == (1.0 + 0.0) / 2), not itself
     0.5
+    >>> _grip(0.0, [(1.0, 1.0)])  # one pair either way: the material's own friction
+    0.0
     """
     candidates = [friction] + [(friction + f) / 2 / g for f, g in others if g != 0.0]
 
