@@ -6,9 +6,10 @@ Builds a scene in a 1000 x 1000 canvas: a fixed floor, two walls and three fixed
 boxes, balls and concave L-shaped polygons, sizes 16-40 units) start on a grid above the floor, so after falling
 they pile up and touch; each rope hangs from a peg or a wall to a ball. The world steps ``--settle`` steps first (the
 pile forms), then ``--steps`` steps are timed one by one with `time.perf_counter`. Prints Markdown rows for
-docs/BENCHMARKS.md: the world as built (a pre-solve callback gives every contact the larger restitution and the mean
-friction; a begin callback records contacts) and, to show what recording costs, the same world without the begin
-callback. (The pre-solve callback cannot be left out: shapes carry surface codes, see world_build.py.)
+docs/BENCHMARKS.md: the world as built (a begin callback records contacts and gives a fast first contact the larger
+restitution; a pre-solve callback gives the mean friction to the few pairs of surfaces whose product is not it, see
+build.py) and, to show what recording costs, the same world without the begin callback (no records, no bounces).
+bench_contacts.py sets the world beside raw pymunk.
 """
 
 from __future__ import annotations
@@ -108,11 +109,11 @@ def main(argv: list[str] | None = None) -> int:
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     world = World.from_scene(scene)
     times, began = time_steps(world, args.settle, args.steps)
-    print(row("as built (pre-solve: max restitution, mean friction; begin: contact records)", world, times, began))
+    print(row("as built (begin: records, bounces; pre-solve: mean friction where needed)", world, times, began))
     world = World.from_scene(scene)
     world.space.on_collision(begin=pymunk.empty_callback)
     times, _ = time_steps(world, args.settle, args.steps)
-    print(row("the same without contact records (no begin callback)", world, times, 0))
+    print(row("the same without the begin callback (no records, no bounces)", world, times, 0))
     return 0
 
 

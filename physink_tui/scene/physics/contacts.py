@@ -1,10 +1,10 @@
-"""Contacts in the physics world: records where contacts begin and sets each contact's material; no stepping.
+"""Contacts in the physics world: records where contacts begin and gives each contact its material; no stepping.
 
-The world's pymunk space calls a `ContactListener` for every contact: ``begin`` appends a frozen
-`ContactRecord` (one per pair of components per step) and counts the pair as touching until ``separate``;
-``pre_solve`` turns the product of the two shapes' surface
-codes (see build.py) back into the pair's restitution (the larger) and friction (the mean), bouncing only
-on a fast first contact.
+The world's pymunk space calls a `ContactListener` when a contact begins and ends: ``begin`` appends a frozen
+`ContactRecord` (one per pair of components per step), counts the pair as touching until ``separate``, and gives a
+contact that begins faster than `BOUNCE_THRESHOLD` the larger restitution of its two surfaces (build.py gives
+shapes no elasticity, so every other contact and every later step of this one is inelastic). `set_friction` is the
+pre-solve callback the world registers for the pairs of surfaces whose friction Chipmunk's product gets wrong.
 """
 
 from __future__ import annotations
@@ -45,9 +45,9 @@ class ContactRecord:
 class ContactListener:
     """Collision callbacks for one world: contact records, and the materials of each contact."""
 
-    def __init__(self, owner: dict[pymunk.Shape, str], contact_values: dict[float, tuple[float, float]]) -> None:
+    def __init__(self, owner: dict[pymunk.Shape, str], bounces: dict[tuple[int, int], float]) -> None:
         self._owner = owner
-        self._contact_values = contact_values
+        self._bounces = bounces
         self._records: list[ContactRecord] = []
         self._touched: set[tuple[str, str]] = set()
         self._touching: dict[frozenset[str], int] = {}
@@ -68,6 +68,13 @@ class ContactListener:
 
     def begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
         sa, sb = arbiter.shapes
+        points = None
+        restitution = self._bounces[sa.collision_type, sb.collision_type]
+        if restitution > 0.0:
+            points = arbiter.contact_point_set
+            if _approach_speed(sa.body, sb.body, points) > BOUNCE_THRESHOLD:
+                # Chipmunk multiplies the shapes' elasticities (0.0) again on the contact's next step: one bounce.
+                arbiter.restitution = restitution
         a, b = self._owner.get(sa), self._owner.get(sb)
         if a is None or b is None:
             return
@@ -76,8 +83,9 @@ class ContactListener:
         if (a, b) in self._touched or (b, a) in self._touched:
             return  # a polygon's triangles or a polyline's segments: one contact per pair per step
         self._touched.add((a, b))
-        points = arbiter.contact_point_set
-        at = points.points[0].point_a if points.points else arbiter.shapes[0].body.position
+        if points is None:
+            points = arbiter.contact_point_set
+        at = points.points[0].point_a if points.points else sa.body.position
         self._records.append(ContactRecord(self.step, a, b, (at[0], at[1]), (points.normal.x, points.normal.y)))
 
     def separate(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
@@ -92,21 +100,16 @@ class ContactListener:
         else:
             self._touching.pop(pair, None)
 
-    def pre_solve(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
-        # Chipmunk multiplied the two shapes' surface codes (build.py): the product names the two materials.
-        restitution, friction = self._contact_values[arbiter.restitution]
-        if restitution > 0.0 and not (arbiter.is_first_contact and _approach_speed(arbiter) > BOUNCE_THRESHOLD):
-            restitution = 0.0
-        arbiter.restitution = restitution
-        arbiter.friction = friction
+
+def set_friction(arbiter: pymunk.Arbiter, space: pymunk.Space, friction: float) -> None:
+    """Pre-solve callback for one pair of surfaces (``friction`` is its mean): Chipmunk sets the product each step."""
+    arbiter.friction = friction
 
 
-def _approach_speed(arbiter: pymunk.Arbiter) -> float:
-    """How fast the two shapes close along the contact normal at the first contact point (> 0: approaching)."""
-    points = arbiter.contact_point_set
+def _approach_speed(a: pymunk.Body, b: pymunk.Body, points: pymunk.ContactPointSet) -> float:
+    """How fast bodies ``a`` and ``b`` close along the contact normal at the first contact point (> 0: approaching)."""
     if not points.points:
         return 0.0
     at = points.points[0].point_a
-    a, b = arbiter.bodies
     va, vb = a.velocity_at_world_point(at), b.velocity_at_world_point(at)
     return (va.x - vb.x) * points.normal.x + (va.y - vb.y) * points.normal.y

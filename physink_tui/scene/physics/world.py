@@ -17,7 +17,7 @@ import pymunk
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Point, Rope, Scene, Spring
 from physink_tui.scene.physics.build import Built, build
-from physink_tui.scene.physics.contacts import ContactListener, ContactRecord
+from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction
 from physink_tui.scene.physics.speed import limit_speed
 from physink_tui.scene.physics.state import REST, Motion, Pose, Velocity, WorldState
 
@@ -59,9 +59,9 @@ class World:
     them. A drag may still move one (it is made dynamic for the drag and static again on release).
 
     Contacts take the larger restitution and the mean friction of the two shapes (DESIGN.md; pymunk would multiply
-    them), set on each arbiter before it is solved; restitution acts only when a contact begins faster than
-    `BOUNCE_THRESHOLD`. The world owns the space's collision handler: shapes carry surface codes, not their
-    materials' values (see build.py), so no other handler may replace it.
+    them); restitution acts only when a contact begins faster than `BOUNCE_THRESHOLD`. The world owns the space's
+    collision handlers: shapes carry no elasticity and a surface type as their collision type (see build.py), so no
+    other handler may replace them.
 
     >>> from physink_tui.scene.components import MATERIALS
     >>> ball = Body("b1", "circle", (), 20.0, (100.0, 100.0), 0.0, MATERIALS["round"])
@@ -77,13 +77,14 @@ class World:
         self._space = built.space
         self._dt = dt
         self._steps = 0
-        self._listener = ContactListener(built.owner, built.contact_values)
+        self._listener = ContactListener(built.owner, built.bounces)
+        self._frictions = 0  # how many of `Built.frictions` have their pre-solve callback
         self._live: set[pymunk.Constraint] = set()
         self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
         self._drag: _Drag | None = None
         self._by_z = sorted(built.z, key=built.z.__getitem__)
-        self._space.on_collision(begin=self._listener.begin, pre_solve=self._listener.pre_solve,
-                                 separate=self._listener.separate)
+        self._space.on_collision(begin=self._listener.begin, separate=self._listener.separate)
+        self._handle_frictions()
         self._sync_constraints()
 
     @classmethod
@@ -210,6 +211,8 @@ class World:
 
     def step(self, n: int = 1) -> None:
         """Advances exactly ``n`` steps of ``dt``."""
+        if len(self._built.frictions) != self._frictions:
+            self._handle_frictions()  # a component added since (`live.LiveWorld`) brought a new material
         for _ in range(n):
             self._steps += 1
             self._listener.next_step()
@@ -404,6 +407,12 @@ class World:
                         group.add(other)
                         frontier.append(other)
         return group
+
+    def _handle_frictions(self) -> None:
+        """Registers `contacts.set_friction` for the pairs of surfaces not registered yet (pairs are only added)."""
+        for (a, b), friction in list(self._built.frictions.items())[self._frictions:]:
+            self._space.on_collision(a, b, pre_solve=set_friction, data=friction)
+        self._frictions = len(self._built.frictions)
 
     def _sync_constraints(self) -> None:
         """Puts in the space exactly the constraints with at least one dynamic body (static-static ones give NaNs)."""
