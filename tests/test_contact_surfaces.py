@@ -15,22 +15,22 @@ from physink_tui.scene.physics.world import World
 def test_every_pair_of_surfaces_gets_its_mean_friction_from_the_grips_or_a_callback() -> None:
     built = Built(pymunk.Space())
     for restitution, friction in ((0.3, 0.4), (0.6, 0.8), (0.0, 0.0), (0.9, 0.35)):
-        built.surface_type(restitution, friction)
-    for a, b in itertools.product(built.surfaces, repeat=2):
-        mean = (built.surfaces[a][1] + built.surfaces[b][1]) / 2
-        called = built.frictions.get((a, b), built.frictions.get((b, a)))
-        assert (called if called is not None else built.grips[a] * built.grips[b]) == mean
-    n = len(built.surfaces)
-    assert len(built.frictions) < n * (n + 1) // 2  # some pairs need no callback
+        built.surfaces.type_of(restitution, friction)
+    for a, b in itertools.product(built.surfaces.materials, repeat=2):
+        mean = (built.surfaces.materials[a][1] + built.surfaces.materials[b][1]) / 2
+        called = built.surfaces.frictions.get((a, b), built.surfaces.frictions.get((b, a)))
+        assert (called if called is not None else built.surfaces.grips[a] * built.surfaces.grips[b]) == mean
+    n = len(built.surfaces.materials)
+    assert len(built.surfaces.frictions) < n * (n + 1) // 2  # some pairs need no callback
 
 
 def test_the_project_materials_need_a_callback_only_for_freeform_on_freeform_and_ropes() -> None:
     built = Built(pymunk.Space())
-    kinds = {name: built.surface_type(m.restitution, m.friction) for name, m in MATERIALS.items()}
-    assert built.grips[kinds["box"]] == built.grips[kinds["round"]] == 1.0
-    assert built.grips[kinds["freeform"]] == 0.5
-    assert (kinds["freeform"], kinds["freeform"]) in built.frictions
-    assert len(built.frictions) == 3
+    kinds = {name: built.surfaces.type_of(m.restitution, m.friction) for name, m in MATERIALS.items()}
+    assert built.surfaces.grips[kinds["box"]] == built.surfaces.grips[kinds["round"]] == 1.0
+    assert built.surfaces.grips[kinds["freeform"]] == 0.5
+    assert (kinds["freeform"], kinds["freeform"]) in built.surfaces.frictions
+    assert len(built.surfaces.frictions) == 3
 
 
 def pile() -> Scene:

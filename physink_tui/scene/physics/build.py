@@ -5,18 +5,7 @@ component into pymunk bodies, shapes and constraints and records which component
 added to the space here; constraints are not: `World` adds only those with at least one dynamic end (a constraint
 between two static bodies makes Chipmunk divide by a zero mass and fills the space with NaNs), and re-decides when
 it freezes or drags bodies.
-
-Surfaces. DESIGN.md wants a contact to take the larger restitution and the mean friction of its two shapes, and
-`contacts.BOUNCE_THRESHOLD` a bounce only when a contact begins fast; Chipmunk multiplies the two shapes' values on
-every step a contact lasts, and a Python pre-solve callback for every contact on every step made stepping four times
-slower than pymunk alone. So each distinct material gets a *surface type*, a small positive ``collision_type``; a
-shape's ``elasticity`` is 0.0 (Chipmunk's product is then the inelastic value every contact has after its first
-step, and the world's begin callback sets the pair's restitution, `Built.bounces`, on a fast first contact) and its
-``friction`` is a *grip* chosen so that the product is exactly the mean friction for as many pairs of surfaces as
-can be (`_grip`; the project's materials come first: with boxes and balls at 1.0, freeform's 0.0 becomes 0.5, exact
-against both, wrong only against itself); the pairs left are listed in `Built.frictions`, and the world registers a
-pre-solve callback for those pairs alone, writing the mean back. Read a shape's material values with
-`Built.surface`.
+How shapes get their materials' restitution and friction is `surfaces.py`'s.
 """
 
 from __future__ import annotations
@@ -31,25 +20,21 @@ import shapely
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import (
     BACKGROUND,
-    MATERIALS,
     Body,
     Component,
     Joint,
-    Material,
     Point,
     Rope,
     Scene,
     Spring,
 )
 from physink_tui.scene.physics.state import Pose
+from physink_tui.scene.physics.surfaces import ROPE_MATERIAL, Surfaces
 
 POLYLINE_RADIUS = 2.0
 """Half-thickness of an open polyline body's segments, in canvas units (a ramp is a 4-unit strip)."""
 ROPE_RADIUS = 1.5
 """Half-thickness of a rope link."""
-ROPE_MATERIAL = Material(0.05, 0.0, 0.5)
-"""Rope links: 1/20 of a solid's density, so a rope is light next to what it holds (DESIGN.md calls ropes massless)
-while its links still drag along; no bounce of their own (a contact takes the other body's); middling grip."""
 ROPE_LINK_LENGTH = 15.0
 """Target length of one rope link; a rope gets between `ROPE_MIN_LINKS` and `ROPE_MAX_LINKS` links."""
 ROPE_MIN_LINKS = 8
@@ -81,11 +66,7 @@ class Built:
         carriers: joint, spring or rope id -> for each of its scene points, the pymunk body that carries it.
         paths: rope id -> its link ends when built (`rope_path` of its points).
         welds: the pairs of pymunk bodies welded together (not counting welds to the background).
-        surfaces: surface type (a shape's ``collision_type``) -> its material's (restitution, friction).
-        grips: surface type -> the ``friction`` its shapes carry (see the module docstring).
-        bounces: (surface type, surface type), both orders -> the larger restitution of the two.
-        frictions: (surface type, surface type), one order -> the mean friction, for the pairs whose product (what
-            Chipmunk computes) is not the mean.
+        surfaces: the materials' surface types, grips, bounces and frictions (`surfaces.Surfaces`).
     """
 
     space: pymunk.Space
@@ -99,65 +80,7 @@ class Built:
     carriers: dict[str, tuple[pymunk.Body, ...]] = field(default_factory=dict)
     paths: dict[str, tuple[Point, ...]] = field(default_factory=dict)
     welds: list[tuple[pymunk.Body, pymunk.Body]] = field(default_factory=list)
-    surfaces: dict[int, tuple[float, float]] = field(default_factory=dict)
-    grips: dict[int, float] = field(default_factory=dict)
-    bounces: dict[tuple[int, int], float] = field(default_factory=dict)
-    frictions: dict[tuple[int, int], float] = field(default_factory=dict)
-    _types: dict[tuple[float, float], int] = field(default_factory=dict)
-
-    def __post_init__(self) -> None:
-        # The project's own materials first, in a fixed order, so their grips do not depend on which a scene has
-        # first (a freeform body drawn before any box would keep a grip of 0.0, inexact against boxes and balls).
-        for material in (*MATERIALS.values(), ROPE_MATERIAL):
-            self.surface_type(material.restitution, material.friction)
-
-    def surface_type(self, restitution: float, friction: float) -> int:
-        """The surface type of a material, extending `bounces` and `frictions` with its pairs when it is new."""
-        kind = self._types.get((restitution, friction))
-        if kind is None:
-            kind = len(self._types) + 1  # collision type 0 is pymunk's default: left to shapes not built here
-            self._types[(restitution, friction)] = kind
-            self.surfaces[kind] = (restitution, friction)
-            self.grips[kind] = grip = _grip(friction, [(f, self.grips[o]) for o, (_, f) in self.surfaces.items()
-                                                       if o != kind])
-            for other, (e, f) in self.surfaces.items():
-                self.bounces[kind, other] = self.bounces[other, kind] = max(restitution, e)
-                mean = (friction + f) / 2
-                if grip * self.grips[other] != mean:
-                    self.frictions[other, kind] = mean
-        return kind
-
-    def surface(self, shape: pymunk.Shape) -> tuple[float, float]:
-        """``(restitution, friction)`` of a shape's material (its ``elasticity`` is 0.0, see the module docstring)."""
-        return self.surfaces[shape.collision_type]
-
-    def dress(self, shape: pymunk.Shape, restitution: float, friction: float) -> None:
-        """Gives ``shape`` the surface of a material: its surface type, no elasticity of its own, the friction."""
-        shape.collision_type = self.surface_type(restitution, friction)
-        shape.elasticity = 0.0
-        shape.friction = self.grips[shape.collision_type]
-
-
-def _grip(friction: float, others: list[tuple[float, float]]) -> float:
-    """The ``friction`` for the shapes of a new surface: of the candidates (its own friction, and for each surface
-    already there the grip that would make that pair exact), the one whose product with itself and with the others'
-    grips equals the mean friction exactly for the most pairs; the first such, so ties keep the material's own value.
-
-    ``others`` holds each existing surface's (friction, grip).
-
-    >>> _grip(0.0, [(1.0, 1.0), (1.0, 1.0)])  # 0.5 makes both pairs exact (0.5 * 1.0 == (1.0 + 0.0) / 2), not itself
-    0.5
-    >>> _grip(0.0, [(1.0, 1.0)])  # one pair either way: the material's own friction
-    0.0
-    """
-    candidates = [friction] + [(friction + f) / 2 / g for f, g in others if g != 0.0]
-
-    def exact(grip: float) -> int:
-        pairs = [(friction, grip), *others]
-        return sum(grip * g == (friction + f) / 2 for f, g in pairs)
-
-    return max(candidates, key=exact)  # max keeps the first of equals
-
+    surfaces: Surfaces = field(default_factory=Surfaces)
 
 def build(scene: Scene, space: pymunk.Space) -> Built:
     """Mirrors every component of ``scene`` into ``space``: bodies first (in z-order), then joints, springs, ropes.
@@ -201,7 +124,7 @@ def _add_body(built: Built, spec: Body, *, fixed: bool) -> None:
     shapes = body_shapes(body, spec)
     for shape in shapes:
         shape.density = spec.material.density
-        built.dress(shape, spec.material.restitution, spec.material.friction)
+        built.surfaces.dress(shape, spec.material.restitution, spec.material.friction)
         built.owner[shape] = spec.id
     built.space.add(body, *shapes)
     built.bodies[spec.id] = body
@@ -417,7 +340,7 @@ def _add_rope(built: Built, rope: Rope, *, index: int) -> None:
         link.angle = math.atan2(y1 - y0, x1 - x0)
         segment = pymunk.Segment(link, (-half, 0), (half, 0), ROPE_RADIUS)
         segment.density = ROPE_MATERIAL.density
-        built.dress(segment, ROPE_MATERIAL.restitution, ROPE_MATERIAL.friction)
+        built.surfaces.dress(segment, ROPE_MATERIAL.restitution, ROPE_MATERIAL.friction)
         segment.filter = no_self
         built.owner[segment] = rope.id
         built.rest_pose[link] = (link.position.x, link.position.y, link.angle)

@@ -77,8 +77,8 @@ class World:
         self._space = built.space
         self._dt = dt
         self._steps = 0
-        self._listener = ContactListener(built.owner, built.bounces)
-        self._frictions = 0  # how many of `Built.frictions` have their pre-solve callback
+        self._listener = ContactListener(built.owner, built.surfaces.bounces)
+        self._frictions = 0  # how many of `Surfaces.frictions` have their pre-solve callback
         self._live: set[pymunk.Constraint] = set()
         self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
         self._drag: _Drag | None = None
@@ -149,7 +149,7 @@ class World:
 
     def surface(self, shape: pymunk.Shape) -> tuple[float, float]:
         """``(restitution, friction)`` of the material of a shape."""
-        return self._built.surface(shape)
+        return self._built.surfaces.of(shape)
 
     # -- queries --------------------------------------------------------------------------------------------------
 
@@ -211,7 +211,7 @@ class World:
 
     def step(self, n: int = 1) -> None:
         """Advances exactly ``n`` steps of ``dt``."""
-        if len(self._built.frictions) != self._frictions:
+        if len(self._built.surfaces.frictions) != self._frictions:
             self._handle_frictions()  # a component added since (`live.LiveWorld`) brought a new material
         for _ in range(n):
             self._steps += 1
@@ -410,9 +410,9 @@ class World:
 
     def _handle_frictions(self) -> None:
         """Registers `contacts.set_friction` for the pairs of surfaces not registered yet (pairs are only added)."""
-        for (a, b), friction in list(self._built.frictions.items())[self._frictions:]:
+        for (a, b), friction in list(self._built.surfaces.frictions.items())[self._frictions:]:
             self._space.on_collision(a, b, pre_solve=set_friction, data=friction)
-        self._frictions = len(self._built.frictions)
+        self._frictions = len(self._built.surfaces.frictions)
 
     def _sync_constraints(self) -> None:
         """Puts in the space exactly the constraints with at least one dynamic body (static-static ones give NaNs)."""
