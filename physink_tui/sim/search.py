@@ -17,7 +17,7 @@ Strategies:
 - ``"default"``: CMA-ES (pycma's ``CMAEvolutionStrategy``, ask/tell, its random numbers drawn from a generator
   seeded with ``seed``) over all continuous parameters at once, normalised around the seed: log mass and log k
   (step 1 = a factor e), friction (step 0.25, clipped to [0, 1]), natural length (step l0/4, at least 0), each
-  initial velocity component (step a quarter of the seeded speed, at least 50 units/s). Not done yet: leg by leg
+  initial velocity component (step half the seeded speed, at least `MIN_SPEED_SCALE`). Not done yet: leg by leg
   along the causal order, and early termination of a rollout that diverges.
 
 The objective is `Score.objective` (qualitative distance weighted above quantitative); exploded candidates score
@@ -55,9 +55,9 @@ SCALE_FACTORS = (0.25, 0.5, 1.0, 2.0, 4.0)
 FRICTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 """Frictions tried (not in the thesis)."""
 
-CMA_SIGMA = 0.5
-"""CMA-ES's initial step size in the normalised coordinates (half a step of each parameter's scale)."""
-MIN_SPEED_SCALE = 50.0
+CMA_SIGMA = 1.0
+"""CMA-ES's initial step size in the normalised coordinates (one step of each parameter's scale)."""
+MIN_SPEED_SCALE = 100.0
 """Units/s: the smallest step of a velocity component in the normalised coordinates."""
 
 
@@ -269,7 +269,7 @@ class Search:
         if c.kind == "rest_length":
             return max(_get(self.start, c) / 4, 1.0)
         speed, _ = _speed_angle(self.start.velocities[c.component])
-        return max(speed / 4, MIN_SPEED_SCALE)
+        return max(speed / 2, MIN_SPEED_SCALE)
 
     def _decode(self, z: np.ndarray) -> Parameters:
         p = self.start

@@ -9,6 +9,7 @@ an optional extra) is not written yet; it would implement the same ``map``.
 from __future__ import annotations
 
 import multiprocessing
+import signal
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from typing import Any, Protocol
@@ -45,8 +46,13 @@ def _context() -> multiprocessing.context.BaseContext:
     return multiprocessing.get_context("fork" if "fork" in methods else "spawn")
 
 
+def _ignore_interrupts() -> None:
+    """In a worker: Ctrl-C is the parent's to handle (it writes the best so far), not a traceback per worker."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 class ProcessExecutor:
-    """``workers`` local processes (started on first use)."""
+    """``workers`` local processes (started on first use; they ignore Ctrl-C, which the parent handles)."""
 
     def __init__(self, workers: int) -> None:
         if workers < 1:
@@ -56,7 +62,7 @@ class ProcessExecutor:
 
     def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]:
         if self._pool is None:
-            self._pool = ProcessPoolExecutor(self.workers, mp_context=_context())
+            self._pool = ProcessPoolExecutor(self.workers, mp_context=_context(), initializer=_ignore_interrupts)
         return list(self._pool.map(fn, items))
 
     def close(self, *, cancel: bool = False) -> None:
