@@ -41,9 +41,35 @@ class SerialExecutor:
         self.close()
 
 
+FORK = "fork" in multiprocessing.get_all_start_methods()
+"""Worker processes are forked: what `share` holds when a pool starts is in every worker without pickling."""
+
+_shared: dict[object, Any] = {}
+_shared_version = 0
+
+
+def share(key: object, value: Any) -> None:
+    """Makes ``value`` reachable as ``shared(key)`` in worker processes started from now on (forked ones; a pool
+    started before is restarted on its next `ProcessExecutor.map`). A rollout's problem (the scene and the
+    demonstrated timeline with its trajectories) is sent this way once, not pickled with every candidate: pickling
+    it per candidate made two workers slower than one."""
+    global _shared_version
+    _shared[key] = value
+    _shared_version += 1
+
+
+def unshare(key: object) -> None:
+    """Forgets ``key`` in this process (workers already started keep their copy until their pool ends)."""
+    _shared.pop(key, None)
+
+
+def shared(key: object) -> Any:
+    """What `share` put under ``key`` (in a forked worker: as it was when the pool started)."""
+    return _shared[key]
+
+
 def _context() -> multiprocessing.context.BaseContext:
-    methods = multiprocessing.get_all_start_methods()
-    return multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    return multiprocessing.get_context("fork" if FORK else "spawn")
 
 
 def _ignore_interrupts() -> None:
@@ -59,9 +85,13 @@ class ProcessExecutor:
             raise ValueError(f"workers is {workers}; expected at least 1")
         self.workers = workers
         self._pool: ProcessPoolExecutor | None = None
+        self._version = -1
 
     def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]:
+        if self._pool is not None and self._version != _shared_version:
+            self.close()
         if self._pool is None:
+            self._version = _shared_version
             self._pool = ProcessPoolExecutor(self.workers, mp_context=_context(), initializer=_ignore_interrupts)
         return list(self._pool.map(fn, items))
 
