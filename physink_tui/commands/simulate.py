@@ -102,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
     comparison = compare_rollout(problem, result, explain=True)
     score = search.best_score
     found = score is not None and not score.exploded and comparison.equivalent
-    text = verdict(found, comparison.reasons, result.flagged)
+    text = verdict(found, comparison.reasons if search.best is not None else (), result.flagged)
     obj = {
         "found": found,
         "qualitative_distance": _n(comparison.qualitative_distance),
