@@ -39,13 +39,13 @@ HANDLERS: dict[str, str] = {
     "recognize": "physink_tui.commands.recognize:run",
     "timeline": "physink_tui.commands.timeline:run",
     "equiv": "physink_tui.commands.equiv:run",
+    "simulate": "physink_tui.commands.simulate:run",
 }
 
 #: Subcommands not built yet: name -> where they are planned (shown to the user as is).
 PLANNED: dict[str, str] = {
     "tui": "a later issue: the Textual control panel",
     "kiosk": "a later issue: the headless recording service",
-    "simulate": "a later issue: the SIMULATE parameter search",
     "listen": "a later issue: speech commands",
 }
 
@@ -207,6 +207,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--budget", metavar="N", type=_positive_int, help="at most N rollouts")
     p.add_argument("--workers", metavar="N", type=_positive_int, help="N worker processes")
     p.add_argument("--seed", metavar="S", type=int, help="random seed, for a reproducible search")
+    p.add_argument("--strategy", choices=("default", "grid"), default="default",
+                   help="CMA-ES (default) or the thesis's grid (default: %(default)s)")
 
     p = sub.add_parser("listen", help="recognise one spoken utterance from a WAV file")
     p.add_argument("wav", metavar="FILE.wav", help="the recording")

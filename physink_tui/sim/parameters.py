@@ -66,6 +66,10 @@ class Parameters:
         for name in ("bodies", "springs", "velocities"):
             object.__setattr__(self, name, MappingProxyType(dict(getattr(self, name))))
 
+    def __reduce__(self) -> tuple:
+        """Pickled as plain dicts (a mapping proxy does not pickle), so candidates can go to worker processes."""
+        return (Parameters, (dict(self.bodies), dict(self.springs), dict(self.velocities)))
+
     @property
     def start_bodies(self) -> tuple[str, ...]:
         """The bodies the start event moves, sorted."""

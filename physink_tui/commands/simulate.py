@@ -1,0 +1,129 @@
+"""`physink simulate PROJECT --out DIR [--budget N] [--workers N] [--seed S] [--strategy default|grid]`: searches
+physical parameters whose gravity simulation reproduces the project's demonstrated timeline (`physink_tui.sim`).
+
+Writes ``DIR/result.json`` (``found``, both distances, ``rollouts``, ``wall_seconds``, ``parameters``,
+``verdict``), ``DIR/timeline.json`` and ``timeline.txt`` (the best candidate's simulated timeline) and
+``DIR/project.json`` (the scene with the parameters found applied, and the simulated timeline; the initial
+velocities are in result.json only). Deterministic for a given seed and budget whatever the worker count; only
+``wall_seconds`` varies. Ctrl-C writes the best result so far and says so (exit 130).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+
+from physink_tui.errors import PhysinkError
+from physink_tui.formats.outputs import OutputFolder
+from physink_tui.formats.project.files import load_project
+from physink_tui.formats.session_outputs import write_session_outputs
+from physink_tui.progress import ProgressBar
+from physink_tui.sim.evaluate import Problem, Score, compare_rollout, make_problem, simulate
+from physink_tui.sim.parameters import Parameters, apply
+from physink_tui.sim.search import Search
+from physink_tui.sim_run.driver import run_search
+from physink_tui.sim_run.executors import ProcessExecutor, SerialExecutor
+
+DEFAULT_BUDGET = 200
+DEFAULT_SEED = 0
+EXIT_INTERRUPTED = 130
+
+
+def _n(v: float) -> float | None:
+    if v != v or v in (float("inf"), float("-inf")):
+        return None
+    r = round(v, 6)
+    return 0.0 if r == 0 else r
+
+
+def parameters_object(p: Parameters) -> dict:
+    """The parameters as JSON: per body mass and friction, per spring k and rest length, per start body velocity."""
+    return {
+        "bodies": {b: {"mass": _n(v.mass), "friction": _n(v.friction)} for b, v in sorted(p.bodies.items())},
+        "springs": {s: {"k": _n(v.k), "rest_length": _n(v.rest_length)} for s, v in sorted(p.springs.items())},
+        "velocities": {b: [_n(v[0]), _n(v[1])] for b, v in sorted(p.velocities.items())},
+    }
+
+
+def verdict(found: bool, reasons: tuple[str, ...], flagged: tuple[str, ...]) -> str:
+    """The result in words: reproduced, or which demonstrated events the best candidate did not reproduce."""
+    if found:
+        text = "every demonstrated event is reproduced"
+    elif reasons:
+        text = "not reproduced by the best candidate (A = demonstration, B = simulation): " + "; ".join(reasons)
+    else:
+        text = "no candidate could be simulated without the physics blowing up"
+    if flagged:
+        text += ". Flagged: " + "; ".join(flagged)
+    return text
+
+
+def _problem(path: str) -> tuple[Problem, tuple[str, ...]]:
+    project = load_project(path)
+    if project.timeline is None or not project.timeline.events:
+        raise PhysinkError(f"{path}: no demonstration: demonstrate the machine's behaviour (demo mode) first")
+    scene = project.scene
+    if not any(not scene.is_fixed(b.id) for b in scene.bodies()):
+        raise PhysinkError(f"{path}: no movable body: draw a body that is not pinned or welded, and demonstrate "
+                           "how it moves")
+    return make_problem(scene, project.timeline, project.canvas), project.vocabulary
+
+
+def run(args: argparse.Namespace) -> int:
+    problem, vocabulary = _problem(args.project)
+    budget = args.budget or DEFAULT_BUDGET
+    workers = args.workers or os.cpu_count() or 1
+    seed = DEFAULT_SEED if args.seed is None else args.seed
+    strategy = getattr(args, "strategy", None) or "default"
+    folder = OutputFolder.prepare(args.out)
+    search = Search(problem.scene, problem.timeline, problem.canvas, strategy=strategy, seed=seed, budget=budget)
+    executor = SerialExecutor() if workers == 1 else ProcessExecutor(workers)
+    start = time.monotonic()
+    interrupted = False
+    bar = ProgressBar(f"Simulating ({strategy})", "rollouts")
+
+    def progress(done: int, total: int, best: Score | None) -> None:
+        bar(done, total)
+
+    try:
+        run_search(search, problem, executor, progress)
+    except KeyboardInterrupt:
+        interrupted = True
+    finally:
+        if isinstance(executor, ProcessExecutor):
+            executor.close(cancel=interrupted)
+        bar.close()
+    wall = time.monotonic() - start
+    best = search.best if search.best is not None else search.start
+    result = simulate(problem, best)
+    comparison = compare_rollout(problem, result, explain=True)
+    score = search.best_score
+    found = score is not None and not score.exploded and comparison.equivalent
+    text = verdict(found, comparison.reasons if search.best is not None else (), result.flagged)
+    obj = {
+        "found": found,
+        "qualitative_distance": _n(comparison.qualitative_distance),
+        "quantitative_distance": _n(comparison.quantitative_distance),
+        "rollouts": search.rollouts,
+        "exploded": search.exploded,
+        "strategy": strategy,
+        "seed": seed,
+        "budget": budget,
+        "interrupted": interrupted,
+        "wall_seconds": round(wall, 3),
+        "parameters": parameters_object(best),
+        "verdict": text,
+    }
+    write_session_outputs(folder, apply(problem.scene, best), result.timeline, problem.canvas, vocabulary)
+    folder.write("result.json", json.dumps(obj, indent=2, ensure_ascii=False, allow_nan=False) + "\n")
+    state = "found" if found else "not found"
+    sys.stdout.write(f"{state}: qualitative distance {obj['qualitative_distance']}, quantitative "
+                     f"{obj['quantitative_distance']}, {search.rollouts} rollouts ({search.exploded} exploded) in "
+                     f"{wall:.1f} s; wrote {folder.path}\n")
+    if interrupted:
+        sys.stdout.write("interrupted: wrote the best result so far\n")
+        return EXIT_INTERRUPTED
+    return 0

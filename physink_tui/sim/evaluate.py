@@ -1,0 +1,145 @@
+"""Scores one candidate: its rollout's simulated timeline against the demonstrated one (the equivalence metric);
+no search, no I/O, no clock.
+
+`Problem` is what every candidate of one search shares (scene, demonstrated timeline, canvas, rollout length); it is
+a plain value, so an executor may ship it to worker processes. Within one process, the demonstrated timeline is
+prepared once per problem and settled states are kept for the last few `Parameters.structure()` keys (a grid sweep
+over an initial velocity forks every candidate from one settled state); both caches are keyed by the problem's
+``key``, an opaque token given when the problem is made.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections import OrderedDict
+from dataclasses import dataclass, field
+
+from physink_tui.errors import SimulationError
+from physink_tui.scene.components import Scene
+from physink_tui.sim.parameters import Parameters
+from physink_tui.sim.rollout import EXPLODED, RolloutResult, rollout_from, settled_state
+from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prepared, prepare
+from physink_tui.timeline.events import Timeline
+
+QUALITATIVE_WEIGHT = 1000.0
+"""The objective is ``QUALITATIVE_WEIGHT * qualitative + quantitative``: one qualitative cost step (0.25, a region)
+outweighs 250 canvas units of trajectory distance, so the quantitative distance only ranks candidates of equal
+qualitative distance (unless trajectories are further apart than a quarter of the canvas, which ties are not)."""
+SETTLED_CACHE = 8
+"""Settled states kept per process."""
+MIN_SECONDS = 2.0
+EXTRA_SECONDS = 2.0
+MAX_SECONDS_CAP = 30.0
+"""A rollout lasts at most the demonstration's length plus `EXTRA_SECONDS`, at least `MIN_SECONDS`, at most
+`MAX_SECONDS_CAP` (what happens long after the demonstrated behaviour is not compared anyway)."""
+
+_keys = itertools.count(1)
+
+
+@dataclass(frozen=True, slots=True)
+class Score:
+    """How far one candidate's simulation is from the demonstration.
+
+    Attributes:
+        qualitative: the equivalence metric's qualitative distance (inf when exploded).
+        quantitative: its quantitative distance, canvas units (inf when exploded).
+        exploded: the rollout blew up (NaN or a huge speed) or the parameters were out of range: discarded.
+    """
+
+    qualitative: float
+    quantitative: float
+    exploded: bool = False
+
+    @property
+    def objective(self) -> float:
+        """What the search minimises: `QUALITATIVE_WEIGHT` * qualitative + quantitative; inf when exploded."""
+        if self.exploded:
+            return math.inf
+        return QUALITATIVE_WEIGHT * self.qualitative + self.quantitative
+
+
+EXPLODED_SCORE = Score(math.inf, math.inf, True)
+
+
+@dataclass(frozen=True, slots=True)
+class Problem:
+    """What every candidate of one search shares.
+
+    Attributes:
+        scene: the sketched scene (without parameters applied).
+        timeline: the demonstrated timeline.
+        canvas: (width, height) in canvas units.
+        max_seconds: the longest rollout (`rollout_seconds` of the timeline by default).
+        key: an opaque token naming this problem in a process's caches (given at creation, kept when pickled).
+    """
+
+    scene: Scene
+    timeline: Timeline
+    canvas: tuple[float, float]
+    max_seconds: float
+    key: int = field(default_factory=lambda: next(_keys))
+
+
+def rollout_seconds(timeline: Timeline) -> float:
+    """The rollout length for a demonstration (see `MIN_SECONDS`)."""
+    end = max((max(ev.t0, ev.t1 if ev.t1 is not None else ev.t0) for ev in timeline.events), default=0.0)
+    return min(max(end + EXTRA_SECONDS, MIN_SECONDS), MAX_SECONDS_CAP)
+
+
+def make_problem(scene: Scene, timeline: Timeline, canvas: tuple[float, float],
+                 max_seconds: float | None = None) -> Problem:
+    """A problem with a fresh key and, by default, `rollout_seconds` of the timeline."""
+    seconds = rollout_seconds(timeline) if max_seconds is None else max_seconds
+    return Problem(scene, timeline, (float(canvas[0]), float(canvas[1])), seconds)
+
+
+_prepared: dict[int, Prepared] = {}
+_settled: OrderedDict[tuple, object] = OrderedDict()
+
+
+def _demonstration(problem: Problem) -> Prepared:
+    p = _prepared.get(problem.key)
+    if p is None:
+        _prepared.clear()  # one search at a time per process
+        p = _prepared[problem.key] = prepare(problem.timeline, problem.scene.names())
+    return p
+
+
+def simulate(problem: Problem, parameters: Parameters) -> RolloutResult:
+    """The rollout of ``parameters`` (settled state cached by structure within this process)."""
+    key = (problem.key, parameters.structure())
+    state = _settled.get(key)
+    if state is None:
+        state = settled_state(problem.scene, problem.canvas, parameters)
+        _settled[key] = state
+        while len(_settled) > SETTLED_CACHE:
+            _settled.popitem(last=False)
+    else:
+        _settled.move_to_end(key)
+    return rollout_from(problem.scene, state, problem.canvas, parameters, max_seconds=problem.max_seconds)
+
+
+def compare_rollout(problem: Problem, result: RolloutResult, *, explain: bool = False) -> Comparison:
+    """The demonstration (A) against a rollout's simulated timeline (B)."""
+    return compare_prepared(_demonstration(problem), prepare(result.timeline, problem.scene.names()),
+                            explain=explain)
+
+
+def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:
+    """`evaluate` for a prepared problem; picklable as ``functools.partial(evaluate_problem, problem)``."""
+    try:
+        result = simulate(problem, parameters)
+    except SimulationError:
+        return EXPLODED_SCORE
+    if result.stopped_because == EXPLODED:
+        return EXPLODED_SCORE
+    c = compare_rollout(problem, result)
+    return Score(c.qualitative_distance, c.quantitative_distance, False)
+
+
+def evaluate(scene: Scene, timeline: Timeline, canvas: tuple[float, float], parameters: Parameters,
+             max_seconds: float) -> Score:
+    """Roll ``parameters`` out on ``scene`` for at most ``max_seconds`` and compare the simulated timeline with the
+    demonstrated ``timeline``. Parameters out of range and exploded rollouts give `EXPLODED_SCORE`."""
+    return evaluate_problem(make_problem(scene, timeline, canvas, max_seconds), parameters)

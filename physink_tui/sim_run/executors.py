@@ -1,0 +1,107 @@
+"""Executors: evaluate a generation of candidates and give the results in candidate order, not arrival order.
+
+`Executor` is the interface the search driver uses: ``map(fn, items) -> list``. `SerialExecutor` runs in this
+process; `ProcessExecutor` in a local ``concurrent.futures.ProcessPoolExecutor`` (fork where the platform has it:
+workers start in milliseconds and inherit the imported modules; spawn elsewhere). A Dask executor (``--scheduler``,
+an optional extra) is not written yet; it would implement the same ``map``.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import signal
+from collections.abc import Callable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from typing import Any, Protocol
+
+
+class Executor(Protocol):
+    """Evaluates ``fn`` on every item; the results in the items' order."""
+
+    def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]: ...
+
+    def close(self) -> None: ...
+
+
+class SerialExecutor:
+    """One item after the other, in this process."""
+
+    workers = 1
+
+    def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]:
+        return [fn(item) for item in items]
+
+    def close(self) -> None:
+        pass
+
+    def __enter__(self) -> SerialExecutor:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+FORK = "fork" in multiprocessing.get_all_start_methods()
+"""Worker processes are forked: what `share` holds when a pool starts is in every worker without pickling."""
+
+_shared: dict[object, Any] = {}
+_shared_version = 0
+
+
+def share(key: object, value: Any) -> None:
+    """Makes ``value`` reachable as ``shared(key)`` in worker processes started from now on (forked ones; a pool
+    started before is restarted on its next `ProcessExecutor.map`). A rollout's problem (the scene and the
+    demonstrated timeline with its trajectories) is sent this way once, not pickled with every candidate: pickling
+    it per candidate made two workers slower than one."""
+    global _shared_version
+    _shared[key] = value
+    _shared_version += 1
+
+
+def unshare(key: object) -> None:
+    """Forgets ``key`` in this process (workers already started keep their copy until their pool ends)."""
+    _shared.pop(key, None)
+
+
+def shared(key: object) -> Any:
+    """What `share` put under ``key`` (in a forked worker: as it was when the pool started)."""
+    return _shared[key]
+
+
+def _context() -> multiprocessing.context.BaseContext:
+    return multiprocessing.get_context("fork" if FORK else "spawn")
+
+
+def _ignore_interrupts() -> None:
+    """In a worker: Ctrl-C is the parent's to handle (it writes the best so far), not a traceback per worker."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+class ProcessExecutor:
+    """``workers`` local processes (started on first use; they ignore Ctrl-C, which the parent handles)."""
+
+    def __init__(self, workers: int) -> None:
+        if workers < 1:
+            raise ValueError(f"workers is {workers}; expected at least 1")
+        self.workers = workers
+        self._pool: ProcessPoolExecutor | None = None
+        self._version = -1
+
+    def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]:
+        if self._pool is not None and self._version != _shared_version:
+            self.close()
+        if self._pool is None:
+            self._version = _shared_version
+            self._pool = ProcessPoolExecutor(self.workers, mp_context=_context(), initializer=_ignore_interrupts)
+        return list(self._pool.map(fn, items))
+
+    def close(self, *, cancel: bool = False) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(wait=not cancel, cancel_futures=cancel)
+            self._pool = None
+
+    def __enter__(self) -> ProcessExecutor:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close(cancel=exc[0] is not None)

@@ -1,0 +1,78 @@
+"""`physink simulate`: the files it writes, determinism whatever the worker count, bad input."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from physink_tui import cli
+from physink_tui.formats.project.codec import Project
+from physink_tui.formats.project.files import load_project, save_project
+from physink_tui.formats.timeline_json import decode_timeline_json
+from tests.sim_scenes import CANVAS, ball_floor_wall, demonstration
+
+
+def project(tmp_path: Path, *, timeline: bool = True, ball_welded: bool = False) -> str:
+    path = tmp_path / "machine.physink.json"
+    save_project(Project(ball_floor_wall(ball_welded=ball_welded), (), demonstration() if timeline else None,
+                         CANVAS), path)
+    return str(path)
+
+
+def simulate(tmp_path: Path, name: str, *extra: str) -> tuple[int, Path]:
+    out = tmp_path / name
+    status = cli.main(["simulate", project(tmp_path), "--out", str(out), "--seed", "3", *extra])
+    return status, out
+
+
+def test_writes_result_timeline_and_project(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, out = simulate(tmp_path, "out", "--budget", "6", "--workers", "1")
+    assert status == 0
+    result = json.loads((out / "result.json").read_text())
+    assert set(result) >= {"found", "qualitative_distance", "quantitative_distance", "rollouts", "wall_seconds",
+                           "parameters", "verdict"}
+    assert result["rollouts"] <= 6
+    assert result["found"] == (result["qualitative_distance"] == 0)
+    assert set(result["parameters"]["velocities"]) == {"b1"}
+    assert isinstance(result["verdict"], str) and result["verdict"]
+    timeline, names = decode_timeline_json((out / "timeline.json").read_text())
+    assert names["b1"] == "ball" and timeline.events
+    saved = load_project(out / "project.json")
+    assert saved.timeline is not None and saved.canvas == CANVAS
+    assert "rollouts" in capsys.readouterr().out
+
+
+def test_same_files_whatever_the_worker_count(tmp_path: Path) -> None:
+    texts = []
+    for workers in ("1", "2"):
+        status, out = simulate(tmp_path, f"w{workers}", "--budget", "12", "--workers", workers)
+        assert status == 0
+        result = json.loads((out / "result.json").read_text())
+        del result["wall_seconds"]
+        texts.append((result, (out / "timeline.json").read_text(), (out / "project.json").read_text()))
+    assert texts[0] == texts[1]
+
+
+def test_grid_strategy(tmp_path: Path) -> None:
+    status, out = simulate(tmp_path, "grid", "--budget", "8", "--workers", "1", "--strategy", "grid")
+    assert status == 0
+    result = json.loads((out / "result.json").read_text())
+    assert result["strategy"] == "grid" and result["rollouts"] <= 8
+
+
+@pytest.mark.parametrize(("kwargs", "words"), [({"timeline": False}, "no demonstration"),
+                                               ({"ball_welded": True}, "no movable body")])
+def test_refuses_a_project_with_nothing_to_simulate(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                    kwargs: dict, words: str) -> None:
+    path = project(tmp_path, **kwargs)
+    assert cli.main(["simulate", path, "--out", str(tmp_path / "o")]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and words in err
+
+
+@pytest.mark.parametrize("bad", [["--budget", "0"], ["--workers", "-1"], ["--workers", "0"],
+                                 ["--strategy", "random"]])
+def test_bad_usage_exits_2(tmp_path: Path, bad: list[str]) -> None:
+    assert cli.main(["simulate", project(tmp_path), "--out", str(tmp_path / "o"), *bad]) == 2
