@@ -285,3 +285,14 @@ def test_a_demonstration_frame_shows_what_the_session_shows_after_a_seek() -> No
     shown = view_frame(view, session.canvas)
     assert (shown.trails, shown.contacts, shown.subtitle, shown.time_bar) == (
         frame.trails, frame.contacts, frame.subtitle, frame.time_bar)
+
+
+def test_a_trail_leaving_the_canvas_is_cut_at_its_edge() -> None:
+    renderer = Renderer(320, 220, CANVAS)
+    _, top, _, height = renderer.box
+    bare = renderer.render(FrameContent(Scene(), CANVAS)).copy()
+    gone = ((800.0, 500.0), (800.0, 3 * CANVAS[1]))  # falls off the bottom of the canvas
+    for shown in (1, 2):  # growing, and finished (drawn into the cached layer)
+        pixels = renderer.render(FrameContent(Scene(), CANVAS, trails=(Trail(gone, "simulation", shown),)))
+        below = int(top + height) + 1
+        assert (pixels[below:, :, :3] == bare[below:, :, :3]).all()

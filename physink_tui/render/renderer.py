@@ -223,6 +223,7 @@ class Renderer:
         canvas = surface.getCanvas()
         canvas.clear(self.theme.bars)
         canvas.drawRect(skia.Rect.MakeXYWH(*self.box), _paint(self.theme.background))
+        canvas.clipRect(skia.Rect.MakeXYWH(*self.box))  # what leaves the canvas is not drawn over bars or strip
         canvas.setMatrix(self._matrix)
         for body in plan.bodies:
             if body.id in still:
