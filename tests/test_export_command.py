@@ -127,3 +127,18 @@ def test_the_demo_adds_its_video_and_picture(tmp_path) -> None:
     assert main(["demo", "--headless", "--out", str(tmp_path)]) == 0
     assert probe(tmp_path / "demo.mp4")[:3] == ("h264", 1280, 800)
     assert decode_png((tmp_path / "scene.png").read_bytes()).shape == (800, 1280, 4)
+
+
+def test_a_simulated_timeline_is_drawn_in_red_over_the_demonstration(egg: Path, tmp_path) -> None:
+    sim = tmp_path / "sim"
+    assert main(["simulate", str(egg), "--out", str(sim), "--budget", "4", "--workers", "1"]) == 0
+    plain, overlaid = tmp_path / "plain.png", tmp_path / "overlaid.png"
+    assert main(["export", str(egg), "--still", str(plain), "--size", "640x444"]) == 0
+    assert main(["export", str(egg), "--still", str(overlaid), "--size", "640x444",
+                 "--overlay", str(sim / "timeline.json")]) == 0
+
+    def reds(path: Path) -> int:
+        rgb = decode_png(path.read_bytes())[..., :3].astype(int)
+        return int(((rgb[..., 0] > 150) & (rgb[..., 1] < 90) & (rgb[..., 2] < 90)).sum())
+
+    assert reds(plain) < 20 < reds(overlaid)  # the simulation's paths, in the theme's simulation red

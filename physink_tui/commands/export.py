@@ -4,8 +4,9 @@ picture, or its timeline file; drawing and encoding are `render.export`'s, this 
 ``--video FILE`` (the suffix picks the format), ``--frames DIR`` (``DIR/00000.png`` ... at the video's rate; frames
 an earlier export left there are removed first), ``--still FILE.png [--at T]`` (one picture, by default at the end
 of the demonstration, trails and contacts showing everything that happened) and ``--timeline FILE`` (``.json``,
-``.txt`` or ``.dot``); ``--size WxH``, ``--fps N`` and ``--theme light|dark`` say how. A project without a
-timeline gives a one-second still of its scene, and says so.
+``.txt`` or ``.dot``); ``--overlay FILE`` draws another timeline of the scene (`physink simulate`'s
+``timeline.json``) in red over the demonstration; ``--size WxH``, ``--fps N`` and ``--theme light|dark`` say how.
+A project without a timeline gives a one-second still of its scene, and says so.
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from physink_tui.commands.timeline_source import load_timeline
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.atomic_write import write_text_atomic
 from physink_tui.formats.outputs import prepare_frames_folder, reason
@@ -34,8 +36,10 @@ def run(args: argparse.Namespace) -> int:
     if args.timeline and Path(args.timeline).suffix.lower() not in TIMELINE_WRITERS:
         raise PhysinkError(f"{args.timeline}: a timeline is written as .json, .txt or .dot")
     project = load_project(args.project)
+    overlay = load_timeline(Path(args.overlay))[0] if args.overlay else None
     width, height = args.size
-    export = Export(project.scene, project.timeline, project.canvas, Look(width, height, args.fps, args.theme))
+    export = Export(project.scene, project.timeline, project.canvas, Look(width, height, args.fps, args.theme),
+                    overlay)
     written = []
     if args.video:
         with ProgressBar(f"video {args.video}", "frames") as bar:

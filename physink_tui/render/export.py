@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from physink_tui.render.frame import FrameContent, frame_times
@@ -36,10 +36,14 @@ class Look:
 class Export:
     """One project's pictures: `video`, `frames` and `still` share one renderer and one prepared timeline.
 
+    ``overlay``: another timeline of the same scene (a simulation's) whose paths are drawn in the theme's
+    simulation colour over the demonstration (thesis figures 2-17 and 3-21: demonstration green, simulation red).
+
     ``notes`` collects what the user should be told (an empty project, no timeline, a GIF's capped rate).
     """
 
-    def __init__(self, scene: Scene, timeline: Timeline | None, canvas: tuple[float, float], look: Look) -> None:
+    def __init__(self, scene: Scene, timeline: Timeline | None, canvas: tuple[float, float], look: Look,
+                 overlay: Timeline | None = None) -> None:
         self.scene, self.canvas, self.look = scene, canvas, look
         self.renderer = Renderer(look.width, look.height, canvas, look.theme)
         self.notes: list[str] = []
@@ -47,16 +51,21 @@ class Export:
             self.notes.append("the project has nothing in it: the pictures show an empty canvas")
         recorded = timeline is not None and any(ev.type != "start" for ev in timeline.events)
         self.demonstration = Demonstration(scene, timeline, canvas) if recorded else None
+        self.overlay = Demonstration(scene, overlay, canvas) if overlay is not None and overlay.events else None
         if self.demonstration is None:
             self.times: tuple[float, ...] = tuple(k / look.fps for k in range(max(1, round(STILL_SECONDS * look.fps))))
         else:
-            self.times = frame_times(self.demonstration.duration, look.fps)
+            longest = max(self.demonstration.duration, self.overlay.duration if self.overlay else 0.0)
+            self.times = frame_times(longest, look.fps)
 
     def content(self, t: float) -> FrameContent:
         """What the picture at time ``t`` shows (the scene as drawn when there is no timeline)."""
         if self.demonstration is None:
             return FrameContent(self.scene, self.canvas)
-        return self.demonstration.frame(t)
+        frame = self.demonstration.frame(t)
+        if self.overlay is None:
+            return frame
+        return replace(frame, trails=(*frame.trails, *self.overlay.trails_at(t, "simulation")))
 
     def video(self, path: str | os.PathLike[str], progress: Callable[[int, int], None] | None = None) -> None:
         """The demonstration as a video at ``path`` (a one-second still without a timeline)."""
