@@ -9,9 +9,8 @@ bodies given their initial velocities, stepped and observed exactly as demo mode
 recorder of `recorder_for`, no pen); a body starting to move by itself with nothing to explain it gets the start
 event, as in a demonstration. `rollout` is the two in a row, so a full rollout and a fork agree bit for bit.
 
-`World.state()` holds the bodies only, so a settled state also carries every rope link's motion, under the key
-``"<rope id>/<link index>"`` (which `World.from_state` ignores); `rollout_from` puts the links back, else a rope
-whose ends moved while settling would start the rollout stretched from where it was drawn to where its ends are.
+A settled state carries every rope link's motion too (`WorldState.links`), so a rope whose ends moved while settling
+does not start the rollout stretched from where it was drawn to where its ends are.
 
 A fork is valid for candidates whose `Parameters.structure()` equals the settled one's: settling depends on the
 masses, frictions and springs and on which bodies are held, not on the initial velocities.
@@ -24,9 +23,9 @@ or than could pass through the thinnest body in one step (the two half-sizes per
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
-from physink_tui.scene.components import Rope, Scene
+from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.speed import MIN_SPEED_LIMIT, SPEED_LIMIT
 from physink_tui.scene.physics.state import REST, Motion, WorldState
 from physink_tui.scene.physics.stepping import step_and_observe
@@ -105,7 +104,7 @@ def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Paramet
     for body in held:
         world.let_go(body)
         world.place(body, held[body], REST)
-    return _with_links(world, applied)
+    return world.state()
 
 
 def rollout(scene: Scene, canvas: tuple[float, float], parameters: Parameters, *,
@@ -125,7 +124,6 @@ def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], p
     `Parameters.structure()`), the start bodies given ``parameters.velocities``, for at most ``max_seconds``."""
     applied = apply(scene, parameters)
     world = World.from_state(applied, state)
-    _place_links(world, applied, state)
     settled = world.to_scene(applied)
     recorder = recorder_for(settled, canvas, world.dt)
     bodies = tuple(b.id for b in applied.bodies())
@@ -164,34 +162,6 @@ def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], p
 
 
 # -- internals ------------------------------------------------------------------------------------------------------
-
-def _link_key(rope_id: str, index: int) -> str:
-    return f"{rope_id}/{index}"
-
-
-def _with_links(world: World, scene: Scene) -> WorldState:
-    """The world's state, every rope link's motion included (see the module docstring)."""
-    state = world.state()
-    bodies = dict(state.bodies)
-    for rope in scene.components.values():
-        if isinstance(rope, Rope):
-            for i, link in enumerate(world.links_of(rope.id)):
-                v = link.velocity
-                bodies[_link_key(rope.id, i)] = Motion(link.position.x, link.position.y, link.angle, v.x, v.y,
-                                                       link.angular_velocity)
-    return replace(state, bodies=bodies)
-
-
-def _place_links(world: World, scene: Scene, state: WorldState) -> None:
-    for rope in scene.components.values():
-        if isinstance(rope, Rope):
-            for i, link in enumerate(world.links_of(rope.id)):
-                m = state.bodies.get(_link_key(rope.id, i))
-                if m is not None:
-                    link.position, link.angle = (m.x, m.y), m.angle
-                    link.velocity, link.angular_velocity = (m.vx, m.vy), m.w
-                    world.space.reindex_shapes_for_body(link)
-
 
 def _unsettled(scene: Scene, state: WorldState) -> dict[tuple[str, str], str]:
     out = {}

@@ -4,7 +4,7 @@ no stepping, no pymunk."""
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import NamedTuple
 
@@ -55,11 +55,15 @@ class WorldState:
         step: the steps the world had taken.
         bodies: every body's motion, by id (bodies fixed to the background included; they do not move).
         gravity: the world's gravity.
+        links: every rope's links' motions, start to end, by rope id (a rope rebuilt where it was drawn would
+            be stretched to wherever its bodies have gone).
     """
 
     step: int
     bodies: Mapping[str, Motion]
     gravity: tuple[float, float]
+    links: Mapping[str, tuple[Motion, ...]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "bodies", MappingProxyType(dict(self.bodies)))
+        object.__setattr__(self, "links", MappingProxyType({k: tuple(v) for k, v in self.links.items()}))

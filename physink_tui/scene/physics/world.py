@@ -9,17 +9,17 @@ poses back into a Scene. Deciding what strokes become (interpret), what contacts
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import pymunk
 
 from physink_tui.errors import SceneError
-from physink_tui.scene.components import BACKGROUND, Body, Joint, Point, Rope, Scene, Spring
+from physink_tui.scene.components import BACKGROUND, Point, Scene
 from physink_tui.scene.physics.build import Built, build
 from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction
 from physink_tui.scene.physics.speed import limit_speed
 from physink_tui.scene.physics.state import REST, Motion, Pose, Velocity, WorldState
+from physink_tui.scene.physics.write_back import scene_from
 
 GRAVITY: Point = (0.0, 900.0)
 """Gravity in canvas units per second squared, pointing down the canvas (+y).
@@ -63,7 +63,7 @@ class World:
     collision handlers: shapes carry no elasticity and a surface type as their collision type (see build.py), so no
     other handler may replace them.
 
-    >>> from physink_tui.scene.components import MATERIALS
+    >>> from physink_tui.scene.components import MATERIALS, Body
     >>> ball = Body("b1", "circle", (), 20.0, (100.0, 100.0), 0.0, MATERIALS["round"])
     >>> world = World.from_scene(Scene().add(ball))
     >>> world.step(120)
@@ -182,8 +182,9 @@ class World:
         return Motion(body.position.x, body.position.y, body.angle, v.x, v.y, body.angular_velocity)
 
     def state(self) -> WorldState:
-        """The world now as a frozen value: every body's motion, the steps taken and the gravity."""
-        return WorldState(self._steps, {cid: self.motion(cid) for cid in self._by_z}, self.gravity)
+        """The world now as a frozen value: every body's and rope link's motion, the steps taken and the gravity."""
+        links = {rope: tuple(_motion(link) for link in bodies) for rope, bodies in self._built.links.items()}
+        return WorldState(self._steps, {cid: self.motion(cid) for cid in self._by_z}, self.gravity, links)
 
     @classmethod
     def from_state(cls, scene: Scene, state: WorldState, *, dt: float = DT) -> World:
@@ -194,6 +195,11 @@ class World:
         for cid, motion in state.bodies.items():
             if cid in world._built.bodies:
                 world.place(cid, motion.pose, motion.velocity)
+        for rope, motions in state.links.items():
+            for link, m in zip(world._built.links.get(rope, ()), motions, strict=False):
+                link.position, link.angle = (m.x, m.y), m.angle
+                link.velocity, link.angular_velocity = (m.vx, m.vy), m.w
+                world._space.reindex_shapes_for_body(link)
         world._steps = state.step
         world._listener.step = state.step
         return world
@@ -344,42 +350,9 @@ class World:
     # -- back to the scene ----------------------------------------------------------------------------------------
 
     def to_scene(self, scene: Scene) -> Scene:
-        """``scene`` with its bodies at their current poses, and the joints, springs and ropes that they carry moved
-        along (anchors follow their bodies; a rope's points become its link ends). Components the world does not
-        know are left as they are; nothing moved, nothing changes (values come back bit for bit).
-        """
-        built = self._built
-        out = dict(scene.components)
-        for cid, c in scene.components.items():
-            if isinstance(c, Body) and cid in built.z:
-                body = built.bodies[cid]
-                pose = (body.position.x, body.position.y, body.angle)
-                if pose != built.rest_pose[body]:
-                    out[cid] = replace(c, position=pose[:2], angle=pose[2])
-            elif cid in built.carriers:
-                carriers = built.carriers[cid]
-                if isinstance(c, Joint):
-                    out[cid] = replace(c, anchor=self._carry(c.anchor, carriers[0]))
-                elif isinstance(c, Spring):
-                    out[cid] = replace(c, anchor_a=self._carry(c.anchor_a, carriers[0]),
-                                       anchor_b=self._carry(c.anchor_b, carriers[1]))
-                elif isinstance(c, Rope):
-                    out[cid] = replace(c, points=self._rope_points(cid))
-        return replace(scene, components=out)
-
-    def _carry(self, point: Point, body: pymunk.Body) -> Point:
-        """Where ``point`` (where it was when built, fixed to ``body``) is now."""
-        x0, y0, a0 = self._built.rest_pose[body]
-        x, y, a = body.position.x, body.position.y, body.angle
-        if (x, y, a) == (x0, y0, a0):
-            return point
-        dx, dy = point[0] - x0, point[1] - y0
-        c, s = math.cos(a - a0), math.sin(a - a0)
-        return x + c * dx - s * dy, y + s * dx + c * dy
-
-    def _rope_points(self, rope_id: str) -> tuple[Point, ...]:
-        path, carriers = self._built.paths[rope_id], self._built.carriers[rope_id]
-        return tuple(self._carry(p, link) for p, link in zip(path, carriers, strict=True))
+        """``scene`` with its bodies where the world has them now, and what they carry moved along
+        (`write_back.scene_from`)."""
+        return scene_from(self._built, scene)
 
     # -- internals ------------------------------------------------------------------------------------------------
 
@@ -428,3 +401,8 @@ class World:
             elif not live and part in self._live:
                 self._space.remove(part)
                 self._live.discard(part)
+
+
+def _motion(body: pymunk.Body) -> Motion:
+    v = body.velocity
+    return Motion(body.position.x, body.position.y, body.angle, v.x, v.y, body.angular_velocity)
