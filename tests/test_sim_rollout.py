@@ -132,23 +132,45 @@ def test_rollout_settles_before_the_start(name: str) -> None:
     assert set(first_step) <= set(params.start_bodies)  # nothing drawn resting starts with them
 
 
-def test_settling_brings_the_egg_flush_and_holds_the_start_body() -> None:
+def test_settling_holds_what_the_drawing_does_not_hold_up_and_the_start_body() -> None:
     s = demonstrated("egg_cracker")
     params = seed(s.scene, s.timeline, s.canvas)
-    state = settled_state(s.scene, s.canvas, params)
+    settled = settled_state(s.scene, s.canvas, params)
+    state = settled.state
     ball = s.scene.components["b2"]
     assert state.bodies["b2"][:2] == pytest.approx(ball.position, abs=1e-6)
     assert all(math.hypot(state.bodies[b.id].vx, state.bodies[b.id].vy) < 5.0 for b in s.scene.bodies())
-    # the knife and the egg are not held up under gravity: they fall while settling, and rollouts say so
+    # the knife (on its rope) and the egg fall under gravity as drawn: they are held where drawn, and said so
+    held = dict(settled.held)
+    assert held["b5"] > 100 and held["b6"] > 100
+    for body in ("b5", "b6"):
+        assert state.bodies[body][:2] == pytest.approx(s.scene.components[body].position, abs=1e-6)
     result = rollout(s.scene, s.canvas, params, max_seconds=1.0)
-    assert any(flag.startswith("b6 moved") for flag in result.flagged)
+    assert any(flag.startswith("b5 would not stay where it is drawn") for flag in result.flagged)
+
+
+def test_a_held_body_stays_put_until_touched_then_falls() -> None:
+    """A crate drawn in mid-air (nothing under it) waits where it is drawn until the ball hits it."""
+    scene = dropped_ball().add(Body("b3", "box", square(60, 60), 0.0, (1000.0, 250.0), 0.0, MATERIALS["box"],
+                                    "crate"))
+    params = Parameters({"b1": BodyParameters(math.pi * 25.0**2, 1.0), "b3": BodyParameters(3600.0, 1.0)}, {},
+                        {"b1": (500.0, -450.0)})
+    settled = settled_state(scene, CANVAS, params)
+    assert dict(settled.held).keys() == {"b3"}
+    result = rollout(scene, CANVAS, params, max_seconds=3.0)
+    crate = [ev for ev in result.timeline.events if ev.type == "movement" and ev.components[0] == "b3"]
+    hit = next(ev for ev in result.timeline.events if ev.type == "contact" and set(ev.components) == {"b1", "b3"})
+    assert crate and crate[0].t0 == pytest.approx(hit.t0) and crate[0].causes == (hit.id,)
+    assert crate[0].trajectory[-1].y > 400  # and then it falls
+    alone = rollout(scene, CANVAS, params.with_velocities({"b1": (-300.0, 0.0)}), max_seconds=3.0)
+    assert not [ev for ev in alone.timeline.events if "b3" in ev.components]  # never touched: never moves
 
 
 def test_a_ball_drawn_above_its_shelf_comes_flush() -> None:
     """The golf ball drawn 5 units above its shelf rests on it, unflagged, instead of bouncing for ever."""
     s = demonstrated("golf_ball_helper")
     params = seed(s.scene, s.timeline, s.canvas)
-    state = settled_state(s.scene, s.canvas, params)
+    state = settled_state(s.scene, s.canvas, params).state
     ball = state.bodies["b6"]
     assert 0 < ball.y - s.scene.components["b6"].position[1] < 10.0
     assert math.hypot(ball.vx, ball.vy) < 5.0
@@ -195,19 +217,20 @@ def test_a_fork_from_the_settled_state_equals_a_full_rollout() -> None:
 def test_settled_state_forks_a_world() -> None:
     s = demonstrated("cup_dispenser")
     params = seed(s.scene, s.timeline, s.canvas)
-    state = settled_state(s.scene, s.canvas, params)
+    state = settled_state(s.scene, s.canvas, params).state
     world = World.from_state(apply(s.scene, params), state)
     assert world.steps == state.step > 0
 
 
 def test_a_fork_puts_the_rope_where_settling_left_it() -> None:
-    """The knife falls while the egg cracker settles; the fork's rope still ends at the knife, not where drawn."""
+    """The rope's links are part of the settled state: the fork's rope ends at the knife."""
     s = demonstrated("egg_cracker")
     params = seed(s.scene, s.timeline, s.canvas)
-    state = settled_state(s.scene, s.canvas, params)
+    settled = settled_state(s.scene, s.canvas, params)
+    state = settled.state
     assert len(state.links["r1"]) >= 8
     scene = apply(s.scene, params)
-    forked = rollout_from(s.scene, state, s.canvas, params, max_seconds=0.1)
+    forked = rollout_from(s.scene, settled, s.canvas, params, max_seconds=0.1)
     assert forked.stopped_because != EXPLODED
     world = World.from_state(scene, state)  # what the fork starts from, on a world we can inspect
     end = world.to_scene(scene).components["r1"].points[-1]

@@ -123,7 +123,7 @@ def simulate(problem: Problem, parameters: Parameters) -> RolloutResult:
 def compare_rollout(problem: Problem, result: RolloutResult, *, explain: bool = False) -> Comparison:
     """The demonstration (A) against a rollout's simulated timeline (B)."""
     return compare_prepared(_demonstration(problem), prepare(result.timeline, problem.scene.names()),
-                            explain=explain)
+                            explain=explain, simulation=True)
 
 
 def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:

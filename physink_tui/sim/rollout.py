@@ -3,9 +3,13 @@ by demo mode's recorder until nothing can change it any more; no search, no comp
 
 A rollout (thesis 3.4.2) is in two parts. `settled_state`: the world of ``apply(scene, parameters)`` under gravity
 with the start-moved bodies held still (kinematic at their drawn pose), lightly damped, stepped unrecorded until
-every body rests or `SETTLE_MAX_STEPS`; bodies drawn resting on others come flush (the egg on its paddles) and that
-settling is no event. `rollout_from`: a world forked from that state (`World.from_state`), undamped, the start
-bodies given their initial velocities, stepped and observed exactly as demo mode observes (`step_and_observe`, the
+every body rests or `SETTLE_MAX_STEPS`; bodies drawn resting on others come flush (the golf ball on its shelf) and
+that settling is no event. A body that moves further than `FLUSH_DISTANCE` while settling was not drawn at rest
+under gravity (the egg cracker's knife hanging from its rope): the user meant it to stay where it is until the
+machine reaches it, so it is held at its drawn pose and settling starts again, up to `SETTLE_ROUNDS` times.
+`rollout_from`: a world forked from that state (`World.from_state`), undamped, the start bodies given their initial
+velocities and every other body held until touched (`World.hold_until_touched`: asleep until a moving body hits it
+or a rope, spring or joint pulls it), stepped and observed exactly as demo mode observes (`step_and_observe`, the
 recorder of `recorder_for`, no pen); a body starting to move by itself with nothing to explain it gets the start
 event, as in a demonstration. `rollout` is the two in a row, so a full rollout and a fork agree bit for bit.
 
@@ -50,7 +54,10 @@ OFF_CANVAS_MARGIN = 0.25
 bring it back; a body thrown above the canvas falls back and is not gone)."""
 FLUSH_DISTANCE = 10.0
 """Canvas units a body may move while the scene settles (coming flush with what it rests on); one that moved
-further was not drawn at rest under gravity (the egg cracker's knife and egg), which a rollout flags."""
+further was not drawn at rest under gravity (the egg cracker's knife and egg): it is held where it was drawn until
+something touches it, and the rollout flags it."""
+SETTLE_ROUNDS = 4
+"""Settling rounds at most (each holds the bodies that the last one found moving too far)."""
 EXPLODED_SPEED = 1.0e5
 """Canvas units per second (about 75 canvas heights a second) above which the physics has blown up."""
 
@@ -80,16 +87,49 @@ class RolloutResult:
     flagged: tuple[str, ...] = ()
 
 
-def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Parameters) -> WorldState:
+@dataclass(frozen=True, slots=True)
+class Settled:
+    """A scene settled under gravity, ready to fork rollouts from.
+
+    Attributes:
+        state: the world after settling (held bodies where they were drawn).
+        held: the bodies that would not stay where they were drawn (they moved more than `FLUSH_DISTANCE` while
+            settling), with how far they went: held there until something touches them.
+    """
+
+    state: WorldState
+    held: tuple[tuple[str, float], ...] = ()
+
+
+def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Parameters) -> Settled:
     """The world of ``scene`` with ``parameters`` after settling (see the module docstring); ``canvas`` bounds the
-    bodies that count (one gone off the canvas need not rest)."""
+    bodies that count (one gone off the canvas need not rest).
+
+    Settling is tried up to `SETTLE_ROUNDS` times: each body that moved more than `FLUSH_DISTANCE` is held at its
+    drawn pose in the next round (and, in the rollout, until touched), so that what rests on it comes flush with
+    it where it was drawn rather than where it fell.
+    """
     applied = apply(scene, parameters)
-    world = World.from_scene(applied, gravity=GRAVITY)
+    drawn = {b.id: b.position for b in applied.bodies()}
+    held: dict[str, float] = {}
+    for _ in range(SETTLE_ROUNDS):
+        world = _settle(applied, canvas, set(parameters.start_bodies) | set(held))
+        state = world.state()
+        moved = {b: d for b, d in _moved(drawn, state).items() if d > FLUSH_DISTANCE and b not in held
+                 and b not in parameters.start_bodies}
+        if not moved:
+            break
+        held.update(moved)
+    return Settled(state, tuple(sorted(held.items())))
+
+
+def _settle(scene: Scene, canvas: tuple[float, float], held: set[str]) -> World:
+    world = World.from_scene(scene, gravity=GRAVITY)
     world.space.damping = SETTLE_DAMPING
-    held = {b: world.pose(b) for b in parameters.start_bodies}
-    for body, pose in held.items():
+    poses = {b: world.pose(b) for b in sorted(held)}
+    for body, pose in poses.items():
         world.follow(body, pose, REST)
-    movable = [b.id for b in applied.bodies() if not applied.is_fixed(b.id) and b.id not in held]
+    movable = [b.id for b in scene.bodies() if not scene.is_fixed(b.id) and b.id not in poses]
     bounds = _bounds(canvas)
     still = 0
     for _ in range(SETTLE_MAX_STEPS):
@@ -101,10 +141,14 @@ def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Paramet
         still = 0 if moving else still + 1
         if still >= REST_STEPS:
             break
-    for body in held:
+    for body, pose in poses.items():
         world.let_go(body)
-        world.place(body, held[body], REST)
-    return world.state()
+        world.place(body, pose, REST)
+    return world
+
+
+def _moved(drawn: dict[str, tuple[float, float]], state: WorldState) -> dict[str, float]:
+    return {b: math.hypot(m.x - drawn[b][0], m.y - drawn[b][1]) for b, m in state.bodies.items() if b in drawn}
 
 
 def rollout(scene: Scene, canvas: tuple[float, float], parameters: Parameters, *,
@@ -118,21 +162,24 @@ def rollout(scene: Scene, canvas: tuple[float, float], parameters: Parameters, *
                         max_seconds=max_seconds)
 
 
-def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], parameters: Parameters, *,
+def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], parameters: Parameters, *,
                  max_seconds: float) -> RolloutResult:
-    """Record the simulated timeline from ``state`` (from `settled_state` of ``scene`` with parameters of the same
-    `Parameters.structure()`), the start bodies given ``parameters.velocities``, for at most ``max_seconds``."""
+    """Record the simulated timeline from ``settled`` (`settled_state` of ``scene`` with parameters of the same
+    `Parameters.structure()`), the start bodies given ``parameters.velocities`` and every other body held until
+    touched, for at most ``max_seconds``."""
     applied = apply(scene, parameters)
-    world = World.from_state(applied, state)
-    settled = world.to_scene(applied)
-    recorder = recorder_for(settled, canvas, world.dt)
+    world = World.from_state(applied, settled.state)
+    start_scene = world.to_scene(applied)
+    recorder = recorder_for(start_scene, canvas, world.dt)
     bodies = tuple(b.id for b in applied.bodies())
     movable = [b for b in bodies if not applied.is_fixed(b)]
     for body, (vx, vy) in sorted(parameters.velocities.items()):
         world.set_velocity(body, (vx, vy))
+    world.hold_until_touched(set(parameters.start_bodies))
     limits = _speed_limits(world, bodies, world.dt)
     bounds = _bounds(canvas)
-    flagged = _unsettled(applied, state)
+    flagged = {(body, "settle"): f"{body} would not stay where it is drawn (it moved {d:.0f} units under "
+                                 "gravity): held there until touched" for body, d in settled.held}
     max_steps = int(max_seconds / world.dt + 1e-9)
     stopped, still, steps = MAX_SECONDS, 0, 0
     while steps < max_steps:
@@ -162,17 +209,6 @@ def rollout_from(scene: Scene, state: WorldState, canvas: tuple[float, float], p
 
 
 # -- internals ------------------------------------------------------------------------------------------------------
-
-def _unsettled(scene: Scene, state: WorldState) -> dict[tuple[str, str], str]:
-    out = {}
-    for body in scene.bodies():
-        m = state.bodies.get(body.id)
-        if m is not None:
-            moved = math.hypot(m.x - body.position[0], m.y - body.position[1])
-            if moved > FLUSH_DISTANCE:
-                out[(body.id, "settle")] = f"{body.id} moved {moved:.0f} units while the scene settled"
-    return out
-
 
 def _speed(world: World, body: str) -> float:
     vx, vy, _ = world.velocity(body)

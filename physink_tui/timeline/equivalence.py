@@ -49,12 +49,16 @@ SIDE_COST = 0.5
 """Each body of a matched contact whose side differs (figure 2-13): half an event, so a contact with both sides
 wrong weighs as much as a missing event, and it still counts (> 0) on its own."""
 REGION_COST = 0.25
-"""Each region (above, below, left, right) that a matched movement passes relative to one other body in one
-timeline only (figure 2-14): above instead of below is two regions, half an event; a body passed in one timeline
-only counts all its regions."""
+"""Each region (above, below, left, right) of one other body that a matched movement passes in one timeline only
+while the other timeline passes the opposite region in its place (figure 2-14: above platform B in one, below it in
+the other): above instead of below costs two regions, half an event. A region passed in one timeline only with
+nothing opposed to it (a corner strip brushed, a body passed near in one timeline only) is the trajectory's shape,
+which the quantitative distance measures: a simulated parabola is never exactly the path the pen drew (thesis
+figure 3-22)."""
 CAUSE_COST = 0.5
 """Each cause edge between matched events found in one timeline only: the same events in another causal order.
 Edges to unmatched events are not counted again; the unmatched event already costs `UNMATCHED_EVENT_COST`."""
+OPPOSITE = {"above": "below", "below": "above", "left": "right", "right": "left"}
 SAMPLES = 32
 """Points at which two matched movements are compared, evenly spaced over each one's duration (0 to 1)."""
 
@@ -305,7 +309,10 @@ def _geometry_cost(ga: Geometry, gb: Geometry, contact: bool,
         else:
             ra = set(a) if isinstance(a, tuple) else set()
             rb = set(b) if isinstance(b, tuple) else set()
-            cost += REGION_COST * len(ra ^ rb)
+            opposed = _opposed(ra, rb) + _opposed(rb, ra)
+            if not opposed:
+                continue
+            cost += REGION_COST * opposed
             if say is not None:
                 words = [_words([r for r in REGIONS if r in rs]) or "no region" for rs in (ra, rb)]
                 say.lines.append(f"{say.label(ia, ib)}: relative to {name} it passes {words[0]} in A, "
@@ -313,7 +320,48 @@ def _geometry_cost(ga: Geometry, gb: Geometry, contact: bool,
     return cost
 
 
-def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True) -> Comparison:
+def _opposed(ra: set[str], rb: set[str]) -> int:
+    """Regions passed in A only whose opposite is passed in B only: A went by on the other side."""
+    return sum(1 for r in ra - rb if OPPOSITE[r] in rb - ra)
+
+
+def _coming_to_rest(pa: Prepared, pb: Prepared, to_b: list[int], only_b: list[int]) -> set[int]:
+    """The events of B (a simulation of the demonstration A) that only bring a body to rest where A left it.
+
+    A body's demonstrated behaviour ends with a movement that causes nothing (a leaf), caused by its landing: a
+    contact of the body with another. When that landing is matched in B, B's unmatched events from the landing on
+    that are contacts or end-contacts of the same two bodies (the bounces of a ball in the basket it landed in),
+    and the movements caused only by such events, are part of the same landing.
+    """
+    ev_a, ev_b = pa.timeline.events, pb.timeline.events
+    caused = {c for cs in pa.causes for c in cs}
+    landings: list[tuple[float, frozenset[str]]] = []
+    for ia, ev in enumerate(ev_a):
+        if ev.type != "movement" or ia in caused or to_b[ia] < 0 or len(pa.causes[ia]) != 1:
+            continue
+        landing = pa.causes[ia][0]
+        if ev_a[landing].type == "contact" and to_b[landing] >= 0:
+            landings.append((ev_b[to_b[landing]].t0, _names(ev_a[landing], pa.names)))
+    excused: set[int] = set()
+    if not landings:
+        return excused
+    for j in sorted(only_b, key=lambda j: (ev_b[j].t0, j)):
+        ev = ev_b[j]
+        if ev.type == "movement":
+            if pb.causes[j] and all(c in excused for c in pb.causes[j]):
+                excused.add(j)
+        elif ev.type in ("contact", "end_contact"):
+            pair = _names(ev, pb.names)
+            if any(ev.t0 >= t and pair == landed for t, landed in landings):
+                excused.add(j)
+    return excused
+
+
+def _names(ev: Event, names: Mapping[str, str]) -> frozenset[str]:
+    return frozenset(names.get(c) or c for c in ev.components)
+
+
+def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simulation: bool = False) -> Comparison:
     """`compare` for prepared timelines; ``explain=False`` skips writing the reasons (the distances are the same)."""
     pairs = _match(pa, pb)
     ev_a, ev_b = pa.timeline.events, pb.timeline.events
@@ -324,6 +372,9 @@ def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True) -> Com
     say = _Explainer(pa, pb) if explain else None
     only_a = [i for i in (*pa.starts, *pa.others) if to_b[i] < 0]
     only_b = [j for j in (*pb.starts, *pb.others) if to_a[j] < 0]
+    if simulation and only_b:
+        resting = _coming_to_rest(pa, pb, to_b, only_b)
+        only_b = [j for j in only_b if j not in resting]
     qualitative = UNMATCHED_EVENT_COST * (len(only_a) + len(only_b))
     if say is not None:
         for i in only_a:
@@ -372,15 +423,19 @@ def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True) -> Com
 
 
 def compare(a: Timeline, b: Timeline, names_a: Mapping[str, str] | None = None,
-            names_b: Mapping[str, str] | None = None, *, explain: bool = True) -> Comparison:
+            names_b: Mapping[str, str] | None = None, *, explain: bool = True,
+            simulation: bool = False) -> Comparison:
     """How far timeline ``b`` is from timeline ``a``, qualitatively and quantitatively, and why.
 
     Args:
         a, b: the timelines (e.g. the demonstrated and a simulated one).
         names_a, names_b: component id -> label for each (default: none; components are then matched by id).
         explain: write the reasons (False for a search loop that needs only the distances).
+        simulation: ``b`` simulates the demonstration ``a``: what B does after a body's demonstrated behaviour
+            has ended, only to bring it to rest where it landed, is no difference (`_coming_to_rest`).
 
-    The qualitative distance is symmetric: ``compare(a, b)`` and ``compare(b, a)`` give the same distances.
+    The qualitative distance is symmetric unless ``simulation``: ``compare(a, b)`` and ``compare(b, a)`` give the
+    same distances.
     Raises `graph.CausalCycleError` when a timeline has a cycle.
     """
-    return compare_prepared(prepare(a, names_a), prepare(b, names_b), explain=explain)
+    return compare_prepared(prepare(a, names_a), prepare(b, names_b), explain=explain, simulation=simulation)

@@ -34,6 +34,9 @@ DT = 1 / 120
 """The fixed time step in seconds (two steps per 60 Hz frame)."""
 ITERATIONS = 20
 """Solver iterations per step (pymunk's default is 10): ropes carrying heavy bodies stretch visibly with fewer."""
+NEVER_IDLE = 1.0e9
+"""Seconds of rest after which Chipmunk would put a body to sleep by itself once sleeping is enabled
+(`World.hold_until_touched`): never, in practice."""
 DRAG_ACCELERATION = 20_000.0
 """The strongest pull of a drag, per unit of the dragged body's mass (canvas units/s², ~22 g)."""
 DRAG_ANGULAR_ACCELERATION = 200.0
@@ -266,6 +269,23 @@ class World:
         for cid in self._by_z:
             if self._built.bodies[cid].body_type == pymunk.Body.DYNAMIC:
                 limit_speed(self._built.bodies[cid], self._dt)
+
+    def hold_until_touched(self, awake: set[str] | frozenset[str]) -> None:
+        """Every dynamic body except those of ``awake`` (and what is welded to them) sleeps where it is: gravity
+        does not move it until an awake body touches it or a joint, rope or spring ties it to one that moves, and
+        then it wakes within the same step, so the blow that woke it is solved as between two moving bodies
+        (Chipmunk's sleeping). A simulation holds this way what its drawing does not hold by itself.
+
+        Sleeping is enabled on the space with a threshold no rollout reaches: nothing falls asleep by itself.
+        """
+        if self._space.sleep_time_threshold == float("inf"):
+            self._space.sleep_time_threshold = NEVER_IDLE
+        keep: set[pymunk.Body] = set()
+        for body_id in awake:
+            keep |= self._weld_group(body_id)
+        for body in self._dynamic_bodies():
+            if body not in keep and not body.is_sleeping:
+                body.sleep()
 
     # -- editing --------------------------------------------------------------------------------------------------
 
