@@ -363,3 +363,15 @@ def test_other_ids_with_the_same_labels_are_equivalent(tl: Timeline) -> None:
     ids = {"b1": "x4", "b2": "x3", "b3": "x2", "b4": "x1"}
     result = compare(tl, renamed(tl, ids), NAMES, {ids[k]: v for k, v in NAMES.items()})
     assert result.equivalent and result.quantitative_distance == 0
+
+
+def test_what_lands_inside_a_container_may_touch_it_with_any_side() -> None:
+    # thesis 3.4.6: the ball lands inside the basket in both; which side of the ball met the basket's wall first
+    # is the trajectory's business. The basket's side still counts.
+    bottom = behaviour([], [])
+    right = Timeline(tuple(replace(ev, sides=(("b1", "right"), ("b4", "inside"))) if ev.type == "contact" else ev
+                           for ev in bottom.events))
+    assert _cmp(bottom, right).equivalent
+    on_top = Timeline(tuple(replace(ev, sides=(("b1", "right"), ("b4", "top"))) if ev.type == "contact" else ev
+                            for ev in bottom.events))
+    assert _cmp(bottom, on_top).qualitative_distance == 2 * SIDE_COST

@@ -13,7 +13,10 @@ from __future__ import annotations
 import itertools
 import math
 from collections import OrderedDict
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+
+import numpy as np
 
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
@@ -26,6 +29,8 @@ QUALITATIVE_WEIGHT = 1000.0
 """The objective is ``QUALITATIVE_WEIGHT * qualitative + quantitative``: one qualitative cost step (0.25, a region)
 outweighs 250 canvas units of trajectory distance, so the quantitative distance only ranks candidates of equal
 qualitative distance (unless trajectories are further apart than a quarter of the canvas, which ties are not)."""
+NEVER_MOVED = math.hypot(1600.0, 1000.0)
+"""`Score.miss` of a demonstrated contact whose body never moved in the simulation."""
 SETTLED_CACHE = 8
 """Settled states kept per process."""
 MIN_SECONDS = 2.0
@@ -45,18 +50,22 @@ class Score:
         qualitative: the equivalence metric's qualitative distance (inf when exploded).
         quantitative: its quantitative distance, canvas units (inf when exploded).
         exploded: the rollout blew up (NaN or a huge speed) or the parameters were out of range: discarded.
+        miss: canvas units by which the simulation missed the demonstrated contacts it does not reproduce (for
+            each, how close the first body of the contact came to the demonstrated contact point; `miss_distance`):
+            among candidates that all miss the ball-in-the-basket, the one that came nearest is the better.
     """
 
     qualitative: float
     quantitative: float
     exploded: bool = False
+    miss: float = 0.0
 
     @property
     def objective(self) -> float:
-        """What the search minimises: `QUALITATIVE_WEIGHT` * qualitative + quantitative; inf when exploded."""
+        """What the search minimises: `QUALITATIVE_WEIGHT` * qualitative + quantitative + miss; inf when exploded."""
         if self.exploded:
             return math.inf
-        return QUALITATIVE_WEIGHT * self.qualitative + self.quantitative
+        return QUALITATIVE_WEIGHT * self.qualitative + self.quantitative + self.miss
 
 
 EXPLODED_SCORE = Score(math.inf, math.inf, True)
@@ -135,7 +144,30 @@ def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:
     if result.stopped_because == EXPLODED:
         return EXPLODED_SCORE
     c = compare_rollout(problem, result)
-    return Score(c.qualitative_distance, c.quantitative_distance, False)
+    miss = miss_distance(problem.timeline, result.timeline, c.only_a) if c.only_a else 0.0
+    return Score(c.qualitative_distance, c.quantitative_distance, False, miss)
+
+
+def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated: Sequence[str]) -> float:
+    """For each demonstrated contact (of ``only_demonstrated`` event ids) the simulation does not reproduce: the
+    closest the contact's first body came to the demonstrated contact point in any simulated movement (the canvas
+    diagonal of 1600 x 1000 if it never moved), summed."""
+    paths: dict[str, list[tuple[float, float]]] = {}
+    for ev in simulated.events:
+        if ev.type == "movement" and ev.components and ev.trajectory:
+            paths.setdefault(ev.components[0], []).extend((q.x, q.y) for q in ev.trajectory)
+    total = 0.0
+    for event_id in only_demonstrated:
+        ev = demonstrated.event(event_id)
+        if ev.type != "contact" or ev.point is None or not ev.components:
+            continue
+        points = paths.get(ev.components[0])
+        if not points:
+            total += NEVER_MOVED
+            continue
+        xy = np.asarray(points)
+        total += float(np.sqrt(((xy - np.asarray(ev.point)) ** 2).sum(axis=1)).min())
+    return total
 
 
 def evaluate(scene: Scene, timeline: Timeline, canvas: tuple[float, float], parameters: Parameters,

@@ -47,7 +47,9 @@ UNMATCHED_EVENT_COST = 1.0
 platform hit or one bounce more), so the unit of the qualitative distance."""
 SIDE_COST = 0.5
 """Each body of a matched contact whose side differs (figure 2-13): half an event, so a contact with both sides
-wrong weighs as much as a missing event, and it still counts (> 0) on its own."""
+wrong weighs as much as a missing event, and it still counts (> 0) on its own. A body landing *inside* a container
+in both timelines may touch it with any of its own sides first (the ball that lands in the basket, thesis 3.4.6):
+only the container's side counts then."""
 REGION_COST = 0.25
 """Each region (above, below, left, right) of one other body that a matched movement passes in one timeline only
 while the other timeline passes the opposite region in its place (figure 2-14: above platform B in one, below it in
@@ -297,10 +299,11 @@ def _geometry_cost(ga: Geometry, gb: Geometry, contact: bool,
                    say: _Explainer | None, ia: int, ib: int) -> float:
     da, db = dict(ga), dict(gb)
     cost = 0.0
+    landed_in = contact and any(side == "inside" and db.get(name) == "inside" for name, side in da.items())
     for name in sorted(da.keys() | db.keys()):
         a, b = da.get(name), db.get(name)
-        if a == b:
-            continue
+        if a == b or (landed_in and "inside" not in (a, b)):
+            continue  # what lands in a container may touch it with any side first (thesis 3.4.6)
         if contact:
             cost += SIDE_COST
             if say is not None:
