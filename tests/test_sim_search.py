@@ -53,9 +53,9 @@ def test_evaluate_scores_and_discards_out_of_range_parameters() -> None:
 def test_search_finds_the_known_answer_from_a_wrong_start(strategy: str) -> None:
     p = problem()
     start = evaluate_problem(p, WRONG_START)
-    search = Search(p.scene, p.timeline, CANVAS, strategy=strategy, seed=1, budget=30, start=WRONG_START)
+    search = Search(p.scene, p.timeline, CANVAS, strategy=strategy, seed=1, budget=60, start=WRONG_START)
     run_search(search, p, SerialExecutor())
-    assert search.rollouts <= 30
+    assert search.rollouts <= 60 and 0 <= search.rollouts - search.found_at < 16  # it stops once found
     assert search.best_score.objective < start.objective
     assert search.best_score.qualitative == 0.0
 
@@ -74,14 +74,14 @@ def test_same_result_whatever_the_executor() -> None:
 
 class Fake:
     """A pure objective over the candidates (no rollouts): distance of b1's velocity from (300, 50); every
-    candidate with vy > 60 explodes."""
+    candidate with vy > 60 explodes; none is ever qualitatively equivalent (so the search uses its budget)."""
 
     def __call__(self, p: Parameters) -> Score:
         vx, vy = p.velocities["b1"]
         if vy > 60:
             return EXPLODED_SCORE
         d = math.hypot(vx - 300, vy - 50)
-        return Score(float(d > 30), d)
+        return Score(1.0 + float(d > 30), d)
 
 
 def drive(search: Search) -> int:
@@ -114,19 +114,47 @@ def test_same_seed_same_search_other_seed_other_candidates() -> None:
     assert run(5) != run(6)
 
 
-def test_grid_sweeps_one_parameter_at_a_time_and_stops_when_a_sweep_improves_nothing() -> None:
+def test_the_grid_tries_every_combination_in_odometer_order_until_the_budget() -> None:
     start = Parameters({"b1": BodyParameters(10.0, 1.0)}, {"s1": SpringParameters(20.0, 40.0)}, {"b1": (100.0, 0.0)})
     search = Search(ball_floor_wall(), demonstration(), CANVAS, strategy="grid", budget=1000, start=start)
-    sizes = []
+    seen = []
     while not search.done:
         generation = search.next_generation()
         if not generation:
             break
-        sizes.append(len(generation))
+        seen.extend(generation)
         search.tell([Score(1.0, 1.0)] * len(generation))  # nothing ever better than the start
-    # the start, then angle 6, speed 6, mass 4, friction 4, rest length 6, k 4 (the current value left out)
-    assert sizes == [1, 6, 6, 4, 4, 6, 4]
-    assert search.best == start and search.rollouts == 31
+    assert search.rollouts == len(seen) == 1000 and search.best == start
+    grid = seen[1:]
+    assert len(set(map(repr, grid))) == len(grid)  # no combination twice
+    # the first coordinate (b1's velocity angle, 7 values) changes fastest, then its speed (7 values)
+    angles = [round(math.degrees(math.atan2(p.velocities["b1"][1], p.velocities["b1"][0]))) for p in grid[:8]]
+    assert angles == [-45, -30, -15, 0, 15, 30, 45, -45]
+    speeds = [round(math.hypot(*p.velocities["b1"])) for p in grid[:15]]
+    assert speeds == [50] * 7 + [75] * 7 + [100]
+    assert {p.bodies["b1"].mass for p in grid[:49]} == {2.5}  # the mass changes after all 49 velocities
+    assert grid[49].bodies["b1"].mass == 5.0
+
+
+def test_the_grid_stops_at_the_first_equivalent_candidate() -> None:
+    search = Search(ball_floor_wall(), demonstration(), CANVAS, strategy="grid", budget=1000,
+                    start=parameters((250.0, 0.0)))
+    found = drive_until(search, lambda p: p.velocities["b1"][0] > 300)
+    assert search.done and search.best_score.qualitative == 0 and search.found_at == found
+
+
+def drive_until(search: Search, right) -> int:
+    """Drives ``search`` with candidates ``right`` picks scoring 0; the rollout that found the first one."""
+    found = 0
+    while not search.done:
+        generation = search.next_generation()
+        scores = []
+        for p in generation:
+            scores.append(Score(0.0 if right(p) else 1.0, 1.0))
+            if right(p) and not found:
+                found = search.rollouts + len(scores)
+        search.tell(scores)
+    return found
 
 
 def test_budget_cuts_the_last_generation_and_bad_arguments_are_refused() -> None:

@@ -14,12 +14,13 @@ import itertools
 import math
 from collections import OrderedDict
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
+from physink_tui.sim.legs import legs
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.rollout import EXPLODED, RolloutResult, rollout_from, settled_state
 from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prepared, prepare
@@ -53,12 +54,16 @@ class Score:
         miss: canvas units by which the simulation missed the demonstrated contacts it does not reproduce (for
             each, how close the first body of the contact came to the demonstrated contact point; `miss_distance`):
             among candidates that all miss the ball-in-the-basket, the one that came nearest is the better.
+        legs: when the problem asks for them (``Problem.by_leg``), the same for each leg of the demonstration
+            (`legs.legs`: the demonstration up to the end of each leg against the whole simulation, what the
+            simulation does after its last event matched with the leg not counted).
     """
 
     qualitative: float
     quantitative: float
     exploded: bool = False
     miss: float = 0.0
+    legs: tuple[Score, ...] = ()
 
     @property
     def objective(self) -> float:
@@ -80,6 +85,7 @@ class Problem:
         timeline: the demonstrated timeline.
         canvas: (width, height) in canvas units.
         max_seconds: the longest rollout (`rollout_seconds` of the timeline by default).
+        by_leg: score each leg too (`Score.legs`), for the leg-by-leg search.
         key: an opaque token naming this problem in a process's caches (given at creation, kept when pickled).
     """
 
@@ -87,6 +93,7 @@ class Problem:
     timeline: Timeline
     canvas: tuple[float, float]
     max_seconds: float
+    by_leg: bool = False
     key: int = field(default_factory=lambda: next(_keys))
 
 
@@ -97,21 +104,24 @@ def rollout_seconds(timeline: Timeline) -> float:
 
 
 def make_problem(scene: Scene, timeline: Timeline, canvas: tuple[float, float],
-                 max_seconds: float | None = None) -> Problem:
+                 max_seconds: float | None = None, *, by_leg: bool = False) -> Problem:
     """A problem with a fresh key and, by default, `rollout_seconds` of the timeline."""
     seconds = rollout_seconds(timeline) if max_seconds is None else max_seconds
-    return Problem(scene, timeline, (float(canvas[0]), float(canvas[1])), seconds)
+    return Problem(scene, timeline, (float(canvas[0]), float(canvas[1])), seconds, by_leg)
 
 
-_prepared: dict[int, Prepared] = {}
+_prepared: dict[int, tuple[Prepared, tuple[Prepared, ...]]] = {}
 _settled: OrderedDict[tuple, object] = OrderedDict()
 
 
-def _demonstration(problem: Problem) -> Prepared:
+def _demonstration(problem: Problem) -> tuple[Prepared, tuple[Prepared, ...]]:
+    """The demonstration prepared for comparing, and each of its legs (when the problem asks for them)."""
     p = _prepared.get(problem.key)
     if p is None:
         _prepared.clear()  # one search at a time per process
-        p = _prepared[problem.key] = prepare(problem.timeline, problem.scene.names())
+        names = problem.scene.names()
+        by_leg = tuple(prepare(leg.timeline, names) for leg in legs(problem.timeline)) if problem.by_leg else ()
+        p = _prepared[problem.key] = (prepare(problem.timeline, names), by_leg)
     return p
 
 
@@ -131,7 +141,7 @@ def simulate(problem: Problem, parameters: Parameters) -> RolloutResult:
 
 def compare_rollout(problem: Problem, result: RolloutResult, *, explain: bool = False) -> Comparison:
     """The demonstration (A) against a rollout's simulated timeline (B)."""
-    return compare_prepared(_demonstration(problem), prepare(result.timeline, problem.scene.names()),
+    return compare_prepared(_demonstration(problem)[0], prepare(result.timeline, problem.scene.names()),
                             explain=explain, simulation=True)
 
 
@@ -143,9 +153,14 @@ def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:
         return EXPLODED_SCORE
     if result.stopped_because == EXPLODED:
         return EXPLODED_SCORE
-    c = compare_rollout(problem, result)
-    miss = miss_distance(problem.timeline, result.timeline, c.only_a) if c.only_a else 0.0
-    return Score(c.qualitative_distance, c.quantitative_distance, False, miss)
+    whole, by_leg = _demonstration(problem)
+    simulated = prepare(result.timeline, problem.scene.names())
+    scores = []
+    for prepared in (whole, *by_leg):
+        c = compare_prepared(prepared, simulated, explain=False, simulation=True, prefix=prepared is not whole)
+        miss = miss_distance(prepared.timeline, result.timeline, c.only_a) if c.only_a else 0.0
+        scores.append(Score(c.qualitative_distance, c.quantitative_distance, False, miss))
+    return replace(scores[0], legs=tuple(scores[1:]))
 
 
 def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated: Sequence[str]) -> float:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from physink_tui.sim.evaluate import Problem, Score, evaluate_problem
+from physink_tui.sim.evaluate import Problem, Score, evaluate_problem, make_problem
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.search import Search
 from physink_tui.sim_run import executors
@@ -39,7 +39,10 @@ def _shared_evaluate(key: int) -> Evaluate:
 
 
 def run_search(search: Search, problem: Problem, executor: Executor, progress: Progress | None = None) -> Search:
-    """Runs ``search`` to its end (KeyboardInterrupt propagates; ``search.best`` then holds the best so far)."""
+    """Runs ``search`` to its end (KeyboardInterrupt propagates; ``search.best`` then holds the best so far).
+    A search that reads each leg's score gets a problem that scores them."""
+    if search.by_leg and not problem.by_leg:
+        problem = make_problem(problem.scene, problem.timeline, problem.canvas, problem.max_seconds, by_leg=True)
     fn = Evaluate(problem)
     try:
         if progress is not None:

@@ -364,7 +364,8 @@ def _names(ev: Event, names: Mapping[str, str]) -> frozenset[str]:
     return frozenset(names.get(c) or c for c in ev.components)
 
 
-def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simulation: bool = False) -> Comparison:
+def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simulation: bool = False,
+                     prefix: bool = False) -> Comparison:
     """`compare` for prepared timelines; ``explain=False`` skips writing the reasons (the distances are the same)."""
     pairs = _match(pa, pb)
     ev_a, ev_b = pa.timeline.events, pb.timeline.events
@@ -378,6 +379,9 @@ def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simula
     if simulation and only_b:
         resting = _coming_to_rest(pa, pb, to_b, only_b)
         only_b = [j for j in only_b if j not in resting]
+    if prefix and only_b:
+        last = max((ev_b[ib].t0 for ia, ib in pairs if ev_b[ib].type != "start"), default=-1.0)
+        only_b = [j for j in only_b if ev_b[j].t0 <= last]
     qualitative = UNMATCHED_EVENT_COST * (len(only_a) + len(only_b))
     if say is not None:
         for i in only_a:
@@ -427,7 +431,7 @@ def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simula
 
 def compare(a: Timeline, b: Timeline, names_a: Mapping[str, str] | None = None,
             names_b: Mapping[str, str] | None = None, *, explain: bool = True,
-            simulation: bool = False) -> Comparison:
+            simulation: bool = False, prefix: bool = False) -> Comparison:
     """How far timeline ``b`` is from timeline ``a``, qualitatively and quantitatively, and why.
 
     Args:
@@ -436,9 +440,12 @@ def compare(a: Timeline, b: Timeline, names_a: Mapping[str, str] | None = None,
         explain: write the reasons (False for a search loop that needs only the distances).
         simulation: ``b`` simulates the demonstration ``a``: what B does after a body's demonstrated behaviour
             has ended, only to bring it to rest where it landed, is no difference (`_coming_to_rest`).
+        prefix: ``a`` is the beginning of a behaviour that ``b`` goes on beyond (the search compares a simulation
+            leg by leg): B's unmatched events later than its last event matched with A are no difference.
 
     The qualitative distance is symmetric unless ``simulation``: ``compare(a, b)`` and ``compare(b, a)`` give the
     same distances.
     Raises `graph.CausalCycleError` when a timeline has a cycle.
     """
-    return compare_prepared(prepare(a, names_a), prepare(b, names_b), explain=explain, simulation=simulation)
+    return compare_prepared(prepare(a, names_a), prepare(b, names_b), explain=explain, simulation=simulation,
+                            prefix=prefix)

@@ -1,0 +1,189 @@
+"""SIMULATE's default strategy: leg by leg along the demonstration's causal order, CMA-ES on each leg's
+parameters; it runs nothing itself.
+
+The demonstration is cut into legs (`legs.legs`: each ends with a contact). The search always works on the first
+leg the best parameters so far do not reproduce: it optimises only the parameters the demonstration up to the end
+of that leg can depend on (`Leg.components`: the start bodies' initial velocities, the masses and frictions of the
+bodies in it, its springs), from those best parameters, against that leg's score (`Score.legs[k]`: the qualitative
+distance of the demonstration up to there, weighted above the quantitative and the miss distance). The parameters
+of earlier legs stay free, at the point earlier stages found, so a later leg may still move them a little; the
+prefix score keeps the earlier legs reproduced. As soon as a candidate reproduces the leg, the search moves on from
+it to the next leg it does not reproduce (one candidate may solve several legs). A run that stalls (its best not
+better for `STALL_GENERATIONS` generations, or CMA-ES stops) restarts from the best with a step size twice as large
+(as IPOP-CMA-ES does); after `MAX_RESTARTS` the leg is given up and the next one taken, the unsolved leg's mismatch
+still counted in every later prefix.
+
+CMA-ES is pycma's ``CMAEvolutionStrategy`` (ask/tell) in `coordinates.Normalisation`'s unscaled coordinates, its
+random numbers drawn from a generator seeded with (seed, leg, restart), so a search is the same for the same seed
+whatever evaluates it. One free coordinate (pycma needs two) is searched by a seeded Gaussian sampler around the
+run's best, whose width shrinks each generation.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Sequence
+
+import numpy as np
+
+from physink_tui.sim.coordinates import Normalisation, coordinates
+from physink_tui.sim.evaluate import Score
+from physink_tui.sim.legs import Leg
+from physink_tui.sim.parameters import Parameters
+
+CMA_SIGMA = 0.5
+"""CMA-ES's initial step size in the normalised coordinates (half a step of each parameter's scale); doubled at
+each restart of a leg."""
+MAX_RESTARTS = 3
+"""Restarts of one leg (step sizes 0.5, 1, 2, 4) before it is given up."""
+STALL_GENERATIONS = 6
+"""Generations without a better leg score after which a run restarts."""
+LINE_SAMPLES = 8
+"""Candidates per generation of the one-coordinate sampler."""
+EXPLODED_PENALTY = 1.0e6
+"""Added to twice the worst finite objective of a generation, as an exploded candidate's value for CMA-ES."""
+
+
+def leg_score(score: Score, leg: int) -> Score:
+    """The score of the demonstration up to the end of leg ``leg`` (the whole score when legs were not scored)."""
+    return score.legs[leg] if leg < len(score.legs) else score
+
+
+class LegByLeg:
+    """The default strategy (see the module docstring).
+
+    Args:
+        start: the seeded parameters (the scales of the normalised coordinates come from them).
+        legs: the demonstration's legs.
+        seed: the random seed.
+    """
+
+    def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int) -> None:
+        self.start = start
+        self.legs = tuple(legs) or (None,)
+        self.seed = seed
+        self.leg = 0
+        self.restarts = 0
+        self.centre = start
+        self.centre_score: Score | None = None
+        self.finished = False
+        self._given_up = -1
+        self._run: _Run | None = None
+
+    # -- the strategy interface (search.Search) ---------------------------------------------------------------------
+
+    def generation(self, best: Parameters | None) -> list[Parameters]:
+        while not self.finished:
+            if self._run is None and not self._begin():
+                continue
+            assert self._run is not None
+            return self._run.ask()
+        return []
+
+    def told(self, generation: list[Parameters], scores: list[Score]) -> None:
+        if self.centre_score is None:  # the start, alone (generation 0 of the search)
+            self.centre_score = scores[0]
+            return
+        run = self._run
+        assert run is not None
+        stopped = run.tell(generation, scores, [self._key(s) for s in scores])
+        if run.best is not None and leg_score(run.best[2], self.leg).qualitative == 0:
+            self._adopt(run.best)
+            self.restarts = 0
+            self._run = None  # on to the first leg the new best does not reproduce
+        elif stopped or run.stalled:
+            if run.best is not None and run.best[0] < self._key(self.centre_score):
+                self._adopt(run.best)
+            self.restarts += 1
+            if self.restarts > MAX_RESTARTS:
+                self._given_up = self.leg
+                self.restarts = 0
+            self._run = None
+
+    # -- legs -------------------------------------------------------------------------------------------------------
+
+    def _key(self, s: Score) -> tuple[float, float]:
+        return (leg_score(s, self.leg).objective, s.objective)
+
+    def _adopt(self, best: tuple[tuple[float, float], Parameters, Score]) -> None:
+        self.centre, self.centre_score = best[1], best[2]
+
+    def _begin(self) -> bool:
+        """Starts a run on the first leg after the last given up that the centre does not reproduce; False when
+        there is nothing to adjust for it (then that leg is given up) and ``finished`` when no leg is left."""
+        assert self.centre_score is not None
+        self.leg = next((k for k in range(self._given_up + 1, len(self.legs))
+                         if leg_score(self.centre_score, k).qualitative > 0), len(self.legs))
+        if self.leg >= len(self.legs):
+            self.finished = True
+            return False
+        leg = self.legs[self.leg]
+        coords = coordinates(self.centre, ("vx", "vy"), None if leg is None else leg.components)
+        if not coords:
+            self._given_up = self.leg
+            return False
+        rng_key = (self.seed, self.leg, self.restarts)
+        self._run = _Run(Normalisation(coords, self.centre, self.start), CMA_SIGMA * 2.0 ** self.restarts, rng_key)
+        return True
+
+
+class _Run:
+    """One CMA-ES run (or one-coordinate sampler) on one leg, from one centre."""
+
+    def __init__(self, norm: Normalisation, sigma: float, rng_key: tuple[int, int, int]) -> None:
+        self.norm = norm
+        self.sigma = sigma
+        self.rng_key = rng_key
+        self.generations = 0
+        self.since_better = 0
+        self.best: tuple[tuple[float, float], Parameters, Score] | None = None
+        self._best_z = 0.0
+        self._asked: list[np.ndarray] = []
+        self._es = self._optimiser(len(norm.coords)) if len(norm.coords) > 1 else None
+
+    @property
+    def stalled(self) -> bool:
+        return self.since_better >= STALL_GENERATIONS
+
+    def _optimiser(self, n: int):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # pycma warns about matplotlib, which it does not need here
+            import cma
+            rng = np.random.default_rng(list(self.rng_key))
+            options = {"seed": (self.rng_key[0] % 2_147_483_646) + 1, "verbose": -9,
+                       "randn": lambda *shape: rng.standard_normal(shape)}
+            return cma.CMAEvolutionStrategy([0.0] * n, self.sigma, options)
+
+    def ask(self) -> list[Parameters]:
+        if self._es is not None:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                self._asked = list(self._es.ask())
+        else:
+            rng = np.random.default_rng([*self.rng_key, self.generations])
+            width = self.sigma * 0.8 ** self.generations
+            self._asked = [np.array([self._best_z + width * float(x)]) for x in rng.standard_normal(LINE_SAMPLES)]
+        return [self.norm.decode(z) for z in self._asked]
+
+    def tell(self, generation: list[Parameters], scores: list[Score], keys: list[tuple[float, float]]) -> bool:
+        """The generation's scores and keys (leg objective, whole objective); True when CMA-ES has stopped (a
+        generation cut short by the budget is not told: the search is over then)."""
+        self.generations += 1
+        improved = False
+        for z, p, s, key in zip(self._asked, generation, scores, keys, strict=False):
+            if self.best is None or key < self.best[0]:
+                self.best, self._best_z, improved = (key, p, s), float(z[0]), True
+        self.since_better = 0 if improved else self.since_better + 1
+        if self._es is None:
+            return False
+        if len(generation) < len(self._asked):
+            return True
+        values = [key[0] for key in keys]
+        finite = [v for v in values if math.isfinite(v)]
+        worst = max(finite, default=1.0e9)
+        told = [v if math.isfinite(v) else 2 * abs(worst) + EXPLODED_PENALTY for v in values]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            self._es.tell(self._asked, told)
+            return bool(self._es.stop())

@@ -1,0 +1,56 @@
+"""Cuts a demonstrated timeline into causal legs for the leg-by-leg search; no stepping, no search.
+
+A *leg* ends with a contact or an end-contact: the first leg is the start, the first movements and the first
+contact they bring about; each next leg adds the movements that contact causes and the next contact. Events are
+taken in the equivalence metric's comparison order (time, then causal depth), so a cause always comes before what it
+causes and every prefix is a timeline of its own. The last leg is the whole demonstration.
+
+A leg's *components* are those named by the events up to its end (a movement names its body and what is tied to
+it): the parameters of those components -- masses, frictions, springs, the initial velocities of start bodies --
+are what the prefix can depend on, so the search adjusts only them while it solves that leg.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from physink_tui.timeline.equivalence import prepare
+from physink_tui.timeline.events import Timeline
+
+
+@dataclass(frozen=True, slots=True)
+class Leg:
+    """The demonstration up to the end of one leg.
+
+    Attributes:
+        timeline: the events up to and including the leg's last event (causes outside it dropped: none are).
+        components: the component ids its events name.
+        last: the id of its last event (a contact or end-contact; the last leg may end with a movement).
+    """
+
+    timeline: Timeline
+    components: frozenset[str]
+    last: str
+
+
+def legs(timeline: Timeline) -> tuple[Leg, ...]:
+    """The legs of ``timeline`` in causal order, the last one the whole timeline (empty for an empty timeline)."""
+    prepared = prepare(timeline)
+    order = [*prepared.starts, *prepared.others]
+    events = timeline.events
+    out: list[Leg] = []
+    taken: list[int] = []
+    for position, i in enumerate(order):
+        taken.append(i)
+        ends_leg = events[i].type in ("contact", "end_contact") or position == len(order) - 1
+        if ends_leg:
+            out.append(_leg(timeline, taken, events[i].id))
+    return tuple(out)
+
+
+def _leg(timeline: Timeline, taken: list[int], last: str) -> Leg:
+    events = [timeline.events[i] for i in sorted(taken)]
+    ids = {ev.id for ev in events}
+    kept = tuple(replace(ev, causes=tuple(c for c in ev.causes if c in ids)) for ev in events)
+    components = frozenset(c for ev in events for c in ev.components)
+    return Leg(Timeline(kept), components, last)
