@@ -14,7 +14,7 @@ import itertools
 import math
 from collections import OrderedDict
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -23,7 +23,7 @@ from physink_tui.scene.components import Scene
 from physink_tui.sim.legs import legs
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.rollout import EXPLODED, RolloutResult, rollout_from, settled_state
-from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prepared, prepare
+from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prefixes, compare_prepared, prepare
 from physink_tui.timeline.events import Timeline
 
 QUALITATIVE_WEIGHT = 1000.0
@@ -110,18 +110,17 @@ def make_problem(scene: Scene, timeline: Timeline, canvas: tuple[float, float],
     return Problem(scene, timeline, (float(canvas[0]), float(canvas[1])), seconds, by_leg)
 
 
-_prepared: dict[int, tuple[Prepared, tuple[Prepared, ...]]] = {}
+_prepared: dict[int, tuple[Prepared, tuple[frozenset[str], ...]]] = {}
 _settled: OrderedDict[tuple, object] = OrderedDict()
 
 
-def _demonstration(problem: Problem) -> tuple[Prepared, tuple[Prepared, ...]]:
-    """The demonstration prepared for comparing, and each of its legs (when the problem asks for them)."""
+def _demonstration(problem: Problem) -> tuple[Prepared, tuple[frozenset[str], ...]]:
+    """The demonstration prepared for comparing, and the event ids of each of its legs (when the problem asks)."""
     p = _prepared.get(problem.key)
     if p is None:
         _prepared.clear()  # one search at a time per process
-        names = problem.scene.names()
-        by_leg = tuple(prepare(leg.timeline, names) for leg in legs(problem.timeline)) if problem.by_leg else ()
-        p = _prepared[problem.key] = (prepare(problem.timeline, names), by_leg)
+        by_leg = tuple(leg.events for leg in legs(problem.timeline)) if problem.by_leg else ()
+        p = _prepared[problem.key] = (prepare(problem.timeline, problem.scene.names()), by_leg)
     return p
 
 
@@ -153,14 +152,17 @@ def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:
         return EXPLODED_SCORE
     if result.stopped_because == EXPLODED:
         return EXPLODED_SCORE
-    whole, by_leg = _demonstration(problem)
+    demonstrated, by_leg = _demonstration(problem)
     simulated = prepare(result.timeline, problem.scene.names())
-    scores = []
-    for prepared in (whole, *by_leg):
-        c = compare_prepared(prepared, simulated, explain=False, simulation=True, prefix=prepared is not whole)
-        miss = miss_distance(prepared.timeline, result.timeline, c.only_a) if c.only_a else 0.0
-        scores.append(Score(c.qualitative_distance, c.quantitative_distance, False, miss))
-    return replace(scores[0], legs=tuple(scores[1:]))
+    whole, prefixes = compare_prefixes(demonstrated, simulated, by_leg, simulation=True)
+    scores = tuple(Score(d.qualitative_distance, d.quantitative_distance, False, _miss(problem, result, d.only_a))
+                   for d in prefixes)
+    return Score(whole.qualitative_distance, whole.quantitative_distance, False,
+                 _miss(problem, result, whole.only_a), scores)
+
+
+def _miss(problem: Problem, result: RolloutResult, only_demonstrated: Sequence[str]) -> float:
+    return miss_distance(problem.timeline, result.timeline, only_demonstrated) if only_demonstrated else 0.0
 
 
 def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated: Sequence[str]) -> float:

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -39,6 +39,12 @@ MAX_RESTARTS = 3
 """Restarts of one leg (step sizes 0.5, 1, 2, 4) before it is given up."""
 STALL_GENERATIONS = 6
 """Generations without a better leg score after which a run restarts."""
+FAMILY_STEPS = (2 ** (1 / 4), 2 ** (1 / 16), 2 ** (1 / 64))
+FAMILY_SPAN = (range(-7, 5), range(-3, 4), range(-3, 4))
+FAMILY_ROUNDS = len(FAMILY_STEPS)
+"""The flight-time family (`seeding.seed_family`) is searched first, by zooming: factors 2^(k/4) of the seeded
+flight time for k = -7..4 (0.30 to 2.0), then 2^(j/16) and 2^(j/64) around the best so far for j = -3..3: every
+start body still reaches its first demonstrated contact, faster or slower (30 rollouts at most)."""
 LINE_SAMPLES = 8
 """Candidates per generation of the one-coordinate sampler."""
 EXPLODED_PENALTY = 1.0e6
@@ -59,8 +65,13 @@ class LegByLeg:
         seed: the random seed.
     """
 
-    def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int) -> None:
+    def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int,
+                 family: Callable[[float], Parameters] | None = None) -> None:
         self.start = start
+        self.family = family
+        self._family_round = 0 if family is not None else FAMILY_ROUNDS
+        self._family_best = 1.0
+        self._factors: list[float] = []
         self.legs = tuple(legs) or (None,)
         self.seed = seed
         self.leg = 0
@@ -74,6 +85,10 @@ class LegByLeg:
     # -- the strategy interface (search.Search) ---------------------------------------------------------------------
 
     def generation(self, best: Parameters | None) -> list[Parameters]:
+        if self._family_round < FAMILY_ROUNDS and self.family is not None:
+            self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
+                             for j in FAMILY_SPAN[self._family_round] if j != 0]
+            return [self.family(f) for f in self._factors]
         while not self.finished:
             if self._run is None and not self._begin():
                 continue
@@ -84,6 +99,12 @@ class LegByLeg:
     def told(self, generation: list[Parameters], scores: list[Score]) -> None:
         if self.centre_score is None:  # the start, alone (generation 0 of the search)
             self.centre_score = scores[0]
+            return
+        if self._family_round < FAMILY_ROUNDS:  # the flight-time family: the one furthest along the legs leads
+            self._family_round += 1
+            for f, p, s in zip(self._factors, generation, scores, strict=False):
+                if not s.exploded and self._progress(s) < self._progress(self.centre_score):
+                    self.centre, self.centre_score, self._family_best = p, s, f
             return
         run = self._run
         assert run is not None
@@ -102,6 +123,12 @@ class LegByLeg:
             self._run = None
 
     # -- legs -------------------------------------------------------------------------------------------------------
+
+    def _progress(self, s: Score) -> tuple[int, float, float]:
+        """How far along the legs a score is: more leading legs reproduced first, then the first unreproduced
+        leg's objective, then the whole objective (smaller is further)."""
+        solved = next((k for k in range(len(self.legs)) if leg_score(s, k).qualitative > 0), len(self.legs))
+        return (-solved, leg_score(s, solved).objective if solved < len(self.legs) else 0.0, s.objective)
 
     def _key(self, s: Score) -> tuple[float, float]:
         return (leg_score(s, self.leg).objective, s.objective)

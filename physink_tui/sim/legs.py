@@ -12,10 +12,10 @@ are what the prefix can depend on, so the search adjusts only them while it solv
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
-from physink_tui.timeline.equivalence import prepare
 from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.prepared import prepare
 
 
 @dataclass(frozen=True, slots=True)
@@ -23,12 +23,12 @@ class Leg:
     """The demonstration up to the end of one leg.
 
     Attributes:
-        timeline: the events up to and including the leg's last event (causes outside it dropped: none are).
-        components: the component ids its events name.
+        events: the ids of the events up to and including the leg's last event.
+        components: the component ids those events name.
         last: the id of its last event (a contact or end-contact; the last leg may end with a movement).
     """
 
-    timeline: Timeline
+    events: frozenset[str]
     components: frozenset[str]
     last: str
 
@@ -49,8 +49,5 @@ def legs(timeline: Timeline) -> tuple[Leg, ...]:
 
 
 def _leg(timeline: Timeline, taken: list[int], last: str) -> Leg:
-    events = [timeline.events[i] for i in sorted(taken)]
-    ids = {ev.id for ev in events}
-    kept = tuple(replace(ev, causes=tuple(c for c in ev.causes if c in ids)) for ev in events)
-    components = frozenset(c for ev in events for c in ev.components)
-    return Leg(Timeline(kept), components, last)
+    events = [timeline.events[i] for i in taken]
+    return Leg(frozenset(ev.id for ev in events), frozenset(c for ev in events for c in ev.components), last)

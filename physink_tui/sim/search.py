@@ -27,6 +27,7 @@ from physink_tui.sim.leg_search import LegByLeg
 from physink_tui.sim.legs import legs
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.seeding import seed as seed_parameters
+from physink_tui.sim.seeding import seed_family
 from physink_tui.timeline.events import Timeline
 
 __all__ = ["ANGLE_STEPS", "STRATEGIES", "Search", "grid_values"]
@@ -80,7 +81,11 @@ class Search:
         if strategy == "grid":
             self._strategy = ThesisGrid(self.start)
         else:
-            self._strategy = LegByLeg(self.start, legs(timeline), seed=seed)
+            def family(factor: float) -> Parameters:
+                return seed_family(scene, timeline, canvas, (factor,))[0]
+
+            self._strategy = LegByLeg(self.start, legs(timeline), seed=seed,
+                                      family=family if start is None and self.start.velocities else None)
 
     @property
     def by_leg(self) -> bool:

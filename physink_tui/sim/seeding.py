@@ -39,6 +39,8 @@ MAX_FLIGHT = 2.0
 MIN_TIME = 1 / 60
 """Seconds: the shortest demonstrated time used (a contact in the movement's first frame)."""
 AXES = {"horizontal": (1.0, 0.0), "vertical": (0.0, 1.0)}
+FLIGHT_FACTORS = (0.35, 0.5, 0.7, 1.4, 2.0)
+"""Flight times tried around the seeded one (`seed_family`), as factors of it."""
 
 
 def seed(scene: Scene, timeline: Timeline, canvas: tuple[float, float]) -> Parameters:
@@ -93,8 +95,10 @@ def destination(timeline: Timeline, movement: Event) -> tuple[Point, float] | No
     return None
 
 
-def initial_velocity(scene: Scene, timeline: Timeline, movement: Event, body: Body) -> tuple[float, float]:
-    """The seed velocity of ``body``, moved by the start in ``movement`` (see the module docstring)."""
+def initial_velocity(scene: Scene, timeline: Timeline, movement: Event, body: Body,
+                     time_factor: float = 1.0) -> tuple[float, float]:
+    """The seed velocity of ``body``, moved by the start in ``movement`` (see the module docstring); with a
+    ``time_factor``, the velocity that reaches the same destination in that many times the seeded flight time."""
     goal = destination(timeline, movement)
     if goal is None:
         return (0.0, 0.0)
@@ -103,14 +107,32 @@ def initial_velocity(scene: Scene, timeline: Timeline, movement: Event, body: Bo
     axis = _spring_axis(scene, body.id)
     if axis is not None:
         along = dx * axis[0] + dy * axis[1]
-        t = max(t, MIN_TIME)
+        t = max(t, MIN_TIME) * time_factor
         return (along * axis[0] / t, along * axis[1] / t)
-    return ballistic((dx, dy), t)
+    return ballistic((dx, dy), t, time_factor=time_factor)
 
 
-def ballistic(d: Point, t: float, gravity: Point = GRAVITY) -> Point:
+def seed_family(scene: Scene, timeline: Timeline, canvas: tuple[float, float],
+                factors: tuple[float, ...] = FLIGHT_FACTORS) -> list[Parameters]:
+    """The seed with every start body reaching its destination in ``factor`` times its seeded flight time, one
+    candidate per factor (the same factor for every start body, so bodies demonstrated meeting still meet).
+
+    The demonstrated time is the pen's pace, not the physics': a faster launch meets the same first contact
+    with more speed (the basketball's balls must still be rising when they collide to bounce back into their
+    baskets), a slower one as a lob.
+    """
+    base = seed(scene, timeline, canvas)
+    out = []
+    for factor in factors:
+        velocities = {body.id: initial_velocity(scene, timeline, movement, body, factor)
+                      for movement, body in start_movements(scene, timeline)}
+        out.append(base.with_velocities(velocities))
+    return out
+
+
+def ballistic(d: Point, t: float, gravity: Point = GRAVITY, *, time_factor: float = 1.0) -> Point:
     """The launch velocity that carries a body by ``d`` in about ``t`` seconds under ``gravity`` (``t`` clamped as
-    the module docstring says).
+    the module docstring says, then multiplied by ``time_factor``).
 
     >>> vx, vy = ballistic((300.0, 0.0), 1.0)
     >>> round(vx), round(vy)  # sideways and up, falling back to its level after about a second
@@ -121,7 +143,7 @@ def ballistic(d: Point, t: float, gravity: Point = GRAVITY) -> Point:
     if distance == 0:
         return (0.0, 0.0)
     slowest = math.sqrt(2 * distance / g) if g > 0 else max(t, MIN_TIME)
-    t = min(max(t, MIN_FLIGHT * slowest, MIN_TIME), MAX_FLIGHT * slowest)
+    t = min(max(t, MIN_FLIGHT * slowest, MIN_TIME), MAX_FLIGHT * slowest) * time_factor
     return (d[0] / t - gravity[0] * t / 2, d[1] / t - gravity[1] * t / 2)
 
 

@@ -34,13 +34,15 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from difflib import SequenceMatcher
-from itertools import chain
-from operator import attrgetter
 
 import numpy as np
 
-from physink_tui.timeline.events import REGIONS, Event, Timeline, event_label
-from physink_tui.timeline.graph import topological_generations
+from physink_tui.timeline.events import REGIONS, Event, Timeline, event_label  # noqa: F401 (Event: the doctest)
+from physink_tui.timeline.prepared import SAMPLES, Geometry, Prepared, prepare
+from physink_tui.timeline.resting import coming_to_rest
+
+__all__ = ["CAUSE_COST", "REGION_COST", "SAMPLES", "SIDE_COST", "UNMATCHED_EVENT_COST", "Comparison",
+           "PrefixDistance", "Prepared", "compare", "compare_prefixes", "compare_prepared", "prepare"]
 
 UNMATCHED_EVENT_COST = 1.0
 """An event of one timeline with no counterpart in the other: the coarsest difference (figure 2-12, another
@@ -61,48 +63,6 @@ CAUSE_COST = 0.5
 """Each cause edge between matched events found in one timeline only: the same events in another causal order.
 Edges to unmatched events are not counted again; the unmatched event already costs `UNMATCHED_EVENT_COST`."""
 OPPOSITE = {"above": "below", "below": "above", "left": "right", "right": "left"}
-SAMPLES = 32
-"""Points at which two matched movements are compared, evenly spaced over each one's duration (0 to 1)."""
-
-_TYPE_RANK = {"start": "0", "contact": "1", "end_contact": "2", "movement": "3"}
-_SEP, _SUB = "\x1e", "\x1f"  # separators inside signature strings: never part of a name
-_TXY = attrgetter("t", "x", "y")
-
-Geometry = tuple[tuple[str, str | tuple[str, ...]], ...]
-"""A contact's ``(name, side)`` or a movement's ``(name, regions crossed)`` pairs, sorted by name."""
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Prepared:
-    """What `compare` needs of one timeline, computed once: prepare the demonstrated timeline once and compare it
-    with many simulated ones (`compare_prepared`). Indices are positions in ``timeline.events``.
-
-    Attributes:
-        timeline: the timeline.
-        names: component id -> label, as given.
-        starts: the start events in order.
-        others: the other events in comparison order (t0, causal depth, signature, creation order).
-        signatures: one string per event (type, moving component, other components by name), equal for
-            events that may match.
-        causes: per event, the indices of its causes.
-        geometry: per event, ``(name, side)`` pairs of a contact or ``(name, regions)`` pairs of a movement
-            (regions in `REGIONS` order, bodies passed through no region left out), sorted by name.
-        rows: per event, its row in ``paths`` (a movement with a trajectory) or -1.
-        paths: float array (movements, `SAMPLES`, 2): each trajectory resampled at evenly spaced fractions of
-            its duration, canvas units.
-    """
-
-    timeline: Timeline
-    names: Mapping[str, str]
-    starts: tuple[int, ...]
-    others: tuple[int, ...]
-    signatures: tuple[str, ...]
-    causes: tuple[tuple[int, ...], ...]
-    geometry: tuple[Geometry, ...]
-    rows: tuple[int, ...]
-    paths: np.ndarray
-
-
 @dataclass(frozen=True, slots=True)
 class Comparison:
     """The result of comparing timeline A with timeline B.
@@ -126,99 +86,6 @@ class Comparison:
     matches: tuple[tuple[str, str], ...]
     only_a: tuple[str, ...]
     only_b: tuple[str, ...]
-
-
-def _depths(timeline: Timeline, index: Mapping[str, int]) -> list[int]:
-    """Longest chain of causes above each event; one pass when causes come first (as recorded)."""
-    depth = [0] * len(timeline.events)
-    for i, ev in enumerate(timeline.events):
-        d = 0
-        for c in ev.causes:
-            j = index[c]
-            if j >= i:  # a cause created later (a hand-made timeline): take the general way
-                return _depths_any_order(timeline, index)
-            d = max(d, depth[j] + 1)
-        depth[i] = d
-    return depth
-
-
-def _depths_any_order(timeline: Timeline, index: Mapping[str, int]) -> list[int]:
-    depth = [0] * len(timeline.events)
-    for level, layer in enumerate(topological_generations(timeline)):  # raises CausalCycleError on a cycle
-        for event_id in layer:
-            depth[index[event_id]] = level  # a layer is one more than the deepest of its causes
-    return depth
-
-
-def _signature(ev: Event, names: Mapping[str, str]) -> str:
-    comps = [names.get(c) or c for c in ev.components]
-    if ev.type == "movement" and comps:
-        return f"{_TYPE_RANK['movement']}{_SEP}{comps[0]}{_SEP}{_SUB.join(sorted(set(comps[1:])))}"
-    return f"{_TYPE_RANK[ev.type]}{_SEP}{_SEP}{_SUB.join(sorted(set(comps)))}"
-
-
-def _geometry(ev: Event, names: Mapping[str, str]) -> Geometry:
-    if ev.sides:
-        return tuple(sorted((names.get(c) or c, side) for c, side in ev.sides))
-    if ev.regions:
-        crossed: dict[str, set[str]] = {}
-        for c, regions in ev.regions:
-            crossed.setdefault(names.get(c) or c, set()).update(regions)
-        return tuple(sorted((n, tuple(r for r in REGIONS if r in rs)) for n, rs in crossed.items() if rs))
-    return ()
-
-
-def _resample(movements: Sequence[Event]) -> np.ndarray:
-    """Every trajectory at `SAMPLES` evenly spaced fractions of its duration, in one numpy pass."""
-    if not movements:
-        return np.zeros((0, SAMPLES, 2))
-    lengths = np.fromiter((len(ev.trajectory) for ev in movements), dtype=np.intp, count=len(movements))
-    frames = chain.from_iterable(ev.trajectory for ev in movements)
-    flat = np.fromiter(chain.from_iterable(map(_TXY, frames)), dtype=float, count=3 * int(lengths.sum()))
-    flat = flat.reshape(-1, 3)
-    ends = np.cumsum(lengths)
-    starts = ends - lengths
-    seg = np.repeat(np.arange(len(movements)), lengths)
-    local = np.arange(len(flat)) - starts[seg]
-    t_first, dur = flat[starts, 0], flat[ends - 1, 0] - flat[starts, 0]
-    by_index = local / np.maximum(lengths - 1, 1)[seg]  # a movement of zero duration: its frames evenly spaced
-    by_time = (flat[:, 0] - t_first[seg]) / np.where(dur > 0, dur, 1.0)[seg]
-    u = np.where((dur > 0)[seg], by_time, by_index)
-    key = 2.0 * seg + u  # segments kept apart on one axis, so one np.interp serves them all
-    query = (2.0 * np.arange(len(movements))[:, None] + np.linspace(0.0, 1.0, SAMPLES)[None, :]).ravel()
-    out = np.empty((len(movements), SAMPLES, 2))
-    out[:, :, 0] = np.interp(query, key, flat[:, 1]).reshape(len(movements), SAMPLES)
-    out[:, :, 1] = np.interp(query, key, flat[:, 2]).reshape(len(movements), SAMPLES)
-    single = lengths == 1
-    if single.any():
-        out[single] = flat[starts[single], 1:3][:, None, :]
-    return out
-
-
-def prepare(timeline: Timeline, names: Mapping[str, str] | None = None) -> Prepared:
-    """The timeline ready for `compare_prepared`; ``names`` maps component ids to labels (default: none).
-
-    Raises `graph.CausalCycleError` when the timeline has a cycle.
-    """
-    names = {} if names is None else names
-    events = timeline.events
-    index = {ev.id: i for i, ev in enumerate(events)}
-    depth = _depths(timeline, index)
-    signatures = tuple(_signature(ev, names) for ev in events)
-    causes = tuple(tuple(index[c] for c in ev.causes) for ev in events)
-    geometry = tuple(_geometry(ev, names) for ev in events)
-    moving = [i for i, ev in enumerate(events) if ev.type == "movement" and ev.trajectory]
-    rows = [-1] * len(events)
-    for row, i in enumerate(moving):
-        rows[i] = row
-    ordered = sorted(range(len(events)), key=lambda i: (events[i].t0, depth[i], signatures[i], i))
-    return Prepared(
-        timeline, names,
-        starts=tuple(i for i in ordered if events[i].type == "start"),
-        others=tuple(i for i in ordered if events[i].type != "start"),
-        signatures=signatures, causes=causes, geometry=geometry, rows=tuple(rows),
-        paths=_resample([events[i] for i in moving]),
-    )
 
 
 def _align(sa: Sequence[str], sb: Sequence[str]) -> list[tuple[int, int]]:
@@ -328,97 +195,67 @@ def _opposed(ra: set[str], rb: set[str]) -> int:
     return sum(1 for r in ra - rb if OPPOSITE[r] in rb - ra)
 
 
-def _coming_to_rest(pa: Prepared, pb: Prepared, to_b: list[int], only_b: list[int]) -> set[int]:
-    """The events of B (a simulation of the demonstration A) that only bring a body to rest where A left it.
+@dataclass(slots=True)
+class _Ledger:
+    """Every cost of one comparison with what it is charged to: an event of A (by index) or, for an event of B
+    only, its time in B; and each matched pair's trajectory or contact-point distance, by A's event."""
 
-    A body's demonstrated behaviour ends with a movement that causes nothing (a leaf), caused by its landing: a
-    contact of the body with another. When that landing is matched in B, B's unmatched events from the landing on
-    that are contacts or end-contacts of the same two bodies (the bounces of a ball in the basket it landed in),
-    and the movements caused only by such events, are part of the same landing.
-    """
-    ev_a, ev_b = pa.timeline.events, pb.timeline.events
-    caused = {c for cs in pa.causes for c in cs}
-    landings: list[tuple[float, frozenset[str]]] = []
-    for ia, ev in enumerate(ev_a):
-        if ev.type != "movement" or ia in caused or to_b[ia] < 0 or len(pa.causes[ia]) != 1:
-            continue
-        landing = pa.causes[ia][0]
-        if ev_a[landing].type == "contact" and to_b[landing] >= 0:
-            landings.append((ev_b[to_b[landing]].t0, _names(ev_a[landing], pa.names)))
-    excused: set[int] = set()
-    if not landings:
-        return excused
-    for j in sorted(only_b, key=lambda j: (ev_b[j].t0, j)):
-        ev = ev_b[j]
-        if ev.type == "movement":
-            if pb.causes[j] and all(c in excused for c in pb.causes[j]):
-                excused.add(j)
-        elif ev.type in ("contact", "end_contact"):
-            pair = _names(ev, pb.names)
-            if any(ev.t0 >= t and pair == landed for t, landed in landings):
-                excused.add(j)
-    return excused
+    a_costs: list[tuple[int, float]]
+    b_costs: list[tuple[float, bool, float]]  # (t0 in B, a contact or end-contact, cost)
+    distances: list[tuple[int, float]]
+    b_time: dict[int, float]  # A's matched events: the time of their counterpart in B
 
 
-def _names(ev: Event, names: Mapping[str, str]) -> frozenset[str]:
-    return frozenset(names.get(c) or c for c in ev.components)
-
-
-def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simulation: bool = False,
-                     prefix: bool = False) -> Comparison:
-    """`compare` for prepared timelines; ``explain=False`` skips writing the reasons (the distances are the same)."""
+def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: bool) -> tuple[Comparison, _Ledger]:
     pairs = _match(pa, pb)
     ev_a, ev_b = pa.timeline.events, pb.timeline.events
     to_b = [-1] * len(ev_a)
     to_a = [-1] * len(ev_b)
     for ia, ib in pairs:
         to_b[ia], to_a[ib] = ib, ia
-    say = _Explainer(pa, pb) if explain else None
     only_a = [i for i in (*pa.starts, *pa.others) if to_b[i] < 0]
     only_b = [j for j in (*pb.starts, *pb.others) if to_a[j] < 0]
     if simulation and only_b:
-        resting = _coming_to_rest(pa, pb, to_b, only_b)
+        resting = coming_to_rest(pa, pb, to_b, only_b)
         only_b = [j for j in only_b if j not in resting]
-    if prefix and only_b:
-        last = max((ev_b[ib].t0 for ia, ib in pairs if ev_b[ib].type != "start"), default=-1.0)
-        only_b = [j for j in only_b if ev_b[j].t0 <= last]
-    qualitative = UNMATCHED_EVENT_COST * (len(only_a) + len(only_b))
+    ledger = _Ledger([(i, UNMATCHED_EVENT_COST) for i in only_a],
+                     [(ev_b[j].t0, ev_b[j].type != "movement", UNMATCHED_EVENT_COST) for j in only_b], [],
+                     {ia: ev_b[ib].t0 for ia, ib in pairs})
     if say is not None:
         for i in only_a:
             say.only(pa, i, "A")
         for j in only_b:
             say.only(pb, j, "B")
-
-    rows_a, rows_b, points = [], [], 0.0
-    n_points = 0
+    rows_a, rows_b, row_owner = [], [], []
     for ia, ib in pairs:
         ea = ev_a[ia]
         ga, gb = pa.geometry[ia], pb.geometry[ib]
         if ga != gb:
-            qualitative += _geometry_cost(ga, gb, ea.type == "contact", say, ia, ib)
+            cost = _geometry_cost(ga, gb, ea.type == "contact", say, ia, ib)
+            if cost:
+                ledger.a_costs.append((ia, cost))
         ca, cb = pa.causes[ia], pb.causes[ib]
         if len(ca) == 1 and len(cb) == 1 and to_b[ca[0]] == cb[0]:
             pass  # the usual case, one cause each and they match: no sets to build
         elif (mapped := {to_b[c] for c in ca if to_b[c] >= 0}) != (own := {c for c in cb if to_a[c] >= 0}):
-            qualitative += CAUSE_COST * len(mapped ^ own)
+            ledger.a_costs.append((ia, CAUSE_COST * len(mapped ^ own)))
             if say is not None:
                 say.lines.append(f"{say.label(ia, ib)} is caused by {say.causes(pa, ia)} in A but by "
                                  f"{say.causes(pb, ib)} in B")
         if pa.rows[ia] >= 0 and pb.rows[ib] >= 0:
             rows_a.append(pa.rows[ia])
             rows_b.append(pb.rows[ib])
+            row_owner.append(ia)
         elif ea.point is not None and ev_b[ib].point is not None:
             pta, ptb = ea.point, ev_b[ib].point
-            points += ((pta[0] - ptb[0]) ** 2 + (pta[1] - ptb[1]) ** 2) ** 0.5
-            n_points += 1
-    total = points
+            ledger.distances.append((ia, ((pta[0] - ptb[0]) ** 2 + (pta[1] - ptb[1]) ** 2) ** 0.5))
     if rows_a:
         gap = pa.paths[rows_a] - pb.paths[rows_b]
-        total += float(np.sqrt((gap * gap).sum(axis=2)).mean(axis=1).sum())
-    count = len(rows_a) + n_points
-    quantitative = total / count if count else 0.0
-
-    return Comparison(
+        per_row = np.sqrt((gap * gap).sum(axis=2)).mean(axis=1)
+        ledger.distances.extend(zip(row_owner, per_row.tolist(), strict=True))
+    qualitative = sum(c for _, c in ledger.a_costs) + sum(c for _, _, c in ledger.b_costs)
+    quantitative = sum(d for _, d in ledger.distances) / len(ledger.distances) if ledger.distances else 0.0
+    comparison = Comparison(
         equivalent=qualitative == 0.0,
         qualitative_distance=qualitative,
         quantitative_distance=quantitative,
@@ -427,11 +264,58 @@ def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simula
         only_a=tuple(ev_a[i].id for i in only_a),
         only_b=tuple(ev_b[j].id for j in only_b),
     )
+    return comparison, ledger
+
+
+def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simulation: bool = False) -> Comparison:
+    """`compare` for prepared timelines; ``explain=False`` skips writing the reasons (the distances are the same)."""
+    return _compare(pa, pb, _Explainer(pa, pb) if explain else None, simulation)[0]
+
+
+@dataclass(frozen=True, slots=True)
+class PrefixDistance:
+    """How far B is from the beginning of A (`compare_prefixes`).
+
+    Attributes:
+        qualitative_distance, quantitative_distance: as `Comparison`'s, over the prefix's events and B's
+            unmatched events up to the last one matched with the prefix.
+        only_a: ids of the prefix's events without a counterpart in B.
+    """
+
+    qualitative_distance: float
+    quantitative_distance: float
+    only_a: tuple[str, ...]
+
+
+def compare_prefixes(pa: Prepared, pb: Prepared, prefixes: Sequence[frozenset[str]], *,
+                     simulation: bool = False) -> tuple[Comparison, tuple[PrefixDistance, ...]]:
+    """The whole comparison (without reasons) and, for each prefix of A (a set of A's event ids closed under
+    causes, e.g. a leg of the search), the distances that prefix accounts for.
+
+    One matching serves every prefix: a prefix is charged the costs of its own events (unmatched, other
+    geometry, other causes) and the events of B only that happen before the last event of B matched with the
+    prefix (at that instant, contacts only: the movements a matched contact causes belong to the next leg); what
+    B does later, or in a concurrent chain that A has later too, is not the prefix's business.
+    """
+    whole, ledger = _compare(pa, pb, None, simulation)
+    index = {ev.id: i for i, ev in enumerate(pa.timeline.events)}
+    out = []
+    for prefix in prefixes:
+        inside = {index[e] for e in prefix}
+        until = max((t for i, t in ledger.b_time.items() if i in inside and pa.timeline.events[i].type != "start"),
+                    default=-1.0)
+        qualitative = sum(c for i, c in ledger.a_costs if i in inside)
+        qualitative += sum(c for t, contact, c in ledger.b_costs if t < until or (t == until and contact))
+        distances = [d for i, d in ledger.distances if i in inside]
+        quantitative = sum(distances) / len(distances) if distances else 0.0
+        only_a = tuple(e for e in whole.only_a if e in prefix)
+        out.append(PrefixDistance(qualitative, quantitative, only_a))
+    return whole, tuple(out)
 
 
 def compare(a: Timeline, b: Timeline, names_a: Mapping[str, str] | None = None,
             names_b: Mapping[str, str] | None = None, *, explain: bool = True,
-            simulation: bool = False, prefix: bool = False) -> Comparison:
+            simulation: bool = False) -> Comparison:
     """How far timeline ``b`` is from timeline ``a``, qualitatively and quantitatively, and why.
 
     Args:
@@ -439,13 +323,10 @@ def compare(a: Timeline, b: Timeline, names_a: Mapping[str, str] | None = None,
         names_a, names_b: component id -> label for each (default: none; components are then matched by id).
         explain: write the reasons (False for a search loop that needs only the distances).
         simulation: ``b`` simulates the demonstration ``a``: what B does after a body's demonstrated behaviour
-            has ended, only to bring it to rest where it landed, is no difference (`_coming_to_rest`).
-        prefix: ``a`` is the beginning of a behaviour that ``b`` goes on beyond (the search compares a simulation
-            leg by leg): B's unmatched events later than its last event matched with A are no difference.
+            has ended, only to bring it to rest where it landed, is no difference (`resting.coming_to_rest`).
 
     The qualitative distance is symmetric unless ``simulation``: ``compare(a, b)`` and ``compare(b, a)`` give the
     same distances.
     Raises `graph.CausalCycleError` when a timeline has a cycle.
     """
-    return compare_prepared(prepare(a, names_a), prepare(b, names_b), explain=explain, simulation=simulation,
-                            prefix=prefix)
+    return compare_prepared(prepare(a, names_a), prepare(b, names_b), explain=explain, simulation=simulation)
