@@ -271,21 +271,23 @@ class World:
                 limit_speed(self._built.bodies[cid], self._dt)
 
     def hold_until_touched(self, awake: set[str] | frozenset[str]) -> None:
-        """Every dynamic body except those of ``awake`` (and what is welded to them) sleeps where it is: gravity
-        does not move it until an awake body touches it or a joint, rope or spring ties it to one that moves, and
-        then it wakes within the same step, so the blow that woke it is solved as between two moving bodies
-        (Chipmunk's sleeping). A simulation holds this way what its drawing does not hold by itself.
+        """Every dynamic body except ``awake`` and what joints, ropes and springs tie to them sleeps where it is:
+        gravity does not move it until an awake body touches it, and then it wakes within the same step with
+        everything tied to it (a lever, its rope and the knife on the rope sleep as one group), so the blow that
+        woke it is solved as between two moving bodies (Chipmunk's sleeping). A simulation holds this way what
+        its drawing does not hold by itself.
 
         Sleeping is enabled on the space with a threshold no rollout reaches: nothing falls asleep by itself.
         """
         if self._space.sleep_time_threshold == float("inf"):
             self._space.sleep_time_threshold = NEVER_IDLE
-        keep: set[pymunk.Body] = set()
-        for body_id in awake:
-            keep |= self._weld_group(body_id)
-        for body in self._dynamic_bodies():
-            if body not in keep and not body.is_sleeping:
-                body.sleep()
+        keep = {self._get(body_id) for body_id in awake}
+        for group in _tied_groups(self._dynamic_bodies(), self._space.constraints):
+            if keep.isdisjoint(group):  # what is tied to an awake body stays awake with it
+                first, *rest = group
+                first.sleep()
+                for body in rest:
+                    body.sleep_with_group(first)  # one wakes, all wake: Chipmunk wakes no constraint's other end
 
     # -- editing --------------------------------------------------------------------------------------------------
 
@@ -421,6 +423,27 @@ class World:
             elif not live and part in self._live:
                 self._space.remove(part)
                 self._live.discard(part)
+
+
+def _tied_groups(bodies: list[pymunk.Body], constraints: list[pymunk.Constraint]) -> list[list[pymunk.Body]]:
+    """``bodies`` in groups tied together by ``constraints`` (through dynamic bodies only), in the given order."""
+    index = {body: i for i, body in enumerate(bodies)}
+    parent = list(range(len(bodies)))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for c in constraints:
+        a, b = index.get(c.a), index.get(c.b)
+        if a is not None and b is not None:
+            parent[root(a)] = root(b)
+    groups: dict[int, list[pymunk.Body]] = {}
+    for i, body in enumerate(bodies):
+        groups.setdefault(root(i), []).append(body)
+    return list(groups.values())
 
 
 def _motion(body: pymunk.Body) -> Motion:
