@@ -10,7 +10,7 @@ counted as the search counts them.
 Workers need physink-tui (the same version) importable. A worker evaluates one task at a time whatever its thread
 count (the rollout caches of `physink_tui.sim.evaluate` are per process and not thread-safe, and a rollout holds
 the GIL anyway): start workers with one thread each and as many processes as cores
-(``dask worker ADDRESS --nworkers auto --nthreads 1``).
+(``dask worker ADDRESS --nworkers -1 --nthreads 1``: one per core).
 
 ``distributed`` is imported here only, when an executor is made, so nothing else needs the extra.
 """
@@ -55,6 +55,12 @@ class DaskExecutor:
         except ImportError:
             raise SimulationError(f"--scheduler needs Dask: {INSTALL_HINT}") from None
         self.address = address if address is not None else getattr(cluster, "scheduler_address", repr(cluster))
+        if address is not None:
+            try:  # checked first: a Client given a malformed address hangs for seconds when it is collected
+                distributed.comm.get_address_host_port(address)
+            except ValueError as exc:
+                raise SimulationError(f"{address!r} is not a Dask scheduler address like tcp://HOST:8786 "
+                                      f"({exc})") from None
         seconds = CONNECT_SECONDS if timeout is None else timeout
         try:
             self._client = distributed.Client(address if address is not None else cluster, timeout=seconds,
@@ -62,8 +68,9 @@ class DaskExecutor:
         except (OSError, TimeoutError) as exc:
             raise SimulationError(f"cannot reach the Dask scheduler at {self.address!r} within {seconds:g} s "
                                   f"({exc})") from None
-        except ValueError as exc:
-            raise SimulationError(f"{self.address!r} is not a Dask scheduler address ({exc})") from None
+        except Exception as exc:  # something answered that is not a Dask scheduler (of this protocol version)
+            raise SimulationError(f"no Dask scheduler at {self.address!r}: the connection failed with "
+                                  f"{type(exc).__name__}: {exc}") from None
         self._shared: tuple[Any, Any] | None = None  # (value, its future on the cluster)
         self._pending: list[Any] = []
 
