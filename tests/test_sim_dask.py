@@ -115,6 +115,16 @@ def test_unreachable_scheduler_is_one_line_and_exit_1(tmp_path: Path, capsys: py
     assert (out / "result.json").read_text() == "{}"  # the last run's files are left alone
 
 
+@pytest.mark.parametrize("address", ["nonsense", "foo://host:1", "tcp://host:port"])
+def test_malformed_address_is_one_line_at_once(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                               address: str) -> None:
+    start = time.monotonic()
+    assert simulate(tmp_path, "out", "--scheduler", address)[0] == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{address!r} is not a Dask scheduler address" in err
+    assert time.monotonic() - start < 2
+
+
 def test_scheduler_and_workers_exclude_each_other(tmp_path: Path) -> None:
     assert simulate(tmp_path, "o", "--workers", "2", "--scheduler", "tcp://127.0.0.1:1")[0] == 2
 
