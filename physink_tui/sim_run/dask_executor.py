@@ -8,9 +8,8 @@ reference to that copy. Every task has its own key (``pure=False``), so two iden
 counted as the search counts them.
 
 Workers need physink-tui (the same version) importable. A worker evaluates one task at a time whatever its thread
-count (the rollout caches of `physink_tui.sim.evaluate` are per process and not thread-safe, and a rollout holds
-the GIL anyway): start workers with one thread each and as many processes as cores
-(``dask worker ADDRESS --nworkers -1 --nthreads 1``: one per core).
+count (the rollout caches of `physink_tui.sim.evaluate` are per process and not thread-safe): start workers with
+one thread each and as many processes as cores (``dask worker ADDRESS --nworkers -1 --nthreads 1``).
 
 ``distributed`` is imported here only, when an executor is made, so nothing else needs the extra.
 """
