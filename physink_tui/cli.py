@@ -205,7 +205,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--out", metavar="DIR", required=True, help="folder for result.json, timeline.json and project.json"
     )
     p.add_argument("--budget", metavar="N", type=_positive_int, help="at most N rollouts")
-    p.add_argument("--workers", metavar="N", type=_positive_int, help="N worker processes")
+    where = p.add_mutually_exclusive_group()
+    where.add_argument("--workers", metavar="N", type=_positive_int,
+                       help="N local worker processes (default: one per core)")
+    where.add_argument("--scheduler", metavar="ADDRESS",
+                       help="run the rollouts on the Dask cluster whose scheduler is at ADDRESS (e.g. "
+                       "tcp://host:8786) instead of local processes; needs physink-tui[dask]")
     p.add_argument("--seed", metavar="S", type=int, help="random seed, for a reproducible search")
     p.add_argument("--strategy", choices=("default", "grid"), default="default",
                    help="CMA-ES (default) or the thesis's grid (default: %(default)s)")

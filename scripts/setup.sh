@@ -3,7 +3,8 @@
 #
 #   - Debian packages: installs only the missing ones (dpkg says which); `apt-get update` only then.
 #   - .venv at the repo root: made if absent (or if its interpreter no longer runs).
-#   - `pip install -e '.[test]'`: only when pyproject.toml changed since the last install; a hash of it
+#   - `pip install -e '.[test,dask]'` (the test tools, and the optional Dask extra so that its executor is
+#     tested for real): only when pyproject.toml changed since the last install; a hash of it
 #     is kept in .venv/.physink-pyproject.sha256 after each successful install.
 #
 # Works from any directory. Set PHYSINK_PYTHON to use another interpreter than python3 (>= 3.11).
@@ -69,13 +70,13 @@ if ! { [ -x "$VENV/bin/python" ] && "$VENV/bin/python" -c '' 2>/dev/null; }; the
     fi
 fi
 
-# --- the project, editable, with the test tools --------------------------------------------------------
+# --- the project, editable, with the test tools and the Dask extra -------------------------------------
 want=$(sha256sum "$ROOT/pyproject.toml" | cut -d' ' -f1)
 have=$(cat "$STAMP" 2>/dev/null || true)
 if [ "$want" != "$have" ]; then
-    log "installing physink-tui (editable, with test tools) into .venv"
+    log "installing physink-tui (editable, with test tools and the dask extra) into .venv"
     rm -f "$STAMP"
     PIP_NO_INPUT=1 PIP_DISABLE_PIP_VERSION_CHECK=1 \
-        "$VENV/bin/python" -m pip install --quiet --editable "$ROOT[test]"
+        "$VENV/bin/python" -m pip install --quiet --editable "$ROOT[test,dask]"
     printf '%s\n' "$want" >"$STAMP"
 fi

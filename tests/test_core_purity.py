@@ -31,6 +31,8 @@ FORBIDDEN_MODULES = (
     "sounddevice",
     "pocketsphinx",
     "vosk",
+    "dask",
+    "distributed",
     "physink_tui.input",
     "physink_tui.render",
     "physink_tui.commands",

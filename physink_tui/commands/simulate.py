@@ -1,11 +1,13 @@
-"""`physink simulate PROJECT --out DIR [--budget N] [--workers N] [--seed S] [--strategy default|grid]`: searches
-physical parameters whose gravity simulation reproduces the project's demonstrated timeline (`physink_tui.sim`).
+"""`physink simulate PROJECT --out DIR [--budget N] [--workers N | --scheduler ADDRESS] [--seed S]
+[--strategy default|grid]`: searches physical parameters whose gravity simulation reproduces the project's
+demonstrated timeline (`physink_tui.sim`); the rollouts run in local processes or, with ``--scheduler``, on a Dask
+cluster (`physink_tui.sim_run.dask_executor`; the two options exclude each other).
 
 Writes ``DIR/result.json`` (``found``, both distances, ``rollouts``, ``wall_seconds``, ``parameters``,
 ``verdict``), ``DIR/timeline.json`` and ``timeline.txt`` (the best candidate's simulated timeline) and
 ``DIR/project.json`` (the scene with the parameters found applied, and the simulated timeline; the initial
-velocities are in result.json only). Deterministic for a given seed and budget whatever the worker count; only
-``wall_seconds`` varies. Ctrl-C writes the best result so far and says so (exit 130).
+velocities are in result.json only). Deterministic for a given seed and budget whatever the worker count or
+executor; only ``wall_seconds`` varies. Ctrl-C writes the best result so far and says so (exit 130).
 """
 
 from __future__ import annotations
@@ -25,7 +27,7 @@ from physink_tui.sim.evaluate import Problem, Score, compare_rollout, make_probl
 from physink_tui.sim.parameters import Parameters, apply
 from physink_tui.sim.search import Search
 from physink_tui.sim_run.driver import run_search
-from physink_tui.sim_run.executors import ProcessExecutor, SerialExecutor
+from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 
 DEFAULT_BUDGET = 200
 DEFAULT_SEED = 0
@@ -72,15 +74,30 @@ def _problem(path: str) -> tuple[Problem, tuple[str, ...]]:
     return make_problem(scene, project.timeline, project.canvas), project.vocabulary
 
 
+def _executor(args: argparse.Namespace) -> Executor:
+    """The Dask executor with ``--scheduler`` (imported only then), else local processes (one per core by
+    default; none besides this one for ``--workers 1``)."""
+    scheduler = getattr(args, "scheduler", None)
+    if scheduler is not None:
+        from physink_tui.sim_run.dask_executor import DaskExecutor
+
+        return DaskExecutor(scheduler)
+    workers = args.workers or os.cpu_count() or 1
+    return SerialExecutor() if workers == 1 else ProcessExecutor(workers)
+
+
 def run(args: argparse.Namespace) -> int:
     problem, vocabulary = _problem(args.project)
     budget = args.budget or DEFAULT_BUDGET
-    workers = args.workers or os.cpu_count() or 1
     seed = DEFAULT_SEED if args.seed is None else args.seed
     strategy = getattr(args, "strategy", None) or "default"
-    folder = OutputFolder.prepare(args.out)
     search = Search(problem.scene, problem.timeline, problem.canvas, strategy=strategy, seed=seed, budget=budget)
-    executor = SerialExecutor() if workers == 1 else ProcessExecutor(workers)
+    executor = _executor(args)  # before the folder: an unreachable scheduler leaves the last run's files alone
+    try:
+        folder = OutputFolder.prepare(args.out)
+    except PhysinkError:
+        executor.close()
+        raise
     start = time.monotonic()
     interrupted = False
     bar = ProgressBar(f"Simulating ({strategy})", "rollouts")
@@ -93,8 +110,7 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         interrupted = True
     finally:
-        if isinstance(executor, ProcessExecutor):
-            executor.close(cancel=interrupted)
+        executor.close(cancel=interrupted)
         bar.close()
     wall = time.monotonic() - start
     best = search.best if search.best is not None else search.start

@@ -2,8 +2,10 @@
 
 `Executor` is the interface the search driver uses: ``map(fn, items) -> list``. `SerialExecutor` runs in this
 process; `ProcessExecutor` in a local ``concurrent.futures.ProcessPoolExecutor`` (fork where the platform has it:
-workers start in milliseconds and inherit the imported modules; spawn elsewhere). A Dask executor (``--scheduler``,
-an optional extra) is not written yet; it would implement the same ``map``.
+workers start in milliseconds and inherit the imported modules; spawn elsewhere); `DaskExecutor`
+(`physink_tui.sim_run.dask_executor`, the optional extra ``physink-tui[dask]``, ``--scheduler``) on a Dask cluster.
+An executor that can send a value to its workers once rather than with every item (a cluster's) is also a
+`SharingExecutor`. Executors only run what they are given: choosing candidates is the search's.
 """
 
 from __future__ import annotations
@@ -12,7 +14,7 @@ import multiprocessing
 import signal
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
-from typing import Any, Protocol
+from typing import Any, Protocol, runtime_checkable
 
 
 class Executor(Protocol):
@@ -20,7 +22,19 @@ class Executor(Protocol):
 
     def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]: ...
 
-    def close(self) -> None: ...
+    def close(self, *, cancel: bool = False) -> None:
+        """Frees the workers; ``cancel`` (after Ctrl-C) drops work still queued instead of waiting for it."""
+        ...
+
+
+@runtime_checkable
+class SharingExecutor(Executor, Protocol):
+    """An executor that ships a value all items share once, not with every item (the driver sends the search's
+    problem this way; local executors have `share` instead)."""
+
+    def map_shared(self, fn: Callable[[Any, Any], Any], shared: Any, items: Sequence[Any]) -> list[Any]:
+        """``[fn(shared, item) for item in items]``, in the items' order."""
+        ...
 
 
 class SerialExecutor:
@@ -31,7 +45,7 @@ class SerialExecutor:
     def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]:
         return [fn(item) for item in items]
 
-    def close(self) -> None:
+    def close(self, *, cancel: bool = False) -> None:
         pass
 
     def __enter__(self) -> SerialExecutor:
