@@ -35,7 +35,7 @@ from physink_tui.scene.physics.state import REST, Motion, WorldState
 from physink_tui.scene.physics.stepping import step_and_observe
 from physink_tui.scene.physics.world import GRAVITY, World
 from physink_tui.sim.parameters import Parameters, apply
-from physink_tui.timeline.demo_setup import recorder_for
+from physink_tui.timeline.demo_setup import recorder_for, touching_pairs
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.recorder import MOVING_SPEED, STILL_FRAMES, Observation
 
@@ -175,7 +175,8 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     movable = [b for b in bodies if not applied.is_fixed(b)]
     for body, (vx, vy) in sorted(parameters.velocities.items()):
         world.set_velocity(body, (vx, vy))
-    world.hold_until_touched(set(parameters.start_bodies))
+    held = frozenset(movable) - set(parameters.start_bodies)
+    world.hold_until_touched(set(parameters.start_bodies), touching_pairs(start_scene, held))
     limits = _speed_limits(world, bodies, world.dt)
     bounds = _bounds(canvas)
     flagged = {(body, "settle"): f"{body} would not stay where it is drawn (it moved {d:.0f} units under "

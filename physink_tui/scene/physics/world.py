@@ -9,6 +9,7 @@ poses back into a Scene. Deciding what strokes become (interpret), what contacts
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 import pymunk
@@ -270,19 +271,24 @@ class World:
             if self._built.bodies[cid].body_type == pymunk.Body.DYNAMIC:
                 limit_speed(self._built.bodies[cid], self._dt)
 
-    def hold_until_touched(self, awake: set[str] | frozenset[str]) -> None:
+    def hold_until_touched(self, awake: set[str] | frozenset[str],
+                           together: Iterable[frozenset[str]] = ()) -> None:
         """Every dynamic body except ``awake`` and what joints, ropes and springs tie to them sleeps where it is:
         gravity does not move it until an awake body touches it, and then it wakes within the same step with
         everything tied to it (a lever, its rope and the knife on the rope sleep as one group), so the blow that
         woke it is solved as between two moving bodies (Chipmunk's sleeping). A simulation holds this way what
-        its drawing does not hold by itself.
+        its drawing does not hold by itself. ``together`` names pairs of bodies (touching ones, say) that sleep in
+        one group too: a cup on a platform and the peg that holds the platform wake as one, so the peg's spring
+        pushes it on when the platform drops away.
 
         Sleeping is enabled on the space with a threshold no rollout reaches: nothing falls asleep by itself.
         """
         if self._space.sleep_time_threshold == float("inf"):
             self._space.sleep_time_threshold = NEVER_IDLE
         keep = {self._get(body_id) for body_id in awake}
-        for group in _tied_groups(self._dynamic_bodies(), self._space.constraints):
+        ties = [(c.a, c.b) for c in self._space.constraints]
+        ties += [tuple(self._get(b) for b in sorted(pair)) for pair in together if len(pair) == 2]
+        for group in _tied_groups(self._dynamic_bodies(), ties):
             if keep.isdisjoint(group):  # what is tied to an awake body stays awake with it
                 first, *rest = group
                 first.sleep()
@@ -425,8 +431,8 @@ class World:
                 self._live.discard(part)
 
 
-def _tied_groups(bodies: list[pymunk.Body], constraints: list[pymunk.Constraint]) -> list[list[pymunk.Body]]:
-    """``bodies`` in groups tied together by ``constraints`` (through dynamic bodies only), in the given order."""
+def _tied_groups(bodies: list[pymunk.Body], ties: list[tuple[pymunk.Body, ...]]) -> list[list[pymunk.Body]]:
+    """``bodies`` in groups tied together by ``ties`` (pairs; through dynamic bodies only), in the given order."""
     index = {body: i for i, body in enumerate(bodies)}
     parent = list(range(len(bodies)))
 
@@ -436,8 +442,8 @@ def _tied_groups(bodies: list[pymunk.Body], constraints: list[pymunk.Constraint]
             i = parent[i]
         return i
 
-    for c in constraints:
-        a, b = index.get(c.a), index.get(c.b)
+    for tie_a, tie_b in ties:
+        a, b = index.get(tie_a), index.get(tie_b)
         if a is not None and b is not None:
             parent[root(a)] = root(b)
     groups: dict[int, list[pymunk.Body]] = {}
