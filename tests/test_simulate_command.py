@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -11,6 +12,8 @@ from physink_tui import cli
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import load_project, save_project
 from physink_tui.formats.timeline_json import decode_timeline_json
+from physink_tui.scene.components import MATERIALS, Body
+from physink_tui.timeline.events import Event, Timeline, TrajectoryPoint
 from tests.sim_scenes import CANVAS, ball_floor_wall, demonstration
 
 
@@ -76,3 +79,26 @@ def test_refuses_a_project_with_nothing_to_simulate(tmp_path: Path, capsys: pyte
                                  ["--strategy", "random"]])
 def test_bad_usage_exits_2(tmp_path: Path, bad: list[str]) -> None:
     assert cli.main(["simulate", project(tmp_path), "--out", str(tmp_path / "o"), *bad]) == 2
+
+
+def rising_by_itself() -> Project:
+    """The ball rolls into the wall, and a second ball drawn resting on the floor rises from rest at t = 1 with
+    nothing causing it (a movement with no cause: no start, no contact) -- behaviour no physics produces."""
+    scene = ball_floor_wall().add(Body("b4", "circle", (), 20.0, (300.0, 660.0), 0.0, MATERIALS["round"], "pebble"))
+    scene = replace(scene, next_id={**scene.next_id, "b": 5})
+    path = tuple(TrajectoryPoint(1.0 + 0.1 * k, 300.0, 660.0 - 30.0 * k, 0.0, 0.0, -300.0) for k in range(6))
+    rising = Event("r1", "movement", ("b4",), (), 1.0, 1.5, trajectory=path)
+    return Project(scene, (), Timeline((*demonstration().events, rising)), CANVAS)
+
+
+def test_behaviour_no_physics_produces_gets_a_verdict_naming_it(tmp_path: Path) -> None:
+    path = tmp_path / "impossible.physink.json"
+    save_project(rising_by_itself(), path)
+    out = tmp_path / "out"
+    assert cli.main(["simulate", str(path), "--out", str(out), "--budget", "30", "--workers", "1"]) == 0
+    result = json.loads((out / "result.json").read_text())
+    assert result["found"] is False and result["qualitative_distance"] > 0
+    verdict = result["verdict"]
+    assert '"Movement of pebble"' in verdict and "t=1.00" in verdict, verdict
+    assert "nothing sets the pebble moving" in verdict
+    assert any("pebble" in line for line in result["differences"])

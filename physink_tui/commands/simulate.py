@@ -26,6 +26,7 @@ from physink_tui.progress import ProgressBar
 from physink_tui.sim.evaluate import Problem, Score, compare_rollout, make_problem, simulate
 from physink_tui.sim.parameters import Parameters, apply
 from physink_tui.sim.search import Search
+from physink_tui.sim.verdict import verdict
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 
@@ -48,19 +49,6 @@ def parameters_object(p: Parameters) -> dict:
         "springs": {s: {"k": _n(v.k), "rest_length": _n(v.rest_length)} for s, v in sorted(p.springs.items())},
         "velocities": {b: [_n(v[0]), _n(v[1])] for b, v in sorted(p.velocities.items())},
     }
-
-
-def verdict(found: bool, reasons: tuple[str, ...], flagged: tuple[str, ...]) -> str:
-    """The result in words: reproduced, or which demonstrated events the best candidate did not reproduce."""
-    if found:
-        text = "every demonstrated event is reproduced"
-    elif reasons:
-        text = "not reproduced by the best candidate (A = demonstration, B = simulation): " + "; ".join(reasons)
-    else:
-        text = "no candidate could be simulated without the physics blowing up"
-    if flagged:
-        text += ". Flagged: " + "; ".join(flagged)
-    return text
 
 
 def _problem(path: str) -> tuple[Problem, tuple[str, ...]]:
@@ -118,7 +106,9 @@ def run(args: argparse.Namespace) -> int:
     comparison = compare_rollout(problem, result, explain=True)
     score = search.best_score
     found = score is not None and not score.exploded and comparison.equivalent
-    text = verdict(found, comparison.reasons if search.best is not None else (), result.flagged)
+    text = verdict(problem, result.timeline, comparison, found=found,
+                   rollouts=search.rollouts - search.exploded if search.best is not None else 0,
+                   flagged=result.flagged)
     obj = {
         "found": found,
         "qualitative_distance": _n(comparison.qualitative_distance),
@@ -132,6 +122,7 @@ def run(args: argparse.Namespace) -> int:
         "wall_seconds": round(wall, 3),
         "parameters": parameters_object(best),
         "verdict": text,
+        "differences": list(comparison.reasons),
     }
     write_session_outputs(folder, apply(problem.scene, best), result.timeline, problem.canvas, vocabulary)
     folder.write("result.json", json.dumps(obj, indent=2, ensure_ascii=False, allow_nan=False) + "\n")

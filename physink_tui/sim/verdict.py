@@ -1,0 +1,71 @@
+"""SIMULATE's verdict in words: reproduced, or the first demonstrated event no candidate reproduces and why (thesis
+2.4.2: "the system will inform the user"); no search, no I/O.
+
+The first event is found leg by leg (`legs.legs`, causal order): the first leg the best candidate does not
+reproduce, then the first of that leg's own events the simulation lacks. Why, in words:
+
+- a movement nothing causes (no start, no contact: a body rising from rest by itself): no physics sets a body at
+  rest moving with nothing touching it;
+- a contact the simulation never makes: how close the body came to where the contact was demonstrated;
+- otherwise the metric's own reason for that leg (another side, another region, another cause, an event more).
+"""
+
+from __future__ import annotations
+
+from physink_tui.sim.evaluate import Problem, miss_distance
+from physink_tui.sim.legs import legs
+from physink_tui.timeline.equivalence import Comparison, compare_prefixes, prepare
+from physink_tui.timeline.events import Event, Timeline, event_label
+
+REPRODUCED = "every demonstrated event is reproduced"
+
+
+def verdict(problem: Problem, simulated: Timeline, comparison: Comparison, *, found: bool, rollouts: int,
+            flagged: tuple[str, ...] = ()) -> str:
+    """The verdict for the best candidate, whose rollout gave ``simulated`` and compares as ``comparison`` (with
+    reasons); ``rollouts`` is how many candidates the search tried."""
+    if found:
+        text = REPRODUCED
+    elif rollouts == 0 or not simulated.events:
+        text = "no candidate could be simulated without the physics blowing up"
+    else:
+        text = _first_difference(problem, simulated, comparison, rollouts)
+    if flagged:
+        text += ". Flagged: " + "; ".join(flagged)
+    return text
+
+
+def _first_difference(problem: Problem, simulated: Timeline, comparison: Comparison, rollouts: int) -> str:
+    names = problem.scene.names()
+    demonstrated = problem.timeline
+    cut = legs(demonstrated)
+    _, prefixes = compare_prefixes(prepare(demonstrated, names), prepare(simulated, names),
+                                   [leg.events for leg in cut], simulation=True)
+    before: frozenset[str] = frozenset()
+    for leg, distance in zip(cut, prefixes, strict=True):
+        if distance.qualitative_distance > 0:
+            missing = [e for e in distance.only_a if e not in before]
+            if missing:
+                event = demonstrated.event(missing[0])
+                why = _why_missing(problem, simulated, event, names)
+            else:
+                event = demonstrated.event(leg.last)
+                why = "; ".join(comparison.reasons[:3]) or "the simulation does it otherwise"
+            return (f'no simulation in {rollouts} rollouts reproduces "{event_label(event, names)}" '
+                    f"(t={event.t0:.2f} s in the demonstration): {why}")
+        before = leg.events
+    return "not reproduced: " + "; ".join(comparison.reasons[:3])
+
+
+def _why_missing(problem: Problem, simulated: Timeline, event: Event, names: dict[str, str]) -> str:
+    def name(c: str) -> str:
+        return names.get(c) or c
+
+    if event.type == "movement" and not event.causes and event.components:
+        return (f"nothing sets the {name(event.components[0])} moving there (no start, no contact), and no "
+                "physics starts a body at rest moving by itself")
+    if event.type == "contact" and len(event.components) == 2:
+        a, b = (name(c) for c in event.components)
+        near = miss_distance(demonstrated=problem.timeline, simulated=simulated, only_demonstrated=(event.id,))
+        return f"the {a} never reaches the {b} (the best candidate comes within {near:.0f} canvas units of it)"
+    return "the best candidate never does it"
