@@ -30,6 +30,9 @@ QUALITATIVE_WEIGHT = 1000.0
 """The objective is ``QUALITATIVE_WEIGHT * qualitative + quantitative``: one qualitative cost step (0.25, a region)
 outweighs 250 canvas units of trajectory distance, so the quantitative distance only ranks candidates of equal
 qualitative distance (unless trajectories are further apart than a quarter of the canvas, which ties are not)."""
+MISS_WEIGHT = 4.0
+"""How much more a unit of `Score.miss` counts than a unit of quantitative distance: among candidates that all
+miss a demonstrated contact, reaching it matters more than following the pen's (not always physical) path."""
 NEVER_MOVED = math.hypot(1600.0, 1000.0)
 """`Score.miss` of a demonstrated contact whose body never moved in the simulation."""
 SETTLED_CACHE = 8
@@ -70,7 +73,7 @@ class Score:
         """What the search minimises: `QUALITATIVE_WEIGHT` * qualitative + quantitative + miss; inf when exploded."""
         if self.exploded:
             return math.inf
-        return QUALITATIVE_WEIGHT * self.qualitative + self.quantitative + self.miss
+        return QUALITATIVE_WEIGHT * self.qualitative + self.quantitative + MISS_WEIGHT * self.miss
 
 
 EXPLODED_SCORE = Score(math.inf, math.inf, True)

@@ -10,7 +10,7 @@ of earlier legs stay free, at the point earlier stages found, so a later leg may
 prefix score keeps the earlier legs reproduced. As soon as a candidate reproduces the leg, the search moves on from
 it to the next leg it does not reproduce (one candidate may solve several legs). A run that stalls (its best not
 better for `STALL_GENERATIONS` generations, or CMA-ES stops) restarts from the best with a step size twice as large
-(as IPOP-CMA-ES does); after `MAX_RESTARTS` the leg is given up and the next one taken, the unsolved leg's mismatch
+(as IPOP-CMA-ES does); past `MAX_SIGMA` the leg is given up and the next one taken, the unsolved leg's mismatch
 still counted in every later prefix.
 
 CMA-ES is pycma's ``CMAEvolutionStrategy`` (ask/tell) in `coordinates.Normalisation`'s unscaled coordinates, its
@@ -33,11 +33,17 @@ from physink_tui.sim.legs import Leg
 from physink_tui.sim.parameters import Parameters
 
 CMA_SIGMA = 0.5
-"""CMA-ES's initial step size in the normalised coordinates (half a step of each parameter's scale); doubled at
-each restart of a leg."""
-MAX_RESTARTS = 3
-"""Restarts of one leg (step sizes 0.5, 1, 2, 4) before it is given up."""
-STALL_GENERATIONS = 6
+"""CMA-ES's initial step size in the normalised coordinates (half a step of each parameter's scale) on a leg from
+parameters that reproduce no earlier leg; doubled at each restart."""
+LOCAL_SIGMA = 0.05
+"""The initial step size on a leg from parameters that reproduce the legs before it: those parameters sit on a
+thin band (a ball that must bounce exactly so), which large steps only fall off; doubled at each restart."""
+LOCAL_GROWTH = 4.0
+"""Factor by which the step size of a run from such parameters grows at each restart (0.05, 0.2, 0.8, 3.2): the
+next leg is often along the band, sometimes far off it."""
+MAX_SIGMA = 4.0
+"""A leg is given up once a restart would need a step size above this."""
+STALL_GENERATIONS = 4
 """Generations without a better leg score after which a run restarts."""
 FAMILY_STEPS = (2 ** (1 / 4), 2 ** (1 / 16), 2 ** (1 / 64))
 FAMILY_SPAN = (range(-7, 5), range(-3, 4), range(-3, 4))
@@ -117,7 +123,7 @@ class LegByLeg:
             if run.best is not None and run.best[0] < self._key(self.centre_score):
                 self._adopt(run.best)
             self.restarts += 1
-            if self.restarts > MAX_RESTARTS:
+            if self._sigma() > MAX_SIGMA:
                 self._given_up = self.leg
                 self.restarts = 0
             self._run = None
@@ -132,6 +138,12 @@ class LegByLeg:
 
     def _key(self, s: Score) -> tuple[float, float]:
         return (leg_score(s, self.leg).objective, s.objective)
+
+    def _sigma(self) -> float:
+        """The step size of the next run on the current leg (see `LOCAL_SIGMA`)."""
+        assert self.centre_score is not None
+        local = self.leg > 0 and leg_score(self.centre_score, self.leg - 1).qualitative == 0
+        return LOCAL_SIGMA * LOCAL_GROWTH ** self.restarts if local else CMA_SIGMA * 2.0 ** self.restarts
 
     def _adopt(self, best: tuple[tuple[float, float], Parameters, Score]) -> None:
         self.centre, self.centre_score = best[1], best[2]
@@ -151,7 +163,7 @@ class LegByLeg:
             self._given_up = self.leg
             return False
         rng_key = (self.seed, self.leg, self.restarts)
-        self._run = _Run(Normalisation(coords, self.centre, self.start), CMA_SIGMA * 2.0 ** self.restarts, rng_key)
+        self._run = _Run(Normalisation(coords, self.centre, self.start), self._sigma(), rng_key)
         return True
 
 
