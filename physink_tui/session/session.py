@@ -6,9 +6,10 @@ snapshot for views, `finish(t)` ends it. Time is always the input's: the session
 ``t``, so many small advances and one large one end the same, step for step. Pen input goes through the input side
 (decoder, mapping, gesture engine) to the current mode (`modes`: sketch, adjust, demo), which owns its world;
 the document (scene and timeline) changes only through the history, so undo, redo and clear mean the same in every
-mode. Nothing an input can do raises out of `handle`: what cannot be done is told. With a journal attached, every
-entry is journaled once handled (a command that makes no sense in the mode included: a replay tells the same),
-and the end of the session too; an entry the journal cannot hold is refused before it acts, and not journaled.
+mode. ``simulate`` runs SIMULATE here (`simulation`); its result shows until the document changes. Nothing an
+input can do raises out of `handle`: what cannot be done is told. With a journal attached, every entry is
+journaled once handled (a command that makes no sense in the mode included: a replay tells the same), and the end
+of the session too; an entry the journal cannot hold is refused before it acts, and not journaled.
 """
 
 from __future__ import annotations
@@ -71,7 +72,7 @@ class Session:
     raise_internal_errors = False
     """Tests set this: an internal error is raised (after journaling) instead of only reported."""
     simulation_budget = DEFAULT_BUDGET
-    """The budget of a ``simulate`` given none (journaled with it, so a replay needs the same value of nothing)."""
+    """The budget of a ``simulate`` given none (journaled with it, so replays never read it; tests lower it)."""
 
     def __init__(self, canvas: tuple[float, float], pen: PenInput, document: Document | None = None) -> None:
         self.canvas = canvas
@@ -168,12 +169,12 @@ class Session:
         try:
             self.advance(entry.t)
             self._act(entry)
-            self._forget_stale_search()
         except PhysinkError as exc:  # input the session cannot use (an unknown device, a bad descriptor)
             self.tell(str(exc))
         except Exception as exc:  # a bug: recorded and told; the session and its journal carry on
             self.errors.append("".join(traceback.format_exception(exc)))
             self.tell(f"internal error handling the input at {entry.t:g} s: {exc!r} (reported; carrying on)")
+        self._forget_stale_search()
         self.revision += 1
         self._journal(entry)
         if len(self.errors) > errors and self.raise_internal_errors:
