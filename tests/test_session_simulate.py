@@ -13,6 +13,7 @@ from test_session import box_points, pen_header, pen_stroke
 from test_session_modes import drag, live, replayed
 
 from physink_tui.cli import main
+from physink_tui.commands.simulate import parameters_object
 from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.journal.writer import JournalWriter
@@ -172,3 +173,19 @@ def test_physink_replay_of_a_journal_with_simulate_writes_its_usual_files(tmp_pa
     live([load(timeline=demonstration()), CommandEntry(1.0, "simulate", (3, 20))], path)
     assert main(["replay", str(path), "--out", str(tmp_path / "out")]) == 0
     assert {p.name for p in (tmp_path / "out").iterdir()} >= {"project.json", "timeline.json", "timeline.txt"}
+
+
+@pytest.mark.parametrize("scene", [None, wall_out_of_the_way()], ids=["found", "not found"])
+def test_the_session_finds_what_physink_simulate_finds_on_the_same_project(tmp_path: Path, scene) -> None:
+    path = tmp_path / "machine.physink.json"
+    path.write_text(json.dumps(project(scene, demonstration())))
+    assert main(["simulate", str(path), "--out", str(tmp_path / "sim"), "--seed", "3", "--budget", "20",
+                 "--workers", "1"]) == 0
+    written = json.loads((tmp_path / "sim" / "result.json").read_text())
+    session = live([CommandEntry(0.5, "load", (str(path),), json.loads(path.read_text())),
+                    CommandEntry(1.0, "simulate", (3, 20))], tmp_path / "s.physink.jsonl")
+    result = session.view().search
+    assert (result.found, result.rollouts) == (written["found"], written["rollouts"])
+    assert parameters_object(result.parameters) == written["parameters"]
+    assert (round(result.qualitative_distance, 6), round(result.quantitative_distance, 6)) == (
+        written["qualitative_distance"], written["quantitative_distance"])
