@@ -95,9 +95,16 @@ class SessionMachine(RuleBasedStateMachine):
     def change_mode(self, mode: str) -> None:
         self.feed([CommandEntry(self.t, "mode", (mode,))], gap=0.1)
 
-    @rule(name=st.sampled_from(["undo", "redo", "clear", "play", "pause", "stop", "simulate"]))
+    @rule(name=st.sampled_from(["undo", "redo", "clear", "play", "pause", "stop"]))
     def command(self, name: str) -> None:
         self.feed([CommandEntry(self.t, name, ())], gap=0.1)
+
+    @rule(args=st.sampled_from([(), (3,), (1, 2)]))
+    def simulate(self, args: tuple[int, ...]) -> None:
+        """SIMULATE with few rollouts (`Session.simulation_budget` stands in for a missing budget; the journal
+        holds the one used)."""
+        self.session.simulation_budget = 2
+        self.feed([CommandEntry(self.t, "simulate", args)], gap=0.1)
 
     @rule(t=st.floats(0.0, 4.0))
     def seek(self, t: float) -> None:

@@ -23,6 +23,7 @@ from physink_tui.formats.outputs import OutputFolder
 from physink_tui.formats.project.files import load_project
 from physink_tui.formats.session_outputs import write_session_outputs
 from physink_tui.progress import ProgressBar
+from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
 from physink_tui.sim.evaluate import Problem, Score, compare_rollout, make_problem, simulate
 from physink_tui.sim.parameters import Parameters, apply
 from physink_tui.sim.search import Search
@@ -30,8 +31,6 @@ from physink_tui.sim.verdict import verdict
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 
-DEFAULT_BUDGET = 200
-DEFAULT_SEED = 0
 EXIT_INTERRUPTED = 130
 
 

@@ -6,15 +6,17 @@ snapshot for views, `finish(t)` ends it. Time is always the input's: the session
 ``t``, so many small advances and one large one end the same, step for step. Pen input goes through the input side
 (decoder, mapping, gesture engine) to the current mode (`modes`: sketch, adjust, demo), which owns its world;
 the document (scene and timeline) changes only through the history, so undo, redo and clear mean the same in every
-mode. Nothing an input can do raises out of `handle`: what cannot be done is told. With a journal attached, every
-entry is journaled once handled (a command that makes no sense in the mode included: a replay tells the same),
-and the end of the session too; an entry the journal cannot hold is refused before it acts, and not journaled.
+mode. ``simulate`` runs SIMULATE here (`simulation`); its result shows until the document changes. Nothing an
+input can do raises out of `handle`: what cannot be done is told. With a journal attached, every entry is
+journaled once handled (a command that makes no sense in the mode included: a replay tells the same), and the end
+of the session too; an entry the journal cannot hold is refused before it acts, and not journaled.
 """
 
 from __future__ import annotations
 
 import traceback
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import replace
 
 from physink_tui.errors import JournalError, PhysinkError, SceneError
@@ -38,11 +40,14 @@ from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.sources import RawReport, SourceEnded
 from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.physics.live import LiveWorld
+from physink_tui.session import simulation
 from physink_tui.session.history import Document, History
 from physink_tui.session.modes.base import Mode
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import SketchMode
+from physink_tui.session.simulation import SearchResult
 from physink_tui.session.view import Message, SessionView, snapshot
+from physink_tui.sim.defaults import DEFAULT_BUDGET
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.phrases import DEFAULT_VOCABULARY, Vocabulary, parse_vocabulary
 
@@ -66,6 +71,8 @@ class Session:
 
     raise_internal_errors = False
     """Tests set this: an internal error is raised (after journaling) instead of only reported."""
+    simulation_budget = DEFAULT_BUDGET
+    """The budget of a ``simulate`` given none (journaled with it, so replays never read it; tests lower it)."""
 
     def __init__(self, canvas: tuple[float, float], pen: PenInput, document: Document | None = None) -> None:
         self.canvas = canvas
@@ -81,6 +88,7 @@ class Session:
         self.ended = False
         self.sketch = SketchMode(self)
         self.current: Mode = self.sketch
+        self._searched: tuple[Document, SearchResult] | None = None  # the last SIMULATE and its document
 
     @classmethod
     def from_header(cls, header: JournalHeader, document: Document | None = None) -> Session:
@@ -141,7 +149,8 @@ class Session:
     def view(self) -> SessionView:
         """An immutable snapshot of everything a view shows."""
         return snapshot(self.revision, self.t, self.current, self.scene, self.canvas, self.pen.ink(),
-                        self.sketch.pending, self.selected, self.history, self.messages)
+                        self.sketch.pending, self.selected, self.history, self.messages,
+                        self._searched[1] if self._searched else None)
 
     # -- input ---------------------------------------------------------------------------------------------
 
@@ -150,6 +159,8 @@ class Session:
         then it is journaled. An entry the journal cannot hold (a value out of range, time going backwards) is
         refused before it is acted on, so a replay of the journal sees what the session saw. Nothing an input can
         do raises out of here."""
+        if isinstance(entry, CommandEntry):
+            entry = simulation.with_defaults(entry, self.simulation_budget)  # journaled with both numbers
         refusal = self._refusal(entry)
         if refusal is not None:
             self.tell(f"input refused: {refusal}")
@@ -163,6 +174,7 @@ class Session:
         except Exception as exc:  # a bug: recorded and told; the session and its journal carry on
             self.errors.append("".join(traceback.format_exception(exc)))
             self.tell(f"internal error handling the input at {entry.t:g} s: {exc!r} (reported; carrying on)")
+        self._forget_stale_search()
         self.revision += 1
         self._journal(entry)
         if len(self.errors) > errors and self.raise_internal_errors:
@@ -180,6 +192,7 @@ class Session:
             changed = True
         changed |= self.current.advance(t)
         self.t = t
+        self._forget_stale_search()
         if changed:
             self.revision += 1
 
@@ -259,14 +272,18 @@ class Session:
         elif name == "mode":
             self._switch(str(args[0]), t)
         elif name in ("undo", "redo", "clear"):
-            self._edit(name, t)
+            with self._closed(t):
+                self._edit(name)
+        elif name == "simulate":
+            with self._closed(t):
+                self._simulate(int(args[0]), int(args[1]))
         elif name == "load":
             self._load(entry)
         elif name == "end":  # the driver finishes next; input after it would still be handled
             self._end()
         else:
             self.sketch.flush(t)
-            self.tell(f"{name}: not available yet (simulation and saving come with later issues)")
+            self.tell(f"{name}: not available yet (saving comes with a later issue)")
 
     def _switch(self, mode: str, t: float) -> None:
         """``mode sketch`` or ``mode demo``: what the current mode was doing is committed first."""
@@ -279,13 +296,22 @@ class Session:
         self.sketch.close(t)
         self.current = DemoMode(self, t) if mode == "demo" else self.sketch
 
-    def _edit(self, name: str, t: float) -> None:
-        """Undo, redo and clear act on the document in every mode: the current mode commits what it was doing,
-        the history changes, and a demonstration starts again from the document that results."""
+    @contextmanager
+    def _closed(self, t: float) -> Iterator[None]:
+        """The body acts on the document with the modes closed at ``t`` (sketch takes a waiting half-X, adjust
+        puts its body down, demo commits its take); a demonstration then starts again from the document."""
         self.current.close(t)
         self.sketch.close(t)
         demonstrating = isinstance(self.current, DemoMode)
         self.current = self.sketch
+        try:
+            yield
+        finally:
+            if demonstrating:
+                self.current = DemoMode(self, t)
+
+    def _edit(self, name: str) -> None:
+        """Undo, redo and clear act on the document in every mode (`_closed`)."""
         if name == "undo" and self.history.undo() is None:
             self.tell("nothing to undo")
         elif name == "redo" and self.history.redo() is None:
@@ -295,8 +321,20 @@ class Session:
                 self.commit(Document(replace(Scene(), next_id=self.scene.next_id)), "clear")
             self.selected = self.sketch.last_created = None
         self._forget_gone()
-        if demonstrating:
-            self.current = DemoMode(self, t)
+
+    def _simulate(self, seed: int, budget: int) -> None:
+        """``simulate SEED BUDGET``: searches here and now (`simulation.attempt`); the result is shown until the
+        document changes."""
+        result, text = simulation.attempt(self.document, self.canvas, seed, budget)
+        if result is not None:
+            self._searched = (self.document, result)
+        self.tell(text)
+
+    def _forget_stale_search(self) -> None:
+        """A SIMULATE result whose document changed (an edit, or a take being recorded) is forgotten."""
+        if self._searched is not None and (self._searched[0] is not self.document or (
+                isinstance(self.current, DemoMode) and self.current.has_take)):
+            self._searched = None
 
     def _load(self, entry: CommandEntry) -> None:
         """``load PATH`` with the project embedded: it becomes the document (one undoable action) and its words
@@ -306,25 +344,21 @@ class Session:
             self.tell(f"{where}: the project is not embedded in the input, so nothing was loaded")
             return
         project = decode_project_object(entry.project, Place(where, SceneError))
-        self.current.close(entry.t)
-        self.sketch.close(entry.t)
-        demonstrating = isinstance(self.current, DemoMode)
-        self.current = self.sketch
-        self.commit(Document(project.scene, project.timeline), where)
-        self.add_words(project_vocabulary(project))
-        if tuple(project.canvas) != tuple(self.canvas):
-            self.tell(f"{where}: the project was drawn on a {project.canvas[0]:g} x {project.canvas[1]:g} canvas, "
-                      f"this session's is {self.canvas[0]:g} x {self.canvas[1]:g}; it is shown as drawn")
-        self.tell(f"loaded {entry.args[0] if entry.args else 'a project'}: {len(project.scene.components)} "
-                  "components" + (", a timeline" if project.timeline is not None else ""))
-        if demonstrating:
-            self.current = DemoMode(self, entry.t)
+        with self._closed(entry.t):
+            self.commit(Document(project.scene, project.timeline), where)
+            self.add_words(project_vocabulary(project))
+            if tuple(project.canvas) != tuple(self.canvas):
+                self.tell(f"{where}: the project was drawn on a {project.canvas[0]:g} x {project.canvas[1]:g} "
+                          f"canvas, this session's is {self.canvas[0]:g} x {self.canvas[1]:g}; it is shown as drawn")
+            self.tell(f"loaded {entry.args[0] if entry.args else 'a project'}: {len(project.scene.components)} "
+                      "components" + (", a timeline" if project.timeline is not None else ""))
 
     def _end(self) -> None:
         self.current.close(self.t)
         self.sketch.close(self.t)
         self.current = self.sketch
         self.ended = True
+        self._forget_stale_search()
 
     def _playback(self, name: str, args: tuple, t: float) -> None:
         demo = self.current

@@ -1,5 +1,5 @@
 """What a view is given: `SessionView`, an immutable snapshot of a session (`snapshot`, for `Session.view`),
-and `Message`; no drawing."""
+and `Message` (SIMULATE's `SearchResult` is `simulation`'s); no drawing."""
 
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from physink_tui.session.history import History
 from physink_tui.session.modes.base import Mode
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import PendingStroke
+from physink_tui.session.simulation import SearchResult
 from physink_tui.timeline.events import Timeline
 
 Stroke = tuple[tuple[float, float], ...]
@@ -25,15 +26,6 @@ class Message:
 
     t: float
     text: str
-
-
-@dataclass(frozen=True, slots=True)
-class SearchProgress:
-    """How far a SIMULATE search has got (filled by the simulation issue)."""
-
-    rollouts: int
-    budget: int
-    best_distance: float | None
 
 
 @dataclass(frozen=True, slots=True)
@@ -55,7 +47,8 @@ class SessionView:
         duration: the timeline's length in seconds.
         playing: whether the recording is playing back.
         messages: everything told so far, oldest first.
-        search: SIMULATE's progress, or None when no search runs.
+        search: what the last ``simulate`` found for the document shown, or None (none ran since the document last
+            changed).
     """
 
     revision: int
@@ -73,13 +66,14 @@ class SessionView:
     duration: float
     playing: bool
     messages: tuple[Message, ...]
-    search: SearchProgress | None = None
+    search: SearchResult | None = None
 
 
 def snapshot(revision: int, t: float, mode: Mode, scene: Scene, canvas: tuple[float, float],
              ink: Sequence[Sequence[StrokePoint]], pending: PendingStroke | None, selected: str | None,
-             history: History, messages: Sequence[Message]) -> SessionView:
-    """The view of a session in ``mode`` (``ink``: the strokes being drawn, in canvas fractions)."""
+             history: History, messages: Sequence[Message], search: SearchResult | None = None) -> SessionView:
+    """The view of a session in ``mode`` (``ink``: the strokes being drawn, in canvas fractions; ``search``: the
+    document's SIMULATE result)."""
     width, height = canvas
     timeline = mode.timeline()
     demo = mode if isinstance(mode, DemoMode) else None
@@ -99,4 +93,5 @@ def snapshot(revision: int, t: float, mode: Mode, scene: Scene, canvas: tuple[fl
         duration=max((ev.t1 for ev in timeline.events), default=0.0) if timeline else 0.0,
         playing=demo.playing if demo else False,
         messages=tuple(messages),
+        search=search,
     )

@@ -154,8 +154,8 @@ class CommandEntry:
         name: one of `physink_tui.formats.journal.value_checks.COMMANDS` (mode, play, pause, stop, seek, clear,
             undo, redo, label, simulate, save, load, end).
         args: its arguments: ``("sketch",)`` or ``("demo",)`` for mode, one float (seconds of timeline time,
-            >= 0) for seek, ``(target, text)`` for label, ``(path,)`` for save and load, ``()`` for the others
-            (``end``: the session ended at t).
+            >= 0) for seek, ``(target, text)`` for label, ``(path,)`` for save and load, up to two ints (seed
+            >= 0, budget >= 1) for simulate, ``()`` for the others (``end``: the session ended at t).
         project: ``load`` only, and required there: the loaded project's JSON object as its file holds it
             (`physink_tui.formats.project.codec`), so that a replay needs no other file; None otherwise. A deep
             copy of what was passed; not part of the hash.

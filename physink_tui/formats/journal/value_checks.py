@@ -31,6 +31,9 @@ MAX_SECONDS = 366 * 24 * 3600.0
 """The latest ``t`` (and ``seek`` time) a journal may hold, in seconds: a year and a day. Larger finite values
 (``1e308``) are refused, since time arithmetic on them overflows and no session lasts that long."""
 
+MAX_COUNT = 2**31 - 1
+"""The largest ``simulate`` seed or budget a journal may hold (any reader's integers hold it exactly)."""
+
 SECONDS_EXPECTED = f"a number in [0, {MAX_SECONDS:.0f}] (seconds since the session start)"
 """What a ``t`` must be, in error messages."""
 
@@ -86,7 +89,8 @@ def report_bytes(where: Place, key: str, value: Any) -> bytes:
 
 
 def command(where: Place, name: Any, args: Any) -> tuple[str | float, ...]:
-    """A command's name and arguments, minimally checked; the arguments as a tuple (seek's as a float).
+    """A command's name and arguments, minimally checked; the arguments as a tuple (seek's as a float, simulate's
+    as ints).
 
     >>> command(at("line 5"), "seek", [2])
     (2.0,)
@@ -100,10 +104,32 @@ got ["draw"]
         raise where.bad("cmd", f"one of {', '.join(COMMANDS)}", name)
     if not isinstance(args, list | tuple):
         raise where.bad("args", "a list", args)
+    if name == "simulate":
+        return simulate_args(where, args)
     ok = _args_ok(name, args)
     if ok is None:
         raise where.bad("args", f"{_USAGE.get(name, 'no arguments')} for {show(name)}", list(args))
     return ok
+
+
+def simulate_args(where: Place, args: list[Any] | tuple[Any, ...]) -> tuple[int, ...]:
+    """``simulate [SEED [BUDGET]]``: the seed an integer >= 0, the budget (rollouts) an integer >= 1, both at
+    most `MAX_COUNT`; a missing one is the default's (the session journals both).
+
+    >>> simulate_args(at("line 5"), [3, 20])
+    (3, 20)
+    >>> simulate_args(at("line 5"), [1.5])
+    Traceback (most recent call last):
+    ...
+    physink_tui.errors.JournalError: line 5: key "args[0]": expected a seed, an integer in [0, 2147483647], got 1.5
+    """
+    if len(args) > 2:
+        raise where.bad("args", 'at most two arguments, SEED and BUDGET, for "simulate"', list(args))
+    for i, (value, (what, least)) in enumerate(zip(args, (("a seed", 0), ("a budget (rollouts)", 1)),
+                                                   strict=False)):
+        if not isinstance(value, int) or isinstance(value, bool) or not least <= value <= MAX_COUNT:
+            raise where.bad(f"args[{i}]", f"{what}, an integer in [{least}, {MAX_COUNT}]", value)
+    return tuple(args)
 
 
 def _args_ok(name: str, args: list[Any] | tuple[Any, ...]) -> tuple[str | float, ...] | None:
