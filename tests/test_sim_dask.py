@@ -49,7 +49,7 @@ def test_same_search_as_the_local_executors(cluster: distributed.LocalCluster) -
     serial, _ = search_with(SerialExecutor())
     processes, _ = search_with(ProcessExecutor(2))
     dask, _ = search_with(DaskExecutor(cluster=cluster))
-    assert serial[0] <= 20 and serial[3].qualitative == 0  # found (the search stops there)
+    assert serial[0] <= 20
     assert dask == serial == processes
 
 
