@@ -264,12 +264,13 @@ def test_a_simulation_bouncing_to_rest_where_the_demonstration_landed_is_equival
     assert not plain.equivalent and plain.qualitative_distance == 6 * UNMATCHED_EVENT_COST  # not a simulation
 
 
-def test_a_simulation_going_on_to_hit_something_else_is_not() -> None:
+def test_what_a_simulation_does_after_the_demonstration_has_played_out_is_not_compared() -> None:
+    # the comparison covers the demonstrated behaviour: the ball bouncing out of the basket onto platform B after
+    # the demonstration ended is the simulation's own business (not so for a plain comparison)
     demonstrated = landed(behaviour(ON_B))
-    result = compare(demonstrated, landed(behaviour(ON_B), bounces=1, then="b3"), NAMES, NAMES, simulation=True)
-    assert not result.equivalent
-    assert result.only_b and all(result.only_b)
-    assert any('"Contact between ball and platform B" only in B' in r for r in result.reasons)
+    later = landed(behaviour(ON_B), bounces=1, then="b3")
+    assert compare(demonstrated, later, NAMES, NAMES, simulation=True).equivalent
+    assert not compare(demonstrated, later, NAMES, NAMES).equivalent
 
 
 def test_fig_2_12_one_bounce_more_stays_a_difference_for_a_simulation() -> None:

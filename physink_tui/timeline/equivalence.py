@@ -37,7 +37,7 @@ from difflib import SequenceMatcher
 
 import numpy as np
 
-from physink_tui.timeline.events import REGIONS, Event, Timeline, event_label  # noqa: F401 (Event: the doctest)
+from physink_tui.timeline.events import REGIONS, Event, Timeline, event_label
 from physink_tui.timeline.prepared import SAMPLES, Geometry, Prepared, prepare
 from physink_tui.timeline.resting import coming_to_rest
 
@@ -217,7 +217,8 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
     only_b = [j for j in (*pb.starts, *pb.others) if to_a[j] < 0]
     if simulation and only_b:
         resting = coming_to_rest(pa, pb, to_b, only_b)
-        only_b = [j for j in only_b if j not in resting]
+        until = max((ev_b[ib].t0 for _, ib in pairs if ev_b[ib].type != "start"), default=-1.0)
+        only_b = [j for j in only_b if j not in resting and _before(ev_b[j], until)]
     ledger = _Ledger([(i, UNMATCHED_EVENT_COST) for i in only_a],
                      [(ev_b[j].t0, ev_b[j].type != "movement", UNMATCHED_EVENT_COST) for j in only_b], [],
                      {ia: ev_b[ib].t0 for ia, ib in pairs})
@@ -267,6 +268,12 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
     return comparison, ledger
 
 
+def _before(ev: Event, until: float) -> bool:
+    """Whether an event of B counts before B's last matched event at ``until``: earlier, or at that instant a
+    contact (the movements a contact causes start with it and belong to what follows)."""
+    return ev.t0 < until or (ev.t0 == until and ev.type != "movement")
+
+
 def compare_prepared(pa: Prepared, pb: Prepared, *, explain: bool = True, simulation: bool = False) -> Comparison:
     """`compare` for prepared timelines; ``explain=False`` skips writing the reasons (the distances are the same)."""
     return _compare(pa, pb, _Explainer(pa, pb) if explain else None, simulation)[0]
@@ -306,6 +313,7 @@ def compare_prefixes(pa: Prepared, pb: Prepared, prefixes: Sequence[frozenset[st
                     default=-1.0)
         qualitative = sum(c for i, c in ledger.a_costs if i in inside)
         qualitative += sum(c for t, contact, c in ledger.b_costs if t < until or (t == until and contact))
+
         distances = [d for i, d in ledger.distances if i in inside]
         quantitative = sum(distances) / len(distances) if distances else 0.0
         only_a = tuple(e for e in whole.only_a if e in prefix)
@@ -322,8 +330,10 @@ def compare(a: Timeline, b: Timeline, names_a: Mapping[str, str] | None = None,
         a, b: the timelines (e.g. the demonstrated and a simulated one).
         names_a, names_b: component id -> label for each (default: none; components are then matched by id).
         explain: write the reasons (False for a search loop that needs only the distances).
-        simulation: ``b`` simulates the demonstration ``a``: what B does after a body's demonstrated behaviour
-            has ended, only to bring it to rest where it landed, is no difference (`resting.coming_to_rest`).
+        simulation: ``b`` simulates the demonstration ``a``: the comparison covers the demonstrated behaviour, so
+            what B does after its last event matched with A (the demonstration has played out) is no difference,
+            and neither are the bounces of a body coming to rest where it landed once its own demonstrated
+            behaviour has ended (`resting.coming_to_rest`); a bounce more before that still counts (figure 2-12).
 
     The qualitative distance is symmetric unless ``simulation``: ``compare(a, b)`` and ``compare(b, a)`` give the
     same distances.
