@@ -236,3 +236,16 @@ def test_a_fork_puts_the_rope_where_settling_left_it() -> None:
     end = world.to_scene(scene).components["r1"].points[-1]
     knife = state.bodies["b5"]
     assert math.hypot(end[0] - knife.x, end[1] - knife.y) < 100.0
+
+
+def test_a_fast_ball_does_not_tunnel_through_a_thin_platform() -> None:
+    """Demo mode's speed limit is not applied in a simulation: sub-steps keep a fast ball from passing through."""
+    scene = Scene().add(Body("b1", "circle", (), 10.0, (800.0, 100.0), 0.0, MATERIALS["freeform"], "ball"))
+    scene = scene.add(Body("b2", "box", square(600, 4), 0.0, (800.0, 700.0), 0.0, MATERIALS["freeform"]))
+    scene = scene.add(Joint("j1", "weld", "b2", BACKGROUND, (800.0, 700.0)))
+    params = Parameters({"b1": BodyParameters(math.pi * 100.0, 0.0)}, {}, {"b1": (0.0, 6000.0)})
+    result = rollout(scene, CANVAS, params, max_seconds=1.0)
+    contacts = [ev for ev in result.timeline.events if ev.type == "contact"]
+    assert contacts and set(contacts[0].components) == {"b1", "b2"}
+    assert not any("tunnel" in flag for flag in result.flagged)
+    assert any("demo mode's limit" in flag for flag in result.flagged)

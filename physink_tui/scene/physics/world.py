@@ -18,6 +18,7 @@ from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Point, Scene
 from physink_tui.scene.physics.build import Built, build
 from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction
+from physink_tui.scene.physics.sleeping import sleep_groups
 from physink_tui.scene.physics.speed import limit_speed
 from physink_tui.scene.physics.state import REST, Motion, Pose, Velocity, WorldState
 from physink_tui.scene.physics.write_back import scene_from
@@ -35,9 +36,6 @@ DT = 1 / 120
 """The fixed time step in seconds (two steps per 60 Hz frame)."""
 ITERATIONS = 20
 """Solver iterations per step (pymunk's default is 10): ropes carrying heavy bodies stretch visibly with fewer."""
-NEVER_IDLE = 1.0e9
-"""Seconds of rest after which Chipmunk would put a body to sleep by itself once sleeping is enabled
-(`World.hold_until_touched`): never, in practice."""
 DRAG_ACCELERATION = 20_000.0
 """The strongest pull of a drag, per unit of the dragged body's mass (canvas units/s², ~22 g)."""
 DRAG_ANGULAR_ACCELERATION = 200.0
@@ -87,6 +85,9 @@ class World:
         self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
         self._drag: _Drag | None = None
         self._by_z = sorted(built.z, key=built.z.__getitem__)
+        self.substeps = 1
+        """Sub-steps per step: a simulation without demo mode's speed limit divides a step whose fastest body would
+        cross more than a thin body's width (sim/rollout.py); contacts begun in any sub-step count for the step."""
         self._space.on_collision(begin=self._listener.begin, separate=self._listener.separate)
         self._handle_frictions()
         self._sync_constraints()
@@ -220,13 +221,18 @@ class World:
     # -- time -----------------------------------------------------------------------------------------------------
 
     def step(self, n: int = 1) -> None:
-        """Advances exactly ``n`` steps of ``dt``."""
+        """Advances exactly ``n`` steps of ``dt``, each in `substeps` equal sub-steps."""
         if len(self._built.surfaces.frictions) != self._frictions:
             self._handle_frictions()  # a component added since (`live.LiveWorld`) brought a new material
+        parts = self.substeps
         for _ in range(n):
             self._steps += 1
             self._listener.next_step()
-            self._space.step(self._dt)
+            if parts == 1:
+                self._space.step(self._dt)
+            else:
+                for _ in range(parts):
+                    self._space.step(self._dt / parts)
 
     def take_contacts(self) -> list[ContactRecord]:
         """The contacts begun since the last call, in the order they began."""
@@ -281,19 +287,11 @@ class World:
         one group too: a cup on a platform and the peg that holds the platform wake as one, so the peg's spring
         pushes it on when the platform drops away.
 
-        Sleeping is enabled on the space with a threshold no rollout reaches: nothing falls asleep by itself.
+        See `sleeping.sleep_groups`.
         """
-        if self._space.sleep_time_threshold == float("inf"):
-            self._space.sleep_time_threshold = NEVER_IDLE
         keep = {self._get(body_id) for body_id in awake}
-        ties = [(c.a, c.b) for c in self._space.constraints]
-        ties += [tuple(self._get(b) for b in sorted(pair)) for pair in together if len(pair) == 2]
-        for group in _tied_groups(self._dynamic_bodies(), ties):
-            if keep.isdisjoint(group):  # what is tied to an awake body stays awake with it
-                first, *rest = group
-                first.sleep()
-                for body in rest:
-                    body.sleep_with_group(first)  # one wakes, all wake: Chipmunk wakes no constraint's other end
+        pairs = [tuple(self._get(b) for b in sorted(pair)) for pair in together if len(pair) == 2]
+        sleep_groups(self._space, self._dynamic_bodies(), keep, pairs)
 
     # -- editing --------------------------------------------------------------------------------------------------
 
@@ -429,27 +427,6 @@ class World:
             elif not live and part in self._live:
                 self._space.remove(part)
                 self._live.discard(part)
-
-
-def _tied_groups(bodies: list[pymunk.Body], ties: list[tuple[pymunk.Body, ...]]) -> list[list[pymunk.Body]]:
-    """``bodies`` in groups tied together by ``ties`` (pairs; through dynamic bodies only), in the given order."""
-    index = {body: i for i, body in enumerate(bodies)}
-    parent = list(range(len(bodies)))
-
-    def root(i: int) -> int:
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-
-    for tie_a, tie_b in ties:
-        a, b = index.get(tie_a), index.get(tie_b)
-        if a is not None and b is not None:
-            parent[root(a)] = root(b)
-    groups: dict[int, list[pymunk.Body]] = {}
-    for i, body in enumerate(bodies):
-        groups.setdefault(root(i), []).append(body)
-    return list(groups.values())
 
 
 def _motion(body: pymunk.Body) -> Motion:
