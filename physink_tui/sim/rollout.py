@@ -182,6 +182,8 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
         world.set_velocity(body, (vx, vy))
     held = frozenset(movable) - set(parameters.start_bodies)
     world.hold_until_touched(set(parameters.start_bodies), touching_pairs(start_scene, held))
+    sleepers = set(held)
+    fixed = {b for b in bodies if applied.is_fixed(b)}
     limits = _speed_limits(world, bodies, world.dt)
     bounds = _bounds(canvas)
     flagged = {(body, "settle"): f"{body} would not stay where it is drawn (it moved {d:.0f} units under "
@@ -189,13 +191,19 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     max_steps = int(max_seconds / world.dt + 1e-9)
     stopped, still, steps = MAX_SECONDS, 0, 0
     while steps < max_steps:
+        asleep = {b for b in sleepers if world.pymunk_body(b).is_sleeping}
+        sleepers = asleep
         frame = step_and_observe(world, bodies)
         steps += 1
         t = round(steps * world.dt, 6)
         if any(_blown(frame.motions[body]) for body in movable):
             stopped = EXPLODED
             break
-        recorder.observe(Observation(t, frame.motions, frame.contacts, None, frame.touching))
+        contacts = frame.contacts
+        if asleep:  # pairs that rested on each other asleep touch again as they wake: no new contact
+            resting = asleep | fixed
+            contacts = tuple(c for c in contacts if c.a_id not in resting or c.b_id not in resting)
+        recorder.observe(Observation(t, frame.motions, contacts, None, frame.touching))
         gone = False
         moving = False
         for body in movable:
