@@ -20,8 +20,10 @@ from physink_tui.formats.journal.writer import JournalWriter
 from physink_tui.formats.project.codec import Project, encode_project
 from physink_tui.scene.components import Scene
 from physink_tui.session.session import Session
-from physink_tui.sim.evaluate import compare_rollout, evaluate_problem, make_problem, simulate
+from physink_tui.sim.evaluate import compare_rollout, make_problem, simulate
 from physink_tui.sim.search import Search
+from physink_tui.sim_run.driver import run_search
+from physink_tui.sim_run.executors import SerialExecutor
 from physink_tui.timeline.events import Timeline
 from tests.sim_scenes import CANVAS, ball_floor_wall, demonstration
 
@@ -43,14 +45,10 @@ def wall_out_of_the_way() -> Scene:
 
 
 def searched_directly(scene: Scene, timeline: Timeline, seed: int, budget: int):
-    """`Search` driven as the brief shows, every candidate evaluated in turn."""
+    """`Search` driven by `physink simulate`'s driver (`run_search`) on a serial executor."""
     search = Search(scene, timeline, CANVAS, seed=seed, budget=budget)
-    problem = make_problem(scene, timeline, CANVAS, by_leg=search.by_leg)
-    while not search.done:
-        generation = search.next_generation()
-        if not generation:
-            break
-        search.tell([evaluate_problem(problem, p) for p in generation])
+    problem = make_problem(scene, timeline, CANVAS)
+    run_search(search, problem, SerialExecutor())
     rollout = simulate(problem, search.best)
     return search, rollout, compare_rollout(problem, rollout, explain=True)
 
