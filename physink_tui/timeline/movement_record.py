@@ -5,12 +5,12 @@ movements open and close; this only accumulates and writes the event back."""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.events import REGIONS, Event, TrajectoryPoint
-from physink_tui.timeline.qualitative import BodyOutline, Box, bounds, placed, regions_at
+from physink_tui.timeline.qualitative import BodyOutline, Strips, crossings, placed_bounds, strips
 
 
 def speed(pose: Motion, radius: float) -> float:
@@ -19,19 +19,29 @@ def speed(pose: Motion, radius: float) -> float:
 
 
 @dataclass
-class Bounds:
-    """Each body's canvas bounds at its latest pose, recomputed only when the pose changes."""
+class Regions:
+    """Each body's `Strips` (bounds and how far its regions reach) at its latest pose, recomputed only when the pose
+    changes; `at` gives them for one frame, which every movement being recorded then tests against."""
 
     outlines: Mapping[str, BodyOutline]
-    _cache: dict[str, tuple[tuple[float, float, float], Box]] = field(default_factory=dict)
+    reach: float
+    _cache: dict[str, tuple[tuple[float, ...], Strips]] = field(default_factory=dict)
 
-    def of(self, body: str, pose: Motion) -> Box:
-        at = (pose[0], pose[1], pose[2])
-        cached = self._cache.get(body)
-        if cached is None or cached[0] != at:
-            cached = (at, bounds(placed(self.outlines[body], pose)))
-            self._cache[body] = cached
-        return cached[1]
+    def at(self, poses: Mapping[str, Motion]) -> list[tuple[str, Strips]]:
+        """``(body, strips)`` for every body of ``poses`` with an outline, at its pose there."""
+        cache, outlines, reach = self._cache, self.outlines, self.reach
+        out = []
+        for body, pose in poses.items():
+            cached = cache.get(body)
+            at = pose[:3]
+            if cached is None or cached[0] != at:
+                outline = outlines.get(body)
+                if outline is None:
+                    continue
+                cached = (at, strips(placed_bounds(outline, pose), reach))
+                cache[body] = cached
+            out.append((body, cached[1]))
+        return out
 
 
 @dataclass
@@ -61,24 +71,26 @@ class OpenMovement:
             frames[c] = list(track)
         return cls(event.id, bodies, frames, {c: set(rs) for c, rs in event.regions})
 
-    def record(self, t: float, poses: Mapping[str, Motion], held: bool, radius: Callable[[str], float],
-               others: Callable[[str], bool], box: Callable[[str, Motion], Box], reach: float,
-               moving_speed: float) -> None:
-        """One frame: the poses of ``bodies``, the regions the moving body is in (of the bodies ``others``
-        accepts), and whether anything moved (``held``: the pen holds one of them)."""
+    def record(self, t: float, poses: Mapping[str, Motion], held: bool, radius: Mapping[str, float],
+               regions: Sequence[tuple[str, Strips]], moving_speed: float) -> None:
+        """One frame: the poses of ``bodies``, the regions the moving body is in (of the other bodies of ``regions``,
+        `Regions.at` this frame), and whether anything moved (``held``: the pen holds one of them)."""
         moving = held
+        frames = self.frames
         for body in self.bodies:
             pose = poses.get(body)
             if pose is not None:
-                self.frames[body].append(TrajectoryPoint(t, *pose[:5]))
-                moving = moving or speed(pose, radius(body)) > moving_speed
+                frames[body].append(TrajectoryPoint(t, pose[0], pose[1], pose[2], pose[3], pose[4]))
+                moving = moving or speed(pose, radius[body]) > moving_speed
         mover = poses.get(self.bodies[0])
         if mover is not None:
-            for other in sorted(poses):
-                if other not in self.bodies and others(other):
-                    found = regions_at((mover[0], mover[1]), box(other, poses[other]), reach)
-                    if found:
-                        self.crossed.setdefault(other, set()).update(found)
+            crossed = self.crossed
+            for other, region in crossings((mover[0], mover[1]), regions, self.bodies):
+                found = crossed.get(other)
+                if found is None:
+                    crossed[other] = {region}
+                else:
+                    found.add(region)
         self.still = 0 if moving else self.still + 1
 
     def written(self, event: Event) -> Event:

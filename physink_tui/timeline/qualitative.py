@@ -9,7 +9,7 @@ and whether it is a container. Everything else is computed at the pose the physi
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Container, Iterable
 from dataclasses import dataclass
 
 from shapely.geometry import LineString, Polygon
@@ -21,6 +21,9 @@ from physink_tui.scene.interpretation.body_shapes import body_geometry, body_siz
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]  # min x, min y, max x, max y (canvas units, y down)
+Strips = tuple[float, float, float, float, float, float, float, float]
+"""A body's `Box`, then where its regions end: the top of *above*, the bottom of *below*, the left end of *left*,
+the right end of *right* (`strips`)."""
 
 CONTAINER_HULL_RATIO = 2.0
 """A polyline or polygon whose convex hull is this many times its own area is a concave container (a cup, basket,
@@ -77,6 +80,16 @@ def placed(outline: BodyOutline, pose: tuple[float, ...]) -> list[Point]:
     x, y, angle = pose[0], pose[1], pose[2]
     c, s = math.cos(angle), math.sin(angle)
     return [(x + px * c - py * s, y + px * s + py * c) for px, py in outline.hull]
+
+
+def placed_bounds(outline: BodyOutline, pose: tuple[float, ...]) -> Box:
+    """``bounds(placed(outline, pose))``, without building the points."""
+    x, y, angle = pose[0], pose[1], pose[2]
+    c, s = math.cos(angle), math.sin(angle)
+    hull = outline.hull
+    xs = [x + px * c - py * s for px, py in hull]
+    ys = [y + px * s + py * c for px, py in hull]
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def bounds(points: Iterable[Point]) -> Box:
@@ -139,19 +152,45 @@ def regions_at(point: Point, box: Box, reach: float) -> tuple[str, ...]:
     >>> regions_at((5, -3), box, 50), regions_at((15, 1), box, 50), regions_at((15, 9), box, 50)
     (('above',), ('right',), ())
     """
-    x, y = point
+    return tuple(region for _, region in crossings(point, (("", strips(box, reach)),)))
+
+
+def strips(box: Box, reach: float) -> Strips:
+    """A body's bounds ``box`` and where its regions end ``reach`` away from them (see `Strips`)."""
     minx, miny, maxx, maxy = box
-    if minx <= x <= maxx:
-        if miny - reach <= y < miny:
-            return ("above",)
-        if maxy < y <= maxy + reach:
-            return ("below",)
-    elif miny <= y <= maxy:
-        if minx - reach <= x < minx:
-            return ("left",)
-        if maxx < x <= maxx + reach:
-            return ("right",)
-    return ()
+    return (minx, miny, maxx, maxy, miny - reach, maxy + reach, minx - reach, maxx + reach)
+
+
+def crossings(point: Point, bodies: Iterable[tuple[str, Strips]],
+              skip: Container[str] = ()) -> list[tuple[str, str]]:
+    """``(body, region)`` for each of ``bodies`` (id and `strips`) but those in ``skip`` that has ``point`` in one of
+    its regions (`regions_at` of many bodies at once: a point is in at most one region of a body).
+
+    >>> crossings((5, -3), [("a", strips((0, 0, 10, 2), 50)), ("b", strips((20, -5, 30, 5), 50))])
+    [('a', 'above'), ('b', 'left')]
+    """
+    x, y = point
+    found = []
+    for body, (minx, miny, maxx, maxy, top, bottom, left, right) in bodies:
+        if minx <= x <= maxx:
+            if top <= y < miny:
+                region = "above"
+            elif maxy < y <= bottom:
+                region = "below"
+            else:
+                continue
+        elif miny <= y <= maxy:
+            if left <= x < minx:
+                region = "left"
+            elif maxx < x <= right:
+                region = "right"
+            else:
+                continue
+        else:
+            continue
+        if body not in skip:
+            found.append((body, region))
+    return found
 
 
 def separated(a: BodyOutline, pose_a: tuple[float, ...], b: BodyOutline, pose_b: tuple[float, ...],
