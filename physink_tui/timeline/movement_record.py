@@ -5,12 +5,12 @@ movements open and close; this only accumulates and writes the event back."""
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
 from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.events import REGIONS, Event, TrajectoryPoint
-from physink_tui.timeline.qualitative import BodyOutline, Strips, crossings, placed_bounds, strips
+from physink_tui.timeline.qualitative import BodyOutline, Strips, placed_bounds, region_in, strips
 
 
 def speed(pose: Motion, radius: float) -> float:
@@ -20,28 +20,55 @@ def speed(pose: Motion, radius: float) -> float:
 
 @dataclass
 class Regions:
-    """Each body's `Strips` (bounds and how far its regions reach) at its latest pose, recomputed only when the pose
-    changes; `at` gives them for one frame, which every movement being recorded then tests against."""
+    """Every body's `Strips` (bounds and how far its regions reach), computed only for a pose that some movement
+    needs tested (`strips`), and how far each body moved since the last frame (`next_frame`), so a movement can skip
+    testing a body while neither could have crossed one of the other's region boundaries.
+
+    Attributes:
+        outlines: every body's outline, by id.
+        reach: how far (canvas units) a body's regions extend.
+        radius: every body's hull radius (how far a vertex is from its origin at most), by id.
+        shifts: per body of the last frame: how far its origin moved since the frame before, across and down, then
+            how far any vertex of its hull did (rotation at the radius included); infinite when it was not there.
+    """
 
     outlines: Mapping[str, BodyOutline]
     reach: float
+    radius: Mapping[str, float]
+    shifts: dict[str, tuple[float, float, float, float]] = field(default_factory=dict)
+    _last: dict[str, Motion] = field(default_factory=dict)
     _cache: dict[str, tuple[tuple[float, ...], Strips]] = field(default_factory=dict)
 
-    def at(self, poses: Mapping[str, Motion]) -> list[tuple[str, Strips]]:
-        """``(body, strips)`` for every body of ``poses`` with an outline, at its pose there."""
-        cache, outlines, reach = self._cache, self.outlines, self.reach
-        out = []
+    def next_frame(self, poses: Mapping[str, Motion]) -> None:
+        """A frame whose movements are about to be recorded: note how far each body moved since the last one."""
+        last, radius, shifts = self._last, self.radius, {}
         for body, pose in poses.items():
-            cached = cache.get(body)
-            at = pose[:3]
-            if cached is None or cached[0] != at:
-                outline = outlines.get(body)
-                if outline is None:
-                    continue
-                cached = (at, strips(placed_bounds(outline, pose), reach))
-                cache[body] = cached
-            out.append((body, cached[1]))
-        return out
+            before = last.get(body)
+            if before is None:
+                shifts[body] = UNKNOWN_SHIFT
+            elif before == pose:
+                shifts[body] = NO_SHIFT
+            else:
+                dx, dy = abs(pose[0] - before[0]), abs(pose[1] - before[1])
+                turn = abs(pose[2] - before[2]) * radius.get(body, 0.0)
+                shifts[body] = (dx, dy, dx + turn, dy + turn)
+        self.shifts = shifts
+        self._last = dict(poses)
+
+    def strips(self, body: str, pose: Motion) -> Strips:
+        """``body``'s strips at ``pose`` (``body`` has an outline)."""
+        cached = self._cache.get(body)
+        at = pose[:3]
+        if cached is None or cached[0] != at:
+            cached = (at, strips(placed_bounds(self.outlines[body], pose), self.reach))
+            self._cache[body] = cached
+        return cached[1]
+
+
+NO_SHIFT = (0.0, 0.0, 0.0, 0.0)
+UNKNOWN_SHIFT = (math.inf, math.inf, math.inf, math.inf)
+SLACK_TOLERANCE = 1e-9
+"""Share of the coordinates' size kept off a region's slack, far more than rounding can account for."""
 
 
 @dataclass
@@ -61,6 +88,9 @@ class OpenMovement:
     frames: dict[str, list[TrajectoryPoint]]
     crossed: dict[str, set[str]] = field(default_factory=dict)
     still: int = 0
+    _slack: dict[str, list[float]] = field(default_factory=dict)
+    """Per other body: how far (across, down) the moving body and it may still move before its regions are tested
+    again."""
 
     @classmethod
     def resumed(cls, event: Event, bodies: tuple[str, ...]) -> OpenMovement:
@@ -72,9 +102,14 @@ class OpenMovement:
         return cls(event.id, bodies, frames, {c: set(rs) for c, rs in event.regions})
 
     def record(self, t: float, poses: Mapping[str, Motion], held: bool, radius: Mapping[str, float],
-               regions: Sequence[tuple[str, Strips]], moving_speed: float) -> None:
-        """One frame: the poses of ``bodies``, the regions the moving body is in (of the other bodies of ``regions``,
-        `Regions.at` this frame), and whether anything moved (``held``: the pen holds one of them)."""
+               regions: Regions, moving_speed: float) -> None:
+        """One frame: the poses of ``bodies``, the regions the moving body is in (of the other bodies with outlines;
+        `Regions.next_frame` has seen this frame), and whether anything moved (``held``: the pen holds one of them).
+
+        A body's regions are tested again only once the moving body and it have together moved (across, or down)
+        as far as the moving body was from the nearest boundary of those regions when they were last tested:
+        until then it is in the same region as then (or in none), which ``crossed`` already has.
+        """
         moving = held
         frames = self.frames
         for body in self.bodies:
@@ -84,14 +119,35 @@ class OpenMovement:
                 moving = moving or speed(pose, radius[body]) > moving_speed
         mover = poses.get(self.bodies[0])
         if mover is not None:
-            crossed = self.crossed
-            for other, region in crossings((mover[0], mover[1]), regions, self.bodies):
-                found = crossed.get(other)
+            self._regions(mover[0], mover[1], poses, regions)
+        self.still = 0 if moving else self.still + 1
+
+    def _regions(self, x: float, y: float, poses: Mapping[str, Motion], regions: Regions) -> None:
+        shifts, slack, own = regions.shifts, self._slack, self.bodies
+        mx, my = shifts[own[0]][:2]
+        for other, pose in poses.items():
+            shift = shifts.get(other)
+            if shift is None or other in own or other not in regions.outlines:
+                continue
+            left = slack.get(other)
+            if left is not None:
+                sx, sy = left[0] - mx - shift[2], left[1] - my - shift[3]
+                if sx > 0.0 and sy > 0.0:
+                    left[0], left[1] = sx, sy
+                    continue
+            box = regions.strips(other, pose)
+            region = region_in((x, y), box)
+            if region is not None:
+                found = self.crossed.get(other)
                 if found is None:
-                    crossed[other] = {region}
+                    self.crossed[other] = {region}
                 else:
                     found.add(region)
-        self.still = 0 if moving else self.still + 1
+            minx, miny, maxx, maxy, top, bottom, far_left, far_right = box
+            margin = SLACK_TOLERANCE * (abs(x) + abs(y) + abs(minx) + abs(miny) + abs(maxx) + abs(maxy)
+                                        + regions.reach + 1.0)
+            slack[other] = [min(abs(x - far_left), abs(x - minx), abs(x - maxx), abs(x - far_right)) - margin,
+                            min(abs(y - top), abs(y - miny), abs(y - maxy), abs(y - bottom)) - margin]
 
     def written(self, event: Event) -> Event:
         """``event`` brought up to date with what has been recorded."""

@@ -9,7 +9,7 @@ and whether it is a container. Everything else is computed at the pose the physi
 from __future__ import annotations
 
 import math
-from collections.abc import Container, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from shapely.geometry import LineString, Polygon
@@ -152,7 +152,8 @@ def regions_at(point: Point, box: Box, reach: float) -> tuple[str, ...]:
     >>> regions_at((5, -3), box, 50), regions_at((15, 1), box, 50), regions_at((15, 9), box, 50)
     (('above',), ('right',), ())
     """
-    return tuple(region for _, region in crossings(point, (("", strips(box, reach)),)))
+    region = region_in(point, strips(box, reach))
+    return (region,) if region is not None else ()
 
 
 def strips(box: Box, reach: float) -> Strips:
@@ -161,36 +162,25 @@ def strips(box: Box, reach: float) -> Strips:
     return (minx, miny, maxx, maxy, miny - reach, maxy + reach, minx - reach, maxx + reach)
 
 
-def crossings(point: Point, bodies: Iterable[tuple[str, Strips]],
-              skip: Container[str] = ()) -> list[tuple[str, str]]:
-    """``(body, region)`` for each of ``bodies`` (id and `strips`) but those in ``skip`` that has ``point`` in one of
-    its regions (`regions_at` of many bodies at once: a point is in at most one region of a body).
+def region_in(point: Point, body: Strips) -> str | None:
+    """The region of a body with `strips` ``body`` that ``point`` is in, or None (`regions_at`).
 
-    >>> crossings((5, -3), [("a", strips((0, 0, 10, 2), 50)), ("b", strips((20, -5, 30, 5), 50))])
-    [('a', 'above'), ('b', 'left')]
+    >>> region_in((5, -3), strips((0, 0, 10, 2), 50)), region_in((-5, 1), strips((0, 0, 10, 2), 50))
+    ('above', 'left')
     """
     x, y = point
-    found = []
-    for body, (minx, miny, maxx, maxy, top, bottom, left, right) in bodies:
-        if minx <= x <= maxx:
-            if top <= y < miny:
-                region = "above"
-            elif maxy < y <= bottom:
-                region = "below"
-            else:
-                continue
-        elif miny <= y <= maxy:
-            if left <= x < minx:
-                region = "left"
-            elif maxx < x <= right:
-                region = "right"
-            else:
-                continue
-        else:
-            continue
-        if body not in skip:
-            found.append((body, region))
-    return found
+    minx, miny, maxx, maxy, top, bottom, left, right = body
+    if minx <= x <= maxx:
+        if top <= y < miny:
+            return "above"
+        if maxy < y <= bottom:
+            return "below"
+    elif miny <= y <= maxy:
+        if left <= x < minx:
+            return "left"
+        if maxx < x <= right:
+            return "right"
+    return None
 
 
 def separated(a: BodyOutline, pose_a: tuple[float, ...], b: BodyOutline, pose_b: tuple[float, ...],

@@ -32,7 +32,7 @@ from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.movement_record import OpenMovement, Regions
-from physink_tui.timeline.qualitative import BodyOutline, Strips, contact_sides, separated
+from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
 from physink_tui.timeline.touches import Touches
 
 MOVING_SPEED = 5.0
@@ -109,7 +109,7 @@ class Recorder:
                     self._group[member] = body
         for body, outline in self.outlines.items():
             self._radius[body] = max((math.hypot(x, y) for x, y in outline.hull), default=0.0)
-        self._regions = Regions(self.outlines, self.reach)
+        self._regions = Regions(self.outlines, self.reach, self._radius)
         self._order = tuple(sorted(self.movable))
         self._touches = Touches(self.outlines, self.dt)
         self._adopt(self.timeline)
@@ -160,9 +160,9 @@ class Recorder:
             if math.hypot(pose[3], pose[4]) > MOVING_SPEED:  # spinning in place on a pin explains nothing
                 self._begin(obs.t, body, obs, grabbed=False)
         if opened:
-            regions = self._regions.at(poses)
+            self._regions.next_frame(poses)
             for key in sorted(opened):
-                self._record_frame(obs, key, regions)
+                self._record_frame(obs, key)
 
     def snapshot(self) -> Timeline:
         """The timeline so far, movements being recorded written up to now."""
@@ -349,6 +349,8 @@ class Recorder:
                 self._open_movement(obs.t, body, (cause,))
 
     def _check_initial_pairs(self, obs: Observation) -> None:
+        if not self.initial_pairs:
+            return
         for pair in sorted(self.initial_pairs - self._ended_pairs, key=sorted):
             a, b = sorted(pair)
             if self._cause_of(a, obs.t, obs) is None and self._cause_of(b, obs.t, obs) is None:
@@ -375,9 +377,9 @@ class Recorder:
         if current is not None:
             self._write(current)
 
-    def _record_frame(self, obs: Observation, key: str, regions: list[tuple[str, Strips]]) -> None:
+    def _record_frame(self, obs: Observation, key: str) -> None:
         current = self._open[key]
-        current.record(obs.t, obs.poses, obs.grabbed in current.bodies, self._radius, regions, MOVING_SPEED)
+        current.record(obs.t, obs.poses, obs.grabbed in current.bodies, self._radius, self._regions, MOVING_SPEED)
         if current.still >= STILL_FRAMES:
             self._close(key)
 

@@ -121,6 +121,9 @@ class Touches:
 
     def observe(self, poses: Mapping[str, Motion], touching: frozenset[frozenset[str]]) -> None:
         """One step: pairs in a recorded contact that have come apart by their leave gap have left it."""
+        if not self._going:
+            self._seen = {}
+            return
         moved = {body: self._moved(body, poses.get(body)) for pair in self._going for body in pair}
         for pair in sorted(self._going, key=sorted):
             going = self._going[pair]
