@@ -91,6 +91,8 @@ class OpenMovement:
     _slack: dict[str, list[float]] = field(default_factory=dict)
     """Per other body: how far (across, down) the moving body and it may still move before its regions are tested
     again."""
+    _others: tuple[str, ...] | None = None
+    """The bodies with outlines other than ``bodies`` (known at the first frame)."""
 
     @classmethod
     def resumed(cls, event: Event, bodies: tuple[str, ...]) -> OpenMovement:
@@ -123,14 +125,17 @@ class OpenMovement:
         self.still = 0 if moving else self.still + 1
 
     def _regions(self, x: float, y: float, poses: Mapping[str, Motion], regions: Regions) -> None:
-        shifts, slack, own = regions.shifts, self._slack, self.bodies
-        mx, my = shifts[own[0]][:2]
-        for other, pose in poses.items():
-            shift = shifts.get(other)
-            if shift is None or other in own or other not in regions.outlines:
+        shifts, slack = regions.shifts, self._slack
+        mx, my = shifts[self.bodies[0]][:2]
+        if self._others is None:
+            self._others = tuple(b for b in regions.outlines if b not in self.bodies)
+        for other in self._others:
+            pose = poses.get(other)
+            if pose is None:
                 continue
             left = slack.get(other)
             if left is not None:
+                shift = shifts[other]
                 sx, sy = left[0] - mx - shift[2], left[1] - my - shift[3]
                 if sx > 0.0 and sy > 0.0:
                     left[0], left[1] = sx, sy

@@ -124,9 +124,12 @@ class Touches:
         if not self._going:
             self._seen = {}
             return
-        moved = {body: self._moved(body, poses.get(body)) for pair in self._going for body in pair}
-        for pair in sorted(self._going, key=sorted):
-            going = self._going[pair]
+        moved: dict[str, float] = {}
+        for pair in self._going:
+            for body in pair:
+                if body not in moved:
+                    moved[body] = self._moved(body, poses.get(body))
+        for pair, going in list(self._going.items()):  # each pair on its own: their order does not matter
             a, b = sorted(pair)
             pa, pb = poses.get(a), poses.get(b)
             if pair in touching or pa is None or pb is None:  # a body not reported (fixed) is where it was
