@@ -1,6 +1,7 @@
 """One movement while it is being recorded: the frames of the moving body and of what is tied to it, the regions
-of other bodies the moving body passes through, and how long it has been still. The recorder decides when
-movements open and close; this only accumulates and writes the event back."""
+of other bodies the moving body passes through (tested only when it or they may have crossed a region boundary),
+and how long it has been still. The recorder decides when movements open and close; this only accumulates and
+writes the event back."""
 
 from __future__ import annotations
 
@@ -30,29 +31,38 @@ class Regions:
         radius: every body's hull radius (how far a vertex is from its origin at most), by id.
         shifts: per body of the last frame: how far its origin moved since the frame before, across and down, then
             how far any vertex of its hull did (rotation at the radius included); infinite when it was not there.
+        fastest: the most any body's hull moved in the last frame, across and down (of ``shifts``).
     """
 
     outlines: Mapping[str, BodyOutline]
     reach: float
     radius: Mapping[str, float]
     shifts: dict[str, tuple[float, float, float, float]] = field(default_factory=dict)
+    fastest: tuple[float, float] = (math.inf, math.inf)
     _last: dict[str, Motion] = field(default_factory=dict)
     _cache: dict[str, tuple[tuple[float, ...], Strips]] = field(default_factory=dict)
 
     def next_frame(self, poses: Mapping[str, Motion]) -> None:
         """A frame whose movements are about to be recorded: note how far each body moved since the last one."""
         last, radius, shifts = self._last, self.radius, {}
+        fx = fy = 0.0
         for body, pose in poses.items():
             before = last.get(body)
             if before is None:
                 shifts[body] = UNKNOWN_SHIFT
+                fx = fy = math.inf
             elif before == pose:
                 shifts[body] = NO_SHIFT
             else:
                 dx, dy = abs(pose[0] - before[0]), abs(pose[1] - before[1])
                 turn = abs(pose[2] - before[2]) * radius.get(body, 0.0)
                 shifts[body] = (dx, dy, dx + turn, dy + turn)
+                if not dx + turn <= fx:  # NaN too
+                    fx = dx + turn
+                if not dy + turn <= fy:
+                    fy = dy + turn
         self.shifts = shifts
+        self.fastest = (fx, fy)
         self._last = dict(poses)
 
     def strips(self, body: str, pose: Motion) -> Strips:
@@ -93,6 +103,11 @@ class OpenMovement:
     again."""
     _others: tuple[str, ...] | None = None
     """The bodies with outlines other than ``bodies`` (known at the first frame)."""
+    _budget: tuple[float, float] = (-math.inf, -math.inf)
+    """The least slack of any other body after the last frame that looked at them (across, down)."""
+    _deferred: tuple[float, float] = (0.0, 0.0)
+    """How far (across, down) the moving body and any other may have moved together since that frame: while it
+    is below ``_budget``, no body needs looking at."""
 
     @classmethod
     def resumed(cls, event: Event, bodies: tuple[str, ...]) -> OpenMovement:
@@ -127,8 +142,14 @@ class OpenMovement:
     def _regions(self, x: float, y: float, poses: Mapping[str, Motion], regions: Regions) -> None:
         shifts, slack = regions.shifts, self._slack
         mx, my = shifts[self.bodies[0]][:2]
+        ex, ey = self._deferred
+        dx, dy = ex + mx + regions.fastest[0], ey + my + regions.fastest[1]
+        if dx < self._budget[0] and dy < self._budget[1]:
+            self._deferred = (dx, dy)
+            return
         if self._others is None:
             self._others = tuple(b for b in regions.outlines if b not in self.bodies)
+        bx = by = math.inf
         for other in self._others:
             pose = poses.get(other)
             if pose is None:
@@ -136,9 +157,10 @@ class OpenMovement:
             left = slack.get(other)
             if left is not None:
                 shift = shifts[other]
-                sx, sy = left[0] - mx - shift[2], left[1] - my - shift[3]
+                sx, sy = left[0] - ex - mx - shift[2], left[1] - ey - my - shift[3]
                 if sx > 0.0 and sy > 0.0:
                     left[0], left[1] = sx, sy
+                    bx, by = min(bx, sx), min(by, sy)
                     continue
             box = regions.strips(other, pose)
             region = region_in((x, y), box)
@@ -151,8 +173,13 @@ class OpenMovement:
             minx, miny, maxx, maxy, top, bottom, far_left, far_right = box
             margin = SLACK_TOLERANCE * (abs(x) + abs(y) + abs(minx) + abs(miny) + abs(maxx) + abs(maxy)
                                         + regions.reach + 1.0)
-            slack[other] = [min(abs(x - far_left), abs(x - minx), abs(x - maxx), abs(x - far_right)) - margin,
-                            min(abs(y - top), abs(y - miny), abs(y - maxy), abs(y - bottom)) - margin]
+            sx = min(abs(x - far_left), abs(x - minx), abs(x - maxx), abs(x - far_right)) - margin
+            sy = min(abs(y - top), abs(y - miny), abs(y - maxy), abs(y - bottom)) - margin
+            slack[other] = [sx, sy]
+            bx = bx if sx >= bx else sx  # NaN (a pose gone wrong) leaves no budget
+            by = by if sy >= by else sy
+        self._budget = (bx, by)
+        self._deferred = (0.0, 0.0)
 
     def written(self, event: Event) -> Event:
         """``event`` brought up to date with what has been recorded."""
