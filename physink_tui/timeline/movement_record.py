@@ -32,6 +32,8 @@ class Regions:
         shifts: per body of the last frame: how far its origin moved since the frame before, across and down, then
             how far any vertex of its hull did (rotation at the radius included); infinite when it was not there.
         fastest: the most any body's hull moved in the last frame, across and down (of ``shifts``).
+        top: the body that moved most in the last frame (across plus down), or None.
+        rest: ``fastest`` of every body but ``top``.
     """
 
     outlines: Mapping[str, BodyOutline]
@@ -39,30 +41,35 @@ class Regions:
     radius: Mapping[str, float]
     shifts: dict[str, tuple[float, float, float, float]] = field(default_factory=dict)
     fastest: tuple[float, float] = (math.inf, math.inf)
+    top: str | None = None
+    rest: tuple[float, float] = (math.inf, math.inf)
     _last: dict[str, Motion] = field(default_factory=dict)
     _cache: dict[str, tuple[tuple[float, ...], Strips]] = field(default_factory=dict)
 
     def next_frame(self, poses: Mapping[str, Motion]) -> None:
         """A frame whose movements are about to be recorded: note how far each body moved since the last one."""
         last, radius, shifts = self._last, self.radius, {}
-        fx = fy = 0.0
+        top, tx, ty, rx, ry = None, 0.0, 0.0, 0.0, 0.0
         for body, pose in poses.items():
             before = last.get(body)
             if before is None:
                 shifts[body] = UNKNOWN_SHIFT
-                fx = fy = math.inf
+                rx = ry = math.inf
             elif before == pose:
                 shifts[body] = NO_SHIFT
             else:
                 dx, dy = abs(pose[0] - before[0]), abs(pose[1] - before[1])
                 turn = abs(pose[2] - before[2]) * radius.get(body, 0.0)
-                shifts[body] = (dx, dy, dx + turn, dy + turn)
-                if not dx + turn <= fx:  # NaN too
-                    fx = dx + turn
-                if not dy + turn <= fy:
-                    fy = dy + turn
+                bx, by = dx + turn, dy + turn
+                shifts[body] = (dx, dy, bx, by)
+                if not math.isfinite(bx + by):
+                    rx = ry = math.inf
+                elif bx + by > tx + ty:
+                    top, tx, ty, rx, ry = body, bx, by, max(rx, tx), max(ry, ty)
+                else:
+                    rx, ry = max(rx, bx), max(ry, by)
         self.shifts = shifts
-        self.fastest = (fx, fy)
+        self.top, self.rest, self.fastest = top, (rx, ry), (max(tx, rx), max(ty, ry))
         self._last = dict(poses)
 
     def strips(self, body: str, pose: Motion) -> Strips:
@@ -143,13 +150,15 @@ class OpenMovement:
         shifts, slack = regions.shifts, self._slack
         mx, my = shifts[self.bodies[0]][:2]
         ex, ey = self._deferred
-        dx, dy = ex + mx + regions.fastest[0], ey + my + regions.fastest[1]
+        fx, fy = regions.rest if regions.top in self.bodies else regions.fastest  # its own bodies are not tested
+        dx, dy = ex + mx + fx, ey + my + fy
         if dx < self._budget[0] and dy < self._budget[1]:
             self._deferred = (dx, dy)
             return
         if self._others is None:
             self._others = tuple(b for b in regions.outlines if b not in self.bodies)
         bx = by = math.inf
+        cx, cy = ex + mx, ey + my  # the moving body's share of every slack's spending
         for other in self._others:
             pose = poses.get(other)
             if pose is None:
@@ -157,10 +166,13 @@ class OpenMovement:
             left = slack.get(other)
             if left is not None:
                 shift = shifts[other]
-                sx, sy = left[0] - ex - mx - shift[2], left[1] - ey - my - shift[3]
+                sx, sy = left[0] - cx - shift[2], left[1] - cy - shift[3]
                 if sx > 0.0 and sy > 0.0:
                     left[0], left[1] = sx, sy
-                    bx, by = min(bx, sx), min(by, sy)
+                    if sx < bx:
+                        bx = sx
+                    if sy < by:
+                        by = sy
                     continue
             box = regions.strips(other, pose)
             region = region_in((x, y), box)
