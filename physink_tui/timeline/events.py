@@ -155,15 +155,40 @@ class Timeline:
         return self._children[event_id]
 
     def add(self, event: Event) -> Timeline:
-        """The timeline with ``event`` appended; its id must be new and its causes already present."""
+        """The timeline with ``event`` appended; its id must be new and its causes already present.
+
+        The indexes are extended, not rebuilt: a recorder adds events one by one.
+        """
         if event.id in self._index:
             raise TimelineError(f"event id {event.id!r} is already in the timeline", event.id)
-        return Timeline((*self.events, event))
+        for cause in event.causes:
+            if cause not in self._index:
+                raise TimelineError(f"event {event.id!r} names unknown cause {cause!r}", event.id)
+        index = dict(self._index)
+        index[event.id] = len(self.events)
+        children = dict(self._children)
+        children[event.id] = ()
+        for cause in dict.fromkeys(event.causes):
+            children[cause] = (*children[cause], event.id)
+        return self._with((*self.events, event), index, children)
 
     def update(self, event: Event) -> Timeline:
         """The timeline with the event of the same id replaced in place (e.g. a trajectory grown or truncated)."""
         i = self.position(event.id)
-        return Timeline((*self.events[:i], event, *self.events[i + 1:]))
+        events = (*self.events[:i], event, *self.events[i + 1:])
+        if event.causes != self.events[i].causes:
+            return Timeline(events)
+        return self._with(events, self._index, self._children)  # same ids, same edges: the indexes still hold
+
+    @classmethod
+    def _with(cls, events: tuple[Event, ...], index: dict[str, int],
+              children: dict[str, tuple[str, ...]]) -> Timeline:
+        """A timeline of ``events`` whose indexes are known (never changed once made, so they can be shared)."""
+        timeline = object.__new__(cls)
+        object.__setattr__(timeline, "events", events)
+        object.__setattr__(timeline, "_index", index)
+        object.__setattr__(timeline, "_children", children)
+        return timeline
 
     def remove(self, ids: Iterable[str]) -> Timeline:
         """The timeline without these events; no remaining event may name a removed one as its cause."""

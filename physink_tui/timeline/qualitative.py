@@ -21,6 +21,9 @@ from physink_tui.scene.interpretation.body_shapes import body_geometry, body_siz
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]  # min x, min y, max x, max y (canvas units, y down)
+Strips = tuple[float, float, float, float, float, float, float, float]
+"""A body's `Box`, then where its regions end: the top of *above*, the bottom of *below*, the left end of *left*,
+the right end of *right* (`strips`)."""
 
 CONTAINER_HULL_RATIO = 2.0
 """A polyline or polygon whose convex hull is this many times its own area is a concave container (a cup, basket,
@@ -77,6 +80,16 @@ def placed(outline: BodyOutline, pose: tuple[float, ...]) -> list[Point]:
     x, y, angle = pose[0], pose[1], pose[2]
     c, s = math.cos(angle), math.sin(angle)
     return [(x + px * c - py * s, y + px * s + py * c) for px, py in outline.hull]
+
+
+def placed_bounds(outline: BodyOutline, pose: tuple[float, ...]) -> Box:
+    """``bounds(placed(outline, pose))``, without building the points."""
+    x, y, angle = pose[0], pose[1], pose[2]
+    c, s = math.cos(angle), math.sin(angle)
+    hull = outline.hull
+    xs = [x + px * c - py * s for px, py in hull]
+    ys = [y + px * s + py * c for px, py in hull]
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def bounds(points: Iterable[Point]) -> Box:
@@ -139,19 +152,35 @@ def regions_at(point: Point, box: Box, reach: float) -> tuple[str, ...]:
     >>> regions_at((5, -3), box, 50), regions_at((15, 1), box, 50), regions_at((15, 9), box, 50)
     (('above',), ('right',), ())
     """
-    x, y = point
+    region = region_in(point, strips(box, reach))
+    return (region,) if region is not None else ()
+
+
+def strips(box: Box, reach: float) -> Strips:
+    """A body's bounds ``box`` and where its regions end ``reach`` away from them (see `Strips`)."""
     minx, miny, maxx, maxy = box
+    return (minx, miny, maxx, maxy, miny - reach, maxy + reach, minx - reach, maxx + reach)
+
+
+def region_in(point: Point, body: Strips) -> str | None:
+    """The region of a body with `strips` ``body`` that ``point`` is in, or None (`regions_at`).
+
+    >>> region_in((5, -3), strips((0, 0, 10, 2), 50)), region_in((-5, 1), strips((0, 0, 10, 2), 50))
+    ('above', 'left')
+    """
+    x, y = point
+    minx, miny, maxx, maxy, top, bottom, left, right = body
     if minx <= x <= maxx:
-        if miny - reach <= y < miny:
-            return ("above",)
-        if maxy < y <= maxy + reach:
-            return ("below",)
+        if top <= y < miny:
+            return "above"
+        if maxy < y <= bottom:
+            return "below"
     elif miny <= y <= maxy:
-        if minx - reach <= x < minx:
-            return ("left",)
-        if maxx < x <= maxx + reach:
-            return ("right",)
-    return ()
+        if left <= x < minx:
+            return "left"
+        if maxx < x <= right:
+            return "right"
+    return None
 
 
 def separated(a: BodyOutline, pose_a: tuple[float, ...], b: BodyOutline, pose_b: tuple[float, ...],

@@ -31,7 +31,7 @@ from physink_tui.scene.physics.contacts import ContactRecord
 from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
-from physink_tui.timeline.movement_record import Bounds, OpenMovement
+from physink_tui.timeline.movement_record import OpenMovement, Regions
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
 from physink_tui.timeline.touches import Touches
 
@@ -99,7 +99,8 @@ class Recorder:
     _grabbed: str | None = None
     _group: dict[str, str] = field(default_factory=dict)
     _radius: dict[str, float] = field(default_factory=dict)
-    _bounds: Bounds | None = None
+    _regions: Regions = field(init=False)
+    _order: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         for body in sorted(self.movable):
@@ -108,7 +109,8 @@ class Recorder:
                     self._group[member] = body
         for body, outline in self.outlines.items():
             self._radius[body] = max((math.hypot(x, y) for x, y in outline.hull), default=0.0)
-        self._bounds = Bounds(self.outlines)
+        self._regions = Regions(self.outlines, self.reach, self._radius)
+        self._order = tuple(sorted(self.movable))
         self._touches = Touches(self.outlines, self.dt)
         self._adopt(self.timeline)
 
@@ -150,14 +152,17 @@ class Recorder:
         self._check_initial_pairs(obs)
         for contact in obs.contacts:
             self._contact(obs, contact)
-        for body in sorted(self.movable):
-            pose = obs.poses.get(body)
-            if pose is None or body in obs.playing or self._group.get(body) in self._open:
+        poses, playing, group, opened = obs.poses, obs.playing, self._group, self._open
+        for body in self._order:
+            pose = poses.get(body)
+            if pose is None or body in playing or group.get(body) in opened:
                 continue
             if math.hypot(pose[3], pose[4]) > MOVING_SPEED:  # spinning in place on a pin explains nothing
                 self._begin(obs.t, body, obs, grabbed=False)
-        for key in sorted(self._open):
-            self._record_frame(obs, key)
+        if opened:
+            self._regions.next_frame(poses)
+            for key in sorted(opened):
+                self._record_frame(obs, key)
 
     def snapshot(self) -> Timeline:
         """The timeline so far, movements being recorded written up to now."""
@@ -344,6 +349,8 @@ class Recorder:
                 self._open_movement(obs.t, body, (cause,))
 
     def _check_initial_pairs(self, obs: Observation) -> None:
+        if not self.initial_pairs:
+            return
         for pair in sorted(self.initial_pairs - self._ended_pairs, key=sorted):
             a, b = sorted(pair)
             if self._cause_of(a, obs.t, obs) is None and self._cause_of(b, obs.t, obs) is None:
@@ -372,8 +379,7 @@ class Recorder:
 
     def _record_frame(self, obs: Observation, key: str) -> None:
         current = self._open[key]
-        current.record(obs.t, obs.poses, obs.grabbed in current.bodies, self._radius.__getitem__,
-                       self.outlines.__contains__, self._bounds.of, self.reach, MOVING_SPEED)
+        current.record(obs.t, obs.poses, obs.grabbed in current.bodies, self._radius, self._regions, MOVING_SPEED)
         if current.still >= STILL_FRAMES:
             self._close(key)
 

@@ -121,9 +121,15 @@ class Touches:
 
     def observe(self, poses: Mapping[str, Motion], touching: frozenset[frozenset[str]]) -> None:
         """One step: pairs in a recorded contact that have come apart by their leave gap have left it."""
-        moved = {body: self._moved(body, poses.get(body)) for pair in self._going for body in pair}
-        for pair in sorted(self._going, key=sorted):
-            going = self._going[pair]
+        if not self._going:
+            self._seen = {}
+            return
+        moved: dict[str, float] = {}
+        for pair in self._going:
+            for body in pair:
+                if body not in moved:
+                    moved[body] = self._moved(body, poses.get(body))
+        for pair, going in list(self._going.items()):  # each pair on its own: their order does not matter
             a, b = sorted(pair)
             pa, pb = poses.get(a), poses.get(b)
             if pair in touching or pa is None or pb is None:  # a body not reported (fixed) is where it was

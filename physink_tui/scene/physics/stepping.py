@@ -49,9 +49,18 @@ def step_and_observe(world: World, bodies: Iterable[str]) -> Frame:
     """Advance ``world`` one step and observe ``bodies``: their motions, the contacts begun among them, and which
     of them touch."""
     world.step(1)
-    motions = {body: world.motion(body) for body in bodies}
-    contacts = tuple(c for c in world.take_contacts() if c.a_id in motions and c.b_id in motions)
-    touching = frozenset(pair for pair in world.touching() if all(c in motions for c in pair))
+    get = world.pymunk_body
+    motions: dict[str, Motion] = {}
+    for body in bodies:  # `World.motion`, reading each body's position once
+        b = get(body)
+        p = b.position
+        v = b.velocity_at_world_point(p)
+        motions[body] = Motion(p.x, p.y, b.angle, v.x, v.y, b.angular_velocity)
+    observed = motions.keys()
+    contacts = tuple(c for c in world.take_contacts() if c.a_id in observed and c.b_id in observed)
+    touching = world.touching()
+    if not all(observed >= pair for pair in touching):
+        touching = frozenset(pair for pair in touching if observed >= pair)
     return Frame(world.steps, motions, contacts, touching)
 
 
