@@ -11,10 +11,11 @@ prefix score keeps the earlier legs reproduced. As soon as a candidate reproduce
 it to the next leg it does not reproduce (one candidate may solve several legs). A run that stalls (its best not
 better for `STALL_GENERATIONS` generations, or CMA-ES stops) restarts from the best with a step size twice as large
 (as IPOP-CMA-ES does); past `MAX_SIGMA` the leg is given up and the next one taken, the unsolved leg's mismatch
-still counted in every later prefix.
+still counted in every later prefix. When every leg has been tried and some given up, another round starts from the
+best so far (fresh random numbers, the given-up legs tried again), until the budget is spent.
 
 CMA-ES is pycma's ``CMAEvolutionStrategy`` (ask/tell) in `coordinates.Normalisation`'s unscaled coordinates, its
-random numbers drawn from a generator seeded with (seed, leg, restart), so a search is the same for the same seed
+random numbers drawn from a generator seeded with (seed, round, leg, restart), so a search is the same for the same seed
 whatever evaluates it. One free coordinate (pycma needs two) is searched by a seeded Gaussian sampler around the
 run's best, whose width shrinks each generation.
 """
@@ -64,6 +65,8 @@ class LegByLeg:
         start: the seeded parameters (the scales of the normalised coordinates come from them).
         legs: the demonstration's legs.
         seed: the random seed.
+        family: the seed with its start bodies' flight time scaled by a factor (`seeding.seed_family`), searched
+            first; None to skip it.
     """
 
     def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int,
@@ -81,6 +84,8 @@ class LegByLeg:
         self.centre_score: Score | None = None
         self.finished = False
         self._given_up = -1
+        self._round = 0
+        self._runs_this_round = 0
         self._run: _Run | None = None
 
     # -- the strategy interface (search.Search) ---------------------------------------------------------------------
@@ -148,14 +153,20 @@ class LegByLeg:
         self.leg = next((k for k in range(self._given_up + 1, len(self.legs))
                          if leg_score(self.centre_score, k).qualitative > 0), len(self.legs))
         if self.leg >= len(self.legs):
-            self.finished = True
+            if self.centre_score.qualitative == 0 or not self._runs_this_round:
+                self.finished = True  # reproduced, or nothing left that a run could adjust
+            else:  # every leg tried and some given up: another round from the best so far, until the budget
+                self._round += 1
+                self._given_up = -1
+                self._runs_this_round = 0
             return False
         leg = self.legs[self.leg]
         coords = coordinates(self.centre, ("vx", "vy"), None if leg is None else leg.components)
         if not coords:
             self._given_up = self.leg
             return False
-        rng_key = (self.seed, self.leg, self.restarts)
+        rng_key = (self.seed, self._round, self.leg, self.restarts)
+        self._runs_this_round += 1
         self._run = _Run(Normalisation(coords, self.centre, self.start), self._sigma(), rng_key)
         return True
 
@@ -163,7 +174,7 @@ class LegByLeg:
 class _Run:
     """One CMA-ES run (or one-coordinate sampler) on one leg, from one centre."""
 
-    def __init__(self, norm: Normalisation, sigma: float, rng_key: tuple[int, int, int]) -> None:
+    def __init__(self, norm: Normalisation, sigma: float, rng_key: tuple[int, ...]) -> None:
         self.norm = norm
         self.sigma = sigma
         self.rng_key = rng_key
