@@ -20,6 +20,7 @@ from collections.abc import Callable, Sequence
 
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError
+from physink_tui.formats.journal.value_checks import MAX_COUNT
 from physink_tui.formats.outputs import StdoutGuard
 
 PROG = "physink"
@@ -54,6 +55,8 @@ MIN_SIDE, MAX_SIDE = 16, 7680
 """Picture sides a renderer draws (pixels)."""
 MAX_FPS = 120
 """The most video frames a second."""
+MAX_SEED = MAX_COUNT
+"""The largest seed: what a journal's ``simulate`` line takes."""
 
 
 def _positive_int(text: str) -> int:
@@ -63,6 +66,17 @@ def _positive_int(text: str) -> int:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
     if value < 1:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _seed(text: str) -> int:
+    """A search's seed: an integer in [0, 2**31 - 1], as a journal's ``simulate`` line takes it."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = -1
+    if not 0 <= value <= MAX_SEED:
+        raise argparse.ArgumentTypeError(f"expected an integer in [0, {MAX_SEED}], got {text!r}")
     return value
 
 
@@ -211,7 +225,7 @@ def build_parser() -> argparse.ArgumentParser:
     where.add_argument("--scheduler", metavar="ADDRESS",
                        help="run the rollouts on the Dask cluster whose scheduler is at ADDRESS (e.g. "
                        "tcp://host:8786) instead of local processes; needs physink-tui[dask]")
-    p.add_argument("--seed", metavar="S", type=int, help="random seed, for a reproducible search")
+    p.add_argument("--seed", metavar="S", type=_seed, help="random seed, for a reproducible search")
     p.add_argument("--strategy", choices=("default", "grid"), default="default",
                    help="CMA-ES (default) or the thesis's grid (default: %(default)s)")
 

@@ -76,7 +76,8 @@ def test_refuses_a_project_with_nothing_to_simulate(tmp_path: Path, capsys: pyte
 
 
 @pytest.mark.parametrize("bad", [["--budget", "0"], ["--workers", "-1"], ["--workers", "0"],
-                                 ["--strategy", "random"]])
+                                 ["--strategy", "random"], ["--seed", "-1"], ["--seed", "1.5"],
+                                 ["--seed", str(2**31)]])
 def test_bad_usage_exits_2(tmp_path: Path, bad: list[str]) -> None:
     assert cli.main(["simulate", project(tmp_path), "--out", str(tmp_path / "o"), *bad]) == 2
 
