@@ -108,3 +108,21 @@ def test_the_flight_time_family_is_tried_first_zooming_in() -> None:
     first = [round(f, 3) for f in asked[:11]]
     assert first == [round(2 ** (k / 4), 3) for k in range(-7, 5) if k != 0]
     assert abs(100.0 / strategy.centre.velocities["b1"][0] - 100.0 / 160.0) < 0.01
+
+
+def test_after_the_family_the_start_velocities_are_turned_and_scaled_together() -> None:
+    start = Parameters({"b1": BodyParameters(1.0, 1.0), "b2": BodyParameters(1.0, 1.0)}, {},
+                       {"b1": (100.0, 0.0), "b2": (0.0, -50.0)})
+    strategy = LegByLeg(start, (), seed=0)
+    strategy.told([start], [Score(1.0, 100.0)])
+    scan = strategy.generation(None)
+    assert len(scan) == 48 and start not in scan
+    for p in scan:  # both bodies turned by the same angle and scaled by the same factor
+        (ax, ay), (bx, by) = p.velocities["b1"], p.velocities["b2"]
+        assert math.isclose(math.hypot(ax, ay) / 100.0, math.hypot(bx, by) / 50.0)
+        turn_a = math.atan2(ay, ax)
+        turn_b = math.atan2(by, bx) + math.pi / 2
+        assert math.isclose(math.cos(turn_a - turn_b), 1.0)
+    best = scan[17]
+    strategy.told(scan, [Score(0.5 if p is best else 1.0, 1.0) for p in scan])
+    assert strategy.centre is best

@@ -55,7 +55,7 @@ def test_search_finds_the_known_answer_from_a_wrong_start(strategy: str) -> None
     start = evaluate_problem(p, WRONG_START)
     search = Search(p.scene, p.timeline, CANVAS, strategy=strategy, seed=1, budget=60, start=WRONG_START)
     run_search(search, p, SerialExecutor())
-    assert search.rollouts <= 60 and 0 <= search.rollouts - search.found_at < 16  # it stops once found
+    assert search.rollouts <= 60 and 0 <= search.rollouts - search.found_at < 48  # it stops once found (the generation ends)
     assert search.best_score.objective < start.objective
     assert search.best_score.qualitative == 0.0
 
@@ -106,7 +106,7 @@ def test_exploded_candidates_are_counted_and_never_best() -> None:
 
 def test_same_seed_same_search_other_seed_other_candidates() -> None:
     def run(seed: int):
-        s = Search(ball_floor_wall(), demonstration(), CANVAS, seed=seed, budget=40, start=parameters((250.0, 0.0)))
+        s = Search(ball_floor_wall(), demonstration(), CANVAS, seed=seed, budget=90, start=parameters((250.0, 0.0)))
         drive(s)
         return s.best, s.best_score, s.exploded
 

@@ -47,6 +47,10 @@ FAMILY_ROUNDS = len(FAMILY_STEPS)
 """The flight-time family (`seeding.seed_family`) is searched first, by zooming: factors 2^(k/4) of the seeded
 flight time for k = -7..4 (0.30 to 2.0), then 2^(j/16) and 2^(j/64) around the best so far for j = -3..3: every
 start body still reaches its first demonstrated contact, faster or slower (30 rollouts at most)."""
+SCAN_ANGLES = tuple(range(-45, 46, 15))
+SCAN_SPEEDS = (0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0)
+"""After the family, the best one's start velocities turned by -45°…45° in 15° steps and scaled x0.5…x2 in
+x0.25 steps, all start bodies alike (the thesis grid's velocity steps: 48 rollouts), the best of which leads."""
 LINE_SAMPLES = 8
 """Candidates per generation of the one-coordinate sampler."""
 EXPLODED_PENALTY = 1.0e6
@@ -83,6 +87,7 @@ class LegByLeg:
         self.centre = start
         self.centre_score: Score | None = None
         self.finished = False
+        self._scanned = self._scan_told = False
         self._given_up = -1
         self._round = 0
         self._runs_this_round = 0
@@ -95,6 +100,9 @@ class LegByLeg:
             self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
                              for j in FAMILY_SPAN[self._family_round] if j != 0]
             return [self.family(f) for f in self._factors]
+        if not self._scanned and self.centre.velocities:
+            self._scanned = True
+            return _turned_and_scaled(self.centre)
         while not self.finished:
             if self._run is None and not self._begin():
                 continue
@@ -106,11 +114,17 @@ class LegByLeg:
         if self.centre_score is None:  # the start, alone (generation 0 of the search)
             self.centre_score = scores[0]
             return
-        if self._family_round < FAMILY_ROUNDS:  # the flight-time family: the one furthest along the legs leads
-            self._family_round += 1
+        if self._family_round < FAMILY_ROUNDS and self.family is not None:
+            self._family_round += 1  # the flight-time family: the one furthest along the legs leads
             for f, p, s in zip(self._factors, generation, scores, strict=False):
                 if not s.exploded and self._progress(s) < self._progress(self.centre_score):
                     self.centre, self.centre_score, self._family_best = p, s, f
+            return
+        if self._run is None and self._scanned and not self._scan_told:
+            self._scan_told = True  # the velocities turned and scaled: likewise
+            for p, s in zip(generation, scores, strict=False):
+                if not s.exploded and self._progress(s) < self._progress(self.centre_score):
+                    self.centre, self.centre_score = p, s
             return
         run = self._run
         assert run is not None
@@ -169,6 +183,20 @@ class LegByLeg:
         self._runs_this_round += 1
         self._run = _Run(Normalisation(coords, self.centre, self.start), self._sigma(), rng_key)
         return True
+
+
+def _turned_and_scaled(p: Parameters) -> list[Parameters]:
+    """``p`` with every start body's initial velocity turned by `SCAN_ANGLES` and scaled by `SCAN_SPEEDS` together
+    (the thesis grid's velocity steps, one combination for all start bodies), ``p`` itself left out."""
+    out = []
+    for degrees in SCAN_ANGLES:
+        c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+        for factor in SCAN_SPEEDS:
+            if degrees == 0 and factor == 1.0:
+                continue
+            out.append(p.with_velocities({b: (factor * (vx * c - vy * s), factor * (vx * s + vy * c))
+                                          for b, (vx, vy) in p.velocities.items()}))
+    return out
 
 
 class _Run:
