@@ -1,6 +1,10 @@
 """SIMULATE's default strategy: leg by leg along the demonstration's causal order, CMA-ES on each leg's
 parameters; it runs nothing itself.
 
+Before the legs: the seed's flight-time family (`FAMILY_STEPS`: every start body still reaching its first
+demonstrated contact, faster or slower), then the best of it with its start velocities turned and scaled together
+(`SCAN_ANGLES`, `SCAN_SPEEDS`); each time the candidate furthest along the legs becomes the centre.
+
 The demonstration is cut into legs (`legs.legs`: each ends with a contact). The search always works on the first
 leg the best parameters so far do not reproduce: it optimises only the parameters the demonstration up to the end
 of that leg can depend on (`Leg.components`: the start bodies' initial velocities, the masses and frictions of the
