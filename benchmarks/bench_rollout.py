@@ -20,25 +20,20 @@ Each column is the median over the repeats; shares are of the median total. reco
 from __future__ import annotations
 
 import argparse
-import contextlib
-import io
 import statistics
 import sys
-import tempfile
 import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from physink_tui import cli
-from physink_tui.formats.project.files import load_project
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from journal_projects import journal_names, replayed_projects  # a sibling module, through the path just set
+
 from physink_tui.scene.physics import stepping
 from physink_tui.scene.physics.world import World
 from physink_tui.sim import rollout as rollout_module
 from physink_tui.sim.seeding import seed
-
-JOURNALS = Path(__file__).resolve().parent.parent / "tests" / "journals"
-SUFFIX = ".physink.jsonl"
 
 
 class Clock:
@@ -101,16 +96,7 @@ def install(clock: Clock) -> None:
 
 def scenes(names: Sequence[str]) -> dict[str, Any]:
     """Each scene's project, from its journal replayed by ``physink replay`` (output silenced) and read back."""
-    out = {}
-    with tempfile.TemporaryDirectory() as tmp:
-        for name in names:
-            folder = Path(tmp) / name
-            with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()) as err:
-                status = cli.main(["replay", str(JOURNALS / f"{name}{SUFFIX}"), "--out", str(folder)])
-            if status != 0:
-                raise SystemExit(f"bench_rollout: replaying {name} failed: {err.getvalue().strip()}")
-            out[name] = load_project(folder / "project.json")
-    return out
+    return replayed_projects(names, "bench_rollout")
 
 
 def measure(project: Any, clock: Clock, repeats: int, max_seconds: float) -> dict[str, float]:
@@ -151,7 +137,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--max-seconds", type=float, default=20.0)
     args = parser.parse_args(argv)
     names = ([n for n in args.scenes.split(",") if n]
-             or sorted(p.name[:-len(SUFFIX)] for p in JOURNALS.glob(f"*{SUFFIX}")))
+             or journal_names())
     projects = scenes(names)
     clock = Clock()
     install(clock)

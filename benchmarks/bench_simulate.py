@@ -52,16 +52,13 @@ World step measurement) is for the test of this script, not for numbers.
 from __future__ import annotations
 
 import argparse
-import contextlib
 import dataclasses
-import io
 import itertools
 import math
 import os
 import platform
 import shlex
 import sys
-import tempfile
 import time
 from collections.abc import Callable, Sequence
 from datetime import UTC, datetime
@@ -70,8 +67,6 @@ from typing import Any
 
 import pymunk
 
-from physink_tui import cli
-from physink_tui.formats.project.files import load_project
 from physink_tui.sim import grid
 from physink_tui.sim.evaluate import Problem, Score, make_problem
 from physink_tui.sim.search import Search
@@ -79,11 +74,10 @@ from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import bench_contacts  # a sibling script, found through the path set just above
+import bench_contacts  # sibling modules, found through the path set just above
+from journal_projects import journal_names, replayed_projects
 
 ROOT = Path(__file__).resolve().parents[1]
-JOURNALS = ROOT / "tests" / "journals"
-SUFFIX = ".physink.jsonl"
 BEGIN, END = "<!-- bench_simulate -->", "<!-- /bench_simulate -->"
 QUICK_SCENES = ("bouncing_above_b", "basketball")
 TOLERANCE = 1e-9
@@ -216,17 +210,10 @@ class Run:
 def problems(names: Sequence[str]) -> dict[str, Problem]:
     """Each scene's problem, from its journal replayed by ``physink replay`` (output silenced) and read back."""
     out = {}
-    with tempfile.TemporaryDirectory() as tmp:
-        for name in names:
-            folder = Path(tmp) / name
-            with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()) as err:
-                status = cli.main(["replay", str(JOURNALS / f"{name}{SUFFIX}"), "--out", str(folder)])
-            if status != 0:
-                raise SystemExit(f"bench_simulate: replaying {name} failed: {err.getvalue().strip()}")
-            project = load_project(folder / "project.json")
-            if project.timeline is None or not project.timeline.events:
-                raise SystemExit(f"bench_simulate: {name} has no demonstration")
-            out[name] = make_problem(project.scene, project.timeline, project.canvas)
+    for name, project in replayed_projects(names, "bench_simulate").items():
+        if project.timeline is None or not project.timeline.events:
+            raise SystemExit(f"bench_simulate: {name} has no demonstration")
+        out[name] = make_problem(project.scene, project.timeline, project.canvas)
     return out
 
 
@@ -326,7 +313,7 @@ def replace_section(text: str, body: str) -> str:
 
 
 def scene_names(selected: str | None, quick: bool) -> list[str]:
-    available = sorted(p.name.removesuffix(SUFFIX) for p in JOURNALS.glob(f"*{SUFFIX}"))
+    available = journal_names()
     if selected is None:
         return list(QUICK_SCENES) if quick else available
     names = [n.strip() for n in selected.split(",") if n.strip()]

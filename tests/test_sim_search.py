@@ -55,7 +55,7 @@ def test_search_finds_the_known_answer_from_a_wrong_start(strategy: str) -> None
     start = evaluate_problem(p, WRONG_START)
     search = Search(p.scene, p.timeline, CANVAS, strategy=strategy, seed=1, budget=60, start=WRONG_START)
     run_search(search, p, SerialExecutor())
-    assert search.rollouts <= 60 and 0 <= search.rollouts - search.found_at < 48  # it stops once found (the generation ends)
+    assert search.rollouts <= 60 and 0 <= search.rollouts - search.found_at < 48  # stops once found
     assert search.best_score.objective < start.objective
     assert search.best_score.qualitative == 0.0
 
