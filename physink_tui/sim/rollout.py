@@ -186,8 +186,9 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     fixed = {b for b in bodies if applied.is_fixed(b)}
     limits = _speed_limits(world, bodies, world.dt)
     bounds = _bounds(canvas)
-    flagged = {(body, "settle"): f"{body} would not stay where it is drawn (it moved {d:.0f} units under "
-                                 "gravity): held there until touched" for body, d in settled.held}
+    names = applied.names()
+    flagged = {(body, "settle"): f"the {names.get(body, body)} would not stay where it is drawn (it moved {d:.0f} "
+                                 "units under gravity): held there until touched" for body, d in settled.held}
     max_steps = int(max_seconds / world.dt + 1e-9)
     stopped, still, steps = MAX_SECONDS, 0, 0
     while steps < max_steps:
@@ -213,7 +214,7 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
                 continue
             speed = math.hypot(m.vx, m.vy)
             moving = moving or speed > MOVING_SPEED
-            _flag(flagged, body, speed, t, limits)
+            _flag(flagged, body, names.get(body, body), speed, t, limits)
         world.substeps = _substeps(frame.motions, movable, limits, bounds)
         still = 0 if moving else still + 1
         if still >= REST_STEPS:  # the recorder's own stop never fires for a body falling off the canvas
@@ -278,13 +279,13 @@ def _substeps(motions: dict[str, Motion], movable: list[str], limits: dict[str, 
     return min(math.ceil(need), MAX_SUBSTEPS)
 
 
-def _flag(flagged: dict[tuple[str, str], str], body: str, speed: float, t: float,
+def _flag(flagged: dict[tuple[str, str], str], body: str, name: str, speed: float, t: float,
           limits: dict[str, tuple[float, float]]) -> None:
     demo, tunnel = limits[body]
     if speed > demo and (body, "demo") not in flagged:
-        flagged[(body, "demo")] = f"{body} reached {speed:.0f} units/s at {t:.3f} s, beyond demo mode's limit " \
+        flagged[(body, "demo")] = f"the {name} reached {speed:.0f} units/s at {t:.3f} s, beyond demo mode's limit " \
                                   f"{demo:.0f}"
     if speed > tunnel * MAX_SUBSTEPS and (body, "tunnel") not in flagged:
-        flagged[(body, "tunnel")] = f"{body} reached {speed:.0f} units/s at {t:.3f} s: it may tunnel through the " \
+        flagged[(body, "tunnel")] = f"the {name} reached {speed:.0f} units/s at {t:.3f} s: it may tunnel through the " \
                                     f"thinnest body even in {MAX_SUBSTEPS} sub-steps ({tunnel * MAX_SUBSTEPS:.0f} " \
                                     "units/s)"

@@ -48,11 +48,12 @@ def _first_difference(problem: Problem, simulated: Timeline, comparison: Compari
             if missing:
                 event = demonstrated.event(missing[0])
                 why = _why_missing(problem, simulated, event, names)
-            else:
-                event = demonstrated.event(leg.last)
-                why = "; ".join(comparison.reasons[:3]) or "the simulation does it otherwise"
-            return (f'no simulation in {rollouts} rollouts reproduces "{event_label(event, names)}" '
-                    f"(t={event.t0:.2f} s in the demonstration): {why}")
+                return (f'no simulation in {rollouts} rollouts reproduces "{event_label(event, names)}" '
+                        f"(t={event.t0:.2f} s in the demonstration): {why}")
+            event = demonstrated.event(leg.last)  # every event there, some otherwise: the metric says how
+            why = "; ".join(comparison.reasons[:3]) or "the simulation does it otherwise"
+            return (f"no simulation in {rollouts} rollouts reproduces the demonstration up to "
+                    f'"{event_label(event, names)}" (t={event.t0:.2f} s): {why}')
         before = leg.events
     return "not reproduced: " + "; ".join(comparison.reasons[:3])
 
