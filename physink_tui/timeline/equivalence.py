@@ -19,8 +19,10 @@ unrelated events (two balls falling side by side) may happen in either order; th
 causality, which is compared next.
 
 The qualitative distance adds up a cost (the ``*_COST`` constants) for each unmatched event, each side of a
-matched contact that differs, each region of a matched movement passed in one timeline only, and each cause edge
-between matched events present in one timeline only. The quantitative distance is the mean, over matched
+matched contact that differs (not the own side of a body landing inside a container in both), each region of a
+matched movement passed in one timeline only while the other passes the opposite one, and each cause edge between
+matched events present in one timeline only. With ``simulation=True`` (B simulates the demonstration A), B's
+unmatched events after its last matched one and its bounces coming to rest are left out (`compare`). The quantitative distance is the mean, over matched
 movements and contacts, of the mean distance between the two trajectories resampled at the same fractions of
 their durations (speed does not count) and of the distance between the two contact points, in canvas units.
 
