@@ -22,9 +22,10 @@ The qualitative distance adds up a cost (the ``*_COST`` constants) for each unma
 matched contact that differs (not the own side of a body landing inside a container in both), each region of a
 matched movement passed in one timeline only while the other passes the opposite one, and each cause edge between
 matched events present in one timeline only. With ``simulation=True`` (B simulates the demonstration A), B's
-unmatched events after its last matched one and its bounces coming to rest are left out (`compare`). The quantitative distance is the mean, over matched
-movements and contacts, of the mean distance between the two trajectories resampled at the same fractions of
-their durations (speed does not count) and of the distance between the two contact points, in canvas units.
+unmatched events after its last matched one and its bounces coming to rest are left out (`compare`). The
+quantitative distance is the mean, over matched movements and contacts, of the mean distance between the two
+trajectories resampled at the same fractions of their durations (speed does not count) and of the distance between
+the two contact points, in canvas units.
 
 >>> a = Timeline((Event("e1", "start"), Event("e2", "movement", ("b1",), ("e1",), 0.0, 1.0)))
 >>> compare(a, a).equivalent
