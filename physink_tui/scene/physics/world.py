@@ -10,7 +10,6 @@ poses back into a Scene. Deciding what strokes become (interpret), what contacts
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
 
 import pymunk
 
@@ -18,6 +17,7 @@ from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Point, Scene
 from physink_tui.scene.physics.build import Built, build
 from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction
+from physink_tui.scene.physics.dragging import Drag, grab_body
 from physink_tui.scene.physics.sleeping import sleep_groups
 from physink_tui.scene.physics.speed import limit_speed
 from physink_tui.scene.physics.state import REST, Motion, Pose, Velocity, WorldState
@@ -36,23 +36,6 @@ DT = 1 / 120
 """The fixed time step in seconds (two steps per 60 Hz frame)."""
 ITERATIONS = 20
 """Solver iterations per step (pymunk's default is 10): ropes carrying heavy bodies stretch visibly with fewer."""
-DRAG_ACCELERATION = 20_000.0
-"""The strongest pull of a drag, per unit of the dragged body's mass (canvas units/s², ~22 g)."""
-DRAG_ANGULAR_ACCELERATION = 200.0
-"""The strongest twist (rad/s², times the moment of inertia) with which a ``rotate=False`` drag holds the angle."""
-DRAG_ERROR_BIAS = (1 - 0.15) ** 60
-"""Fraction of the pen-to-grab-point distance left uncorrected after one second (pymunk's mouse-joint example)."""
-
-
-@dataclass(slots=True)
-class _Drag:
-    body_id: str
-    body: pymunk.Body
-    control: pymunk.Body
-    parts: tuple[pymunk.Constraint, ...]
-    fixed: bool  # static before the drag without being frozen: static again on release
-
-
 class World:
     """A pymunk space mirroring a `Scene`, addressed by component id.
 
@@ -83,7 +66,7 @@ class World:
         self._frictions = 0  # how many of `Surfaces.frictions` have their pre-solve callback
         self._live: set[pymunk.Constraint] = set()
         self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
-        self._drag: _Drag | None = None
+        self._drag: Drag | None = None
         self._by_z = sorted(built.z, key=built.z.__getitem__)
         self.substeps = 1
         """Sub-steps per step: a simulation without demo mode's speed limit divides a step whose fastest body would
@@ -343,19 +326,7 @@ class World:
                 body.body_type = pymunk.Body.DYNAMIC
                 body.velocity, body.angular_velocity = (0.0, 0.0), 0.0
             grab = body.position if grab_point is None else grab_point
-            control = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-            control.position = grab
-            pin = pymunk.PivotJoint(control, body, (0, 0), body.world_to_local(grab))
-            pin.max_force = DRAG_ACCELERATION * body.mass
-            pin.error_bias = DRAG_ERROR_BIAS
-            parts: list[pymunk.Constraint] = [pin]
-            if not rotate:
-                hold = pymunk.GearJoint(control, body, body.angle, 1.0)
-                hold.max_force = DRAG_ANGULAR_ACCELERATION * body.moment
-                hold.error_bias = DRAG_ERROR_BIAS
-                parts.append(hold)
-            self._space.add(control)
-            self._drag = _Drag(body_id, body, control, tuple(parts), fixed)
+            self._drag = grab_body(self._space, body_id, body, grab, rotate=rotate, fixed=fixed)
             self._sync_constraints()
         self._drag.control.position = target_point
 
