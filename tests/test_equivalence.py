@@ -376,3 +376,17 @@ def test_what_lands_inside_a_container_may_touch_it_with_any_side() -> None:
     on_top = Timeline(tuple(replace(ev, sides=(("b1", "right"), ("b4", "top"))) if ev.type == "contact" else ev
                             for ev in bottom.events))
     assert _cmp(bottom, on_top).qualitative_distance == 2 * SIDE_COST
+
+
+def test_regions_relative_to_a_body_moving_meanwhile_are_not_compared() -> None:
+    # the thesis's regions are against the scenery a body passes (figure 3-6); a paddle swinging while the ball goes
+    # by is no scenery, so passing "above" it in one timeline and "below" in the other is trajectory, not behaviour
+    def with_paddle_swinging(timeline: Timeline) -> Timeline:
+        first = next(ev for ev in timeline.events if ev.type == "movement")
+        swing = Event("p1", "movement", ("b3",), ("e1",), first.t0, first.t1)
+        return Timeline((*timeline.events, swing))
+
+    above = with_paddle_swinging(behaviour([], [{"b3": ("above",)}]))
+    below = with_paddle_swinging(behaviour([], [{"b3": ("below",)}]))
+    assert _cmp(above, below).equivalent
+    assert not _cmp(behaviour([], [{"b3": ("above",)}]), behaviour([], [{"b3": ("below",)}])).equivalent

@@ -61,7 +61,8 @@ while the other timeline passes the opposite region in its place (figure 2-14: a
 the other): above instead of below costs two regions, half an event. A region passed in one timeline only with
 nothing opposed to it (a corner strip brushed, a body passed near in one timeline only) is the trajectory's shape,
 which the quantitative distance measures: a simulated parabola is never exactly the path the pen drew (thesis
-figure 3-22)."""
+figure 3-22). Regions count against the scenery a body passes: not relative to a body that another movement moves
+at the same time (the paddle swinging as the ball goes by; `prepared.py`)."""
 CAUSE_COST = 0.5
 """Each cause edge between matched events found in one timeline only: the same events in another causal order.
 Edges to unmatched events are not counted again; the unmatched event already costs `UNMATCHED_EVENT_COST`."""

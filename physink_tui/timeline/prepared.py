@@ -90,15 +90,27 @@ def _signature(ev: Event, names: Mapping[str, str]) -> str:
     return f"{_TYPE_RANK[ev.type]}{_SEP}{_SEP}{_SUB.join(sorted(set(comps)))}"
 
 
-def _geometry(ev: Event, names: Mapping[str, str]) -> Geometry:
+def _geometry(ev: Event, names: Mapping[str, str], moving: frozenset[str] = frozenset()) -> Geometry:
     if ev.sides:
         return tuple(sorted((names.get(c) or c, side) for c, side in ev.sides))
     if ev.regions:
         crossed: dict[str, set[str]] = {}
         for c, regions in ev.regions:
-            crossed.setdefault(names.get(c) or c, set()).update(regions)
+            if c not in moving:
+                crossed.setdefault(names.get(c) or c, set()).update(regions)
         return tuple(sorted((n, tuple(r for r in REGIONS if r in rs)) for n, rs in crossed.items() if rs))
     return ()
+
+
+def _moving_meanwhile(events: Sequence[Event]) -> dict[int, frozenset[str]]:
+    """Per movement (by index), the bodies that other movements move while it lasts: a movement's regions count
+    relative to the scenery it passes, not to a body swinging at the same time (the ball and the paddle it hits)."""
+    spans = [(i, ev.t0, ev.t1, ev.components) for i, ev in enumerate(events) if ev.type == "movement"]
+    out: dict[int, frozenset[str]] = {}
+    for i, t0, t1, own in spans:
+        out[i] = frozenset(c for j, u0, u1, comps in spans if j != i and u0 < t1 and t0 < u1
+                           for c in comps if c not in own)
+    return out
 
 
 def _resample(movements: Sequence[Event]) -> np.ndarray:
@@ -139,7 +151,8 @@ def prepare(timeline: Timeline, names: Mapping[str, str] | None = None) -> Prepa
     depth = _depths(timeline, index)
     signatures = tuple(_signature(ev, names) for ev in events)
     causes = tuple(tuple(index[c] for c in ev.causes) for ev in events)
-    geometry = tuple(_geometry(ev, names) for ev in events)
+    moving_meanwhile = _moving_meanwhile(events)
+    geometry = tuple(_geometry(ev, names, moving_meanwhile.get(i, frozenset())) for i, ev in enumerate(events))
     moving = [i for i, ev in enumerate(events) if ev.type == "movement" and ev.trajectory]
     rows = [-1] * len(events)
     for row, i in enumerate(moving):
