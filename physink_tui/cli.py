@@ -59,25 +59,24 @@ MAX_SEED = MAX_COUNT
 """The largest seed: what a journal's ``simulate`` line takes."""
 
 
-def _positive_int(text: str) -> int:
+def _whole(text: str, low: int, high: int, expected: str) -> int:
+    """``text`` as an integer in [low, high], else an argparse error saying ``expected``."""
     try:
         value = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+        value = low - 1
+    if not low <= value <= high:
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {text!r}")
     return value
+
+
+def _positive_int(text: str) -> int:
+    return _whole(text, 1, sys.maxsize, "a positive integer")
 
 
 def _seed(text: str) -> int:
-    """A search's seed: an integer in [0, 2**31 - 1], as a journal's ``simulate`` line takes it."""
-    try:
-        value = int(text)
-    except ValueError:
-        value = -1
-    if not 0 <= value <= MAX_SEED:
-        raise argparse.ArgumentTypeError(f"expected an integer in [0, {MAX_SEED}], got {text!r}")
-    return value
+    """A search's seed: what a journal's ``simulate`` line takes."""
+    return _whole(text, 0, MAX_SEED, f"an integer in [0, {MAX_SEED}]")
 
 
 def _positive_rate(text: str) -> float:
@@ -100,14 +99,7 @@ def _frame_size(text: str) -> tuple[int, int]:
 
 
 def _frame_rate(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if not 1 <= value <= MAX_FPS:
-        raise argparse.ArgumentTypeError(f"expected whole frames a second from 1 to {MAX_FPS} (30 or 60 are usual), "
-                                         f"got {text!r}")
-    return value
+    return _whole(text, 1, MAX_FPS, f"whole frames a second from 1 to {MAX_FPS} (30 or 60 are usual)")
 
 
 def _seconds(text: str) -> float:

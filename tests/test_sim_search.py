@@ -9,8 +9,9 @@ import pytest
 
 from physink_tui.errors import SimulationError
 from physink_tui.sim.evaluate import EXPLODED_SCORE, QUALITATIVE_WEIGHT, Score, evaluate, evaluate_problem, make_problem
+from physink_tui.sim.grid import ANGLE_STEPS, grid_values
 from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters
-from physink_tui.sim.search import ANGLE_STEPS, Search, grid_values
+from physink_tui.sim.search import Search
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import ProcessExecutor, SerialExecutor
 from tests.sim_scenes import CANVAS, ball_floor_wall, demonstration, parameters

@@ -22,15 +22,13 @@ from typing import Protocol
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
 from physink_tui.sim.evaluate import Score
-from physink_tui.sim.grid import ANGLE_STEPS, ThesisGrid, grid_values
+from physink_tui.sim.grid import ThesisGrid
 from physink_tui.sim.leg_search import LegByLeg
 from physink_tui.sim.legs import legs
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.seeding import seed as seed_parameters
 from physink_tui.sim.seeding import seed_family
 from physink_tui.timeline.events import Timeline
-
-__all__ = ["ANGLE_STEPS", "STRATEGIES", "Search", "grid_values"]
 
 STRATEGIES = ("default", "grid")
 

@@ -205,7 +205,7 @@ class _Ledger:
     only, its time in B; and each matched pair's trajectory or contact-point distance, by A's event."""
 
     a_costs: list[tuple[int, float]]
-    b_costs: list[tuple[float, bool, float]]  # (t0 in B, a contact or end-contact, cost)
+    b_costs: list[tuple[Event, float]]  # an event of B only, its cost
     distances: list[tuple[int, float]]
     b_time: dict[int, float]  # A's matched events: the time of their counterpart in B
 
@@ -224,7 +224,7 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
         until = max((ev_b[ib].t0 for _, ib in pairs if ev_b[ib].type != "start"), default=-1.0)
         only_b = [j for j in only_b if j not in resting and _before(ev_b[j], until)]
     ledger = _Ledger([(i, UNMATCHED_EVENT_COST) for i in only_a],
-                     [(ev_b[j].t0, ev_b[j].type != "movement", UNMATCHED_EVENT_COST) for j in only_b], [],
+                     [(ev_b[j], UNMATCHED_EVENT_COST) for j in only_b], [],
                      {ia: ev_b[ib].t0 for ia, ib in pairs})
     if say is not None:
         for i in only_a:
@@ -258,7 +258,7 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
         gap = pa.paths[rows_a] - pb.paths[rows_b]
         per_row = np.sqrt((gap * gap).sum(axis=2)).mean(axis=1)
         ledger.distances.extend(zip(row_owner, per_row.tolist(), strict=True))
-    qualitative = sum(c for _, c in ledger.a_costs) + sum(c for _, _, c in ledger.b_costs)
+    qualitative = sum(c for _, c in ledger.a_costs) + sum(c for _, c in ledger.b_costs)
     quantitative = sum(d for _, d in ledger.distances) / len(ledger.distances) if ledger.distances else 0.0
     comparison = Comparison(
         equivalent=qualitative == 0.0,
@@ -316,7 +316,7 @@ def compare_prefixes(pa: Prepared, pb: Prepared, prefixes: Sequence[frozenset[st
         until = max((t for i, t in ledger.b_time.items() if i in inside and pa.timeline.events[i].type != "start"),
                     default=-1.0)
         qualitative = sum(c for i, c in ledger.a_costs if i in inside)
-        qualitative += sum(c for t, contact, c in ledger.b_costs if t < until or (t == until and contact))
+        qualitative += sum(c for ev, c in ledger.b_costs if _before(ev, until))
 
         distances = [d for i, d in ledger.distances if i in inside]
         quantitative = sum(distances) / len(distances) if distances else 0.0
