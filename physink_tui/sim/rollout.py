@@ -207,6 +207,7 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
         recorder.observe(Observation(t, frame.motions, contacts, None, frame.touching))
         gone = False
         moving = False
+        need = 1.0  # sub-steps the next step needs: no body on the canvas crosses the thinnest body in one
         for body in movable:
             m = frame.motions[body]
             if not _inside_xy(m.x, m.y, bounds):
@@ -214,8 +215,9 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
                 continue
             speed = math.hypot(m.vx, m.vy)
             moving = moving or speed > MOVING_SPEED
+            need = max(need, speed / limits[body][1])
             _flag(flagged, body, names.get(body, body), speed, t, limits)
-        world.substeps = _substeps(frame.motions, movable, limits, bounds)
+        world.substeps = min(math.ceil(need), MAX_SUBSTEPS)
         still = 0 if moving else still + 1
         if still >= REST_STEPS:  # the recorder's own stop never fires for a body falling off the canvas
             stopped = OFF_CANVAS if gone else AT_REST
@@ -265,18 +267,6 @@ def _speed_limits(world: World, bodies: tuple[str, ...], dt: float) -> dict[str,
     halves = {b: _half_size(world, b) for b in bodies}
     thinnest = min(halves.values(), default=math.inf)
     return {b: (max(SPEED_LIMIT * halves[b] / dt, MIN_SPEED_LIMIT), (halves[b] + thinnest) / dt) for b in bodies}
-
-
-def _substeps(motions: dict[str, Motion], movable: list[str], limits: dict[str, tuple[float, float]],
-              bounds: tuple[float, float, float, float]) -> int:
-    """Sub-steps the next step needs so that no body on the canvas moves further in one sub-step than it could
-    without passing through the thinnest body (at most `MAX_SUBSTEPS`)."""
-    need = 1.0
-    for body in movable:
-        m = motions[body]
-        if _inside_xy(m.x, m.y, bounds):
-            need = max(need, math.hypot(m.vx, m.vy) / limits[body][1])
-    return min(math.ceil(need), MAX_SUBSTEPS)
 
 
 def _flag(flagged: dict[tuple[str, str], str], body: str, name: str, speed: float, t: float,
