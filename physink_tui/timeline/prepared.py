@@ -8,9 +8,10 @@ their ids.
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from itertools import chain
+from itertools import accumulate, chain
 from operator import attrgetter
 
 import numpy as np
@@ -104,12 +105,29 @@ def _geometry(ev: Event, names: Mapping[str, str], moving: frozenset[str] = froz
 
 def _moving_meanwhile(events: Sequence[Event]) -> dict[int, frozenset[str]]:
     """Per movement (by index), the bodies that other movements move while it lasts: a movement's regions count
-    relative to the scenery it passes, not to a body swinging at the same time (the ball and the paddle it hits)."""
-    spans = [(i, ev.t0, ev.t1, ev.components) for i, ev in enumerate(events) if ev.type == "movement"]
+    relative to the scenery it passes, not to a body swinging at the same time (the ball and the paddle it hits).
+
+    Per body, its movements' spans sorted by start with the latest end so far, so each (movement, body) question is
+    one bisection: O(movements x bodies x log) rather than every pair of movements.
+    """
+    spans: dict[str, list[tuple[float, float]]] = {}
+    for ev in events:
+        if ev.type == "movement":
+            for c in ev.components:
+                spans.setdefault(c, []).append((ev.t0, ev.t1))
+    starts: dict[str, list[float]] = {}
+    latest_end: dict[str, list[float]] = {}
+    for c, body_spans in spans.items():
+        body_spans.sort()
+        starts[c] = [t0 for t0, _ in body_spans]
+        latest_end[c] = list(accumulate((t1 for _, t1 in body_spans), max))
     out: dict[int, frozenset[str]] = {}
-    for i, t0, t1, own in spans:
-        out[i] = frozenset(c for j, u0, u1, comps in spans if j != i and u0 < t1 and t0 < u1
-                           for c in comps if c not in own)
+    for i, ev in enumerate(events):
+        if ev.type != "movement":
+            continue
+        own = set(ev.components)
+        out[i] = frozenset(c for c in starts if c not in own and (k := bisect_left(starts[c], ev.t1)) > 0
+                           and latest_end[c][k - 1] > ev.t0)
     return out
 
 
