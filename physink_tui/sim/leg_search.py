@@ -91,7 +91,7 @@ class LegByLeg:
         self.centre = start
         self.centre_score: Score | None = None
         self.finished = False
-        self._scanned = self._scan_told = False
+        self._asked_for = "start"  # what the last generation was: "start", "family", "scan" or "run"
         self._given_up = -1
         self._round = 0
         self._runs_this_round = 0
@@ -101,12 +101,14 @@ class LegByLeg:
 
     def generation(self, best: Parameters | None) -> list[Parameters]:
         if self._family_round < FAMILY_ROUNDS and self.family is not None:
+            self._asked_for = "family"
             self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
                              for j in FAMILY_SPAN[self._family_round] if j != 0]
             return [self.family(f) for f in self._factors]
-        if not self._scanned and self.centre.velocities:
-            self._scanned = True
+        if self._asked_for == "family" or (self._asked_for == "start" and self.centre.velocities):
+            self._asked_for = "scan"
             return _turned_and_scaled(self.centre)
+        self._asked_for = "run"
         while not self.finished:
             if self._run is None and not self._begin():
                 continue
@@ -118,17 +120,14 @@ class LegByLeg:
         if self.centre_score is None:  # the start, alone (generation 0 of the search)
             self.centre_score = scores[0]
             return
-        if self._family_round < FAMILY_ROUNDS and self.family is not None:
-            self._family_round += 1  # the flight-time family: the one furthest along the legs leads
-            for f, p, s in zip(self._factors, generation, scores, strict=False):
-                if not s.exploded and self._progress(s) < self._progress(self.centre_score):
-                    self.centre, self.centre_score, self._family_best = p, s, f
-            return
-        if self._run is None and self._scanned and not self._scan_told:
-            self._scan_told = True  # the velocities turned and scaled: likewise
-            for p, s in zip(generation, scores, strict=False):
+        if self._asked_for in ("family", "scan"):  # the candidate furthest along the legs leads
+            if self._asked_for == "family":
+                self._family_round += 1
+            for k, (p, s) in enumerate(zip(generation, scores, strict=True)):
                 if not s.exploded and self._progress(s) < self._progress(self.centre_score):
                     self.centre, self.centre_score = p, s
+                    if self._asked_for == "family":
+                        self._family_best = self._factors[k]
             return
         run = self._run
         assert run is not None
