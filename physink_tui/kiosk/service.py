@@ -1,0 +1,263 @@
+"""The kiosk's loop: one tablet, one session at a time, each journaled from its first touch and finalised when it
+ends; no UI, no decisions about what the pen drew (the session's), no files of its own (finalise's and store's).
+
+Threads: the tablet's source thread hands every report to `Kiosk._entry` (through a `SourcePump`), which decides
+with the hot zones (`ControlFilter`) whether it goes to the session, is held back or presses a button, and starts
+a session on the first touch; each session runs on its `SessionRunner`'s worker, journaling every entry it handles
+(flushed at once, so a kill loses at most the entries still queued for the next tick); the main thread (`run`)
+watches for the end of a session (its hot zone, ``--idle`` seconds of input time without a report, the replayed
+capture's end, SIGTERM) and a finaliser thread writes the ended sessions' outputs in order while the next session
+records.
+
+Status goes to ``log`` as plain lines (journald-friendly).
+"""
+
+from __future__ import annotations
+
+import queue
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from datetime import UTC, datetime
+from pathlib import Path
+
+from physink_tui.errors import JournalError, PhysinkError
+from physink_tui.formats.journal.entries import CommandEntry, HidEntry, JournalDevice, JournalEntry, JournalHeader
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.formats.journal.writer import JournalWriter
+from physink_tui.input.pen.state import TipThresholds
+from physink_tui.input.sources import PenSource, SourceEnded
+from physink_tui.kiosk.controls import PASS, PRESS, ControlFilter
+from physink_tui.kiosk.finalise import JOURNAL, Ending, finalise
+from physink_tui.kiosk.hot_zones import HotZones
+from physink_tui.kiosk.store import SessionStore
+from physink_tui.render.export import Look
+from physink_tui.session.runner import SessionRunner
+from physink_tui.session.session import Session
+from physink_tui.session.source_pump import SourcePump
+
+MIN_FREE_BYTES = 50_000_000
+"""A session starts only with this much free space in the output folder (a session's video is a few MB)."""
+POLL_S = 0.05
+"""How often the main thread looks at the sessions' ends (seconds)."""
+VIDEO_LOOK = Look(960, 600, 30)
+"""The sessions' videos: smaller than an export's, so finalising keeps up with visitors."""
+ZONE_COMMANDS = {"undo": ("undo",), "redo": ("redo",), "clear": ("clear",), "play": ("play",), "stop": ("stop",),
+                 "sketch": ("mode", "sketch"), "demo": ("mode", "demo")}
+
+
+@dataclass(frozen=True, slots=True)
+class KioskSettings:
+    """``idle_s``: seconds without a report that end a session; ``keep`` / ``max_bytes``: retire the oldest
+    finished sessions beyond these (None: keep all); ``look``: the videos' size and rate."""
+
+    idle_s: float = 120.0
+    keep: int | None = None
+    max_bytes: int | None = None
+    look: Look = VIDEO_LOOK
+
+
+class _Live:
+    """The session being recorded: its folder, journal, session and runner."""
+
+    def __init__(self, folder: Path, header: JournalHeader, clock: Callable[[], float]) -> None:
+        self.folder = folder
+        self.writer = JournalWriter.create(folder / JOURNAL, header)
+        self.session = Session.from_header(header)
+        self.session.journal = self.writer
+        self.runner: SessionRunner = SessionRunner(self.session, clock=clock)
+        self.mode = "sketch"
+        self.told_stopped = False
+        self.runner.start()
+
+
+class Kiosk:
+    """The recording service over ``store`` (see the module docstring).
+
+    Args:
+        store: where sessions go.
+        zones: the hot zones (their drawing area is in ``header``'s mapping already).
+        settings: idle time, retiring, video look.
+        log: where status lines go.
+    """
+
+    def __init__(self, store: SessionStore, zones: HotZones, settings: KioskSettings,
+                 log: Callable[[str], None]) -> None:
+        self.store = store
+        self.zones = zones
+        self.settings = settings
+        self.log = log
+        self._lock = threading.Lock()  # guards _live, _last_input and the flags the source thread sets
+        self._live: _Live | None = None
+        self._clock: Callable[[], float] = time.monotonic
+        self._last_input = 0.0
+        self._end_asked: str | None = None  # why the current session should end (its zone)
+        self._source_ended = threading.Event()
+        self._stop = threading.Event()
+        self._finishing: queue.Queue[tuple[Session, Path, Ending] | None] = queue.Queue()
+        self._finaliser = threading.Thread(target=self._finalise_queue, name="kiosk-finalise", daemon=True)
+        self._full_disk_told = False
+
+    # -- recovery ---------------------------------------------------------------------------------------------------
+
+    def recover(self) -> int:
+        """Finalise every session a previous run left unfinished (from its journal); returns how many."""
+        count = 0
+        for folder in self.store.unfinished():
+            path = folder / JOURNAL
+            try:
+                journal = read_journal(path)
+                session = Session.from_header(journal.header).run(journal.entries)
+            except PhysinkError as exc:
+                self.log(f"kiosk: cannot recover {folder.name}: {exc}")
+                continue
+            lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
+            self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
+            self._write(session, folder, Ending("recovered", folder.name, recovered=True))
+            count += 1
+        return count
+
+    # -- running ----------------------------------------------------------------------------------------------------
+
+    def run(self, source: PenSource, device: JournalDevice, header: JournalHeader, *, replay: bool,
+            clock: Callable[[], float] = time.monotonic) -> int:
+        """Record sessions from ``source`` until SIGTERM (`stop`) or, for a replay, the end of the capture."""
+        self._finaliser.start()
+        self._controls = ControlFilter(device, self.zones, TipThresholds(header.tip_down, header.tip_up))
+        self._header, self._clock = header, clock
+        self._last_input = clock()
+        pump = SourcePump(source, self._entry, device=None if replay else device, on_ended=self._ended)
+        self.log(f"kiosk: reading {'the capture' if replay else device.name or device.id}; a session starts when "
+                 "the pen touches the tablet")
+        pump.start()
+        try:
+            while not self._stop.is_set():
+                self._stop.wait(POLL_S)
+                self._watch()
+                if replay and self._source_ended.is_set():
+                    break
+        finally:
+            pump.stop()
+            self._end("stopped" if self._stop.is_set() else "capture ended")
+            self._finishing.put(None)
+            self._finaliser.join()
+        return 0
+
+    def stop(self) -> None:
+        """End the current session (finalised) and the run; safe from a signal handler."""
+        self._stop.set()
+
+    def _watch(self) -> None:
+        with self._lock:
+            live, asked, idle = self._live, self._end_asked, self._clock() - self._last_input
+        if live is None:
+            return
+        if live.writer.stopped is not None and not live.told_stopped:
+            live.told_stopped = True
+            self.log(f"kiosk: recording stopped for session {live.folder.name}: {live.writer.stopped}")
+        if asked is not None:
+            self._end(asked)
+        elif idle > self.settings.idle_s:
+            self._end("idle")
+
+    def _end(self, why: str) -> None:
+        with self._lock:
+            live, self._live, self._end_asked = self._live, None, None
+        if live is None:
+            return
+        try:
+            live.runner.stop()
+        except Exception as exc:  # a bug in the session: its journal is closed; the recovery path finalises it
+            self.log(f"kiosk: session {live.folder.name} failed: {exc!r}")
+            return
+        self.log(f"kiosk: session {live.folder.name} ended ({why}) after {live.session.t:.1f} s")
+        self._finishing.put((live.session, live.folder, Ending(why, live.folder.name)))
+
+    # -- the source thread ------------------------------------------------------------------------------------------
+
+    def _entry(self, entry: JournalEntry) -> None:
+        with self._lock:
+            self._last_input = self._clock()
+            live = self._live
+            if not isinstance(entry, HidEntry):
+                if live is not None:
+                    live.runner.submit(entry)
+                return
+            verdict = self._controls.report(entry.data, self._clock())
+            if verdict.what == PRESS and verdict.zone is not None:
+                self._press(live, verdict.zone.action)
+                return
+            if verdict.what != PASS:
+                return
+            if live is None:
+                if not verdict.touch_began:
+                    return  # hovering before any session: nothing to record yet
+                live = self._start()
+                if live is None:
+                    return
+            live.runner.submit(entry)
+
+    def _press(self, live: _Live | None, action: str) -> None:
+        if live is None:
+            return  # a button before the first touch: there is no session to act on
+        if action == "end":
+            self._end_asked = "end zone"
+            return
+        if action == "mode":
+            action = "demo" if live.mode == "sketch" else "sketch"
+        command = ZONE_COMMANDS[action]
+        if command[0] == "mode":
+            live.mode = command[1]
+        live.runner.submit(CommandEntry(0.0, command[0], command[1:]))
+        self.log(f"kiosk: {' '.join(command)}")
+
+    def _start(self) -> _Live | None:
+        """A new session (called with the lock held); None when there is no room to record."""
+        free = self.store.free_bytes()
+        if free < MIN_FREE_BYTES:
+            if not self._full_disk_told:
+                self._full_disk_told = True
+                self.log(f"kiosk: not recording: only {free / 1e6:.0f} MB free in {self.store.root} "
+                         f"(a session needs {MIN_FREE_BYTES / 1e6:.0f} MB; --keep or --max-disk retire old ones)")
+            return None
+        self._full_disk_told = False
+        started = datetime.now(UTC)
+        try:
+            folder = self.store.new_folder(started)
+            start = self._clock()
+            self._live = _Live(folder, self._header, lambda: self._clock() - start)
+        except (OSError, JournalError) as exc:
+            self.log(f"kiosk: cannot start a session in {self.store.root}: {exc}")
+            return None
+        self.log(f"kiosk: session {folder.name} started")
+        return self._live
+
+    def _ended(self, ended: SourceEnded) -> None:
+        if ended.error is None:
+            self._source_ended.set()
+        else:
+            self.log(f"kiosk: the tablet went away ({ended.error}); the session waits for it to come back")
+
+    # -- the finaliser thread ---------------------------------------------------------------------------------------
+
+    def _finalise_queue(self) -> None:
+        while (item := self._finishing.get()) is not None:
+            session, folder, ending = item
+            self._write(session, folder, ending)
+            self.store.retire(self.settings.keep, self.settings.max_bytes, self._current_folder(), self.log)
+
+    def _current_folder(self) -> Path | None:
+        with self._lock:
+            return None if self._live is None else self._live.folder
+
+    def _write(self, session: Session, folder: Path, ending: Ending) -> None:
+        try:
+            summary = finalise(folder, session, ending, self.settings.look)
+            self.store.index(summary)
+        except PhysinkError as exc:
+            self.log(f"kiosk: could not finish writing session {folder.name}: {exc} (it is finished when the kiosk "
+                     "next starts)")
+            return
+        self.log(f"kiosk: session {folder.name} written: {summary['bodies']} bodies, {summary['events']} events, "
+                 f"{', '.join(summary['files'])}")  # type: ignore[arg-type]

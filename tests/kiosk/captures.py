@@ -1,0 +1,53 @@
+"""Captures of people using the kiosk, drawn with the virtual pen on a UC-Logic tablet: sketches on the drawing
+area below the default hot-zone strip, taps on the strip's buttons, pauses between visitors."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.captures.writer import format_capture
+from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
+from physink_tui.kiosk.hot_zones import STRIP
+
+MODE, UNDO, REDO, END = ((0.125, STRIP / 2),), ((0.375, STRIP / 2),), ((0.625, STRIP / 2),), ((0.875, STRIP / 2),)
+"""Taps on the default zones (sketch/demo, undo, redo, end session)."""
+
+
+def on_canvas(x: float, y: float) -> tuple[float, float]:
+    """Tablet position of canvas fraction (x, y): the canvas lies below the strip."""
+    return x, STRIP + (1.0 - STRIP) * y
+
+
+def ball_and_platform() -> list[Stroke]:
+    """A visitor draws a ball and a platform, switches to demo, drags the ball onto the platform, ends."""
+    return [Stroke.circle(on_canvas(0.2, 0.2), 0.04, aspect=1.6),
+            Stroke.box(*on_canvas(0.1, 0.6), *on_canvas(0.5, 0.66)),
+            Stroke(MODE),
+            Stroke((on_canvas(0.2, 0.2), on_canvas(0.3, 0.4), on_canvas(0.32, 0.55))),
+            Stroke(END)]
+
+
+def box_then_undo() -> list[Stroke]:
+    """A visitor draws a box and a circle, undoes the circle and walks away (no end button)."""
+    return [Stroke.box(*on_canvas(0.6, 0.3), *on_canvas(0.8, 0.4)),
+            Stroke.circle(on_canvas(0.3, 0.5), 0.05, aspect=1.6),
+            Stroke(UNDO)]
+
+
+def visits(*visitors: list[Stroke], pause_s: float = 4.0, seed: int = 3) -> Capture:
+    """One capture of the visitors one after another, ``pause_s`` seconds without the pen between them."""
+    pen = VirtualPen(REFERENCE_DEVICES["uclogic-v1"], seed=seed)
+    devices, events, t = None, [], 0.0
+    for strokes in visitors:
+        capture = pen.record(strokes, start_t=t)
+        devices = capture.devices
+        events.extend(capture.events)
+        t = capture.events[-1].t + pause_s
+    assert devices is not None
+    return Capture(devices, tuple(events))
+
+
+def write_capture(capture: Capture, path: Path) -> Path:
+    path.write_text(format_capture(capture), encoding="utf-8")
+    return path

@@ -1,0 +1,168 @@
+"""The kiosk (`physink kiosk`, issue 17) on replayed captures of visitors drawn with the virtual pen: one session per
+visitor, hot zones as buttons that never draw, idle endings, the outputs of each session complete and equal to a
+replay of its journal, retiring, recovery of an unfinished session, and a full disk."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import av
+import pytest
+from kiosk.captures import END, ball_and_platform, box_then_undo, on_canvas, visits, write_capture
+
+from physink_tui.cli import main
+from physink_tui.formats.journal.entries import JournalDevice
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.formats.project.files import load_project
+from physink_tui.input.pen.state import TipThresholds
+from physink_tui.input.virtual_pen import Stroke
+from physink_tui.kiosk.controls import HOLD, PASS, PRESS, ControlFilter
+from physink_tui.kiosk.finalise import JOURNAL, SUMMARY
+from physink_tui.kiosk.hot_zones import HotZoneError, default_zones, parse_zones
+from physink_tui.kiosk.store import SessionStore, parse_size
+
+
+def kiosk(out: Path, capture: Path, *extra: str, speed: float = 20.0) -> int:
+    return main(["kiosk", "--out", str(out), "--replay", str(capture), "--speed", str(speed),
+                 "--video-size", "160x100", *extra])
+
+
+def index(out: Path) -> list[dict]:
+    return [json.loads(line) for line in (out / "index.jsonl").read_text().splitlines()]
+
+
+def commands(folder: Path) -> list[tuple[str, tuple]]:
+    from physink_tui.formats.journal.entries import CommandEntry
+
+    return [(e.name, e.args) for e in read_journal(folder / JOURNAL).entries if isinstance(e, CommandEntry)]
+
+
+# -- hot zones ---------------------------------------------------------------------------------------------------------
+
+
+def test_a_zones_file_is_read_and_its_mistakes_are_named() -> None:
+    zones = parse_zones('{"area": [0, 0.1, 1, 1], "zones": [{"action": "end", "x0": 0.5, "y0": 0, "x1": 1, '
+                        '"y1": 0.1}]}', "z.json")
+    assert zones.at(0.7, 0.05).action == "end" and zones.at(0.2, 0.05) is None and zones.area == (0, 0.1, 1, 1)
+    with pytest.raises(HotZoneError, match=r"z.json: line 1: not JSON"):
+        parse_zones("{", "z.json")
+    with pytest.raises(HotZoneError, match=r"z.json: zones\[0\].action is 'jump'; expected one of mode"):
+        parse_zones('{"zones": [{"action": "jump", "x0": 0, "y0": 0, "x1": 1, "y1": 1}]}', "z.json")
+    with pytest.raises(HotZoneError, match=r"expected x0 < x1 and y0 < y1"):
+        parse_zones('{"zones": [{"action": "end", "x0": 0.5, "y0": 0, "x1": 0.2, "y1": 1}]}', "z.json")
+    with pytest.raises(HotZoneError, match=r"area\[2\] is 1.5; expected a number from 0 to 1"):
+        parse_zones('{"area": [0, 0, 1.5, 1], "zones": [{"action": "end", "x0": 0, "y0": 0, "x1": 1, "y1": 1}]}',
+                    "z.json")
+    assert parse_size("2G") == 2_000_000_000 and parse_size("500m") == 500_000_000
+    with pytest.raises(ValueError, match="not a size"):
+        parse_size("lots")
+
+
+def _verdicts(strokes: list[Stroke]) -> list[str]:
+    capture = visits(strokes)
+    d = capture.devices[0]
+    controls = ControlFilter(JournalDevice("tablet0", d.name, d.bus, d.vid, d.pid, d.descriptor), default_zones(),
+                             TipThresholds())
+    return [controls.report(e.data, e.t).what for e in capture.events]
+
+
+def test_a_tap_in_a_zone_presses_its_button_and_no_report_of_it_reaches_the_session() -> None:
+    verdicts = _verdicts([Stroke(END)])
+    assert verdicts.count(PRESS) == 1
+    touched = verdicts.index(HOLD)
+    assert set(verdicts[touched:verdicts.index(PRESS) + 1]) == {HOLD, PRESS}  # from the touch to the lift
+    assert set(verdicts[:touched]) == {PASS}  # hovering in is passed on
+
+
+def test_a_stroke_begun_on_the_canvas_stays_a_stroke_when_it_crosses_into_a_zone() -> None:
+    verdicts = _verdicts([Stroke((on_canvas(0.8, 0.3), (0.875, 0.02)))])
+    assert set(verdicts) == {PASS}
+
+
+# -- sessions ----------------------------------------------------------------------------------------------------------
+
+
+def test_each_visitor_becomes_a_session_with_every_output_and_its_journal_replays_to_the_same_project(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    capture = write_capture(visits(ball_and_platform(), box_then_undo()), tmp_path / "visits.hid")
+    out = tmp_path / "out"
+    assert kiosk(out, capture) == 0
+    log = capsys.readouterr().out
+    first, second = index(out)
+    assert first["ended"] == "end zone" and second["ended"] == "capture ended"
+    assert first["bodies"] == 2 and first["events"] > 0 and second["bodies"] == 1  # the circle was undone
+    a, b = (out / first["session"]), (out / second["session"])
+    assert ("mode", ("demo",)) in commands(a) and ("undo", ()) in commands(b)
+    assert "end" not in [name for name, _ in commands(a)][:-1]  # the end zone ends; the journal's end is the last
+    for folder, record in ((a, first), (b, second)):
+        assert set(record["files"]) == {p.name for p in folder.iterdir()}
+        assert json.loads((folder / SUMMARY).read_text()) == record
+        assert main(["replay", str(folder / JOURNAL), "--out", str(tmp_path / "again")]) == 0
+        assert (tmp_path / "again" / "project.json").read_bytes() == (folder / "project.json").read_bytes()
+        with av.open(str(folder / "video.mp4")) as video:
+            assert sum(1 for _ in video.decode(video=0)) > 0
+    assert "Contact between" in (a / "narration.txt").read_text()
+    assert f"session {first['session']} started" in log and "kiosk: mode demo" in log
+    # the taps on the strip drew nothing: the bodies are the ball (high up) and the platform, none at the top edge
+    scene = load_project(a / "project.json").scene
+    assert sorted(round(b.position[1] / 1000, 1) for b in scene.bodies()) == [0.2, 0.6]
+
+
+def test_a_visitor_who_walks_away_is_ended_by_the_idle_time_and_the_next_one_gets_a_new_session(
+        tmp_path: Path) -> None:
+    capture = write_capture(visits(box_then_undo(), ball_and_platform(), pause_s=6.0), tmp_path / "visits.hid")
+    out = tmp_path / "out"
+    assert kiosk(out, capture, "--idle", "2") == 0
+    assert [r["ended"] for r in index(out)] == ["idle", "end zone"]
+
+
+def test_keep_retires_the_oldest_finished_sessions(tmp_path: Path) -> None:
+    capture = write_capture(visits(ball_and_platform(), ball_and_platform()), tmp_path / "visits.hid")
+    out = tmp_path / "out"
+    assert kiosk(out, capture, "--keep", "1") == 0
+    records = index(out)
+    kept = [p.name for p in SessionStore(out).sessions()]
+    assert len(kept) == 1 and kept[0] == records[1]["session"]
+    assert {"session": records[0]["session"], "retired": True} in records
+
+
+def test_an_unfinished_session_is_recovered_and_finalised_before_new_sessions(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    capture = write_capture(visits(ball_and_platform()), tmp_path / "visits.hid")
+    done = tmp_path / "done"
+    assert kiosk(done, capture) == 0
+    (record,) = index(done)
+    out = tmp_path / "out"
+    crashed = out / "20260101T000000Z"
+    crashed.mkdir(parents=True)
+    journal = (done / record["session"] / JOURNAL).read_bytes()
+    (crashed / JOURNAL).write_bytes(journal[: len(journal) * 2 // 3])  # killed mid-session, mid-line
+    assert kiosk(out, write_capture(visits([Stroke.box(*on_canvas(0.1, 0.1), *on_canvas(0.3, 0.2))]),
+                                    tmp_path / "one.hid")) == 0
+    log = capsys.readouterr().out
+    assert "recovering unfinished session 20260101T000000Z" in log and "torn" in log
+    recovered, new = index(out)
+    assert recovered["session"] == crashed.name and recovered["recovered"] and recovered["ended"] == "recovered"
+    assert (crashed / "video.mp4").exists() and (crashed / "project.json").exists()
+    assert new["recovered"] is False
+    assert log.index("recovering") < log.index(f"session {new['session']} started")
+
+
+def test_a_full_disk_stops_recording_with_a_clear_line(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(SessionStore, "free_bytes", lambda self: 1_000_000)
+    capture = write_capture(visits(ball_and_platform()), tmp_path / "visits.hid")
+    out = tmp_path / "out"
+    assert kiosk(out, capture) == 0
+    assert "not recording: only 1 MB free" in capsys.readouterr().out
+    assert SessionStore(out).sessions() == []
+
+
+def test_kiosk_refuses_a_bad_zones_file_naming_it(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    zones = tmp_path / "zones.json"
+    zones.write_text('{"zones": []}')
+    assert main(["kiosk", "--out", str(tmp_path / "o"), "--replay", "x.hid", "--hot-zones", str(zones)]) == 1
+    assert f"{zones}: expected an object with a non-empty list" in capsys.readouterr().err
+    shutil.rmtree(tmp_path / "o", ignore_errors=True)
