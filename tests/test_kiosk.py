@@ -133,6 +133,7 @@ def test_an_unfinished_session_is_recovered_and_finalised_before_new_sessions(
     capture = write_capture(visits(ball_and_platform()), tmp_path / "visits.hid")
     done = tmp_path / "done"
     assert kiosk(done, capture) == 0
+    capsys.readouterr()
     (record,) = index(done)
     out = tmp_path / "out"
     crashed = out / "20260101T000000Z"
