@@ -167,3 +167,21 @@ def test_kiosk_refuses_a_bad_zones_file_naming_it(tmp_path: Path, capsys: pytest
     assert main(["kiosk", "--out", str(tmp_path / "o"), "--replay", "x.hid", "--hot-zones", str(zones)]) == 1
     assert f"{zones}: expected an object with a non-empty list" in capsys.readouterr().err
     shutil.rmtree(tmp_path / "o", ignore_errors=True)
+
+
+def test_the_committed_sample_capture_is_what_the_script_makes() -> None:
+    from kiosk.captures import SAMPLE, sample_text
+
+    assert SAMPLE.read_text(encoding="utf-8") == sample_text()
+
+
+def test_the_systemd_unit_runs_a_kiosk_command_line_that_parses() -> None:
+    from physink_tui.cli import build_parser
+
+    unit = (Path(__file__).resolve().parents[1] / "packaging" / "systemd" / "physink-kiosk.service").read_text()
+    (exec_start,) = [line for line in unit.splitlines() if line.startswith("ExecStart=")]
+    argv = exec_start.removeprefix("ExecStart=").split()
+    assert argv[0].endswith("/physink")
+    args = build_parser().parse_args(argv[1:])
+    assert args.command == "kiosk" and args.out == "/var/lib/physink-kiosk/sessions" and args.replay is None
+    assert "Restart=on-failure" in unit and "SupplementaryGroups=plugdev" in unit and "KillSignal=SIGTERM" in unit

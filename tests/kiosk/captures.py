@@ -3,7 +3,11 @@ area below the default hot-zone strip, taps on the strip's buttons, pauses betwe
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
+
+if __name__ == "__main__":  # run as a script: make the repository's package importable
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.captures.writer import format_capture
@@ -51,3 +55,18 @@ def visits(*visitors: list[Stroke], pause_s: float = 4.0, seed: int = 3) -> Capt
 def write_capture(capture: Capture, path: Path) -> Path:
     path.write_text(format_capture(capture), encoding="utf-8")
     return path
+
+
+SAMPLE = Path(__file__).resolve().parent / "visits.hid"
+"""Two visitors (`ball_and_platform`, then `box_then_undo`), committed for trying the kiosk without a tablet
+(``physink kiosk --out /tmp/k --replay tests/kiosk/visits.hid``); ``python tests/kiosk/captures.py`` writes it
+again, byte for byte."""
+
+
+def sample_text() -> str:
+    return format_capture(visits(ball_and_platform(), box_then_undo()))
+
+
+if __name__ == "__main__":
+    SAMPLE.write_text(sample_text(), encoding="utf-8", newline="\n")
+    print(f"{SAMPLE}: {SAMPLE.stat().st_size // 1024} KiB")
