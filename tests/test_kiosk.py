@@ -13,7 +13,7 @@ import pytest
 from kiosk.captures import END, ball_and_platform, box_then_undo, on_canvas, visits, write_capture
 
 from physink_tui.cli import main
-from physink_tui.formats.journal.entries import JournalDevice
+from physink_tui.formats.journal.entries import HidEntry, JournalDevice
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.project.files import load_project
 from physink_tui.input.pen.state import TipThresholds
@@ -185,3 +185,26 @@ def test_the_systemd_unit_runs_a_kiosk_command_line_that_parses() -> None:
     args = build_parser().parse_args(argv[1:])
     assert args.command == "kiosk" and args.out == "/var/lib/physink-kiosk/sessions" and args.replay is None
     assert "Restart=on-failure" in unit and "SupplementaryGroups=plugdev" in unit and "KillSignal=SIGTERM" in unit
+
+
+def test_pad_buttons_switch_to_demo_and_end_the_session(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A Huion in its vendor mode: button 1 (sketch/demo) and button 4 (end session), as the default pad says."""
+    ball, platform, _, drag, _ = ball_and_platform()
+    capture = write_capture(visits([ball, platform, (1,), drag, (4,)], [ball], device="huion-v2"),
+                            tmp_path / "pad.hid")
+    out = tmp_path / "out"
+    assert kiosk(out, capture) == 0
+    first, second = index(out)
+    assert first["ended"] == "end button" and first["events"] > 0 and second["ended"] == "capture ended"
+    assert commands(out / first["session"])[0] == ("mode", ("demo",))
+    journal = read_journal(out / first["session"] / JOURNAL)
+    assert not any(isinstance(e, HidEntry) and e.data[1] == 0xE0 for e in journal.entries)  # pad reports held back
+    assert "kiosk: mode demo" in capsys.readouterr().out
+
+
+def test_a_zones_file_gives_the_pad_buttons_other_actions(tmp_path: Path) -> None:
+    zones = parse_zones('{"zones": [{"action": "end", "x0": 0, "y0": 0, "x1": 1, "y1": 0.05}], '
+                        '"pad": {"2": "clear"}}', "z.json")
+    assert zones.pad_action(2) == "clear" and zones.pad_action(1) is None
+    with pytest.raises(HotZoneError, match=r"pad\['1'\] is 'fly'"):
+        parse_zones('{"zones": [{"action": "end", "x0": 0, "y0": 0, "x1": 1, "y1": 1}], "pad": {"1": "fly"}}', "z")

@@ -1,12 +1,13 @@
-"""Finds the kiosk's controls in the tablet's own reports: a pen tap in a hot zone becomes the command it
-triggers, and the reports of that tap are held back from the session; decides nothing about sessions.
+"""Finds the kiosk's controls in the tablet's own reports: a pen tap in a hot zone or a pad button pressed becomes
+the command it triggers, and the reports of it are held back from the session; decides nothing about sessions.
 
 The kiosk decodes each report a second time, beside the session, with the same decoder and tip thresholds the
 session will use (`HidPenDecoder`, `PenStateMachine`), to know where the pen is. A touch that *begins* in a zone is
 a press: its reports, from the touch to the lift, are not passed on (so the session never sees a stroke there),
 and lifting the pen inside the same zone triggers the zone's action (lifting elsewhere cancels it, as a button
 does). A stroke that begins on the drawing area is the session's even if it wanders into a zone. Hovering is
-always passed on. The commands are journaled as what they triggered, so replays never look at zones again.
+always passed on. A pad report (`PadDecoder`) is held back; a button going down in it is pressed. The commands are
+journaled as what they triggered, so replays never look at zones or pads again.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from dataclasses import dataclass
 
 from physink_tui.formats.journal.entries import JournalDevice
 from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.pad import PadDecoder
 from physink_tui.input.pen.state import PenState, PenStateMachine, TipThresholds
 from physink_tui.kiosk.hot_zones import HotZone, HotZones
 
@@ -26,12 +28,13 @@ PRESS = "press"
 @dataclass(frozen=True, slots=True)
 class Verdict:
     """What to do with one report: ``pass`` it to the session, ``hold`` it back, or ``press`` (hold it back: the
-    zone's button was pressed, ``zone`` says which); ``touch_began`` is True on the report where a touch began
-    (on the drawing area or in a zone)."""
+    zone's button was pressed, ``zone`` says which; or pad buttons went down, ``pad`` says which, lowest first);
+    ``touch_began`` is True on the report where a touch began (on the drawing area or in a zone)."""
 
     what: str
     zone: HotZone | None = None
     touch_began: bool = False
+    pad: tuple[int, ...] = ()
 
 
 class ControlFilter:
@@ -48,12 +51,18 @@ class ControlFilter:
 
     def __init__(self, device: JournalDevice, zones: HotZones, thresholds: TipThresholds) -> None:
         self.decoder = HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
+        self.pad = PadDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
+        self._held: frozenset[int] = frozenset()
         self.zones = zones
         self._pen = PenStateMachine(thresholds)
         self._pressing: HotZone | None = None  # the zone a touch began in, until the lift
 
     def report(self, data: bytes, t: float) -> Verdict:
         """The verdict on one report read at ``t``."""
+        buttons = self.pad.buttons(data)
+        if buttons is not None:
+            pressed, self._held = tuple(sorted(buttons - self._held)), buttons
+            return Verdict(PRESS if pressed else HOLD, pad=pressed)
         sample = self.decoder.decode(data, t)
         if sample is None:
             return Verdict(PASS)  # not a pen report: the session decides what it is

@@ -32,8 +32,9 @@ OUTPUTS = ("project.json", "timeline.json", "timeline.txt", NARRATION, VIDEO, SU
 
 @dataclass(frozen=True, slots=True)
 class Ending:
-    """How a session ended: ``reason`` (``end zone``, ``idle``, ``capture ended``, ``stopped``, ``recovered``),
-    when it started (the folder's UTC name) and whether its journal was all it left (recovered after a crash)."""
+    """How a session ended: ``reason`` (``end zone``, ``end button``, ``idle``, ``capture ended``, ``stopped``,
+    ``recovered``), when it started (the folder's UTC name) and whether its journal was all it left (recovered after
+    a crash)."""
 
     reason: str
     session: str

@@ -1,20 +1,23 @@
-"""Hot zones: rectangles of the tablet's surface that are buttons, and the drawing area left beside them; reads a
-zones file, never a device.
+"""Hot zones: rectangles of the tablet's surface that are buttons, the drawing area left beside them, and what the
+tablet's pad buttons (ExpressKeys) do; reads a zones file, never a device.
 
 A kiosk has no keyboard. Tapping the pen in a hot zone triggers its action instead of drawing: ``mode`` (sketch to
 demo and back), ``sketch``, ``demo``, ``undo``, ``redo``, ``clear``, ``play``, ``stop``, or ``end`` (the session
 is over: it is saved and exported). The default is a strip along the top edge of the tablet, 8 % of its height,
 cut in four: sketch/demo, undo, redo, end session; the canvas is mapped onto the rest of the tablet (`area`), so
-the strip never draws.
+the strip never draws. A tablet with pad buttons has them too: by default button 1 is sketch/demo, 2 undo, 3 redo,
+4 end session (`DEFAULT_PAD`).
 
 A zones file (``--hot-zones FILE``) is JSON::
 
     {"area": [0.0, 0.1, 1.0, 1.0],
      "zones": [{"action": "mode", "x0": 0.0, "y0": 0.0, "x1": 0.5, "y1": 0.1},
-               {"action": "end", "x0": 0.5, "y0": 0.0, "x1": 1.0, "y1": 0.1}]}
+               {"action": "end", "x0": 0.5, "y0": 0.0, "x1": 1.0, "y1": 0.1}],
+     "pad": {"1": "mode", "2": "end"}}
 
 with positions in 0..1 of the tablet's active area (x to the right, y down, as the tablet reports them, before any
-rotation), ``area`` the part of the tablet the canvas is mapped onto (default: the whole tablet).
+rotation), ``area`` the part of the tablet the canvas is mapped onto (default: the whole tablet), ``pad`` the action
+of each pad button by number (default `DEFAULT_PAD`; ``{}`` for none).
 """
 
 from __future__ import annotations
@@ -28,6 +31,8 @@ from physink_tui.errors import PhysinkError
 
 ACTIONS = ("mode", "sketch", "demo", "undo", "redo", "clear", "play", "stop", "end")
 """What a hot zone can do (see the module docstring)."""
+DEFAULT_PAD = ((1, "mode"), (2, "undo"), (3, "redo"), (4, "end"))
+"""What the first pad buttons do, when the tablet has any."""
 STRIP = 0.08
 """Height of the default strip of zones along the top edge, as a fraction of the tablet's height."""
 
@@ -52,10 +57,16 @@ class HotZone:
 
 @dataclass(frozen=True, slots=True)
 class HotZones:
-    """The zones and the drawing area beside them (``(x0, y0, x1, y1)`` in 0..1 of the tablet)."""
+    """The zones, the drawing area beside them (``(x0, y0, x1, y1)`` in 0..1 of the tablet) and the pad buttons'
+    actions (``(button number, action)`` pairs)."""
 
     zones: tuple[HotZone, ...]
     area: tuple[float, float, float, float] = (0.0, 0.0, 1.0, 1.0)
+    pad: tuple[tuple[int, str], ...] = DEFAULT_PAD
+
+    def pad_action(self, button: int) -> str | None:
+        """What pad button ``button`` does, or None."""
+        return dict(self.pad).get(button)
 
     def at(self, x: float, y: float) -> HotZone | None:
         """The zone under the tablet position ``(x, y)``, or None (the first listed wins where zones overlap)."""
@@ -110,7 +121,17 @@ def parse_zones(text: str, source: str) -> HotZones:
         area = data.get("area", [0.0, 0.0, 1.0, 1.0])
         if not isinstance(area, list) or len(area) != 4:
             raise ValueError(f"area is {area!r}; expected [x0, y0, x1, y1]")
-        return HotZones(tuple(zones), _rect(area, "area"))
+        pad = data.get("pad", {str(n): a for n, a in DEFAULT_PAD})
+        if not isinstance(pad, dict):
+            raise ValueError(f'pad is {pad!r}; expected an object such as {{"1": "mode"}}')
+        buttons = []
+        for key, action in pad.items():
+            if not (isinstance(key, str) and key.isdigit() and 1 <= int(key) <= 64):
+                raise ValueError(f"pad key {key!r} is not a button number from 1 to 64")
+            if action not in ACTIONS:
+                raise ValueError(f"pad[{key!r}] is {action!r}; expected one of {', '.join(ACTIONS)}")
+            buttons.append((int(key), action))
+        return HotZones(tuple(zones), _rect(area, "area"), tuple(sorted(buttons)))
     except ValueError as exc:
         raise HotZoneError(f"{source}: {exc}") from None
 

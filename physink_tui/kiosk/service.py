@@ -185,8 +185,11 @@ class Kiosk:
                     live.runner.submit(entry)
                 return
             verdict = self._controls.report(entry.data, self._clock())
-            if verdict.what == PRESS and verdict.zone is not None:
-                self._press(live, verdict.zone.action)
+            if verdict.what == PRESS:
+                actions = [(verdict.zone.action, "end zone")] if verdict.zone is not None else []
+                actions += [(a, "end button") for b in verdict.pad if (a := self.zones.pad_action(b)) is not None]
+                for action, ending in actions:
+                    self._press(live, action, ending)
                 return
             if verdict.what != PASS:
                 return
@@ -198,11 +201,11 @@ class Kiosk:
                     return
             live.runner.submit(entry)
 
-    def _press(self, live: _Live | None, action: str) -> None:
+    def _press(self, live: _Live | None, action: str, ending: str) -> None:
         if live is None:
             return  # a button before the first touch: there is no session to act on
         if action == "end":
-            self._end_asked = "end zone"
+            self._end_asked = ending
             return
         if action == "mode":
             action = "demo" if live.mode == "sketch" else "sketch"

@@ -9,7 +9,7 @@ from pathlib import Path
 if __name__ == "__main__":  # run as a script: make the repository's package importable
     sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
-from physink_tui.input.captures.capture import Capture
+from physink_tui.input.captures.capture import Capture, CaptureEvent
 from physink_tui.input.captures.writer import format_capture
 from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
 from physink_tui.kiosk.hot_zones import STRIP
@@ -39,15 +39,34 @@ def box_then_undo() -> list[Stroke]:
             Stroke(UNDO)]
 
 
-def visits(*visitors: list[Stroke], pause_s: float = 4.0, seed: int = 3) -> Capture:
-    """One capture of the visitors one after another, ``pause_s`` seconds without the pen between them."""
-    pen = VirtualPen(REFERENCE_DEVICES["uclogic-v1"], seed=seed)
+PadPress = tuple[int, ...]
+"""Pad buttons pressed together (and released a moment later), in a visitor's list of strokes."""
+
+
+def visits(*visitors: list[Stroke | PadPress], pause_s: float = 4.0, seed: int = 3,
+           device: str = "uclogic-v1") -> Capture:
+    """One capture of the visitors one after another, ``pause_s`` seconds without the pen between them. A
+    `PadPress` among the strokes becomes Huion "v2" pad reports (``device`` must be ``huion-v2``)."""
+    pen = VirtualPen(REFERENCE_DEVICES[device], seed=seed)
     devices, events, t = None, [], 0.0
-    for strokes in visitors:
-        capture = pen.record(strokes, start_t=t)
-        devices = capture.devices
-        events.extend(capture.events)
-        t = capture.events[-1].t + pause_s
+    for visitor in visitors:
+        strokes: list[Stroke] = []
+        for item in [*visitor, None]:
+            if isinstance(item, Stroke):
+                strokes.append(item)
+                continue
+            if strokes:
+                capture = pen.record(strokes, start_t=t)
+                devices, strokes = capture.devices, []
+                events.extend(capture.events)
+                t = capture.events[-1].t
+            if item is not None:  # a pad press: down, then up 0.15 s later
+                t += 0.3
+                mask = sum(1 << (b - 1) for b in item)
+                events.append(CaptureEvent(t, bytes([0x08, 0xE0, 0x01, 0x01, mask & 0xFF, mask >> 8, *[0] * 6])))
+                events.append(CaptureEvent(t + 0.15, bytes([0x08, 0xE0, 0x01, 0x01, *[0] * 8])))
+                t += 0.2
+        t += pause_s
     assert devices is not None
     return Capture(devices, tuple(events))
 
