@@ -25,6 +25,7 @@ from physink_tui.input.pen.mapping import TabletMapping, mapping_to_header
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.reconnecting import ReconnectingSource
 from physink_tui.input.scripted_sources import CaptureReplaySource
+from physink_tui.input.serial_tablets.reader import SerialPenSource
 from physink_tui.input.sources import PenSource
 from physink_tui.kiosk.hot_zones import HotZones, read_zones
 from physink_tui.kiosk.service import Kiosk, KioskSettings
@@ -33,6 +34,7 @@ from physink_tui.render.export import Look
 
 CANVAS = (1600.0, 1000.0)
 DEVICE_ID = "tablet0"
+SERIAL_ID = "serial0"
 WAIT_S = 1.0
 """Seconds between looks for a tablet while none is plugged in."""
 
@@ -96,11 +98,29 @@ def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSo
     return source, device, header
 
 
+def _serial_source(port: str, zones: HotZones, kiosk: Kiosk) -> tuple[PenSource, TabletMapping, JournalHeader]:
+    """Waits for an ISDV4 tablet on ``port``; its samples are in tablet space, mapped by the kiosk after the zones."""
+    told = False
+    while True:
+        source = SerialPenSource(port, SERIAL_ID)
+        try:
+            query = source.open()
+            break
+        except DeviceError as exc:
+            if not told:
+                log(f"kiosk: waiting for a tablet ({exc})")
+                told = True
+            if kiosk._stop.wait(WAIT_S):
+                raise KeyboardInterrupt from None
+    aspect = query.x_max / query.y_max if query.y_max else CANVAS[0] / CANVAS[1]
+    mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=aspect, tablet_height=1.0,
+                            area=zones.area)
+    thresholds = TipThresholds()
+    header = JournalHeader(CANVAS[0], CANVAS[1], (), mapping_to_header(mapping), thresholds.down, thresholds.up)
+    return source, mapping, header
+
+
 def run(args: argparse.Namespace) -> int:
-    if getattr(args, "serial", None):
-        print("physink kiosk: serial tablets are not supported by the kiosk yet (its hot zones read HID reports); "
-              "use a HID tablet or --replay", file=sys.stderr)
-        return 2
     zones = read_zones(args.hot_zones)
     max_bytes = None
     if args.max_disk is not None:
@@ -120,6 +140,9 @@ def run(args: argparse.Namespace) -> int:
             clock: Callable[[], float] = lambda: (time.monotonic() - start) * args.speed  # noqa: E731
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
             return kiosk.run(source, device, header, replay=True, clock=clock)
+        if args.serial:
+            serial_source, mapping, header = _serial_source(args.serial, zones, kiosk)
+            return kiosk.run(serial_source, None, header, replay=False, mapping=mapping)
         source, device, header = _live_source(args.device, zones, kiosk)
         return kiosk.run(source, device, header, replay=False)
     except KeyboardInterrupt:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from physink_tui.formats.journal.entries import JournalDevice
 from physink_tui.input.hid.decoder import HidPenDecoder
 from physink_tui.input.hid.pad import PadDecoder
+from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import PenState, PenStateMachine, TipThresholds
 from physink_tui.kiosk.hot_zones import HotZone, HotZones
 
@@ -41,7 +42,8 @@ class ControlFilter:
     """Follows one tablet's pen through its reports and tells the hot-zone presses apart from drawing.
 
     Args:
-        device: the tablet as the journal names it (its descriptor decodes the reports).
+        device: the tablet as the journal names it (its descriptor decodes the reports); None for a tablet whose
+            samples come decoded already (serial), which are given to `sample`.
         zones: the hot zones.
         thresholds: the session's tip thresholds (the journal header's).
 
@@ -49,9 +51,11 @@ class ControlFilter:
         DescriptorError: the descriptor describes no pen (the session could not use it either).
     """
 
-    def __init__(self, device: JournalDevice, zones: HotZones, thresholds: TipThresholds) -> None:
-        self.decoder = HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
-        self.pad = PadDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
+    def __init__(self, device: JournalDevice | None, zones: HotZones, thresholds: TipThresholds) -> None:
+        self.decoder = self.pad = None
+        if device is not None:
+            self.decoder = HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
+            self.pad = PadDecoder(device.descriptor, device.vid, device.pid, name=device.name or None)
         self._held: frozenset[int] = frozenset()
         self.zones = zones
         self._pen = PenStateMachine(thresholds)
@@ -59,6 +63,7 @@ class ControlFilter:
 
     def report(self, data: bytes, t: float) -> Verdict:
         """The verdict on one report read at ``t``."""
+        assert self.decoder is not None and self.pad is not None, "a tablet without a descriptor gives samples"
         buttons = self.pad.buttons(data)
         if buttons is not None:
             pressed, self._held = tuple(sorted(buttons - self._held)), buttons
@@ -66,6 +71,10 @@ class ControlFilter:
         sample = self.decoder.decode(data, t)
         if sample is None:
             return Verdict(PASS)  # not a pen report: the session decides what it is
+        return self.sample(sample)
+
+    def sample(self, sample: PenSample) -> Verdict:
+        """The verdict on one pen sample (in tablet space)."""
         was_touching = self._pen.state.in_contact
         self._pen.follow(sample)
         touching = self._pen.state.in_contact

@@ -18,14 +18,23 @@ import queue
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
 
 from physink_tui.errors import JournalError, PhysinkError
-from physink_tui.formats.journal.entries import CommandEntry, HidEntry, JournalDevice, JournalEntry, JournalHeader
+from physink_tui.formats.journal.entries import (
+    CommandEntry,
+    HidEntry,
+    JournalDevice,
+    JournalEntry,
+    JournalHeader,
+    PenEntry,
+)
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.journal.writer import JournalWriter
+from physink_tui.input.pen.mapping import TabletMapping
+from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.sources import PenSource, SourceEnded
 from physink_tui.kiosk.controls import PASS, PRESS, ControlFilter
@@ -91,6 +100,7 @@ class Kiosk:
         self._lock = threading.Lock()  # guards _live, _last_input and the flags the source thread sets
         self._live: _Live | None = None
         self._clock: Callable[[], float] = time.monotonic
+        self._mapping: TabletMapping | None = None
         self._last_input = 0.0
         self._end_asked: str | None = None  # why the current session should end (its zone)
         self._source_ended = threading.Event()
@@ -120,16 +130,20 @@ class Kiosk:
 
     # -- running ----------------------------------------------------------------------------------------------------
 
-    def run(self, source: PenSource, device: JournalDevice, header: JournalHeader, *, replay: bool,
-            clock: Callable[[], float] = time.monotonic) -> int:
-        """Record sessions from ``source`` until SIGTERM (`stop`) or, for a replay, the end of the capture."""
+    def run(self, source: PenSource, device: JournalDevice | None, header: JournalHeader, *, replay: bool,
+            clock: Callable[[], float] = time.monotonic, mapping: TabletMapping | None = None) -> int:
+        """Record sessions from ``source`` until SIGTERM (`stop`) or, for a replay, the end of the capture.
+
+        ``device`` is the HID tablet whose reports the source reads; None for a source of samples in tablet space
+        (a serial tablet), which ``mapping`` maps onto the canvas after the hot zones had their look.
+        """
         self._finaliser.start()
         self._controls = ControlFilter(device, self.zones, TipThresholds(header.tip_down, header.tip_up))
-        self._header, self._clock = header, clock
+        self._header, self._clock, self._mapping = header, clock, mapping
         self._last_input = clock()
         pump = SourcePump(source, self._entry, device=None if replay else device, on_ended=self._ended)
-        self.log(f"kiosk: reading {'the capture' if replay else device.name or device.id}; a session starts when "
-                 "the pen touches the tablet")
+        what = "the capture" if replay else source.device_id if device is None else device.name or device.id
+        self.log(f"kiosk: reading {what}; a session starts when the pen touches the tablet")
         pump.start()
         try:
             while not self._stop.is_set():
@@ -180,11 +194,17 @@ class Kiosk:
         with self._lock:
             self._last_input = self._clock()
             live = self._live
-            if not isinstance(entry, HidEntry):
+            if isinstance(entry, HidEntry):
+                verdict = self._controls.report(entry.data, self._clock())
+            elif isinstance(entry, PenEntry) and self._mapping is not None:  # a sample in tablet space
+                verdict = self._controls.sample(PenSample(self._clock(), entry.x, entry.y, entry.p, entry.tip,
+                                                          entry.range, entry.eraser, entry.b1, entry.b2, None, None, 0))
+                entry = replace(entry, **dict(zip(("x", "y"), self._mapping.to_canvas(entry.x, entry.y),
+                                                  strict=True)))
+            else:
                 if live is not None:
                     live.runner.submit(entry)
                 return
-            verdict = self._controls.report(entry.data, self._clock())
             if verdict.what == PRESS:
                 actions = [(verdict.zone.action, "end zone")] if verdict.zone is not None else []
                 actions += [(a, "end button") for b in verdict.pad if (a := self.zones.pad_action(b)) is not None]
