@@ -4,15 +4,24 @@ keeps no state, reads no device. Which folders exist and the index are `store`'s
 Every file is written atomically, the summary ``session.json`` last: a folder with a summary is complete, one
 without is unfinished and is finalised again (from its journal) when the kiosk starts, so a kill at any moment
 of finalising loses nothing.
+
+A session is always finalised from its journal (`finalise_journal`): the outputs are then what ``physink replay``
+of that journal gives, whether the session ended normally or was recovered after a crash. The kiosk runs it in a
+child process at a lower priority (``python -m physink_tui.kiosk.finalise FOLDER REASON WxH``, `child_command`), so
+drawing a video never takes the processor or the interpreter lock from the session being recorded.
 """
 
 from __future__ import annotations
 
 import json
+import os
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
+from physink_tui.errors import PhysinkError
+from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.outputs import OutputFolder
 from physink_tui.formats.session_outputs import write_session_outputs
 from physink_tui.render.export import Export, Look
@@ -75,3 +84,43 @@ def finalise(folder: Path, session: Session, ending: Ending, look: Look) -> dict
     }
     out.write(SUMMARY, json.dumps(summary, sort_keys=True) + "\n")
     return summary
+
+
+NICENESS = 10
+"""How much lower than the kiosk's the finalising child's scheduling priority is."""
+
+
+def finalise_journal(folder: Path, ending: Ending, look: Look) -> dict[str, object]:
+    """Replay the folder's journal (up to its last whole line) and `finalise` the session it gives.
+
+    Raises:
+        PhysinkError: the journal cannot be read (a torn header) or a file cannot be written.
+    """
+    journal = read_journal(folder / JOURNAL)
+    session = Session.from_header(journal.header).run(journal.entries)
+    return finalise(folder, session, ending, look)
+
+
+def child_command(folder: Path, ending: Ending, look: Look) -> list[str]:
+    """The command line of a child process that finalises ``folder`` (see the module docstring)."""
+    return [sys.executable, "-m", "physink_tui.kiosk.finalise", str(folder), ending.reason,
+            f"{look.width}x{look.height}", "recovered" if ending.recovered else "live"]
+
+
+def _child(argv: list[str]) -> int:
+    folder, reason, size, how = argv
+    width, height = (int(v) for v in size.split("x"))
+    try:
+        os.nice(NICENESS)
+    except OSError:
+        pass  # not allowed here: finalise at the same priority
+    try:
+        finalise_journal(Path(folder), Ending(reason, Path(folder).name, how == "recovered"), Look(width, height))
+    except PhysinkError as exc:
+        print(f"{folder}: {exc}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(_child(sys.argv[1:]))

@@ -6,15 +6,17 @@ with the hot zones (`ControlFilter`) whether it goes to the session, is held bac
 a session on the first touch; each session runs on its `SessionRunner`'s worker, journaling every entry it handles
 (flushed at once, so a kill loses at most the entries still queued for the next tick); the main thread (`run`)
 watches for the end of a session (its hot zone, ``--idle`` seconds of input time without a report, the replayed
-capture's end, SIGTERM) and a finaliser thread writes the ended sessions' outputs in order while the next session
-records.
+capture's end, SIGTERM) and a finaliser thread has a child process write the ended sessions' outputs from their
+journals, in order, at a lower priority, while the next session records.
 
 Status goes to ``log`` as plain lines (journald-friendly).
 """
 
 from __future__ import annotations
 
+import json
 import queue
+import subprocess
 import threading
 import time
 from collections.abc import Callable
@@ -38,7 +40,7 @@ from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.sources import PenSource, SourceEnded
 from physink_tui.kiosk.controls import PASS, PRESS, ControlFilter
-from physink_tui.kiosk.finalise import JOURNAL, Ending, finalise
+from physink_tui.kiosk.finalise import JOURNAL, SUMMARY, Ending, child_command, finalise_journal
 from physink_tui.kiosk.hot_zones import HotZones
 from physink_tui.kiosk.store import SessionStore
 from physink_tui.render.export import Look
@@ -105,7 +107,7 @@ class Kiosk:
         self._end_asked: str | None = None  # why the current session should end (its zone)
         self._source_ended = threading.Event()
         self._stop = threading.Event()
-        self._finishing: queue.Queue[tuple[Session, Path, Ending] | None] = queue.Queue()
+        self._finishing: queue.Queue[tuple[Path, Ending] | None] = queue.Queue()
         self._finaliser = threading.Thread(target=self._finalise_queue, name="kiosk-finalise", daemon=True)
         self._full_disk_told = False
 
@@ -115,16 +117,16 @@ class Kiosk:
         """Finalise every session a previous run left unfinished (from its journal); returns how many."""
         count = 0
         for folder in self.store.unfinished():
-            path = folder / JOURNAL
             try:
-                journal = read_journal(path)
-                session = Session.from_header(journal.header).run(journal.entries)
+                journal = read_journal(folder / JOURNAL)
+                lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
+                self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
+                summary = finalise_journal(folder, Ending("recovered", folder.name, recovered=True),
+                                           self.settings.look)
             except PhysinkError as exc:
                 self.log(f"kiosk: cannot recover {folder.name}: {exc}")
                 continue
-            lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
-            self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
-            self._write(session, folder, Ending("recovered", folder.name, recovered=True))
+            self._indexed(folder, summary)
             count += 1
         return count
 
@@ -186,7 +188,7 @@ class Kiosk:
             self.log(f"kiosk: session {live.folder.name} failed: {exc!r}")
             return
         self.log(f"kiosk: session {live.folder.name} ended ({why}) after {live.session.t:.1f} s")
-        self._finishing.put((live.session, live.folder, Ending(why, live.folder.name)))
+        self._finishing.put((live.folder, Ending(why, live.folder.name)))
 
     # -- the source thread ------------------------------------------------------------------------------------------
 
@@ -266,21 +268,22 @@ class Kiosk:
 
     def _finalise_queue(self) -> None:
         while (item := self._finishing.get()) is not None:
-            session, folder, ending = item
-            self._write(session, folder, ending)
+            folder, ending = item
+            child = subprocess.run(child_command(folder, ending, self.settings.look), capture_output=True, text=True,
+                                   check=False)
+            if child.returncode != 0:
+                why = child.stderr.strip().splitlines()[-1] if child.stderr.strip() else f"status {child.returncode}"
+                self.log(f"kiosk: could not finish writing session {folder.name}: {why} (it is finished when the "
+                         "kiosk next starts)")
+                continue
+            self._indexed(folder, json.loads((folder / SUMMARY).read_text(encoding="utf-8")))
             self.store.retire(self.settings.keep, self.settings.max_bytes, self._current_folder(), self.log)
 
     def _current_folder(self) -> Path | None:
         with self._lock:
             return None if self._live is None else self._live.folder
 
-    def _write(self, session: Session, folder: Path, ending: Ending) -> None:
-        try:
-            summary = finalise(folder, session, ending, self.settings.look)
-            self.store.index(summary)
-        except PhysinkError as exc:
-            self.log(f"kiosk: could not finish writing session {folder.name}: {exc} (it is finished when the kiosk "
-                     "next starts)")
-            return
+    def _indexed(self, folder: Path, summary: dict[str, object]) -> None:
+        self.store.index(summary)
         self.log(f"kiosk: session {folder.name} written: {summary['bodies']} bodies, {summary['events']} events, "
                  f"{', '.join(summary['files'])}")  # type: ignore[arg-type]
