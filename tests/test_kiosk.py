@@ -16,6 +16,7 @@ from physink_tui.cli import main
 from physink_tui.formats.journal.entries import HidEntry, JournalDevice
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.project.files import load_project
+from physink_tui.input.captures.capture import Capture
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.virtual_pen import Stroke
 from physink_tui.kiosk.controls import HOLD, PASS, PRESS, ControlFilter
@@ -208,3 +209,87 @@ def test_a_zones_file_gives_the_pad_buttons_other_actions(tmp_path: Path) -> Non
     assert zones.pad_action(2) == "clear" and zones.pad_action(1) is None
     with pytest.raises(HotZoneError, match=r"pad\['1'\] is 'fly'"):
         parse_zones('{"zones": [{"action": "end", "x0": 0, "y0": 0, "x1": 1, "y1": 1}], "pad": {"1": "fly"}}', "z")
+
+
+def test_a_disk_that_fills_mid_session_stops_the_journal_with_a_clear_line_and_keeps_what_was_written(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    import errno
+
+    from physink_tui.formats.journal import writer
+
+    real_write, calls = writer._write, [0]
+
+    def filling(fd: int, data: bytes, start: int) -> int:
+        calls[0] += 1
+        if calls[0] > 400:  # the header and a few hundred reports fit, then the disk is full
+            raise OSError(errno.ENOSPC, "No space left on device")
+        return real_write(fd, data, start)
+
+    monkeypatch.setattr(writer, "_write", filling)
+    capture = write_capture(visits(ball_and_platform()), tmp_path / "visits.hid")
+    out = tmp_path / "out"
+    assert kiosk(out, capture) == 0
+    log = capsys.readouterr().out
+    assert "recording stopped for session" in log and "No space left on device" in log
+    (folder,) = SessionStore(out).sessions()
+    journal = read_journal(folder / JOURNAL)
+    assert journal.truncated is None and not journal.warnings and 300 < len(journal.entries) < 400
+    assert (folder / SUMMARY).exists()  # what was journaled is still finished into outputs
+
+
+class _Unplugging:
+    """A tablet that sends one visitor's first strokes, is unplugged (its reader ends with an error), then is
+    plugged back and sends the rest — as `ReconnectingSource` passes such a device on."""
+
+    def __init__(self, capture, cut: int) -> None:
+        from physink_tui.input.scripted_sources import CaptureReplaySource
+
+        self.device_id = "tablet0"
+        self._parts = (Capture(capture.devices, capture.events[:cut]), Capture(capture.devices, capture.events[cut:]))
+        self._sources = [CaptureReplaySource(part, realtime=True, speed=20.0) for part in self._parts]
+
+    def start(self, out) -> None:
+        import queue as queue_module
+        import threading
+
+        from physink_tui.errors import DeviceError
+        from physink_tui.input.sources import SourceEnded
+
+        def run() -> None:
+            for k, source in enumerate(self._sources):
+                items: queue_module.Queue = queue_module.Queue()
+                source.start(items)
+                while not isinstance(item := items.get(), SourceEnded):
+                    out.put(item)
+                source.stop()
+                if k == 0:
+                    out.put(SourceEnded(item.t, self.device_id, DeviceError("tablet0: the device went away")))
+            out.put(SourceEnded(0.0, self.device_id, None))
+
+        threading.Thread(target=run, daemon=True).start()
+
+    def stop(self) -> None:
+        for source in self._sources:
+            source.stop()
+
+
+def test_an_unplugged_tablet_pauses_the_session_and_plugging_it_back_resumes_it(tmp_path: Path) -> None:
+    import time
+
+    from physink_tui.input.journal_compose import header_for_capture
+    from physink_tui.kiosk.service import Kiosk, KioskSettings
+    from physink_tui.render.export import Look
+
+    capture = visits(ball_and_platform())
+    cut = len(capture.events) // 3
+    lines: list[str] = []
+    out = tmp_path / "out"
+    k = Kiosk(SessionStore(out), default_zones(), KioskSettings(look=Look(160, 100, 10)), lines.append)
+    d = capture.devices[0]
+    device = JournalDevice("tablet0", d.name, d.bus, d.vid, d.pid, d.descriptor)
+    start = time.monotonic()
+    assert k.run(_Unplugging(capture, cut), device, header_for_capture(Capture((d,), ())), replay=True,
+                 clock=lambda: (time.monotonic() - start) * 20.0) == 0
+    assert any("went away" in line for line in lines)
+    (record,) = index(out)  # one session across the unplugging
+    assert record["ended"] == "end zone" and record["bodies"] == 2
