@@ -20,7 +20,7 @@ from physink_tui.input.captures.capture import Capture
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.virtual_pen import Stroke
 from physink_tui.kiosk.controls import HOLD, PASS, PRESS, ControlFilter
-from physink_tui.kiosk.finalise import JOURNAL, SUMMARY
+from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
 from physink_tui.kiosk.hot_zones import HotZoneError, default_zones, parse_zones
 from physink_tui.kiosk.store import SessionStore, parse_size
 
@@ -113,9 +113,9 @@ def test_each_visitor_becomes_a_session_with_every_output_and_its_journal_replay
 
 def test_a_visitor_who_walks_away_is_ended_by_the_idle_time_and_the_next_one_gets_a_new_session(
         tmp_path: Path) -> None:
-    capture = write_capture(visits(box_then_undo(), ball_and_platform(), pause_s=6.0), tmp_path / "visits.hid")
+    capture = write_capture(visits(box_then_undo(), ball_and_platform(), pause_s=10.0), tmp_path / "visits.hid")
     out = tmp_path / "out"
-    assert kiosk(out, capture, "--idle", "2") == 0
+    assert kiosk(out, capture, "--idle", "2", speed=5.0) == 0  # 1.6 s of wall time between the idle end and B
     assert [r["ended"] for r in index(out)] == ["idle", "end zone"]
 
 

@@ -23,7 +23,7 @@ from kiosk.captures import ball_and_platform, box_then_undo, visits, write_captu
 
 from physink_tui.formats.journal.entries import HidEntry
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.kiosk.finalise import JOURNAL, OUTPUTS, SUMMARY
+from physink_tui.kiosk.folder_files import JOURNAL, OUTPUTS, SUMMARY
 
 PHYSINK = [sys.executable, "-m", "physink_tui"]
 SPEED = 0.25

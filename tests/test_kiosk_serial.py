@@ -16,7 +16,7 @@ from physink_tui.formats.journal.reader import read_journal
 from physink_tui.input.pen.mapping import TabletMapping, mapping_to_header
 from physink_tui.input.serial_tablets.isdv4 import encode_pen_packet
 from physink_tui.input.serial_tablets.reader import SerialPenSource
-from physink_tui.kiosk.finalise import JOURNAL
+from physink_tui.kiosk.folder_files import JOURNAL
 from physink_tui.kiosk.hot_zones import default_zones
 from physink_tui.kiosk.service import Kiosk, KioskSettings
 from physink_tui.kiosk.store import SessionStore

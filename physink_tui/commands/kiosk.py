@@ -12,8 +12,10 @@ from __future__ import annotations
 import argparse
 import signal
 import sys
+import threading
 import time
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from physink_tui.errors import DeviceError, PhysinkError
 from physink_tui.formats.journal.entries import JournalDevice, JournalHeader
@@ -28,9 +30,10 @@ from physink_tui.input.scripted_sources import CaptureReplaySource
 from physink_tui.input.serial_tablets.reader import SerialPenSource
 from physink_tui.input.sources import PenSource
 from physink_tui.kiosk.hot_zones import HotZones, read_zones
-from physink_tui.kiosk.service import Kiosk, KioskSettings
 from physink_tui.kiosk.store import SessionStore, parse_size
-from physink_tui.render.export import Look
+
+if TYPE_CHECKING:
+    from physink_tui.kiosk.service import Kiosk
 
 CANVAS = (1600.0, 1000.0)
 DEVICE_ID = "tablet0"
@@ -121,6 +124,11 @@ def _serial_source(port: str, zones: HotZones, kiosk: Kiosk) -> tuple[PenSource,
 
 
 def run(args: argparse.Namespace) -> int:
+    stop = threading.Event()  # SIGTERM from the first moment: the service's libraries take a while to load
+    signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    from physink_tui.kiosk.service import Kiosk, KioskSettings
+    from physink_tui.render.export import Look
+
     zones = read_zones(args.hot_zones)
     max_bytes = None
     if args.max_disk is not None:
@@ -130,8 +138,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"physink kiosk: --max-disk: {exc}", file=sys.stderr)
             return 2
     settings = KioskSettings(args.idle, args.keep, max_bytes, Look(*args.video_size, 30))
-    kiosk = Kiosk(SessionStore(args.out), zones, settings, log)
-    signal.signal(signal.SIGTERM, lambda *_: kiosk.stop())
+    kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
     try:
         if args.replay is not None:

@@ -24,19 +24,11 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.outputs import OutputFolder
 from physink_tui.formats.session_outputs import write_session_outputs
+from physink_tui.kiosk.folder_files import JOURNAL, NARRATION, OUTPUTS, SUMMARY, VIDEO
 from physink_tui.render.export import Export, Look
 from physink_tui.scene.components import Body
 from physink_tui.session.session import Session
 from physink_tui.timeline.events import Timeline, event_label
-
-JOURNAL = "journal.physink.jsonl"
-"""The session's journal in its folder (written from the session's first input)."""
-SUMMARY = "session.json"
-"""Written last: its presence says the folder is complete."""
-NARRATION = "narration.txt"
-VIDEO = "video.mp4"
-OUTPUTS = ("project.json", "timeline.json", "timeline.txt", NARRATION, VIDEO, SUMMARY)
-"""Every file a finished session folder has besides the journal (no timeline files without a demonstration)."""
 
 
 @dataclass(frozen=True, slots=True)

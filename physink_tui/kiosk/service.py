@@ -40,7 +40,8 @@ from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.sources import PenSource, SourceEnded
 from physink_tui.kiosk.controls import PASS, PRESS, ControlFilter
-from physink_tui.kiosk.finalise import JOURNAL, SUMMARY, Ending, child_command, finalise_journal
+from physink_tui.kiosk.finalise import Ending, child_command, finalise_journal
+from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
 from physink_tui.kiosk.hot_zones import HotZones
 from physink_tui.kiosk.store import SessionStore
 from physink_tui.render.export import Look
@@ -91,10 +92,11 @@ class Kiosk:
         zones: the hot zones (their drawing area is in ``header``'s mapping already).
         settings: idle time, retiring, video look.
         log: where status lines go.
+        stop: set it to end the run (what `stop` does), e.g. from a signal handler installed before the kiosk.
     """
 
     def __init__(self, store: SessionStore, zones: HotZones, settings: KioskSettings,
-                 log: Callable[[str], None]) -> None:
+                 log: Callable[[str], None], stop: threading.Event | None = None) -> None:
         self.store = store
         self.zones = zones
         self.settings = settings
@@ -106,7 +108,7 @@ class Kiosk:
         self._last_input = 0.0
         self._end_asked: str | None = None  # why the current session should end (its zone)
         self._source_ended = threading.Event()
-        self._stop = threading.Event()
+        self._stop = stop or threading.Event()
         self._finishing: queue.Queue[tuple[Path, Ending] | None] = queue.Queue()
         self._finaliser = threading.Thread(target=self._finalise_queue, name="kiosk-finalise", daemon=True)
         self._full_disk_told = False

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.outputs import reason
-from physink_tui.kiosk.finalise import JOURNAL, SUMMARY
+from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
 
 INDEX = "index.jsonl"
 
