@@ -101,12 +101,12 @@ class Kiosk:
         self.zones = zones
         self.settings = settings
         self.log = log
-        self._lock = threading.Lock()  # guards _live, _last_input and the flags the source thread sets
+        self._lock = threading.Lock()  # guards _live, _closing, _last_input
         self._live: _Live | None = None
         self._clock: Callable[[], float] = time.monotonic
         self._mapping: TabletMapping | None = None
         self._last_input = 0.0
-        self._end_asked: str | None = None  # why the current session should end (its zone)
+        self._closing: list[tuple[_Live, str]] = []  # sessions their end button closed, for the main thread to stop
         self._source_ended = threading.Event()
         self._stop = stop or threading.Event()
         self._finishing: queue.Queue[tuple[Path, Ending] | None] = queue.Queue()
@@ -168,22 +168,29 @@ class Kiosk:
 
     def _watch(self) -> None:
         with self._lock:
-            live, asked, idle = self._live, self._end_asked, self._clock() - self._last_input
+            live, closing, idle = self._live, self._closing, self._clock() - self._last_input
+            self._closing = []
+        for ended, why in closing:
+            self._close(ended, why)
         if live is None:
             return
         if live.writer.stopped is not None and not live.told_stopped:
             live.told_stopped = True
             self.log(f"kiosk: recording stopped for session {live.folder.name}: {live.writer.stopped}")
-        if asked is not None:
-            self._end(asked)
-        elif idle > self.settings.idle_s:
+        if idle > self.settings.idle_s:
             self._end("idle")
 
     def _end(self, why: str) -> None:
+        """End the session being recorded, and any the end button closed meanwhile."""
         with self._lock:
-            live, self._live, self._end_asked = self._live, None, None
-        if live is None:
-            return
+            live, self._live, closing, self._closing = self._live, None, self._closing, []
+        for ended, reason in closing:
+            self._close(ended, reason)
+        if live is not None:
+            self._close(live, why)
+
+    def _close(self, live: _Live, why: str) -> None:
+        """Stop a session's runner (its journal gets its end) and queue it for finalising."""
         try:
             live.runner.stop()
         except Exception as exc:  # a bug in the session: its journal is closed; the recovery path finalises it
@@ -228,8 +235,9 @@ class Kiosk:
     def _press(self, live: _Live | None, action: str, ending: str) -> None:
         if live is None:
             return  # a button before the first touch: there is no session to act on
-        if action == "end":
-            self._end_asked = ending
+        if action == "end":  # detached at once: what the tablet sends next belongs to the next session
+            self._closing.append((live, ending))
+            self._live = None
             return
         if action == "mode":
             action = "demo" if live.mode == "sketch" else "sketch"
