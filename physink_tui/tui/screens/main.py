@@ -12,10 +12,11 @@ import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 from textual import events, work
 from textual.app import ComposeResult
-from textual.binding import Binding
+from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
 from textual.message import Message
 from textual.screen import Screen
@@ -56,7 +57,7 @@ class DeviceStatus(Message):
 class MainScreen(Screen[None]):
     """The control panel."""
 
-    BINDINGS = [
+    BINDINGS: ClassVar[list[BindingType]] = [
         Binding("s", "sketch", "sketch mode"),
         Binding("d", "demo", "demo mode (record a demonstration)"),
         Binding("space,p", "play_pause", "play / pause the demonstration"),

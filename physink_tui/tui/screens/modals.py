@@ -5,9 +5,10 @@ text; each returns what the user chose through ``dismiss`` and decides nothing e
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import ClassVar
 
 from textual.app import ComposeResult
-from textual.binding import Binding
+from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Button, Input, Label, Static
@@ -16,7 +17,7 @@ from textual.widgets import Button, Input, Label, Static
 class HelpScreen(ModalScreen[None]):
     """Every key binding of the control panel, with what it does."""
 
-    BINDINGS = [Binding("escape,q,question_mark,f1", "dismiss", "close")]
+    BINDINGS: ClassVar[list[BindingType]] = [Binding("escape,q,question_mark,f1", "dismiss", "close")]
 
     def __init__(self, bindings: Iterable[tuple[str, str]]) -> None:
         super().__init__()
@@ -39,7 +40,7 @@ class HelpScreen(ModalScreen[None]):
 class ErrorModal(ModalScreen[None]):
     """A `PhysinkError` (or any failure a user caused), in words; the work is kept."""
 
-    BINDINGS = [Binding("escape,enter", "dismiss", "close")]
+    BINDINGS: ClassVar[list[BindingType]] = [Binding("escape,enter", "dismiss", "close")]
 
     def __init__(self, title: str, message: str) -> None:
         super().__init__()
@@ -62,7 +63,8 @@ class ErrorModal(ModalScreen[None]):
 class ConfirmModal(ModalScreen[bool]):
     """A yes/no question."""
 
-    BINDINGS = [Binding("escape,n", "answer(False)", "no"), Binding("y", "answer(True)", "yes")]
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("escape,n", "answer(False)", "no"), Binding("y", "answer(True)", "yes")]
 
     def __init__(self, question: str, yes: str = "Yes", no: str = "No") -> None:
         super().__init__()
@@ -85,7 +87,7 @@ class ConfirmModal(ModalScreen[bool]):
 class PromptModal(ModalScreen[str | None]):
     """One line of text (a label, a file name); None when cancelled."""
 
-    BINDINGS = [Binding("escape", "cancel", "cancel")]
+    BINDINGS: ClassVar[list[BindingType]] = [Binding("escape", "cancel", "cancel")]
 
     def __init__(self, question: str, value: str = "", placeholder: str = "") -> None:
         super().__init__()
@@ -107,7 +109,7 @@ class PromptModal(ModalScreen[str | None]):
 class TextScreen(ModalScreen[None]):
     """A text to read (the timeline as the thesis narrates it)."""
 
-    BINDINGS = [Binding("escape,q,t", "dismiss", "close")]
+    BINDINGS: ClassVar[list[BindingType]] = [Binding("escape,q,t", "dismiss", "close")]
 
     def __init__(self, title: str, text: str) -> None:
         super().__init__()

@@ -29,7 +29,7 @@ class TimelineTree(Tree[float]):
     def __init__(self, **kwargs) -> None:
         super().__init__("Timeline", **kwargs)
         self.show_root = False
-        self._timeline: Timeline | None | bool = False  # False: nothing shown yet
+        self._timeline: Timeline | bool | None = False  # False: nothing shown yet
         self._names: dict[str, str] = {}
         self.guide_depth = 2
 
