@@ -138,6 +138,8 @@ class PhysinkApp(App[None]):
         self.main.attach(live, path)
         if options.tablet:
             self.main.watch_tablet(options.device, options.serial)
+        else:
+            self.main.query_one("#status").set(device="no tablet (mouse only)")
         if options.project:
             self.main.open_project(options.project)
         if options.entries:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, replace
 
+import numpy as np
 from textual import events
 from textual.message import Message
 from textual.strip import Strip
@@ -24,6 +25,9 @@ from physink_tui.tui.halfblocks import HalfBlocks
 
 PRESSURE = 0.6
 """The pressure a mouse button stands for."""
+SUPERSAMPLE = 2
+"""The renderer draws this many pixels across each half-block pixel (each way), averaged: thin lines and labels
+(the renderer's smallest text is 9 pixels) stay in proportion at a terminal's few pixels."""
 
 
 class SceneView(Widget, can_focus=True):
@@ -65,7 +69,7 @@ class SceneView(Widget, can_focus=True):
         self._draw()
 
     def on_resize(self, event: events.Resize) -> None:
-        width, height = event.size.width, event.size.height * 2
+        width, height = event.size.width * SUPERSAMPLE, event.size.height * 2 * SUPERSAMPLE
         if width >= MIN_SIZE and height >= MIN_SIZE:
             self._renderer = Renderer(width, height, self.canvas, self.theme_name, controls=False)
         else:
@@ -86,6 +90,9 @@ class SceneView(Widget, can_focus=True):
             pixels = renderer.render(content)
         except RenderError:  # a project of another canvas: shown as text by the status bar
             return
+        if SUPERSAMPLE > 1:
+            h, w = pixels.shape[0] // SUPERSAMPLE, pixels.shape[1] // SUPERSAMPLE
+            pixels = pixels.reshape(h, SUPERSAMPLE, w, SUPERSAMPLE, 4).mean(axis=(1, 3)).astype(np.uint8)
         self._strips = self._blocks.strips(pixels)
         self.frames_drawn += 1
         self.draw_seconds.append(time.perf_counter() - start)
@@ -115,7 +122,7 @@ class SceneView(Widget, can_focus=True):
         if renderer is None:
             return None
         left, top, width, height = renderer.box
-        return (x - left) / width, (y * 2 - top) / height
+        return (x * SUPERSAMPLE - left) / width, (y * 2 * SUPERSAMPLE - top) / height
 
     @staticmethod
     def _point(event: events.MouseEvent) -> tuple[float, float]:
