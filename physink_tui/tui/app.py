@@ -28,6 +28,7 @@ class TuiOptions:
 
     Attributes:
         header, entries: a recorded session to replay into the live one (``--replay``, the demo), or None.
+        prior: entries of ``header``'s session handled at once before the live session starts (tests, pictures).
         speed: replay speed (1: real time).
         project: a project file to open at the start (``physink tui PROJECT``), also the default for Save.
         device, serial: the tablet (``--device``, ``--serial``); ``tablet=False`` looks for none (tests).
@@ -39,6 +40,7 @@ class TuiOptions:
 
     header: JournalHeader | None = None
     entries: tuple[JournalEntry, ...] = ()
+    prior: tuple[JournalEntry, ...] = ()
     speed: float = 1.0
     project: str | None = None
     device: str | None = None
@@ -119,7 +121,7 @@ class PhysinkApp(App[None]):
         if options.journal:
             path = storage.new_journal_path(options.journal_dir)
         try:
-            live = LiveSession(header, journal_path=path, prior=prior, max_fps=options.max_fps,
+            live = LiveSession(header, journal_path=path, prior=prior or options.prior, max_fps=options.max_fps,
                                on_error=lambda exc: self.post_message(RunnerFailed(exc)))
         except PhysinkError as exc:
             self.push_screen(ErrorModal("Cannot start the session", str(exc)))
