@@ -149,8 +149,8 @@ class MainScreen(Screen[None]):
             self._command("mode", "demo")
         self._command("seek", round(message.t, 6))
 
-    def on_controls_action(self, message: Controls.Action) -> None:
-        self.run_action(message.name)
+    async def on_controls_action(self, message: Controls.Action) -> None:
+        await self.run_action(message.name)
 
     def on_resize(self, event: events.Resize) -> None:
         small = event.size.width < MIN_WIDTH or event.size.height < MIN_HEIGHT

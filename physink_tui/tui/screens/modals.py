@@ -21,10 +21,10 @@ class HelpScreen(ModalScreen[None]):
 
     def __init__(self, bindings: Iterable[tuple[str, str]]) -> None:
         super().__init__()
-        self._bindings = list(bindings)
+        self._keys = list(bindings)
 
     def compose(self) -> ComposeResult:
-        lines = [f"  {keys:<16} {what}" for keys, what in self._bindings]
+        lines = [f"  {keys:<16} {what}" for keys, what in self._keys]
         mouse = ["", "  mouse in the scene: left button draws (hold still to dwell, then drag to move a body),",
                  "  right button erases; in demo mode dragging a body demonstrates its movement.",
                  "  timeline: choose an event to play back from it.", "", "  escape closes this help"]
