@@ -45,12 +45,21 @@ class TimelineTree(Tree[float]):
             return
         events = {ev.id: ev for ev in timeline.events}
         nodes = {}
-        for ev in sorted(timeline.events, key=lambda e: (e.t0, e.id)):
-            parent = nodes.get(ev.causes[0]) if ev.causes else None
-            where = parent if parent is not None else self.root
-            node = where.add(self._label(ev, events, names), data=ev.t0, expand=True, allow_expand=True)
-            node.allow_expand = False
-            nodes[ev.id] = node
+        waiting = sorted(timeline.events, key=lambda e: (e.t0, e.id))
+        while waiting:  # parents first: an event waits until its first cause has a node
+            later = []
+            for ev in waiting:
+                cause = ev.causes[0] if ev.causes and ev.causes[0] in events else None
+                if cause is not None and cause not in nodes:
+                    later.append(ev)
+                    continue
+                where = nodes[cause] if cause is not None else self.root
+                nodes[ev.id] = where.add(self._label(ev, events, names), data=ev.t0, expand=True)
+            if len(later) == len(waiting):  # a cycle (never in a valid timeline): show the rest at the root
+                for ev in later:
+                    nodes[ev.id] = self.root.add(self._label(ev, events, names), data=ev.t0, expand=True)
+                later = []
+            waiting = later
         for node in nodes.values():
             node.allow_expand = bool(node.children)
 
