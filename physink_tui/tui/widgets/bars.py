@@ -71,9 +71,9 @@ class StatusBar(Static):
                 mode += f" {view.clock:5.2f}/{view.duration:.2f} s {state}"
             parts.append(mode)
             parts.append(f"{len(view.scene.components)} parts")
+        if self.activity:
+            parts.append(self.activity)
         parts += [self.pen, self.device]
         if self.journal:
             parts.append(self.journal)
-        if self.activity:
-            parts.append(self.activity)
         self.update("  │  ".join(parts))
