@@ -37,7 +37,7 @@ def test_half_blocks_put_two_pixels_in_a_cell_and_merge_runs() -> None:
 def test_an_odd_last_row_pairs_with_black() -> None:
     rgba = np.full((3, 2, 4), 200, dtype=np.uint8)
     strips = HalfBlocks().strips(rgba)
-    assert len(strips) == 2 and list(strips[1])[0].style.bgcolor.triplet == (0, 0, 0)
+    assert len(strips) == 2 and next(iter(strips[1])).style.bgcolor.triplet == (0, 0, 0)
 
 
 def test_journals_go_to_the_xdg_data_folder(monkeypatch, tmp_path) -> None:

@@ -3,6 +3,7 @@ session, and drawing with the mouse in canvas fractions."""
 
 from __future__ import annotations
 
+import itertools
 import math
 import time
 from collections.abc import Callable, Sequence
@@ -77,7 +78,7 @@ def x_cells(app: PhysinkApp, x: float, y: float, steps: int = 3) -> tuple[list[t
 def box_points(x0: float, y0: float, x1: float, y1: float, n: int = 12) -> list[tuple[float, float]]:
     corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)]
     out = []
-    for (ax, ay), (bx, by) in zip(corners, corners[1:], strict=False):
+    for (ax, ay), (bx, by) in itertools.pairwise(corners):
         out += [(ax + (bx - ax) * k / n, ay + (by - ay) * k / n) for k in range(n)]
     return [*out, corners[-1]]
 
