@@ -50,7 +50,7 @@ class TuiOptions:
     journal_dir: Path | None = None
     recover: bool = True
     theme: str = "dark"
-    max_fps: float = 30.0
+    max_fps: float = 60.0
     title: str = "PhysInk"
     notes: list[str] = field(default_factory=list)
 

@@ -18,6 +18,7 @@ from textual import events, work
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
+from textual.css.query import NoMatches
 from textual.message import Message
 from textual.screen import Screen
 from textual.widgets import Static
@@ -122,7 +123,11 @@ class MainScreen(Screen[None]):
 
     def show(self, view: SessionView) -> None:
         self.view = view
-        self.query_one(SceneView).show(view)
+        try:
+            scene = self.query_one(SceneView)
+        except NoMatches:  # a view arriving while the app closes
+            return
+        scene.show(view)
         self.query_one(TimelineTree).show(view)
         self.query_one(NarrationBar).show(view, self.canvas)
         status = self.query_one(StatusBar)
