@@ -236,3 +236,18 @@ def test_quitting_with_unsaved_work_asks(tmp_path) -> None:
             await pilot.pause(0.2)
             assert app.live.stopped
     run(go())
+
+
+def test_clicking_the_time_slider_seeks(tmp_path, egg) -> None:
+    header, entries = egg
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=entries)
+        async with app.run_test(size=SIZE) as pilot:
+            view = await until(pilot, lambda v: v.timeline is not None and v.duration > 1)
+            slider = app.main.query_one("#slider")
+            width = slider._bar_width()
+            await pilot.click("#slider", offset=((width - 1) // 2, 0))
+            want = round(((width - 1) // 2) / (width - 1) * view.duration, 6)
+            await until(pilot, lambda v: v.mode == "demo" and math.isclose(v.clock, want, abs_tol=1e-5))
+    run(go())

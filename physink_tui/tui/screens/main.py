@@ -36,6 +36,7 @@ from physink_tui.tui.tablet import TabletWatch
 from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
 from physink_tui.tui.widgets.controls import Controls
 from physink_tui.tui.widgets.scene_view import PRESSURE, SceneView
+from physink_tui.tui.widgets.time_slider import TimeSlider
 from physink_tui.tui.widgets.timeline_tree import TimelineTree
 
 MIN_WIDTH, MIN_HEIGHT = 60, 16
@@ -94,6 +95,7 @@ class MainScreen(Screen[None]):
             with Horizontal(id="top"):
                 yield SceneView(self.canvas, self.theme_name, id="scene")
                 yield TimelineTree(id="timeline")
+            yield TimeSlider(id="slider")
             yield NarrationBar(id="narration")
             yield Controls(id="controls")
             yield StatusBar(id="status")
@@ -129,6 +131,7 @@ class MainScreen(Screen[None]):
             return
         scene.show(view)
         self.query_one(TimelineTree).show(view)
+        self.query_one(TimeSlider).show(view)
         self.query_one(NarrationBar).show(view, self.canvas)
         status = self.query_one(StatusBar)
         pen = next((f"pen {state} {p:.2f}" for state, p in view.pens.values() if state != "out of range"), None)
@@ -150,9 +153,15 @@ class MainScreen(Screen[None]):
                                  in_range=message.in_range, eraser=message.eraser)
 
     def on_timeline_tree_seek(self, message: TimelineTree.Seek) -> None:
+        self._seek(message.t)
+
+    def on_time_slider_seek(self, message: TimeSlider.Seek) -> None:
+        self._seek(message.t)
+
+    def _seek(self, t: float) -> None:
         if self.view is not None and self.view.mode != "demo":
             self._command("mode", "demo")
-        self._command("seek", round(message.t, 6))
+        self._command("seek", round(t, 6))
 
     async def on_controls_action(self, message: Controls.Action) -> None:
         await self.run_action(message.name)
