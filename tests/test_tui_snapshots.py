@@ -7,14 +7,20 @@ on every run (no tablet, no journal file named in the status bar).
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from physink_tui.commands.demo import demo_journal
 from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.tui.app import TuiOptions, make_app
 from tests.tui_helpers import SIZE, until
 
+NO_SETTINGS = Path("/nonexistent/physink/config.json")
+"""The default settings, whatever the user's own are."""
+
 
 def app_with(prior=(), header=None):
-    return make_app(TuiOptions(header=header, prior=tuple(prior), tablet=False, journal=False, recover=False))
+    return make_app(TuiOptions(header=header, prior=tuple(prior), tablet=False, journal=False, recover=False,
+                               config_path=NO_SETTINGS))
 
 
 def waiting_for(predicate, *keys):

@@ -18,7 +18,8 @@ SIZE = (120, 40)
 
 def tui_app(folder: Path, **options) -> PhysinkApp:
     """An app journaling into ``folder``/sessions, looking for no tablet, offering no recovery unless asked."""
-    values = {"tablet": False, "journal_dir": folder / "sessions", "recover": False, **options}
+    values = {"tablet": False, "journal_dir": folder / "sessions", "recover": False,
+              "config_path": folder / "config" / "config.json", **options}
     return make_app(TuiOptions(**values))
 
 

@@ -17,7 +17,8 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry, JournalHeader
 from physink_tui.session.view import SessionView
 from physink_tui.tui import storage
-from physink_tui.tui.live import LiveSession, default_header
+from physink_tui.tui.config import Config, load_config, save_config
+from physink_tui.tui.live import LiveSession
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
 
@@ -34,7 +35,8 @@ class TuiOptions:
         device, serial: the tablet (``--device``, ``--serial``); ``tablet=False`` looks for none (tests).
         journal_dir: where the session journals (default: the XDG data folder); None with ``journal=False``.
         recover: offer to recover an unfinished session found there.
-        theme: the scene's ``light`` or ``dark`` theme.
+        theme: the scene's ``light`` or ``dark`` theme (default: the settings').
+        config_path: the settings file (default: ``$XDG_CONFIG_HOME/physink/config.json``).
         max_fps: scene redraws a second at most.
     """
 
@@ -49,7 +51,8 @@ class TuiOptions:
     journal: bool = True
     journal_dir: Path | None = None
     recover: bool = True
-    theme: str = "dark"
+    theme: str | None = None
+    config_path: Path | None = None
     max_fps: float = 60.0
     title: str = "PhysInk"
     notes: list[str] = field(default_factory=list)
@@ -84,6 +87,8 @@ class PhysinkApp(App[None]):
     def __init__(self, options: TuiOptions | None = None) -> None:
         super().__init__()
         self.options = options or TuiOptions()
+        self.config = Config()
+        """The settings (`physink_tui.tui.config`), read on mount."""
         self.live: LiveSession | None = None
         self.main: MainScreen | None = None
         self.saved_document: tuple[object, object] | None = None
@@ -92,9 +97,16 @@ class PhysinkApp(App[None]):
     # -- start -----------------------------------------------------------------------------------------------
 
     async def on_mount(self) -> None:
-        header = self.options.header or default_header()
-        self.main = MainScreen((header.canvas_width, header.canvas_height), self.options.theme)
+        problem = None
+        try:
+            self.config = load_config(self.options.config_path)
+        except PhysinkError as exc:
+            problem = str(exc)
+        header = self.options.header or self.config.header()
+        self.main = MainScreen((header.canvas_width, header.canvas_height), self.options.theme or self.config.theme)
         await self.push_screen(self.main)
+        if problem is not None:
+            self.push_screen(ErrorModal("Settings not read (the defaults are used)", problem))
         found = []
         if self.options.journal and self.options.recover and self.options.header is None:
             found = storage.unfinished_journals(self.options.journal_dir or storage.sessions_dir())
@@ -116,7 +128,7 @@ class PhysinkApp(App[None]):
 
     def _start(self, recovered_header: JournalHeader | None, prior: tuple[JournalEntry, ...]) -> None:
         options = self.options
-        header = recovered_header or options.header or default_header()
+        header = recovered_header or options.header or self.config.header()
         path = None
         if options.journal:
             path = storage.new_journal_path(options.journal_dir)
@@ -171,6 +183,20 @@ class PhysinkApp(App[None]):
 
     def mark_saved(self, view: SessionView) -> None:
         self.saved_document = (view.scene, view.timeline)
+
+    def adopt_settings(self, config: Config | None) -> None:
+        """Save ``config`` (from the settings screen) and apply its theme; None changes nothing."""
+        if config is None:
+            return
+        try:
+            path = save_config(config, self.options.config_path)
+        except PhysinkError as exc:
+            self.push_screen(ErrorModal("Settings not saved", str(exc)))
+            return
+        self.config = config
+        if self.main is not None:
+            self.main.set_theme(config.theme)
+        self.notify(f"settings saved to {path}; the mapping and tip thresholds apply from the next session")
 
     # -- the end ---------------------------------------------------------------------------------------------
 

@@ -32,6 +32,7 @@ from physink_tui.timeline.narrate import timeline_text
 from physink_tui.tui import storage
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
+from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
 from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
 from physink_tui.tui.widgets.controls import Controls
@@ -76,6 +77,7 @@ class MainScreen(Screen[None]):
         Binding("g", "simulate", "simulate (search a physical simulation)"),
         Binding("e", "export", "export the demonstration as a video"),
         Binding("escape", "cancel", "cancel the export"),
+        Binding("f2", "settings", "settings: tablet mapping, tip thresholds, theme"),
         Binding("question_mark,f1", "help", "this help"),
         Binding("q,ctrl+q", "app.quit", "quit (asks when there is unsaved work)"),
     ]
@@ -230,6 +232,13 @@ class MainScreen(Screen[None]):
         if entry is not None:
             self._simulating = entry
             self.query_one(StatusBar).set(activity="simulating… (the session resumes when the search ends)")
+
+    def action_settings(self) -> None:
+        self.app.push_screen(SettingsScreen(self.app.config), self.app.adopt_settings)  # type: ignore[attr-defined]
+
+    def set_theme(self, theme: str) -> None:
+        self.theme_name = theme
+        self.query_one(SceneView).set_theme(theme)
 
     def action_help(self) -> None:
         self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),

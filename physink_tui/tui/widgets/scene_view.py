@@ -68,13 +68,23 @@ class SceneView(Widget, can_focus=True):
         self.view = view
         self._draw()
 
+    def set_theme(self, theme: str) -> None:
+        """Draw in ``theme`` (``dark`` or ``light``) from now on."""
+        self.theme_name = theme
+        self._renderer = None
+        self._make_renderer(self.size.width, self.size.height)
+        self._draw()
+
     def on_resize(self, event: events.Resize) -> None:
-        width, height = event.size.width * SUPERSAMPLE, event.size.height * 2 * SUPERSAMPLE
+        self._make_renderer(event.size.width, event.size.height)
+        self._draw()
+
+    def _make_renderer(self, columns: int, rows: int) -> None:
+        width, height = columns * SUPERSAMPLE, rows * 2 * SUPERSAMPLE
         if width >= MIN_SIZE and height >= MIN_SIZE:
             self._renderer = Renderer(width, height, self.canvas, self.theme_name, controls=False)
         else:
             self._renderer = None
-        self._draw()
 
     def _draw(self) -> None:
         renderer, view = self._renderer, self.view
