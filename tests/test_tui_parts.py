@@ -101,15 +101,22 @@ class _FakeReader:
             self._out.put(SourceEnded(0.0, self.device_id, None))
             self._out = None
 
+    def unplug(self) -> None:
+        out, self._out = self._out, None
+        out.put(SourceEnded(0.0, self.device_id, DeviceError("the tablet went away")))
+
 
 def test_the_tablet_watch_says_when_there_is_none_and_picks_one_up_when_plugged_in() -> None:
     plugged = threading.Event()
     submitted, statuses = [], []
 
+    readers: list[_FakeReader] = []
+
     def opener(spec, device_id):
         if not plugged.is_set():
             raise DeviceError("no pen tablet found")
-        return _FakeReader(device_id)
+        readers.append(_FakeReader(device_id))
+        return readers[-1]
 
     watch = TabletWatch(submitted.append, statuses.append, opener=opener, scan_s=0.05)
     watch.start()
@@ -120,7 +127,12 @@ def test_the_tablet_watch_says_when_there_is_none_and_picks_one_up_when_plugged_
     plugged.set()
     while not any(isinstance(e, HidEntry) for e in submitted) and time.monotonic() < deadline:
         time.sleep(0.01)
+    readers[0].unplug()  # mid-stroke: the stroke ends (the pump lifts the pen), the status says so; it comes back
+    while sum(isinstance(e, DeviceEntry) for e in submitted) < 2 and time.monotonic() < deadline:
+        time.sleep(0.01)
     watch.stop()
+    assert any("lost" in s for s in statuses) and statuses[-1] == "tablet: Fake Tablet"
+    assert sum(isinstance(e, DeviceEntry) for e in submitted) == 2  # announced again before its next report
     assert isinstance(submitted[0], DeviceEntry) and submitted[0].devices[0].id == DEVICE_ID
     assert submitted[0].devices[0].name == "Fake Tablet"
     assert any(isinstance(e, HidEntry) and e.dev == DEVICE_ID for e in submitted)
@@ -140,3 +152,16 @@ def test_the_tui_command_without_a_terminal_says_so(capsys) -> None:
 
     assert cli.main(["tui"]) == 1
     assert "needs a terminal" in capsys.readouterr().err
+
+
+def test_tui_replay_reads_a_journal_or_a_capture() -> None:
+    from pathlib import Path
+
+    from physink_tui.commands.tui import recorded
+
+    root = Path(__file__).resolve().parent
+    header, entries = recorded(str(root / "journals" / "egg_cracker.physink.jsonl"))
+    assert header.devices and any(isinstance(e, HidEntry) for e in entries)
+    header, entries = recorded(str(root / "recorded_hid" / "windows-ink-strokes.hid"))
+    assert (header.canvas_width, header.canvas_height) == (1600.0, 1000.0) and len(entries) > 100
+    assert all(isinstance(e, HidEntry) and e.dev == header.devices[0].id for e in entries)

@@ -13,6 +13,10 @@ from physink_tui.formats.journal.entries import JournalEntry, JournalHeader
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.journal_compose import capture_entries, header_for_capture
+from physink_tui.input.pen.mapping import TabletMapping
+
+CANVAS = (1600.0, 1000.0)
+"""The canvas a replayed capture is drawn on (a journal names its own)."""
 
 
 def recorded(path: str) -> tuple[JournalHeader, tuple[JournalEntry, ...]]:
@@ -20,7 +24,8 @@ def recorded(path: str) -> tuple[JournalHeader, tuple[JournalEntry, ...]]:
     data = read_bytes(path)
     if sniff(data, path, "tui --replay") == "capture":
         capture = Capture.from_text(data.removeprefix(BOM).decode("utf-8", errors="replace"), path=path)
-        return header_for_capture(capture), tuple(capture_entries(capture))
+        mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1])
+        return header_for_capture(capture, mapping), tuple(capture_entries(capture))
     with regular_copy(path, data) as copy:
         journal = read_journal(copy)
     return journal.header, journal.entries

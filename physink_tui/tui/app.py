@@ -148,7 +148,8 @@ class PhysinkApp(App[None]):
 
         live.runner.subscribe(publish)
         live.start()
-        assert self.main is not None
+        if self.main is None:  # never: on_mount made it
+            return
         self.main.attach(live, path)
         if options.tablet:
             self.main.watch_tablet(options.device, options.serial)

@@ -292,17 +292,15 @@ class MainScreen(Screen[None]):
         if view is None or view.timeline is None or not view.timeline.events:
             self.notify("nothing demonstrated to export yet", severity="warning")
             return
-        folder = storage.exports_dir()
-        self._export(view, folder)
+        self._export(view, storage.exports_dir(), self.query_one(StatusBar))
 
     @work(thread=True, exclusive=True, exit_on_error=False, group="export", description="export video")
-    def _export(self, view: SessionView, folder: Path) -> None:
+    def _export(self, view: SessionView, folder: Path, status: StatusBar) -> None:
         from textual.worker import get_current_worker
 
         from physink_tui.render.export import Export, Look
 
         worker = get_current_worker()
-        status = self.query_one(StatusBar)
         folder.mkdir(parents=True, exist_ok=True)
         path = storage.new_journal_path(folder).with_suffix("").with_suffix(".mp4")
 
