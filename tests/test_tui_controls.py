@@ -13,7 +13,8 @@ from physink_tui.scene.components import Body
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.widgets.controls import BUTTONS
-from tests.tui_helpers import SIZE, box_points, drag, tui_app, until
+from physink_tui.tui.widgets.scene_view import SceneView
+from tests.tui_helpers import SIZE, box_points, cell, circle_points, drag, tui_app, until
 
 
 @pytest.fixture(scope="module")
@@ -250,4 +251,24 @@ def test_clicking_the_time_slider_seeks(tmp_path, egg) -> None:
             await pilot.click("#slider", offset=((width - 1) // 2, 0))
             want = round(((width - 1) // 2) / (width - 1) * view.duration, 6)
             await until(pilot, lambda v: v.mode == "demo" and math.isclose(v.clock, want, abs_tol=1e-5))
+    run(go())
+
+
+def test_the_status_bar_says_recording_while_the_pen_demonstrates(tmp_path) -> None:
+    async def go() -> None:
+        app = tui_app(tmp_path)
+        async with app.run_test(size=SIZE) as pilot:
+            await until(pilot, lambda v: True)
+            await drag(pilot, circle_points(0.5, 0.5, 100))
+            await until(pilot, lambda v: len(v.scene.components) == 1)
+            await pilot.press("d")
+            await until(pilot, lambda v: v.mode == "demo")
+            status = app.main.query_one("#status")
+            await pilot.mouse_down(SceneView, offset=cell(app, 0.5, 0.5))
+            await until(pilot, lambda v: any(s == "touching" for s, _ in v.pens.values()))
+            await pilot.pause(0.1)
+            assert "● recording" in str(status.render()) and "0.60" in str(status.render())
+            await pilot.hover(SceneView, offset=cell(app, 0.6, 0.5))
+            await pilot.mouse_up(SceneView, offset=cell(app, 0.6, 0.5))
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
     run(go())

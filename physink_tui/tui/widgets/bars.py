@@ -35,7 +35,8 @@ class NarrationBar(Static):
 
 
 class StatusBar(Static):
-    """One line: mode, clock, pen, device, journal, and what a worker is doing."""
+    """One line: mode (in demo mode the clock, and ``● recording`` while the pen moves a body), what a worker is
+    doing, pen, device, journal."""
 
     def __init__(self, **kwargs) -> None:
         super().__init__("", **kwargs)
@@ -67,7 +68,9 @@ class StatusBar(Static):
         if view is not None:
             mode = view.mode.upper()
             if view.mode == "demo":
-                state = "playing" if view.playing else "paused"
+                holding = any(state in ("touching", "touching with a button pressed") for state, _ in
+                              view.pens.values())
+                state = "● recording" if holding else "playing" if view.playing else "paused"
                 mode += f" {view.clock:5.2f}/{view.duration:.2f} s {state}"
             parts.append(mode)
             parts.append(f"{len(view.scene.components)} parts")
