@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import asyncio
 import math
+import time
+from pathlib import Path
 
 import pytest
 from textual.widgets import Tree
@@ -272,3 +274,38 @@ def test_the_status_bar_says_recording_while_the_pen_demonstrates(tmp_path) -> N
             await pilot.mouse_up(SceneView, offset=cell(app, 0.6, 0.5))
             await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
     run(go())
+
+
+def test_escape_cancels_an_export(tmp_path, egg, monkeypatch) -> None:
+    """The worker stops at the next frame once cancelled (a slow stand-in for the encoder: the real one writes
+    this timeline in well under a second)."""
+    from physink_tui.render.export import Export
+
+    def slow_video(self, path, progress=None) -> None:
+        for i in range(200):
+            time.sleep(0.02)
+            progress(i + 1, 200)
+        Path(path).write_bytes(b"not reached")
+
+    monkeypatch.setattr(Export, "video", slow_video)
+    monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path / "data"))
+    header, entries = egg
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=entries)
+        async with app.run_test(size=SIZE) as pilot:
+            await until(pilot, lambda v: v.timeline is not None)
+            status = app.main.query_one("#status")
+            await pilot.press("e")
+            for _ in range(200):
+                await pilot.pause(0.05)
+                if status.activity.startswith("exporting"):
+                    break
+            await pilot.press("escape")
+            for _ in range(200):
+                await pilot.pause(0.05)
+                if status.activity.startswith(("export cancelled", "exported")):
+                    break
+            assert status.activity == "export cancelled"
+    run(go())
+    assert not list((tmp_path / "data" / "physink" / "exports").glob("*.mp4"))

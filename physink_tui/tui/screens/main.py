@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import ClassVar
@@ -231,7 +232,17 @@ class MainScreen(Screen[None]):
         entry = self._command("simulate")
         if entry is not None:
             self._simulating = entry
-            self.query_one(StatusBar).set(activity="simulating… (the session resumes when the search ends)")
+            started = time.monotonic()
+            status = self.query_one(StatusBar)
+
+            def tick() -> None:
+                if self._simulating is not entry:
+                    timer.stop()
+                    return
+                status.set(activity=f"simulating… {time.monotonic() - started:.0f} s (the session resumes when "
+                                    "the search ends)")
+            timer = self.set_interval(0.5, tick)
+            tick()
 
     def action_settings(self) -> None:
         self.app.push_screen(SettingsScreen(self.app.config), self.app.adopt_settings)  # type: ignore[attr-defined]
