@@ -161,6 +161,8 @@ def test_simulate_runs_the_search_in_the_session(tmp_path, egg) -> None:
             view = await until(pilot, lambda v: v.search is not None, timeout=60)
             assert view.search.rollouts <= 2 and view.search.budget == 2
             assert "rollout" in view.messages[-1].text
+            red = app.main.query_one(SceneView)._simulation_trails(view)  # the result's paths, drawn in red
+            assert red and all(trail.kind == "simulation" for trail in red)
             await pilot.pause(0.2)
             assert app.main.query_one("#status").activity == "simulation done"
     run(go())

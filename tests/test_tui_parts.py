@@ -79,7 +79,7 @@ def test_the_feed_submits_entries_when_they_are_due_and_leaves_out_the_end() -> 
     feed.start()
     assert done.wait(5)
     assert [e.name for _, e in got] == ["mode", "play"]
-    assert 0.09 <= got[1][0] < 0.5  # 0.2 s of journal at twice the speed
+    assert 0.09 <= got[1][0] < 2.0  # 0.2 s of journal at twice the speed (a loaded machine may be late)
 
 
 class _FakeReader:

@@ -155,3 +155,21 @@ def test_the_demo_is_replayed_into_the_live_session_and_leaves_the_user_in_contr
             await pilot.click("#do-clear")
             await until(pilot, lambda v: not v.scene.components)
     run(go())
+
+
+def test_physink_tui_project_opens_the_project(tmp_path) -> None:
+    from physink_tui.formats.project.codec import Project
+    from physink_tui.formats.project.files import save_project
+
+    header, entries = demo_journal()
+    session = Session.from_header(header).run(entries)
+    path = tmp_path / "egg.physink.json"
+    save_project(Project(session.scene, (), session.timeline, session.canvas), path)
+
+    async def go() -> None:
+        app = tui_app(tmp_path, project=str(path))
+        async with app.run_test(size=SIZE) as pilot:
+            view = await until(pilot, lambda v: v.scene == session.scene and v.timeline is not None)
+            assert len(view.timeline.events) == len(session.timeline.events)
+            assert app.main.project_path == str(path)
+    run(go())
