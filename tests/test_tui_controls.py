@@ -16,7 +16,7 @@ from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.widgets.controls import BUTTONS
 from physink_tui.tui.widgets.scene_view import SceneView
-from tests.tui_helpers import SIZE, box_points, cell, circle_points, drag, tui_app, until
+from tests.tui_helpers import SIZE, box_points, cell, cells_of, circle_points, draw, tui_app, until
 
 
 @pytest.fixture(scope="module")
@@ -120,8 +120,7 @@ def test_label_names_the_last_body_drawn(tmp_path) -> None:
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
-            await drag(pilot, box_points(0.3, 0.4, 0.6, 0.7))
-            await until(pilot, lambda v: len(v.scene.components) == 1)
+            await draw(pilot, [cells_of(app, box_points(0.3, 0.4, 0.6, 0.7))], lambda v: len(v.scene.components) == 1)
             await pilot.click("#do-label")
             await pilot.pause(0.1)
             assert isinstance(app.screen, PromptModal)
@@ -227,8 +226,7 @@ def test_quitting_with_unsaved_work_asks(tmp_path) -> None:
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
-            await drag(pilot, box_points(0.3, 0.4, 0.6, 0.7))
-            await until(pilot, lambda v: len(v.scene.components) == 1)
+            await draw(pilot, [cells_of(app, box_points(0.3, 0.4, 0.6, 0.7))], lambda v: len(v.scene.components) == 1)
             await pilot.press("q")
             await pilot.pause(0.1)
             assert isinstance(app.screen, ConfirmModal)
@@ -263,8 +261,7 @@ def test_the_status_bar_says_recording_while_the_pen_demonstrates(tmp_path) -> N
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
-            await drag(pilot, circle_points(0.5, 0.5, 100))
-            await until(pilot, lambda v: len(v.scene.components) == 1)
+            await draw(pilot, [cells_of(app, circle_points(0.5, 0.5, 100))], lambda v: len(v.scene.components) == 1)
             await pilot.press("d")
             await until(pilot, lambda v: v.mode == "demo")
             status = app.main.query_one("#status")

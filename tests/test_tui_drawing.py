@@ -5,7 +5,7 @@ from __future__ import annotations
 import asyncio
 
 from physink_tui.scene.components import BACKGROUND, Body, Joint
-from tests.tui_helpers import SIZE, box_points, circle_points, drag, drag_cells, tui_app, until, x_cells
+from tests.tui_helpers import SIZE, box_points, cells_of, circle_points, draw, tui_app, until, x_cells
 
 
 def test_a_box_a_circle_and_an_x_drawn_with_the_mouse_become_a_welded_box_and_a_circle(tmp_path) -> None:
@@ -16,14 +16,10 @@ async def draw_a_welded_box_and_a_circle(tmp_path) -> None:
     app = tui_app(tmp_path)
     async with app.run_test(size=SIZE) as pilot:
         await until(pilot, lambda v: True)
-        await drag(pilot, box_points(0.15, 0.45, 0.45, 0.7))
-        await until(pilot, lambda v: len(v.scene.components) == 1)
-        await drag(pilot, circle_points(0.7, 0.35, 110))
-        await until(pilot, lambda v: len(v.scene.components) == 2)
-        first, second = x_cells(app, 0.3, 0.57)
-        await drag_cells(pilot, first)
-        await drag_cells(pilot, second)
-        view = await until(pilot, lambda v: any(isinstance(c, Joint) for c in v.scene.components.values()))
+        await draw(pilot, [cells_of(app, box_points(0.15, 0.45, 0.45, 0.7))], lambda v: len(v.scene.components) == 1)
+        await draw(pilot, [cells_of(app, circle_points(0.7, 0.35, 110))], lambda v: len(v.scene.components) == 2)
+        view = await draw(pilot, x_cells(app, 0.3, 0.57),
+                          lambda v: any(isinstance(c, Joint) for c in v.scene.components.values()))
         bodies = [c for c in view.scene.components.values() if isinstance(c, Body)]
         joints = [c for c in view.scene.components.values() if isinstance(c, Joint)]
         assert sorted(b.shape for b in bodies) == ["box", "circle"], [m.text for m in view.messages]

@@ -15,7 +15,7 @@ from physink_tui.session.session import Session
 from physink_tui.tui import storage
 from physink_tui.tui.live import default_header
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal, PromptModal
-from tests.tui_helpers import SIZE, box_points, circle_points, drag, tui_app, until
+from tests.tui_helpers import SIZE, box_points, cells_of, circle_points, drag, draw, tui_app, until
 
 
 def run(coro) -> None:
@@ -29,9 +29,8 @@ def test_the_journal_rebuilds_what_the_tui_showed(tmp_path) -> None:
     async def go() -> None:
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
-            await drag(pilot, box_points(0.2, 0.5, 0.5, 0.8))
-            await drag(pilot, circle_points(0.7, 0.3, 100))
-            await until(pilot, lambda v: len(v.scene.components) == 2)
+            await draw(pilot, [cells_of(app, box_points(0.2, 0.5, 0.5, 0.8))], lambda v: len(v.scene.components) == 1)
+            await draw(pilot, [cells_of(app, circle_points(0.7, 0.3, 100))], lambda v: len(v.scene.components) == 2)
             await pilot.press("l", *"ball", "enter")
             view = await until(pilot, lambda v: any(getattr(c, "label", None) == "ball"
                                                     for c in v.scene.components.values()))
@@ -80,8 +79,8 @@ def test_save_writes_the_project_and_load_reads_it_back(tmp_path) -> None:
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
-            await drag(pilot, box_points(0.2, 0.5, 0.5, 0.8))
-            drawn = await until(pilot, lambda v: len(v.scene.components) == 1)
+            drawn = await draw(pilot, [cells_of(app, box_points(0.2, 0.5, 0.5, 0.8))],
+                               lambda v: len(v.scene.components) == 1)
             assert app.unsaved
             await pilot.press("ctrl+s")
             await pilot.pause(0.1)
@@ -114,8 +113,8 @@ def test_loading_a_broken_project_shows_the_problem_and_keeps_the_work(tmp_path)
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
-            await drag(pilot, box_points(0.2, 0.5, 0.5, 0.8))
-            drawn = await until(pilot, lambda v: len(v.scene.components) == 1)
+            drawn = await draw(pilot, [cells_of(app, box_points(0.2, 0.5, 0.5, 0.8))],
+                               lambda v: len(v.scene.components) == 1)
             app.main.open_project(str(broken))
             await pilot.pause(0.2)
             assert isinstance(app.screen, ErrorModal)
@@ -134,8 +133,7 @@ def test_the_right_button_erases(tmp_path) -> None:
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
-            await drag(pilot, box_points(0.3, 0.4, 0.6, 0.7))
-            await until(pilot, lambda v: len(v.scene.components) == 1)
+            await draw(pilot, [cells_of(app, box_points(0.3, 0.4, 0.6, 0.7))], lambda v: len(v.scene.components) == 1)
             await drag(pilot, [(0.2 + 0.05 * k, 0.55) for k in range(11)], button=3)
             await until(pilot, lambda v: not v.scene.components)
     run(go())

@@ -51,13 +51,7 @@ def cell(app: PhysinkApp, x: float, y: float) -> tuple[int, int]:
 
 async def drag(pilot, points: Sequence[tuple[float, float]], button: int = 1) -> None:
     """Press at the first canvas point, move through the others (each cell once), release at the last."""
-    app = pilot.app
-    cells: list[tuple[int, int]] = []
-    for x, y in points:
-        c = cell(app, x, y)
-        if not cells or cells[-1] != c:
-            cells.append(c)
-    await drag_cells(pilot, cells, button)
+    await drag_cells(pilot, cells_of(pilot.app, points), button)
 
 
 async def drag_cells(pilot, cells: Sequence[tuple[int, int]], button: int = 1) -> None:
@@ -66,6 +60,42 @@ async def drag_cells(pilot, cells: Sequence[tuple[int, int]], button: int = 1) -
     for c in cells[1:]:
         await pilot.hover(SceneView, offset=c)
     await pilot.mouse_up(SceneView, offset=cells[-1])
+
+
+async def draw(pilot, strokes: Sequence[Sequence[tuple[int, int]]],
+               done: Callable[[SessionView], bool], attempts: int = 3) -> SessionView:
+    """Drag the mouse through each stroke's cells until ``done(view)``; up to ``attempts`` times.
+
+    Pilot's events arrive in real time, and a loaded machine can stall the app's loop between a button press and
+    the first move for longer than the 400 ms that make a press a dwell: the session then (rightly) takes the
+    stroke as a drag, which draws nothing. A failed attempt is undone until the scene is what it was, then drawn
+    again; a drawing that never works still fails.
+    """
+    before = latest(pilot.app).scene
+    for attempt in range(attempts):
+        for cells in strokes:
+            await drag_cells(pilot, cells)
+        try:
+            return await until(pilot, done, timeout=5.0)
+        except AssertionError:
+            if attempt == attempts - 1:
+                raise
+        for _ in range(4):
+            if latest(pilot.app).scene == before:
+                break
+            await pilot.press("u")
+            await pilot.pause(0.3)
+    raise AssertionError("unreachable")
+
+
+def cells_of(app: PhysinkApp, points: Sequence[tuple[float, float]]) -> list[tuple[int, int]]:
+    """Canvas points as the scene view's cells, each cell once in a row."""
+    cells: list[tuple[int, int]] = []
+    for x, y in points:
+        c = cell(app, x, y)
+        if not cells or cells[-1] != c:
+            cells.append(c)
+    return cells
 
 
 def x_cells(app: PhysinkApp, x: float, y: float, steps: int = 3) -> tuple[list[tuple[int, int]], ...]:
