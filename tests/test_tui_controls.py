@@ -104,8 +104,12 @@ def test_choosing_a_timeline_event_seeks_to_it(tmp_path, egg) -> None:
             node = contacts[0]
             tree.move_cursor(node)
             tree.action_select_cursor()
-            view = await until(pilot, lambda v: v.mode == "demo" and math.isclose(v.clock, node.data, abs_tol=1e-5))
+            t, components = node.data
+            view = await until(pilot, lambda v: v.mode == "demo" and math.isclose(v.clock, t, abs_tol=1e-5))
             assert view.clock > 0
+            await pilot.pause(0.2)
+            scene = app.main.query_one(SceneView)  # the event's bodies are outlined
+            assert scene.highlight == frozenset(components) and len(components) == 2
     run(go())
 
 

@@ -157,9 +157,11 @@ class MainScreen(Screen[None]):
 
     def on_timeline_tree_seek(self, message: TimelineTree.Seek) -> None:
         self._seek(message.t)
+        self.query_one(SceneView).emphasise(message.components)
 
     def on_time_slider_seek(self, message: TimeSlider.Seek) -> None:
         self._seek(message.t)
+        self.query_one(SceneView).emphasise(())
 
     def _seek(self, t: float) -> None:
         if self.view is not None and self.view.mode != "demo":

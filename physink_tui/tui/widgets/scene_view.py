@@ -53,6 +53,9 @@ class SceneView(Widget, can_focus=True):
         self._strips: list[Strip] = []
         self._pressed: int | None = None  # the mouse button held over the scene, or None
         self._overlay: tuple[object, Demonstration] | None = None
+        self.highlight: frozenset[str] = frozenset()
+        """Bodies outlined (the timeline event chosen last); forgotten when the scene changes."""
+        self._highlight_of: object = None
         self.frames_drawn = 0
         """Frames drawn since the start (benchmarks, tests)."""
         self.draw_seconds: list[float] = []
@@ -95,7 +98,9 @@ class SceneView(Widget, can_focus=True):
         start = time.perf_counter()
         content = view_frame(view, self.canvas)
         trails = self._simulation_trails(view)
-        content = replace(content, subtitle=None, trails=content.trails + trails)
+        if self.highlight and view.scene is not self._highlight_of:
+            self.highlight = frozenset()
+        content = replace(content, subtitle=None, trails=content.trails + trails, highlight=self.highlight)
         try:
             pixels = renderer.render(content)
         except RenderError:  # a project of another canvas: shown as text by the status bar
@@ -108,6 +113,12 @@ class SceneView(Widget, can_focus=True):
         self.draw_seconds.append(time.perf_counter() - start)
         del self.draw_seconds[:-1000]
         self.refresh()
+
+    def emphasise(self, components: tuple[str, ...]) -> None:
+        """Outline these components while the timeline shown stays the same."""
+        self.highlight = frozenset(components)
+        self._highlight_of = self.view.scene if self.view is not None else None
+        self._draw()
 
     def _simulation_trails(self, view: SessionView) -> tuple:
         """The red paths of the SIMULATE result shown (at its end)."""

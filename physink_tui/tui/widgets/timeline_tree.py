@@ -16,7 +16,7 @@ from physink_tui.session.view import SessionView
 from physink_tui.timeline.events import Event, Timeline, event_label
 
 
-class TimelineTree(Tree[float]):
+class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
     """The timeline of the views it is given (`show`)."""
 
     @dataclass
@@ -25,6 +25,7 @@ class TimelineTree(Tree[float]):
 
         t: float
         event_id: str
+        components: tuple[str, ...] = ()
 
     def __init__(self, **kwargs) -> None:
         super().__init__("Timeline", **kwargs)
@@ -54,10 +55,11 @@ class TimelineTree(Tree[float]):
                     later.append(ev)
                     continue
                 where = nodes[cause] if cause is not None else self.root
-                nodes[ev.id] = where.add(self._label(ev, events, names), data=ev.t0, expand=True)
+                nodes[ev.id] = where.add(self._label(ev, events, names), data=(ev.t0, ev.components), expand=True)
             if len(later) == len(waiting):  # a cycle (never in a valid timeline): show the rest at the root
                 for ev in later:
-                    nodes[ev.id] = self.root.add(self._label(ev, events, names), data=ev.t0, expand=True)
+                    nodes[ev.id] = self.root.add(self._label(ev, events, names), data=(ev.t0, ev.components),
+                                                 expand=True)
                 later = []
             waiting = later
         for node in nodes.values():
@@ -70,7 +72,8 @@ class TimelineTree(Tree[float]):
         also = f"  (also caused by {', '.join(more)})" if more else ""
         return f"{ev.t0:5.2f} s  {text}{also}"
 
-    def on_tree_node_selected(self, event: Tree.NodeSelected[float]) -> None:
+    def on_tree_node_selected(self, event: Tree.NodeSelected[tuple[float, tuple[str, ...]]]) -> None:
         event.stop()
         if event.node.data is not None:
-            self.post_message(self.Seek(float(event.node.data), str(event.node.label)))
+            t, components = event.node.data
+            self.post_message(self.Seek(float(t), str(event.node.label), tuple(components)))
