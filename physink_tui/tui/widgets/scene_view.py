@@ -100,7 +100,9 @@ class SceneView(Widget, can_focus=True):
         trails = self._simulation_trails(view)
         if self.highlight and view.scene is not self._highlight_of:
             self.highlight = frozenset()
-        content = replace(content, subtitle=None, trails=content.trails + trails, highlight=self.highlight)
+        contacts = tuple(replace(c, sides="") for c in content.contacts)  # words are the tree's and the narration's:
+        content = replace(content, subtitle=None, trails=content.trails + trails, highlight=self.highlight,
+                          contacts=contacts)  # at a terminal's few pixels they would hide the machine
         try:
             pixels = renderer.render(content)
         except RenderError:  # a project of another canvas: shown as text by the status bar

@@ -30,6 +30,7 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
     def __init__(self, **kwargs) -> None:
         super().__init__("Timeline", **kwargs)
         self.show_root = False
+        self.auto_expand = False  # choosing an event seeks; it does not fold its consequences away
         self._timeline: Timeline | bool | None = False  # False: nothing shown yet
         self._names: dict[str, str] = {}
         self.guide_depth = 2
