@@ -168,6 +168,17 @@ def test_simulate_runs_the_search_in_the_session(tmp_path, egg) -> None:
             assert red and all(trail.kind == "simulation" for trail in red)
             await pilot.pause(0.2)
             assert app.main.query_one("#status").activity == "simulation done"
+            before = view
+            await pilot.press("a")  # adopt: the parameters into the scene, the simulated timeline as the project's
+            adopted = await until(pilot, lambda v: v.messages[-1].text.startswith("loaded simulation"))
+            for body, p in before.search.parameters.bodies.items():  # the masses and frictions found
+                material = adopted.scene.components[body].material
+                assert material.friction == pytest.approx(p.friction, abs=1e-6)
+            assert adopted.timeline is not None and adopted.can_undo
+            assert [e.type for e in adopted.timeline.events] == [e.type for e in before.search.timeline.events]
+            assert adopted.timeline != before.timeline
+            await pilot.press("u")
+            await until(pilot, lambda v: v.scene == before.scene and v.timeline == before.timeline)
     run(go())
 
 

@@ -26,9 +26,10 @@ from textual.widgets import Static
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
-from physink_tui.formats.project.codec import Project, decode_project
+from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.formats.project.files import save_project
 from physink_tui.session.view import SessionView
+from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
 from physink_tui.tui import storage
 from physink_tui.tui.live import LiveSession
@@ -76,6 +77,7 @@ class MainScreen(Screen[None]):
         Binding("ctrl+o", "load", "load a project"),
         Binding("t", "timeline", "the timeline as text"),
         Binding("g", "simulate", "simulate (search a physical simulation)"),
+        Binding("a", "adopt", "adopt the simulation: its parameters and timeline become the project's (undoable)"),
         Binding("e", "export", "export the demonstration as a video"),
         Binding("escape", "cancel", "cancel the export"),
         Binding("f2", "settings", "settings: tablet mapping, tip thresholds, theme"),
@@ -252,6 +254,25 @@ class MainScreen(Screen[None]):
     def set_theme(self, theme: str) -> None:
         self.theme_name = theme
         self.query_one(SceneView).set_theme(theme)
+
+    def action_adopt(self) -> None:
+        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's: one
+        journaled ``load`` with the project embedded, so it is undoable and a replay rebuilds it."""
+        view = self.view
+        if view is None or view.search is None or self.live is None:
+            self.notify("nothing to adopt: simulate first (g)", severity="warning")
+            return
+        search = view.search
+        try:
+            scene = apply(view.scene, search.parameters)
+            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas))
+        except PhysinkError as exc:
+            self.app.push_screen(ErrorModal("Cannot adopt the simulation", str(exc)))
+            return
+        self._command("load", "simulation", project=json.loads(text))
+        if not search.found:
+            self.notify("adopted the best simulation found, which is not equivalent to the demonstration "
+                        "(undo with u)", severity="warning")
 
     def action_help(self) -> None:
         self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),
