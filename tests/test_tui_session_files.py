@@ -171,3 +171,19 @@ def test_physink_tui_project_opens_the_project(tmp_path) -> None:
             assert len(view.timeline.events) == len(session.timeline.events)
             assert app.main.project_path == str(path)
     run(go())
+
+
+def test_a_journal_folder_that_cannot_be_made_is_said_and_the_session_runs_without(tmp_path) -> None:
+    blocker = tmp_path / "file"
+    blocker.write_text("not a folder")
+
+    async def go() -> None:
+        app = tui_app(tmp_path, journal_dir=blocker / "sessions")
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause(0.3)
+            assert isinstance(app.screen, ErrorModal) and "journal folder" in app.screen._message
+            await pilot.press("enter")
+            await pilot.click("#do-demo")
+            await until(pilot, lambda v: v.mode == "demo")
+            assert app.live.journal_path is None
+    run(go())

@@ -131,7 +131,10 @@ class PhysinkApp(App[None]):
         header = recovered_header or options.header or self.config.header()
         path = None
         if options.journal:
-            path = storage.new_journal_path(options.journal_dir)
+            try:
+                path = storage.new_journal_path(options.journal_dir)
+            except OSError as exc:
+                self.push_screen(ErrorModal("Not journaling", f"cannot make the journal folder: {exc}"))
         try:
             live = LiveSession(header, journal_path=path, prior=prior or options.prior, max_fps=options.max_fps,
                                on_error=lambda exc: self.post_message(RunnerFailed(exc)))

@@ -62,8 +62,10 @@ def finished(journal: Journal) -> bool:
     return isinstance(last, CommandEntry) and last.name == "end"
 
 
-def unfinished_journals(folder: Path | None = None, exclude: Path | None = None) -> list[tuple[Path, Journal]]:
-    """Journals in ``folder`` whose session did not end and that hold at least one input, newest first.
+def unfinished_journals(folder: Path | None = None, exclude: Path | None = None,
+                        limit: int = 20) -> list[tuple[Path, Journal]]:
+    """Journals in ``folder`` whose session did not end and that hold at least one input, newest first, among the
+    ``limit`` newest (a folder of old sessions does not slow the start).
 
     A journal that cannot be read at all is skipped (it holds nothing to recover); ``exclude`` is the running
     session's own journal.
@@ -72,7 +74,7 @@ def unfinished_journals(folder: Path | None = None, exclude: Path | None = None)
     if not folder.is_dir():
         return []
     found = []
-    for path in sorted(folder.glob(f"*{SUFFIX}"), key=lambda p: p.stat().st_mtime, reverse=True):
+    for path in sorted(folder.glob(f"*{SUFFIX}"), key=lambda p: p.stat().st_mtime, reverse=True)[:limit]:
         if exclude is not None and path.resolve() == exclude.resolve():
             continue
         try:
