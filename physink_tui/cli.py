@@ -41,12 +41,12 @@ HANDLERS: dict[str, str] = {
     "timeline": "physink_tui.commands.timeline:run",
     "equiv": "physink_tui.commands.equiv:run",
     "simulate": "physink_tui.commands.simulate:run",
+    "tui": "physink_tui.commands.tui:run",
     "kiosk": "physink_tui.commands.kiosk:run",
 }
 
 #: Subcommands not built yet: name -> where they are planned (shown to the user as is).
 PLANNED: dict[str, str] = {
-    "tui": "a later issue: the Textual control panel",
     "listen": "a later issue: speech commands",
 }
 
@@ -161,8 +161,7 @@ def build_parser() -> argparse.ArgumentParser:
         "demo",
         help="the embedded default: the TUI replaying a bundled session (the egg cracker)",
         description="Open the TUI on a bundled session being replayed; with --headless (automatic when "
-        "stdout is not a terminal) run the whole pipeline and write the outputs to --out. Until the TUI is "
-        "built (a later issue) every run is headless.",
+        "stdout is not a terminal) run the whole pipeline and write the outputs to --out.",
     )
     p.add_argument("--headless", action="store_true", help="no UI: run the pipeline and write the outputs")
     p.add_argument(

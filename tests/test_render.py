@@ -296,3 +296,26 @@ def test_a_trail_leaving_the_canvas_is_cut_at_its_edge() -> None:
         pixels = renderer.render(FrameContent(Scene(), CANVAS, trails=(Trail(gone, "simulation", shown),)))
         below = int(top + height) + 1
         assert (pixels[below:, :, :3] == bare[below:, :, :3]).all()
+
+
+def test_highlighted_bodies_are_outlined_in_the_emphasis_colour() -> None:
+    """``FrameContent.highlight`` (the TUI's chosen timeline event) outlines those bodies; nothing else changes."""
+    from dataclasses import replace as _replace
+
+    from physink_tui.render.frame import FrameContent
+    from physink_tui.render.renderer import Renderer
+    from physink_tui.render.theme import theme_named
+    from physink_tui.scene.components import MATERIALS, Body, Scene
+
+    box = Body("b1", "box", ((-50.0, -30.0), (50.0, -30.0), (50.0, 30.0), (-50.0, 30.0)), 0.0, (400.0, 300.0), 0.0,
+               MATERIALS["box"])
+    scene = Scene().add(box)
+    renderer = Renderer(200, 150, (800.0, 600.0), "light", controls=False)
+    plain = renderer.render(FrameContent(scene, (800.0, 600.0))).copy()
+    marked = renderer.render(_replace(FrameContent(scene, (800.0, 600.0)), highlight=frozenset({"b1"}))).copy()
+    colour = theme_named("light").contact_recent
+    rgb = ((colour >> 16) & 255, (colour >> 8) & 255, colour & 255)
+    differs = (plain != marked).any(axis=2)
+    assert differs.any() and differs[:, :60].sum() == 0  # only round the box (x 75..125 px of 200)
+    close = (abs(marked[..., :3].astype(int) - rgb).sum(axis=2) < 60) & differs
+    assert close.sum() > 20

@@ -1,6 +1,7 @@
-"""`physink demo`: runs the pipeline that exists on the bundled egg cracker; writes DIR outputs.
+"""`physink demo`: on a terminal, the TUI replaying the bundled egg cracker; headless, the pipeline and its outputs.
 
-Until the Textual UI exists (a later issue) the demo is headless whatever the terminal: it journals the bundled
+On a terminal (stdin and stdout, no ``--headless``) it opens the TUI (`commands.tui`) replaying the bundled
+session at real speed, then leaves the user in control. Otherwise it journals the bundled
 capture (the egg cracker drawn and then demonstrated with the virtual pen, `demo_data`) with what is typed in
 between (labels, ``mode demo``) as a session, runs it through decoding, gestures, recognition, interpretation
 and demo mode, writes the samples, the journal, the project, the timeline, the demonstration as a video
@@ -18,6 +19,7 @@ from collections import Counter
 from physink_tui.commands.decode import decode_capture, summary, write_jsonl
 from physink_tui.demo_data import DEMO_FILE, TABLET_ASPECT, demo_capture_text, demo_script
 from physink_tui.errors import PhysinkError
+from physink_tui.formats.journal.entries import JournalEntry, JournalHeader
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.outputs import OutputFolder, reason
 from physink_tui.formats.session_outputs import write_session_outputs
@@ -51,7 +53,22 @@ def describe(session: Session) -> list[str]:
     return lines
 
 
+def demo_journal() -> tuple[JournalHeader, list[JournalEntry]]:
+    """The bundled session: the journal header of the demo capture and its entries merged with what is typed."""
+    capture = Capture.from_text(demo_capture_text(), path=f"<bundled {DEMO_FILE}>")
+    mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=TABLET_ASPECT,
+                            tablet_height=1.0)
+    entries = sorted([*capture_entries(capture), *demo_script()], key=lambda e: e.t)
+    return header_for_capture(capture, mapping), entries
+
+
 def run(args: argparse.Namespace) -> int:
+    if not args.headless and sys.stdout.isatty() and sys.stdin.isatty():
+        from physink_tui.commands.tui import open_tui
+        from physink_tui.tui.app import TuiOptions
+
+        header, entries = demo_journal()
+        return open_tui(TuiOptions(header=header, entries=tuple(entries), title="PhysInk demo"))
     folder = OutputFolder.prepare(args.out)  # holds only this run's files
     out = folder.path
     capture = Capture.from_text(demo_capture_text(), path=f"<bundled {DEMO_FILE}>")
@@ -85,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
     print("PhysInk TUI demo: the bundled egg cracker, drawn and then demonstrated on a virtual UC-Logic tablet,")
     print("read as raw HID reports, decoded, followed to strokes, recognised and interpreted into a physical scene;")
     print("in demo mode the pen pushed the ball onto the lever and carried the egg into the pan, recorded as a")
-    print("causal timeline (simulation and the terminal UI come in later issues).\n")
+    print("causal timeline.\n")
     print(braille_plot(touching, width=64, height=20))
     print(f"\n{len(cols)} pen samples, {strokes} strokes; the sketch has "
           + ", ".join(f"{n} {PLURAL.get(k, k + 's') if n > 1 else k}" for k, n in sorted(kinds.items())) + ":")
@@ -96,6 +113,4 @@ def run(args: argparse.Namespace) -> int:
         print("\nThe demonstration, as the thesis narrates it:\n" + narration)
     print(f"\nwritten to {out}/: samples.jsonl, summary.txt, {JOURNAL} (replay it with physink replay), project.json,"
           " timeline.json, timeline.txt, demo.mp4 (the demonstration as a video) and scene.png (its last frame)")
-    if args.headless is False and sys.stdout.isatty():
-        print("(the interactive TUI is not built yet; this run was headless)")
     return 0

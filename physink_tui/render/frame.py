@@ -88,6 +88,7 @@ class FrameContent:
         contacts: the contacts that have happened by now.
         subtitle: the narration of the current event, or None.
         time_bar: where the frame is in the demonstration, or None for no bar.
+        highlight: ids of bodies outlined for attention (the TUI's chosen timeline event); none by default.
     """
 
     scene: Scene
@@ -98,6 +99,7 @@ class FrameContent:
     contacts: tuple[ContactMarker, ...] = ()
     subtitle: str | None = None
     time_bar: TimeBar | None = None
+    highlight: frozenset[str] = frozenset()
 
     def __post_init__(self) -> None:
         if not isinstance(self.poses, MappingProxyType):

@@ -149,6 +149,7 @@ class Renderer:
             "contact_text": _paint(th.contact_recent), "ink": _paint(th.ink, px(INK_LINE, 1.5)),
             "subtitle": _paint(th.subtitle), "subtitle_back": _paint(th.subtitle_back),
             "bar_track": _paint(th.bar_track), "bar_fill": _paint(th.bar_fill), "bar_tick": _paint(th.bar_tick),
+            "highlight": _paint(th.contact_recent, px(2 * BODY_LINE, 2.0)),
         }
 
     # -- text -----------------------------------------------------------------------------------------------
@@ -272,6 +273,14 @@ class Renderer:
             if body.id not in still:
                 x, y, angle = content.pose(body)
                 self._draw_body(canvas, body, x, y, angle, fixed=body.id in plan.fixed)
+        for body in plan.bodies:  # outlined in the emphasis colour, over whatever is drawn
+            if body.id in content.highlight:
+                x, y, angle = content.pose(body)
+                canvas.save()
+                canvas.translate(x, y)
+                canvas.rotate(math.degrees(angle))
+                canvas.drawPath(self._body_path(body), self._p["highlight"])
+                canvas.restore()
         for joint in plan.joints:
             if not {joint.a, joint.b} <= still | {BACKGROUND}:
                 self._draw_joint(canvas, joint, carried(joint.anchor, joint.a, scene, poses))

@@ -148,9 +148,11 @@ class Session:
 
     def view(self) -> SessionView:
         """An immutable snapshot of everything a view shows."""
+        pens = {device: (dev.engine.state.value, dev.engine.ink[-1].p if dev.engine.ink else 0.0)
+                for device, dev in self.pen.devices.items()}
         return snapshot(self.revision, self.t, self.current, self.scene, self.canvas, self.pen.ink(),
                         self.sketch.pending, self.selected, self.history, self.messages,
-                        self._searched[1] if self._searched else None)
+                        self._searched[1] if self._searched else None, pens)
 
     # -- input ---------------------------------------------------------------------------------------------
 
@@ -281,6 +283,8 @@ class Session:
             self._load(entry)
         elif name == "end":  # the driver finishes next; input after it would still be handled
             self._end()
+        elif name == "save":  # the driver (the TUI) writes the file; a replay writes none
+            self.sketch.flush(t)
         else:
             self.sketch.flush(t)
             self.tell(f"{name}: not available yet (saving comes with a later issue)")

@@ -4,7 +4,7 @@ and `Message` (SIMULATE's `SearchResult` is `simulation`'s); no drawing."""
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from physink_tui.input.pen.gestures import StrokePoint
@@ -49,6 +49,8 @@ class SessionView:
         messages: everything told so far, oldest first.
         search: what the last ``simulate`` found for the document shown, or None (none ran since the document last
             changed).
+        pens: for each input device, its pen state (`PenState` value, e.g. ``"touching"``) and the pressure
+            (0..1) of the stroke being drawn, 0 when none (the status bar).
     """
 
     revision: int
@@ -67,13 +69,15 @@ class SessionView:
     playing: bool
     messages: tuple[Message, ...]
     search: SearchResult | None = None
+    pens: Mapping[str, tuple[str, float]] = field(default_factory=lambda: MappingProxyType({}))
 
 
 def snapshot(revision: int, t: float, mode: Mode, scene: Scene, canvas: tuple[float, float],
              ink: Sequence[Sequence[StrokePoint]], pending: PendingStroke | None, selected: str | None,
-             history: History, messages: Sequence[Message], search: SearchResult | None = None) -> SessionView:
+             history: History, messages: Sequence[Message], search: SearchResult | None = None,
+             pens: Mapping[str, tuple[str, float]] | None = None) -> SessionView:
     """The view of a session in ``mode`` (``ink``: the strokes being drawn, in canvas fractions; ``search``: the
-    document's SIMULATE result)."""
+    document's SIMULATE result; ``pens``: each device's pen state and pressure)."""
     width, height = canvas
     timeline = mode.timeline()
     demo = mode if isinstance(mode, DemoMode) else None
@@ -94,4 +98,5 @@ def snapshot(revision: int, t: float, mode: Mode, scene: Scene, canvas: tuple[fl
         playing=demo.playing if demo else False,
         messages=tuple(messages),
         search=search,
+        pens=MappingProxyType(dict(pens or {})),
     )

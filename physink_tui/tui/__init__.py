@@ -1,0 +1,1 @@
+"""The Textual control panel (`physink tui`, `physink demo` on a terminal); the only package that imports Textual."""

@@ -1,0 +1,246 @@
+"""The PhysInk Textual app: starts the live session (recovering an unfinished one if asked), hands views to the
+main screen, asks before losing work; the controls are the main screen's, the state the session's.
+
+`make_app(options)` is the one factory the CLI (``physink tui``, ``physink demo``) and the tests share.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from textual.app import App
+from textual.message import Message
+
+from physink_tui.errors import PhysinkError
+from physink_tui.formats.journal.entries import JournalEntry, JournalHeader
+from physink_tui.session.view import SessionView
+from physink_tui.tui import storage
+from physink_tui.tui.config import Config, load_config, save_config
+from physink_tui.tui.live import LiveSession
+from physink_tui.tui.screens.main import MainScreen
+from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
+
+
+@dataclass
+class TuiOptions:
+    """How the TUI starts.
+
+    Attributes:
+        header, entries: a recorded session to replay into the live one (``--replay``, the demo), or None.
+        prior: entries of ``header``'s session handled at once before the live session starts (tests, pictures).
+        speed: replay speed (1: real time).
+        project: a project file to open at the start (``physink tui PROJECT``), also the default for Save.
+        device, serial: the tablet (``--device``, ``--serial``); ``tablet=False`` looks for none (tests).
+        journal_dir: where the session journals (default: the XDG data folder); None with ``journal=False``.
+        recover: offer to recover an unfinished session found there.
+        theme: the scene's ``light`` or ``dark`` theme (default: the settings').
+        config_path: the settings file (default: ``$XDG_CONFIG_HOME/physink/config.json``).
+        max_fps: scene redraws a second at most.
+    """
+
+    header: JournalHeader | None = None
+    entries: tuple[JournalEntry, ...] = ()
+    prior: tuple[JournalEntry, ...] = ()
+    speed: float = 1.0
+    project: str | None = None
+    device: str | None = None
+    serial: str | None = None
+    tablet: bool = True
+    journal: bool = True
+    journal_dir: Path | None = None
+    recover: bool = True
+    theme: str | None = None
+    config_path: Path | None = None
+    max_fps: float = 60.0
+    title: str = "PhysInk"
+    notes: list[str] = field(default_factory=list)
+
+
+class ViewUpdated(Message):
+    """A new snapshot from the runner (only the latest one matters)."""
+
+    def __init__(self, view: SessionView) -> None:
+        super().__init__()
+        self.view = view
+
+    def can_replace(self, message: Message) -> bool:
+        return isinstance(message, ViewUpdated)
+
+
+class RunnerFailed(Message):
+    """The session's worker stopped on a bug."""
+
+    def __init__(self, error: BaseException) -> None:
+        super().__init__()
+        self.error = error
+
+
+class PhysinkApp(App[None]):
+    """The control panel. The live session starts on mount (after the recovery question, if any)."""
+
+    CSS_PATH = "physink.tcss"
+    TITLE = "PhysInk"
+    ENABLE_COMMAND_PALETTE = False
+
+    def __init__(self, options: TuiOptions | None = None) -> None:
+        super().__init__()
+        self.options = options or TuiOptions()
+        self.config = Config()
+        """The settings (`physink_tui.tui.config`), read on mount."""
+        self.live: LiveSession | None = None
+        self.main: MainScreen | None = None
+        self.saved_document: tuple[object, object] | None = None
+        """The (scene, timeline) last saved or opened: work differs from it when unsaved."""
+
+    # -- start -----------------------------------------------------------------------------------------------
+
+    async def on_mount(self) -> None:
+        problem = None
+        try:
+            self.config = load_config(self.options.config_path)
+        except PhysinkError as exc:
+            problem = str(exc)
+        header = self.options.header or self.config.header()
+        self.main = MainScreen((header.canvas_width, header.canvas_height), self.options.theme or self.config.theme)
+        await self.push_screen(self.main)
+        if problem is not None:
+            self.push_screen(ErrorModal("Settings not read (the defaults are used)", problem))
+        found = []
+        if self.options.journal and self.options.recover and self.options.header is None:
+            found = storage.unfinished_journals(self.options.journal_dir or storage.sessions_dir())
+        if found:
+            path, journal = found[0]
+            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n"
+                        "Recover it (replay it here and carry on)?")
+
+            def answered(yes: bool | None) -> None:
+                storage.mark_recovered(path)
+                if yes:
+                    self._start(journal.header, journal.entries)
+                else:
+                    self._start(None, ())
+
+            self.push_screen(ConfirmModal(question, "Recover", "Start afresh"), answered)
+        else:
+            self._start(None, ())
+
+    def _start(self, recovered_header: JournalHeader | None, prior: tuple[JournalEntry, ...]) -> None:
+        options = self.options
+        header = recovered_header or options.header or self.config.header()
+        path = None
+        if options.journal:
+            try:
+                path = storage.new_journal_path(options.journal_dir)
+            except OSError as exc:
+                self.push_screen(ErrorModal("Not journaling", f"cannot make the journal folder: {exc}"))
+        try:
+            live = LiveSession(header, journal_path=path, prior=prior or options.prior, max_fps=options.max_fps,
+                               on_error=lambda exc: self.post_message(RunnerFailed(exc)))
+        except PhysinkError as exc:
+            self.push_screen(ErrorModal("Cannot start the session", str(exc)))
+            live = LiveSession(header, journal_path=None, max_fps=options.max_fps)
+        self.live = live
+        last = [-1]
+
+        def publish(view: SessionView) -> None:  # on the runner's thread: only views that changed go on
+            if view.revision != last[0]:
+                last[0] = view.revision
+                self.post_message(ViewUpdated(view))
+
+        live.runner.subscribe(publish)
+        live.start()
+        if self.main is None:  # never: on_mount made it
+            return
+        self.main.attach(live, path)
+        if options.tablet:
+            self.main.watch_tablet(options.device, options.serial)
+        else:
+            self.main.query_one("#status").set(device="no tablet (mouse only)")
+        if options.project:
+            self.main.open_project(options.project)
+        if options.entries:
+            self.main.replay(options.entries, options.speed)
+        for note in options.notes:
+            self.notify(note)
+
+    # -- views -----------------------------------------------------------------------------------------------
+
+    def on_view_updated(self, message: ViewUpdated) -> None:
+        if self.saved_document is None:
+            self.saved_document = (message.view.scene, message.view.timeline)
+        if self.main is not None:
+            self.main.show(message.view)
+
+    def on_runner_failed(self, message: RunnerFailed) -> None:
+        self.push_screen(ErrorModal("Internal error", f"the session stopped: {message.error!r}"))
+
+    @property
+    def unsaved(self) -> bool:
+        """Whether the document differs from the one last saved or opened."""
+        view = self.live.runner.latest_view() if self.live is not None else None
+        if view is None or self.saved_document is None:
+            return False
+        scene, timeline = self.saved_document
+        return view.scene is not scene or view.timeline is not timeline
+
+    def mark_saved(self, view: SessionView) -> None:
+        self.saved_document = (view.scene, view.timeline)
+
+    def adopt_settings(self, config: Config | None) -> None:
+        """Save ``config`` (from the settings screen) and apply its theme; None changes nothing."""
+        if config is None:
+            return
+        try:
+            path = save_config(config, self.options.config_path)
+        except PhysinkError as exc:
+            self.push_screen(ErrorModal("Settings not saved", str(exc)))
+            return
+        self.config = config
+        if self.main is not None:
+            self.main.set_theme(config.theme)
+        self.notify(f"settings saved to {path}; the mapping and tip thresholds apply from the next session")
+
+    # -- the end ---------------------------------------------------------------------------------------------
+
+    async def action_quit(self) -> None:
+        if self.unsaved:
+            def answered(yes: bool | None) -> None:
+                if yes:
+                    self._quit_now()
+            self.push_screen(ConfirmModal("There is unsaved work (save it with ctrl+s).\nQuit anyway? The "
+                                          "session's journal keeps everything.", "Quit", "Stay"), answered)
+        else:
+            self._quit_now()
+
+    def _quit_now(self) -> None:
+        self.stop_live()
+        self.exit()
+
+    def stop_live(self) -> None:
+        """Stop the sources and the runner (the journal gets its end); an empty journal is removed."""
+        live = self.live
+        if live is None or live.stopped:
+            return
+        if self.main is not None:
+            self.main.stop_workers()
+        try:
+            live.stop()
+        except Exception as exc:  # the runner's bug, already shown
+            self.log.error(f"session stopped with {exc!r}")
+        if live.journal_path is not None:
+            storage.remove_if_empty(live.journal_path)
+
+    def on_unmount(self) -> None:
+        self.stop_live()
+
+
+def make_app(options: TuiOptions | None = None) -> PhysinkApp:
+    """The app for ``options`` (the CLI and the tests build it the same way)."""
+    return PhysinkApp(options)
+
+
+def project_object(text: str) -> dict:
+    """A project file's JSON object, to embed in a ``load`` line (checked by the session as it loads)."""
+    return json.loads(text)

@@ -1,0 +1,1 @@
+"""The TUI's screens: the main control panel and its modal dialogs."""

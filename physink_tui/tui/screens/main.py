@@ -1,0 +1,360 @@
+"""The main screen: scene, timeline tree, narration, buttons and status; turns keys, buttons, the mouse and the
+tablet into journal entries for the live session, and runs the blocking work (export) in workers.
+
+It keeps no state of the machine: what it shows comes from the latest `SessionView`, what it does goes to the
+session as an entry, so the session's journal rebuilds everything. The project path, the recording status and
+the workers' progress are all it holds.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import ClassVar
+
+from textual import events, work
+from textual.app import ComposeResult
+from textual.binding import Binding, BindingType
+from textual.containers import Horizontal, Vertical
+from textual.css.query import NoMatches
+from textual.message import Message
+from textual.screen import Screen
+from textual.widgets import Static
+
+from physink_tui.errors import PhysinkError
+from physink_tui.formats.journal.entries import JournalEntry
+from physink_tui.formats.project.codec import Project, decode_project, encode_project
+from physink_tui.formats.project.files import save_project
+from physink_tui.session.view import SessionView
+from physink_tui.sim.parameters import apply
+from physink_tui.timeline.narrate import timeline_text
+from physink_tui.tui import storage
+from physink_tui.tui.live import LiveSession
+from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
+from physink_tui.tui.screens.settings import SettingsScreen
+from physink_tui.tui.tablet import TabletWatch
+from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
+from physink_tui.tui.widgets.controls import Controls
+from physink_tui.tui.widgets.scene_view import PRESSURE, SceneView
+from physink_tui.tui.widgets.time_slider import TimeSlider
+from physink_tui.tui.widgets.timeline_tree import TimelineTree
+
+MIN_WIDTH, MIN_HEIGHT = 60, 16
+"""The smallest terminal the panel is laid out in; below it a notice says so."""
+SEEK_STEP = 0.5
+"""Seconds of timeline time the arrow keys move the playback."""
+
+
+class _Cancelled(Exception):
+    """The export worker was cancelled (escape, quitting)."""
+
+
+@dataclass
+class DeviceStatus(Message):
+    """What the tablet watcher found (posted from its thread)."""
+
+    text: str
+
+
+class MainScreen(Screen[None]):
+    """The control panel."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("s", "sketch", "sketch mode"),
+        Binding("d", "demo", "demo mode (record a demonstration)"),
+        Binding("space,p", "play_pause", "play / pause the demonstration"),
+        Binding("full_stop", "stop", "stop (back to the start)"),
+        Binding("left", "seek(-1)", f"seek back {SEEK_STEP:g} s"),
+        Binding("right", "seek(1)", f"seek forward {SEEK_STEP:g} s"),
+        Binding("u,ctrl+z", "undo", "undo"),
+        Binding("r,ctrl+y", "redo", "redo"),
+        Binding("c", "clear", "clear the sketch"),
+        Binding("l", "label", "label the selected body (or the last drawn)"),
+        Binding("ctrl+s", "save", "save the project"),
+        Binding("ctrl+o", "load", "load a project"),
+        Binding("t", "timeline", "the timeline as text"),
+        Binding("g", "simulate", "simulate (search a physical simulation)"),
+        Binding("a", "adopt", "adopt the simulation: its parameters and timeline become the project's (undoable)"),
+        Binding("e", "export", "export the demonstration as a video"),
+        Binding("escape", "cancel", "cancel the export"),
+        Binding("f2", "settings", "settings: tablet mapping, tip thresholds, theme"),
+        Binding("question_mark,f1", "help", "this help"),
+        Binding("q,ctrl+q", "app.quit", "quit (asks when there is unsaved work)"),
+    ]
+
+    def __init__(self, canvas: tuple[float, float], theme: str = "dark") -> None:
+        super().__init__()
+        self.canvas = canvas
+        self.theme_name = theme
+        self.live: LiveSession | None = None
+        self.project_path: str | None = None
+        self.view: SessionView | None = None
+        self.tablet: TabletWatch | None = None
+        self._simulating: JournalEntry | None = None
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="panel"):
+            with Horizontal(id="top"):
+                yield SceneView(self.canvas, self.theme_name, id="scene")
+                yield TimelineTree(id="timeline")
+            yield TimeSlider(id="slider")
+            yield NarrationBar(id="narration")
+            yield Controls(id="controls")
+            yield StatusBar(id="status")
+        yield Static("", id="too-small")
+
+    # -- wiring ------------------------------------------------------------------------------------------------
+
+    def attach(self, live: LiveSession, journal: Path | None) -> None:
+        self.live = live
+        self.query_one(StatusBar).set(journal=f"journal {journal.name}" if journal else "not journaling")
+
+    def watch_tablet(self, device: str | None, serial: str | None) -> None:
+        if self.live is None:
+            return
+        self.tablet = TabletWatch(self.live.submit, lambda text: self.post_message(DeviceStatus(text)),
+                                  spec=device, serial=serial, mapping=self.live.session.pen.mapping)
+        self.live.on_stop(self.tablet.stop)
+        self.tablet.start()
+
+    def replay(self, entries: tuple[JournalEntry, ...], speed: float) -> None:
+        if self.live is None:
+            return
+        status = self.query_one(StatusBar)
+        status.set(activity=f"replaying {len(entries)} inputs")
+        self.live.replay(entries, speed=speed,
+                         on_done=lambda: self.post_message(DeviceStatus("")))
+
+    def show(self, view: SessionView) -> None:
+        self.view = view
+        try:
+            scene = self.query_one(SceneView)
+        except NoMatches:  # a view arriving while the app closes
+            return
+        scene.show(view)
+        self.query_one(TimelineTree).show(view)
+        self.query_one(TimeSlider).show(view)
+        self.query_one(NarrationBar).show(view, self.canvas)
+        status = self.query_one(StatusBar)
+        pen = next((f"pen {state} {p:.2f}" for state, p in view.pens.values() if state != "out of range"), None)
+        status.set(pen=pen or "pen out of range")
+        if self._simulating is not None and view.t >= self._simulating.t:
+            self._simulating = None
+            status.set(activity="simulation done" if view.search is not None else "")
+        status.show(view)
+
+    def on_device_status(self, message: DeviceStatus) -> None:
+        if message.text:
+            self.query_one(StatusBar).set(device=message.text)
+        else:  # the replay ended
+            self.query_one(StatusBar).set(activity="replay done: you are in control")
+
+    def on_scene_view_pen(self, message: SceneView.Pen) -> None:
+        if self.live is not None:
+            self.live.mouse.push(message.x, message.y, p=PRESSURE if message.tip else 0.0, tip=message.tip,
+                                 in_range=message.in_range, eraser=message.eraser)
+
+    def on_timeline_tree_seek(self, message: TimelineTree.Seek) -> None:
+        self._seek(message.t)
+        self.query_one(SceneView).emphasise(message.components)
+
+    def on_time_slider_seek(self, message: TimeSlider.Seek) -> None:
+        self._seek(message.t)
+        self.query_one(SceneView).emphasise(())
+
+    def _seek(self, t: float) -> None:
+        if self.view is not None and self.view.mode != "demo":
+            self._command("mode", "demo")
+        self._command("seek", round(t, 6))
+
+    async def on_controls_action(self, message: Controls.Action) -> None:
+        await self.run_action(message.name)
+
+    def on_resize(self, event: events.Resize) -> None:
+        small = event.size.width < MIN_WIDTH or event.size.height < MIN_HEIGHT
+        self.set_class(small, "too-small")
+        if small:
+            self.query_one("#too-small", Static).update(
+                f"The terminal is {event.size.width}x{event.size.height}: PhysInk needs at least "
+                f"{MIN_WIDTH}x{MIN_HEIGHT}. Make the window larger.")
+
+    # -- commands ------------------------------------------------------------------------------------------------
+
+    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
+        return self.live.command(name, *args, project=project) if self.live is not None else None
+
+    def action_sketch(self) -> None:
+        self._command("mode", "sketch")
+
+    def action_demo(self) -> None:
+        self._command("mode", "demo")
+
+    def action_play_pause(self) -> None:
+        if self.view is not None and self.view.mode != "demo":
+            self._command("mode", "demo")
+        self._command("pause" if self.view is not None and self.view.playing else "play")
+
+    def action_stop(self) -> None:
+        self._command("stop")
+
+    def action_seek(self, direction: int) -> None:
+        view = self.view
+        if view is None or view.mode != "demo":
+            return
+        self._command("seek", round(min(max(view.clock + direction * SEEK_STEP, 0.0), view.duration), 6))
+
+    def action_undo(self) -> None:
+        self._command("undo")
+
+    def action_redo(self) -> None:
+        self._command("redo")
+
+    def action_clear(self) -> None:
+        self._command("clear")
+
+    def action_label(self) -> None:
+        view = self.view
+        target = "selected" if view is not None and view.selected else "last"
+        what = view.scene.called(view.selected) if view is not None and view.selected else "the last body drawn"
+
+        def done(text: str | None) -> None:
+            if text:
+                self._command("label", target, text)
+        self.app.push_screen(PromptModal(f"Label for {what}:", placeholder="ball"), done)
+
+    def action_timeline(self) -> None:
+        view = self.view
+        text = "Nothing demonstrated yet: press d for demo mode and drag a body."
+        if view is not None and view.timeline is not None and view.timeline.events:
+            text = timeline_text(view.timeline, view.scene.names())
+        self.app.push_screen(TextScreen("Timeline", text))
+
+    def action_simulate(self) -> None:
+        entry = self._command("simulate")
+        if entry is not None:
+            self._simulating = entry
+            started = time.monotonic()
+            status = self.query_one(StatusBar)
+
+            def tick() -> None:
+                if self._simulating is not entry:
+                    timer.stop()
+                    return
+                status.set(activity=f"simulating… {time.monotonic() - started:.0f} s (the session resumes when "
+                                    "the search ends)")
+            timer = self.set_interval(0.5, tick)
+            tick()
+
+    def action_settings(self) -> None:
+        self.app.push_screen(SettingsScreen(self.app.config), self.app.adopt_settings)  # type: ignore[attr-defined]
+
+    def set_theme(self, theme: str) -> None:
+        self.theme_name = theme
+        self.query_one(SceneView).set_theme(theme)
+
+    def action_adopt(self) -> None:
+        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's: one
+        journaled ``load`` with the project embedded, so it is undoable and a replay rebuilds it."""
+        view = self.view
+        if view is None or view.search is None or self.live is None:
+            self.notify("nothing to adopt: simulate first (g)", severity="warning")
+            return
+        search = view.search
+        try:
+            scene = apply(view.scene, search.parameters)
+            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas))
+        except PhysinkError as exc:
+            self.app.push_screen(ErrorModal("Cannot adopt the simulation", str(exc)))
+            return
+        self._command("load", "simulation", project=json.loads(text))
+        if not search.found:
+            self.notify("adopted the best simulation found, which is not equivalent to the demonstration "
+                        "(undo with u)", severity="warning")
+
+    def action_help(self) -> None:
+        self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),
+                                         b.description) for b in self.BINDINGS))
+
+    # -- files ---------------------------------------------------------------------------------------------------
+
+    def action_save(self) -> None:
+        default = self.project_path or "machine.physink.json"
+        self.app.push_screen(PromptModal("Save the project as:", default), self.save_project)
+
+    def save_project(self, path: str | None) -> None:
+        view = self.view if self.live is None else self.live.runner.latest_view()
+        if not path or view is None or self.live is None:
+            return
+        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas)
+        try:
+            save_project(project, path)
+        except PhysinkError as exc:
+            self.app.push_screen(ErrorModal("Cannot save", str(exc)))
+            return
+        self.project_path = path
+        self._command("save", os.path.abspath(path))
+        self.app.mark_saved(view)  # type: ignore[attr-defined]
+        self.notify(f"saved {path}")
+
+    def action_load(self) -> None:
+        self.app.push_screen(PromptModal("Load the project:", self.project_path or ""), self.open_project)
+
+    def open_project(self, path: str | None) -> None:
+        if not path:
+            return
+        try:
+            with open(path, "rb") as f:
+                text = f.read().decode("utf-8")
+            decode_project(text, path)
+            obj = json.loads(text)
+        except (OSError, UnicodeDecodeError) as exc:
+            self.app.push_screen(ErrorModal("Cannot load", f"{path}: {exc}"))
+            return
+        except PhysinkError as exc:
+            self.app.push_screen(ErrorModal("Cannot load", str(exc)))
+            return
+        self.project_path = path
+        self._command("load", os.path.abspath(path), project=obj)
+
+    # -- export --------------------------------------------------------------------------------------------------
+
+    def action_export(self) -> None:
+        view = self.view
+        if view is None or view.timeline is None or not view.timeline.events:
+            self.notify("nothing demonstrated to export yet", severity="warning")
+            return
+        self._export(view, storage.exports_dir(), self.query_one(StatusBar))
+
+    @work(thread=True, exclusive=True, exit_on_error=False, group="export", description="export video")
+    def _export(self, view: SessionView, folder: Path, status: StatusBar) -> None:
+        from textual.worker import get_current_worker
+
+        from physink_tui.render.export import Export, Look
+
+        worker = get_current_worker()
+        folder.mkdir(parents=True, exist_ok=True)
+        path = storage.new_journal_path(folder).with_suffix("").with_suffix(".mp4")
+
+        def progress(done: int, total: int) -> None:
+            if worker.is_cancelled:
+                raise _Cancelled
+            self.app.call_from_thread(status.set, activity=f"exporting {done}/{total} frames")
+
+        try:
+            Export(view.scene, view.timeline, self.canvas, Look(width=960, height=600)).video(path, progress)
+        except _Cancelled:
+            self.app.call_from_thread(status.set, activity="export cancelled")
+            return
+        except PhysinkError as exc:
+            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", str(exc)))
+            return
+        self.app.call_from_thread(status.set, activity=f"exported {path}")
+
+    def action_cancel(self) -> None:
+        self.workers.cancel_group(self, "export")
+
+    def stop_workers(self) -> None:
+        self.workers.cancel_group(self, "export")

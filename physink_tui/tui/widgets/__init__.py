@@ -1,0 +1,1 @@
+"""The TUI's widgets: thin views of `SessionView` snapshots that post intent messages."""

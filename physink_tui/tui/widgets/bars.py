@@ -1,0 +1,82 @@
+"""The narration bar (what is happening, in words) and the status bar (mode, device, pen, journal); both only
+show what the `SessionView` and the drivers say.
+"""
+
+from __future__ import annotations
+
+from textual.widgets import Static
+
+from physink_tui.render.frames import Demonstration
+from physink_tui.session.view import SessionView
+
+
+class NarrationBar(Static):
+    """The narration of the event at the playback clock in demo mode, else the latest message."""
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__("", **kwargs)
+        self._demo: Demonstration | None = None
+        self.text = ""
+
+    def show(self, view: SessionView, canvas: tuple[float, float]) -> None:
+        text = ""
+        if view.mode == "demo" and view.timeline is not None and view.timeline.events:
+            demo = self._demo
+            if demo is None or demo.timeline is not view.timeline or demo.scene is not view.scene:
+                demo = self._demo = Demonstration(view.scene, view.timeline, canvas)
+            said = demo.subtitle_at(min(view.clock, demo.duration))
+            if said:
+                text = said
+        if not text and view.messages:
+            text = view.messages[-1].text
+        if text != self.text:
+            self.text = text
+            self.update(text)
+
+
+class StatusBar(Static):
+    """One line: mode (in demo mode the clock, and ``● recording`` while the pen moves a body), what a worker is
+    doing, pen, device, journal."""
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__("", **kwargs)
+        self.device = "looking for a tablet…"
+        self.journal = ""
+        self.activity = ""
+        self.pen = "pen out of range"
+        self._view: SessionView | None = None
+
+    def show(self, view: SessionView) -> None:
+        self._view = view
+        self._refresh()
+
+    def set(self, *, device: str | None = None, journal: str | None = None, activity: str | None = None,
+            pen: str | None = None) -> None:
+        if device is not None:
+            self.device = device
+        if journal is not None:
+            self.journal = journal
+        if activity is not None:
+            self.activity = activity
+        if pen is not None:
+            self.pen = pen
+        self._refresh()
+
+    def _refresh(self) -> None:
+        view = self._view
+        parts = []
+        if view is not None:
+            mode = view.mode.upper()
+            if view.mode == "demo":
+                holding = any(state in ("touching", "touching with a button pressed") for state, _ in
+                              view.pens.values())
+                state = "● recording" if holding else "playing" if view.playing else "paused"
+                mode += f" {view.clock:5.2f}/{view.duration:.2f} s {state}"
+            parts.append(mode)
+            parts.append(f"{len(view.scene.components)} parts")
+        if self.activity:
+            parts.append(self.activity)
+        parts += [self.pen, self.device]
+        if self.journal:
+            parts.append(self.journal)
+        self.update("  │  ".join(parts))

@@ -1,0 +1,69 @@
+"""SVG snapshots of the TUI's main states (pytest-textual-snapshot; review the pictures before updating them with
+``--snapshot-update``): empty, the egg cracker sketched, its demonstration played back, the timeline as text.
+
+The states are built from journal entries handled before the live session starts, so each picture is the same
+on every run (no tablet, no journal file named in the status bar).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from physink_tui.commands.demo import demo_journal
+from physink_tui.formats.journal.entries import CommandEntry
+from physink_tui.tui.app import TuiOptions, make_app
+from tests.tui_helpers import SIZE, until
+
+NO_SETTINGS = Path("/nonexistent/physink/config.json")
+"""The default settings, whatever the user's own are."""
+
+
+def app_with(prior=(), header=None):
+    return make_app(TuiOptions(header=header, prior=tuple(prior), tablet=False, journal=False, recover=False,
+                               config_path=NO_SETTINGS))
+
+
+def waiting_for(predicate, *keys):
+    async def run_before(pilot) -> None:
+        await until(pilot, predicate)
+        await pilot.pause(0.3)
+        if keys:
+            await pilot.press(*keys)
+            await pilot.pause(0.3)
+    return run_before
+
+
+def sketched():
+    """The egg cracker drawn and labelled, before the demonstration."""
+    header, entries = demo_journal()
+    first_mode = next(i for i, e in enumerate(entries) if isinstance(e, CommandEntry) and e.name == "mode")
+    return header, entries[:first_mode]
+
+
+def demonstrated(at: float):
+    """The egg cracker demonstrated, then shown in demo mode at timeline time ``at``."""
+    header, entries = demo_journal()
+    end = entries[-1].t
+    return header, [*entries, CommandEntry(end + 0.1, "mode", ("demo",)), CommandEntry(end + 0.2, "seek", (at,))]
+
+
+def test_empty(snap_compare) -> None:
+    assert snap_compare(app_with(), terminal_size=SIZE, run_before=waiting_for(lambda v: True))
+
+
+def test_egg_cracker_sketched(snap_compare) -> None:
+    header, prior = sketched()
+    assert snap_compare(app_with(prior, header), terminal_size=SIZE,
+                        run_before=waiting_for(lambda v: len(v.scene.components) >= 8))
+
+
+def test_demo_playback(snap_compare) -> None:
+    header, prior = demonstrated(1.0)
+    assert snap_compare(app_with(prior, header), terminal_size=SIZE,
+                        run_before=waiting_for(lambda v: v.mode == "demo" and v.clock == 1.0))
+
+
+def test_timeline_view(snap_compare) -> None:
+    header, prior = demonstrated(1.0)
+    assert snap_compare(app_with(prior, header), terminal_size=SIZE,
+                        run_before=waiting_for(lambda v: v.mode == "demo" and v.clock == 1.0, "t"))
