@@ -1,0 +1,92 @@
+"""The recogniser contract (decode one utterance against a grammar) and the factory that picks a backend lazily;
+deciding what a result means is the listener's.
+
+A backend turns 16 kHz mono int16 samples into `Decoded`: the best path through the grammar, word by word, each
+with the backend's own score (higher is better) and the backend's `Recogniser.threshold` under which a word is too
+poorly matched to trust. The grammar restricts the search; it cannot stop any sound from being forced into it, so
+the score is what tells a sentence from noise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+
+from physink_tui.input.speech.grammar import SpeechGrammar
+
+
+@dataclass(frozen=True, slots=True)
+class Word:
+    """One word of a decoded utterance.
+
+    Attributes:
+        word: the word, lower-case, without a pronunciation variant's ``(2)``.
+        start: seconds from the start of the audio decoded.
+        end: seconds from the start of the audio decoded (> start).
+        score: the backend's goodness of fit (pocketsphinx: mean log acoustic likelihood per 10 ms frame relative
+            to the best senone, <= 0; vosk: its word confidence in [0, 1]).
+    """
+
+    word: str
+    start: float
+    end: float
+    score: float
+
+
+@dataclass(frozen=True, slots=True)
+class Decoded:
+    """The best path through the grammar for one utterance.
+
+    Attributes:
+        text: the words, space-separated (may be empty or stop short of a whole sentence).
+        words: the words with times and scores, in order.
+        seconds: the audio's length.
+        decode_seconds: wall time the decoding took (for real-time factors; never used to decide anything).
+    """
+
+    text: str
+    words: tuple[Word, ...]
+    seconds: float
+    decode_seconds: float = 0.0
+
+    @property
+    def worst(self) -> float | None:
+        """The lowest word score, or None without words."""
+        return min((w.score for w in self.words), default=None)
+
+
+class Recogniser(Protocol):
+    """A grammar-restricted speech recogniser (pocketsphinx or vosk)."""
+
+    name: str
+    threshold: float
+    """Words scoring below this are too poorly matched: the utterance is rejected."""
+
+    def speakable(self, word: str) -> bool:
+        """Whether the recogniser can say ``word`` (it is in its dictionary)."""
+        ...
+
+    def set_grammar(self, grammar: SpeechGrammar) -> None:
+        """Decode against ``grammar`` from now on."""
+        ...
+
+    def decode(self, samples: np.ndarray) -> Decoded:
+        """The best path through the grammar for one whole utterance of 16 kHz mono int16 samples."""
+        ...
+
+
+def make_recogniser(vosk_model: str | None = None) -> Recogniser:
+    """The embedded pocketsphinx recogniser, or vosk with the model in the directory ``vosk_model``.
+
+    Raises:
+        SpeechError: the backend is not installed, or the model directory cannot be used.
+    """
+    if vosk_model is not None:
+        from physink_tui.input.speech.vosk_backend import VoskRecogniser
+
+        return VoskRecogniser(vosk_model)
+    from physink_tui.input.speech.pocketsphinx_backend import PocketsphinxRecogniser
+
+    return PocketsphinxRecogniser()
