@@ -50,8 +50,8 @@ OUT_OF_GRAMMAR = [
 # (synthesiser, voice, words per minute or flite's duration stretch, noise SNR in dB or None); every sentence
 # is made in two of these, by turns
 VOICES = [
-    ("espeak-ng", "en-us+klatt", 150, None), ("flite", "slt", 1.0, None), ("espeak-ng", "en-us+klatt4", 170, 20.0),
-    ("flite", "rms", 1.1, None), ("espeak-ng", "en-us+klatt2", 140, None), ("flite", "slt", 0.9, 15.0),
+    ("espeak-ng", "en-us+klatt", 150, None), ("flite", "slt", 1.0, None), ("espeak-ng", "en-us+klatt4", 170, 25.0),
+    ("flite", "rms", 1.1, None), ("espeak-ng", "en-us+klatt2", 140, None), ("flite", "slt", 0.9, 30.0),
     ("espeak-ng", "en-us+klatt6", 160, None), ("flite", "rms", 1.0, 20.0),
 ]
 

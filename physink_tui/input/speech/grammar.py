@@ -127,14 +127,23 @@ class SpeechGrammar:
         return tuple(sorted({"label", "the", *self.verbs,
                              *(w for n in (*self.prepositions, *self.components) for w in n.split())}))
 
-    def jsgf(self) -> str:
-        """The grammar in JSGF (CMU Sphinx's grammar format); top rule ``<command>``."""
+    def jsgf(self, garbage: Iterable[str] = (), garbage_weight: float = 0.01) -> str:
+        """The grammar in JSGF (CMU Sphinx's grammar format); top rule ``<command>``.
+
+        ``garbage`` words (one per phone, say) make a loop that competes with the sentences at ``garbage_weight``
+        against 1 for each shape: speech outside the grammar takes the loop rather than being forced into a
+        sentence.
+        """
         def alternatives(items: Iterable[str]) -> str:
             return " | ".join(items) or "<VOID>"
+        garbage = list(garbage)
+        top = (f"public <command> = /1/ <label> | /1/ <event> | /{garbage_weight:g}/ <garbage>+;" if garbage else
+               "public <command> = <label> | <event>;")
         return "\n".join([
             "#JSGF V1.0;",
             "grammar physink;",
-            "public <command> = <label> | <event>;",
+            top,
+            *([f"<garbage> = {alternatives(garbage)};"] if garbage else []),
             "<label> = label <component>;",
             "<event> = [the] <component> <verb> [[<prep>] [the] <component>];",
             f"<component> = {alternatives(self.components)};",

@@ -18,7 +18,7 @@ from physink_tui.input.speech.audio import RATE
 from physink_tui.input.speech.grammar import DEFAULT_VOCABULARY, Command, SpeechGrammar
 from physink_tui.input.speech.recogniser import Decoded, Recogniser
 from physink_tui.input.speech.vad import VadConfig, speech_bounds
-from physink_tui.timeline.phrases import Vocabulary
+from physink_tui.timeline.phrases import ARTICLES, Vocabulary
 
 MAX_SECONDS = 8.0
 """Longer speech is no command of this grammar: rejected without decoding."""
@@ -89,6 +89,9 @@ class Listener:
         words = [w for w in decoded.words]
         first = words[0].start if words else 0.0
         at = began + start + first
+        if decoded.outside:
+            heard = f" (the rest: {decoded.text!r})" if decoded.text else ""
+            return Utterance(decoded.text, None, f"speech outside the grammar{heard}", at, end - start, decoded)
         command = self.grammar.parse(decoded.text)
         if command is None:
             why = f"not a sentence of the grammar: {decoded.text!r}" if decoded.text else "no words recognised"
@@ -97,4 +100,8 @@ class Listener:
         if worst.score < self.recogniser.threshold:
             return Utterance(decoded.text, None, f"poorly matched: {worst.word!r} scored {worst.score:.2f} "
                              f"(at least {self.recogniser.threshold:g} is needed)", at, end - start, decoded)
+        unsure = min((w for w in words if w.word not in ARTICLES), key=lambda w: w.confidence)
+        if unsure.confidence < self.recogniser.min_confidence:
+            return Utterance(decoded.text, None, f"unsure: {unsure.word!r} is only {unsure.confidence:.0%} likely "
+                             f"(at least {self.recogniser.min_confidence:.0%} is needed)", at, end - start, decoded)
         return Utterance(decoded.text, command, None, at, end - start, decoded)

@@ -3,7 +3,10 @@
 British pronunciations are added for every grammar word the US dictionary has in one accent only (non-rhotic
 "platform" P L AE T F AO M, the broad A of "basket" B AA S K IH T; DESIGN.md "Speech conventions"). Each word is
 scored by its mean log acoustic likelihood per 10 ms frame (pocketsphinx normalises a frame's senone scores to its
-best one, so 0 is a perfect fit); `THRESHOLD` was calibrated on the fixtures (tests/speech/, docs/BENCHMARKS.md).
+best one, so 0 is a perfect fit) and by its posterior probability in the decoder's lattice; `THRESHOLD` and
+`MIN_CONFIDENCE` were calibrated on the fixtures (tests/speech/, docs/BENCHMARKS.md). A grammar forces any sound
+into a sentence, so the grammar given to pocketsphinx also has a loop of single phones (`GARBAGE`, at weight
+`GARBAGE_WEIGHT`): speech outside the grammar fits the loop better and comes out as `Decoded.outside`.
 """
 
 from __future__ import annotations
@@ -11,6 +14,7 @@ from __future__ import annotations
 import math
 import re
 import time
+from typing import Any
 
 import numpy as np
 
@@ -21,7 +25,15 @@ from physink_tui.input.speech.recogniser import Decoded, Word
 
 THRESHOLD = -6.0
 """Words whose mean log likelihood per frame is below this are rejected (calibrated on the fixtures)."""
+MIN_CONFIDENCE = 0.5
+"""Words other than articles with a lattice posterior below this are rejected (calibrated on the fixtures)."""
+GARBAGE = tuple(f"gb{p.lower()}" for p in """AA AE AH AO AW AY B CH D DH EH ER EY F G HH IH IY JH K L M N NG OW OY P R S
+    SH T TH UH UW V W Y Z ZH""".split())
+"""One pseudo-word per phone of the en-us model, spelled ``gb`` + the phone (``gbaa`` is AA)."""
+GARBAGE_WEIGHT = 0.01
+"""The phone loop's weight against each sentence shape's 1 (calibrated on the out-of-grammar fixtures)."""
 FRAME_SECONDS = 0.01
+_GARBAGE = frozenset(GARBAGE)
 _VARIANT = re.compile(r"\(\d+\)$")
 _VOWELS = {"AA", "AE", "AH", "AO", "AW", "AY", "EH", "ER", "EY", "IH", "IY", "OW", "OY", "UH", "UW"}
 _BROAD_A = {"S", "F", "TH", "N"}  # "basket", "after", "path", "dance": AE before these is AA in the south of England
@@ -63,6 +75,7 @@ class PocketsphinxRecogniser:
 
     name = "pocketsphinx"
     threshold = THRESHOLD
+    min_confidence = MIN_CONFIDENCE
 
     def __init__(self, **options: object) -> None:
         """``options`` are pocketsphinx configuration parameters over the defaults (benchmarks tune with them)."""
@@ -71,50 +84,70 @@ class PocketsphinxRecogniser:
         except ImportError as exc:
             raise SpeechError(f"pocketsphinx is not installed ({exc}); pip install pocketsphinx") from None
         config = {"lm": None, "loglevel": "FATAL", "samprate": RATE, **options}
-        self._decoder = pocketsphinx.Decoder(**config)
+        # Two decoders on the same model: the screen (sentences against the phone loop, no lattice: the loop makes
+        # lattices huge) and the words (sentences only, with the lattice that gives each word's posterior).
+        self._screen = pocketsphinx.Decoder(**{**config, "bestpath": False})
+        self._words = pocketsphinx.Decoder(**config)
         self._added: set[str] = set()
         self._grammar: SpeechGrammar | None = None
+        for word in GARBAGE:
+            self._screen.add_word(word, word[2:].upper(), word == GARBAGE[-1])
 
     def speakable(self, word: str) -> bool:
-        return self._decoder.lookup_word(word) is not None
+        return self._words.lookup_word(word) is not None
 
     def set_grammar(self, grammar: SpeechGrammar) -> None:
         for word in grammar.words():
             self._add_variants(word)
         try:
-            self._decoder.add_jsgf_string("physink", grammar.jsgf())
+            self._screen.add_jsgf_string("physink", grammar.jsgf(GARBAGE, GARBAGE_WEIGHT))
+            self._words.add_jsgf_string("physink", grammar.jsgf())
         except (ValueError, RuntimeError) as exc:
             raise SpeechError(f"the speech grammar cannot be used by pocketsphinx: {exc}") from None
-        self._decoder.activate_search("physink")
+        self._screen.activate_search("physink")
+        self._words.activate_search("physink")
         self._grammar = grammar
 
     def _add_variants(self, word: str) -> None:
         if word in self._added:
             return
         self._added.add(word)
-        known = [p for p in (self._decoder.lookup_word(word if n == 1 else f"{word}({n})") for n in range(1, 6)) if p]
+        lookup = self._words.lookup_word
+        known = [p for p in (lookup(word if n == 1 else f"{word}({n})") for n in range(1, 6)) if p]
         extra = [v for v in (british(p) for p in known) if v is not None and v not in known]
         extra = list(dict.fromkeys(extra))
         for n, phones in enumerate(extra, start=len(known) + 1):
-            self._decoder.add_word(f"{word}({n})", phones, n == len(known) + len(extra))
+            for decoder in (self._screen, self._words):
+                decoder.add_word(f"{word}({n})", phones, n == len(known) + len(extra))
 
     def decode(self, samples: np.ndarray) -> Decoded:
         if self._grammar is None:
             raise SpeechError("no grammar set before decoding")
         started = time.perf_counter()
-        d = self._decoder
-        d.start_utt()
-        d.process_raw(dithered(samples).tobytes(), full_utt=True)
-        d.end_utt()
-        hyp = d.hyp()
+        audio = dithered(samples).tobytes()
+        screened = list(_run(self._screen, audio))
+        if any(_VARIANT.sub("", seg.word) in _GARBAGE for seg in screened):
+            return Decoded("", (), len(samples) / RATE, time.perf_counter() - started, True)
         words = []
-        if hyp is not None:
-            for seg in d.seg():
-                word = _VARIANT.sub("", seg.word)
-                if word.startswith("<") or word.startswith("["):
-                    continue  # <s>, </s>, <sil>, fillers
-                frames = seg.end_frame - seg.start_frame + 1
-                score = math.log(seg.ascore) / frames if seg.ascore > 0 else -math.inf
-                words.append(Word(word, seg.start_frame * FRAME_SECONDS, (seg.end_frame + 1) * FRAME_SECONDS, score))
+        for seg in _run(self._words, audio):
+            word = _VARIANT.sub("", seg.word)
+            if word.startswith(("<", "[", "(")):
+                continue  # <s>, </s>, <sil>, fillers, (NULL) transitions
+            frames = seg.end_frame - seg.start_frame + 1
+            score = math.log(seg.ascore) / frames if seg.ascore > 0 else -math.inf
+            words.append(Word(word, seg.start_frame * FRAME_SECONDS, (seg.end_frame + 1) * FRAME_SECONDS, score,
+                              seg.prob))
         return Decoded(" ".join(w.word for w in words), tuple(words), len(samples) / RATE,
                        time.perf_counter() - started)
+
+
+def _run(decoder: Any, audio: bytes) -> list[Any]:
+    """The word segments of ``decoder``'s best path through 16-bit ``audio`` (none without a hypothesis)."""
+    decoder.reinit_feat()  # the cepstral mean starts from the model's prior, not from the last utterance, and a
+    decoder.start_utt()  # first pass without search sets it from this audio: a decode depends on its audio only
+    decoder.process_raw(audio, no_search=True, full_utt=True)
+    decoder.end_utt()
+    decoder.start_utt()
+    decoder.process_raw(audio, full_utt=True)
+    decoder.end_utt()
+    return list(decoder.seg()) if decoder.hyp() is not None else []

@@ -27,12 +27,15 @@ class Word:
         end: seconds from the start of the audio decoded (> start).
         score: the backend's goodness of fit (pocketsphinx: mean log acoustic likelihood per 10 ms frame relative
             to the best senone, <= 0; vosk: its word confidence in [0, 1]).
+        confidence: the word's posterior probability given the audio and the grammar, in [0, 1] (pocketsphinx:
+            from its lattice, shared among a word's pronunciations; vosk: its confidence again).
     """
 
     word: str
     start: float
     end: float
     score: float
+    confidence: float = 1.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -44,12 +47,15 @@ class Decoded:
         words: the words with times and scores, in order.
         seconds: the audio's length.
         decode_seconds: wall time the decoding took (for real-time factors; never used to decide anything).
+        outside: whether some of the audio matched the recogniser's garbage model (sounds outside the grammar)
+            better than any word; those stretches are not in ``words``.
     """
 
     text: str
     words: tuple[Word, ...]
     seconds: float
     decode_seconds: float = 0.0
+    outside: bool = False
 
     @property
     def worst(self) -> float | None:
@@ -63,6 +69,8 @@ class Recogniser(Protocol):
     name: str
     threshold: float
     """Words scoring below this are too poorly matched: the utterance is rejected."""
+    min_confidence: float
+    """Words (articles aside) less likely than this are too uncertain: the utterance is rejected."""
 
     def speakable(self, word: str) -> bool:
         """Whether the recogniser can say ``word`` (it is in its dictionary)."""
