@@ -1,1 +1,2 @@
-"""Speech input: recordings and the microphone to grammar-restricted commands, offline; acting on them is the session's."""
+"""Speech input: recordings and the microphone to grammar-restricted commands, offline; acting on them is the
+session's."""

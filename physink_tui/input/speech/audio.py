@@ -1,4 +1,5 @@
-"""Reads WAV recordings into 16 kHz mono 16-bit samples (numpy), resampling as needed; recognising them is not done here.
+"""Reads WAV recordings into 16 kHz mono 16-bit samples (numpy), resampling as needed; recognising them is left to
+others.
 
 >>> import numpy as np
 >>> resample(np.ones(441, dtype=np.float64), 44100).shape
@@ -42,7 +43,7 @@ def read_wav(path: str | Path, data: bytes | None = None) -> np.ndarray:
                                              wav.getnframes())
             pcm = wav.readframes(frames)
     except (wave.Error, EOFError) as exc:
-        raise SpeechError(f"{name}: not a PCM WAV file ({exc}); expected 16-bit mono like "
+        raise SpeechError(f"{name}: not a PCM WAV file ({exc or 'it ends inside its header'}); expected a WAV like "
                           "'ffmpeg -i IN -ac 1 -ar 16000 OUT.wav' writes", name) from None
     if width not in _WIDTHS or channels < 1 or rate < 4000:
         raise SpeechError(f"{name}: unsupported WAV: {channels} channel(s), {width * 8}-bit, {rate} Hz; expected "
