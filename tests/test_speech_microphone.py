@@ -71,7 +71,7 @@ def test_each_utterance_is_heard_with_the_time_it_began() -> None:
 def test_without_portaudio_listening_is_a_microphone_error(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setitem(sys.modules, "sounddevice", None)  # import fails as it does without the library
     mic = MicrophoneListener(Listener(make_recogniser()), lambda u: None)
-    with pytest.raises(MicrophoneError, match="PortAudio cannot be loaded.*libportaudio2"):
+    with pytest.raises(MicrophoneError, match=r"PortAudio cannot be loaded.*libportaudio2"):
         mic.start()
     assert not mic.listening
     mic.stop()  # harmless

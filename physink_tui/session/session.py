@@ -409,7 +409,7 @@ class Session:
             self._label(self.selected, text)
         elif (recent := self.watch.recent(t)) is not None and recent in self.scene.components:
             self._label(recent, text)
-        elif self.watch.drawing and self.mode == "sketch" or self.sketch.pending is not None:
+        elif (self.watch.drawing and self.mode == "sketch") or self.sketch.pending is not None:
             self.watch.wait(text, t)
         elif self.watch.hover is not None and (under := self._body_under(*self.watch.hover)) is not None:
             self._label(under, text)
