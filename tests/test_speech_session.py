@@ -88,3 +88,12 @@ def test_a_stroke_that_makes_nothing_is_told() -> None:
     session = _run([*stroke, SayEntry(0.03, "label crate"), _away(3.0)])
     assert not session.scene.components
     assert any("made no component to label" in m.text for m in session.messages)
+
+
+def test_a_typed_label_the_dictionary_lacks_is_kept_and_reported_as_not_speakable() -> None:
+    from physink_tui.formats.journal.entries import CommandEntry
+
+    entries = [*_stroke(0.0, _box(0.1, 0.1, 0.3, 0.3)), CommandEntry(1.0, "label", ("b1", "zorblax crate"))]
+    session = _run(entries)
+    assert _labels(session) == {"b1": "zorblax crate"}
+    assert "'zorblax' cannot be said" in session.messages[-1].text

@@ -35,6 +35,7 @@ from physink_tui.formats.json_checks import Place
 from physink_tui.formats.project.codec import decode_project_object, project_vocabulary, vocabulary_lines
 from physink_tui.input.journal_replay import PEN_DEVICE, add_journal_device, pen_input_for
 from physink_tui.input.pen.gestures import Gesture
+from physink_tui.input.speech.dictionary import unspeakable_words
 from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.sources import RawReport, SourceEnded
@@ -435,6 +436,10 @@ class Session:
             return
         scene = self.scene.update(replace(component, label=text))
         self.commit(Document(scene, self.document.timeline), f"label {component_id} {text}")
+        unsayable = unspeakable_words(text)
+        if unsayable:
+            self.tell(f"label {text!r}: {', '.join(map(repr, unsayable))} cannot be said (not in the speech "
+                      "dictionary); the label is kept, and speech cannot name this part")
 
     def _forget_gone(self) -> None:
         """A selection or last stroke whose component is gone (erased, undone) is forgotten."""
