@@ -35,10 +35,10 @@ from physink_tui.formats.json_checks import Place
 from physink_tui.formats.project.codec import decode_project_object, project_vocabulary, vocabulary_lines
 from physink_tui.input.journal_replay import PEN_DEVICE, add_journal_device, pen_input_for
 from physink_tui.input.pen.gestures import Gesture
-from physink_tui.input.speech.dictionary import unspeakable_words
 from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.sources import RawReport, SourceEnded
+from physink_tui.input.speech.dictionary import unspeakable_words
 from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session import simulation
