@@ -23,7 +23,7 @@ from physink_tui.input.speech.grammar import SpeechGrammar
 from physink_tui.input.speech.recogniser import Decoded, Word
 
 THRESHOLD = 0.6
-"""Words vosk is less confident of are rejected."""
+"""Words vosk is less confident of are rejected (not calibrated: no English vosk model is at hand to do it on)."""
 UNKNOWN = "[unk]"
 
 
@@ -85,7 +85,7 @@ class VoskRecogniser:
         if self._phrases is None:
             raise SpeechError("no grammar set before decoding")
         started = time.perf_counter()
-        recogniser = self._vosk.KaldiRecognizer(self._model, RATE, json.dumps(self._phrases))
+        recogniser = self._vosk.KaldiRecognizer(self._model, RATE, json.dumps(self._phrases, ensure_ascii=False))
         recogniser.SetWords(True)
         recogniser.AcceptWaveform(np.asarray(samples, dtype="<i2").tobytes())
         result = recogniser.FinalResult()
