@@ -22,8 +22,8 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from physink_tui.input.speech.audio import read_wav  # noqa: E402
+from physink_tui.input.speech.backends import make_recogniser  # noqa: E402
 from physink_tui.input.speech.listener import Listener  # noqa: E402
-from physink_tui.input.speech.recogniser import make_recogniser  # noqa: E402
 from physink_tui.timeline.phrases import ARTICLES  # noqa: E402
 
 SPEECH = ROOT / "tests" / "speech"

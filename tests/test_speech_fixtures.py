@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 
 from physink_tui.input.speech.audio import read_wav
+from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener, Utterance
-from physink_tui.input.speech.recogniser import make_recogniser
 
 SPEECH = Path(__file__).parent / "speech"
 MANIFEST = json.loads((SPEECH / "manifest.json").read_text())

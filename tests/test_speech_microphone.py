@@ -13,9 +13,9 @@ import pytest
 
 from physink_tui.errors import MicrophoneError
 from physink_tui.input.speech.audio import RATE, read_wav
+from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener, Utterance
 from physink_tui.input.speech.microphone import BLOCK, MicrophoneListener, sounddevice_stream
-from physink_tui.input.speech.recogniser import make_recogniser
 
 SPEECH = Path(__file__).parent / "speech"
 

