@@ -42,12 +42,12 @@ HANDLERS: dict[str, str] = {
     "equiv": "physink_tui.commands.equiv:run",
     "simulate": "physink_tui.commands.simulate:run",
     "listen": "physink_tui.commands.listen:run",
+    "kiosk": "physink_tui.commands.kiosk:run",
 }
 
 #: Subcommands not built yet: name -> where they are planned (shown to the user as is).
 PLANNED: dict[str, str] = {
     "tui": "a later issue: the Textual control panel",
-    "kiosk": "a later issue: the headless recording service",
 }
 
 
@@ -86,6 +86,16 @@ def _positive_rate(text: str) -> float:
         value = math.nan
     if not (math.isfinite(value) and value > 0):
         raise argparse.ArgumentTypeError(f"expected a positive number per second, got {text!r}")
+    return value
+
+
+def _positive_float(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}")
     return value
 
 
@@ -167,6 +177,18 @@ def build_parser() -> argparse.ArgumentParser:
         "kiosk", parents=[device], help="headless recording service: journals sessions, exports at their end"
     )
     p.add_argument("--out", metavar="DIR", required=True, help="folder for journals and exports")
+    p.add_argument("--replay", metavar="CAPTURE.hid", help="feed a capture as if it were a live tablet, paced by "
+                   "its timestamps")
+    p.add_argument("--speed", type=_positive_float, default=1.0, metavar="X",
+                   help="with --replay: X times faster (default: %(default)s)")
+    p.add_argument("--idle", type=_positive_float, default=120.0, metavar="SECONDS",
+                   help="a session ends after this long without input (default: %(default)s)")
+    p.add_argument("--hot-zones", metavar="FILE", help="hot zones file (JSON; default: a strip along the top edge: "
+                   "sketch/demo, undo, redo, end session)")
+    p.add_argument("--keep", type=_positive_int, metavar="N", help="keep at most N finished sessions (oldest retired)")
+    p.add_argument("--max-disk", metavar="SIZE", help="retire the oldest finished sessions beyond SIZE (e.g. 2G)")
+    p.add_argument("--video-size", type=_frame_size, default=(960, 600), metavar="WxH",
+                   help="the sessions' videos (default: 960x600)")
 
     sub.add_parser("devices", help="list pen tablets found (hidraw/hidapi, USB, serial)")
 

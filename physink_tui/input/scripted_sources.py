@@ -58,13 +58,17 @@ class ProgrammaticPenSource:
 
 
 class CaptureReplaySource:
-    """Plays one device of a capture as RawReports, with the capture's times (plus ``t0``)."""
+    """Plays one device of a capture as RawReports, with the capture's times (plus ``t0``); ``realtime`` paces
+    them by those times, ``speed`` times faster."""
 
     def __init__(self, capture: Capture, device_id: str = "tablet0", device_index: int = 0,
-                 realtime: bool = False, t0: float = 0.0) -> None:
+                 realtime: bool = False, t0: float = 0.0, speed: float = 1.0) -> None:
+        if not speed > 0:
+            raise ValueError(f"replay speed must be > 0, got {speed!r}")
         self.device_id = device_id
         self._events = capture.events_for(device_index)
         self._realtime = realtime
+        self._speed = speed
         self._t0 = t0
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
@@ -82,7 +86,7 @@ class CaptureReplaySource:
             if self._stop.is_set():
                 break
             if self._realtime:
-                delay = (event.t - first) - (time.monotonic() - start)
+                delay = (event.t - first) / self._speed - (time.monotonic() - start)
                 if delay > 0 and self._stop.wait(delay):
                     break
             last_t = self._t0 + event.t

@@ -1,0 +1,157 @@
+"""`physink kiosk`: the headless recording service on a live tablet or a replayed capture; the service itself is
+`physink_tui.kiosk`, this module only opens the tablet (or the capture), builds the journal header and handles
+the signals.
+
+``--replay CAPTURE.hid [--speed X]`` feeds a capture through the same path as a live tablet, paced by its
+timestamps X times faster; the sessions' input time is the capture's own (the runner's clock runs X times
+faster too), so a session replayed at any speed journals what the tablet sent when it sent it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+import threading
+import time
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from physink_tui.errors import DeviceError, PhysinkError
+from physink_tui.formats.journal.entries import JournalDevice, JournalHeader
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.hid.decoder import HidPenDecoder
+from physink_tui.input.hid.readers import open_reader
+from physink_tui.input.journal_compose import header_for_capture
+from physink_tui.input.pen.mapping import TabletMapping, mapping_to_header
+from physink_tui.input.pen.state import TipThresholds
+from physink_tui.input.reconnecting import ReconnectingSource
+from physink_tui.input.scripted_sources import CaptureReplaySource
+from physink_tui.input.serial_tablets.reader import SerialPenSource
+from physink_tui.input.sources import PenSource
+from physink_tui.kiosk.hot_zones import HotZones, read_zones
+from physink_tui.kiosk.store import SessionStore, parse_size
+
+if TYPE_CHECKING:
+    from physink_tui.kiosk.service import Kiosk
+
+CANVAS = (1600.0, 1000.0)
+DEVICE_ID = "tablet0"
+SERIAL_ID = "serial0"
+WAIT_S = 1.0
+"""Seconds between looks for a tablet while none is plugged in."""
+
+
+def log(line: str) -> None:
+    print(line, flush=True)
+
+
+def tablet_aspect(device: JournalDevice) -> float:
+    """The active area's width over its height: from the descriptor's physical size, else its logical ranges."""
+    try:
+        layouts = HidPenDecoder(device.descriptor, device.vid, device.pid, name=device.name or None).layouts
+    except PhysinkError:
+        return CANVAS[0] / CANVAS[1]
+    for layout in layouts.values():
+        if layout.size_mm is not None and layout.size_mm[1] > 0:
+            return layout.size_mm[0] / layout.size_mm[1]
+    return CANVAS[0] / CANVAS[1]
+
+
+def mapping_for(device: JournalDevice, zones: HotZones) -> TabletMapping:
+    """The canvas on the tablet's area beside the hot zones, the tablet's proportions kept."""
+    aspect = tablet_aspect(device)
+    return TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=aspect, tablet_height=1.0,
+                         area=zones.area)
+
+
+def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
+    capture = Capture.from_file(path)
+    if not capture.devices:
+        raise PhysinkError(f"{path}: the capture describes no device")
+    first = capture.devices[0]
+    device = JournalDevice(DEVICE_ID, first.name, first.bus, first.vid, first.pid, first.descriptor)
+    header = header_for_capture(Capture((first,), ()), mapping_for(device, zones))
+    return CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed), device, header
+
+
+def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSource, JournalDevice, JournalHeader]:
+    """Waits for the tablet (hot-plug), then a source that survives it being unplugged and plugged back."""
+    told = False
+    while True:
+        try:
+            reader = open_reader(spec, DEVICE_ID)
+            break
+        except DeviceError as exc:
+            if not told:
+                log(f"kiosk: waiting for a tablet ({exc})")
+                told = True
+            if kiosk._stop.wait(WAIT_S):
+                raise KeyboardInterrupt from None
+    info = reader.info
+    if not info.descriptor:
+        reader.stop()
+        raise DeviceError(f"{info.path}: its report descriptor is unknown, and a journal needs one")
+    device = JournalDevice(DEVICE_ID, info.name or None, info.bus, info.vid, info.pid, info.descriptor)
+    mapping = mapping_for(device, zones)
+    thresholds = TipThresholds()
+    header = JournalHeader(CANVAS[0], CANVAS[1], (device,), mapping_to_header(mapping), thresholds.down,
+                           thresholds.up)
+    source = ReconnectingSource(lambda: open_reader(spec, DEVICE_ID), DEVICE_ID, inner=reader)
+    return source, device, header
+
+
+def _serial_source(port: str, zones: HotZones, kiosk: Kiosk) -> tuple[PenSource, TabletMapping, JournalHeader]:
+    """Waits for an ISDV4 tablet on ``port``; its samples are in tablet space, mapped by the kiosk after the zones."""
+    told = False
+    while True:
+        source = SerialPenSource(port, SERIAL_ID)
+        try:
+            query = source.open()
+            break
+        except DeviceError as exc:
+            if not told:
+                log(f"kiosk: waiting for a tablet ({exc})")
+                told = True
+            if kiosk._stop.wait(WAIT_S):
+                raise KeyboardInterrupt from None
+    aspect = query.x_max / query.y_max if query.y_max else CANVAS[0] / CANVAS[1]
+    mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=aspect, tablet_height=1.0,
+                            area=zones.area)
+    thresholds = TipThresholds()
+    header = JournalHeader(CANVAS[0], CANVAS[1], (), mapping_to_header(mapping), thresholds.down, thresholds.up)
+    return source, mapping, header
+
+
+def run(args: argparse.Namespace) -> int:
+    stop = threading.Event()  # SIGTERM from the first moment: the service's libraries take a while to load
+    signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    from physink_tui.kiosk.service import Kiosk, KioskSettings
+    from physink_tui.render.export import Look
+
+    zones = read_zones(args.hot_zones)
+    max_bytes = None
+    if args.max_disk is not None:
+        try:
+            max_bytes = parse_size(args.max_disk)
+        except ValueError as exc:
+            print(f"physink kiosk: --max-disk: {exc}", file=sys.stderr)
+            return 2
+    settings = KioskSettings(args.idle, args.keep, max_bytes, Look(*args.video_size, 30))
+    kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
+    kiosk.recover()
+    try:
+        if args.replay is not None:
+            source, device, header = _replay_source(args.replay, args.speed, zones)
+            start = time.monotonic()
+            clock: Callable[[], float] = lambda: (time.monotonic() - start) * args.speed  # noqa: E731
+            log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
+            return kiosk.run(source, device, header, replay=True, clock=clock)
+        if args.serial:
+            serial_source, mapping, header = _serial_source(args.serial, zones, kiosk)
+            return kiosk.run(serial_source, None, header, replay=False, mapping=mapping)
+        source, device, header = _live_source(args.device, zones, kiosk)
+        return kiosk.run(source, device, header, replay=False)
+    except KeyboardInterrupt:
+        kiosk.stop()
+        return 0

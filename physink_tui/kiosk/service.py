@@ -1,0 +1,299 @@
+"""The kiosk's loop: one tablet, one session at a time, each journaled from its first touch and finalised when it
+ends; no UI, no decisions about what the pen drew (the session's), no files of its own (finalise's and store's).
+
+Threads: the tablet's source thread hands every report to `Kiosk._entry` (through a `SourcePump`), which decides
+with the hot zones (`ControlFilter`) whether it goes to the session, is held back or presses a button, and starts
+a session on the first touch; each session runs on its `SessionRunner`'s worker, journaling every entry it handles
+(flushed at once, so a kill loses at most the entries still queued for the next tick); the main thread (`run`)
+watches for the end of a session (its hot zone, ``--idle`` seconds of input time without a report, the replayed
+capture's end, SIGTERM) and a finaliser thread has a child process write the ended sessions' outputs from their
+journals, in order, at a lower priority, while the next session records.
+
+Status goes to ``log`` as plain lines (journald-friendly).
+"""
+
+from __future__ import annotations
+
+import json
+import queue
+import subprocess
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from datetime import UTC, datetime
+from pathlib import Path
+
+from physink_tui.errors import JournalError, PhysinkError
+from physink_tui.formats.journal.entries import (
+    CommandEntry,
+    HidEntry,
+    JournalDevice,
+    JournalEntry,
+    JournalHeader,
+    PenEntry,
+)
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.formats.journal.writer import JournalWriter
+from physink_tui.input.pen.mapping import TabletMapping
+from physink_tui.input.pen.sample import PenSample
+from physink_tui.input.pen.state import TipThresholds
+from physink_tui.input.sources import PenSource, SourceEnded
+from physink_tui.kiosk.controls import PASS, PRESS, ControlFilter
+from physink_tui.kiosk.finalise import Ending, child_command, finalise_journal
+from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
+from physink_tui.kiosk.hot_zones import HotZones
+from physink_tui.kiosk.store import SessionStore
+from physink_tui.render.export import Look
+from physink_tui.session.runner import SessionRunner
+from physink_tui.session.session import Session
+from physink_tui.session.source_pump import SourcePump
+
+MIN_FREE_BYTES = 50_000_000
+"""A session starts only with this much free space in the output folder (a session's video is a few MB)."""
+POLL_S = 0.05
+"""How often the main thread looks at the sessions' ends (seconds)."""
+VIDEO_LOOK = Look(960, 600, 30)
+"""The sessions' videos: smaller than an export's, so finalising keeps up with visitors."""
+ZONE_COMMANDS = {"undo": ("undo",), "redo": ("redo",), "clear": ("clear",), "play": ("play",), "stop": ("stop",),
+                 "sketch": ("mode", "sketch"), "demo": ("mode", "demo")}
+
+
+@dataclass(frozen=True, slots=True)
+class KioskSettings:
+    """``idle_s``: seconds without a report that end a session; ``keep`` / ``max_bytes``: retire the oldest
+    finished sessions beyond these (None: keep all); ``look``: the videos' size and rate."""
+
+    idle_s: float = 120.0
+    keep: int | None = None
+    max_bytes: int | None = None
+    look: Look = VIDEO_LOOK
+
+
+class _Live:
+    """The session being recorded: its folder, journal, session and runner."""
+
+    def __init__(self, folder: Path, header: JournalHeader, clock: Callable[[], float]) -> None:
+        self.folder = folder
+        self.writer = JournalWriter.create(folder / JOURNAL, header)
+        self.session = Session.from_header(header)
+        self.session.journal = self.writer
+        self.runner: SessionRunner = SessionRunner(self.session, clock=clock)
+        self.mode = "sketch"
+        self.told_stopped = False
+        self.runner.start()
+
+
+class Kiosk:
+    """The recording service over ``store`` (see the module docstring).
+
+    Args:
+        store: where sessions go.
+        zones: the hot zones (their drawing area is in ``header``'s mapping already).
+        settings: idle time, retiring, video look.
+        log: where status lines go.
+        stop: set it to end the run (what `stop` does), e.g. from a signal handler installed before the kiosk.
+    """
+
+    def __init__(self, store: SessionStore, zones: HotZones, settings: KioskSettings,
+                 log: Callable[[str], None], stop: threading.Event | None = None) -> None:
+        self.store = store
+        self.zones = zones
+        self.settings = settings
+        self.log = log
+        self._lock = threading.Lock()  # guards _live, _closing, _last_input
+        self._live: _Live | None = None
+        self._clock: Callable[[], float] = time.monotonic
+        self._mapping: TabletMapping | None = None
+        self._last_input = 0.0
+        self._closing: list[tuple[_Live, str]] = []  # sessions their end button closed, for the main thread to stop
+        self._source_ended = threading.Event()
+        self._stop = stop or threading.Event()
+        self._finishing: queue.Queue[tuple[Path, Ending] | None] = queue.Queue()
+        self._finaliser = threading.Thread(target=self._finalise_queue, name="kiosk-finalise", daemon=True)
+        self._full_disk_told = False
+
+    # -- recovery ---------------------------------------------------------------------------------------------------
+
+    def recover(self) -> int:
+        """Finalise every session a previous run left unfinished (from its journal); returns how many."""
+        count = 0
+        for folder in self.store.unfinished():
+            try:
+                journal = read_journal(folder / JOURNAL)
+                lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
+                self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
+                summary = finalise_journal(folder, Ending("recovered", folder.name, recovered=True),
+                                           self.settings.look)
+            except PhysinkError as exc:
+                self.log(f"kiosk: cannot recover {folder.name}: {exc}")
+                continue
+            self._indexed(folder, summary)
+            count += 1
+        return count
+
+    # -- running ----------------------------------------------------------------------------------------------------
+
+    def run(self, source: PenSource, device: JournalDevice | None, header: JournalHeader, *, replay: bool,
+            clock: Callable[[], float] = time.monotonic, mapping: TabletMapping | None = None) -> int:
+        """Record sessions from ``source`` until SIGTERM (`stop`) or, for a replay, the end of the capture.
+
+        ``device`` is the HID tablet whose reports the source reads; None for a source of samples in tablet space
+        (a serial tablet), which ``mapping`` maps onto the canvas after the hot zones had their look.
+        """
+        self._finaliser.start()
+        self._controls = ControlFilter(device, self.zones, TipThresholds(header.tip_down, header.tip_up))
+        self._header, self._clock, self._mapping = header, clock, mapping
+        self._last_input = clock()
+        pump = SourcePump(source, self._entry, device=None if replay else device, on_ended=self._ended)
+        what = "the capture" if replay else source.device_id if device is None else device.name or device.id
+        self.log(f"kiosk: reading {what}; a session starts when the pen touches the tablet")
+        pump.start()
+        try:
+            while not self._stop.is_set():
+                self._stop.wait(POLL_S)
+                self._watch()
+                if replay and self._source_ended.is_set():
+                    break
+        finally:
+            pump.stop()
+            self._end("stopped" if self._stop.is_set() else "capture ended")
+            self._finishing.put(None)
+            self._finaliser.join()
+        return 0
+
+    def stop(self) -> None:
+        """End the current session (finalised) and the run; safe from a signal handler."""
+        self._stop.set()
+
+    def _watch(self) -> None:
+        with self._lock:
+            live, closing, idle = self._live, self._closing, self._clock() - self._last_input
+            self._closing = []
+        for ended, why in closing:
+            self._close(ended, why)
+        if live is None:
+            return
+        if live.writer.stopped is not None and not live.told_stopped:
+            live.told_stopped = True
+            self.log(f"kiosk: recording stopped for session {live.folder.name}: {live.writer.stopped}")
+        if idle > self.settings.idle_s:
+            self._end("idle")
+
+    def _end(self, why: str) -> None:
+        """End the session being recorded, and any the end button closed meanwhile."""
+        with self._lock:
+            live, self._live, closing, self._closing = self._live, None, self._closing, []
+        for ended, reason in closing:
+            self._close(ended, reason)
+        if live is not None:
+            self._close(live, why)
+
+    def _close(self, live: _Live, why: str) -> None:
+        """Stop a session's runner (its journal gets its end) and queue it for finalising."""
+        try:
+            live.runner.stop()
+        except Exception as exc:  # a bug in the session: its journal is closed; the recovery path finalises it
+            self.log(f"kiosk: session {live.folder.name} failed: {exc!r}")
+            return
+        self.log(f"kiosk: session {live.folder.name} ended ({why}) after {live.session.t:.1f} s")
+        self._finishing.put((live.folder, Ending(why, live.folder.name)))
+
+    # -- the source thread ------------------------------------------------------------------------------------------
+
+    def _entry(self, entry: JournalEntry) -> None:
+        with self._lock:
+            self._last_input = self._clock()
+            live = self._live
+            if isinstance(entry, HidEntry):
+                verdict = self._controls.report(entry.data, self._clock())
+            elif isinstance(entry, PenEntry) and self._mapping is not None:  # a sample in tablet space
+                verdict = self._controls.sample(PenSample(self._clock(), entry.x, entry.y, entry.p, entry.tip,
+                                                          entry.range, entry.eraser, entry.b1, entry.b2, None, None, 0))
+                entry = replace(entry, **dict(zip(("x", "y"), self._mapping.to_canvas(entry.x, entry.y),
+                                                  strict=True)))
+            else:
+                if live is not None:
+                    live.runner.submit(entry)
+                return
+            if verdict.what == PRESS:
+                actions = [(verdict.zone.action, "end zone")] if verdict.zone is not None else []
+                actions += [(a, "end button") for b in verdict.pad if (a := self.zones.pad_action(b)) is not None]
+                for action, ending in actions:
+                    self._press(live, action, ending)
+                return
+            if verdict.what != PASS:
+                return
+            if live is None:
+                if not verdict.touch_began:
+                    return  # hovering before any session: nothing to record yet
+                live = self._start()
+                if live is None:
+                    return
+            live.runner.submit(entry)
+
+    def _press(self, live: _Live | None, action: str, ending: str) -> None:
+        if live is None:
+            return  # a button before the first touch: there is no session to act on
+        if action == "end":  # detached at once: what the tablet sends next belongs to the next session
+            self._closing.append((live, ending))
+            self._live = None
+            return
+        if action == "mode":
+            action = "demo" if live.mode == "sketch" else "sketch"
+        command = ZONE_COMMANDS[action]
+        if command[0] == "mode":
+            live.mode = command[1]
+        live.runner.submit(CommandEntry(0.0, command[0], command[1:]))
+        self.log(f"kiosk: {' '.join(command)}")
+
+    def _start(self) -> _Live | None:
+        """A new session (called with the lock held); None when there is no room to record."""
+        free = self.store.free_bytes()
+        if free < MIN_FREE_BYTES:
+            if not self._full_disk_told:
+                self._full_disk_told = True
+                self.log(f"kiosk: not recording: only {free / 1e6:.0f} MB free in {self.store.root} "
+                         f"(a session needs {MIN_FREE_BYTES / 1e6:.0f} MB; --keep or --max-disk retire old ones)")
+            return None
+        self._full_disk_told = False
+        started = datetime.now(UTC)
+        try:
+            folder = self.store.new_folder(started)
+            start = self._clock()
+            self._live = _Live(folder, self._header, lambda: self._clock() - start)
+        except (OSError, JournalError) as exc:
+            self.log(f"kiosk: cannot start a session in {self.store.root}: {exc}")
+            return None
+        self.log(f"kiosk: session {folder.name} started")
+        return self._live
+
+    def _ended(self, ended: SourceEnded) -> None:
+        if ended.error is None:
+            self._source_ended.set()
+        else:
+            self.log(f"kiosk: the tablet went away ({ended.error}); the session waits for it to come back")
+
+    # -- the finaliser thread ---------------------------------------------------------------------------------------
+
+    def _finalise_queue(self) -> None:
+        while (item := self._finishing.get()) is not None:
+            folder, ending = item
+            child = subprocess.run(child_command(folder, ending, self.settings.look), capture_output=True, text=True,
+                                   check=False)
+            if child.returncode != 0:
+                why = child.stderr.strip().splitlines()[-1] if child.stderr.strip() else f"status {child.returncode}"
+                self.log(f"kiosk: could not finish writing session {folder.name}: {why} (it is finished when the "
+                         "kiosk next starts)")
+                continue
+            self._indexed(folder, json.loads((folder / SUMMARY).read_text(encoding="utf-8")))
+            self.store.retire(self.settings.keep, self.settings.max_bytes, self._current_folder(), self.log)
+
+    def _current_folder(self) -> Path | None:
+        with self._lock:
+            return None if self._live is None else self._live.folder
+
+    def _indexed(self, folder: Path, summary: dict[str, object]) -> None:
+        self.store.index(summary)
+        self.log(f"kiosk: session {folder.name} written: {summary['bodies']} bodies, {summary['events']} events, "
+                 f"{', '.join(summary['files'])}")  # type: ignore[arg-type]

@@ -1,0 +1,1 @@
+"""Helpers for the kiosk's tests: tablet captures of kiosk visits made with the virtual pen."""
