@@ -42,13 +42,12 @@ HANDLERS: dict[str, str] = {
     "equiv": "physink_tui.commands.equiv:run",
     "simulate": "physink_tui.commands.simulate:run",
     "tui": "physink_tui.commands.tui:run",
+    "listen": "physink_tui.commands.listen:run",
     "kiosk": "physink_tui.commands.kiosk:run",
 }
 
 #: Subcommands not built yet: name -> where they are planned (shown to the user as is).
-PLANNED: dict[str, str] = {
-    "listen": "a later issue: speech commands",
-}
+PLANNED: dict[str, str] = {}
 
 
 MIN_SIDE, MAX_SIDE = 16, 7680
@@ -244,8 +243,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("listen", help="recognise one spoken utterance from a WAV file")
     p.add_argument("wav", metavar="FILE.wav", help="the recording")
-    p.add_argument("--labels", metavar="a,b,...", type=_label_list, help="comma-separated labels to expect")
-    p.add_argument("--vosk-model", metavar="DIR", help="use the Vosk model in DIR")
+    p.add_argument("--labels", metavar="a,b,...", type=_label_list,
+                   help="comma-separated labels the grammar holds besides the default component names")
+    p.add_argument("--vosk-model", metavar="DIR",
+                   help="use the vosk model in DIR instead of the embedded pocketsphinx one")
 
     p = sub.add_parser("export", help="a project's demonstration as a video, PNG frames, a picture or a timeline")
     p.add_argument("project", metavar="PROJECT", help="a project (.physink.json)")

@@ -61,3 +61,27 @@ class DeviceError(PhysinkError):
     def __init__(self, message: str, device: str | None = None) -> None:
         self.device = device
         super().__init__(message)
+
+
+class SpeechError(PhysinkError):
+    """A recording, speech model or grammar that cannot be used (a broken WAV, a missing model directory).
+
+    Attributes:
+        path: the file or directory as the user named it, or None.
+    """
+
+    def __init__(self, message: str, path: str | None = None) -> None:
+        self.path = path
+        super().__init__(message)
+
+
+class MicrophoneError(SpeechError):
+    """No microphone to listen with: PortAudio is not installed, or no input device can be opened.
+
+    Attributes:
+        device: the input device as PortAudio names it, or None for the default one.
+    """
+
+    def __init__(self, message: str, device: str | None = None) -> None:
+        self.device = device
+        super().__init__(message, None)

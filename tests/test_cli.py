@@ -38,10 +38,13 @@ def test_every_subcommand_parses_its_options(command: str) -> None:
     assert args.command == command
 
 
-@pytest.mark.parametrize("command", sorted(cli.PLANNED))
 def test_unbuilt_subcommand_says_so_in_one_line_and_exits_2(
-    command: str, capsys: pytest.CaptureFixture[str]
+    capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    # every subcommand is built today; the mechanism stays for the next one DESIGN.md adds
+    command = "listen"
+    monkeypatch.setattr(cli, "HANDLERS", {k: v for k, v in cli.HANDLERS.items() if k != command})
+    monkeypatch.setattr(cli, "PLANNED", {command: "a later issue: speech commands"})
     assert cli.main(SAMPLE_ARGV[command]) == 2
     out, err = capsys.readouterr()
     assert out == ""

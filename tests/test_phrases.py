@@ -180,7 +180,8 @@ def test_a_vocabulary_file_adds_verbs_and_prepositions() -> None:
 @pytest.mark.parametrize(
     ("text", "line", "fragment"),
     [
-        ("verb plummets\nnoun skillet\n", 2, "'noun skillet': expected 'verb WORD...' or 'prep WORD...', not 'noun'"),
+        ("verb plummets\nnoun skillet\n", 2,
+         "'noun skillet': expected 'verb WORD...', 'prep WORD...' or 'component NAME, ...', not 'noun'"),
         ("\n\n  verb   # nothing\n", 3, "'verb': expected at least one word after 'verb'"),
         ("prep amid\n# ok\nprep out_of\n", 3, "'prep out_of': preposition 'out_of' is not a single lower-case word"),
         ("verb hits2\n", 1, "verb 'hits2' is not a single lower-case word"),

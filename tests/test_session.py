@@ -111,7 +111,7 @@ def test_labels_by_command_and_speech_and_what_the_user_is_told() -> None:
 
 def test_label_with_nothing_to_label_is_told() -> None:
     session = run([SayEntry(0.5, "label ball")])
-    assert not session.scene.components and "nothing is last" in session.messages[-1].text
+    assert not session.scene.components and "tap or hover over it first" in session.messages[-1].text
 
 
 def test_an_eraser_stroke_removes_the_body_it_crosses() -> None:

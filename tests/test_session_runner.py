@@ -328,3 +328,19 @@ def test_a_live_session_on_the_real_clock_and_thread_replays_to_the_same_files(t
     assert "timeline.json" in expected and session.scene.labels()
     for ticks in (None, 30, 120):
         assert outputs(replay(Session.from_header(journal.header), journal.entries, ticks)) == expected
+
+
+def test_an_utterance_is_stamped_when_it_began_unless_something_later_was_stamped() -> None:
+    from physink_tui.session.inbox import StampingInbox
+
+    now = [10.0]
+    inbox = StampingInbox(lambda: now[0])
+    now[0] = 12.0
+    said = inbox.put(SayEntry(0.0, "label ball"), at=1.5)
+    assert said is not None and said.t == 1.5
+    later = inbox.put(CommandEntry(0.0, "play", ()))
+    assert later is not None and later.t == 2.0
+    again = inbox.put(SayEntry(0.0, "the ball falls"), at=1.8)  # began before the play command was stamped
+    assert again is not None and again.t == 2.0
+    future = inbox.put(SayEntry(0.0, "label cup"), at=5.0)  # never stamped ahead of the clock
+    assert future is not None and future.t == 2.0

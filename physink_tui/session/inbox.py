@@ -45,13 +45,18 @@ class StampingInbox:
         with self._lock:
             return self._now()
 
-    def put(self, entry: JournalEntry) -> JournalEntry | None:
+    def put(self, entry: JournalEntry, at: float | None = None) -> JournalEntry | None:
         """Stamp ``entry`` with the time now and queue it; return the stamped entry, or None once closed (dropped:
-        it will never be handled nor journaled)."""
+        it will never be handled nor journaled).
+
+        ``at`` (seconds since the session start) stamps it earlier — an utterance with the time it began — but
+        never before a time already handed out, so stamps still never decrease.
+        """
         with self._lock:
             if self._closed_at is not None:
                 return None
-            stamped = replace(entry, t=self._now())
+            stamped = replace(entry, t=self._now() if at is None else max(self._last, min(at, self._now())))
+            self._last = stamped.t
             self._entries.append(stamped)
             self._arrived.notify()
             return stamped

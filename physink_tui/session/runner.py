@@ -108,9 +108,11 @@ class SessionRunner(Generic[ViewT]):
         """Submit a command (a key, a pad button): ``runner.command("mode", "demo")``."""
         return self.submit(CommandEntry(0.0, name, tuple(args)))
 
-    def say(self, text: str) -> JournalEntry | None:
-        """Submit a recognised utterance (stamped when it arrives, i.e. when recognition finished)."""
-        return self.submit(SayEntry(0.0, text))
+    def say(self, text: str, began: float | None = None) -> JournalEntry | None:
+        """Submit a recognised utterance, stamped with ``began`` (session seconds: when it began, e.g.
+        `Utterance.began` on the runner's `now` scale) where no later entry has been stamped yet, else when it
+        arrives; without ``began``, when it arrives."""
+        return self._inbox.put(SayEntry(0.0, text), began)
 
     def now(self) -> float:
         """Seconds since the session start by the runner's clock (what an entry submitted now is stamped)."""

@@ -38,6 +38,7 @@ from physink_tui.input.pen.gestures import Gesture
 from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.sources import RawReport, SourceEnded
+from physink_tui.input.speech.dictionary import unspeakable_words
 from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session import simulation
@@ -46,6 +47,7 @@ from physink_tui.session.modes.base import Mode
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import SketchMode
 from physink_tui.session.simulation import SearchResult
+from physink_tui.session.speech_target import PenWatch
 from physink_tui.session.view import Message, SessionView, snapshot
 from physink_tui.sim.defaults import DEFAULT_BUDGET
 from physink_tui.timeline.events import Timeline
@@ -89,6 +91,7 @@ class Session:
         self.sketch = SketchMode(self)
         self.current: Mode = self.sketch
         self._searched: tuple[Document, SearchResult] | None = None  # the last SIMULATE and its document
+        self.watch = PenWatch()  # drawing, hovering and what strokes made: whom a spoken label names
 
     @classmethod
     def from_header(cls, header: JournalHeader, document: Document | None = None) -> Session:
@@ -189,10 +192,14 @@ class Session:
             return
         changed = False
         for g in self.pen.tick(t):
+            before = self.sketch.last_created
             changed |= self.current.advance(g.t)
+            self._note_created(before, g.t)
             self._gesture(g)
             changed = True
+        before = self.sketch.last_created
         changed |= self.current.advance(t)
+        self._note_created(before, t)
         self.t = t
         self._forget_stale_search()
         if changed:
@@ -259,11 +266,27 @@ class Session:
             self._gesture(g)
 
     def _gesture(self, g: Gesture) -> None:
+        before = self.sketch.last_created
+        self.watch.gesture(g)
         following = self.current.gesture(g)
         if following is not None:
             self.current = following
         if self.current.finished:
             self.current = self.sketch
+        self._note_created(before, g.t)
+        if self.watch.waiting is not None and not self.watch.drawing and self.sketch.pending is None:
+            waiting = self.watch.take_waiting()  # the stroke said to be labelled ended without making anything
+            self.tell(f"label {waiting.text!r}: the stroke being drawn made no component to label")
+
+    def _note_created(self, before: str | None, t: float) -> None:
+        """A stroke made a component (now or when a half-X waited out): a label said while drawing it applies."""
+        made = self.sketch.last_created
+        if made is None or made == before:
+            return
+        self.watch.made(made, t)
+        waiting = self.watch.take_waiting()
+        if waiting is not None:
+            self._label(made, waiting.text)
 
     def _command(self, entry: CommandEntry) -> None:
         name, args, t = entry.name, entry.args, entry.t
@@ -377,11 +400,30 @@ class Session:
     def _say(self, entry: SayEntry) -> None:
         words = entry.text.strip().split()
         if len(words) >= 2 and words[0].lower() == "label":
-            self._label("selected" if self.selected else "last", " ".join(words[1:]))
+            self._spoken_label(" ".join(words[1:]), entry.t)
         elif entry.text.strip() and isinstance(self.current, DemoMode):
             self.current.narrate(entry.text, self.vocabulary, entry.t)
         elif entry.text.strip():
             self.tell(f"heard {entry.text!r}; only 'label <name>' is understood while sketching")
+
+    def _spoken_label(self, text: str, t: float) -> None:
+        """``label X`` said at ``t`` names the selected component, else the one drawn in the last few seconds, else
+        the one being drawn (once it exists), else the one under the hovering pen (thesis 3.2.5). Speech lags the
+        pen: a label begun just after one stroke, while the next is under way, is the finished stroke's."""
+        if self.selected is not None:
+            self._label(self.selected, text)
+        elif (recent := self.watch.recent(t)) is not None and recent in self.scene.components:
+            self._label(recent, text)
+        elif (self.watch.drawing and self.mode == "sketch") or self.sketch.pending is not None:
+            self.watch.wait(text, t)
+        elif self.watch.hover is not None and (under := self._body_under(*self.watch.hover)) is not None:
+            self._label(under, text)
+        else:
+            self.tell(f"label {text!r}: say it while drawing the part or just after, or tap or hover over it first")
+
+    def _body_under(self, x: float, y: float) -> str | None:
+        """The topmost body at canvas fractions (x, y) in the sketch, or None."""
+        return self.world.body_at((x * self.canvas[0], y * self.canvas[1]))
 
     def _label(self, target: str, text: str) -> None:
         component_id = {"last": self.last_created, "selected": self.selected}.get(target, target)
@@ -398,6 +440,10 @@ class Session:
             return
         scene = self.scene.update(replace(component, label=text))
         self.commit(Document(scene, self.document.timeline), f"label {component_id} {text}")
+        unsayable = unspeakable_words(text)
+        if unsayable:
+            self.tell(f"label {text!r}: {', '.join(map(repr, unsayable))} cannot be said (not in the speech "
+                      "dictionary); the label is kept, and speech cannot name this part")
 
     def _forget_gone(self) -> None:
         """A selection or last stroke whose component is gone (erased, undone) is forgotten."""

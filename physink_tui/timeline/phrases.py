@@ -79,7 +79,7 @@ def _forms(word: str) -> set[str]:
 
 @dataclass(frozen=True, slots=True)
 class Vocabulary:
-    """The verbs and prepositions phrases may use.
+    """The verbs and prepositions phrases may use, and the component names a user may say (for speech).
 
     A spoken verb matches a vocabulary verb when they are equal or differ by a final ``s`` or ``es``, or ``y``
     against ``ies``: "hit", "hits"; "press", "presses"; "carry", "carries". Other inflections ("hitting",
@@ -88,18 +88,27 @@ class Vocabulary:
     Attributes:
         verbs: lower-case single words (letters, ``'`` and ``-``), never an article.
         prepositions: lower-case single words, never an article.
+        components: names of components a user may say before labelling anything ("frying pan"): lower-case
+            words separated by one space, the first not an article. Phrases name components by their labels;
+            these only widen what a speech grammar listens for.
     """
 
     verbs: frozenset[str] = frozenset()
     prepositions: frozenset[str] = frozenset()
+    components: frozenset[str] = frozenset()
 
     def __post_init__(self) -> None:
         _check_words(self.verbs, "verb")
         _check_words(self.prepositions, "preposition")
+        for name in self.components:
+            words = name.split(" ")
+            _check_words([w for w in words[1:] if w not in ARTICLES], "component word")
+            _check_words(words[:1], "component name's first word")
 
     def extended(self, other: Vocabulary) -> Vocabulary:
         """Both vocabularies' words together (e.g. `DEFAULT_VOCABULARY` extended by the user's file)."""
-        return Vocabulary(self.verbs | other.verbs, self.prepositions | other.prepositions)
+        return Vocabulary(self.verbs | other.verbs, self.prepositions | other.prepositions,
+                          self.components | other.components)
 
     def is_verb(self, word: str) -> bool:
         """Whether the lower-case ``word`` is one of the verbs, allowing for the inflections above."""
@@ -124,7 +133,8 @@ DEFAULT_VOCABULARY = Vocabulary(
 def parse_vocabulary(text: str, source: str = "<vocabulary>") -> Vocabulary:
     """The extra words of a user's vocabulary file.
 
-    One entry per line: ``verb`` or ``prep`` and then one or more words, separated by spaces. ``#`` starts a
+    One entry per line: ``verb`` or ``prep`` and then one or more words, separated by spaces, or ``component``
+    and then one or more component names separated by commas (``component frying pan, golf ball``). ``#`` starts a
     comment; blank lines are ignored; keywords and words are case-insensitive and kept lower-case. A bad line
     raises `PhraseError` naming ``source``, the line number, the line and what was expected. Combine the result
     with `DEFAULT_VOCABULARY.extended`.
@@ -133,20 +143,32 @@ def parse_vocabulary(text: str, source: str = "<vocabulary>") -> Vocabulary:
     ... # Rube Goldberg words the default lacks
     ... verb plummets Topples   # one or more per line
     ... prep amid
+    ... component Frying  pan, golf ball
     ... ''')
-    >>> sorted(extra.verbs), sorted(extra.prepositions)
-    (['plummets', 'topples'], ['amid'])
+    >>> sorted(extra.verbs), sorted(extra.prepositions), sorted(extra.components)
+    (['plummets', 'topples'], ['amid'], ['frying pan', 'golf ball'])
     """
     verbs: set[str] = set()
     prepositions: set[str] = set()
+    components: set[str] = set()
     for number, raw in enumerate(text.splitlines(), start=1):
         line = raw.split("#", 1)[0].strip()
         if not line:
             continue
         keyword, *words = line.lower().split()
-        if keyword not in ("verb", "prep"):
-            raise PhraseError(f"{line!r}: expected 'verb WORD...' or 'prep WORD...', not {line.split()[0]!r}",
-                              raw, source, number)
+        if keyword not in ("verb", "prep", "component"):
+            raise PhraseError(f"{line!r}: expected 'verb WORD...', 'prep WORD...' or 'component NAME, ...', "
+                              f"not {line.split()[0]!r}", raw, source, number)
+        if keyword == "component":
+            names = [" ".join(name.split()) for name in " ".join(words).split(",")]
+            if not all(names):
+                raise PhraseError(f"{line!r}: expected component names separated by commas", raw, source, number)
+            try:
+                Vocabulary(components=frozenset(names))
+            except PhraseError as error:
+                raise PhraseError(f"{line!r}: {error}", raw, source, number) from None
+            components.update(names)
+            continue
         if not words:
             raise PhraseError(f"{line!r}: expected at least one word after {keyword!r}", raw, source, number)
         kind = "verb" if keyword == "verb" else "preposition"
@@ -155,7 +177,7 @@ def parse_vocabulary(text: str, source: str = "<vocabulary>") -> Vocabulary:
         except PhraseError as error:
             raise PhraseError(f"{line!r}: {error}", raw, source, number) from None
         (verbs if kind == "verb" else prepositions).update(words)
-    return Vocabulary(frozenset(verbs), frozenset(prepositions))
+    return Vocabulary(frozenset(verbs), frozenset(prepositions), frozenset(components))
 
 
 @dataclass(frozen=True, slots=True)

@@ -79,7 +79,8 @@ class Project:
 
 
 def vocabulary_lines(vocabulary: Vocabulary) -> tuple[str, ...]:
-    """The lines a project keeps for a vocabulary: its verbs, then its prepositions, each sorted; none if empty.
+    """The lines a project keeps for a vocabulary: its verbs, prepositions, then component names, each sorted; none
+    if empty.
 
     >>> vocabulary_lines(Vocabulary(frozenset({"topples", "plummets"}), frozenset({"amid"})))
     ('verb plummets topples', 'prep amid')
@@ -89,6 +90,8 @@ def vocabulary_lines(vocabulary: Vocabulary) -> tuple[str, ...]:
         lines.append("verb " + " ".join(sorted(vocabulary.verbs)))
     if vocabulary.prepositions:
         lines.append("prep " + " ".join(sorted(vocabulary.prepositions)))
+    if vocabulary.components:
+        lines.append("component " + ", ".join(sorted(vocabulary.components)))
     return tuple(lines)
 
 
