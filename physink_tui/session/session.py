@@ -38,10 +38,9 @@ from physink_tui.input.pen.gestures import Gesture
 from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.sources import RawReport, SourceEnded
-from physink_tui.input.speech.dictionary import unspeakable_words
-from physink_tui.scene.components import Body, Rope, Scene, Spring
+from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.live import LiveWorld
-from physink_tui.session import simulation
+from physink_tui.session import labelling, simulation
 from physink_tui.session.history import Document, History
 from physink_tui.session.modes.base import Mode
 from physink_tui.session.modes.demo import DemoMode
@@ -143,6 +142,11 @@ class Session:
     def last_created(self) -> str | None:
         """The component the last stroke made (``label last``)."""
         return self.sketch.last_created
+
+    @property
+    def stroke_pending(self) -> bool:
+        """A stroke has ended but the sketch has not yet decided what it makes (an X's first half)."""
+        return self.sketch.pending is not None
 
     @property
     def world(self) -> LiveWorld:
@@ -286,12 +290,12 @@ class Session:
         self.watch.made(made, t)
         waiting = self.watch.take_waiting()
         if waiting is not None:
-            self._label(made, waiting.text)
+            labelling.label(self, made, waiting.text)
 
     def _command(self, entry: CommandEntry) -> None:
         name, args, t = entry.name, entry.args, entry.t
         if name == "label":
-            self._label(str(args[0]), str(args[1]))
+            labelling.label(self, str(args[0]), str(args[1]))
         elif name in PLAYBACK:
             self._playback(name, args, t)
         elif name == "mode":
@@ -400,50 +404,11 @@ class Session:
     def _say(self, entry: SayEntry) -> None:
         words = entry.text.strip().split()
         if len(words) >= 2 and words[0].lower() == "label":
-            self._spoken_label(" ".join(words[1:]), entry.t)
+            labelling.spoken_label(self, " ".join(words[1:]), entry.t)
         elif entry.text.strip() and isinstance(self.current, DemoMode):
             self.current.narrate(entry.text, self.vocabulary, entry.t)
         elif entry.text.strip():
             self.tell(f"heard {entry.text!r}; only 'label <name>' is understood while sketching")
-
-    def _spoken_label(self, text: str, t: float) -> None:
-        """``label X`` said at ``t`` names the selected component, else the one drawn in the last few seconds, else
-        the one being drawn (once it exists), else the one under the hovering pen (thesis 3.2.5). Speech lags the
-        pen: a label begun just after one stroke, while the next is under way, is the finished stroke's."""
-        if self.selected is not None:
-            self._label(self.selected, text)
-        elif (recent := self.watch.recent(t)) is not None and recent in self.scene.components:
-            self._label(recent, text)
-        elif (self.watch.drawing and self.mode == "sketch") or self.sketch.pending is not None:
-            self.watch.wait(text, t)
-        elif self.watch.hover is not None and (under := self._body_under(*self.watch.hover)) is not None:
-            self._label(under, text)
-        else:
-            self.tell(f"label {text!r}: say it while drawing the part or just after, or tap or hover over it first")
-
-    def _body_under(self, x: float, y: float) -> str | None:
-        """The topmost body at canvas fractions (x, y) in the sketch, or None."""
-        return self.world.body_at((x * self.canvas[0], y * self.canvas[1]))
-
-    def _label(self, target: str, text: str) -> None:
-        component_id = {"last": self.last_created, "selected": self.selected}.get(target, target)
-        if component_id is None:
-            self.tell(f"label {text!r}: nothing is {target} — tap a body first, or draw one")
-            return
-        component = self.scene.components.get(component_id)
-        if component is None:
-            known = ", ".join(self.scene.components) or "none"
-            self.tell(f"label {text!r}: there is no component {component_id!r} (components: {known})")
-            return
-        if not isinstance(component, Body | Rope | Spring):
-            self.tell(f"label {text!r}: joints take no labels")
-            return
-        scene = self.scene.update(replace(component, label=text))
-        self.commit(Document(scene, self.document.timeline), f"label {component_id} {text}")
-        unsayable = unspeakable_words(text)
-        if unsayable:
-            self.tell(f"label {text!r}: {', '.join(map(repr, unsayable))} cannot be said (not in the speech "
-                      "dictionary); the label is kept, and speech cannot name this part")
 
     def _forget_gone(self) -> None:
         """A selection or last stroke whose component is gone (erased, undone) is forgotten."""
