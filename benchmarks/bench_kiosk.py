@@ -28,7 +28,6 @@ import random
 import shlex
 import signal
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -39,23 +38,12 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
 
 from kiosk.captures import END, MODE, on_canvas, write_capture  # noqa: E402
+from kiosk.process import start_kiosk  # noqa: E402
 
 from physink_tui.formats.journal.entries import HidEntry  # noqa: E402
 from physink_tui.formats.journal.reader import read_journal  # noqa: E402
 from physink_tui.input.captures.capture import Capture  # noqa: E402
 from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen  # noqa: E402
-
-PHYSINK = [sys.executable, "-m", "physink_tui"]
-
-
-def start(out: Path, capture: Path, speed: float) -> tuple[subprocess.Popen[str], float]:
-    proc = subprocess.Popen([*PHYSINK, "kiosk", "--out", str(out), "--replay", str(capture), "--speed", str(speed),
-                             "--video-size", "320x200"], stdout=subprocess.PIPE, text=True, bufsize=1)
-    assert proc.stdout is not None
-    for line in proc.stdout:
-        if line.startswith("kiosk: reading the capture"):
-            return proc, time.monotonic()
-    raise RuntimeError(f"the kiosk ended before reading (status {proc.wait()})")
 
 
 def journaled(out: Path, names: set[str], sent: list[bytes]) -> list[int]:
@@ -76,7 +64,7 @@ def kill_lag(kills: int, work: Path) -> list[float]:
     times = [e.t - capture.events[0].t for e in capture.events]
     sent = [e.data for e in capture.events]
     reference = work / "reference"
-    proc, _ = start(reference, ROOT / "tests" / "kiosk" / "visits.hid", 20.0)
+    proc, _ = start_kiosk(reference, ROOT / "tests" / "kiosk" / "visits.hid", 20.0)
     proc.wait()
     worthy = sorted(journaled(reference, set(), sent))
     worthy_times = [times[i] for i in worthy]
@@ -85,7 +73,7 @@ def kill_lag(kills: int, work: Path) -> list[float]:
     out.mkdir()
     while len(behind) < kills:
         before = {p.name for p in out.iterdir()}
-        proc, reading = start(out, ROOT / "tests" / "kiosk" / "visits.hid", 1.0)
+        proc, reading = start_kiosk(out, ROOT / "tests" / "kiosk" / "visits.hid", 1.0)
         time.sleep(rng.uniform(0.5, 8.0))
         read_by = time.monotonic() - reading
         proc.send_signal(signal.SIGKILL)
@@ -135,7 +123,7 @@ def soak(hours: float, speed: float, work: Path) -> dict[str, float]:
     path = work / "soak.hid"
     count, seconds = soak_capture(hours, path)
     out = work / "soak"
-    proc, _ = start(out, path, speed)
+    proc, _ = start_kiosk(out, path, speed, "320x200")
     samples: list[tuple[float, float, int]] = []  # (wall s, MB, sessions finished)
     began = time.monotonic()
     while proc.poll() is None:

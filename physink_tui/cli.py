@@ -78,24 +78,23 @@ def _seed(text: str) -> int:
     return _whole(text, 0, MAX_SEED, f"an integer in [0, {MAX_SEED}]")
 
 
-def _positive_rate(text: str) -> float:
+def _positive(text: str, expected: str) -> float:
+    """``text`` as a finite number > 0, else an argparse error saying ``expected``."""
     try:
         value = float(text)
     except ValueError:
         value = math.nan
     if not (math.isfinite(value) and value > 0):
-        raise argparse.ArgumentTypeError(f"expected a positive number per second, got {text!r}")
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {text!r}")
     return value
+
+
+def _positive_rate(text: str) -> float:
+    return _positive(text, "a positive number per second")
 
 
 def _positive_float(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not (math.isfinite(value) and value > 0):
-        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}")
-    return value
+    return _positive(text, "a positive number")
 
 
 def _frame_size(text: str) -> tuple[int, int]:

@@ -20,26 +20,15 @@ from pathlib import Path
 
 import pytest
 from kiosk.captures import ball_and_platform, box_then_undo, visits, write_capture
+from kiosk.process import PHYSINK, start_kiosk
 
 from physink_tui.formats.journal.entries import HidEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.kiosk.folder_files import JOURNAL, OUTPUTS, SUMMARY
 
-PHYSINK = [sys.executable, "-m", "physink_tui"]
 SPEED = 0.25
 KILLS = 20
 MAX_BEHIND_S = 0.1
-
-
-def start(out: Path, capture: Path, speed: float) -> tuple[subprocess.Popen[str], float]:
-    """The kiosk, and the wall time at which it said it began reading the capture."""
-    proc = subprocess.Popen([*PHYSINK, "kiosk", "--out", str(out), "--replay", str(capture), "--speed", str(speed),
-                             "--video-size", "160x100"], stdout=subprocess.PIPE, text=True, bufsize=1)
-    assert proc.stdout is not None
-    for line in proc.stdout:
-        if line.startswith("kiosk: reading the capture"):
-            return proc, time.monotonic()
-    raise AssertionError(f"the kiosk ended before reading (status {proc.wait()})")
 
 
 def hid_lines(journal: Path) -> list[bytes]:
@@ -66,7 +55,7 @@ def test_sigkill_at_random_moments_loses_at_most_100_ms_of_input_and_every_sessi
     sent = [e.data for e in capture.events]
     # which reports a session journals (not hovering before a touch, not the taps on the zones): a run to the end
     reference = tmp_path / "reference"
-    proc, _ = start(reference, path, 20.0)
+    proc, _ = start_kiosk(reference, path, 20.0)
     assert proc.wait(timeout=120) == 0
     worthy: list[int] = []
     for folder in sorted(p for p in reference.iterdir() if p.is_dir()):
@@ -78,7 +67,7 @@ def test_sigkill_at_random_moments_loses_at_most_100_ms_of_input_and_every_sessi
     behind: list[float] = []
     while len(behind) < KILLS:
         before = {p.name for p in out.iterdir() if p.is_dir()} if out.exists() else set()
-        proc, reading = start(out, path, SPEED)
+        proc, reading = start_kiosk(out, path, SPEED)
         time.sleep(rng.uniform(0.2, 4.0))
         killed_at = (time.monotonic() - reading) * SPEED  # input time read by the moment of the kill
         proc.send_signal(signal.SIGKILL)
@@ -94,7 +83,7 @@ def test_sigkill_at_random_moments_loses_at_most_100_ms_of_input_and_every_sessi
     assert max(behind) <= MAX_BEHIND_S, sorted(behind)[-5:]
 
     # a last run recovers what the last kill left and finishes: every session is complete, and valid
-    proc, _ = start(out, path, 20.0)
+    proc, _ = start_kiosk(out, path, 20.0)
     assert proc.wait(timeout=300) == 0
     records = [json.loads(line) for line in (out / "index.jsonl").read_text().splitlines()]
     folders = sorted(p for p in out.iterdir() if p.is_dir())

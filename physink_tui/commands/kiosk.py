@@ -15,7 +15,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from physink_tui.errors import DeviceError, PhysinkError
 from physink_tui.formats.journal.entries import JournalDevice, JournalHeader
@@ -38,6 +38,7 @@ if TYPE_CHECKING:
 CANVAS = (1600.0, 1000.0)
 DEVICE_ID = "tablet0"
 SERIAL_ID = "serial0"
+T = TypeVar("T")
 WAIT_S = 1.0
 """Seconds between looks for a tablet while none is plugged in."""
 
@@ -75,19 +76,24 @@ def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource,
     return CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed), device, header
 
 
-def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSource, JournalDevice, JournalHeader]:
-    """Waits for the tablet (hot-plug), then a source that survives it being unplugged and plugged back."""
+def _wait_for(open_fn: Callable[[], T], kiosk: Kiosk) -> T:
+    """``open_fn()`` once it stops raising `DeviceError` (the tablet is plugged in), trying every `WAIT_S`; the
+    first failure is logged. Raises KeyboardInterrupt when the kiosk is told to stop meanwhile."""
     told = False
     while True:
         try:
-            reader = open_reader(spec, DEVICE_ID)
-            break
+            return open_fn()
         except DeviceError as exc:
             if not told:
                 log(f"kiosk: waiting for a tablet ({exc})")
                 told = True
             if kiosk._stop.wait(WAIT_S):
                 raise KeyboardInterrupt from None
+
+
+def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSource, JournalDevice, JournalHeader]:
+    """Waits for the tablet (hot-plug), then a source that survives it being unplugged and plugged back."""
+    reader = _wait_for(lambda: open_reader(spec, DEVICE_ID), kiosk)
     info = reader.info
     if not info.descriptor:
         reader.stop()
@@ -103,18 +109,8 @@ def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSo
 
 def _serial_source(port: str, zones: HotZones, kiosk: Kiosk) -> tuple[PenSource, TabletMapping, JournalHeader]:
     """Waits for an ISDV4 tablet on ``port``; its samples are in tablet space, mapped by the kiosk after the zones."""
-    told = False
-    while True:
-        source = SerialPenSource(port, SERIAL_ID)
-        try:
-            query = source.open()
-            break
-        except DeviceError as exc:
-            if not told:
-                log(f"kiosk: waiting for a tablet ({exc})")
-                told = True
-            if kiosk._stop.wait(WAIT_S):
-                raise KeyboardInterrupt from None
+    source = SerialPenSource(port, SERIAL_ID)
+    query = _wait_for(source.open, kiosk)
     aspect = query.x_max / query.y_max if query.y_max else CANVAS[0] / CANVAS[1]
     mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=aspect, tablet_height=1.0,
                             area=zones.area)
