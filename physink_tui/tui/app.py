@@ -15,6 +15,7 @@ from textual.message import Message
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry, JournalHeader
+from physink_tui.input.speech.microphone import StreamFactory
 from physink_tui.session.view import SessionView
 from physink_tui.tui import storage
 from physink_tui.tui.config import Config, load_config, save_config
@@ -38,6 +39,7 @@ class TuiOptions:
         theme: the scene's ``light`` or ``dark`` theme (default: the settings').
         config_path: the settings file (default: ``$XDG_CONFIG_HOME/physink/config.json``).
         max_fps: scene redraws a second at most.
+        microphone: the sound input push-to-talk listens on (default: the microphone; tests give a recording).
     """
 
     header: JournalHeader | None = None
@@ -54,6 +56,7 @@ class TuiOptions:
     theme: str | None = None
     config_path: Path | None = None
     max_fps: float = 60.0
+    microphone: StreamFactory | None = None
     title: str = "PhysInk"
     notes: list[str] = field(default_factory=list)
 

@@ -33,6 +33,7 @@ from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
 from physink_tui.tui import storage
 from physink_tui.tui.live import LiveSession
+from physink_tui.tui.push_to_talk import PushToTalk
 from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
@@ -59,6 +60,13 @@ class DeviceStatus(Message):
     text: str
 
 
+@dataclass
+class SpeechStatus(Message):
+    """What push-to-talk is doing or heard (posted from its threads)."""
+
+    text: str
+
+
 class MainScreen(Screen[None]):
     """The control panel."""
 
@@ -81,6 +89,7 @@ class MainScreen(Screen[None]):
         Binding("e", "export", "export the demonstration as a video"),
         Binding("escape", "cancel", "cancel the export"),
         Binding("f2", "settings", "settings: tablet mapping, tip thresholds, theme"),
+        Binding("v", "listen", "push-to-talk: listen on the microphone / stop (\"label ball\", \"the ball falls\")"),
         Binding("question_mark,f1", "help", "this help"),
         Binding("q,ctrl+q", "app.quit", "quit (asks when there is unsaved work)"),
     ]
@@ -94,6 +103,7 @@ class MainScreen(Screen[None]):
         self.view: SessionView | None = None
         self.tablet: TabletWatch | None = None
         self._simulating: JournalEntry | None = None
+        self.talk: PushToTalk | None = None
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
@@ -110,6 +120,9 @@ class MainScreen(Screen[None]):
 
     def attach(self, live: LiveSession, journal: Path | None) -> None:
         self.live = live
+        self.talk = PushToTalk(live.runner, lambda text: self.post_message(SpeechStatus(text)),
+                               stream=getattr(getattr(self.app, "options", None), "microphone", None))
+        live.on_stop(self.talk.stop)
         self.query_one(StatusBar).set(journal=f"journal {journal.name}" if journal else "not journaling")
 
     def watch_tablet(self, device: str | None, serial: str | None) -> None:
@@ -151,6 +164,22 @@ class MainScreen(Screen[None]):
             self.query_one(StatusBar).set(device=message.text)
         else:  # the replay ended
             self.query_one(StatusBar).set(activity="replay done: you are in control")
+
+    def on_speech_status(self, message: SpeechStatus) -> None:
+        self.query_one(StatusBar).set(speech=message.text)
+
+    def action_listen(self) -> None:
+        if self.talk is None:
+            return
+        labels = [] if self.view is None else [c.label for c in self.view.scene.components.values()
+                                               if getattr(c, "label", None)]
+        self.query_one(StatusBar).set(speech="speech: stopping…" if self.talk.listening else "speech: starting…")
+        self._toggle_talk(labels)
+
+    @work(thread=True, exclusive=True, group="speech")
+    def _toggle_talk(self, labels: list[str]) -> None:
+        assert self.talk is not None
+        self.talk.toggle(labels)
 
     def on_scene_view_pen(self, message: SceneView.Pen) -> None:
         if self.live is not None:

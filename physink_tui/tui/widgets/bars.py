@@ -36,7 +36,7 @@ class NarrationBar(Static):
 
 class StatusBar(Static):
     """One line: mode (in demo mode the clock, and ``● recording`` while the pen moves a body), what a worker is
-    doing, pen, device, journal."""
+    doing, pen, device, speech, journal."""
 
     def __init__(self, **kwargs) -> None:
         super().__init__("", **kwargs)
@@ -44,6 +44,7 @@ class StatusBar(Static):
         self.journal = ""
         self.activity = ""
         self.pen = "pen out of range"
+        self.speech = ""
         self._view: SessionView | None = None
 
     def show(self, view: SessionView) -> None:
@@ -51,7 +52,7 @@ class StatusBar(Static):
         self._refresh()
 
     def set(self, *, device: str | None = None, journal: str | None = None, activity: str | None = None,
-            pen: str | None = None) -> None:
+            pen: str | None = None, speech: str | None = None) -> None:
         if device is not None:
             self.device = device
         if journal is not None:
@@ -60,6 +61,8 @@ class StatusBar(Static):
             self.activity = activity
         if pen is not None:
             self.pen = pen
+        if speech is not None:
+            self.speech = speech
         self._refresh()
 
     def _refresh(self) -> None:
@@ -77,6 +80,8 @@ class StatusBar(Static):
         if self.activity:
             parts.append(self.activity)
         parts += [self.pen, self.device]
+        if self.speech:
+            parts.append(self.speech)
         if self.journal:
             parts.append(self.journal)
         self.update("  │  ".join(parts))

@@ -1,0 +1,72 @@
+"""Push-to-talk for the TUI: a key toggles listening on the microphone (terminals send no key release); what is
+heard and accepted goes to the session as a ``say`` entry stamped with the time the utterance began. Recognising is
+`input.speech`'s, acting on the words the session's.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+
+from physink_tui.errors import PhysinkError
+from physink_tui.input.speech.backends import make_recogniser
+from physink_tui.input.speech.listener import Listener, Utterance
+from physink_tui.input.speech.microphone import MicrophoneListener, StreamFactory
+from physink_tui.session.runner import SessionRunner
+
+
+class PushToTalk:
+    """Listening for one live session.
+
+    Args:
+        runner: the live session's runner (`say` stamps utterances on its clock).
+        status: called with a short line for the status bar (from any thread).
+        stream: the sound input (default: the microphone through sounddevice; tests give a recording).
+        recogniser: makes the recogniser on the first use (loading pocketsphinx's model takes a moment).
+    """
+
+    def __init__(self, runner: SessionRunner, status: Callable[[str], None], stream: StreamFactory | None = None,
+                 recogniser: Callable[[], object] = make_recogniser) -> None:
+        self.runner = runner
+        self.status = status
+        self._stream = stream
+        self._make_recogniser = recogniser
+        self._microphone: MicrophoneListener | None = None
+        self.last_heard = ""
+
+    @property
+    def listening(self) -> bool:
+        return self._microphone is not None and self._microphone.listening
+
+    def toggle(self, labels: Iterable[str]) -> None:
+        """Start listening (the grammar on ``labels``), or stop and hear the utterance under way. Blocks while the
+        recogniser loads or the last utterance is decoded: call it from a worker thread."""
+        if self.listening:
+            assert self._microphone is not None
+            self._microphone.stop()  # hears the utterance under way first
+            self.status(f'speech: off (last heard "{self.last_heard}")' if self.last_heard else "speech: off")
+            return
+        try:
+            if self._microphone is None:
+                listener = Listener(self._make_recogniser())  # type: ignore[arg-type]
+                self._microphone = MicrophoneListener(listener, self._heard, clock=self.runner.now,
+                                                      stream=self._stream)
+            self._microphone.listener.set_words(labels)
+            self._microphone.start()
+        except PhysinkError as exc:  # no PortAudio, no microphone, no model
+            self.status(f"speech: {exc}")
+            return
+        self.status("speech: listening (press v again to stop)")
+
+    def stop(self) -> None:
+        """Stop listening, if listening (the session is ending)."""
+        if self.listening:
+            assert self._microphone is not None
+            self._microphone.stop()
+
+    def _heard(self, utterance: Utterance) -> None:
+        if utterance.command is None:
+            self.status(f"speech: not understood ({utterance.rejected})")
+            return
+        self.runner.say(utterance.text, utterance.began)
+        self.last_heard = utterance.text
+        self.status(f'speech: heard "{utterance.text}"')
