@@ -10,13 +10,12 @@ import pytest
 from physink_tui.errors import PhysinkError
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.narrate import timeline_text
+from physink_tui.timeline.phrase_events import label_event, nearest_event
 from physink_tui.timeline.phrases import (
     DEFAULT_VOCABULARY,
     Phrase,
     PhraseError,
     Vocabulary,
-    label_event,
-    nearest_event,
     parse_phrase,
     parse_vocabulary,
 )

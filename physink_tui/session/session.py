@@ -15,11 +15,9 @@ of the session too; an entry the journal cannot hold is refused before it acts, 
 from __future__ import annotations
 
 import traceback
-from collections.abc import Iterable, Iterator
-from contextlib import contextmanager
-from dataclasses import replace
+from collections.abc import Iterable
 
-from physink_tui.errors import JournalError, PhysinkError, SceneError
+from physink_tui.errors import JournalError, PhysinkError
 from physink_tui.formats.journal.codec import encode_entry
 from physink_tui.formats.journal.entries import (
     CommandEntry,
@@ -31,8 +29,7 @@ from physink_tui.formats.journal.entries import (
     SayEntry,
 )
 from physink_tui.formats.journal.writer import JournalWriter
-from physink_tui.formats.json_checks import Place
-from physink_tui.formats.project.codec import decode_project_object, project_vocabulary, vocabulary_lines
+from physink_tui.formats.project.codec import vocabulary_lines
 from physink_tui.input.journal_replay import PEN_DEVICE, add_journal_device, pen_input_for
 from physink_tui.input.pen.gestures import Gesture
 from physink_tui.input.pen.pen_input import PenInput
@@ -41,6 +38,7 @@ from physink_tui.input.sources import RawReport, SourceEnded
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session import labelling, simulation
+from physink_tui.session.command_handling import SessionCommands
 from physink_tui.session.history import Document, History
 from physink_tui.session.modes.base import Mode
 from physink_tui.session.modes.demo import DemoMode
@@ -52,10 +50,8 @@ from physink_tui.sim.defaults import DEFAULT_BUDGET
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.phrases import DEFAULT_VOCABULARY, Vocabulary, parse_vocabulary
 
-PLAYBACK = ("play", "pause", "stop", "seek")
 
-
-class Session:
+class Session(SessionCommands):
     """One session's state (see the module docstring). Build with `from_header`; feed with `handle` and
     `advance`; look with `view`; end with `finish`.
 
@@ -292,114 +288,11 @@ class Session:
         if waiting is not None:
             labelling.label(self, made, waiting.text)
 
-    def _command(self, entry: CommandEntry) -> None:
-        name, args, t = entry.name, entry.args, entry.t
-        if name == "label":
-            labelling.label(self, str(args[0]), str(args[1]))
-        elif name in PLAYBACK:
-            self._playback(name, args, t)
-        elif name == "mode":
-            self._switch(str(args[0]), t)
-        elif name in ("undo", "redo", "clear"):
-            with self._closed(t):
-                self._edit(name)
-        elif name == "simulate":
-            with self._closed(t):
-                self._simulate(int(args[0]), int(args[1]))
-        elif name == "load":
-            self._load(entry)
-        elif name == "end":  # the driver finishes next; input after it would still be handled
-            self._end()
-        elif name == "save":  # the driver (the TUI) writes the file; a replay writes none
-            self.sketch.flush(t)
-        else:
-            self.sketch.flush(t)
-            self.tell(f"{name}: not available yet (saving comes with a later issue)")
-
-    def _switch(self, mode: str, t: float) -> None:
-        """``mode sketch`` or ``mode demo``: what the current mode was doing is committed first."""
-        if mode not in ("sketch", "demo"):
-            self.tell(f"mode {mode}: the modes are sketch and demo")
-            return
-        if mode == "demo" and isinstance(self.current, DemoMode):
-            return
-        self.current.close(t)
-        self.sketch.close(t)
-        self.current = DemoMode(self, t) if mode == "demo" else self.sketch
-
-    @contextmanager
-    def _closed(self, t: float) -> Iterator[None]:
-        """The body acts on the document with the modes closed at ``t`` (sketch takes a waiting half-X, adjust
-        puts its body down, demo commits its take); a demonstration then starts again from the document."""
-        self.current.close(t)
-        self.sketch.close(t)
-        demonstrating = isinstance(self.current, DemoMode)
-        self.current = self.sketch
-        try:
-            yield
-        finally:
-            if demonstrating:
-                self.current = DemoMode(self, t)
-
-    def _edit(self, name: str) -> None:
-        """Undo, redo and clear act on the document in every mode (`_closed`)."""
-        if name == "undo" and self.history.undo() is None:
-            self.tell("nothing to undo")
-        elif name == "redo" and self.history.redo() is None:
-            self.tell("nothing to redo")
-        elif name == "clear":
-            if self.scene.components or self.document.timeline is not None:
-                self.commit(Document(replace(Scene(), next_id=self.scene.next_id)), "clear")
-            self.selected = self.sketch.last_created = None
-        self._forget_gone()
-
-    def _simulate(self, seed: int, budget: int) -> None:
-        """``simulate SEED BUDGET``: searches here and now (`simulation.attempt`); the result is shown until the
-        document changes."""
-        result, text = simulation.attempt(self.document, self.canvas, seed, budget)
-        if result is not None:
-            self._searched = (self.document, result)
-        self.tell(text)
-
     def _forget_stale_search(self) -> None:
         """A SIMULATE result whose document changed (an edit, or a take being recorded) is forgotten."""
         if self._searched is not None and (self._searched[0] is not self.document or (
                 isinstance(self.current, DemoMode) and self.current.has_take)):
             self._searched = None
-
-    def _load(self, entry: CommandEntry) -> None:
-        """``load PATH`` with the project embedded: it becomes the document (one undoable action) and its words
-        join the vocabulary; a demonstration starts again from it."""
-        where = f"load {entry.args[0] if entry.args else ''}".strip()
-        if entry.project is None:
-            self.tell(f"{where}: the project is not embedded in the input, so nothing was loaded")
-            return
-        project = decode_project_object(entry.project, Place(where, SceneError))
-        with self._closed(entry.t):
-            self.commit(Document(project.scene, project.timeline), where)
-            self.add_words(project_vocabulary(project))
-            if tuple(project.canvas) != tuple(self.canvas):
-                self.tell(f"{where}: the project was drawn on a {project.canvas[0]:g} x {project.canvas[1]:g} "
-                          f"canvas, this session's is {self.canvas[0]:g} x {self.canvas[1]:g}; it is shown as drawn")
-            self.tell(f"loaded {entry.args[0] if entry.args else 'a project'}: {len(project.scene.components)} "
-                      "components" + (", a timeline" if project.timeline is not None else ""))
-
-    def _end(self) -> None:
-        self.current.close(self.t)
-        self.sketch.close(self.t)
-        self.current = self.sketch
-        self.ended = True
-        self._forget_stale_search()
-
-    def _playback(self, name: str, args: tuple, t: float) -> None:
-        demo = self.current
-        if not isinstance(demo, DemoMode):
-            self.sketch.flush(t)
-            self.tell(f"{name}: playback works in demo mode (mode demo)")
-        elif name == "seek":
-            demo.seek(float(args[0]), t)
-        else:
-            {"play": demo.play, "pause": demo.pause, "stop": demo.stop}[name](t)
 
     def _say(self, entry: SayEntry) -> None:
         words = entry.text.strip().split()

@@ -18,7 +18,7 @@ from physink_tui.scene.components import BACKGROUND, Point, Scene
 from physink_tui.scene.physics.build import Built, build
 from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction
 from physink_tui.scene.physics.dragging import Drag, grab_body
-from physink_tui.scene.physics.sleeping import sleep_groups
+from physink_tui.scene.physics.sleeping import sleep_groups, tied_groups
 from physink_tui.scene.physics.speed import limit_speed
 from physink_tui.scene.physics.state import REST, Motion, Pose, Velocity, WorldState
 from physink_tui.scene.physics.write_back import scene_from
@@ -366,17 +366,9 @@ class World:
 
     def _weld_group(self, body_id: str) -> set[pymunk.Body]:
         """``body_id``'s body and every body welded to it, directly or through others (not the background)."""
-        built = self._built
-        start = self._get(body_id)
-        group, frontier = {start}, [start]
-        while frontier:
-            body = frontier.pop()
-            for a, b in built.welds:
-                for me, other in ((a, b), (b, a)):
-                    if me is body and other not in group and other is not built.bodies[BACKGROUND]:
-                        group.add(other)
-                        frontier.append(other)
-        return group
+        start, background = self._get(body_id), self._built.bodies[BACKGROUND]
+        bodies = [b for b in self._built.bodies.values() if b is not background]
+        return next(set(group) for group in tied_groups(bodies, self._built.welds) if start in group)
 
     def _handle_frictions(self) -> None:
         """Registers `contacts.set_friction` for the pairs of surfaces not registered yet (pairs are only added)."""
