@@ -140,7 +140,8 @@ def test_an_unfinished_session_is_recovered_and_finalised_before_new_sessions(
     crashed = out / "20260101T000000Z"
     crashed.mkdir(parents=True)
     journal = (done / record["session"] / JOURNAL).read_bytes()
-    (crashed / JOURNAL).write_bytes(journal[: len(journal) * 2 // 3])  # killed mid-session, mid-line
+    line_start = journal.rindex(b"\n", 0, len(journal) * 2 // 3) + 1
+    (crashed / JOURNAL).write_bytes(journal[: line_start + 5])  # killed mid-session, five bytes into a line
     assert kiosk(out, write_capture(visits([Stroke.box(*on_canvas(0.1, 0.1), *on_canvas(0.3, 0.2))]),
                                     tmp_path / "one.hid")) == 0
     log = capsys.readouterr().out
