@@ -186,6 +186,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--max-disk", metavar="SIZE", help="retire the oldest finished sessions beyond SIZE (e.g. 2G)")
     p.add_argument("--video-size", type=_frame_size, default=(960, 600), metavar="WxH",
                    help="the sessions' videos (default: 960x600)")
+    p.add_argument("--speech", action="store_true",
+                   help="listen on the microphone all the time: spoken labels and events go to the session")
+    p.add_argument("--vosk-model", metavar="DIR", help="with --speech: the vosk model in DIR instead of the "
+                   "embedded pocketsphinx one")
 
     sub.add_parser("devices", help="list pen tablets found (hidraw/hidapi, USB, serial)")
 

@@ -34,6 +34,7 @@ from physink_tui.kiosk.store import SessionStore, parse_size
 
 if TYPE_CHECKING:
     from physink_tui.kiosk.service import Kiosk
+    from physink_tui.kiosk.speech import KioskSpeech
 
 CANVAS = (1600.0, 1000.0)
 DEVICE_ID = "tablet0"
@@ -134,13 +135,18 @@ def run(args: argparse.Namespace) -> int:
             print(f"physink kiosk: --max-disk: {exc}", file=sys.stderr)
             return 2
     settings = KioskSettings(args.idle, args.keep, max_bytes, Look(*args.video_size, 30))
+    if args.speech and args.replay is not None and args.speed != 1.0:
+        print("physink kiosk: --speech listens in real time, so a replay with it needs --speed 1", file=sys.stderr)
+        return 2
     kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
+    start = time.monotonic()
+    clock: Callable[[], float] = (  # a replay's input time is the capture's own
+        (lambda: (time.monotonic() - start) * args.speed) if args.replay is not None else time.monotonic)
+    ears = _ears(args, kiosk, clock)
     try:
         if args.replay is not None:
             source, device, header = _replay_source(args.replay, args.speed, zones)
-            start = time.monotonic()
-            clock: Callable[[], float] = lambda: (time.monotonic() - start) * args.speed  # noqa: E731
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
             return kiosk.run(source, device, header, replay=True, clock=clock)
         if args.serial:
@@ -151,3 +157,17 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         kiosk.stop()
         return 0
+    finally:
+        if ears is not None:
+            ears.stop()
+
+
+def _ears(args: argparse.Namespace, kiosk: Kiosk, clock: Callable[[], float]) -> KioskSpeech | None:
+    """With ``--speech``: the microphone, listening (None when it cannot: the log says why)."""
+    if not args.speech:
+        return None
+    from physink_tui.input.speech.backends import make_recogniser
+    from physink_tui.kiosk.speech import KioskSpeech
+
+    ears = KioskSpeech(kiosk.hear, clock, log, recogniser=lambda: make_recogniser(args.vosk_model))
+    return ears if ears.start() else None

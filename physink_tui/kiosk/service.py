@@ -39,6 +39,7 @@ from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.sources import PenSource, SourceEnded
+from physink_tui.input.speech.listener import Utterance
 from physink_tui.kiosk.controls import PASS, PRESS, ControlFilter
 from physink_tui.kiosk.finalise import Ending, child_command, finalise_journal
 from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
@@ -73,8 +74,9 @@ class KioskSettings:
 class _Live:
     """The session being recorded: its folder, journal, session and runner."""
 
-    def __init__(self, folder: Path, header: JournalHeader, clock: Callable[[], float]) -> None:
+    def __init__(self, folder: Path, header: JournalHeader, clock: Callable[[], float], start: float) -> None:
         self.folder = folder
+        self.start = start  # the kiosk's clock when the session began
         self.writer = JournalWriter.create(folder / JOURNAL, header)
         self.session = Session.from_header(header)
         self.session.journal = self.writer
@@ -199,6 +201,25 @@ class Kiosk:
         self.log(f"kiosk: session {live.folder.name} ended ({why}) after {live.session.t:.1f} s")
         self._finishing.put((live.folder, Ending(why, live.folder.name)))
 
+    # -- the listening thread ---------------------------------------------------------------------------------------
+
+    def hear(self, utterance: Utterance) -> None:
+        """An utterance from the microphone (``began`` on the kiosk's clock): an accepted one is said to the session
+        being recorded, stamped when it began, and counts as input (the visitor is still there); a rejected one
+        changes nothing."""
+        if utterance.command is None:
+            self.log(f"kiosk: speech not understood ({utterance.rejected})")
+            return
+        with self._lock:
+            live = self._live
+            if live is not None:
+                self._last_input = max(self._last_input, self._clock())
+                live.runner.say(utterance.text, max(0.0, utterance.began - live.start))
+        if live is None:
+            self.log(f'kiosk: heard "{utterance.text}" with no session recording (it starts at the first touch)')
+        else:
+            self.log(f'kiosk: heard "{utterance.text}"')
+
     # -- the source thread ------------------------------------------------------------------------------------------
 
     def _entry(self, entry: JournalEntry) -> None:
@@ -261,7 +282,7 @@ class Kiosk:
         try:
             folder = self.store.new_folder(started)
             start = self._clock()
-            self._live = _Live(folder, self._header, lambda: self._clock() - start)
+            self._live = _Live(folder, self._header, lambda: self._clock() - start, start)
         except (OSError, JournalError) as exc:
             self.log(f"kiosk: cannot start a session in {self.store.root}: {exc}")
             return None
