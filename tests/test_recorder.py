@@ -242,3 +242,52 @@ def test_a_body_set_moving_again_in_a_contact_that_goes_on_is_moved_by_that_cont
     (contact,) = [e for e in timeline.events if e.type == "contact"]
     platform = [e for e in timeline.events if e.type == "movement" and e.components[0] == "platform"]
     assert platform and all(e.causes == (contact.id,) for e in platform)
+
+
+def push_and_catch_up(run: Run, between=lambda: None) -> None:
+    """The held egg pushes the paddle, which swings ahead and stops (no gravity in demo mode); ``between`` runs
+    meanwhile; then the egg, still held, catches the paddle up and touches it again."""
+    hit = ContactRecord(0, "egg", "paddle", (100, 90), (0.0, 1.0))
+    for k in range(10):
+        run.step({"egg": moving(100, 60 + k, 0, 120), "paddle": still(100, 100), "ball": still(400, 100)},
+                 grabbed="egg")
+    run.step({"egg": moving(100, 70, 0, 120), "paddle": moving(100, 100, 0, 600)}, [hit], grabbed="egg",
+             touching=[("egg", "paddle")])
+    for k in range(1, 30):  # the paddle flies 5 units a frame for 10 frames, then stops 60 units ahead
+        run.step({"egg": moving(100, 70 + k, 0, 120), "paddle": moving(100, 100 + 5 * min(k, 10), 0, 0 if k > 10
+                                                                         else 600), "ball": still(400, 100)},
+                 grabbed="egg")
+    between()
+    run.step({"egg": moving(100, 140, 0, 120), "paddle": moving(100, 150, 0, 120)},
+             [ContactRecord(0, "egg", "paddle", (100, 140), (0.0, 1.0))], grabbed="egg",
+             touching=[("egg", "paddle")])
+    for k in range(1, 5):
+        run.step({"egg": moving(100, 140 + k, 0, 120), "paddle": moving(100, 150 + k, 0, 120)}, grabbed="egg",
+                 touching=[("egg", "paddle")])
+
+
+def test_the_held_body_catching_up_with_a_body_it_pushed_is_still_pushing_it() -> None:
+    # the egg pushed down through a paddle (thesis 2.3.3): the paddle swings ahead, the egg catches up
+    recorder = Recorder({"egg": box("egg", 20, 20), "paddle": box("paddle", 60, 10), "ball": box("ball", 20, 20)},
+                        frozenset({"egg", "paddle", "ball"}))
+    run = Run(recorder)
+    push_and_catch_up(run)
+    timeline = run.timeline
+    (push,) = [e for e in timeline.events if e.type == "contact"]
+    paddle_moves = [e for e in timeline.events if e.type == "movement" and e.components[0] == "paddle"]
+    assert paddle_moves and all(m.causes == (push.id,) for m in paddle_moves)
+
+
+def test_a_pushed_body_that_something_else_touched_meanwhile_is_touched_anew() -> None:
+    recorder = Recorder({"egg": box("egg", 20, 20), "paddle": box("paddle", 60, 10), "ball": box("ball", 20, 20)},
+                        frozenset({"egg", "paddle", "ball"}))
+    run = Run(recorder)
+
+    def ball_hits_paddle() -> None:
+        run.step({"egg": moving(100, 100, 0, 120), "paddle": moving(100, 150, 0, 10), "ball": moving(140, 150, -50, 0)},
+                 [ContactRecord(0, "ball", "paddle", (130, 150), (-1.0, 0.0))], touching=[("ball", "paddle")],
+                 grabbed="egg")
+
+    push_and_catch_up(run, ball_hits_paddle)
+    pairs = [frozenset(e.components) for e in run.timeline.events if e.type == "contact"]
+    assert pairs == [frozenset({"egg", "paddle"}), frozenset({"ball", "paddle"}), frozenset({"egg", "paddle"})]

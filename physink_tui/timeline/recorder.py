@@ -8,8 +8,10 @@ the body the pen holds, the bodies playing back their recording), it keeps one o
   again continues its latest movement (which the last contact or end-contact involving it created);
 - a contact is caused by the movements of the bodies in it and causes a new movement of each movable body in it;
   a resting or sliding contact is one contact (`touches`: reports within 15 frames, or before the bodies have
-  moved apart by half the smaller one's size); a contact with a body that is playing back its
-  recording splits that body's recorded movement (concurrent movement, thesis 4.1);
+  moved apart by half the smaller one's size); the body the pen holds touching again a body it set moving, which
+  nothing else has touched since, still pushes it in the same contact (the pen catching up with what it pushed:
+  the egg pushed through the paddles, thesis 2.3.3, touches each paddle once); a contact with a body that is
+  playing back its recording splits that body's recorded movement (concurrent movement, thesis 4.1);
 - movable bodies that begin in contact and come apart make an end-contact, which causes a movement of each
   (thesis figure 3-9); a body that starts moving by itself is explained by the moving body it touches (a contact),
   else by a recent separation (an end-contact, the cup dispenser), else it continues its latest movement, else the
@@ -33,7 +35,7 @@ from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.movement_record import OpenMovement, Regions
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
-from physink_tui.timeline.touches import Touches
+from physink_tui.timeline.touches import Touches, pushed_again
 
 MOVING_SPEED = 5.0
 """Canvas units per second above which a body counts as moving (its centre, or its rim when it spins)."""
@@ -291,7 +293,12 @@ class Recorder:
             return  # the contact recorded goes on (see touches.py)
         if a in obs.playing and b in obs.playing:
             return  # both replaying what was recorded
+        again = None if obs.grabbed is None else pushed_again(self.timeline, pair, obs.grabbed, self.group_bodies)
+        if again is not None:
+            self._touches.recorded(pair, obs.t, again)
+            return
         self._add_contact(obs, a, b, contact.point, contact.normal)
+
 
     def _add_contact(self, obs: Observation, a: str, b: str, point: tuple[float, float] | None,
                      normal: tuple[float, float] | None) -> None:

@@ -12,6 +12,12 @@ A resting or sliding contact is one contact, however often the physics reports i
   leaves the platform, travels, comes back: thesis figure 2-12's "hits B twice") carries the body well clear, so
   it is a new contact.
 
+A third rule is about the pen: the body it holds touching again a body it set moving is still pushing it, when
+nothing else has touched that body since (`pushed_again`). Demo mode has no gravity, so a paddle pushed by a slowly
+dragged egg swings ahead, slows and is caught up: to the user one push through the paddles (thesis 2.3.3), and under
+gravity the paddle swings away for good. A fixed body touched again (a ball dragged onto a platform twice, figure
+2-12) was not set moving, so that is a second contact.
+
 Why the smaller body's size: it is the one that bounces, rattles or slides, and whether it has *left* is judged
 against itself: a ball that rises less than its radius off a platform still overlaps, to the eye, where it lay,
 whatever its speed; one that rises a diameter has visibly bounced. The measured demonstrations bear this out:
@@ -30,10 +36,11 @@ goes on is moved by that contact, not by a new one (`going_on`). The recorder as
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 from physink_tui.scene.physics.state import Motion
+from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.qualitative import BodyOutline, hull_gap
 
 SAME_CONTACT_FRAMES = 15
@@ -157,3 +164,21 @@ class Touches:
         self._last_report.clear()
         self._going.clear()
         self._seen.clear()
+
+
+def pushed_again(timeline: Timeline, pair: frozenset[str], held: str,
+                 group_of: Callable[[str], tuple[str, ...]]) -> str | None:
+    """The contact that a touch of ``pair`` by the ``held`` body continues: the pair's last contact, when it set the
+    other body (or what is tied to it, ``group_of``) moving and nothing else has touched that body since; else None
+    (a new contact)."""
+    if held not in pair or len(pair) != 2:
+        return None
+    (other,) = pair - {held}
+    last = next((ev for ev in reversed(timeline.events)
+                 if ev.type in ("contact", "end_contact") and other in ev.components), None)
+    if last is None or last.type != "contact" or frozenset(last.components) != pair:
+        return None
+    group = group_of(other)
+    pushed = any(ev.type == "movement" and ev.components and ev.components[0] in group and last.id in ev.causes
+                 for ev in timeline.events)
+    return last.id if pushed else None
