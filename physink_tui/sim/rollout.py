@@ -184,6 +184,7 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     world.hold_until_touched(set(parameters.start_bodies), touching_pairs(start_scene, held))
     sleepers = set(held)
     fixed = {b for b in bodies if applied.is_fixed(b)}
+    welded = {b: world.motion(b) for b in fixed}  # welded bodies never move in a rollout (nothing drags them)
     limits = _speed_limits(world, bodies, world.dt)
     bounds = _bounds(canvas)
     names = applied.names()
@@ -194,7 +195,7 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     while steps < max_steps:
         asleep = {b for b in sleepers if world.pymunk_body(b).is_sleeping}
         sleepers = asleep
-        frame = step_and_observe(world, bodies)
+        frame = step_and_observe(world, bodies, welded)
         steps += 1
         t = round(steps * world.dt, 6)
         if any(_blown(frame.motions[body]) for body in movable):

@@ -45,17 +45,22 @@ def demo_world(scene: Scene) -> World:
     return world
 
 
-def step_and_observe(world: World, bodies: Iterable[str]) -> Frame:
+def step_and_observe(world: World, bodies: Iterable[str], fixed: Mapping[str, Motion] | None = None) -> Frame:
     """Advance ``world`` one step and observe ``bodies``: their motions, the contacts begun among them, and which
-    of them touch."""
+    of them touch. ``fixed``: motions of bodies among them that cannot move (static, and no drag can make them
+    dynamic: a rollout's welded bodies), given rather than read from the world each step."""
     world.step(1)
     get = world.pymunk_body
     motions: dict[str, Motion] = {}
+    known = fixed or {}
     for body in bodies:  # `World.motion`, reading each body's position once
-        b = get(body)
-        p = b.position
-        v = b.velocity_at_world_point(p)
-        motions[body] = Motion(p.x, p.y, b.angle, v.x, v.y, b.angular_velocity)
+        m = known.get(body)
+        if m is None:
+            b = get(body)
+            p = b.position
+            v = b.velocity_at_world_point(p)
+            m = Motion(p.x, p.y, b.angle, v.x, v.y, b.angular_velocity)
+        motions[body] = m
     observed = motions.keys()
     contacts = tuple(c for c in world.take_contacts() if c.a_id in observed and c.b_id in observed)
     touching = world.touching()
