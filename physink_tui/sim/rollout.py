@@ -235,7 +235,8 @@ def _speed(world: World, body: str) -> float:
 
 
 def _blown(m: Motion) -> bool:
-    return not all(math.isfinite(v) for v in m) or math.hypot(m.vx, m.vy) > EXPLODED_SPEED
+    """NaN or infinity anywhere in the motion (a sum of them is not finite), or a huge speed."""
+    return not math.isfinite(m[0] + m[1] + m[2] + m[3] + m[4] + m[5]) or math.hypot(m[3], m[4]) > EXPLODED_SPEED
 
 
 def _exploded(world: World, bodies: list[str]) -> bool:
