@@ -103,3 +103,25 @@ def test_behaviour_no_physics_produces_gets_a_verdict_naming_it(tmp_path: Path) 
     assert '"Movement of pebble"' in verdict and "t=1.00" in verdict, verdict
     assert "nothing sets the pebble moving" in verdict
     assert any("pebble" in line for line in result["differences"])
+
+
+def test_a_missing_second_touch_is_named_as_such_in_the_verdict() -> None:
+    from physink_tui.scene.components import Scene
+    from physink_tui.sim.evaluate import make_problem
+    from physink_tui.sim.verdict import verdict
+    from physink_tui.timeline.equivalence import compare
+    from tests.test_equivalence import NAMES, behaviour
+
+    scene = Scene()
+    for body, name in NAMES.items():
+        scene = scene.add(Body(body, "box", ((-10, -10), (10, -10), (10, 10), (-10, 10)), 0.0, (0.0, 0.0), 0.0,
+                               MATERIALS["box"], name))
+    twice = behaviour([("b3", "bottom", "top"), ("b3", "bottom", "top")])  # figure 2-12, green: B twice
+    once = behaviour([("b3", "bottom", "top")])
+    problem = make_problem(scene, twice, CANVAS)
+    comparison = compare(twice, once, NAMES, NAMES, simulation=True)
+    text = verdict(problem, once, comparison, found=False, rollouts=12)
+    assert "the ball touches the platform B once in the best candidate; this is the second touch" in text, text
+    never = behaviour([])
+    text = verdict(problem, never, compare(twice, never, NAMES, NAMES, simulation=True), found=False, rollouts=12)
+    assert "the ball never reaches the platform B" in text, text

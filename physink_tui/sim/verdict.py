@@ -6,7 +6,8 @@ reproduce, then the first of that leg's own events the simulation lacks. Why, in
 
 - a movement nothing causes (no start, no contact: a body rising from rest by itself): no physics sets a body at
   rest moving with nothing touching it;
-- a contact the simulation never makes: how close the body came to where the contact was demonstrated;
+- a contact the simulation never makes: how close the body came to where the contact was demonstrated, and, for a
+  pair that touches again in the demonstration (the ball bouncing on platform B twice), how often it touched;
 - otherwise the metric's own reason for that leg (another side, another region, another cause, an event more).
 """
 
@@ -68,5 +69,20 @@ def _why_missing(problem: Problem, simulated: Timeline, event: Event, names: dic
     if event.type == "contact" and len(event.components) == 2:
         a, b = (name(c) for c in event.components)
         near = miss_distance(demonstrated=problem.timeline, simulated=simulated, only_demonstrated=(event.id,))
-        return f"the {a} never reaches the {b} (the best candidate comes within {near:.0f} canvas units of it)"
+        pair = set(event.components)
+        shown = sum(1 for e in problem.timeline.events if e.type == "contact" and set(e.components) == pair
+                    and e.t0 <= event.t0)
+        made = sum(1 for e in simulated.events if e.type == "contact" and set(e.components) == pair)
+        if made == 0 or shown == 1:
+            return f"the {a} never reaches the {b} (the best candidate comes within {near:.0f} canvas units of it)"
+        return (f"the {a} touches the {b} {_times(made)} in the best candidate; this is the {_ordinal(shown)} touch "
+                f"demonstrated (the candidate comes within {near:.0f} canvas units of where it was)")
     return "the best candidate never does it"
+
+
+def _times(n: int) -> str:
+    return {1: "once", 2: "twice"}.get(n, f"{n} times")
+
+
+def _ordinal(n: int) -> str:
+    return {2: "second", 3: "third", 4: "fourth"}.get(n, f"{n}th")
