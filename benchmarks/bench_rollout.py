@@ -74,10 +74,10 @@ def install(clock: Clock) -> None:
         finally:
             clock.spent["physics"] += time.perf_counter() - t0
 
-    def observed(world: World, bodies: Any) -> Any:
+    def observed(world: World, bodies: Any, fixed: Any = None) -> Any:
         inside[0] = True
         try:
-            return stepping.step_and_observe(world, bodies)
+            return stepping.step_and_observe(world, bodies, fixed)
         finally:
             inside[0] = False
 
