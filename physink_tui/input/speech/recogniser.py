@@ -68,7 +68,7 @@ class Recogniser(Protocol):
 
     name: str
     threshold: float
-    """Words scoring below this are too poorly matched: the utterance is rejected."""
+    """Words (articles aside) scoring below this are too poorly matched: the utterance is rejected."""
     min_confidence: float
     """Words (articles aside) less likely than this are too uncertain: the utterance is rejected."""
 
