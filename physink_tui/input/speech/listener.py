@@ -76,6 +76,11 @@ class Listener:
         """Names and words left out of the grammar because the recogniser's dictionary lacks one of their words."""
         return self.grammar.unspeakable
 
+    def guessed(self, names: Iterable[str]) -> dict[str, str]:
+        """The words of ``names`` the recogniser says with a pronunciation guessed from their spelling, with it."""
+        words = {w for name in names for w in name.split()}
+        return {w: p for w in sorted(words) if (p := self.recogniser.guessed(w)) is not None}
+
     def hear(self, samples: np.ndarray, began: float = 0.0) -> Utterance:
         """The utterance in 16 kHz mono int16 ``samples`` that start at time ``began`` (the caller's seconds)."""
         bounds = speech_bounds(samples, self.vad)

@@ -6,7 +6,8 @@ scored by its mean log acoustic likelihood per 10 ms frame (pocketsphinx normali
 best one, so 0 is a perfect fit) and by its posterior probability in the decoder's lattice; `THRESHOLD` and
 `MIN_CONFIDENCE` were calibrated on the fixtures (tests/speech/, docs/BENCHMARKS.md). A grammar forces any sound
 into a sentence, so the grammar given to pocketsphinx also has a loop of single phones (`GARBAGE`, at weight
-`GARBAGE_WEIGHT`): speech outside the grammar fits the loop better and comes out as `Decoded.outside`.
+`GARBAGE_WEIGHT`): speech outside the grammar fits the loop better and comes out as `Decoded.outside`. A word the
+dictionary lacks is given the pronunciation `letter_to_sound.pronounce` guesses from its spelling.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ import numpy as np
 from physink_tui.errors import SpeechError
 from physink_tui.input.speech.audio import RATE
 from physink_tui.input.speech.grammar import SpeechGrammar
+from physink_tui.input.speech.letter_to_sound import pronounce
 from physink_tui.input.speech.recogniser import Decoded, Word
 
 THRESHOLD = -4.4
@@ -92,12 +94,18 @@ class PocketsphinxRecogniser:
         self._screen = pocketsphinx.Decoder(**{**config, "bestpath": False})
         self._words = pocketsphinx.Decoder(**config)
         self._added: set[str] = set()
+        self._guessed: dict[str, str] = {}  # words added with a pronunciation guessed from their spelling
         self._grammar: SpeechGrammar | None = None
         for word in GARBAGE:
             self._screen.add_word(word, word[2:].upper(), word == GARBAGE[-1])
 
     def speakable(self, word: str) -> bool:
-        return self._words.lookup_word(word) is not None
+        return self._words.lookup_word(word) is not None or pronounce(word) is not None
+
+    def guessed(self, word: str) -> str | None:
+        if word in self._guessed:
+            return self._guessed[word]
+        return None if self._words.lookup_word(word) is not None else pronounce(word)
 
     def set_grammar(self, grammar: SpeechGrammar) -> None:
         for word in grammar.words():
@@ -117,6 +125,14 @@ class PocketsphinxRecogniser:
         self._added.add(word)
         lookup = self._words.lookup_word
         known = [p for p in (lookup(word if n == 1 else f"{word}({n})") for n in range(1, 6)) if p]
+        if not known:
+            guess = pronounce(word)
+            if guess is None:
+                return
+            for decoder in (self._screen, self._words):
+                decoder.add_word(word, guess, True)
+            self._guessed[word] = guess
+            known = [guess]
         extra = [v for v in (british(p) for p in known) if v is not None and v not in known]
         extra = list(dict.fromkeys(extra))
         for n, phones in enumerate(extra, start=len(known) + 1):

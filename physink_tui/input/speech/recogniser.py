@@ -76,6 +76,11 @@ class Recogniser(Protocol):
         """Whether the recogniser can say ``word`` (it is in its dictionary)."""
         ...
 
+    def guessed(self, word: str) -> str | None:
+        """The pronunciation guessed from the spelling of a word the dictionary lacks, or None (a dictionary word,
+        or one the recogniser cannot say)."""
+        ...
+
     def set_grammar(self, grammar: SpeechGrammar) -> None:
         """Decode against ``grammar`` from now on."""
         ...

@@ -73,6 +73,9 @@ class VoskRecogniser:
     def speakable(self, word: str) -> bool:
         return self._model.vosk_model_find_word(word) >= 0
 
+    def guessed(self, word: str) -> str | None:
+        return None  # a vosk model's words are its own: a word it lacks cannot be added in grammar mode
+
     def set_grammar(self, grammar: SpeechGrammar) -> None:
         self._phrases = [w for w in grammar.words() if self.speakable(w)] + [UNKNOWN] * self.speakable(UNKNOWN)
 
