@@ -55,8 +55,8 @@ _LONG = {"a": "EY", "e": "IY", "i": "AY", "o": "OW", "u": "UW", "y": "AY"}
 def pronounce(word: str) -> str | None:
     """ARPAbet phones for ``word`` (lower-case letters, inner ``'`` or ``-``), or None for anything else.
 
-    >>> pronounce("b"), pronounce("paddle"), pronounce("ramp")
-    ('B IY', 'P AE D AH L', 'R AE M P')
+    >>> pronounce("b"), pronounce("paddle"), pronounce("ramp"), pronounce("t-bar"), pronounce("ball's")
+    ('B IY', 'P AE D AH L', 'R AE M P', 'T IY B AA R', 'B AO L Z')
     """
     word = word.lower()
     if not _WORD.fullmatch(word):
@@ -64,8 +64,8 @@ def pronounce(word: str) -> str | None:
     if len(word) == 1:
         return LETTER_NAMES[word]
     phones: list[str] = []
-    for part in re.split(r"['-]", word):
-        phones.extend(_with_suffix(part))
+    for part in word.split("-"):  # "t-bar": a letter said by its name; "ball's", "don't": one word
+        phones.extend(LETTER_NAMES[part].split() if len(part) == 1 else _with_suffix(part.replace("'", "")))
     return " ".join(phones) or None
 
 
