@@ -7,7 +7,11 @@ third of them misheard) and flite's statistical voices slt (US female) and rms (
 needed only here (apt-get install espeak-ng flite), never by the tests or CI: the WAVs and
 tests/speech/manifest.json are committed. Run from the repository root:
 
-    python scripts/make_speech_fixtures.py
+    python scripts/make_speech_fixtures.py [--development DIR]
+
+``--development DIR`` instead writes a larger development set to DIR (never committed): every sentence, in and out of
+the grammar, in every voice setting, with other noise draws (208 utterances, about 12 MB). The rejection thresholds
+are calibrated on it and checked on the committed fixtures (benchmarks/bench_speech.py --development DIR).
 
 Output: 16 kHz mono 16-bit WAVs, trimmed to the speech with 0.3 s around it, and a manifest listing each file, how
 it was made and what it must give: ``{"command": {...}}`` for a sentence of the grammar with the labels given in
@@ -18,6 +22,7 @@ Noise is seeded, so a run on the same espeak-ng gives the same files.
 
 from __future__ import annotations
 
+import argparse
 import json
 import shutil
 import subprocess
@@ -102,12 +107,35 @@ def with_noise(samples: np.ndarray, snr_db: float | None, rng: np.random.Generat
     return samples + pink + floor
 
 
-def main() -> int:
+def development(out: Path) -> int:
+    """Every sentence in every voice setting into ``out``, with its manifest; returns how many were written."""
+    rng = np.random.default_rng(1234)
+    grammar = SpeechGrammar.build(LABELS)
+    out.mkdir(parents=True, exist_ok=True)
+    manifest = []
+    for i, text in enumerate(SENTENCES + OUT_OF_GRAMMAR):
+        parsed = grammar.parse(text) if i < len(SENTENCES) else None
+        for k, (synthesiser, voice, speed, snr) in enumerate(VOICES):
+            name = f"dev{i:02d}_{k}.wav"
+            write_wav(out / name, to_int16(with_noise(trim(synthesise(text, synthesiser, voice, speed)), snr, rng)))
+            manifest.append({"file": name, "made": describe(synthesiser, voice, speed, snr), "text": text,
+                             "command": parsed and parsed.as_json()})
+    (out / "manifest.json").write_text(json.dumps({"labels": LABELS, "fixtures": manifest}, indent=1) + "\n")
+    return len(manifest)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--development", type=Path, help="write the development set to this folder instead")
+    args = parser.parse_args(argv)
     missing = [tool for tool in ("espeak-ng", "flite") if shutil.which(tool) is None]
     if missing:
         print(f"make_speech_fixtures: {' and '.join(missing)} not installed (apt-get install espeak-ng flite); "
               "they are needed only to regenerate the fixtures, which are committed", file=sys.stderr)
         return 1
+    if args.development is not None:
+        print(f"{development(args.development)} development utterances in {args.development}")
+        return 0
     rng = np.random.default_rng(16)
     grammar = SpeechGrammar.build(LABELS)
     OUT.mkdir(parents=True, exist_ok=True)
