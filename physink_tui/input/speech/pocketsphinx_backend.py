@@ -5,10 +5,10 @@ British pronunciations are added for every grammar word the US dictionary has in
 scored by its mean log acoustic likelihood per 10 ms frame (pocketsphinx normalises a frame's senone scores to its
 best one, so 0 is a perfect fit) and by its posterior probability in the decoder's lattice; `THRESHOLD` and
 `MIN_CONFIDENCE` were calibrated on a synthetic development set and checked on the fixtures (tests/speech/,
-docs/BENCHMARKS.md). A grammar forces any sound
-into a sentence, so the grammar given to pocketsphinx also has a loop of single phones (`GARBAGE`, at weight
-`GARBAGE_WEIGHT`): speech outside the grammar fits the loop better and comes out as `Decoded.outside`. A word the
-dictionary lacks is given the pronunciation `letter_to_sound.pronounce` guesses from its spelling.
+docs/BENCHMARKS.md). A grammar forces any sound into a sentence, so the grammar given to pocketsphinx also has a loop
+of single phones (`GARBAGE`, at weight `GARBAGE_WEIGHT`): speech outside the grammar fits the loop better and comes
+out as `Decoded.outside`. A word the dictionary lacks is given the pronunciation `letter_to_sound.pronounce` guesses
+from its spelling.
 """
 
 from __future__ import annotations
