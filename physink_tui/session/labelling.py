@@ -7,7 +7,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Protocol
 
-from physink_tui.input.speech.dictionary import unspeakable_words
+from physink_tui.input.speech.dictionary import guessed_words, unspeakable_words
 from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session.history import Document
@@ -88,3 +88,7 @@ def label(host: LabelHost, target: str, text: str) -> None:
     if unsayable:
         host.tell(f"label {text!r}: {', '.join(map(repr, unsayable))} cannot be said (not in the speech "
                   "dictionary); the label is kept, and speech cannot name this part")
+    elif guessed := guessed_words(text):
+        said = ", ".join(f"{w!r} as {p}" for w, p in guessed.items())
+        host.tell(f"label {text!r}: not in the speech dictionary, so speech hears {said} (guessed from the "
+                  "spelling)")

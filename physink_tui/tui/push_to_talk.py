@@ -1,17 +1,31 @@
-"""Push-to-talk for the TUI: a key toggles listening on the microphone (terminals send no key release); what is
-heard and accepted goes to the session as a ``say`` entry stamped with the time the utterance began. Recognising is
-`input.speech`'s, acting on the words the session's.
+"""Push-to-talk for the TUI: a key toggles listening on the microphone (terminals send no key release), and holding
+the pen's barrel button listens while it is held; what is heard and accepted goes to the session as a ``say`` entry
+stamped with the time the utterance began. Recognising is `input.speech`'s, acting on the words the session's.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+import threading
+from collections.abc import Callable, Iterable, Mapping
 
 from physink_tui.errors import PhysinkError
+from physink_tui.input.pen.state import PenState
 from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener, Utterance
 from physink_tui.input.speech.microphone import MicrophoneListener, StreamFactory
 from physink_tui.session.runner import SessionRunner
+
+BUTTON_STATES = frozenset({PenState.HOVERING_BUTTON.value, PenState.TOUCHING_BUTTON.value})
+"""The pen states (`SessionView.pens`) in which a barrel button is held."""
+
+
+def barrel_held(pens: Mapping[str, tuple[str, float]]) -> bool:
+    """Whether some pen has a barrel button held, from a view's ``pens`` (device → (state, pressure)).
+
+    >>> barrel_held({"usb0": ("hovering with a button pressed", 0.0)}), barrel_held({"usb0": ("hovering", 0.0)})
+    (True, False)
+    """
+    return any(state in BUTTON_STATES for state, _ in pens.values())
 
 
 class PushToTalk:
@@ -31,6 +45,11 @@ class PushToTalk:
         self._stream = stream
         self._make_recogniser = recogniser
         self._microphone: MicrophoneListener | None = None
+        self._lock = threading.Lock()  # the key and the button each start a worker: one toggles at a time
+        self._by_button = False
+        self.button_pressed = False
+        """Whether the pen's barrel button is held, as last seen (set by the UI thread; `follow_button` acts on it,
+        so workers that run out of order still end in the latest state)."""
         self.last_heard = ""
 
     @property
@@ -40,6 +59,24 @@ class PushToTalk:
     def toggle(self, labels: Iterable[str]) -> None:
         """Start listening (the grammar on ``labels``), or stop and hear the utterance under way. Blocks while the
         recogniser loads or the last utterance is decoded: call it from a worker thread."""
+        with self._lock:
+            self._by_button = False
+            self._toggle(labels, "press v again to stop")
+
+    def follow_button(self, labels: Iterable[str]) -> None:
+        """Follow the pen's barrel button (`button_pressed`): pressed starts listening, released stops what the
+        press started (and hears it). Blocks like `toggle`: call it from a worker thread."""
+        with self._lock:
+            pressed = self.button_pressed
+            if pressed and not self.listening:
+                self._toggle(labels, "release the pen button to stop")
+                self._by_button = self.listening
+            elif not pressed and self._by_button:
+                self._by_button = False
+                if self.listening:
+                    self._toggle(labels, "")
+
+    def _toggle(self, labels: Iterable[str], how_to_stop: str) -> None:
         if self.listening:
             assert self._microphone is not None
             self._microphone.stop()  # hears the utterance under way first
@@ -55,7 +92,7 @@ class PushToTalk:
         except PhysinkError as exc:  # no PortAudio, no microphone, no model
             self.status(f"speech: {exc}")
             return
-        self.status("speech: listening (press v again to stop)")
+        self.status(f"speech: listening ({how_to_stop})")
 
     def stop(self) -> None:
         """Stop listening, if listening (the session is ending)."""

@@ -2,8 +2,9 @@
 command is the session's, capturing audio the microphone's or the caller's.
 
 `Listener.hear` is the one path both `physink listen FILE.wav` and the microphone take. An utterance is accepted
-only when the recogniser's best path is a whole sentence of the grammar and every word of it scores at least the
-recogniser's threshold; anything else is `Utterance.rejected`, with the reason (DESIGN.md "Speech conventions").
+only when the recogniser's best path is a whole sentence of the grammar and every word of it but the articles scores
+at least the recogniser's threshold and is likely enough (articles are short and run into the next word, so their
+fit says little); anything else is `Utterance.rejected`, with the reason (DESIGN.md "Speech conventions").
 """
 
 from __future__ import annotations
@@ -75,6 +76,11 @@ class Listener:
         """Names and words left out of the grammar because the recogniser's dictionary lacks one of their words."""
         return self.grammar.unspeakable
 
+    def guessed(self, names: Iterable[str]) -> dict[str, str]:
+        """The words of ``names`` the recogniser says with a pronunciation guessed from their spelling, with it."""
+        words = {w for name in names for w in name.split()}
+        return {w: p for w in sorted(words) if (p := self.recogniser.guessed(w)) is not None}
+
     def hear(self, samples: np.ndarray, began: float = 0.0) -> Utterance:
         """The utterance in 16 kHz mono int16 ``samples`` that start at time ``began`` (the caller's seconds)."""
         bounds = speech_bounds(samples, self.vad)
@@ -96,11 +102,12 @@ class Listener:
         if command is None:
             why = f"not a sentence of the grammar: {decoded.text!r}" if decoded.text else "no words recognised"
             return Utterance(decoded.text, None, why, at, end - start, decoded)
-        worst = min(words, key=lambda w: w.score)
+        content = [w for w in words if w.word not in ARTICLES] or words
+        worst = min(content, key=lambda w: w.score)
         if worst.score < self.recogniser.threshold:
             return Utterance(decoded.text, None, f"poorly matched: {worst.word!r} scored {worst.score:.2f} "
                              f"(at least {self.recogniser.threshold:g} is needed)", at, end - start, decoded)
-        unsure = min((w for w in words if w.word not in ARTICLES), key=lambda w: w.confidence)
+        unsure = min(content, key=lambda w: w.confidence)
         if unsure.confidence < self.recogniser.min_confidence:
             return Utterance(decoded.text, None, f"unsure: {unsure.word!r} is only {unsure.confidence:.0%} likely "
                              f"(at least {self.recogniser.min_confidence:.0%} is needed)", at, end - start, decoded)

@@ -68,12 +68,17 @@ class Recogniser(Protocol):
 
     name: str
     threshold: float
-    """Words scoring below this are too poorly matched: the utterance is rejected."""
+    """Words (articles aside) scoring below this are too poorly matched: the utterance is rejected."""
     min_confidence: float
     """Words (articles aside) less likely than this are too uncertain: the utterance is rejected."""
 
     def speakable(self, word: str) -> bool:
         """Whether the recogniser can say ``word`` (it is in its dictionary)."""
+        ...
+
+    def guessed(self, word: str) -> str | None:
+        """The pronunciation guessed from the spelling of a word the dictionary lacks, or None (a dictionary word,
+        or one the recogniser cannot say)."""
         ...
 
     def set_grammar(self, grammar: SpeechGrammar) -> None:

@@ -33,7 +33,7 @@ from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
 from physink_tui.tui import storage
 from physink_tui.tui.live import LiveSession
-from physink_tui.tui.push_to_talk import PushToTalk
+from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
 from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
@@ -89,7 +89,8 @@ class MainScreen(Screen[None]):
         Binding("e", "export", "export the demonstration as a video"),
         Binding("escape", "cancel", "cancel the export"),
         Binding("f2", "settings", "settings: tablet mapping, tip thresholds, theme"),
-        Binding("v", "listen", "push-to-talk: listen on the microphone / stop (\"label ball\", \"the ball falls\")"),
+        Binding("v", "listen", "push-to-talk: listen on the microphone / stop (\"label ball\", \"the ball falls\"); "
+                "or hold the pen's barrel button while speaking"),
         Binding("question_mark,f1", "help", "this help"),
         Binding("q,ctrl+q", "app.quit", "quit (asks when there is unsaved work)"),
     ]
@@ -104,6 +105,7 @@ class MainScreen(Screen[None]):
         self.tablet: TabletWatch | None = None
         self._simulating: JournalEntry | None = None
         self.talk: PushToTalk | None = None
+        self._barrel = False
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
@@ -154,6 +156,9 @@ class MainScreen(Screen[None]):
         status = self.query_one(StatusBar)
         pen = next((f"pen {state} {p:.2f}" for state, p in view.pens.values() if state != "out of range"), None)
         status.set(pen=pen or "pen out of range")
+        if barrel_held(view.pens) != self._barrel and self.talk is not None:
+            self._barrel = self.talk.button_pressed = not self._barrel  # holding the barrel button: push-to-talk
+            self._follow_button(self._labels(view))
         if self._simulating is not None and view.t >= self._simulating.t:
             self._simulating = None
             status.set(activity="simulation done" if view.search is not None else "")
@@ -171,15 +176,23 @@ class MainScreen(Screen[None]):
     def action_listen(self) -> None:
         if self.talk is None:
             return
-        labels = [] if self.view is None else [c.label for c in self.view.scene.components.values()
-                                               if getattr(c, "label", None)]
         self.query_one(StatusBar).set(speech="speech: stopping…" if self.talk.listening else "speech: starting…")
-        self._toggle_talk(labels)
+        self._toggle_talk(self._labels(self.view))
 
-    @work(thread=True, exclusive=True, group="speech")
+    @staticmethod
+    def _labels(view: SessionView | None) -> list[str]:
+        """The labels speech listens for: the components' in ``view``."""
+        return [] if view is None else [c.label for c in view.scene.components.values() if getattr(c, "label", None)]
+
+    @work(thread=True, group="speech")
     def _toggle_talk(self, labels: list[str]) -> None:
         assert self.talk is not None
         self.talk.toggle(labels)
+
+    @work(thread=True, group="speech")
+    def _follow_button(self, labels: list[str]) -> None:
+        assert self.talk is not None
+        self.talk.follow_button(labels)
 
     def on_scene_view_pen(self, message: SceneView.Pen) -> None:
         if self.live is not None:
