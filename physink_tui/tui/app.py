@@ -19,6 +19,7 @@ from physink_tui.input.speech.microphone import StreamFactory
 from physink_tui.session.view import SessionView
 from physink_tui.tui import storage
 from physink_tui.tui.config import Config, load_config, save_config
+from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
@@ -40,6 +41,8 @@ class TuiOptions:
         config_path: the settings file (default: ``$XDG_CONFIG_HOME/physink/config.json``).
         max_fps: scene redraws a second at most.
         microphone: the sound input push-to-talk listens on (default: the microphone; tests give a recording).
+        graphics, cell: how the scene is drawn (`physink_tui.tui.graphics`: ``halfblocks``, ``kitty`` or ``sixel``)
+            and a cell's size in pixels (for the graphics protocols).
     """
 
     header: JournalHeader | None = None
@@ -57,6 +60,8 @@ class TuiOptions:
     config_path: Path | None = None
     max_fps: float = 60.0
     microphone: StreamFactory | None = None
+    graphics: str = "halfblocks"
+    cell: tuple[int, int] = DEFAULT_CELL
     title: str = "PhysInk"
     notes: list[str] = field(default_factory=list)
 
@@ -106,7 +111,8 @@ class PhysinkApp(App[None]):
         except PhysinkError as exc:
             problem = str(exc)
         header = self.options.header or self.config.header()
-        self.main = MainScreen((header.canvas_width, header.canvas_height), self.options.theme or self.config.theme)
+        self.main = MainScreen((header.canvas_width, header.canvas_height), self.options.theme or self.config.theme,
+                               self.options.graphics, self.options.cell)
         await self.push_screen(self.main)
         if problem is not None:
             self.push_screen(ErrorModal("Settings not read (the defaults are used)", problem))

@@ -29,6 +29,7 @@ from physink_tui.formats.project.files import save_project
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
+from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk
 from physink_tui.tui.screens.background import BackgroundWork
@@ -89,10 +90,12 @@ class MainScreen(BackgroundWork):
         Binding("q,ctrl+q", "app.quit", "quit (asks when there is unsaved work)"),
     ]
 
-    def __init__(self, canvas: tuple[float, float], theme: str = "dark") -> None:
+    def __init__(self, canvas: tuple[float, float], theme: str = "dark", graphics: str = "halfblocks",
+                 cell: tuple[int, int] = DEFAULT_CELL) -> None:
         super().__init__()
         self.canvas = canvas
         self.theme_name = theme
+        self.graphics, self.cell = graphics, cell
         self.live: LiveSession | None = None
         self.project_path: str | None = None
         self.view: SessionView | None = None
@@ -102,7 +105,7 @@ class MainScreen(BackgroundWork):
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
             with Horizontal(id="top"):
-                yield SceneView(self.canvas, self.theme_name, id="scene")
+                yield SceneView(self.canvas, self.theme_name, self.graphics, self.cell, id="scene")
                 yield TimelineTree(id="timeline")
             yield TimeSlider(id="slider")
             yield NarrationBar(id="narration")
