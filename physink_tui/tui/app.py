@@ -6,6 +6,7 @@ main screen, asks before losing work; the controls are the main screen's, the st
 
 from __future__ import annotations
 
+import gc
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -160,6 +161,11 @@ class PhysinkApp(App[None]):
 
         live.runner.subscribe(publish)
         live.start()
+        # What exists now (modules, widgets, a replayed journal) lives as long as the app: collected once and
+        # frozen, later full collections skip it, which took their pauses (every thread stops) from about 100 ms
+        # to about 20 ms while a tablet streams (docs/BENCHMARKS.md).
+        gc.collect()
+        gc.freeze()
         if self.main is None:  # never: on_mount made it
             return
         self.main.attach(live, path)
