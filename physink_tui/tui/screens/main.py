@@ -255,7 +255,9 @@ class MainScreen(BackgroundWork):
         self.app.push_screen(TextScreen("Timeline", text))
 
     def action_settings(self) -> None:
-        self.app.push_screen(SettingsScreen(self.app.config), self.app.adopt_settings)  # type: ignore[attr-defined]
+        config = self.app.config  # type: ignore[attr-defined]
+        self.app.push_screen(SettingsScreen(config, self.query_one(SceneView).canvas_cells),
+                             self.app.adopt_settings)  # type: ignore[attr-defined]
 
     def set_theme(self, theme: str) -> None:
         self.theme_name = theme

@@ -201,6 +201,16 @@ class SceneView(Widget, can_focus=True):
         left, top, width, height = renderer.box
         return (x * self._scale[0] - left) / width, (y * self._scale[1] - top) / height
 
+    def canvas_cells(self) -> tuple[tuple[int, int], tuple[float, float, float, float]]:
+        """The terminal's (columns, rows) and where the canvas is drawn in it: (left, top, width, height) in cells
+        (a pen display's area is fitted to it, `physink_tui.tui.displays`)."""
+        region = self.content_region
+        box = self._renderer.box if self._renderer is not None else (0.0, 0.0, 0.0, 0.0)
+        across, down, _ = self._scale
+        screen = self.app.size
+        return ((screen.width, screen.height),
+                (region.x + box[0] / across, region.y + box[1] / down, box[2] / across, box[3] / down))
+
     @staticmethod
     def _point(event: events.MouseEvent) -> tuple[float, float]:
         x, y = event.pointer_x, event.pointer_y
