@@ -148,3 +148,15 @@ def test_an_adopted_simulation_is_undoable_and_plays_back(tmp_path) -> None:
             await until(pilot, lambda v: v.scene == before.scene and v.timeline == before.timeline)
 
     asyncio.run(go())
+
+
+def test_a_replay_can_end_with_simulate_as_the_demo_does(tmp_path) -> None:
+    header, entries = recorded("pinball")
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, entries=entries, speed=20.0, simulate_after=True)
+        async with app.run_test(size=SIZE) as pilot:
+            view = await until(pilot, lambda v: v.search is not None, timeout=60)
+            assert view.search.found and view.timeline is not None
+            assert app.main.query_one("#status").activity.startswith("simulation done in")
+    asyncio.run(go())

@@ -34,6 +34,7 @@ class TuiOptions:
         header, entries: a recorded session to replay into the live one (``--replay``, the demo), or None.
         prior: entries of ``header``'s session handled at once before the live session starts (tests, pictures).
         speed: replay speed (1: real time).
+        simulate_after: once the replay is done, SIMULATE what it demonstrated (the demo's last step).
         project: a project file to open at the start (``physink tui PROJECT``), also the default for Save.
         device, serial: the tablet (``--device``, ``--serial``); ``tablet=False`` looks for none (tests).
         journal_dir: where the session journals (default: the XDG data folder); None with ``journal=False``.
@@ -50,6 +51,7 @@ class TuiOptions:
     entries: tuple[JournalEntry, ...] = ()
     prior: tuple[JournalEntry, ...] = ()
     speed: float = 1.0
+    simulate_after: bool = False
     project: str | None = None
     device: str | None = None
     serial: str | None = None
@@ -176,7 +178,7 @@ class PhysinkApp(App[None]):
         if options.project:
             self.main.open_project(options.project)
         if options.entries:
-            self.main.replay(options.entries, options.speed)
+            self.main.replay(options.entries, options.speed, simulate_after=options.simulate_after)
         for note in options.notes:
             self.notify(note)
 

@@ -100,6 +100,7 @@ class MainScreen(BackgroundWork):
         self.project_path: str | None = None
         self.view: SessionView | None = None
         self.tablet: TabletWatch | None = None
+        self._simulate_after = False  # SIMULATE once the replay is done
         self.talk: PushToTalk | None = None
 
     def compose(self) -> ComposeResult:
@@ -131,11 +132,12 @@ class MainScreen(BackgroundWork):
         self.live.on_stop(self.tablet.stop)
         self.tablet.start()
 
-    def replay(self, entries: tuple[JournalEntry, ...], speed: float) -> None:
+    def replay(self, entries: tuple[JournalEntry, ...], speed: float, *, simulate_after: bool = False) -> None:
         if self.live is None:
             return
         status = self.query_one(StatusBar)
         status.set(activity=f"replaying {len(entries)} inputs")
+        self._simulate_after = simulate_after
         self.live.replay(entries, speed=speed,
                          on_done=lambda: self.post_message(DeviceStatus("")))
 
@@ -160,6 +162,14 @@ class MainScreen(BackgroundWork):
             self.query_one(StatusBar).set(device=message.text)
         else:  # the replay ended
             self.query_one(StatusBar).set(activity="replay done: you are in control")
+            if self._simulate_after:
+                self._simulate_after = False
+                self.set_timer(0.5, self._simulate_replayed)  # once the session has handled the last entries
+
+    def _simulate_replayed(self) -> None:
+        self.action_simulate()
+        if self.job is not None:
+            self.query_one(StatusBar).set(activity="replay done: you are in control; simulating (escape stops it)")
 
     def on_speech_status(self, message: SpeechStatus) -> None:
         self.query_one(StatusBar).set(speech=message.text)
