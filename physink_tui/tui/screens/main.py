@@ -143,11 +143,19 @@ class MainScreen(BackgroundWork):
 
     def show(self, view: SessionView) -> None:
         self.view = view
-        try:
-            scene = self.query_one(SceneView)
-        except NoMatches:  # a view arriving while the app closes
+        if not self.is_current:  # under a modal (help, settings, a prompt): drawn when it closes (on_screen_resume)
             return
-        scene.show(view)
+        try:
+            self._show(view)
+        except NoMatches:  # a view arriving while the app closes (its widgets going one by one)
+            return
+
+    def on_screen_resume(self) -> None:
+        if self.view is not None:
+            self.show(self.view)
+
+    def _show(self, view: SessionView) -> None:
+        self.query_one(SceneView).show(view)
         self.query_one(TimelineTree).show(view)
         self.query_one(TimeSlider).show(view)
         self.query_one(NarrationBar).show(view, self.canvas)
