@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import gc
 import json
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -22,6 +23,7 @@ from physink_tui.tui import storage
 from physink_tui.tui.config import Config, load_config, save_config
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
+from physink_tui.tui.pacing import FramePacer
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
 
@@ -70,11 +72,12 @@ class TuiOptions:
 
 
 class ViewUpdated(Message):
-    """A new snapshot from the runner (only the latest one matters)."""
+    """A new snapshot from the runner (only the latest one matters), posted at ``posted`` (`time.monotonic`)."""
 
     def __init__(self, view: SessionView) -> None:
         super().__init__()
         self.view = view
+        self.posted = time.monotonic()
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, ViewUpdated)
@@ -104,6 +107,9 @@ class PhysinkApp(App[None]):
         self.main: MainScreen | None = None
         self.saved_document: tuple[object, object] | None = None
         """The (scene, timeline) last saved or opened: work differs from it when unsaved."""
+        self.pacer = FramePacer()
+        """When views are drawn (all of them while the UI keeps up)."""
+        self._waiting: SessionView | None = None  # a view passed over, drawn by `_catch_up`
 
     # -- start -----------------------------------------------------------------------------------------------
 
@@ -187,8 +193,22 @@ class PhysinkApp(App[None]):
     def on_view_updated(self, message: ViewUpdated) -> None:
         if self.saved_document is None:
             self.saved_document = (message.view.scene, message.view.timeline)
-        if self.main is not None:
+        if self.main is None:
+            return
+        now = time.monotonic()
+        if self.pacer.draw_now(message.posted, now):
+            self._waiting = None
             self.main.show(message.view)
+            return
+        if self._waiting is None:  # behind: drawn when the pacer's interval is up, unless a newer view is first
+            self.set_timer(self.pacer.catch_up_in(now), self._catch_up)
+        self._waiting = message.view
+
+    def _catch_up(self) -> None:
+        view, self._waiting = self._waiting, None
+        if view is not None and self.main is not None:
+            self.pacer.drew(time.monotonic())
+            self.main.show(view)
 
     def on_runner_failed(self, message: RunnerFailed) -> None:
         self.push_screen(ErrorModal("Internal error", f"the session stopped: {message.error!r}"))
