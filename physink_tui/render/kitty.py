@@ -84,5 +84,6 @@ def placeholder_rows(columns: int, rows: int) -> list[str]:
 
 
 def id_colour(image_id: int) -> tuple[int, int, int]:
-    """The 24-bit foreground colour that names ``image_id`` in placeholder cells."""
+    """The 24-bit foreground colour that names ``image_id`` in placeholder cells (an id under 256 can also be
+    named by the 8-bit colour of that index)."""
     return (image_id >> 16) & 255, (image_id >> 8) & 255, image_id & 255

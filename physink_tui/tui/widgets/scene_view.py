@@ -34,6 +34,10 @@ from physink_tui.tui.halfblocks import HalfBlocks
 
 PRESSURE = 0.6
 """The pressure a mouse button stands for."""
+KITTY_IMAGE = {"truecolor": 0x50494E, "256": 201}
+"""The Kitty image id the scene view replaces frame after frame, by the colours Textual writes: placeholder cells
+name it by their foreground colour, 24-bit on a true-colour terminal, the 8-bit palette index otherwise (Textual
+turns a colour of the other kind into its own, which would name another image)."""
 SUPERSAMPLE = 2
 """The renderer draws this many pixels across each half-block pixel (each way), averaged: thin lines and labels
 (the renderer's smallest text is 9 pixels) stay in proportion at a terminal's few pixels."""
@@ -62,7 +66,7 @@ class SceneView(Widget, can_focus=True):
         self.graphics = graphics
         # pixels the renderer draws across and down each cell, and the factor averaged down to what is shown
         self._scale = (SUPERSAMPLE, 2 * SUPERSAMPLE, SUPERSAMPLE) if graphics == "halfblocks" else (*cell, 1)
-        self._image_id = 0x50_49_4E  # "PIN": the Kitty image this view replaces frame after frame
+        self._image_id = 0  # the Kitty image, chosen by the app's colours at the first frame (`KITTY_IMAGE`)
         self._palette: Palette | None = None  # Sixel's, made from the first frame of a theme
         self.sent: list[str] = []
         """The escapes of the last frame written to the terminal (Kitty, Sixel; tests read it)."""
@@ -145,10 +149,13 @@ class SceneView(Widget, can_focus=True):
         over them once Textual has refreshed them."""
         columns, rows = self.size.width, self.size.height
         if self.graphics == "kitty":
+            truecolor = self.app.console.color_system == "truecolor"
+            self._image_id = KITTY_IMAGE["truecolor" if truecolor else "256"]
             self.sent = [kitty.transmit(pixels, self._image_id, columns, rows)]
             self._write(self.sent[0])
             if len(self._strips) != rows or self._strips[0].cell_length != columns:
-                style = Style(color=Color.from_rgb(*kitty.id_colour(self._image_id)))
+                style = Style(color=Color.from_rgb(*kitty.id_colour(self._image_id)) if truecolor
+                              else Color.from_ansi(self._image_id))
                 self._strips = [Strip([Segment(text, style)], columns)
                                 for text in kitty.placeholder_rows(columns, rows)]
             return
