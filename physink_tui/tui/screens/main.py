@@ -153,6 +153,7 @@ class MainScreen(BackgroundWork):
     def on_screen_resume(self) -> None:
         if self.view is not None:
             self.show(self.view)
+        self.query_one(SceneView).repaint_picture()  # a Sixel picture under the modal was painted over
 
     def _show(self, view: SessionView) -> None:
         self.query_one(SceneView).show(view)

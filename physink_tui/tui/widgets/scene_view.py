@@ -137,32 +137,43 @@ class SceneView(Widget, can_focus=True):
             pixels = pixels.reshape(h, factor, w, factor, 4).mean(axis=(1, 3)).astype(np.uint8)
         if self.graphics == "halfblocks":
             self._strips = self._blocks.strips(pixels)
+            changed = True
         else:
-            self._picture(pixels)
+            changed = self._picture(pixels)
         self.frames_drawn += 1
         self.draw_seconds.append(time.perf_counter() - start)
         del self.draw_seconds[:-1000]
-        self.refresh()
+        if changed:  # the graphics protocols' cells stay as they are: Textual has nothing to repaint
+            self.refresh()
 
-    def _picture(self, pixels: np.ndarray) -> None:
-        """Kitty: the frame replaces the image the placeholder cells show. Sixel: blank cells, the frame drawn
-        over them once Textual has refreshed them."""
+    def _picture(self, pixels: np.ndarray) -> bool:
+        """Kitty: the frame replaces the image the placeholder cells show. Sixel: the frame drawn over blank
+        cells (after Textual's refresh when they are new). Whether the cells changed (a new size)."""
         columns, rows = self.size.width, self.size.height
+        changed = len(self._strips) != rows or not self._strips or self._strips[0].cell_length != columns
         if self.graphics == "kitty":
             truecolor = self.app.console.color_system == "truecolor"
             self._image_id = KITTY_IMAGE["truecolor" if truecolor else "256"]
             self.sent = [kitty.transmit(pixels, self._image_id, columns, rows)]
             self._write(self.sent[0])
-            if len(self._strips) != rows or self._strips[0].cell_length != columns:
+            if changed:
                 style = Style(color=Color.from_rgb(*kitty.id_colour(self._image_id)) if truecolor
                               else Color.from_ansi(self._image_id))
                 self._strips = [Strip([Segment(text, style)], columns)
                                 for text in kitty.placeholder_rows(columns, rows)]
-            return
+            return changed
         self._palette = self._palette or Palette.from_frame(pixels)
         self.sent = [sixel.encode(pixels, self._palette)]
-        self._strips = [Strip.blank(columns)] * rows
-        self.call_after_refresh(self._draw_sixel, self.sent[0])
+        if changed:
+            self._strips = [Strip.blank(columns)] * rows
+        self.repaint_picture()
+        return changed
+
+    def repaint_picture(self) -> None:
+        """Sixel: draw the last frame again once Textual has refreshed (it paints blank cells over it when it
+        repaints the screen, e.g. when a modal closes)."""
+        if self.graphics == "sixel" and self.sent:
+            self.call_after_refresh(self._draw_sixel, self.sent[0])
 
     def _draw_sixel(self, data: str) -> None:
         if not self.screen.is_active or data is not self.sent[0]:
