@@ -5,6 +5,7 @@ finds the same), adopted into the project undoably and played back."""
 from __future__ import annotations
 
 import asyncio
+import time
 from pathlib import Path
 
 import pytest
@@ -13,6 +14,7 @@ from physink_tui.commands.demo import demo_journal
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.session.session import Session
 from physink_tui.tui.screens.background import SearchFinished, SearchProgressed
+from physink_tui.tui.screens.modals import ConfirmModal
 from physink_tui.tui.widgets.scene_view import SceneView
 from physink_tui.tui.widgets.search_bar import SearchBar
 from tests.tui_helpers import SIZE, tui_app, until
@@ -160,3 +162,28 @@ def test_a_replay_can_end_with_simulate_as_the_demo_does(tmp_path) -> None:
             assert view.search.found and view.timeline is not None
             assert app.main.query_one("#status").activity.startswith("simulation done in")
     asyncio.run(go())
+
+
+def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) -> None:
+    header, entries = demo_journal()
+    started = []
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=tuple(entries))
+        async with app.run_test(size=SIZE) as pilot:
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            bar = app.main.query_one(SearchBar)
+            await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+            job = app.main.job
+            await pilot.press("q")
+            await pilot.pause(0.2)
+            if isinstance(app.screen, ConfirmModal):  # unsaved work: quit all the same
+                await pilot.click("#yes")
+            started.append(time.monotonic())
+            await until_app(pilot, lambda: job.stopped, timeout=5)
+        started.append(time.monotonic())
+
+    asyncio.run(go())
+    assert started[1] - started[0] < 10  # the search stopped after its rollout under way; the app closed
+    assert simulate_args(tmp_path) == []
