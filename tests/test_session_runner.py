@@ -164,6 +164,19 @@ def test_views_are_published_at_most_30_times_a_second_and_after_the_last_input(
     assert published[-1][1][0] == len(session.handled) == 198  # the last view shows every input
 
 
+def test_a_command_is_shown_at_once_without_waiting_for_the_next_view_slot() -> None:
+    _, clock, runner = make(tick_rate=1.0)
+    runner.step()  # t=0: the first view
+    clock.now += 0.005
+    runner.submit(pen())
+    runner.step()  # a pen sample waits for the next slot (1/30 s after the last view)
+    assert runner.latest_view() == (0, 0.0)
+    clock.now += 0.005
+    runner.submit(CommandEntry(0.0, "mode", ("demo",)))
+    runner.step()  # a key's reaction does not
+    assert runner.latest_view() == (2, 0.01)
+
+
 def test_a_view_follows_the_last_input_even_between_ticks() -> None:
     session, clock, runner = make(tick_rate=1.0)
     runner.step()  # t=0: tick 0 and the first view

@@ -152,7 +152,7 @@ def test_timeline_shows_the_narrated_timeline(tmp_path, egg) -> None:
     run(go())
 
 
-def test_simulate_runs_the_search_in_the_session(tmp_path, egg) -> None:
+def test_simulate_searches_then_adopt_and_undo(tmp_path, egg) -> None:
     header, entries = egg
 
     async def go() -> None:
@@ -167,7 +167,8 @@ def test_simulate_runs_the_search_in_the_session(tmp_path, egg) -> None:
             red = app.main.query_one(SceneView)._simulation_trails(view)  # the result's paths, drawn in red
             assert red and all(trail.kind == "simulation" for trail in red)
             await pilot.pause(0.2)
-            assert app.main.query_one("#status").activity == "simulation done"
+            assert app.main.query_one("#status").activity == f"simulation done in {view.search.rollouts} rollout" + (
+                "" if view.search.rollouts == 1 else "s")
             before = view
             await pilot.press("a")  # adopt: the parameters into the scene, the simulated timeline as the project's
             adopted = await until(pilot, lambda v: v.messages[-1].text.startswith("loaded simulation"))

@@ -1,5 +1,6 @@
 """SVG snapshots of the TUI's main states (pytest-textual-snapshot; review the pictures before updating them with
-``--snapshot-update``): empty, the egg cracker sketched, its demonstration played back, the timeline as text.
+``--snapshot-update``): empty, the egg cracker sketched, its demonstration played back, the timeline as text, a
+simulation's result in red and a search's progress line.
 
 The states are built from journal entries handled before the live session starts, so each picture is the same
 on every run (no tablet, no journal file named in the status bar).
@@ -11,7 +12,10 @@ from pathlib import Path
 
 from physink_tui.commands.demo import demo_journal
 from physink_tui.formats.journal.entries import CommandEntry
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.session.search_job import Progress
 from physink_tui.tui.app import TuiOptions, make_app
+from physink_tui.tui.widgets.search_bar import SearchBar
 from tests.tui_helpers import SIZE, until
 
 NO_SETTINGS = Path("/nonexistent/physink/config.json")
@@ -67,3 +71,25 @@ def test_timeline_view(snap_compare) -> None:
     header, prior = demonstrated(1.0)
     assert snap_compare(app_with(prior, header), terminal_size=SIZE,
                         run_before=waiting_for(lambda v: v.mode == "demo" and v.clock == 1.0, "t"))
+
+
+def test_simulation_result(snap_compare) -> None:
+    """Pinball simulated (found in its first rollout): the simulated paths drawn in red over the scene."""
+    journal = read_journal(Path(__file__).parent / "journals" / "pinball.physink.jsonl")
+    entries = [e for e in journal.entries if not (isinstance(e, CommandEntry) and e.name == "end")]
+    prior = [*entries, CommandEntry(entries[-1].t + 0.1, "simulate", (0, 20))]
+    assert snap_compare(app_with(prior, journal.header), terminal_size=SIZE,
+                        run_before=waiting_for(lambda v: v.search is not None))
+
+
+def test_searching(snap_compare) -> None:
+    """The progress line of a search (a fixed progress: the search itself is not run)."""
+    header, prior = sketched()
+
+    async def run_before(pilot) -> None:
+        await waiting_for(lambda v: len(v.scene.components) >= 8)(pilot)
+        bar = pilot.app.main.query_one(SearchBar)
+        bar.begin(200)
+        bar.show(Progress(37, 200, 2.0, 135.25))
+        await pilot.pause(0.3)
+    assert snap_compare(app_with(prior, header), terminal_size=SIZE, run_before=run_before)

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from physink_tui.session.view import SessionView
 from physink_tui.tui.app import PhysinkApp, TuiOptions, make_app
-from physink_tui.tui.widgets.scene_view import SUPERSAMPLE, SceneView
+from physink_tui.tui.widgets.scene_view import SceneView
 
 SIZE = (120, 40)
 
@@ -46,7 +46,8 @@ def cell(app: PhysinkApp, x: float, y: float) -> tuple[int, int]:
     """The scene view's cell over canvas fraction (x, y)."""
     scene = app.main.query_one(SceneView)
     left, top, width, height = scene._renderer.box
-    return (int((left + x * width) / SUPERSAMPLE), int((top + y * height) / (2 * SUPERSAMPLE)))
+    across, down, _ = scene._scale  # renderer pixels a cell
+    return (int((left + x * width) / across), int((top + y * height) / down))
 
 
 async def drag(pilot, points: Sequence[tuple[float, float]], button: int = 1) -> None:

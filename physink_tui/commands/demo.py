@@ -68,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
         from physink_tui.tui.app import TuiOptions
 
         header, entries = demo_journal()
-        return open_tui(TuiOptions(header=header, entries=tuple(entries), title="PhysInk demo"))
+        return open_tui(TuiOptions(header=header, entries=tuple(entries), title="PhysInk demo", simulate_after=True))
     folder = OutputFolder.prepare(args.out)  # holds only this run's files
     out = folder.path
     capture = Capture.from_text(demo_capture_text(), path=f"<bundled {DEMO_FILE}>")

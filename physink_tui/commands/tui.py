@@ -37,7 +37,10 @@ def open_tui(options: object) -> int:
         raise PhysinkError("physink tui needs a terminal (stdin and stdout); use physink replay or physink demo "
                            "--headless to run without one")
     from physink_tui.tui.app import make_app
+    from physink_tui.tui.graphics import cell_pixels, choose
 
+    options.graphics = choose()  # type: ignore[attr-defined]  # before Textual owns the terminal
+    options.cell = cell_pixels()  # type: ignore[attr-defined]
     make_app(options).run()  # type: ignore[arg-type]
     return 0
 

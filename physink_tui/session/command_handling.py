@@ -85,9 +85,13 @@ class SessionCommands:
         self._forget_gone()
 
     def _simulate(self, seed: int, budget: int) -> None:
-        """``simulate SEED BUDGET``: searches here and now (`simulation.attempt`); the result is shown until the
-        document changes."""
-        result, text = simulation.attempt(self.document, self.canvas, seed, budget)
+        """``simulate SEED BUDGET``: the search a driver ran for this document (`simulation.Searched`), else one
+        run here and now (`simulation.attempt`); the result is shown until the document changes."""
+        offered = self._offered
+        if offered is not None and offered.fits(self.document, seed, budget):
+            result, text = offered.result, simulation.summary(offered.result)
+        else:
+            result, text = simulation.attempt(self.document, self.canvas, seed, budget)
         if result is not None:
             self._searched = (self.document, result)
         self.tell(text)

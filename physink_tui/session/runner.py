@@ -8,9 +8,10 @@ own threads. Each entry is stamped with the runner's clock when it arrives (seco
 and never restamped. The worker is the session's only caller: it hands the queued entries to
 ``session.handle`` in arrival order, moves time on with ``session.advance(now)`` at a fixed rate, never past an
 entry it has not handled (see `inbox`), and publishes ``session.view()`` to subscribers at most `MAX_FPS` times a
-second. The session journals every entry it handled (commands it refused included; an entry a journal cannot hold
-is refused before it acts and is not journaled); `SessionRunner.stop` ends the
-session with ``session.finish(now)``, which journals the end, so a replay runs the physics exactly as long.
+second (a view showing a command's effect goes out at once, outside that rate: keys are answered without waiting
+for the next frame). The session journals every entry it handled (commands it refused included; an entry a journal
+cannot hold is refused before it acts and is not journaled); `SessionRunner.stop` ends the session with
+``session.finish(now)``, which journals the end, so a replay runs the physics exactly as long.
 
 A replay needs none of this: it calls ``handle`` for each journal entry and ``finish`` at the end's time.
 
@@ -176,7 +177,8 @@ class SessionRunner(Generic[ViewT]):
                 self._last_tick = tick
                 self.session.advance(now)
                 self._unpublished = True
-            if self._unpublished and now - self._published_at >= 1.0 / self.max_fps:
+            command = any(isinstance(e, CommandEntry) for e in entries)  # a key's reaction waits for no frame slot
+            if self._unpublished and (command or now - self._published_at >= 1.0 / self.max_fps):
                 self._publish(now)
         except Exception as exc:
             self._fail(exc)

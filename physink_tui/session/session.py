@@ -6,7 +6,8 @@ snapshot for views, `finish(t)` ends it. Time is always the input's: the session
 ``t``, so many small advances and one large one end the same, step for step. Pen input goes through the input side
 (decoder, mapping, gesture engine) to the current mode (`modes`: sketch, adjust, demo), which owns its world;
 the document (scene and timeline) changes only through the history, so undo, redo and clear mean the same in every
-mode. ``simulate`` runs SIMULATE here (`simulation`); its result shows until the document changes. Nothing an
+mode. ``simulate`` runs SIMULATE here (`simulation`), unless a driver already ran it for this document
+(`simulation.Searched`); its result shows until the document changes. Nothing an
 input can do raises out of `handle`: what cannot be done is told. With a journal attached, every entry is
 journaled once handled (a command that makes no sense in the mode included: a replay tells the same), and the end
 of the session too; an entry the journal cannot hold is refused before it acts, and not journaled.
@@ -86,6 +87,7 @@ class Session(SessionCommands):
         self.sketch = SketchMode(self)
         self.current: Mode = self.sketch
         self._searched: tuple[Document, SearchResult] | None = None  # the last SIMULATE and its document
+        self._offered: simulation.Searched | None = None  # the search a driver ran for the entry being handled
         self.watch = PenWatch()  # drawing, hovering and what strokes made: whom a spoken label names
 
     @classmethod
@@ -164,6 +166,9 @@ class Session(SessionCommands):
         then it is journaled. An entry the journal cannot hold (a value out of range, time going backwards) is
         refused before it is acted on, so a replay of the journal sees what the session saw. Nothing an input can
         do raises out of here."""
+        offered = None
+        if isinstance(entry, simulation.Searched):  # a driver ran this simulate's search (journaled as the command)
+            offered, entry = entry, entry.entry()
         if isinstance(entry, CommandEntry):
             entry = simulation.with_defaults(entry, self.simulation_budget)  # journaled with both numbers
         refusal = self._refusal(entry)
@@ -171,6 +176,7 @@ class Session(SessionCommands):
             self.tell(f"input refused: {refusal}")
             return
         errors = len(self.errors)
+        self._offered = offered
         try:
             self.advance(entry.t)
             self._act(entry)
@@ -179,6 +185,8 @@ class Session(SessionCommands):
         except Exception as exc:  # a bug: recorded and told; the session and its journal carry on
             self.errors.append("".join(traceback.format_exception(exc)))
             self.tell(f"internal error handling the input at {entry.t:g} s: {exc!r} (reported; carrying on)")
+        finally:
+            self._offered = None
         self._forget_stale_search()
         self.revision += 1
         self._journal(entry)

@@ -1,9 +1,11 @@
 """The session's SIMULATE: runs the parameter search on a document's demonstration serially, in the calling thread,
-and sums up its outcome (`SearchResult`) and what to tell the user; executors, progress and cancellation are the
-drivers' (``physink simulate``, a TUI worker)."""
+and sums up its outcome (`SearchResult`) and what to tell the user; `Searched` is a ``simulate`` whose search a
+driver already ran (off the session's thread, `search_job`); executors, progress and cancellation are the drivers'
+(``physink simulate``, a TUI worker)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from physink_tui.errors import SimulationError
@@ -11,7 +13,7 @@ from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.scene.components import BACKGROUND, Scene
 from physink_tui.session.history import Document
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
-from physink_tui.sim.evaluate import compare_rollout, evaluate_problem, make_problem, simulate
+from physink_tui.sim.evaluate import Problem, Score, compare_rollout, evaluate_problem, make_problem, simulate
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.search import Search
 from physink_tui.timeline.events import Timeline
@@ -46,6 +48,43 @@ class SearchResult:
     timeline: Timeline
     reasons: tuple[str, ...]
     exploded: int = 0
+
+
+Evaluate = Callable[[Problem, Parameters], Score]
+"""How one candidate is scored: `evaluate_problem` or a driver's wrapper round it (progress, cancellation, a memo)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Searched:
+    """``simulate SEED BUDGET`` with the result a driver's search found for it on ``scene`` and ``timeline``.
+
+    A driver submits it instead of the command when it ran the search itself (`search_job`); the session journals
+    the plain command (`entry`) and takes ``result`` as its own when its document at ``t`` is the one searched, so a
+    replay, which searches again, comes to the same result; otherwise it searches as for the command.
+
+    Attributes:
+        t: seconds since the session start (the runner stamps it on arrival).
+        seed, budget: what the journal's ``simulate`` line carries (budget: the rollouts the search ran, >= 1).
+        scene, timeline: the document searched.
+        result: what `run` gives for them with this seed and budget.
+    """
+
+    t: float
+    seed: int
+    budget: int
+    scene: Scene
+    timeline: Timeline
+    result: SearchResult
+
+    def entry(self) -> CommandEntry:
+        """The command a journal holds."""
+        return CommandEntry(self.t, "simulate", (self.seed, self.budget))
+
+    def fits(self, document: Document, seed: int, budget: int) -> bool:
+        """Whether ``result`` is what ``simulate seed budget`` gives on ``document``."""
+        return ((seed, budget) == (self.seed, self.budget)
+                and (document.scene is self.scene or document.scene == self.scene)
+                and (document.timeline is self.timeline or document.timeline == self.timeline))
 
 
 def with_defaults(entry: CommandEntry, budget: int = DEFAULT_BUDGET) -> CommandEntry:
@@ -85,9 +124,11 @@ def missing(scene: Scene, timeline: Timeline | None) -> str | None:
     return None
 
 
-def run(scene: Scene, timeline: Timeline, canvas: tuple[float, float], seed: int, budget: int) -> SearchResult:
+def run(scene: Scene, timeline: Timeline, canvas: tuple[float, float], seed: int, budget: int,
+        evaluate: Evaluate = evaluate_problem) -> SearchResult:
     """The default search for parameters reproducing ``timeline`` on ``scene``, every candidate evaluated in turn
-    here: the same for the same document, seed and budget as ``physink simulate --seed S --budget N``.
+    here (by ``evaluate``, which must score as `evaluate_problem` does): the same for the same document, seed and
+    budget as ``physink simulate --seed S --budget N``.
 
     Raises:
         SimulationError: the demonstration cannot be searched (e.g. it names bodies the scene lacks).
@@ -98,7 +139,7 @@ def run(scene: Scene, timeline: Timeline, canvas: tuple[float, float], seed: int
         generation = search.next_generation()
         if not generation:
             break
-        search.tell([evaluate_problem(problem, p) for p in generation])
+        search.tell([evaluate(problem, p) for p in generation])
     best = search.best if search.best is not None else search.start
     rollout = simulate(problem, best)
     comparison = compare_rollout(problem, rollout, explain=True)

@@ -6,7 +6,9 @@ main screen, asks before losing work; the controls are the main screen's, the st
 
 from __future__ import annotations
 
+import gc
 import json
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -19,7 +21,9 @@ from physink_tui.input.speech.microphone import StreamFactory
 from physink_tui.session.view import SessionView
 from physink_tui.tui import storage
 from physink_tui.tui.config import Config, load_config, save_config
+from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
+from physink_tui.tui.pacing import FramePacer
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
 
@@ -32,6 +36,7 @@ class TuiOptions:
         header, entries: a recorded session to replay into the live one (``--replay``, the demo), or None.
         prior: entries of ``header``'s session handled at once before the live session starts (tests, pictures).
         speed: replay speed (1: real time).
+        simulate_after: once the replay is done, SIMULATE what it demonstrated (the demo's last step).
         project: a project file to open at the start (``physink tui PROJECT``), also the default for Save.
         device, serial: the tablet (``--device``, ``--serial``); ``tablet=False`` looks for none (tests).
         journal_dir: where the session journals (default: the XDG data folder); None with ``journal=False``.
@@ -40,12 +45,15 @@ class TuiOptions:
         config_path: the settings file (default: ``$XDG_CONFIG_HOME/physink/config.json``).
         max_fps: scene redraws a second at most.
         microphone: the sound input push-to-talk listens on (default: the microphone; tests give a recording).
+        graphics, cell: how the scene is drawn (`physink_tui.tui.graphics`: ``halfblocks``, ``kitty`` or ``sixel``)
+            and a cell's size in pixels (for the graphics protocols).
     """
 
     header: JournalHeader | None = None
     entries: tuple[JournalEntry, ...] = ()
     prior: tuple[JournalEntry, ...] = ()
     speed: float = 1.0
+    simulate_after: bool = False
     project: str | None = None
     device: str | None = None
     serial: str | None = None
@@ -57,16 +65,19 @@ class TuiOptions:
     config_path: Path | None = None
     max_fps: float = 60.0
     microphone: StreamFactory | None = None
+    graphics: str = "halfblocks"
+    cell: tuple[int, int] = DEFAULT_CELL
     title: str = "PhysInk"
     notes: list[str] = field(default_factory=list)
 
 
 class ViewUpdated(Message):
-    """A new snapshot from the runner (only the latest one matters)."""
+    """A new snapshot from the runner (only the latest one matters), posted at ``posted`` (`time.monotonic`)."""
 
     def __init__(self, view: SessionView) -> None:
         super().__init__()
         self.view = view
+        self.posted = time.monotonic()
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, ViewUpdated)
@@ -96,6 +107,9 @@ class PhysinkApp(App[None]):
         self.main: MainScreen | None = None
         self.saved_document: tuple[object, object] | None = None
         """The (scene, timeline) last saved or opened: work differs from it when unsaved."""
+        self.pacer = FramePacer()
+        """When views are drawn (all of them while the UI keeps up)."""
+        self._waiting: SessionView | None = None  # a view passed over, drawn by `_catch_up`
 
     # -- start -----------------------------------------------------------------------------------------------
 
@@ -106,7 +120,8 @@ class PhysinkApp(App[None]):
         except PhysinkError as exc:
             problem = str(exc)
         header = self.options.header or self.config.header()
-        self.main = MainScreen((header.canvas_width, header.canvas_height), self.options.theme or self.config.theme)
+        self.main = MainScreen((header.canvas_width, header.canvas_height), self.options.theme or self.config.theme,
+                               self.options.graphics, self.options.cell)
         await self.push_screen(self.main)
         if problem is not None:
             self.push_screen(ErrorModal("Settings not read (the defaults are used)", problem))
@@ -154,6 +169,11 @@ class PhysinkApp(App[None]):
 
         live.runner.subscribe(publish)
         live.start()
+        # What exists now (modules, widgets, a replayed journal) lives as long as the app: collected once and
+        # frozen, later full collections skip it, which took their pauses (every thread stops) from about 100 ms
+        # to about 20 ms while a tablet streams (docs/BENCHMARKS.md).
+        gc.collect()
+        gc.freeze()
         if self.main is None:  # never: on_mount made it
             return
         self.main.attach(live, path)
@@ -164,7 +184,7 @@ class PhysinkApp(App[None]):
         if options.project:
             self.main.open_project(options.project)
         if options.entries:
-            self.main.replay(options.entries, options.speed)
+            self.main.replay(options.entries, options.speed, simulate_after=options.simulate_after)
         for note in options.notes:
             self.notify(note)
 
@@ -173,8 +193,22 @@ class PhysinkApp(App[None]):
     def on_view_updated(self, message: ViewUpdated) -> None:
         if self.saved_document is None:
             self.saved_document = (message.view.scene, message.view.timeline)
-        if self.main is not None:
+        if self.main is None:
+            return
+        now = time.monotonic()
+        if self.pacer.draw_now(message.posted, now):
+            self._waiting = None
             self.main.show(message.view)
+            return
+        if self._waiting is None:  # behind: drawn when the pacer's interval is up, unless a newer view is first
+            self.set_timer(self.pacer.catch_up_in(now), self._catch_up)
+        self._waiting = message.view
+
+    def _catch_up(self) -> None:
+        view, self._waiting = self._waiting, None
+        if view is not None and self.main is not None:
+            self.pacer.drew(time.monotonic())
+            self.main.show(view)
 
     def on_runner_failed(self, message: RunnerFailed) -> None:
         self.push_screen(ErrorModal("Internal error", f"the session stopped: {message.error!r}"))

@@ -1,5 +1,6 @@
-"""The TUI's settings file (``$XDG_CONFIG_HOME/physink/config.json``): the tablet-to-canvas mapping, the tip
-thresholds and the theme, read, checked and written atomically; no Textual, and nothing applied here.
+"""The TUI's settings file (``$XDG_CONFIG_HOME/physink/config.json``): the tablet-to-canvas mapping (and which
+monitor a pen display is), the tip thresholds and the theme, read, checked and written atomically; no Textual,
+and nothing applied here.
 
 A new session's journal header carries the mapping and tip thresholds (`Config.header`), so a replay decodes the
 pen exactly as the session did; changed settings therefore apply from the next session, the theme at once.
@@ -34,6 +35,8 @@ class Config:
         left_handed: the tablet turned round for the left hand.
         keep_aspect: crop the used area to the canvas's proportions (so circles stay round).
         display_tablet: a pen display: its area covers the canvas one to one.
+        display: which monitor the pen display is (its X output name, e.g. ``DP-1``), "" when not said; the
+            settings screen fits ``area`` to where the canvas is drawn on it (`physink_tui.tui.displays`).
         tip_down, tip_up: tip contact begins above ``tip_down`` and ends below ``tip_up`` (normalised pressure,
             0 <= up < down <= 1).
     """
@@ -44,6 +47,7 @@ class Config:
     left_handed: bool = False
     keep_aspect: bool = True
     display_tablet: bool = False
+    display: str = ""
     tip_down: float = 0.05
     tip_up: float = 0.01
 
@@ -51,6 +55,8 @@ class Config:
         """This config, or `PhysinkError` naming the first bad setting."""
         if self.theme not in THEMES:
             raise PhysinkError(f"theme: expected one of {', '.join(THEMES)}, got {self.theme!r}")
+        if not isinstance(self.display, str) or self.display != self.display.strip():
+            raise PhysinkError(f"display: expected a monitor's name (e.g. \"DP-1\") or \"\", got {self.display!r}")
         try:
             self.mapping()
         except (ValueError, TypeError) as exc:

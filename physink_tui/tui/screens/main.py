@@ -1,5 +1,5 @@
 """The main screen: scene, timeline tree, narration, buttons and status; turns keys, buttons, the mouse and the
-tablet into journal entries for the live session, and runs the blocking work (export) in workers.
+tablet into journal entries for the live session; the blocking work (SIMULATE, export) is `background`'s.
 
 It keeps no state of the machine: what it shows comes from the latest `SessionView`, what it does goes to the
 session as an entry, so the session's journal rebuilds everything. The project path, the recording status and
@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import os
-import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import ClassVar
@@ -21,7 +20,6 @@ from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.message import Message
-from textual.screen import Screen
 from textual.widgets import Static
 
 from physink_tui.errors import PhysinkError
@@ -31,15 +29,17 @@ from physink_tui.formats.project.files import save_project
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
-from physink_tui.tui import storage
+from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
+from physink_tui.tui.screens.background import BackgroundWork
 from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
 from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
 from physink_tui.tui.widgets.controls import Controls
 from physink_tui.tui.widgets.scene_view import PRESSURE, SceneView
+from physink_tui.tui.widgets.search_bar import SearchBar
 from physink_tui.tui.widgets.time_slider import TimeSlider
 from physink_tui.tui.widgets.timeline_tree import TimelineTree
 
@@ -47,10 +47,6 @@ MIN_WIDTH, MIN_HEIGHT = 60, 16
 """The smallest terminal the panel is laid out in; below it a notice says so."""
 SEEK_STEP = 0.5
 """Seconds of timeline time the arrow keys move the playback."""
-
-
-class _Cancelled(Exception):
-    """The export worker was cancelled (escape, quitting)."""
 
 
 @dataclass
@@ -67,7 +63,7 @@ class SpeechStatus(Message):
     text: str
 
 
-class MainScreen(Screen[None]):
+class MainScreen(BackgroundWork):
     """The control panel."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
@@ -87,7 +83,7 @@ class MainScreen(Screen[None]):
         Binding("g", "simulate", "simulate (search a physical simulation)"),
         Binding("a", "adopt", "adopt the simulation: its parameters and timeline become the project's (undoable)"),
         Binding("e", "export", "export the demonstration as a video"),
-        Binding("escape", "cancel", "cancel the export"),
+        Binding("escape", "cancel", "cancel the search (keeping the best so far) or the export"),
         Binding("f2", "settings", "settings: tablet mapping, tip thresholds, theme"),
         Binding("v", "listen", "push-to-talk: listen on the microphone / stop (\"label ball\", \"the ball falls\"); "
                 "or hold the pen's barrel button while speaking"),
@@ -95,25 +91,28 @@ class MainScreen(Screen[None]):
         Binding("q,ctrl+q", "app.quit", "quit (asks when there is unsaved work)"),
     ]
 
-    def __init__(self, canvas: tuple[float, float], theme: str = "dark") -> None:
+    def __init__(self, canvas: tuple[float, float], theme: str = "dark", graphics: str = "halfblocks",
+                 cell: tuple[int, int] = DEFAULT_CELL) -> None:
         super().__init__()
         self.canvas = canvas
         self.theme_name = theme
+        self.graphics, self.cell = graphics, cell
         self.live: LiveSession | None = None
         self.project_path: str | None = None
         self.view: SessionView | None = None
         self.tablet: TabletWatch | None = None
-        self._simulating: JournalEntry | None = None
+        self._simulate_after = False  # SIMULATE once the replay is done
         self.talk: PushToTalk | None = None
         self._barrel = False
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
             with Horizontal(id="top"):
-                yield SceneView(self.canvas, self.theme_name, id="scene")
+                yield SceneView(self.canvas, self.theme_name, self.graphics, self.cell, id="scene")
                 yield TimelineTree(id="timeline")
             yield TimeSlider(id="slider")
             yield NarrationBar(id="narration")
+            yield SearchBar(id="search")
             yield Controls(id="controls")
             yield StatusBar(id="status")
         yield Static("", id="too-small")
@@ -135,21 +134,31 @@ class MainScreen(Screen[None]):
         self.live.on_stop(self.tablet.stop)
         self.tablet.start()
 
-    def replay(self, entries: tuple[JournalEntry, ...], speed: float) -> None:
+    def replay(self, entries: tuple[JournalEntry, ...], speed: float, *, simulate_after: bool = False) -> None:
         if self.live is None:
             return
         status = self.query_one(StatusBar)
         status.set(activity=f"replaying {len(entries)} inputs")
+        self._simulate_after = simulate_after
         self.live.replay(entries, speed=speed,
                          on_done=lambda: self.post_message(DeviceStatus("")))
 
     def show(self, view: SessionView) -> None:
         self.view = view
-        try:
-            scene = self.query_one(SceneView)
-        except NoMatches:  # a view arriving while the app closes
+        if not self.is_current:  # under a modal (help, settings, a prompt): drawn when it closes (on_screen_resume)
             return
-        scene.show(view)
+        try:
+            self._show(view)
+        except NoMatches:  # a view arriving while the app closes (its widgets going one by one)
+            return
+
+    def on_screen_resume(self) -> None:
+        if self.view is not None:
+            self.show(self.view)
+        self.query_one(SceneView).repaint_picture()  # a Sixel picture under the modal was painted over
+
+    def _show(self, view: SessionView) -> None:
+        self.query_one(SceneView).show(view)
         self.query_one(TimelineTree).show(view)
         self.query_one(TimeSlider).show(view)
         self.query_one(NarrationBar).show(view, self.canvas)
@@ -159,9 +168,7 @@ class MainScreen(Screen[None]):
         if barrel_held(view.pens) != self._barrel and self.talk is not None:
             self._barrel = self.talk.button_pressed = not self._barrel  # holding the barrel button: push-to-talk
             self._follow_button(self._labels(view))
-        if self._simulating is not None and view.t >= self._simulating.t:
-            self._simulating = None
-            status.set(activity="simulation done" if view.search is not None else "")
+        self.simulated(view, status)
         status.show(view)
 
     def on_device_status(self, message: DeviceStatus) -> None:
@@ -169,6 +176,14 @@ class MainScreen(Screen[None]):
             self.query_one(StatusBar).set(device=message.text)
         else:  # the replay ended
             self.query_one(StatusBar).set(activity="replay done: you are in control")
+            if self._simulate_after:
+                self._simulate_after = False
+                self.set_timer(0.5, self._simulate_replayed)  # once the session has handled the last entries
+
+    def _simulate_replayed(self) -> None:
+        self.action_simulate()
+        if self.job is not None:
+            self.query_one(StatusBar).set(activity="replay done: you are in control; simulating (escape stops it)")
 
     def on_speech_status(self, message: SpeechStatus) -> None:
         self.query_one(StatusBar).set(speech=message.text)
@@ -225,9 +240,6 @@ class MainScreen(Screen[None]):
 
     # -- commands ------------------------------------------------------------------------------------------------
 
-    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
-        return self.live.command(name, *args, project=project) if self.live is not None else None
-
     def action_sketch(self) -> None:
         self._command("mode", "sketch")
 
@@ -274,24 +286,10 @@ class MainScreen(Screen[None]):
             text = timeline_text(view.timeline, view.scene.names())
         self.app.push_screen(TextScreen("Timeline", text))
 
-    def action_simulate(self) -> None:
-        entry = self._command("simulate")
-        if entry is not None:
-            self._simulating = entry
-            started = time.monotonic()
-            status = self.query_one(StatusBar)
-
-            def tick() -> None:
-                if self._simulating is not entry:
-                    timer.stop()
-                    return
-                status.set(activity=f"simulating… {time.monotonic() - started:.0f} s (the session resumes when "
-                                    "the search ends)")
-            timer = self.set_interval(0.5, tick)
-            tick()
-
     def action_settings(self) -> None:
-        self.app.push_screen(SettingsScreen(self.app.config), self.app.adopt_settings)  # type: ignore[attr-defined]
+        config = self.app.config  # type: ignore[attr-defined]
+        self.app.push_screen(SettingsScreen(config, self.query_one(SceneView).canvas_cells),
+                             self.app.adopt_settings)  # type: ignore[attr-defined]
 
     def set_theme(self, theme: str) -> None:
         self.theme_name = theme
@@ -360,43 +358,3 @@ class MainScreen(Screen[None]):
             return
         self.project_path = path
         self._command("load", os.path.abspath(path), project=obj)
-
-    # -- export --------------------------------------------------------------------------------------------------
-
-    def action_export(self) -> None:
-        view = self.view
-        if view is None or view.timeline is None or not view.timeline.events:
-            self.notify("nothing demonstrated to export yet", severity="warning")
-            return
-        self._export(view, storage.exports_dir(), self.query_one(StatusBar))
-
-    @work(thread=True, exclusive=True, exit_on_error=False, group="export", description="export video")
-    def _export(self, view: SessionView, folder: Path, status: StatusBar) -> None:
-        from textual.worker import get_current_worker
-
-        from physink_tui.render.export import Export, Look
-
-        worker = get_current_worker()
-        folder.mkdir(parents=True, exist_ok=True)
-        path = storage.new_journal_path(folder).with_suffix("").with_suffix(".mp4")
-
-        def progress(done: int, total: int) -> None:
-            if worker.is_cancelled:
-                raise _Cancelled
-            self.app.call_from_thread(status.set, activity=f"exporting {done}/{total} frames")
-
-        try:
-            Export(view.scene, view.timeline, self.canvas, Look(width=960, height=600)).video(path, progress)
-        except _Cancelled:
-            self.app.call_from_thread(status.set, activity="export cancelled")
-            return
-        except PhysinkError as exc:
-            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", str(exc)))
-            return
-        self.app.call_from_thread(status.set, activity=f"exported {path}")
-
-    def action_cancel(self) -> None:
-        self.workers.cancel_group(self, "export")
-
-    def stop_workers(self) -> None:
-        self.workers.cancel_group(self, "export")

@@ -1,9 +1,11 @@
-"""The settings screen: the tablet-to-canvas mapping, tip thresholds and theme as a form; returns the new
-`Config` (checked) for the app to save and apply, or None when cancelled.
+"""The settings screen: the tablet-to-canvas mapping (with which monitor a pen display is, and its area fitted to
+where the canvas is drawn on it), tip thresholds and theme as a form; returns the new `Config` (checked) for the
+app to save and apply, or None when cancelled.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import ClassVar
 
 from textual.app import ComposeResult
@@ -13,7 +15,10 @@ from textual.screen import ModalScreen
 from textual.widgets import Button, Checkbox, Input, Label, Select, Static
 
 from physink_tui.errors import PhysinkError
+from physink_tui.tui import displays
 from physink_tui.tui.config import THEMES, Config
+
+NOT_SET = "(not set)"
 
 
 class SettingsScreen(ModalScreen[Config | None]):
@@ -21,9 +26,15 @@ class SettingsScreen(ModalScreen[Config | None]):
 
     BINDINGS: ClassVar[list[BindingType]] = [Binding("escape", "cancel", "cancel")]
 
-    def __init__(self, config: Config) -> None:
+    def __init__(self, config: Config,
+                 canvas_cells: Callable[[], tuple[tuple[int, int], tuple[float, float, float, float]]] | None = None,
+                 ) -> None:
+        """``canvas_cells``: the terminal's (columns, rows) and the canvas's (left, top, width, height) in its cells,
+        for fitting a pen display's area (None: not offered)."""
         super().__init__()
         self.config = config
+        self.canvas_cells = canvas_cells
+        self.monitors = displays.list_monitors()
 
     def compose(self) -> ComposeResult:
         c = self.config
@@ -42,6 +53,15 @@ class SettingsScreen(ModalScreen[Config | None]):
                 yield Checkbox("Left-handed (the tablet turned round)", c.left_handed, id="left-handed")
                 yield Checkbox("Pen display (the tablet covers the canvas one to one)", c.display_tablet,
                                id="display-tablet")
+                names = [m.name for m in self.monitors]
+                if c.display and c.display not in names:
+                    names.append(c.display)
+                with Horizontal(classes="row"):
+                    yield Label("The pen display is monitor ")
+                    yield Select([(NOT_SET, ""), *((n, n) for n in names)], value=c.display, allow_blank=False,
+                                 id="display")
+                    yield Button("Fit the area to the canvas on it", id="fit-area", compact=True,
+                                 disabled=self.canvas_cells is None)
                 with Horizontal(classes="row"):
                     yield Label("Tip down above ")
                     yield Input(f"{c.tip_down:g}", id="tip-down", classes="number")
@@ -74,6 +94,7 @@ class SettingsScreen(ModalScreen[Config | None]):
             left_handed=self.query_one("#left-handed", Checkbox).value,
             keep_aspect=self.query_one("#keep-aspect", Checkbox).value,
             display_tablet=self.query_one("#display-tablet", Checkbox).value,
+            display=str(self.query_one("#display", Select).value),
             tip_down=number("tip-down"),
             tip_up=number("tip-up"),
         ).check()
@@ -82,12 +103,38 @@ class SettingsScreen(ModalScreen[Config | None]):
         if event.button.id == "cancel":
             self.dismiss(None)
             return
+        if event.button.id == "fit-area":
+            self.fit_area()
+            return
         try:
             config = self.read()
         except PhysinkError as exc:
             self.query_one("#settings-error", Static).update(f"[b]Not saved:[/b] {exc}")
             return
         self.dismiss(config)
+
+    def fit_area(self) -> None:
+        """The area: the canvas's rectangle on the chosen monitor (the terminal window's place from X); the pen
+        display box ticked. What stands in the way is said in the form."""
+        error = self.query_one("#settings-error", Static)
+        name = str(self.query_one("#display", Select).value)
+        monitor = next((m for m in self.monitors if m.name == name), None)
+        try:
+            if monitor is None:
+                raise PhysinkError("choose the monitor the pen display is (xrandr lists "
+                                   f"{', '.join(m.name for m in self.monitors) or 'none'})")
+            if self.query_one("#rotation", Select).value != 0:
+                raise PhysinkError("a turned pen display's area is set by hand (rotation is not 0)")
+            assert self.canvas_cells is not None  # the button is disabled without it
+            cells, canvas = self.canvas_cells()
+            area = displays.area_on(monitor, displays.canvas_rect(displays.terminal_window(), cells, canvas))
+        except PhysinkError as exc:
+            error.update(f"[b]Area not fitted:[/b] {exc}")
+            return
+        for name_, value in zip(("x0", "y0", "x1", "y1"), area, strict=True):
+            self.query_one(f"#area-{name_}", Input).value = f"{value:g}"
+        self.query_one("#display-tablet", Checkbox).value = True
+        error.update(f"Area fitted to the canvas on {monitor.name}: {', '.join(f'{v:g}' for v in area)}")
 
     def action_cancel(self) -> None:
         self.dismiss(None)

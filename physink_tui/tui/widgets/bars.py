@@ -31,7 +31,7 @@ class NarrationBar(Static):
             text = view.messages[-1].text
         if text != self.text:
             self.text = text
-            self.update(text)
+            self.update(text, layout=False)  # a fixed size (physink.tcss): a layout of the whole screen is not needed
 
 
 class StatusBar(Static):
@@ -46,6 +46,7 @@ class StatusBar(Static):
         self.pen = "pen out of range"
         self.speech = ""
         self._view: SessionView | None = None
+        self._shown = ""
 
     def show(self, view: SessionView) -> None:
         self._view = view
@@ -84,4 +85,7 @@ class StatusBar(Static):
             parts.append(self.speech)
         if self.journal:
             parts.append(self.journal)
-        self.update("  │  ".join(parts))
+        text = "  │  ".join(parts)
+        if text != self._shown:  # views come up to 60 a second; most change nothing here
+            self._shown = text
+            self.update(text, layout=False)  # one line (physink.tcss): repainting it needs no layout of the screen

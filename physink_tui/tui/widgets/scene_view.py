@@ -1,9 +1,12 @@
-"""The scene view: the renderer's frame of the latest `SessionView` in half-block cells, and the mouse as a pen;
+"""The scene view: the renderer's frame of the latest `SessionView` in the terminal, and the mouse as a pen;
 decides nothing (pen samples go out as messages for the screen to hand to the session).
 
-Each cell is two pixels (`physink_tui.tui.halfblocks`); the renderer draws at that size with the canvas's aspect
-kept (square pixels in a cell twice as tall as wide). The left button draws, the right one erases; holding the
-button still is a dwell (the session's gesture engine sees the time pass); positions go out in canvas fractions.
+The picture is one of `physink_tui.tui.graphics.KINDS`: ``halfblocks`` (every terminal: each cell two pixels,
+`physink_tui.tui.halfblocks`), or the frame at the terminal's own pixel size sent with the Kitty graphics
+protocol (shown through placeholder cells) or as Sixel (drawn over blank cells after each refresh), both written
+through the app's driver so they stay in order with Textual's output (`physink_tui.render.kitty`, `.sixel`). The
+renderer draws with the canvas's aspect kept. The left button draws, the right one erases; holding the button
+still is a dwell (the session's gesture engine sees the time pass); positions go out in canvas fractions.
 """
 
 from __future__ import annotations
@@ -12,19 +15,29 @@ import time
 from dataclasses import dataclass, replace
 
 import numpy as np
+from rich.color import Color
+from rich.segment import Segment
+from rich.style import Style
 from textual import events
 from textual.message import Message
 from textual.strip import Strip
 from textual.widget import Widget
 
 from physink_tui.errors import RenderError
+from physink_tui.render import kitty, sixel
 from physink_tui.render.frames import Demonstration, view_frame
+from physink_tui.render.gif_palette import Palette
 from physink_tui.render.renderer import MIN_SIZE, Renderer
 from physink_tui.session.view import SessionView
+from physink_tui.tui.graphics import DEFAULT_CELL, KINDS
 from physink_tui.tui.halfblocks import HalfBlocks
 
 PRESSURE = 0.6
 """The pressure a mouse button stands for."""
+KITTY_IMAGE = {"truecolor": 0x50494E, "256": 201}
+"""The Kitty image id the scene view replaces frame after frame, by the colours Textual writes: placeholder cells
+name it by their foreground colour, 24-bit on a true-colour terminal, the 8-bit palette index otherwise (Textual
+turns a colour of the other kind into its own, which would name another image)."""
 SUPERSAMPLE = 2
 """The renderer draws this many pixels across each half-block pixel (each way), averaged: thin lines and labels
 (the renderer's smallest text is 9 pixels) stay in proportion at a terminal's few pixels."""
@@ -43,10 +56,20 @@ class SceneView(Widget, can_focus=True):
         eraser: bool
         in_range: bool = True
 
-    def __init__(self, canvas: tuple[float, float], theme: str = "dark", **kwargs) -> None:
+    def __init__(self, canvas: tuple[float, float], theme: str = "dark", graphics: str = "halfblocks",
+                 cell: tuple[int, int] = DEFAULT_CELL, **kwargs) -> None:
         super().__init__(**kwargs)
+        if graphics not in KINDS:
+            raise ValueError(f"graphics {graphics!r}: expected one of {', '.join(KINDS)}")
         self.canvas = (float(canvas[0]), float(canvas[1]))
         self.theme_name = theme
+        self.graphics = graphics
+        # pixels the renderer draws across and down each cell, and the factor averaged down to what is shown
+        self._scale = (SUPERSAMPLE, 2 * SUPERSAMPLE, SUPERSAMPLE) if graphics == "halfblocks" else (*cell, 1)
+        self._image_id = 0  # the Kitty image, chosen by the app's colours at the first frame (`KITTY_IMAGE`)
+        self._palette: Palette | None = None  # Sixel's, made from the first frame of a theme
+        self.sent: list[str] = []
+        """The escapes of the last frame written to the terminal (Kitty, Sixel; tests read it)."""
         self.view: SessionView | None = None
         self._renderer: Renderer | None = None
         self._blocks = HalfBlocks()
@@ -83,7 +106,8 @@ class SceneView(Widget, can_focus=True):
         self._draw()
 
     def _make_renderer(self, columns: int, rows: int) -> None:
-        width, height = columns * SUPERSAMPLE, rows * 2 * SUPERSAMPLE
+        width, height = columns * self._scale[0], rows * self._scale[1]
+        self._palette = None
         if width >= MIN_SIZE and height >= MIN_SIZE:
             self._renderer = Renderer(width, height, self.canvas, self.theme_name, controls=False)
         else:
@@ -107,14 +131,62 @@ class SceneView(Widget, can_focus=True):
             pixels = renderer.render(content)
         except RenderError:  # a project of another canvas: shown as text by the status bar
             return
-        if SUPERSAMPLE > 1:
-            h, w = pixels.shape[0] // SUPERSAMPLE, pixels.shape[1] // SUPERSAMPLE
-            pixels = pixels.reshape(h, SUPERSAMPLE, w, SUPERSAMPLE, 4).mean(axis=(1, 3)).astype(np.uint8)
-        self._strips = self._blocks.strips(pixels)
+        factor = self._scale[2]
+        if factor > 1:
+            h, w = pixels.shape[0] // factor, pixels.shape[1] // factor
+            pixels = pixels.reshape(h, factor, w, factor, 4).mean(axis=(1, 3)).astype(np.uint8)
+        if self.graphics == "halfblocks":
+            self._strips = self._blocks.strips(pixels)
+            changed = True
+        else:
+            changed = self._picture(pixels)
         self.frames_drawn += 1
         self.draw_seconds.append(time.perf_counter() - start)
         del self.draw_seconds[:-1000]
-        self.refresh()
+        if changed:  # the graphics protocols' cells stay as they are: Textual has nothing to repaint
+            self.refresh()
+
+    def _picture(self, pixels: np.ndarray) -> bool:
+        """Kitty: the frame replaces the image the placeholder cells show. Sixel: the frame drawn over blank
+        cells (after Textual's refresh when they are new). Whether the cells changed (a new size)."""
+        columns, rows = self.size.width, self.size.height
+        changed = len(self._strips) != rows or not self._strips or self._strips[0].cell_length != columns
+        if self.graphics == "kitty":
+            truecolor = self.app.console.color_system == "truecolor"
+            self._image_id = KITTY_IMAGE["truecolor" if truecolor else "256"]
+            self.sent = [kitty.transmit(pixels, self._image_id, columns, rows)]
+            self._write(self.sent[0])
+            if changed:
+                style = Style(color=Color.from_rgb(*kitty.id_colour(self._image_id)) if truecolor
+                              else Color.from_ansi(self._image_id))
+                self._strips = [Strip([Segment(text, style)], columns)
+                                for text in kitty.placeholder_rows(columns, rows)]
+            return changed
+        self._palette = self._palette or Palette.from_frame(pixels)
+        self.sent = [sixel.encode(pixels, self._palette)]
+        if changed:
+            self._strips = [Strip.blank(columns)] * rows
+        self.repaint_picture()
+        return changed
+
+    def repaint_picture(self) -> None:
+        """Sixel: draw the last frame again once Textual has refreshed (it paints blank cells over it when it
+        repaints the screen, e.g. when a modal closes)."""
+        if self.graphics == "sixel" and self.sent:
+            self.call_after_refresh(self._draw_sixel, self.sent[0])
+
+    def _draw_sixel(self, data: str) -> None:
+        if not self.screen.is_active or data is not self.sent[0]:
+            return  # a modal covers the scene, or a newer frame follows
+        x, y = self.content_region.x, self.content_region.y
+        self._write(f"\x1b7\x1b[{y + 1};{x + 1}H{data}\x1b8")  # save the cursor, draw at the view, restore
+
+    def _write(self, data: str) -> None:
+        """Straight to the terminal through Textual's driver (its writer thread keeps it in order with the
+        screen's updates); nothing in headless tests."""
+        driver = self.app._driver  # Textual has no public way to send escapes of one's own
+        if driver is not None and not self.app.is_headless:
+            driver.write(data)
 
     def emphasise(self, components: tuple[str, ...]) -> None:
         """Outline these components while the timeline shown stays the same."""
@@ -145,7 +217,17 @@ class SceneView(Widget, can_focus=True):
         if renderer is None:
             return None
         left, top, width, height = renderer.box
-        return (x * SUPERSAMPLE - left) / width, (y * 2 * SUPERSAMPLE - top) / height
+        return (x * self._scale[0] - left) / width, (y * self._scale[1] - top) / height
+
+    def canvas_cells(self) -> tuple[tuple[int, int], tuple[float, float, float, float]]:
+        """The terminal's (columns, rows) and where the canvas is drawn in it: (left, top, width, height) in cells
+        (a pen display's area is fitted to it, `physink_tui.tui.displays`)."""
+        region = self.content_region
+        box = self._renderer.box if self._renderer is not None else (0.0, 0.0, 0.0, 0.0)
+        across, down, _ = self._scale
+        screen = self.app.size
+        return ((screen.width, screen.height),
+                (region.x + box[0] / across, region.y + box[1] / down, box[2] / across, box[3] / down))
 
     @staticmethod
     def _point(event: events.MouseEvent) -> tuple[float, float]:

@@ -2,7 +2,8 @@
 `TimelineTree.Seek`; builds nothing but the tree (the timeline is the session's).
 
 A timeline is a DAG; the tree shows each event under its first cause (an event with several causes says the
-others in its line). It is rebuilt only when the view's timeline is another object.
+others in its line). It is rebuilt only when what it shows changes (the events, their causes, starts and names),
+not while a recording only lengthens its movements: a rebuild lays out the whole screen again.
 """
 
 from __future__ import annotations
@@ -31,16 +32,17 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
         super().__init__("Timeline", **kwargs)
         self.show_root = False
         self.auto_expand = False  # choosing an event seeks; it does not fold its consequences away
-        self._timeline: Timeline | bool | None = False  # False: nothing shown yet
+        self._shown: tuple | None = None  # what the tree shows (`_key`); None: nothing yet
         self._names: dict[str, str] = {}
         self.guide_depth = 2
 
     def show(self, view: SessionView) -> None:
         timeline = view.timeline
         names = dict(view.scene.names())
-        if timeline is self._timeline and names == self._names:
+        key = self._key(timeline, names)
+        if key == self._shown:
             return
-        self._timeline, self._names = timeline, names
+        self._shown, self._names = key, names
         self.clear()
         if timeline is None or not timeline.events:
             self.root.add_leaf("(nothing demonstrated yet: press d for demo mode and move a body)")
@@ -65,6 +67,13 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
             waiting = later
         for node in nodes.values():
             node.allow_expand = bool(node.children)
+
+    @staticmethod
+    def _key(timeline: Timeline | None, names: dict[str, str]) -> tuple:
+        """Everything the tree shows of ``timeline`` (each event's id, type, start, components, causes and label)."""
+        if timeline is None:
+            return ((), names)
+        return (tuple((ev.id, ev.type, ev.t0, ev.components, ev.causes, ev.label) for ev in timeline.events), names)
 
     @staticmethod
     def _label(ev: Event, events: dict[str, Event], names: dict[str, str]) -> str:

@@ -1,0 +1,101 @@
+"""The terminal graphics encoders (Kitty graphics protocol, Sixel): well-formed escapes that decode back to the
+frame's pixels; the choice of protocol from the terminal's environment."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from terminal_graphics import kitty_commands, kitty_image, sixel_image
+
+from physink_tui.errors import RenderError
+from physink_tui.render import kitty, sixel
+from physink_tui.render.frames import view_frame
+from physink_tui.render.renderer import Renderer
+from physink_tui.scene.physics.state import Pose
+from physink_tui.session.view import SessionView
+from physink_tui.tui.graphics import choose
+from tests.sim_scenes import CANVAS, ball_floor_wall
+
+
+def scene_frame(width: int = 301, height: int = 199) -> np.ndarray:
+    """A real frame: the ball, floor and wall machine as the renderer draws it (anti-aliased edges included)."""
+    scene = ball_floor_wall()
+    poses = {b.id: Pose(*b.position, b.angle) for b in scene.bodies()}
+    view = SessionView(1, 0.0, "sketch", scene, poses, (), (), None, False, False, None, 0.0, 0.0, False, ())
+    return Renderer(width, height, CANVAS, "dark", controls=False).render(view_frame(view, CANVAS))
+
+
+def test_kitty_transmission_is_chunked_and_decodes_to_the_frame() -> None:
+    frame = scene_frame()
+    text = kitty.transmit(frame, 4242, 30, 10)
+    keys, pixels = kitty_image(text)
+    assert keys == {"a": "T", "U": "1", "f": "100", "i": "4242", "c": "30", "r": "10", "q": "2", "m": keys["m"]}
+    assert np.array_equal(pixels, frame)
+    noise = np.random.default_rng(1).integers(0, 256, (64, 96, 4), dtype=np.uint8)  # PNG cannot shrink it
+    noise[..., 3] = 255  # frames are opaque
+    text = kitty.transmit(noise, 9, 12, 4)
+    assert len(kitty_commands(text)) >= 4 and np.array_equal(kitty_image(text)[1], noise)
+
+
+def test_kitty_placeholders_name_each_row_and_the_image() -> None:
+    rows = kitty.placeholder_rows(5, 3)
+    assert [len(r) for r in rows] == [7, 7, 7]
+    for r, row in enumerate(rows):
+        assert row[0] == kitty.PLACEHOLDER and row[1] == kitty.DIACRITICS[r] and row[2] == kitty.DIACRITICS[0]
+        assert row[3:] == kitty.PLACEHOLDER * 4
+    assert kitty.id_colour(0x123456) == (0x12, 0x34, 0x56)
+    assert kitty_commands(kitty.delete(7)) == [({"a": "d", "d": "I", "i": "7", "q": "2"}, "")]
+
+
+@pytest.mark.parametrize(("args", "named"), [((0, 3, 3), "id 0"), ((1 << 24, 3, 3), "id 16777216"),
+                                             ((1, 0, 3), "0 x 3"), ((1, 3, 400), "3 x 400")])
+def test_kitty_refuses_what_the_placeholders_cannot_name(args, named) -> None:
+    with pytest.raises(RenderError, match=named):
+        kitty.transmit(scene_frame(20, 20), *args)
+
+
+def test_sixel_decodes_to_the_frame_within_its_percent_colours() -> None:
+    frame = scene_frame()  # 199 rows: the last band is partial
+    decoded = sixel_image(sixel.encode(frame))
+    assert decoded.shape == (199, 301, 3)
+    error = np.abs(decoded.astype(int) - frame[..., :3].astype(int))
+    flat = (frame[..., :3] == frame[0, 0, :3]).all(axis=2)  # the background, a colour the palette holds exactly
+    assert error[flat].max() <= 2  # percent registers: 255 / 100 levels a step
+    assert np.percentile(error.max(axis=2), 99) <= 36  # rare anti-aliased shades fall to the colour cube
+
+
+def test_sixel_of_flat_colours_is_exact_to_the_percent_and_runs_are_compressed() -> None:
+    frame = np.zeros((13, 40, 4), np.uint8)
+    frame[..., 3] = 255
+    frame[:, :20, 0] = 255  # red left half, black right half
+    frame[6:, :, 2] = 255  # blue in the lower rows
+    text = sixel.encode(frame)
+    assert "!20" in text  # a run of twenty columns is written once
+    assert np.array_equal(sixel_image(text), frame[..., :3])
+
+
+def test_sixel_refuses_what_is_not_a_frame() -> None:
+    with pytest.raises(RenderError, match=r"sixel: expected a \(height, width, 4\) uint8 RGBA array"):
+        sixel.encode(np.zeros((4, 4, 3), np.uint8))
+
+
+@pytest.mark.parametrize(("env", "expected"), [
+    ({"TERM": "xterm-kitty"}, "kitty"),
+    ({"TERM": "xterm-256color", "KITTY_WINDOW_ID": "1"}, "kitty"),
+    ({"TERM": "xterm-256color", "TERM_PROGRAM": "ghostty"}, "kitty"),
+    ({"TERM": "foot"}, "sixel"),
+    ({"TERM": "mlterm"}, "sixel"),
+    ({"TERM": "xterm-256color", "TERM_PROGRAM": "WezTerm"}, "sixel"),
+    ({"TERM": "xterm-256color"}, "halfblocks"),
+    ({"TERM": "xterm-kitty", "TMUX": "/tmp/tmux-0/default,1,0"}, "halfblocks"),  # tmux does not pass them on
+    ({"TERM": "tmux-256color"}, "halfblocks"),
+    ({"TERM": "foot", "PHYSINK_GRAPHICS": "halfblocks"}, "halfblocks"),
+    ({"TERM": "xterm", "PHYSINK_GRAPHICS": "sixel"}, "sixel"),
+])
+def test_the_protocol_is_chosen_from_the_environment(env, expected) -> None:
+    assert choose(env) == expected
+
+
+def test_a_bad_override_is_named() -> None:
+    with pytest.raises(RenderError, match="PHYSINK_GRAPHICS='png'"):
+        choose({"PHYSINK_GRAPHICS": "png"})

@@ -1,0 +1,90 @@
+"""`physink tui` in a real pseudo-terminal (not Textual's headless driver): with TERM naming a Kitty or Sixel
+terminal and a window size in pixels, the scene goes out as graphics escapes through Textual's own output, and
+they decode to a frame of the scene view's cells at the terminal's cell size; with any other TERM, half-blocks."""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import pty
+import re
+import select
+import signal
+import struct
+import sys
+import termios
+import time
+from pathlib import Path
+
+import pytest
+from terminal_graphics import kitty_image, sixel_image
+
+from physink_tui.render import kitty
+from physink_tui.tui.widgets.scene_view import KITTY_IMAGE
+
+ROOT = Path(__file__).resolve().parent.parent
+CELLS, PIXELS = (120, 40), (1200, 800)  # 10 x 20 pixels a cell
+
+
+def run_tui(term: str, tmp_path: Path, seconds: float = 6.0, colours: str | None = None) -> bytes:
+    """What ``physink tui`` wrote to a 120x40 pty of 1200x800 pixels in ``seconds``, then asked to quit
+    (``colours``: ``COLORTERM``, e.g. ``truecolor``)."""
+    pid, fd = pty.fork()
+    if pid == 0:  # the child: the app, as a user starts it
+        env = {k: v for k, v in os.environ.items() if k not in ("TMUX", "PHYSINK_GRAPHICS", "KITTY_WINDOW_ID",
+                                                                 "TERM_PROGRAM", "COLORTERM")}
+        env.update({"COLORTERM": colours} if colours else {})
+        env.update(TERM=term, PYTHONPATH=str(ROOT), XDG_DATA_HOME=str(tmp_path / "data"),
+                   XDG_CONFIG_HOME=str(tmp_path / "config"))
+        os.execve(sys.executable, [sys.executable, "-m", "physink_tui", "tui"], env)
+    fcntl.ioctl(fd, termios.TIOCSWINSZ, struct.pack("HHHH", CELLS[1], CELLS[0], *PIXELS))
+    out = b""
+    try:
+        deadline = time.monotonic() + seconds
+        while time.monotonic() < deadline:
+            if select.select([fd], [], [], 0.1)[0]:
+                try:
+                    out += os.read(fd, 1 << 16)
+                except OSError:
+                    break
+        os.write(fd, b"q")
+        time.sleep(0.5)
+    finally:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+        os.close(fd)
+    return out
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("colours", ["truecolor", None])
+def test_a_kitty_terminal_gets_the_scene_as_kitty_graphics_in_placeholder_cells(tmp_path, colours) -> None:
+    out = run_tui("xterm-kitty", tmp_path, colours=colours).decode("utf-8", errors="replace")
+    sends = re.findall(r"\x1b_Ga=T[^\x1b]*\x1b\\(?:\x1b_Gm=[^\x1b]*\x1b\\)*", out)
+    assert sends, out[:500]
+    keys, pixels = kitty_image(sends[-1])
+    columns, rows = int(keys["c"]), int(keys["r"])
+    assert pixels.shape == (rows * 20, columns * 10, 4) and 60 < columns < 120 and 30 < rows < 40
+    image = KITTY_IMAGE["truecolor" if colours else "256"]
+    assert keys["i"] == str(image)
+    colour = "2;" + ";".join(map(str, kitty.id_colour(image))) if colours else f"5;{image}"
+    first = f"\x1b[38;{colour}m" + kitty.PLACEHOLDER + kitty.DIACRITICS[0] + kitty.DIACRITICS[0]
+    assert first in out  # the first row's first cell, in the colour that names the image
+    assert "\u2580" not in out
+
+
+@pytest.mark.slow
+def test_a_sixel_terminal_gets_the_scene_as_sixel_at_the_view(tmp_path) -> None:
+    out = run_tui("foot", tmp_path).decode("utf-8", errors="replace")
+    images = re.findall(r"\x1b7\x1b\[(\d+);(\d+)H(\x1bP0;1;0q.*?\x1b\\)\x1b8", out, re.S)
+    assert images, out[:500]
+    row, column, data = images[-1]
+    assert (int(row), int(column)) == (1, 1)  # the scene view's top left cell
+    pixels = sixel_image(data)
+    assert pixels.shape[0] % 20 == 0 and pixels.shape[1] % 10 == 0 and 60 < pixels.shape[1] / 10 < 120
+
+
+@pytest.mark.slow
+def test_another_terminal_gets_half_blocks(tmp_path) -> None:
+    out = run_tui("xterm-256color", tmp_path).decode("utf-8", errors="replace")
+    assert "\u2580" in out and "\x1b_G" not in out and "\x1bP0;1;0q" not in out

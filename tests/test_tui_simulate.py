@@ -1,0 +1,189 @@
+"""SIMULATE in the TUI: the search runs in a worker with a progress bar while pen input and keys go on; cancel
+keeps the best so far; the result is drawn in red, journaled as ``simulate SEED BUDGET`` (a replay of the journal
+finds the same), adopted into the project undoably and played back."""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from pathlib import Path
+
+import pytest
+
+from physink_tui.commands.demo import demo_journal
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.session.session import Session
+from physink_tui.tui.screens.background import SearchFinished, SearchProgressed
+from physink_tui.tui.screens.modals import ConfirmModal
+from physink_tui.tui.widgets.scene_view import SceneView
+from physink_tui.tui.widgets.search_bar import SearchBar
+from tests.tui_helpers import SIZE, tui_app, until
+
+JOURNALS = Path(__file__).parent / "journals"
+
+
+def recorded(name: str) -> tuple:
+    journal = read_journal(JOURNALS / f"{name}.physink.jsonl")
+    return journal.header, tuple(journal.entries)
+
+
+def journaled(folder: Path) -> Session:
+    """The session the app journaled into ``folder``/sessions, replayed."""
+    (path,) = (folder / "sessions").glob("*.physink.jsonl")
+    journal = read_journal(path)
+    return Session.from_header(journal.header).run(journal.entries)
+
+
+def simulate_args(folder: Path) -> list[tuple]:
+    (path,) = (folder / "sessions").glob("*.physink.jsonl")
+    return [e.args for e in read_journal(path).entries if getattr(e, "name", None) == "simulate"]
+
+
+async def until_app(pilot, predicate, timeout: float = 30.0) -> None:
+    for _ in range(int(timeout / 0.05)):
+        if predicate():
+            return
+        await pilot.pause(0.05)
+    raise AssertionError("timed out")
+
+
+def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_to_it(tmp_path) -> None:
+    header, entries = recorded("bouncing_above_b")
+    messages: list = []
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=entries)
+        async with app.run_test(size=SIZE, message_hook=messages.append) as pilot:
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            app.live.session.simulation_budget = 40
+            await pilot.click("#do-simulate")  # a search of well under a second: its progress is in the messages
+            view = await until(pilot, lambda v: v.search is not None, timeout=60)
+            assert view.search.found and view.search.budget == 40 and 1 <= view.search.rollouts < 40
+            assert not app.main.query_one(SearchBar).display and app.main.job is None
+            red = app.main.query_one(SceneView)._simulation_trails(view)
+            assert red and all(trail.kind == "simulation" for trail in red)
+            await pilot.pause(0.2)
+            assert app.main.query_one("#status").activity == f"simulation done in {view.search.rollouts} rollouts"
+            assert view.messages[-1].text.startswith(f"simulation found in {view.search.rollouts} rollouts")
+            shown = view.search
+        return shown
+
+    shown = asyncio.run(go())
+    progress = [m.progress for m in messages if isinstance(m, SearchProgressed)]
+    assert progress and progress[0].rollouts == 0 and all(p.budget == 40 for p in progress)
+    assert [m.offer.result for m in messages if isinstance(m, SearchFinished)] == [shown]
+    assert simulate_args(tmp_path) == [(0, 40)]
+    assert journaled(tmp_path).view().search == shown
+
+
+def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) -> None:
+    header, entries = demo_journal()  # the egg cracker: no simulation within a few rollouts, half a second each
+
+    async def go():
+        app = tui_app(tmp_path, header=header, prior=tuple(entries))
+        async with app.run_test(size=SIZE) as pilot:
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            bar = app.main.query_one(SearchBar)
+            await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+            await pilot.press("d")  # the session takes keys while the search runs
+            await until(pilot, lambda v: v.mode == "demo", timeout=2.0)
+            assert app.main.job is not None and bar.display
+            await pilot.press("g")  # a second search is refused while one runs
+            await pilot.press("escape")
+            view = await until(pilot, lambda v: v.search is not None, timeout=60)
+            kept = view.search
+            assert kept.budget == kept.rollouts and 1 <= kept.rollouts < Session.simulation_budget
+            assert not kept.found and view.mode == "demo"
+            await pilot.pause(0.2)
+            assert app.main.query_one("#status").activity == (
+                f"simulation stopped: the best of {kept.rollouts} rollout{'' if kept.rollouts == 1 else 's'} kept")
+        return kept
+
+    kept = asyncio.run(go())
+    assert simulate_args(tmp_path) == [(0, kept.rollouts)]
+    assert journaled(tmp_path).view().search == kept
+
+
+def test_a_search_of_a_machine_changed_meanwhile_is_discarded(tmp_path) -> None:
+    header, entries = demo_journal()
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=tuple(entries))
+        async with app.run_test(size=SIZE) as pilot:
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            bar = app.main.query_one(SearchBar)
+            await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+            await pilot.press("c")  # clear: the machine searched is gone
+            await until(pilot, lambda v: not v.scene.components)
+            await pilot.press("escape")
+            await until_app(pilot, lambda: app.main.job is None)
+            await pilot.pause(0.2)
+            assert app.main.query_one("#status").activity.startswith("simulation discarded: the machine changed")
+            assert app.live.runner.latest_view().search is None
+
+    asyncio.run(go())
+    assert simulate_args(tmp_path) == []
+
+
+def test_an_adopted_simulation_is_undoable_and_plays_back(tmp_path) -> None:
+    header, entries = recorded("pinball")
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=entries)
+        async with app.run_test(size=SIZE) as pilot:
+            before = await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            found = await until(pilot, lambda v: v.search is not None, timeout=60)
+            assert found.search.found
+            await pilot.press("a")
+            adopted = await until(pilot, lambda v: v.messages[-1].text.startswith("loaded simulation"))
+            for body, p in found.search.parameters.bodies.items():  # the masses and frictions found
+                material = adopted.scene.components[body].material
+                assert material.friction == pytest.approx(p.friction, abs=1e-6)
+            assert [e.type for e in adopted.timeline.events] == [e.type for e in found.search.timeline.events]
+            assert adopted.timeline != before.timeline and adopted.can_undo
+            await pilot.press("space")  # play the adopted simulation back
+            await until(pilot, lambda v: v.mode == "demo" and v.playing and v.clock > 0.2)
+            await pilot.press("u")
+            await until(pilot, lambda v: v.scene == before.scene and v.timeline == before.timeline)
+
+    asyncio.run(go())
+
+
+def test_a_replay_can_end_with_simulate_as_the_demo_does(tmp_path) -> None:
+    header, entries = recorded("pinball")
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, entries=entries, speed=20.0, simulate_after=True)
+        async with app.run_test(size=SIZE) as pilot:
+            view = await until(pilot, lambda v: v.search is not None, timeout=60)
+            assert view.search.found and view.timeline is not None
+            assert app.main.query_one("#status").activity.startswith("simulation done in")
+    asyncio.run(go())
+
+
+def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) -> None:
+    header, entries = demo_journal()
+    started = []
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=tuple(entries))
+        async with app.run_test(size=SIZE) as pilot:
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            bar = app.main.query_one(SearchBar)
+            await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+            job = app.main.job
+            await pilot.press("q")
+            await pilot.pause(0.2)
+            if isinstance(app.screen, ConfirmModal):  # unsaved work: quit all the same
+                await pilot.click("#yes")
+            started.append(time.monotonic())
+            await until_app(pilot, lambda: job.stopped, timeout=5)
+        started.append(time.monotonic())
+
+    asyncio.run(go())
+    assert started[1] - started[0] < 10  # the search stopped after its rollout under way; the app closed
+    assert simulate_args(tmp_path) == []
