@@ -79,6 +79,7 @@ def test_the_settings_screen_fits_the_area_to_the_canvas_on_the_chosen_monitor(t
             await pilot.click("#fit-area")
             assert "choose the monitor" in str(screen.query_one("#settings-error").render())
             screen.query_one("#display").value = "DP-2"
+            await pilot.pause(0.1)  # the Select's change reaches the screen as a message
             await pilot.click("#fit-area")
             await pilot.pause(0.1)
             (columns, rows), (left, top, width, height) = app.main.query_one(SceneView).canvas_cells()

@@ -10,7 +10,6 @@ from pathlib import Path
 
 import pytest
 
-from physink_tui.commands.demo import demo_journal
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.session.session import Session
 from physink_tui.tui.screens.background import SearchFinished, SearchProgressed
@@ -77,7 +76,7 @@ def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_
 
 
 def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) -> None:
-    header, entries = demo_journal()  # the egg cracker: no simulation within a few rollouts, half a second each
+    header, entries = recorded("cup_dispenser")  # no simulation found within the budget (docs/BENCHMARKS.md)
 
     async def go():
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
@@ -106,7 +105,7 @@ def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) 
 
 
 def test_a_search_of_a_machine_changed_meanwhile_is_discarded(tmp_path) -> None:
-    header, entries = demo_journal()
+    header, entries = recorded("cup_dispenser")  # a search that runs its whole budget
 
     async def go() -> None:
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
@@ -165,7 +164,7 @@ def test_a_replay_can_end_with_simulate_as_the_demo_does(tmp_path) -> None:
 
 
 def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) -> None:
-    header, entries = demo_journal()
+    header, entries = recorded("cup_dispenser")  # a search that runs its whole budget
     started = []
 
     async def go() -> None:
