@@ -61,8 +61,8 @@ def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_
             assert not app.main.query_one(SearchBar).display and app.main.job is None
             red = app.main.query_one(SceneView)._simulation_trails(view)
             assert red and all(trail.kind == "simulation" for trail in red)
-            await pilot.pause(0.2)
-            assert app.main.query_one("#status").activity == f"simulation done in {view.search.rollouts} rollouts"
+            done = f"simulation done in {view.search.rollouts} rollouts"
+            await until_app(pilot, lambda: app.main.query_one("#status").activity == done)
             assert view.messages[-1].text.startswith(f"simulation found in {view.search.rollouts} rollouts")
             shown = view.search
         return shown
@@ -94,9 +94,8 @@ def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) 
             kept = view.search
             assert kept.budget == kept.rollouts and 1 <= kept.rollouts < Session.simulation_budget
             assert not kept.found and view.mode == "demo"
-            await pilot.pause(0.2)
-            assert app.main.query_one("#status").activity == (
-                f"simulation stopped: the best of {kept.rollouts} rollout{'' if kept.rollouts == 1 else 's'} kept")
+            stopped = f"simulation stopped: the best of {kept.rollouts} rollout{'' if kept.rollouts == 1 else 's'} kept"
+            await until_app(pilot, lambda: app.main.query_one("#status").activity == stopped)
         return kept
 
     kept = asyncio.run(go())
@@ -118,8 +117,8 @@ def test_a_search_of_a_machine_changed_meanwhile_is_discarded(tmp_path) -> None:
             await until(pilot, lambda v: not v.scene.components)
             await pilot.press("escape")
             await until_app(pilot, lambda: app.main.job is None)
-            await pilot.pause(0.2)
-            assert app.main.query_one("#status").activity.startswith("simulation discarded: the machine changed")
+            await until_app(pilot, lambda: app.main.query_one("#status").activity.startswith(
+                "simulation discarded: the machine changed"))
             assert app.live.runner.latest_view().search is None
 
     asyncio.run(go())
@@ -159,7 +158,8 @@ def test_a_replay_can_end_with_simulate_as_the_demo_does(tmp_path) -> None:
         async with app.run_test(size=SIZE) as pilot:
             view = await until(pilot, lambda v: v.search is not None, timeout=60)
             assert view.search.found and view.timeline is not None
-            assert app.main.query_one("#status").activity.startswith("simulation done in")
+            status = app.main.query_one("#status")  # the status bar follows the view it was handed next
+            await until_app(pilot, lambda: status.activity.startswith("simulation done in"))
     asyncio.run(go())
 
 
