@@ -46,6 +46,16 @@ async def until_app(pilot, predicate, timeout: float = 30.0) -> None:
     raise AssertionError("timed out")
 
 
+async def searching(pilot, app) -> SearchBar:
+    """Once the demonstration is in, press Simulate and wait for its first rollout; the search bar. (The cup
+    dispenser's search runs its whole budget without a solution, docs/BENCHMARKS.md, so it is still running.)"""
+    await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+    await pilot.press("g")
+    bar = app.main.query_one(SearchBar)
+    await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+    return bar
+
+
 def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_to_it(tmp_path) -> None:
     header, entries = recorded("bouncing_above_b")
     messages: list = []
@@ -76,15 +86,12 @@ def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_
 
 
 def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) -> None:
-    header, entries = recorded("cup_dispenser")  # no simulation found within the budget (docs/BENCHMARKS.md)
+    header, entries = recorded("cup_dispenser")
 
     async def go():
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
         async with app.run_test(size=SIZE) as pilot:
-            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
-            await pilot.press("g")
-            bar = app.main.query_one(SearchBar)
-            await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+            bar = await searching(pilot, app)
             await pilot.press("d")  # the session takes keys while the search runs
             await until(pilot, lambda v: v.mode == "demo", timeout=2.0)
             assert app.main.job is not None and bar.display
@@ -104,15 +111,12 @@ def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) 
 
 
 def test_a_search_of_a_machine_changed_meanwhile_is_discarded(tmp_path) -> None:
-    header, entries = recorded("cup_dispenser")  # a search that runs its whole budget
+    header, entries = recorded("cup_dispenser")
 
     async def go() -> None:
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
         async with app.run_test(size=SIZE) as pilot:
-            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
-            await pilot.press("g")
-            bar = app.main.query_one(SearchBar)
-            await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+            await searching(pilot, app)
             await pilot.press("c")  # clear: the machine searched is gone
             await until(pilot, lambda v: not v.scene.components)
             await pilot.press("escape")
@@ -164,16 +168,13 @@ def test_a_replay_can_end_with_simulate_as_the_demo_does(tmp_path) -> None:
 
 
 def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) -> None:
-    header, entries = recorded("cup_dispenser")  # a search that runs its whole budget
+    header, entries = recorded("cup_dispenser")
     started = []
 
     async def go() -> None:
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
         async with app.run_test(size=SIZE) as pilot:
-            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
-            await pilot.press("g")
-            bar = app.main.query_one(SearchBar)
-            await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
+            await searching(pilot, app)
             job = app.main.job
             await pilot.press("q")
             await pilot.pause(0.2)
