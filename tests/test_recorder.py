@@ -9,8 +9,9 @@ import math
 from physink_tui.scene.physics.contacts import ContactRecord
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.graph import check_acyclic, descendants
+from physink_tui.timeline.observation import Observation
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides
-from physink_tui.timeline.recorder import Observation, Recorder
+from physink_tui.timeline.recorder import Recorder
 
 DT = 1 / 120
 

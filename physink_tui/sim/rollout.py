@@ -39,7 +39,8 @@ from physink_tui.scene.physics.world import GRAVITY, World
 from physink_tui.sim.parameters import Parameters, apply
 from physink_tui.timeline.demo_setup import recorder_for, touching_pairs
 from physink_tui.timeline.events import Timeline
-from physink_tui.timeline.recorder import MOVING_SPEED, STILL_FRAMES, Observation
+from physink_tui.timeline.observation import Observation
+from physink_tui.timeline.recorder import MOVING_SPEED, STILL_FRAMES
 
 SETTLE_DAMPING = 0.05
 """Share of its velocity a body keeps after one second while the scene settles (drawn bodies come to rest fast)."""

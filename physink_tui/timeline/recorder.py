@@ -26,14 +26,14 @@ or play back is the session's business; the poses come from the physics world.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from physink_tui.scene.physics.contacts import ContactRecord
-from physink_tui.scene.physics.state import Motion
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.movement_record import OpenMovement, Regions
+from physink_tui.timeline.observation import Observation
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
 from physink_tui.timeline.touches import Touches, pushed_again
 
@@ -46,27 +46,6 @@ SEPARATION_GAP = 4.0
 RECENT_SEPARATION = 1.0
 """Seconds after two bodies stop touching during which a body starting to move by itself was released by it."""
 
-
-
-@dataclass(frozen=True, slots=True)
-class Observation:
-    """What the world looks like after one step.
-
-    Attributes:
-        t: timeline time of the step.
-        poses: every body's pose (fixed bodies may be left out).
-        contacts: contacts begun in this step, in the order they began.
-        grabbed: the body the pen holds, or None.
-        touching: the pairs of bodies touching now.
-        playing: bodies following their recorded trajectories (concurrent movement) rather than the physics.
-    """
-
-    t: float
-    poses: Mapping[str, Motion]
-    contacts: Sequence[ContactRecord] = ()
-    grabbed: str | None = None
-    touching: frozenset[frozenset[str]] = frozenset()
-    playing: frozenset[str] = frozenset()
 
 
 @dataclass

@@ -21,9 +21,9 @@ from physink_tui.session.history import Document
 from physink_tui.session.modes.base import Host, Mode
 from physink_tui.timeline.demo_setup import recorder_for
 from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.observation import Observation
 from physink_tui.timeline.phrase_events import label_event
 from physink_tui.timeline.phrases import PhraseError, Vocabulary, parse_phrase
-from physink_tui.timeline.recorder import Observation
 from physink_tui.timeline.tape import Tape
 
 TIME_EPSILON = 1e-6
