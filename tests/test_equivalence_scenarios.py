@@ -50,7 +50,7 @@ CONTACTS = {
 FIRST_MOVEMENT_REGIONS = {
     # the straight drops into the basket (figures 2-14, 3-22): the regions of the platforms the ball passes through
     "bouncing_above_b": {"platform b": ("above", "right")},
-    "bouncing_below_b": {"platform a": ("above",), "platform b": ("below", "left")},
+    "bouncing_below_b": {"platform a": ("above", "right"), "platform b": ("below", "left")},
 }
 
 
