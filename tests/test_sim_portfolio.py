@@ -13,8 +13,8 @@ from physink_tui.cli import main
 from physink_tui.sim.defaults import DEFAULT_BUDGET
 
 JOURNALS = Path(__file__).parent / "journals"
-SOLVED = ("pinball", "basketball", "golf_ball_helper", "egg_cracker", "bouncing_hits_b_once", "bouncing_above_b",
-          "bouncing_a_then_b_bottom_again")
+SOLVED = ("pinball", "basketball", "golf_ball_helper", "egg_cracker", "cup_dispenser", "bouncing_hits_b_once",
+          "bouncing_above_b", "bouncing_a_then_b_bottom_again")
 """Figures 3-21 (hits B once), 2-14 (above B), 2-15 (the second path), 4-x (the portfolio)."""
 
 
