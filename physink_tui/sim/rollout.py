@@ -76,7 +76,6 @@ keep their contacts with the impulses that hold them: without them a sleeping gr
 it wakes (contacts the recorder would take for new ones) and a compressed spring jolts its body for a step before
 the contact pushes back (the cup dispenser's peg: 28-31 units/s at the instant the ball hits the cup, a movement
 the start event would explain). Two steps already give the same rollout to 1e-6; four for margin."""
-REST_MOTION = Motion(0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 EXPLODED_SPEED = 1.0e5
 """Canvas units per second (about 75 canvas heights a second) above which the physics has blown up."""
 
@@ -267,7 +266,7 @@ def _set_moving(world: World, frame: Frame, came_flush: set[tuple[str, str]]) ->
     for a, b in sorted(came_flush):
         if frozenset((a, b)) not in frame.touching:
             came_flush.discard((a, b))
-        elif any(math.hypot(m.vx, m.vy) > MOVING_SPEED for m in (frame.motions[a], frame.motions.get(b, REST_MOTION))):
+        elif any(math.hypot(m.vx, m.vy) > MOVING_SPEED for m in (frame.motions[a], frame.motions[b])):
             came_flush.discard((a, b))
             record = touching_record(frame.step, world.pymunk_body(a), world.pymunk_body(b), a, b)
             if record is not None:
