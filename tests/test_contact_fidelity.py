@@ -116,9 +116,9 @@ def test_the_cup_dispenser_peg_and_platform_touch_once_each_time_they_meet() -> 
     released = min(contacts(timeline, platform, peg, kind="end_contact"), key=lambda e: e.t0)
     met = contacts(timeline, platform, peg)
     # after the platform drops, the pen pushes the peg over the platform's top (the platform, on its spring,
-    # jitters under it: one contact); let go, the peg's spring pulls it back past the platform's left end, 70
-    # units clear, and it knocks the platform's left side: a second meeting. Nothing in between.
-    assert [dict(e.sides)[peg] for e in met] == ["bottom", "right"]
+    # jitters under it: one contact, nothing else between them); demo mode ends as the pen lets go of the peg
+    # (scenarios.thesis.CUP_SETTLE_S), before its spring pulls it back
+    assert [dict(e.sides)[peg] for e in met] == ["bottom"]
     assert all(e.t0 > released.t0 for e in met)
     assert len(contacts(timeline, ball, cup)) == 1  # the ball rattles in the cup: one contact
     assert len(contacts(timeline, cup, peg)) == 1  # the peg pushes the cup off

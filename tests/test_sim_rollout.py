@@ -249,3 +249,21 @@ def test_a_fast_ball_does_not_tunnel_through_a_thin_platform() -> None:
     assert contacts and set(contacts[0].components) == {"b1", "b2"}
     assert not any("tunnel" in flag for flag in result.flagged)
     assert any("demo mode's limit" in flag for flag in result.flagged)
+
+
+def test_a_body_that_came_flush_while_settling_touches_what_it_rests_on_when_first_set_moving() -> None:
+    """The golf ball drawn a little above its shelf (thesis 4.2): settling brings it down onto the shelf, which is no
+    event; the demonstration, without gravity, shows that contact when the ball is pushed onto the shelf, so the
+    simulation's is the step the ball is first set moving (after the blow that moves it), and only then."""
+    shelf = Body("b1", "box", square(400, 40), 0.0, (800.0, 620.0), 0.0, MATERIALS["box"], "shelf")
+    scene = Scene().add(shelf).add(Joint("j1", "weld", "b1", BACKGROUND, (800.0, 620.0)))
+    scene = scene.add(Body("b2", "circle", (), 25.0, (800.0, 569.0), 0.0, MATERIALS["round"], "golf ball"))
+    scene = scene.add(Body("b3", "circle", (), 25.0, (700.0, 575.0), 0.0, MATERIALS["round"], "ball"))
+    masses = {b: BodyParameters(math.pi * 625.0, 0.5) for b in ("b2", "b3")}
+    result = rollout(scene, CANVAS, Parameters(masses, {}, {"b3": (600.0, 0.0)}), max_seconds=1.0)
+    contacts = [ev for ev in result.timeline.events if ev.type == "contact"]
+    assert [set(ev.components) for ev in contacts[:2]] == [{"b2", "b3"}, {"b1", "b2"}]
+    pushed, onto = contacts[0], contacts[1]
+    (moved,) = [result.timeline.event(c) for c in onto.causes]
+    assert moved.type == "movement" and moved.components[0] == "b2" and pushed.id in moved.causes
+    assert dict(onto.sides) == {"b2": "bottom", "b1": "top"}

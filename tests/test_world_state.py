@@ -7,7 +7,7 @@ import dataclasses
 
 import pytest
 
-from physink_tui.scene.components import MATERIALS, Body, Scene
+from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Scene
 from physink_tui.scene.physics.state import Motion, WorldState
 from physink_tui.scene.physics.stepping import demo_world, step_and_observe
 from physink_tui.scene.physics.world import World
@@ -71,3 +71,31 @@ def test_step_and_observe_reports_motions_and_the_contacts_begun() -> None:
     assert hits and {hits[0][1].a_id, hits[0][1].b_id} == {"b1", "b2"}
     assert any(frozenset(("b1", "b2")) in f.touching for f in frames)
     assert frames[0].motions["b1"].vy == pytest.approx(600.0, rel=0.05)  # no gravity in a demo world
+
+
+def box_on_floor_under_a_ball() -> Scene:
+    floor = Body("b1", "box", ((-200.0, -10.0), (200.0, -10.0), (200.0, 10.0), (-200.0, 10.0)), 0.0, (400.0, 600.0),
+                 0.0, MATERIALS["box"], "floor")
+    scene = Scene().add(floor).add(Joint("j1", "weld", "b1", BACKGROUND, (400.0, 600.0)))
+    scene = scene.add(Body("b2", "box", square(40), 0.0, (400.0, 550.0), 0.0, MATERIALS["box"], "box"))
+    return scene.add(Body("b3", "circle", (), 20.0, (400.0, 200.0), 0.0, MATERIALS["round"], "ball"))
+
+
+@pytest.mark.parametrize(("warm", "floor_again"), [(0, True), (4, False)])
+def test_a_warmed_fork_keeps_the_contacts_of_what_it_holds_asleep(warm: int, floor_again: bool) -> None:
+    """A box resting on the floor, held asleep in a fork, is woken by a falling ball. Forked cold, it has no contact
+    with the floor while asleep, and one begins again the step after it wakes; forked warm, the resting contact goes
+    on (Chipmunk keeps a sleeping body's contacts with their impulses)."""
+    scene = box_on_floor_under_a_ball()
+    world = World.from_scene(scene)
+    world.follow("b3", world.pose("b3"), world.velocity("b3"))  # the ball held where it is while the box settles
+    world.step(60)
+    world.let_go("b3")
+    state = world.state()
+    fork = World.from_state(scene, state, warm=warm)
+    assert fork.steps == state.step and fork.state() == state
+    fork.hold_until_touched({"b3"})
+    frames = [step_and_observe(fork, ("b1", "b2", "b3")) for _ in range(150)]
+    pairs = [frozenset((c.a_id, c.b_id)) for f in frames for c in f.contacts]
+    assert frozenset(("b3", "b2")) in pairs
+    assert (frozenset(("b2", "b1")) in pairs) == floor_again

@@ -24,7 +24,7 @@ from physink_tui.sim.legs import legs
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.rollout import EXPLODED, RolloutResult, rollout_from, settled_state
 from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prefixes, compare_prepared, prepare
-from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.events import Event, Timeline
 
 QUALITATIVE_WEIGHT = 1000.0
 """The objective is ``QUALITATIVE_WEIGHT * qualitative + quantitative``: one qualitative cost step (0.25, a region)
@@ -170,8 +170,8 @@ def _miss(problem: Problem, result: RolloutResult, only_demonstrated: Sequence[s
 
 def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated: Sequence[str]) -> float:
     """For each demonstrated contact (of ``only_demonstrated`` event ids) the simulation does not reproduce: the
-    closest the contact's first body came to the demonstrated contact point in any simulated movement (the canvas
-    diagonal of 1600 x 1000 if it never moved), summed."""
+    closest the contact's mover (`mover`) came to the demonstrated contact point in any simulated movement (the
+    canvas diagonal of 1600 x 1000 if it never moved), summed."""
     paths: dict[str, list[tuple[float, float]]] = {}
     for ev in simulated.events:
         if ev.type == "movement" and ev.components and ev.trajectory:
@@ -181,13 +181,26 @@ def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated
         ev = demonstrated.event(event_id)
         if ev.type != "contact" or ev.point is None or not ev.components:
             continue
-        points = paths.get(ev.components[0])
+        points = paths.get(mover(demonstrated, ev))
         if not points:
             total += NEVER_MOVED
             continue
         xy = np.asarray(points)
         total += float(np.sqrt(((xy - np.asarray(ev.point)) ** 2).sum(axis=1)).min())
     return total
+
+
+def mover(timeline: Timeline, contact: Event) -> str:
+    """The body of ``contact`` that brought it about: of the movements causing it, the one moving fastest in its
+    last frame (a peg sprung into a cup that sinks on its platform), else the contact's first body."""
+    fastest, body = -1.0, contact.components[0]
+    for cause in contact.causes:
+        ev = timeline.event(cause)
+        if ev.type == "movement" and ev.trajectory and ev.components and ev.components[0] in contact.components:
+            last = ev.trajectory[-1]
+            if math.hypot(last.vx, last.vy) > fastest:
+                fastest, body = math.hypot(last.vx, last.vy), ev.components[0]
+    return body
 
 
 def evaluate(scene: Scene, timeline: Timeline, canvas: tuple[float, float], parameters: Parameters,

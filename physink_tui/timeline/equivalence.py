@@ -22,10 +22,10 @@ The qualitative distance adds up a cost (the ``*_COST`` constants) for each unma
 matched contact that differs (not the own side of a body landing inside a container in both), each region of a
 matched movement passed in one timeline only while the other passes the opposite one, and each cause edge between
 matched events present in one timeline only. With ``simulation=True`` (B simulates the demonstration A), B's
-unmatched events after its last matched one and its bounces coming to rest are left out (`compare`). The
-quantitative distance is the mean, over matched movements and contacts, of the mean distance between the two
-trajectories resampled at the same fractions of their durations (speed does not count) and of the distance between
-the two contact points, in canvas units.
+unmatched events after its last matched one and its bounces coming to rest are left out (`compare`), and such a
+bounce splits no movement of the bodies in it. The quantitative distance is the mean, over matched movements and
+contacts, of the mean distance between the two trajectories resampled at the same fractions of their durations
+(speed does not count) and of the distance between the two contact points, in canvas units.
 
 >>> a = Timeline((Event("e1", "start"), Event("e2", "movement", ("b1",), ("e1",), 0.0, 1.0)))
 >>> compare(a, a).equivalent
@@ -42,7 +42,7 @@ import numpy as np
 
 from physink_tui.timeline.events import REGIONS, Event, Timeline, event_label
 from physink_tui.timeline.prepared import SAMPLES, Geometry, Prepared, prepare
-from physink_tui.timeline.resting import coming_to_rest
+from physink_tui.timeline.resting import coming_to_rest, continued
 
 __all__ = ["CAUSE_COST", "REGION_COST", "SAMPLES", "SIDE_COST", "UNMATCHED_EVENT_COST", "Comparison",
            "PrefixDistance", "Prepared", "compare", "compare_prefixes", "compare_prepared", "prepare"]
@@ -219,8 +219,10 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
         to_b[ia], to_a[ib] = ib, ia
     only_a = [i for i in (*pa.starts, *pa.others) if to_b[i] < 0]
     only_b = [j for j in (*pb.starts, *pb.others) if to_a[j] < 0]
+    goes_on: dict[int, int] = {}  # B's movements split off by a bounce coming to rest -> the one they go on with
     if simulation and only_b:
         resting = coming_to_rest(pa, pb, to_b, only_b)
+        goes_on = continued(pb, resting)
         until = max((ev_b[ib].t0 for _, ib in pairs if ev_b[ib].type != "start"), default=-1.0)
         only_b = [j for j in only_b if j not in resting and _before(ev_b[j], until)]
     ledger = _Ledger([(i, UNMATCHED_EVENT_COST) for i in only_a],
@@ -240,6 +242,8 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
             if cost:
                 ledger.a_costs.append((ia, cost))
         ca, cb = pa.causes[ia], pb.causes[ib]
+        if goes_on:
+            cb = tuple(dict.fromkeys(goes_on.get(c, c) for c in cb))
         if len(ca) == 1 and len(cb) == 1 and to_b[ca[0]] == cb[0]:
             pass  # the usual case, one cause each and they match: no sets to build
         elif (mapped := {to_b[c] for c in ca if to_b[c] >= 0}) != (own := {c for c in cb if to_a[c] >= 0}):
@@ -337,7 +341,9 @@ def compare(a: Timeline, b: Timeline, names_a: Mapping[str, str] | None = None,
         simulation: ``b`` simulates the demonstration ``a``: the comparison covers the demonstrated behaviour, so
             what B does after its last event matched with A (the demonstration has played out) is no difference,
             and neither are the bounces of a body coming to rest where it landed once its own demonstrated
-            behaviour has ended (`resting.coming_to_rest`); a bounce more before that still counts (figure 2-12).
+            behaviour has ended (`resting.coming_to_rest`), nor do they split the movements of the bodies in them
+            (`resting.continued`: the cup a ball rattles in moves on); a bounce more before that still counts
+            (figure 2-12).
 
     The qualitative distance is symmetric unless ``simulation``: ``compare(a, b)`` and ``compare(b, a)`` give the
     same distances.

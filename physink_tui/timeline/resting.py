@@ -43,5 +43,23 @@ def coming_to_rest(pa: Prepared, pb: Prepared, to_b: list[int], only_b: list[int
     return excused
 
 
+def continued(pb: Prepared, excused: set[int]) -> dict[int, int]:
+    """For each excused movement of B (`coming_to_rest`), the movement it goes on with: the bounces of a body coming
+    to rest are one contact with its landing, so they split no movement of the bodies in them (the cup a ball
+    rattles in moves on as one movement). The movement of the same body that caused the excused event it follows,
+    itself followed back while excused; movements with no such predecessor are left out."""
+    out: dict[int, int] = {}
+    events = pb.timeline.events
+    for j in sorted(excused, key=lambda j: (events[j].t0, j)):
+        ev = events[j]
+        if ev.type != "movement" or not ev.components:
+            continue
+        before = [c for bounce in pb.causes[j] for c in pb.causes[bounce]
+                  if events[c].type == "movement" and events[c].components[:1] == ev.components[:1]]
+        if before:
+            out[j] = out.get(before[0], before[0])
+    return out
+
+
 def names_of(ev: Event, names: Mapping[str, str]) -> frozenset[str]:
     return frozenset(names.get(c) or c for c in ev.components)

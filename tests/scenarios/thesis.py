@@ -385,7 +385,16 @@ def cup_dispenser() -> Scenario:
              Stroke(((0.12, 0.07), (0.14, 0.14), (0.38, 0.275), (0.46, 0.30), (0.58, 0.395), (0.58, 0.47)))),
         Step("the peg, released, pushes the cup off the platform", Stroke(((0.43, 0.54), (0.62, 0.53)))),
     )
-    return Scenario("cup_dispenser", "thesis 4.3, figures 4-6 to 4-8", steps, expect, seed=2403, demo=demo)
+    return Scenario("cup_dispenser", "thesis 4.3, figures 4-6 to 4-8", steps, expect, seed=2403, demo=demo,
+                    settle_s=CUP_SETTLE_S)
+
+
+CUP_SETTLE_S = 0.2
+"""The cup dispenser's demonstration ends as the pen leaves the peg, with the cup pushed off (figure 4-8, right).
+Demo mode's peg-spring has its drawn natural length, so the let-go peg, dragged 200 units right, springs back past
+the platform's left end and knocks the platform's side: a recoil the pen's drag paid for. The machine the thesis
+simulates has a longer natural length (4.3), so its peg, which starts at rest against the platform, can never come
+back past where it started (its spring gives back no more than it held): no simulation reproduces that recoil."""
 
 
 def pinball() -> Scenario:

@@ -101,6 +101,22 @@ class ContactListener:
             self._touching.pop(pair, None)
 
 
+def touching_record(step: int, a: pymunk.Body, b: pymunk.Body, a_id: str, b_id: str) -> ContactRecord | None:
+    """The contact between bodies ``a`` and ``b`` touching now, as a record of one begun in ``step`` (a contact
+    point on ``a``'s surface, the normal from ``a`` towards ``b``); None when no contact joins them."""
+    arbiters: list[pymunk.Arbiter] = []
+    a.each_arbiter(arbiters.append)
+    for arbiter in arbiters:
+        sa, sb = arbiter.shapes
+        points = arbiter.contact_point_set
+        if b in (sa.body, sb.body) and points.points:
+            first = sa.body is a  # Chipmunk gives a body's own shape first; checked all the same
+            at = points.points[0].point_a if first else points.points[0].point_b
+            n = points.normal if first else -points.normal
+            return ContactRecord(step, a_id, b_id, (at.x, at.y), (n.x, n.y))
+    return None
+
+
 def set_friction(arbiter: pymunk.Arbiter, space: pymunk.Space, friction: float) -> None:
     """Pre-solve callback for one pair of surfaces (``friction`` is its mean): Chipmunk sets the product each step."""
     arbiter.friction = friction

@@ -175,22 +175,30 @@ class World:
         return WorldState(self._steps, {cid: self.motion(cid) for cid in self._by_z}, self.gravity, links)
 
     @classmethod
-    def from_state(cls, scene: Scene, state: WorldState, *, dt: float = DT) -> World:
+    def from_state(cls, scene: Scene, state: WorldState, *, dt: float = DT, warm: int = 0) -> World:
         """A world of ``scene`` with its bodies where ``state`` has them, moving as they moved, and its step count:
-        a search forks any number of worlds from one state. Contact caches and drags are not part of a state, so a
-        forked world agrees with the original to the solver's warm start, not bit for bit."""
+        a search forks any number of worlds from one state. Contact caches and drags are not part of a state: with
+        ``warm`` > 0, that many steps, each undone, give resting bodies' contacts the impulses that hold them (kept
+        while asleep: `hold_until_touched`), as in the world the state was taken from; their contacts are not told."""
         world = cls.from_scene(scene, gravity=state.gravity, dt=dt)
+        world._restore(state)
+        for _ in range(warm):
+            world._space.step(dt)
+            world._restore(state)
+        world._listener.take()
+        return world
+
+    def _restore(self, state: WorldState) -> None:
         for cid, motion in state.bodies.items():
-            if cid in world._built.bodies:
-                world.place(cid, motion.pose, motion.velocity)
+            if cid in self._built.bodies:
+                self.place(cid, motion.pose, motion.velocity)
         for rope, motions in state.links.items():
-            for link, m in zip(world._built.links.get(rope, ()), motions, strict=False):
+            for link, m in zip(self._built.links.get(rope, ()), motions, strict=False):
                 link.position, link.angle = (m.x, m.y), m.angle
                 link.velocity, link.angular_velocity = (m.vx, m.vy), m.w
-                world._space.reindex_shapes_for_body(link)
-        world._steps = state.step
-        world._listener.step = state.step
-        return world
+                self._space.reindex_shapes_for_body(link)
+        self._steps = state.step
+        self._listener.step = state.step
 
     def set_velocity(self, body_id: str, velocity: Point, angular_velocity: float = 0.0) -> None:
         """Gives a dynamic body a velocity (of its centre of mass) and an angular velocity."""
@@ -268,10 +276,9 @@ class World:
         woke it is solved as between two moving bodies (Chipmunk's sleeping). A simulation holds this way what
         its drawing does not hold by itself. ``together`` names pairs of bodies (touching ones, say) that sleep in
         one group too: a cup on a platform and the peg that holds the platform wake as one, so the peg's spring
-        pushes it on when the platform drops away.
-
-        See `sleeping.sleep_groups`.
-        """
+        pushes it on when the platform drops away. A group keeps its contacts asleep: in a world forked ``warm``
+        (`from_state`) none begins again as it wakes, and a spring pressing a body against another does not jolt
+        it for a step before the contact pushes back (`sleeping.sleep_groups`)."""
         keep = {self._get(body_id) for body_id in awake}
         pairs = [tuple(self._get(b) for b in sorted(pair)) for pair in together if len(pair) == 2]
         sleep_groups(self._space, self._dynamic_bodies(), keep, pairs)
