@@ -71,3 +71,11 @@ def test_quick_run_replaces_the_marked_section(bench, tmp_path: Path, capsys: py
     assert [row.split(" | ")[0].removeprefix("| ") for row in rows] == list(bench.QUICK_SCENES)
     assert "World step vs raw pymunk:" in inside and "--quick --write" in inside
     assert inside.strip() in capsys.readouterr().out
+
+
+def test_to_an_equivalent_counts_each_search_to_its_first_equivalent_simulation(bench) -> None:
+    assert bench.to_equivalent(186, 193, False, 117) == (186 / 117, "1.59 (186 / 117)")
+    value, text = bench.to_equivalent(None, 1226, True, 100)
+    assert value == 12.26 and text.startswith("> 12.3") and "all 1226" in text  # a bound: the grid never got there
+    assert bench.to_equivalent(36, 49, False, None) == (None, "grid only (36)")
+    assert bench.to_equivalent(None, 400, False, None) == (None, "—")
