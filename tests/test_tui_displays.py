@@ -11,9 +11,8 @@ from physink_tui.errors import PhysinkError
 from physink_tui.tui import displays
 from physink_tui.tui.config import Config, load_config, save_config
 from physink_tui.tui.displays import Monitor, Rect
-from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.widgets.scene_view import SceneView
-from tests.tui_helpers import SIZE, tui_app, until
+from tests.tui_helpers import SIZE, open_settings, tui_app
 
 XRANDR = """Monitors: 2
  0: +*eDP-1 1920/344x1080/193+0+0  eDP-1
@@ -71,11 +70,7 @@ def test_the_settings_screen_fits_the_area_to_the_canvas_on_the_chosen_monitor(t
     async def go() -> None:
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
-            await until(pilot, lambda v: True)
-            await pilot.press("f2")
-            await pilot.pause(0.2)
-            screen = app.screen
-            assert isinstance(screen, SettingsScreen)
+            screen = await open_settings(pilot)
             await pilot.click("#fit-area")
             assert "choose the monitor" in str(screen.query_one("#settings-error").render())
             screen.query_one("#display").value = "DP-2"

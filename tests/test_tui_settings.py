@@ -10,9 +10,8 @@ import pytest
 
 from physink_tui.errors import PhysinkError
 from physink_tui.tui.config import Config, config_path, load_config, save_config
-from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.widgets.scene_view import SceneView
-from tests.tui_helpers import SIZE, tui_app, until
+from tests.tui_helpers import SIZE, open_settings, tui_app, until
 
 
 def test_the_settings_file_round_trips_and_names_a_bad_setting(tmp_path, monkeypatch) -> None:
@@ -40,11 +39,7 @@ def test_the_settings_screen_saves_applies_the_theme_and_refuses_bad_values(tmp_
     async def go() -> None:
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
-            await until(pilot, lambda v: True)
-            await pilot.press("f2")
-            await pilot.pause(0.2)
-            screen = app.screen
-            assert isinstance(screen, SettingsScreen)
+            screen = await open_settings(pilot)
             screen.query_one("#tip-down").value = "0.01"
             screen.query_one("#tip-up").value = "0.02"
             await pilot.click("#save")

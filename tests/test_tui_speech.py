@@ -19,9 +19,14 @@ from tests.tui_helpers import SIZE, box_points, cells_of, draw, tui_app, until
 SPEECH = Path(__file__).parent / "speech"
 
 
+def in_a_quiet_room(fixture: str, seed: int) -> np.ndarray:
+    """A recorded command with half a second of room noise before and after it."""
+    gap = np.random.default_rng(seed).normal(0, 8, RATE // 2).astype(np.int16)
+    return np.concatenate([gap, read_wav(SPEECH / fixture), gap])
+
+
 def test_saying_label_ball_after_drawing_a_box_labels_it(tmp_path) -> None:
-    gap = np.random.default_rng(5).normal(0, 8, RATE // 2).astype(np.int16)
-    recording = np.concatenate([gap, read_wav(SPEECH / "cmd00_0.wav"), gap])  # "label ball"
+    recording = in_a_quiet_room("cmd00_0.wav", 5)  # "label ball"
 
     async def go() -> None:
         app = tui_app(tmp_path, microphone=lambda deliver: FakeStream(recording, deliver))
@@ -43,8 +48,7 @@ def test_saying_label_ball_after_drawing_a_box_labels_it(tmp_path) -> None:
 
 
 def test_holding_the_barrel_button_listens_until_it_is_released(tmp_path) -> None:
-    gap = np.random.default_rng(6).normal(0, 8, RATE // 2).astype(np.int16)
-    recording = np.concatenate([gap, read_wav(SPEECH / "cmd02_0.wav"), gap])  # "label basket"
+    recording = in_a_quiet_room("cmd02_0.wav", 6)  # "label basket"
 
     async def go() -> None:
         app = tui_app(tmp_path, microphone=lambda deliver: FakeStream(recording, deliver))

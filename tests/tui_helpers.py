@@ -11,6 +11,7 @@ from pathlib import Path
 
 from physink_tui.session.view import SessionView
 from physink_tui.tui.app import PhysinkApp, TuiOptions, make_app
+from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.widgets.scene_view import SceneView
 
 SIZE = (120, 40)
@@ -40,6 +41,16 @@ async def until(pilot, predicate: Callable[[SessionView], bool], timeout: float 
                                  f"components={list(view.scene.components) if view else None} "
                                  f"messages={[m.text for m in view.messages] if view else None}")
         await pilot.pause(0.05)
+
+
+async def open_settings(pilot) -> SettingsScreen:
+    """Press F2 once the session is up and return the settings screen it opens."""
+    await until(pilot, lambda v: True)
+    await pilot.press("f2")
+    await pilot.pause(0.2)
+    screen = pilot.app.screen
+    assert isinstance(screen, SettingsScreen), screen
+    return screen
 
 
 def cell(app: PhysinkApp, x: float, y: float) -> tuple[int, int]:

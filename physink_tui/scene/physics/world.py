@@ -194,9 +194,7 @@ class World:
                 self.place(cid, motion.pose, motion.velocity)
         for rope, motions in state.links.items():
             for link, m in zip(self._built.links.get(rope, ()), motions, strict=False):
-                link.position, link.angle = (m.x, m.y), m.angle
-                link.velocity, link.angular_velocity = (m.vx, m.vy), m.w
-                self._space.reindex_shapes_for_body(link)
+                _put(self._space, link, m.pose, m.velocity)
         self._steps = state.step
         self._listener.step = state.step
 
@@ -256,11 +254,8 @@ class World:
     def place(self, body_id: str, pose: Pose, velocity: Velocity = REST) -> None:
         """Puts a body that is not fixed at ``pose`` (x, y, angle) with ``velocity`` (vx, vy, angular)."""
         body = self._get(body_id)
-        if body.body_type == pymunk.Body.STATIC:
-            return  # fixed bodies stay where they are
-        body.position, body.angle = pose[:2], pose[2]
-        body.velocity, body.angular_velocity = velocity[:2], velocity[2]
-        self._space.reindex_shapes_for_body(body)
+        if body.body_type != pymunk.Body.STATIC:  # fixed bodies stay where they are
+            _put(self._space, body, pose, velocity)
 
     def limit_speeds(self) -> None:
         """No tunnelling: every body that can move (not the rope links) gets `speed.limit_speed`."""
@@ -402,3 +397,9 @@ class World:
 def _motion(body: pymunk.Body) -> Motion:
     v = body.velocity
     return Motion(body.position.x, body.position.y, body.angle, v.x, v.y, body.angular_velocity)
+
+
+def _put(space: pymunk.Space, body: pymunk.Body, pose: Pose, velocity: Velocity) -> None:
+    body.position, body.angle = pose[:2], pose[2]
+    body.velocity, body.angular_velocity = velocity[:2], velocity[2]
+    space.reindex_shapes_for_body(body)
