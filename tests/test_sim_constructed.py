@@ -15,9 +15,12 @@ from physink_tui.sim.evaluate import evaluate, rollout_seconds
 from physink_tui.sim_run.executors import SerialExecutor
 from physink_tui.timeline.events import event_label
 
-POSSIBLE = (0, 3, 6, 16, 17)
-"""From the tuning range (0-999): two and three platform contacts, the hurried hand with one and two."""
-IMPOSSIBLE = (0, 2, 3)
+POSSIBLE = (3, 16, 17)
+"""From the tuning range (0-999): three platform contacts (virtual pen), two (the hurried hand), two on one
+platform (virtual pen)."""
+IMPOSSIBLE = (0, 3)
+"""From the tuning range: touching the bottom of a level platform and then its top (0), and its top then its
+bottom (3)."""
 
 
 @pytest.mark.parametrize("seed", POSSIBLE)
@@ -44,3 +47,17 @@ def test_an_impossible_case_is_refused_naming_the_impossible_contact(seed: int) 
     outcome = judge(s, SerialExecutor())
     assert not outcome.found and outcome.qualitative > 0
     assert f'"{event_label(event, names)}" (t={event.t0:.2f} s' in outcome.verdict, outcome.verdict
+
+
+def test_a_slice_searched_on_a_dask_cluster_gives_the_local_outcomes() -> None:
+    import distributed
+
+    from physink_tui.sim_run.dask_executor import DaskExecutor
+
+    cases = (possible(3).session(), impossible(0).session())
+    local = [judge(s, SerialExecutor()) for s in cases]
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                                  silence_logs=40) as cluster, DaskExecutor(cluster=cluster) as executor:
+        remote = [judge(s, executor) for s in cases]
+    assert remote == local
+    assert [o.found for o in local] == [True, False]
