@@ -1,6 +1,6 @@
 """Where a simulation's contacts differ from the drawing's (issue 27): the metric compares contact sides, not
-positions, so an equivalent simulation may meet a surface far from where the pen did ("the ball meets platform a
-at its right corner; you showed its middle"); no search, no I/O.
+positions, so an equivalent simulation may meet a surface far from where the pen did ("the ball meets the platform
+a at its right corner, not at its middle as you showed"); no search, no I/O.
 
 A contact's place on the touched body is read in the body's own frame, along its longer extent (left to right
 for a wide body, top to bottom for a tall one): at a corner (within `CORNER_SHARE` of the body's length of one of
@@ -53,7 +53,7 @@ def _difference(scene: Scene, timeline: Timeline, a: Event, b: Event, names: dic
     if math.dist(a.point, b.point) <= APART_SHARE * length or shown == made:
         return None
     who, what = names.get(moving) or moving, names.get(body.id) or body.id
-    return f"the {who} meets the {what} {made}; you showed {shown.removeprefix('at ')}"
+    return f"the {who} meets the {what} {made}, not {shown} as you showed"
 
 
 def place(body: Body, point: tuple[float, float]) -> tuple[float, str]:
