@@ -1,7 +1,7 @@
 """Benchmark: SIMULATE on machines made by construction (tests/constructed, issue 27), possible and impossible.
 
 Usage: .venv/bin/python benchmarks/bench_constructed.py [--possible 5000-5199] [--impossible 5000-5049]
-       [--budget 200] [--seed 0] [--workers 2] [--grid 0] [--grid-budget 3000] [--needle]
+       [--levers 5000-5019] [--budget 200] [--seed 0] [--workers 2] [--grid 0] [--grid-budget 3000] [--needle]
        [--dask 0] [--rows FILE.jsonl] [--write docs/BENCHMARKS.md]
 
 Each case is generated (drawn and demonstrated by its pen, its witness re-checked for a possible case; not timed),
@@ -9,7 +9,8 @@ then searched as ``physink simulate`` does (`constructed.judge`: the default sea
 ``--budget`` on ``--workers`` local processes, the pool started once and shared; the verdict as the command words
 it). Per case: found (qualitative 0) or not, the rollout it was found at, rollouts run, wall seconds of the search
 and its verdict; an impossible case counts as refused with its impossibility named when the verdict names the
-contact its construction made impossible (its label and demonstrated time).
+contact its construction made impossible (its label and demonstrated time). ``--levers`` adds lever machines
+(`constructed.levers`: the ball tips a pivoted lever on its way into the basket), searched the same way.
 
 Needle-ness (``--needle``, possible cases; costly, never in CI): the share of a coarse scan of the ball's launch
 velocity, `SCAN` x `SCAN` throws over vx `SCAN_VX` and vy `SCAN_VY` (canvas units/s), that is equivalent to the
@@ -44,6 +45,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
 
 from constructed.impossible import impossible
 from constructed.judge import Outcome, judge
+from constructed.levers import lever
 from constructed.possible import possible
 
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
@@ -93,7 +95,9 @@ def run_case(case, kind: str, executor: Executor, args) -> tuple[Row, Outcome]:
     wall = time.perf_counter() - start
     row = Row(case.name, kind, case.pen, len(case.layout.platforms), outcome.found, outcome.found_at,
               outcome.rollouts, outcome.qualitative, round(wall, 3), outcome.verdict)
-    if kind == "impossible":
+    if kind == "lever":
+        row.contacts = None
+    elif kind == "impossible":
         event = case.impossible_event()
         label = f'"{event_label(event, s.scene.names())}" (t={event.t0:.2f} s'
         row.named = not outcome.found and label in outcome.verdict
@@ -134,6 +138,7 @@ def percentile(values: list[float], q: float) -> float:
 def summary(rows: list[Row], args, command: str) -> str:
     poss = [r for r in rows if r.kind == "possible"]
     imp = [r for r in rows if r.kind == "impossible"]
+    levers = [r for r in rows if r.kind == "lever"]
     lines = [f"Measured {datetime.now(UTC):%Y-%m-%d %H:%M} UTC: `{command}`; {os.cpu_count()} cpus, "
              f"{args.workers} workers, CPython {platform.python_version()}; load average at the start "
              f"{args.load:.1f}.", ""]
@@ -190,6 +195,14 @@ def summary(rows: list[Row], args, command: str) -> str:
         other = [r for r in imp if not r.named]
         if other:
             lines.append("Naming another event: " + "; ".join(f"{r.name} ({r.verdict[:160]})" for r in other) + ".")
+    if levers:
+        walls = [r.wall for r in levers]
+        got = [r.found_at for r in levers if r.found_at is not None]
+        lines.append("")
+        lines.append(f"Lever machines {args.levers}: {len(levers)}; found {sum(r.found for r in levers)}; rollouts to "
+                     f"an equivalent median {statistics.median(got) if got else '—'}, 90th pct "
+                     f"{percentile(got, 0.9) if got else '—'}; wall median {statistics.median(walls):.2f} s, 90th "
+                     f"pct {percentile(walls, 0.9):.2f} s.")
     if args.dask_line:
         lines.append("")
         lines.append(args.dask_line)
@@ -227,6 +240,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--possible", default="5000-5199")
     parser.add_argument("--impossible", default="5000-5049")
+    parser.add_argument("--levers", default="")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET)
     parser.add_argument("--seed", type=int, default=DEFAULT_SEED)
     parser.add_argument("--workers", type=int, default=2)
@@ -245,7 +259,8 @@ def main(argv: list[str] | None = None) -> int:
     out = open(args.rows, "w", encoding="utf-8") if args.rows else None
     try:
         for kind, make, span in (("possible", possible, seeds(args.possible)),
-                                 ("impossible", impossible, seeds(args.impossible))):
+                                 ("impossible", impossible, seeds(args.impossible)),
+                                 ("lever", lever, seeds(args.levers))):
             for k, seed in enumerate(span):
                 case = make(seed)
                 row, _ = run_case(case, kind, executor, args)

@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 from constructed.impossible import impossible
 from constructed.judge import judge
+from constructed.levers import lever
 from constructed.possible import possible
 
 from physink_tui.sim.defaults import DEFAULT_BUDGET
@@ -35,6 +36,19 @@ def test_a_possible_case_is_witnessed_and_found(seed: int) -> None:
     assert shown == list(case.platform_contacts), "the pen demonstrated the witness's platform contacts"
     outcome = judge(s, SerialExecutor())
     assert outcome.found and outcome.rollouts <= DEFAULT_BUDGET, outcome.verdict
+
+
+def test_a_lever_machine_is_witnessed_and_found() -> None:
+    case = lever(3)  # the tuning range's: the ball tips the lever and drops into the basket
+    s = case.session()
+    names = s.scene.names()
+    bar = next(b.id for b in s.scene.bodies() if names[b.id] == "lever")
+    assert not s.scene.is_fixed(bar)
+    assert any(ev.type == "movement" and ev.components[0] == bar for ev in s.timeline.events), "the lever turns"
+    score = evaluate(s.scene, s.timeline, s.canvas, case.witness_parameters(), rollout_seconds(s.timeline))
+    assert score.qualitative == 0 and not score.exploded
+    outcome = judge(s, SerialExecutor())
+    assert outcome.found, outcome.verdict
 
 
 @pytest.mark.parametrize("seed", IMPOSSIBLE)
