@@ -15,6 +15,7 @@ from physink_tui.formats.project.codec import decode_project_object, project_voc
 from physink_tui.scene.components import Scene
 from physink_tui.session import labelling, simulation
 from physink_tui.session.history import Document
+from physink_tui.session.modes.base import ModeName
 from physink_tui.session.modes.demo import DemoMode
 
 PLAYBACK = ("play", "pause", "stop", "seek")
@@ -49,14 +50,14 @@ class SessionCommands:
 
     def _switch(self, mode: str, t: float) -> None:
         """``mode sketch`` or ``mode demo``: what the current mode was doing is committed first."""
-        if mode not in ("sketch", "demo"):
+        if mode not in (ModeName.SKETCH, ModeName.DEMO):
             self.tell(f"mode {mode}: the modes are sketch and demo")
             return
-        if mode == "demo" and isinstance(self.current, DemoMode):
+        if mode == ModeName.DEMO and isinstance(self.current, DemoMode):
             return
         self.current.close(t)
         self.sketch.close(t)
-        self.current = DemoMode(self, t) if mode == "demo" else self.sketch
+        self.current = DemoMode(self, t) if mode == ModeName.DEMO else self.sketch
 
     @contextmanager
     def _closed(self, t: float) -> Iterator[None]:

@@ -41,7 +41,7 @@ from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session import labelling, simulation
 from physink_tui.session.command_handling import SessionCommands
 from physink_tui.session.history import Document, History
-from physink_tui.session.modes.base import Mode
+from physink_tui.session.modes.base import Mode, ModeName
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import SketchMode
 from physink_tui.session.simulation import SearchResult
@@ -132,8 +132,8 @@ class Session(SessionCommands):
         return vocabulary_lines(self.words)
 
     @property
-    def mode(self) -> str:
-        """``sketch``, ``adjust`` or ``demo``."""
+    def mode(self) -> ModeName:
+        """The mode the session is in."""
         return self.current.name
 
     @property

@@ -11,7 +11,7 @@ from physink_tui.input.pen.gestures import StrokePoint
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
 from physink_tui.session.history import History
-from physink_tui.session.modes.base import Mode
+from physink_tui.session.modes.base import Mode, ModeName
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import PendingStroke
 from physink_tui.session.simulation import SearchResult
@@ -35,7 +35,7 @@ class SessionView:
     Attributes:
         revision: grows whenever the session changed (a view drawn at the same revision is up to date).
         t: the input time reached (seconds since the session start).
-        mode: ``sketch``, ``adjust`` or ``demo``.
+        mode: the mode the session is in.
         scene: the document's scene.
         poses: where each body is shown now (the mode's world: moved while adjusting or demonstrating).
         ink: strokes being drawn now, canvas units, one per pen down.
@@ -55,7 +55,7 @@ class SessionView:
 
     revision: int
     t: float
-    mode: str
+    mode: ModeName
     scene: Scene
     poses: Mapping[str, Pose]
     ink: tuple[Stroke, ...]

@@ -155,6 +155,12 @@ def body_shapes(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
     raise SceneError(f"body {spec.id!r} has shape {spec.shape!r}; expected box, circle, ellipse, polygon or polyline")
 
 
+def body_area(spec: Body) -> float:
+    """The area of a body's collision shapes (canvas units²): its mass at density 1.0. A polyline's thin segments
+    count with their rounded thickness."""
+    return float(sum(shape.area for shape in body_shapes(pymunk.Body(), spec)))
+
+
 def _need_area(spec: Body) -> shapely.Polygon:
     if len(spec.outline) < 3:
         raise SceneError(f"{spec.shape} {spec.id!r} has {len(spec.outline)} outline points; expected at least 3")

@@ -22,7 +22,7 @@ from physink_tui.scene.recognition.primitives import Recognition
 from physink_tui.scene.recognition.recognize import recognize_stroke
 from physink_tui.session.history import Document
 from physink_tui.session.modes.adjust import AdjustMode
-from physink_tui.session.modes.base import Host, Mode
+from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.events import Timeline
 
 X_CANDIDATE = 0.08
@@ -51,7 +51,7 @@ class PendingStroke:
 class SketchMode:
     """Strokes, taps, the eraser and dwells while sketching."""
 
-    name = "sketch"
+    name = ModeName.SKETCH
     finished = False
 
     def __init__(self, host: Host) -> None:
