@@ -1,5 +1,5 @@
 """The main screen: scene, timeline tree, narration, buttons and status; turns keys, buttons, the mouse and the
-tablet into journal entries for the live session; the blocking work (SIMULATE, export) is `background`'s.
+tablet into journal entries for the live session; the blocking work (SIMULATE, export) is its `BackgroundWork`'s.
 
 It keeps no state of the machine: what it shows comes from the latest `SessionView`, what it does goes to the
 session as an entry, so the session's journal rebuilds everything. The project path, the recording status and
@@ -20,6 +20,7 @@ from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.message import Message
+from textual.screen import Screen
 from textual.widgets import Static
 
 from physink_tui.errors import PhysinkError
@@ -32,7 +33,7 @@ from physink_tui.timeline.narrate import timeline_text
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
-from physink_tui.tui.screens.background import BackgroundWork
+from physink_tui.tui.screens.background import BackgroundWork, SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
@@ -63,7 +64,7 @@ class SpeechStatus(Message):
     text: str
 
 
-class MainScreen(BackgroundWork):
+class MainScreen(Screen[None]):
     """The control panel."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
@@ -104,6 +105,8 @@ class MainScreen(BackgroundWork):
         self._simulate_after = False  # SIMULATE once the replay is done
         self.talk: PushToTalk | None = None
         self._barrel = False
+        self.background = BackgroundWork(self, self)
+        """SIMULATE and export, in worker threads."""
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
@@ -168,7 +171,7 @@ class MainScreen(BackgroundWork):
         if barrel_held(view.pens) != self._barrel and self.talk is not None:
             self._barrel = self.talk.button_pressed = not self._barrel  # holding the barrel button: push-to-talk
             self._follow_button(self._labels(view))
-        self.simulated(view, status)
+        self.background.simulated(view, status)
         status.show(view)
 
     def on_device_status(self, message: DeviceStatus) -> None:
@@ -182,8 +185,17 @@ class MainScreen(BackgroundWork):
 
     def _simulate_replayed(self) -> None:
         self.action_simulate()
-        if self.job is not None:
+        if self.background.job is not None:
             self.query_one(StatusBar).set(activity="replay done: you are in control; simulating (escape stops it)")
+
+    def on_search_progressed(self, message: SearchProgressed) -> None:
+        self.background.progressed(message)
+
+    def on_search_finished(self, message: SearchFinished) -> None:
+        self.background.finished(message)
+
+    def on_search_bar_cancel(self, message: SearchBar.Cancel) -> None:
+        self.background.cancel()
 
     def on_speech_status(self, message: SpeechStatus) -> None:
         self.query_one(StatusBar).set(speech=message.text)
@@ -313,6 +325,22 @@ class MainScreen(BackgroundWork):
         if not search.found:
             self.notify("adopted the best simulation found, which is not equivalent to the demonstration "
                         "(undo with u)", severity="warning")
+
+    def action_simulate(self) -> None:
+        self.background.simulate()
+
+    def action_export(self) -> None:
+        self.background.export()
+
+    def action_cancel(self) -> None:
+        self.background.cancel()
+
+    def stop_workers(self) -> None:
+        """Quitting: the search and the export stop, and nothing they did reaches the session."""
+        self.background.stop()
+
+    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
+        return self.live.command(name, *args, project=project) if self.live is not None else None
 
     def action_help(self) -> None:
         self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),
