@@ -172,8 +172,6 @@ def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -
 def _other_kind(text: str) -> str:
     """What a file that is no JSON document is, when it is one of this program's other files (else "")."""
     body = text.strip()
-    if not body:
-        return "empty file"
     first = body.split("\n", 1)[0].strip()
     if first.startswith(("#", "R:", "N:", "I:", "P:", "D:", "E:")):
         return "this is a capture (.hid)"
