@@ -3,8 +3,8 @@
 the signals.
 
 ``--replay CAPTURE.hid [--speed X]`` feeds a capture through the same path as a live tablet, paced by its
-timestamps X times faster; the sessions' input time is the capture's own (the runner's clock runs X times
-faster too), so a session replayed at any speed journals what the tablet sent when it sent it.
+timestamps X times faster; the sessions' time is the capture's own (the kiosk's clock is the time of the
+capture's latest report), so a replay at any speed records the same sessions, byte for byte.
 """
 
 from __future__ import annotations
@@ -13,7 +13,6 @@ import argparse
 import signal
 import sys
 import threading
-import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, TypeVar
 
@@ -140,15 +139,12 @@ def run(args: argparse.Namespace) -> int:
         return 2
     kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
-    start = time.monotonic()
-    clock: Callable[[], float] = (  # a replay's input time is the capture's own
-        (lambda: (time.monotonic() - start) * args.speed) if args.replay is not None else time.monotonic)
-    ears = _ears(args, kiosk, clock)
+    ears = _ears(args, kiosk, kiosk.clock)  # a replay's clock is the capture's own (`Kiosk.run`)
     try:
         if args.replay is not None:
             source, device, header = _replay_source(args.replay, args.speed, zones)
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
-            return kiosk.run(source, device, header, replay=True, clock=clock)
+            return kiosk.run(source, device, header, replay=True)
         if args.serial:
             serial_source, mapping, header = _serial_source(args.serial, zones, kiosk)
             return kiosk.run(serial_source, None, header, replay=False, mapping=mapping)
