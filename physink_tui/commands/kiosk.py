@@ -18,9 +18,10 @@ from typing import TYPE_CHECKING, TypeVar
 
 from physink_tui.errors import DeviceError, PhysinkError
 from physink_tui.formats.journal.entries import JournalDevice, JournalHeader
+from physink_tui.formats.outputs import reason
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.hid.decoder import HidPenDecoder
-from physink_tui.input.hid.readers import open_reader
+from physink_tui.input.hid.readers import check_device_spec, open_reader
 from physink_tui.input.journal_compose import header_for_capture
 from physink_tui.input.pen.mapping import TabletMapping, mapping_to_header
 from physink_tui.input.pen.state import TipThresholds
@@ -67,7 +68,10 @@ def mapping_for(device: JournalDevice, zones: HotZones) -> TabletMapping:
 
 
 def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
-    capture = Capture.from_file(path)
+    try:
+        capture = Capture.from_file(path)
+    except OSError as exc:
+        raise PhysinkError(f"{path}: cannot read the capture: {reason(exc)}") from None
     if not capture.devices:
         raise PhysinkError(f"{path}: the capture describes no device")
     first = capture.devices[0]
@@ -125,6 +129,12 @@ def run(args: argparse.Namespace) -> int:
     from physink_tui.kiosk.service import Kiosk, KioskSettings
     from physink_tui.render.export import Look
 
+    if args.replay is None and not args.serial:
+        try:
+            check_device_spec(args.device)
+        except DeviceError as exc:
+            print(f"physink kiosk: {exc}", file=sys.stderr)
+            return 2
     zones = read_zones(args.hot_zones)
     max_bytes = None
     if args.max_disk is not None:

@@ -136,8 +136,9 @@ class Kiosk:
         count = 0
         for folder in self.store.unfinished():
             try:
-                journal = read_journal(folder / JOURNAL)
+                journal = read_journal(folder / JOURNAL, salvage=True)
                 lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
+                lost += f"; {journal.dropped}" if journal.dropped is not None else ""
                 self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
                 summary = finalise_journal(folder, Ending("recovered", folder.name, recovered=True),
                                            self.settings.look)
@@ -350,7 +351,8 @@ class Kiosk:
                          "kiosk next starts)")
                 continue
             self._indexed(folder, json.loads((folder / SUMMARY).read_text(encoding="utf-8")))
-            self.store.retire(self.settings.keep, self.settings.max_bytes, self._current_folder(), self.log)
+            # never the session just written (however small --max-disk is) nor the one being recorded
+            self.store.retire(self.settings.keep, self.settings.max_bytes, (folder, self._current_folder()), self.log)
 
     def _current_folder(self) -> Path | None:
         with self._lock:
