@@ -127,7 +127,7 @@ class Kiosk:
         self._full_disk_told = False
         self._replay = False
         self._capture_t = 0.0  # a replay's clock: the time of the capture's latest report
-        self.started = 0  # sessions started in this run
+        self._touched = False  # a pen touched the drawing area (a session began, or would have with room)
 
     # -- recovery ---------------------------------------------------------------------------------------------------
 
@@ -185,7 +185,7 @@ class Kiosk:
             self._end("stopped" if self._stop.is_set() else "capture ended")
             self._finishing.put(None)
             self._finaliser.join()
-        if replay and not self.started and not self._stop.is_set():
+        if replay and not self._touched and not self._stop.is_set():
             self.log("kiosk: the capture ended without a session: none of its reports is a pen touching the "
                      "tablet's drawing area (nothing was recorded)")
             return 1
@@ -289,6 +289,7 @@ class Kiosk:
             if live is None:
                 if not verdict.touch_began:
                     return  # hovering before any session: nothing to record yet
+                self._touched = True
                 live = self._start()
                 if live is None:
                     return
@@ -325,7 +326,6 @@ class Kiosk:
             folder = self.store.new_folder(started)
             start = self._clock()
             self._live = _Live(folder, self._header, self._clock, start)
-            self.started += 1
         except (OSError, JournalError) as exc:
             self.log(f"kiosk: cannot start a session in {self.store.root}: {exc}")
             return None
