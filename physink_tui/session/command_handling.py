@@ -13,6 +13,7 @@ from physink_tui.errors import SceneError
 from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.formats.json_checks import Place
 from physink_tui.formats.project.codec import decode_project_object, project_vocabulary
+from physink_tui.formats.project.sanity import check_project
 from physink_tui.scene.components import Scene
 from physink_tui.session import labelling, simulation
 from physink_tui.session.history import Document, History
@@ -149,7 +150,8 @@ class Commands:
         if entry.project is None:
             host.tell(f"{where}: the project is not embedded in the input, so nothing was loaded")
             return
-        project = decode_project_object(entry.project, Place(where, SceneError))
+        project = check_project(decode_project_object(entry.project, Place(where, SceneError)),
+                                Place(where, SceneError))
         with self._closed(entry.t):
             host.commit(Document(project.scene, project.timeline), where)
             host.add_words(project_vocabulary(project))

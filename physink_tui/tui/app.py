@@ -134,7 +134,8 @@ class PhysinkApp(App[None]):
             found = storage.unfinished_journals(self.options.journal_dir or storage.sessions_dir())
         if found:
             path, journal = found[0]
-            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n"
+            dropped = "" if journal.dropped is None else f"\nIts journal is damaged: {journal.dropped}.\n"
+            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n{dropped}"
                         "Recover it (replay it here and carry on)?")
 
             def answered(yes: bool | None) -> None:

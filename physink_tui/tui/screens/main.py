@@ -27,6 +27,7 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.formats.project.files import save_project
+from physink_tui.formats.project.sanity import check_project
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
@@ -376,8 +377,8 @@ class MainScreen(Screen[None]):
         try:
             with open(path, "rb") as f:
                 text = f.read().decode("utf-8")
-            decode_project(text, path)
-            obj = json.loads(text)
+            check_project(decode_project(text, path), path)
+            obj = json.loads(text.removeprefix("\ufeff"))
         except (OSError, UnicodeDecodeError) as exc:
             self.app.push_screen(ErrorModal("Cannot load", f"{path}: {exc}"))
             return
