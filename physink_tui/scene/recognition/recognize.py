@@ -23,7 +23,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
-import shapely
 
 from physink_tui.scene.recognition import open_shapes
 from physink_tui.scene.recognition import stroke_features as sf
@@ -290,9 +289,13 @@ def _keeps_the_outline(c: Candidate, raw: np.ndarray, diag: float) -> bool:
     """Whether a box candidate follows the whole drawn outline (other kinds are not judged here)."""
     if c.kind != "box":
         return True
-    ring = shapely.LinearRing(shape_points(c.geometry))
-    far = shapely.distance(ring, shapely.points(raw)) > OUTLINE_FAR * diag
-    return float(np.count_nonzero(far)) <= OUTLINE_LEFT_OUT * len(raw)
+    corners = np.asarray(shape_points(c.geometry), dtype=float)
+    a, b = corners, np.roll(corners, -1, axis=0)
+    ab = b - a
+    rel = raw[:, None, :] - a[None, :, :]  # each point against each side
+    u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
+    gap = np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)).min(axis=1)
+    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(raw)
 
 
 SEARCH_SPAN = 3 * 6.0
