@@ -230,8 +230,8 @@ class Session:
             self.journal.close()
             self.journal = None
 
-    def tell(self, text: str, t: float | None = None) -> None:
-        self.messages.append(Message(self.t if t is None else t, text))
+    def tell(self, text: str, t: float | None = None, kind: str = "note") -> None:
+        self.messages.append(Message(self.t if t is None else t, text, kind))
 
     # -- what modes may do (`modes.base.Host`) ----------------------------------------------------------------
 

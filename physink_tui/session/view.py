@@ -22,10 +22,18 @@ Stroke = tuple[tuple[float, float], ...]
 
 @dataclass(frozen=True, slots=True)
 class Message:
-    """Something the user should be told, at input time ``t``."""
+    """Something the user should be told, at input time ``t``.
+
+    Attributes:
+        t: input time (seconds since the session start).
+        text: what to tell, one line.
+        kind: ``outcome`` for what a stroke or a label made of the sketch ("circle → body b3", "erased box b4 — u
+            to undo"), one per stroke; ``note`` for everything else (repairs, refusals, odd cases).
+    """
 
     t: float
     text: str
+    kind: str = "note"
 
 
 @dataclass(frozen=True, slots=True)
