@@ -105,7 +105,7 @@ class SessionCommands:
             return
         project = decode_project_object(entry.project, Place(where, SceneError))
         with self._closed(entry.t):
-            self.commit(Document(project.scene, project.timeline), where)
+            self.commit(Document(project.scene, project.timeline, project.demonstration), where)
             self.add_words(project_vocabulary(project))
             if tuple(project.canvas) != tuple(self.canvas):
                 self.tell(f"{where}: the project was drawn on a {project.canvas[0]:g} x {project.canvas[1]:g} "

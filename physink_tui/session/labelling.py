@@ -83,7 +83,7 @@ def label(host: LabelHost, target: str, text: str) -> None:
         host.tell(f"label {text!r}: joints take no labels")
         return
     scene = host.scene.update(replace(component, label=text))
-    host.commit(Document(scene, host.document.timeline), f"label {component_id} {text}")
+    host.commit(replace(host.document, scene=scene), f"label {component_id} {text}")
     unsayable = unspeakable_words(text)
     if unsayable:
         host.tell(f"label {text!r}: {', '.join(map(repr, unsayable))} cannot be said (not in the speech "
