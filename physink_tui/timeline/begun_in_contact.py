@@ -21,9 +21,14 @@ end-contact, it is like any other pair (contacts that begin and end during a dem
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 
 from physink_tui.scene.physics.state import Motion
+from physink_tui.timeline.qualitative import BodyOutline, hull_gap
 
+SEPARATION_GAP = 4.0
+"""Canvas units by which two bodies that began in contact must get further apart than they began (drawn a few
+pixels apart, or touching) to have come apart."""
 DRIVE_SHARE = 0.5
 """The least share of the mover's speed that must point from one body towards the other for it to drive into it
 (60 degrees off the line between them at most)."""
@@ -47,3 +52,17 @@ def drives_into(mover: Motion, other: Motion, normal: tuple[float, float] | None
     vx, vy = mover[3], mover[4]
     approach = vx * normal[0] + vy * normal[1]
     return approach > speed and approach >= DRIVE_SHARE * math.hypot(vx, vy)
+
+
+def parted(outlines: Mapping[str, BodyOutline], pair: frozenset[str], poses: Mapping[str, Motion],
+           began: dict[frozenset[str], float]) -> bool:
+    """Whether the two bodies of ``pair`` have come apart: their hulls more than `SEPARATION_GAP` further apart
+    than when first asked (``began`` keeps that gap, by pair). A body not in ``poses`` (fixed) cannot tell."""
+    a, b = sorted(pair)
+    pa, pb = poses.get(a), poses.get(b)
+    if pa is None or pb is None:
+        return False
+    if pair not in began:
+        began[pair] = hull_gap(outlines[a], pa, outlines[b], pb)
+    limit = began[pair] + SEPARATION_GAP
+    return hull_gap(outlines[a], pa, outlines[b], pb, limit) > limit

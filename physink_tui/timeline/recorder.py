@@ -32,20 +32,18 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from physink_tui.scene.physics.contacts import ContactRecord
-from physink_tui.timeline.begun_in_contact import drives_into
+from physink_tui.timeline.begun_in_contact import drives_into, parted
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.movement_record import OpenMovement, Regions
 from physink_tui.timeline.observation import Observation
-from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
+from physink_tui.timeline.qualitative import BodyOutline, contact_sides
 from physink_tui.timeline.touches import Touches, pushed_again
 
 MOVING_SPEED = 5.0
 """Canvas units per second above which a body counts as moving (its centre, or its rim when it spins)."""
 STILL_FRAMES = 12
 """Frames below `MOVING_SPEED` after which a movement ends."""
-SEPARATION_GAP = 4.0
-"""Canvas units between two bodies that began in contact after which they have come apart."""
 RECENT_SEPARATION = 1.0
 """Seconds after two bodies stop touching during which a body starting to move by itself was released by it."""
 
@@ -79,6 +77,7 @@ class Recorder:
     _ended_pairs: set[frozenset[str]] = field(default_factory=set)
     _touching: frozenset[frozenset[str]] = frozenset()
     _separated_at: dict[frozenset[str], float] = field(default_factory=dict)
+    _began_gap: dict[frozenset[str], float] = field(default_factory=dict)
     _start: str | None = None
     _grabbed: str | None = None
     _group: dict[str, str] = field(default_factory=dict)
@@ -359,16 +358,11 @@ class Recorder:
                 self._open_movement(obs.t, body, (cause,))
 
     def _check_initial_pairs(self, obs: Observation) -> None:
-        if not self.initial_pairs:
-            return
         for pair in sorted(self.initial_pairs - self._ended_pairs, key=sorted):
             a, b = sorted(pair)
-            if self._cause_of(a, obs.t, obs) is None and self._cause_of(b, obs.t, obs) is None:
-                continue  # neither moves: they cannot have come apart
-            pa, pb = obs.poses.get(a), obs.poses.get(b)
-            if pa is not None and pb is not None and separated(self.outlines[a], pa, self.outlines[b], pb,
-                                                               SEPARATION_GAP):
-                self._add_end_contact(obs, a, b)
+            moving = self._cause_of(a, obs.t, obs) is not None or self._cause_of(b, obs.t, obs) is not None
+            if (moving or pair not in self._began_gap) and parted(self.outlines, pair, obs.poses, self._began_gap):
+                self._add_end_contact(obs, a, b)  # (neither moving, they cannot have come apart)
 
     # -- movements -------------------------------------------------------------------------------------------
 
