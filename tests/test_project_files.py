@@ -6,6 +6,7 @@ import json
 import math
 import os
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import pytest
@@ -143,6 +144,19 @@ def test_the_timeline_is_typed_and_named_by_the_scene() -> None:
     raw = _raw()
     raw["timeline"]["events"][1]["components"][0]["label"] = "not the scene's name"
     assert decode_project(json.dumps(raw), "p.json") == PROJECT  # names come from the scene's labels
+
+
+def test_an_adopted_simulation_keeps_the_demonstration_it_was_found_for() -> None:
+    simulated = Timeline((Event("e1", "start"), Event("e2", "movement", ("b2",), ("e1",), 0.0, 0.75)))
+    adopted = replace(PROJECT, timeline=simulated, demonstration=_demonstration())
+    text = encode_project(adopted)
+
+    assert decode_project(text, "p.json") == adopted and encode_project(decode_project(text, "p.json")) == text
+    assert json.loads(text)["demonstration"] == json.loads(encode_project(PROJECT))["timeline"]
+    raw = json.loads(text)
+    raw["demonstration"]["events"][1]["causes"] = ["e9"]
+    with pytest.raises(SceneError, match=r"^p\.json: demonstration: event 'e2' names unknown cause 'e9'"):
+        decode_project(json.dumps(raw), "p.json")
 
 
 def test_the_vocabulary_round_trips_as_the_sessions_vocabulary() -> None:

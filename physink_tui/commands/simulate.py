@@ -34,6 +34,7 @@ from physink_tui.sim.verdict import verdict
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
+from physink_tui.timeline.up_to_demonstrated import verdict as verdict_words
 
 EXIT_INTERRUPTED = 130
 
@@ -133,9 +134,11 @@ def run(args: argparse.Namespace) -> int:
                           problem.timeline)  # the project keeps the demonstration the simulation was found for
     folder.write("result.json", json.dumps(obj, indent=2, ensure_ascii=False, allow_nan=False) + "\n")
     state = "found" if found else "not found"
-    sys.stdout.write(f"{state}: qualitative distance {obj['qualitative_distance']}, quantitative "
-                     f"{obj['quantitative_distance']}, {search.rollouts} rollouts ({search.exploded} exploded) in "
-                     f"{wall:.1f} s; wrote {folder.path}\n")
+    sys.stdout.write(f"{state}: qualitative distance {obj['qualitative_distance']} ({verdict_words(comparison)}), "
+                     f"quantitative {obj['quantitative_distance']}, {search.rollouts} rollouts ({search.exploded} "
+                     f"exploded) in {wall:.1f} s; wrote {folder.path}\n")
+    if obj["afterwards"]:
+        sys.stdout.write(f"{obj['afterwards']}\n")
     if interrupted:
         sys.stdout.write("interrupted: wrote the best result so far\n")
         return EXIT_INTERRUPTED

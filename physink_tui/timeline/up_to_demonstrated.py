@@ -61,8 +61,8 @@ def afterwards(comparison: Comparison, simulated: Timeline, names: Mapping[str, 
     touched_before = {frozenset(ev.components) for ev in simulated.events
                       if ev.id in matched and ev.type == "contact"}
 
-    def name(c: str) -> str:
-        return names.get(c) or c
+    def name(c: str) -> str:  # "the ball"; an unlabelled body by its id, "b2"
+        return f"the {names[c]}" if names.get(c) and names[c] != c else c
 
     pairs: dict[tuple[str, str], int] = {}
     for ev in left:
@@ -73,12 +73,12 @@ def afterwards(comparison: Comparison, simulated: Timeline, names: Mapping[str, 
     parts = []
     for (a, b), n in pairs.items():
         if frozenset((a, b)) in touched_before:
-            parts.append(f"the {name(a)} bounces on the {name(b)} {_times(n)} more")
+            parts.append(f"{name(a)} bounces on {name(b)} {_times(n)} more")
         else:
-            parts.append(f"the {name(a)} touches the {name(b)}" + ("" if n == 1 else f" {_times(n)}"))
+            parts.append(f"{name(a)} touches {name(b)}" + ("" if n == 1 else f" {_times(n)}"))
     in_contacts = {c for pair in pairs for c in pair}
     ended = [ev for ev in left if ev.type == "end_contact" and len(ev.components) == 2]
-    parts += [f"the {name(ev.components[0])} comes away from the {name(ev.components[1])}" for ev in ended]
+    parts += [f"{name(ev.components[0])} comes away from {name(ev.components[1])}" for ev in ended]
     movers = dict.fromkeys(ev.components[0] for ev in left if ev.type == "movement" and ev.components)
-    parts += [f"the {name(body)} moves on" for body in movers if body not in in_contacts]
+    parts += [f"{name(body)} moves on" for body in movers if body not in in_contacts]
     return "afterwards the simulation goes on: " + "; ".join(parts)
