@@ -153,7 +153,7 @@ class Commands:
         project = check_project(decode_project_object(entry.project, Place(where, SceneError)),
                                 Place(where, SceneError))
         with self._closed(entry.t):
-            host.commit(Document(project.scene, project.timeline), where)
+            host.commit(Document(project.scene, project.timeline, project.demonstration), where)
             host.add_words(project_vocabulary(project))
             if tuple(project.canvas) != tuple(host.canvas):
                 host.tell(f"{where}: the project was drawn on a {project.canvas[0]:g} x {project.canvas[1]:g} "

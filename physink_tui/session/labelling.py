@@ -86,7 +86,7 @@ def label(host: LabelHost, target: str, text: str) -> None:
         return
     before = host.scene
     scene = before.update(replace(component, label=text))
-    host.commit(Document(scene, host.document.timeline), f"label {component_id} {text}")
+    host.commit(replace(host.document, scene=scene), f"label {component_id} {text}")
     host.tell(labelled(before, component_id, text), kind="outcome")
     unsayable = unspeakable_words(text)
     if unsayable:

@@ -119,6 +119,11 @@ class Session:
         return self.current.timeline()
 
     @property
+    def demonstration(self) -> Timeline | None:
+        """When the timeline is an adopted simulation, the demonstrated timeline it was found for; else None."""
+        return self.document.demonstration
+
+    @property
     def vocabulary(self) -> Vocabulary:
         """The words phrases may use: the default ones and the user's."""
         return DEFAULT_VOCABULARY.extended(self.words)

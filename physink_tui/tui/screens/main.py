@@ -309,8 +309,9 @@ class MainScreen(Screen[None]):
         self.query_one(SceneView).set_theme(theme)
 
     def action_adopt(self) -> None:
-        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's: one
-        journaled ``load`` with the project embedded, so it is undoable and a replay rebuilds it."""
+        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's and the
+        demonstration it was found for kept beside it (for comparing them again): one journaled ``load`` with the
+        project embedded, so it is undoable and a replay rebuilds it."""
         view = self.view
         if view is None or view.search is None or self.live is None:
             self.notify("nothing to adopt: simulate first (g)", severity="warning")
@@ -318,14 +319,15 @@ class MainScreen(Screen[None]):
         search = view.search
         try:
             scene = apply(view.scene, search.parameters)
-            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas))
+            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas,
+                                          view.timeline))
         except PhysinkError as exc:
             self.app.push_screen(ErrorModal("Cannot adopt the simulation", str(exc)))
             return
         self._command("load", "simulation", project=json.loads(text))
         if not search.found:
-            self.notify("adopted the best simulation found, which is not equivalent to the demonstration "
-                        "(undo with u)", severity="warning")
+            self.notify("adopted the best simulation found, which is not equivalent to the demonstration up to its "
+                        "last event (undo with u)", severity="warning")
 
     def action_simulate(self) -> None:
         self.background.simulate()
@@ -357,7 +359,8 @@ class MainScreen(Screen[None]):
         view = self.view if self.live is None else self.live.runner.latest_view()
         if not path or view is None or self.live is None:
             return
-        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas)
+        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas,
+                          view.demonstration)
         try:
             save_project(project, path)
         except PhysinkError as exc:
