@@ -22,6 +22,7 @@ from textual.css.query import NoMatches
 from textual.message import Message
 from textual.screen import Screen
 from textual.widgets import Static
+from textual.worker import Worker, WorkerState
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
@@ -239,6 +240,11 @@ class MainScreen(Screen[None]):
         if self.view is not None and self.view.mode != "demo":
             self._command("mode", "demo")
         self._command("seek", round(t, 6))
+
+    def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
+        """A worker that died on a bug (SIMULATE, export: ``exit_on_error=False``) is said, never silent."""
+        if event.state == WorkerState.ERROR and event.worker.error is not None:
+            self.app.failed(event.worker.error, event.worker.description or event.worker.name)  # type: ignore[attr-defined]
 
     async def on_controls_action(self, message: Controls.Action) -> None:
         await self.run_action(message.name)
