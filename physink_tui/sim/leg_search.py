@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable, Sequence
+from enum import StrEnum
 
 import numpy as np
 
@@ -73,6 +74,23 @@ EXPLODED_PENALTY = 1.0e6
 """Added to twice the worst finite objective of a generation, as an exploded candidate's value for CMA-ES."""
 
 
+class Phase(StrEnum):
+    """What the search is doing: which generation it asked for last."""
+
+    START = "start"
+    """The seeded parameters alone (generation 0)."""
+    FAMILY = "family"
+    """The seed's flight-time family (`FAMILY_STEPS`)."""
+    AIM = "aim"
+    """Launches aimed at the first contact's surface (`aim.aimed`), `AIM_GENERATION` at a time."""
+    AIM_RUN = "aim run"
+    """CMA-ES in `aim.AimSpace` round the best aimed candidate (at most `AIM_RUN_ROLLOUTS`)."""
+    SCAN = "scan"
+    """The best so far with its start velocities turned and scaled (`SCAN_ANGLES`, `SCAN_SPEEDS`)."""
+    RUN = "run"
+    """CMA-ES (or the one-coordinate sampler) on a leg."""
+
+
 def leg_score(score: Score, leg: int) -> Score:
     """The score of the demonstration up to the end of leg ``leg`` (the whole score when legs were not scored)."""
     return score.legs[leg] if leg < len(score.legs) else score
@@ -87,6 +105,7 @@ class LegByLeg:
         seed: the random seed.
         family: the seed with its start bodies' flight time scaled by a factor (`seeding.seed_family`), searched
             first; None to skip it.
+        aims: launches aimed at the first contact's surface (`aim.aimed`), tried after the family.
     """
 
     def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int,
@@ -107,36 +126,41 @@ class LegByLeg:
         self.centre = start
         self.centre_score: Score | None = None
         self.finished = False
-        self._asked_for = "start"  # what the last generation was: "start", "family", "scan" or "run"
+        self._phase = Phase.START  # what the last generation was
         self._given_up = -1
         self._round = 0
         self._runs_this_round = 0
         self._run: _Run | None = None
 
+    @property
+    def phase(self) -> Phase:
+        """What the last generation asked for was."""
+        return self._phase
+
     # -- the strategy interface (search.Search) ---------------------------------------------------------------------
 
     def generation(self, best: Parameters | None) -> list[Parameters]:
         if self._family_round < FAMILY_ROUNDS and self.family is not None:
-            self._asked_for = "family"
+            self._phase = Phase.FAMILY
             self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
                              for j in FAMILY_SPAN[self._family_round] if j != 0]
             return [self.family(f) for f in self._factors]
-        if self._aims and self._asked_for in ("family", "aim"):
-            self._asked_for = "aim"
+        if self._aims and self._phase in (Phase.FAMILY, Phase.AIM):
+            self._phase = Phase.AIM
             self._aimed, self._aims = self._aims[:AIM_GENERATION], self._aims[AIM_GENERATION:]
             return [a.parameters for a in self._aimed]
-        if self._asked_for in ("aim", "aim run") and self._best_aim is not None:
-            if self._run is None and self._asked_for == "aim":
+        if self._phase in (Phase.AIM, Phase.AIM_RUN) and self._best_aim is not None:
+            if self._run is None and self._phase is Phase.AIM:
                 self._begin_aim_run()
             if self._run is not None and self._aim_run_rollouts < AIM_RUN_ROLLOUTS:
-                self._asked_for = "aim run"
+                self._phase = Phase.AIM_RUN
                 return self._run.ask()
             self._run = None
-        if self._asked_for in ("family", "aim", "aim run") or (self._asked_for == "start"
-                                                                and self.centre.velocities):
-            self._asked_for = "scan"
+        if self._phase in (Phase.FAMILY, Phase.AIM, Phase.AIM_RUN) or (self._phase is Phase.START
+                                                                       and self.centre.velocities):
+            self._phase = Phase.SCAN
             return _turned_and_scaled(self.centre)
-        self._asked_for = "run"
+        self._phase = Phase.RUN
         while not self.finished:
             if self._run is None and not self._begin():
                 continue
@@ -148,18 +172,18 @@ class LegByLeg:
         if self.centre_score is None:  # the start, alone (generation 0 of the search)
             self.centre_score = scores[0]
             return
-        if self._asked_for in ("family", "scan", "aim"):  # the candidate furthest along the legs leads
-            if self._asked_for == "family":
+        if self._phase in (Phase.FAMILY, Phase.SCAN, Phase.AIM):  # the candidate furthest along the legs leads
+            if self._phase is Phase.FAMILY:
                 self._family_round += 1
             for k, (p, s) in enumerate(zip(generation, scores, strict=True)):
                 if not s.exploded and self._progress(s) < self._progress(self.centre_score):
                     self.centre, self.centre_score = p, s
-                    if self._asked_for == "family":
+                    if self._phase is Phase.FAMILY:
                         self._family_best = self._factors[k]
-                    if self._asked_for == "aim":
+                    if self._phase is Phase.AIM:
                         self._best_aim = self._aimed[k]
             return
-        if self._asked_for == "aim run":
+        if self._phase is Phase.AIM_RUN:
             run = self._run
             assert run is not None
             self._aim_run_rollouts += len(generation)

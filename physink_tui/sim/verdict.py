@@ -23,8 +23,9 @@ from physink_tui.sim.search import Search
 from physink_tui.sim.where import differences_in_place
 from physink_tui.timeline.equivalence import Comparison, compare_prefixes, prepare
 from physink_tui.timeline.events import Event, Timeline, event_label
+from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
 
-REPRODUCED = "every demonstrated event is reproduced"
+REPRODUCED = f"every demonstrated event is reproduced (equivalent {RULE})"
 
 
 def refusal_or_verdict(search: Search, problem: Problem, best: RolloutResult, comparison: Comparison, *,
@@ -45,7 +46,8 @@ def verdict(problem: Problem, simulated: Timeline, comparison: Comparison, *, fo
     """The verdict for the best candidate, whose rollout gave ``simulated`` and compares as ``comparison`` (with
     reasons); ``rollouts`` is how many candidates the search tried."""
     if found:
-        text = REPRODUCED
+        after = afterwards(comparison, simulated, problem.scene.names())
+        text = REPRODUCED + (f"; {after}" if after else "")
         elsewhere = differences_in_place(problem.scene, problem.timeline, simulated, comparison)
         if elsewhere:
             text += "; where it differs from the drawing: " + "; ".join(elsewhere)

@@ -23,7 +23,7 @@ from constructed.possible import FLIGHT_S, MOST_CONTACTS, PRESS, THROW_SECONDS, 
 from physink_tui.session.session import Session
 from physink_tui.sim.evaluate import evaluate, rollout_seconds
 from physink_tui.sim.parameters import Parameters
-from physink_tui.sim.rollout import EXPLODED, rollout
+from physink_tui.sim.rollout import Stop, rollout
 from physink_tui.sim.seeding import seed as seed_parameters
 from physink_tui.timeline.events import Timeline
 
@@ -122,7 +122,7 @@ def _throw(drawn: Session, v):
     parameters = seed_parameters(scene, Timeline(()), drawn.canvas)
     parameters = Parameters(parameters.bodies, parameters.springs, {ball: v})
     result = rollout(scene, drawn.canvas, parameters, max_seconds=THROW_SECONDS)
-    if result.stopped_because == EXPLODED or result.flagged:
+    if result.stopped_because == Stop.EXPLODED or result.flagged:
         return None
     events = result.timeline.events
     contacts = sorted((ev for ev in events if ev.type == "contact" and ball in ev.components), key=lambda e: e.t0)
