@@ -13,8 +13,8 @@ contact its construction made impossible (its label and demonstrated time). ``--
 (`constructed.levers`: the ball tips a pivoted lever on its way into the basket), searched the same way.
 
 Needle-ness (``--needle``, possible cases; costly, never in CI): the share of a coarse scan of the ball's launch
-velocity, `SCAN` x `SCAN` throws over vx `SCAN_VX` and vy `SCAN_VY` (canvas units/s), that is equivalent to the
-demonstration; cases are grouped by it (`BUCKETS`).
+velocity, `SCAN` x `SCAN` throws (``--scan``) over vx `SCAN_VX` and vy `SCAN_VY` (canvas units/s), that is
+equivalent to the demonstration; cases are grouped by it (`BUCKETS`).
 
 The grid (``--grid N``): the thesis's grid (`sim/grid.py`) with ``--grid-budget`` on the first N possible cases,
 beside the default: rollouts to an equivalent, and their ratio where the grid finds one.
@@ -106,14 +106,14 @@ def run_case(case, kind: str, executor: Executor, args) -> tuple[Row, Outcome]:
     return row, outcome
 
 
-def needle(case, executor: Executor) -> float:
+def needle(case, executor: Executor, scan: int = SCAN) -> float:
     s = case.session()
     problem = make_problem(s.scene, s.timeline, s.canvas)
     base = case.witness_parameters()
     ball = base.start_bodies[0]
-    grid = [base.with_velocities({ball: (SCAN_VX[0] + i * (SCAN_VX[1] - SCAN_VX[0]) / (SCAN - 1),
-                                         SCAN_VY[0] + j * (SCAN_VY[1] - SCAN_VY[0]) / (SCAN - 1))})
-            for i in range(SCAN) for j in range(SCAN)]
+    grid = [base.with_velocities({ball: (SCAN_VX[0] + i * (SCAN_VX[1] - SCAN_VX[0]) / (scan - 1),
+                                         SCAN_VY[0] + j * (SCAN_VY[1] - SCAN_VY[0]) / (scan - 1))})
+            for i in range(scan) for j in range(scan)]
     from functools import partial
     scores = executor.map(partial(evaluate_problem, problem), grid)
     return sum(1 for sc in scores if not sc.exploded and sc.qualitative == 0) / len(grid)
@@ -247,6 +247,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--grid", type=int, default=0)
     parser.add_argument("--grid-budget", type=int, default=3000)
     parser.add_argument("--needle", action="store_true")
+    parser.add_argument("--scan", type=int, default=SCAN, help="throws per side of the needle-ness scan")
     parser.add_argument("--dask", type=int, default=0)
     parser.add_argument("--rows")
     parser.add_argument("--write")
@@ -265,7 +266,7 @@ def main(argv: list[str] | None = None) -> int:
                 case = make(seed)
                 row, _ = run_case(case, kind, executor, args)
                 if kind == "possible" and args.needle:
-                    row.needle = needle(case, executor)
+                    row.needle = needle(case, executor, args.scan)
                 if kind == "possible" and k < args.grid:
                     s = case.session()
                     start = time.perf_counter()
