@@ -72,7 +72,7 @@ def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_
             await pilot.click("#do-simulate")  # a search of well under a second: its progress is in the messages
             view = await until(pilot, lambda v: v.search is not None, timeout=60)
             assert view.search.found and view.search.budget == 40 and 1 <= view.search.rollouts < 40
-            assert not app.main.query_one(SearchBar).display and app.main.job is None
+            assert not app.main.query_one(SearchBar).display and app.main.background.job is None
             red = app.main.query_one(SceneView)._simulation_trails(view)
             assert red and all(trail.kind == "simulation" for trail in red)
             done = f"simulation done in {view.search.rollouts} rollouts"
@@ -98,7 +98,7 @@ def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) 
             bar = await searching(pilot, app)
             await pilot.press("d")  # the session takes keys while the search runs
             await until(pilot, lambda v: v.mode == "demo", timeout=2.0)
-            assert app.main.job is not None and bar.display
+            assert app.main.background.job is not None and bar.display
             await pilot.press("g")  # a second search is refused while one runs
             await pilot.press("escape")
             view = await until(pilot, lambda v: v.search is not None, timeout=60)
@@ -124,7 +124,7 @@ def test_a_search_of_a_machine_changed_meanwhile_is_discarded(tmp_path) -> None:
             await pilot.press("c")  # clear: the machine searched is gone
             await until(pilot, lambda v: not v.scene.components)
             await pilot.press("escape")
-            await until_app(pilot, lambda: app.main.job is None)
+            await until_app(pilot, lambda: app.main.background.job is None)
             await until_app(pilot, lambda: app.main.query_one("#status").activity.startswith(
                 "simulation discarded: the machine changed"))
             assert app.live.runner.latest_view().search is None
@@ -179,7 +179,7 @@ def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) ->
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
         async with app.run_test(size=SIZE) as pilot:
             await searching(pilot, app)
-            job = app.main.job
+            job = app.main.background.job
             await pilot.press("q")
             await pilot.pause(0.2)
             if isinstance(app.screen, ConfirmModal):  # unsaved work: quit all the same

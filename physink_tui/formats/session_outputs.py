@@ -7,7 +7,6 @@ from pathlib import Path
 
 from physink_tui.formats.outputs import OutputFolder
 from physink_tui.formats.project.codec import Project, encode_project
-from physink_tui.formats.project.files import save_project
 from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.formats.timeline_text import encode_timeline_text
 from physink_tui.scene.components import Scene
@@ -48,5 +47,6 @@ def write_session_outputs(folder: OutputFolder, scene: Scene, timeline: Timeline
         folder.write("timeline.json", encode_timeline_json(timeline, names))
         folder.write("timeline.txt", encode_timeline_text(timeline, names))
     target = folder.file("project.json")
-    save_project(Project(scene, vocabulary, timeline, canvas, demonstration), target)
+    project = Project(scene, vocabulary, timeline, canvas, demonstration)
+    folder.write("project.json", encode_project(project, where=str(target)))
     return target

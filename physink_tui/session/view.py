@@ -11,7 +11,7 @@ from physink_tui.input.pen.gestures import StrokePoint
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
 from physink_tui.session.history import History
-from physink_tui.session.modes.base import Mode
+from physink_tui.session.modes.base import Mode, ModeName
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import PendingStroke
 from physink_tui.session.simulation import SearchResult
@@ -22,10 +22,18 @@ Stroke = tuple[tuple[float, float], ...]
 
 @dataclass(frozen=True, slots=True)
 class Message:
-    """Something the user should be told, at input time ``t``."""
+    """Something the user should be told, at input time ``t``.
+
+    Attributes:
+        t: input time (seconds since the session start).
+        text: what to tell, one line.
+        kind: ``outcome`` for what a stroke or a label made of the sketch ("circle → body b3", "erased box b4 — u
+            to undo"), one per stroke; ``note`` for everything else (repairs, refusals, odd cases).
+    """
 
     t: float
     text: str
+    kind: str = "note"
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,7 +43,7 @@ class SessionView:
     Attributes:
         revision: grows whenever the session changed (a view drawn at the same revision is up to date).
         t: the input time reached (seconds since the session start).
-        mode: ``sketch``, ``adjust`` or ``demo``.
+        mode: the mode the session is in.
         scene: the document's scene.
         poses: where each body is shown now (the mode's world: moved while adjusting or demonstrating).
         ink: strokes being drawn now, canvas units, one per pen down.
@@ -57,7 +65,7 @@ class SessionView:
 
     revision: int
     t: float
-    mode: str
+    mode: ModeName
     scene: Scene
     poses: Mapping[str, Pose]
     ink: tuple[Stroke, ...]

@@ -27,7 +27,9 @@ demonstrated timeline when ``timeline`` is a simulation adopted for it (else nul
 ``demonstration`` and the timeline's ``in_contact``) reads as version 2 (`migrations.upgrade`). Reading names
 the first bad field by its JSON path and says what was expected, e.g. ``project.json: components[3].material.friction:
 expected a number >= 0, got "high"``; unknown keys are ignored with a warning. Encoding checks the project
-with the same rules, so whatever is written reads back. Both raise `SceneError`.
+with the same rules, so whatever is written reads back. Both raise `SceneError`. The values every command needs
+(sizes, times, outlines, the timeline's components) are `physink_tui.formats.project.sanity`'s, checked by
+`load_project` and wherever else a project is taken in; the codec itself round-trips any well-formed project.
 """
 
 from __future__ import annotations
@@ -159,17 +161,36 @@ def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -
 (upgrade physink-tui)
     """
     where = str(path)
+    text = text.removeprefix("\ufeff")  # a UTF-8 byte order mark, as editors on Windows write
     try:
         value = _DECODER.decode(text)
     except DuplicateKey as e:
         raise SceneError(f'{where}: not valid JSON: key "{e.key}" appears twice in one object') from None
     except json.JSONDecodeError as e:
+        kind = _other_kind(text)
+        if kind:
+            raise SceneError(f"{where}: {kind}; expected a project (.physink.json)") from None
         raise SceneError(f"{where}: not valid JSON ({e.msg} at line {e.lineno}, column {e.colno})") from None
     except (ValueError, RecursionError) as e:
         raise SceneError(f"{where}: not valid JSON ({e})") from None
     if not isinstance(value, dict):
         raise SceneError(f"{where}: expected a JSON object (a physink project), got {show(value)}")
     return _project(value, Place(where, SceneError), warnings)
+
+
+def _other_kind(text: str) -> str:
+    """What a file that is no JSON document is, when it is one of this program's other files (else "")."""
+    body = text.strip()
+    first = body.split("\n", 1)[0].strip()
+    if first.startswith(("#", "R:", "N:", "I:", "P:", "D:", "E:")):
+        return "this is a capture (.hid)"
+    try:
+        head = json.loads(first)
+    except (ValueError, RecursionError):
+        return ""
+    if isinstance(head, dict) and head.get("format") == "physink-journal":
+        return "this is a journal (.physink.jsonl)"
+    return ""
 
 
 # --- writing -----------------------------------------------------------------------------------------------------

@@ -14,7 +14,7 @@ from physink_tui.scene.interpretation.interpret import bodies_at
 from physink_tui.scene.physics.state import Pose
 from physink_tui.scene.physics.stepping import put_down
 from physink_tui.scene.physics.world import World
-from physink_tui.session.modes.base import Host, Mode
+from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.events import Timeline
 
 ADJUST_CENTRE = 0.25
@@ -26,7 +26,7 @@ STEP_EPSILON = 1e-9
 class AdjustMode:
     """One body being moved by the pen, the others frozen (see the module docstring)."""
 
-    name = "adjust"
+    name = ModeName.ADJUST
 
     def __init__(self, host: Host, body_id: str, world: World, t: float, offset: tuple[float, float]) -> None:
         self.host = host
