@@ -275,7 +275,7 @@ class Recorder:
         pm, po = obs.poses.get(mover), obs.poses.get(other)
         if pm is None or self._cause_of(mover, obs.t, obs) is None:
             return False
-        return drives_into(pm, po if po is not None else (pm[0], pm[1], 0.0, 0.0, 0.0, 0.0), normal, MOVING_SPEED)
+        return drives_into(pm, po if po is not None else (pm[0], pm[1], 0.0, 0.0, 0.0, 0.0), normal)
 
     def _latest_movement(self, body: str) -> Event | None:
         """The latest movement of ``body``'s mechanism (open or ended), which a new grab continues."""
