@@ -166,6 +166,19 @@ def test_a_body_driving_into_the_one_it_began_in_contact_with_makes_a_contact() 
     assert not [e for e in run.timeline.events if e.type == "end_contact"]
 
 
+def test_a_stopper_lifting_a_ball_that_rests_near_its_end_drives_into_it() -> None:
+    # pushed up across their contact, not along the line between their centres (which runs mostly sideways)
+    outlines = {"ball": box("ball", 20, 20), "stopper": box("stopper", 240, 40)}
+    recorder = Recorder(outlines, frozenset(outlines), initial_pairs=frozenset({frozenset(outlines)}))
+    run = Run(recorder)
+    for k in range(1, 6):
+        y = 100 - 100 * k / 120
+        run.step({"ball": moving(210, y - 30, 0, -100 if k > 1 else 0), "stopper": moving(100, y, 0, -100)},
+                 grabbed="stopper", touching=[("ball", "stopper")])
+    contact = next(e for e in run.timeline.events if e.type == "contact")
+    assert contact.components == ("stopper", "ball") and dict(contact.sides) == {"stopper": "top", "ball": "bottom"}
+
+
 def test_a_pair_drawn_a_few_units_apart_parts_only_once_further_apart_than_it_began() -> None:
     outlines = {"ball": box("ball", 20, 20), "stopper": box("stopper", 60, 20)}
     recorder = Recorder(outlines, frozenset(outlines), initial_pairs=frozenset({frozenset(outlines)}))

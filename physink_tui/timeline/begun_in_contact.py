@@ -23,8 +23,11 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+from shapely.geometry import Point, Polygon
+from shapely.ops import nearest_points
+
 from physink_tui.scene.physics.state import Motion
-from physink_tui.timeline.qualitative import BodyOutline, hull_gap
+from physink_tui.timeline.qualitative import BodyOutline, hull_gap, placed
 
 SEPARATION_GAP = 4.0
 """Canvas units by which two bodies that began in contact must get further apart than they began (drawn a few
@@ -62,6 +65,27 @@ def drives_into(mover: Motion, other: Motion, normal: tuple[float, float] | None
     vx, vy = mover[3], mover[4]
     approach = vx * normal[0] + vy * normal[1]
     return approach > speed and approach >= DRIVE_SHARE * math.hypot(vx, vy)
+
+
+def facing(mover: BodyOutline, pose: Motion, other: Motion) -> tuple[float, float] | None:
+    """The direction from ``mover`` towards ``other``'s centre across their contact: from the point of the mover's
+    hull nearest that centre (a ball resting near one end of a long stopper is above it, not beside its middle);
+    None when the centre is within the hull or the hull has no area (then centre to centre serves).
+
+    >>> plank = BodyOutline("p", ((-120, -20), (120, -20), (120, 20), (-120, 20)), False)
+    >>> facing(plank, (0, 0, 0, 0, 0, 0), (100, -60, 0, 0, 0, 0))
+    (0.0, -1.0)
+    """
+    hull = placed(mover, pose)
+    if len(hull) < 3:
+        return None
+    polygon, centre = Polygon(hull), Point(other[0], other[1])
+    if polygon.area == 0 or polygon.covers(centre):
+        return None
+    near = nearest_points(polygon.exterior, centre)[0]
+    dx, dy = other[0] - near.x, other[1] - near.y
+    d = math.hypot(dx, dy)
+    return (dx / d, dy / d) if d > 0 else None
 
 
 def parted(outlines: Mapping[str, BodyOutline], pair: frozenset[str], poses: Mapping[str, Motion],
