@@ -77,7 +77,9 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
 
     @staticmethod
     def _label(ev: Event, events: dict[str, Event], names: dict[str, str]) -> str:
-        text = "start" if ev.type == "start" else event_label(ev, names)
+        text = event_label(ev, names)
+        if ev.type == "start":  # "start", with the pairs that began in contact: "start (stopper and ball in contact)"
+            text = "start" + text.removeprefix("Start") if ev.label is None else text
         more = [c for c in ev.causes[1:] if c in events]
         also = f"  (also caused by {', '.join(more)})" if more else ""
         return f"{ev.t0:5.2f} s  {text}{also}"
