@@ -68,7 +68,7 @@ class Config:
         return self
 
     def mapping(self, canvas: tuple[float, float] = DEFAULT_CANVAS) -> TabletMapping:
-        return TabletMapping(canvas_width=canvas[0], canvas_height=canvas[1], area=tuple(self.area),
+        return TabletMapping(canvas_width=canvas[0], canvas_height=canvas[1], area=self.area,
                              rotation=self.rotation, left_handed=self.left_handed, keep_aspect=self.keep_aspect,
                              display_tablet=self.display_tablet)
 

@@ -12,7 +12,7 @@ import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar
+from typing import Any, ClassVar
 
 from textual import events, work
 from textual.app import ComposeResult
@@ -27,6 +27,7 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.formats.project.files import save_project
+from physink_tui.session.simulation import SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
@@ -209,7 +210,7 @@ class MainScreen(Screen[None]):
     @staticmethod
     def _labels(view: SessionView | None) -> list[str]:
         """The labels speech listens for: the components' in ``view``."""
-        return [] if view is None else [c.label for c in view.scene.components.values() if getattr(c, "label", None)]
+        return [] if view is None else list(view.scene.labels().values())
 
     @work(thread=True, group="speech")
     def _toggle_talk(self, labels: list[str]) -> None:
@@ -299,9 +300,9 @@ class MainScreen(Screen[None]):
         self.app.push_screen(TextScreen("Timeline", text))
 
     def action_settings(self) -> None:
-        config = self.app.config  # type: ignore[attr-defined]
+        config = self.app.config  # type: ignore[attr-defined]  # PhysinkApp.config: Textual types .app as App
         self.app.push_screen(SettingsScreen(config, self.query_one(SceneView).canvas_cells),
-                             self.app.adopt_settings)  # type: ignore[attr-defined]
+                             self.app.adopt_settings)  # type: ignore[attr-defined]  # PhysinkApp's
 
     def set_theme(self, theme: str) -> None:
         self.theme_name = theme
@@ -339,12 +340,12 @@ class MainScreen(Screen[None]):
         """Quitting: the search and the export stop, and nothing they did reaches the session."""
         self.background.stop()
 
-    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
+    def _command(self, name: str, *args: str | float, project: dict[str, Any] | None = None) -> SessionInput | None:
         return self.live.command(name, *args, project=project) if self.live is not None else None
 
     def action_help(self) -> None:
         self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),
-                                         b.description) for b in self.BINDINGS))
+                                         b.description) for b in self.BINDINGS if isinstance(b, Binding)))
 
     # -- files ---------------------------------------------------------------------------------------------------
 
@@ -364,7 +365,7 @@ class MainScreen(Screen[None]):
             return
         self.project_path = path
         self._command("save", os.path.abspath(path))
-        self.app.mark_saved(view)  # type: ignore[attr-defined]
+        self.app.mark_saved(view)  # type: ignore[attr-defined]  # PhysinkApp.mark_saved: .app is typed App
         self.notify(f"saved {path}")
 
     def action_load(self) -> None:
