@@ -5,12 +5,15 @@ finds the same), adopted into the project undoably and played back."""
 from __future__ import annotations
 
 import asyncio
+import json
 import time
 from pathlib import Path
 
 import pytest
 
+from physink_tui import cli
 from physink_tui.formats.journal.reader import read_journal
+from physink_tui.formats.timeline_json import timeline_object
 from physink_tui.session.session import Session
 from physink_tui.tui.screens.background import SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import ConfirmModal
@@ -187,3 +190,37 @@ def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) ->
     asyncio.run(go())
     assert started[1] - started[0] < 10  # the search stopped after its rollout under way; the app closed
     assert simulate_args(tmp_path) == []
+
+
+def test_equiv_up_to_demonstrated_of_the_adopted_project_agrees_with_what_the_tui_said(tmp_path, capsys) -> None:
+    header, entries = recorded("pinball")
+
+    async def go():
+        app = tui_app(tmp_path, header=header, prior=entries)
+        async with app.run_test(size=SIZE) as pilot:
+            before = await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            found = await until(pilot, lambda v: v.search is not None and any(
+                m.text.startswith("simulation found in") for m in v.messages), timeout=60)
+            await pilot.press("a")
+            adopted = await until(pilot, lambda v: v.messages[-1].text.startswith("loaded simulation"))
+        return before, found, adopted
+
+    before, found, adopted = asyncio.run(go())
+    told = next(m.text for m in found.messages if m.text.startswith("simulation found in"))
+    assert "(equivalent up to the last demonstrated event: qualitative distance 0," in told
+    names = before.scene.names()
+    as_written = [timeline_object(t, names) for t in (adopted.demonstration, before.timeline,  # to 6 decimals
+                                                      adopted.timeline, found.search.timeline)]
+    assert as_written[0] == as_written[1] and as_written[2] == as_written[3]  # the demonstration kept beside it
+    (journal,) = (tmp_path / "sessions").glob("*.physink.jsonl")
+    assert cli.main(["replay", str(journal), "--out", str(tmp_path / "replayed")]) == 0  # the project it leaves
+    capsys.readouterr()
+    assert cli.main(["equiv", str(tmp_path / "replayed" / "project.json"), "--up-to-demonstrated", "--json"]) == 0
+    said = json.loads(capsys.readouterr().out)
+    assert said["equivalent"] is found.search.found is True
+    assert said["qualitative_distance"] == found.search.qualitative_distance == 0
+    assert said["quantitative_distance"] == pytest.approx(found.search.quantitative_distance, abs=1e-3)
+    assert said["afterwards"] == found.search.afterwards
+    if found.search.afterwards:
+        assert told.endswith(f"; {found.search.afterwards}")

@@ -36,7 +36,8 @@ def recorded(path: str) -> tuple[JournalHeader, tuple[JournalEntry, ...]]:
 
 
 def open_tui(options: TuiOptions) -> int:
-    """Runs the app until the user quits; exit status 0 (1 when stdout is no terminal)."""
+    """Runs the app until the user quits; its exit status: 0, or 1 when it crashed (Textual has shown the
+    traceback) or a bug stopped part of it (`PhysinkApp.failed`)."""
     if not (sys.stdout.isatty() and sys.stdin.isatty()):
         raise PhysinkError("physink tui needs a terminal (stdin and stdout); use physink replay or physink demo "
                            "--headless to run without one")
@@ -45,8 +46,9 @@ def open_tui(options: TuiOptions) -> int:
 
     options.graphics = choose()  # before Textual owns the terminal
     options.cell = cell_pixels()
-    make_app(options).run()
-    return 0
+    app = make_app(options)
+    app.run()
+    return app.return_code or 0
 
 
 def run(args: argparse.Namespace) -> int:

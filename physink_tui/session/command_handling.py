@@ -13,6 +13,7 @@ from physink_tui.errors import SceneError
 from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.formats.json_checks import Place
 from physink_tui.formats.project.codec import decode_project_object, project_vocabulary
+from physink_tui.formats.project.sanity import check_project
 from physink_tui.scene.components import Scene
 from physink_tui.session import labelling, simulation
 from physink_tui.session.history import Document, History
@@ -150,9 +151,10 @@ class Commands:
         if entry.project is None:
             host.tell(f"{where}: the project is not embedded in the input, so nothing was loaded")
             return
-        project = decode_project_object(entry.project, Place(where, SceneError))
+        project = check_project(decode_project_object(entry.project, Place(where, SceneError)),
+                                Place(where, SceneError))
         with self._closed(entry.t):
-            host.commit(Document(project.scene, project.timeline), where)
+            host.commit(Document(project.scene, project.timeline, project.demonstration), where)
             host.add_words(project_vocabulary(project))
             if tuple(project.canvas) != tuple(host.canvas):
                 host.tell(f"{where}: the project was drawn on a {project.canvas[0]:g} x {project.canvas[1]:g} "

@@ -12,6 +12,7 @@ from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session.history import Document
 from physink_tui.session.modes.base import ModeName
+from physink_tui.session.outcomes import labelled
 from physink_tui.session.speech_target import PenWatch
 
 
@@ -41,7 +42,7 @@ class LabelHost(Protocol):
     def stroke_pending(self) -> bool:
         """A stroke has ended but the sketch has not yet decided what it makes (an X's first half)."""
 
-    def tell(self, text: str, t: float | None = None) -> None: ...
+    def tell(self, text: str, t: float | None = None, kind: str = "note") -> None: ...
 
     def commit(self, document: Document, description: str) -> None: ...
 
@@ -83,8 +84,10 @@ def label(host: LabelHost, target: str, text: str) -> None:
     if not isinstance(component, Body | Rope | Spring):
         host.tell(f"label {text!r}: joints take no labels")
         return
-    scene = host.scene.update(replace(component, label=text))
-    host.commit(Document(scene, host.document.timeline), f"label {component_id} {text}")
+    before = host.scene
+    scene = before.update(replace(component, label=text))
+    host.commit(replace(host.document, scene=scene), f"label {component_id} {text}")
+    host.tell(labelled(before, component_id, text), kind="outcome")
     unsayable = unspeakable_words(text)
     if unsayable:
         host.tell(f"label {text!r}: {', '.join(map(repr, unsayable))} cannot be said (not in the speech "

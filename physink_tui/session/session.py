@@ -119,6 +119,11 @@ class Session:
         return self.current.timeline()
 
     @property
+    def demonstration(self) -> Timeline | None:
+        """When the timeline is an adopted simulation, the demonstrated timeline it was found for; else None."""
+        return self.document.demonstration
+
+    @property
     def vocabulary(self) -> Vocabulary:
         """The words phrases may use: the default ones and the user's."""
         return DEFAULT_VOCABULARY.extended(self.words)
@@ -230,8 +235,8 @@ class Session:
             self.journal.close()
             self.journal = None
 
-    def tell(self, text: str, t: float | None = None) -> None:
-        self.messages.append(Message(self.t if t is None else t, text))
+    def tell(self, text: str, t: float | None = None, kind: str = "note") -> None:
+        self.messages.append(Message(self.t if t is None else t, text, kind))
 
     # -- what modes may do (`modes.base.Host`) ----------------------------------------------------------------
 

@@ -197,7 +197,7 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     applied = apply(scene, parameters)
     world = World.from_state(applied, settled.state, warm=WARM_STEPS)
     start_scene = world.to_scene(applied)
-    recorder = recorder_for(start_scene, canvas, world.dt)
+    recorder = recorder_for(start_scene, canvas, world.dt, drawn=applied)
     bodies = tuple(b.id for b in applied.bodies())
     movable = [b for b in bodies if not applied.is_fixed(b)]
     came_flush = _came_flush(world, applied, movable)

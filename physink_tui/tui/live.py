@@ -88,14 +88,17 @@ class LiveSession:
         journal_path: where the session journals (a new file), or None for no journal (tests).
         prior: entries handled at once before the runner starts (a recovered journal), journaled again.
         max_fps: views published a second at most.
+        clock: the runner's clock (seconds on a monotonic scale).
     """
 
     def __init__(self, header: JournalHeader, *, journal_path: Path | None = None,
                  prior: Sequence[JournalEntry] = (), max_fps: float = 30.0,
-                 on_error: Callable[[BaseException], object] | None = None) -> None:
+                 on_error: Callable[[BaseException], object] | None = None,
+                 clock: Callable[[], float] = time.monotonic) -> None:
         self.header = header
         self.journal_path = journal_path
-        journaled = Journaled.create(header, journal_path, prior=prior, max_fps=max_fps, on_error=on_error)
+        journaled = Journaled.create(header, journal_path, prior=prior, clock=clock, max_fps=max_fps,
+                                     on_error=on_error)
         self.session, self.runner = journaled.session, journaled.runner
         self.mouse = ProgrammaticPenSource(MOUSE)
         self.mouse_pump = SourcePump(self.mouse, self.runner.submit)

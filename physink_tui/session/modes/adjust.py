@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import replace
 
 from physink_tui.input.pen.gestures import Gesture, PenMove, StrokeEnded, Tap
 from physink_tui.scene.components import Scene
@@ -13,7 +14,6 @@ from physink_tui.scene.interpretation.interpret import bodies_at
 from physink_tui.scene.physics.state import Pose
 from physink_tui.scene.physics.stepping import put_down, steps_until
 from physink_tui.scene.physics.world import World
-from physink_tui.session.history import Document
 from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.events import Timeline
 
@@ -88,7 +88,7 @@ class AdjustMode:
         document = self.host.document
         moved = world.to_scene(document.scene)
         if moved != document.scene:
-            self.host.commit(Document(moved, document.timeline), f"adjust {self.body_id}")
+            self.host.commit(replace(document, scene=moved), f"adjust {self.body_id}")
 
     def poses(self) -> Mapping[str, Pose]:
         if self.world is None:

@@ -32,8 +32,8 @@ class Host(Protocol):
     @property
     def document(self) -> Document: ...
 
-    def tell(self, text: str, t: float | None = None) -> None:
-        """Tell the user ``text`` (stamped ``t``, default the session's time)."""
+    def tell(self, text: str, t: float | None = None, kind: str = "note") -> None:
+        """Tell the user ``text`` (stamped ``t``, default the session's time); ``kind`` is `view.Message`'s."""
 
     def commit(self, document: Document, description: str) -> None:
         """``document`` is the result of an action the user can undo."""

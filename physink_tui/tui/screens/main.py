@@ -12,7 +12,7 @@ import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Protocol, cast
 
 from textual import events, work
 from textual.app import ComposeResult
@@ -22,15 +22,18 @@ from textual.css.query import NoMatches
 from textual.message import Message
 from textual.screen import Screen
 from textual.widgets import Static
+from textual.worker import Worker, WorkerState
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.formats.project.files import save_project
+from physink_tui.formats.project.sanity import check_project
 from physink_tui.session.simulation import SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
+from physink_tui.tui.config import Config
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
@@ -63,6 +66,18 @@ class SpeechStatus(Message):
     """What push-to-talk is doing or heard (posted from its threads)."""
 
     text: str
+
+
+class PanelApp(Protocol):
+    """What the screen needs of its app (`app.PhysinkApp`, which imports this module) besides Textual's `App`."""
+
+    config: Config
+
+    def failed(self, error: BaseException, what: str) -> None: ...
+
+    def mark_saved(self, view: SessionView) -> None: ...
+
+    def adopt_settings(self, config: Config | None) -> None: ...
 
 
 class MainScreen(Screen[None]):
@@ -108,6 +123,11 @@ class MainScreen(Screen[None]):
         self._barrel = False
         self.background = BackgroundWork(self, self)
         """SIMULATE and export, in worker threads."""
+
+    @property
+    def panel_app(self) -> PanelApp:
+        """The app, as `PanelApp` (Textual types ``self.app`` as any `App`)."""
+        return cast(PanelApp, self.app)
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
@@ -240,6 +260,11 @@ class MainScreen(Screen[None]):
             self._command("mode", "demo")
         self._command("seek", round(t, 6))
 
+    def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
+        """A worker that died on a bug (SIMULATE, export: ``exit_on_error=False``) is said, never silent."""
+        if event.state == WorkerState.ERROR and event.worker.error is not None:
+            self.panel_app.failed(event.worker.error, event.worker.description or event.worker.name)
+
     async def on_controls_action(self, message: Controls.Action) -> None:
         await self.run_action(message.name)
 
@@ -300,17 +325,18 @@ class MainScreen(Screen[None]):
         self.app.push_screen(TextScreen("Timeline", text))
 
     def action_settings(self) -> None:
-        config = self.app.config  # type: ignore[attr-defined]  # PhysinkApp.config: Textual types .app as App
+        config = self.panel_app.config
         self.app.push_screen(SettingsScreen(config, self.query_one(SceneView).canvas_cells),
-                             self.app.adopt_settings)  # type: ignore[attr-defined]  # PhysinkApp's
+                             self.panel_app.adopt_settings)
 
     def set_theme(self, theme: str) -> None:
         self.theme_name = theme
         self.query_one(SceneView).set_theme(theme)
 
     def action_adopt(self) -> None:
-        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's: one
-        journaled ``load`` with the project embedded, so it is undoable and a replay rebuilds it."""
+        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's and the
+        demonstration it was found for kept beside it (for comparing them again): one journaled ``load`` with the
+        project embedded, so it is undoable and a replay rebuilds it."""
         view = self.view
         if view is None or view.search is None or self.live is None:
             self.notify("nothing to adopt: simulate first (g)", severity="warning")
@@ -318,14 +344,15 @@ class MainScreen(Screen[None]):
         search = view.search
         try:
             scene = apply(view.scene, search.parameters)
-            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas))
+            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas,
+                                          view.timeline))
         except PhysinkError as exc:
             self.app.push_screen(ErrorModal("Cannot adopt the simulation", str(exc)))
             return
         self._command("load", "simulation", project=json.loads(text))
         if not search.found:
-            self.notify("adopted the best simulation found, which is not equivalent to the demonstration "
-                        "(undo with u)", severity="warning")
+            self.notify("adopted the best simulation found, which is not equivalent to the demonstration up to its "
+                        "last event (undo with u)", severity="warning")
 
     def action_simulate(self) -> None:
         self.background.simulate()
@@ -357,7 +384,8 @@ class MainScreen(Screen[None]):
         view = self.view if self.live is None else self.live.runner.latest_view()
         if not path or view is None or self.live is None:
             return
-        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas)
+        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas,
+                          view.demonstration)
         try:
             save_project(project, path)
         except PhysinkError as exc:
@@ -365,7 +393,7 @@ class MainScreen(Screen[None]):
             return
         self.project_path = path
         self._command("save", os.path.abspath(path))
-        self.app.mark_saved(view)  # type: ignore[attr-defined]  # PhysinkApp.mark_saved: .app is typed App
+        self.panel_app.mark_saved(view)
         self.notify(f"saved {path}")
 
     def action_load(self) -> None:
@@ -377,8 +405,8 @@ class MainScreen(Screen[None]):
         try:
             with open(path, "rb") as f:
                 text = f.read().decode("utf-8")
-            decode_project(text, path)
-            obj = json.loads(text)
+            check_project(decode_project(text, path), path)
+            obj = json.loads(text.removeprefix("\ufeff"))
         except (OSError, UnicodeDecodeError) as exc:
             self.app.push_screen(ErrorModal("Cannot load", f"{path}: {exc}"))
             return
