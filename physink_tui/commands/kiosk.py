@@ -4,7 +4,8 @@ the signals.
 
 ``--replay CAPTURE.hid [--speed X]`` feeds a capture through the same path as a live tablet, paced by its
 timestamps X times faster; the sessions' input time is the capture's own (the runner's clock runs X times
-faster too), so a session replayed at any speed journals what the tablet sent when it sent it.
+faster too and waits at each report's time until the report is in: `ReplayClock`), so a session replayed at any
+speed, on a machine however loaded, journals what the tablet sent when it sent it.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from physink_tui.input.journal_compose import header_for_capture
 from physink_tui.input.pen.mapping import TabletMapping, mapping_to_header
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.reconnecting import ReconnectingSource
+from physink_tui.input.replay_clock import ReplayClock
 from physink_tui.input.scripted_sources import CaptureReplaySource
 from physink_tui.input.serial_tablets.reader import SerialPenSource
 from physink_tui.input.sources import PenSource
@@ -67,14 +69,15 @@ def mapping_for(device: JournalDevice, zones: HotZones) -> TabletMapping:
                          area=zones.area)
 
 
-def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
+def _replay_source(path: str, clock: ReplayClock, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
     capture = Capture.from_file(path)
     if not capture.devices:
         raise PhysinkError(f"{path}: the capture describes no device")
     first = capture.devices[0]
     device = JournalDevice(DEVICE_ID, first.name, first.bus, first.vid, first.pid, first.descriptor)
     header = header_for_capture(Capture((first,), ()), mapping_for(device, zones))
-    return CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed), device, header
+    return (CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=clock.speed, clock=clock),
+            device, header)
 
 
 def _wait_for(open_fn: Callable[[], T], kiosk: Kiosk) -> T:
@@ -140,13 +143,13 @@ def run(args: argparse.Namespace) -> int:
         return 2
     kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
-    start = time.monotonic()
-    clock: Callable[[], float] = (  # a replay's input time is the capture's own
-        (lambda: (time.monotonic() - start) * args.speed) if args.replay is not None else time.monotonic)
+    # a replay's input time is the capture's own: its clock runs at its speed and waits for each report (replay_clock)
+    clock: Callable[[], float] = ReplayClock(speed=args.speed) if args.replay is not None else time.monotonic
     ears = _ears(args, kiosk, clock)
     try:
         if args.replay is not None:
-            source, device, header = _replay_source(args.replay, args.speed, zones)
+            assert isinstance(clock, ReplayClock)
+            source, device, header = _replay_source(args.replay, clock, zones)
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
             return kiosk.run(source, device, header, replay=True, clock=clock)
         if args.serial:

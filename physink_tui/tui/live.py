@@ -17,6 +17,7 @@ from pathlib import Path
 
 from physink_tui.formats.journal.entries import CommandEntry, JournalEntry, JournalHeader
 from physink_tui.formats.journal.writer import JournalWriter
+from physink_tui.input.replay_clock import ReplayClock
 from physink_tui.input.scripted_sources import ProgrammaticPenSource
 from physink_tui.session.runner import SessionRunner
 from physink_tui.session.session import Session
@@ -37,17 +38,21 @@ class JournalFeed:
     """Submits recorded entries to a runner when they are due (``speed`` times real time), from a thread.
 
     ``end`` entries are left out: the live session goes on after the feed. ``on_done`` is called on the feed's
-    thread when the last entry was submitted (or the feed was stopped).
+    thread when the last entry was submitted (or the feed was stopped). Given the runner's ``clock`` (a
+    `ReplayClock`), it paces by it and holds it at each entry's due time until the entry is submitted: each entry
+    is stamped with its recorded time (scaled by ``speed``), however late a loaded machine gets to it.
     """
 
     def __init__(self, entries: Sequence[JournalEntry], submit: Callable[[JournalEntry], object], *,
-                 speed: float = 1.0, on_done: Callable[[], None] | None = None) -> None:
+                 speed: float = 1.0, on_done: Callable[[], None] | None = None,
+                 clock: ReplayClock | None = None) -> None:
         if not speed > 0:
             raise ValueError(f"speed: expected > 0, got {speed!r}")
         self.entries = [e for e in entries if not (isinstance(e, CommandEntry) and e.name == "end")]
         self._submit = submit
         self._speed = speed
         self._on_done = on_done
+        self._clock = clock
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self.submitted = 0
@@ -66,18 +71,35 @@ class JournalFeed:
             self._thread.join()
 
     def _run(self) -> None:
-        start = time.monotonic()
-        first = self.entries[0].t if self.entries else 0.0
-        for entry in self.entries:
-            delay = (entry.t - first) / self._speed - (time.monotonic() - start)
-            if delay > 0 and self._stop.wait(delay):
-                break
-            if self._stop.is_set():
-                break
-            self._submit(entry)
-            self.submitted += 1
+        if self._clock is not None:
+            self._run_on_clock(self._clock)
+        else:
+            start = time.monotonic()
+            first = self.entries[0].t if self.entries else 0.0
+            for entry in self.entries:
+                delay = (entry.t - first) / self._speed - (time.monotonic() - start)
+                if delay > 0 and self._stop.wait(delay):
+                    break
+                if self._stop.is_set():
+                    break
+                self._submit(entry)
+                self.submitted += 1
         if self._on_done is not None:
             self._on_done()
+
+    def _run_on_clock(self, clock: ReplayClock) -> None:
+        origin = clock.running()
+        first = self.entries[0].t if self.entries else 0.0
+        try:
+            for entry in self.entries:
+                due = origin + (entry.t - first) / self._speed
+                clock.hold_at(due)
+                if clock.wait_until(due, self._stop):
+                    break
+                self._submit(entry)
+                self.submitted += 1
+        finally:
+            clock.release()
 
 
 class LiveSession:
@@ -104,8 +126,10 @@ class LiveSession:
         for entry in prior:
             if not (isinstance(entry, CommandEntry) and entry.name == "end"):
                 self.session.handle(entry)
+        self.clock = ReplayClock(clock)
+        """The runner's clock: ``clock`` itself, except that a replay holds it at each entry's time (`JournalFeed`)."""
         self.runner: SessionRunner[SessionView] = SessionRunner(self.session, max_fps=max_fps, on_error=on_error,
-                                                                 clock=clock)
+                                                                 clock=self.clock)
         self.mouse = ProgrammaticPenSource(MOUSE)
         self.mouse_pump = SourcePump(self.mouse, self.runner.submit)
         self.feed: JournalFeed | None = None
@@ -133,7 +157,7 @@ class LiveSession:
         """Feed recorded entries at ``speed`` times real time (one feed at a time)."""
         if self.feed is not None:
             self.feed.stop()
-        self.feed = JournalFeed(entries, self.runner.submit, speed=speed, on_done=on_done)
+        self.feed = JournalFeed(entries, self.runner.submit, speed=speed, on_done=on_done, clock=self.clock)
         self.feed.start()
         return self.feed
 
