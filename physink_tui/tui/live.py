@@ -56,6 +56,9 @@ class JournalFeed:
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self.submitted = 0
+        self.last_t: float | None = None
+        """The stamp of the last entry submitted (what ``submit`` returned), once one was: the session has handled
+        all the feed gave it when its view's ``t`` is at least this."""
 
     def start(self) -> None:
         self._thread = threading.Thread(target=self._run, name="journal-feed", daemon=True)
@@ -82,8 +85,7 @@ class JournalFeed:
                     break
                 if self._stop.is_set():
                     break
-                self._submit(entry)
-                self.submitted += 1
+                self._took(self._submit(entry))
         if self._on_done is not None:
             self._on_done()
 
@@ -96,10 +98,14 @@ class JournalFeed:
                 clock.hold_at(due)
                 if clock.wait_until(due, self._stop):
                     break
-                self._submit(entry)
-                self.submitted += 1
+                self._took(self._submit(entry))
         finally:
             clock.release()
+
+    def _took(self, stamped: object) -> None:
+        self.submitted += 1
+        if isinstance(stamped, JournalEntry):
+            self.last_t = stamped.t
 
 
 class LiveSession:
