@@ -239,44 +239,45 @@ def test_a_disk_that_fills_mid_session_stops_the_journal_with_a_clear_line_and_k
 
 
 class _Unplugging:
-    """A tablet that sends one visitor's first ``cut`` reports, is unplugged (its reader ends with an error), then is
-    plugged back and sends the rest — as `ReconnectingSource` passes such a device on: one replay of the capture
-    on ``clock`` whose reports go straight on, with the error put in before report ``cut``."""
+    """A tablet that sends one visitor's first strokes, is unplugged (its reader ends with an error), then is
+    plugged back and sends the rest — as `ReconnectingSource` passes such a device on."""
 
-    def __init__(self, capture, cut: int, clock) -> None:
+    def __init__(self, capture, cut: int) -> None:
         from physink_tui.input.scripted_sources import CaptureReplaySource
 
         self.device_id = "tablet0"
-        self._source = CaptureReplaySource(capture, realtime=True, speed=clock.speed, clock=clock)
-        self._cut = cut
+        self._parts = (Capture(capture.devices, capture.events[:cut]), Capture(capture.devices, capture.events[cut:]))
+        self._sources = [CaptureReplaySource(part, realtime=True, speed=20.0) for part in self._parts]
 
     def start(self, out) -> None:
         import queue as queue_module
+        import threading
 
         from physink_tui.errors import DeviceError
         from physink_tui.input.sources import SourceEnded
 
-        cut, device = self._cut, self.device_id
+        def run() -> None:
+            for k, source in enumerate(self._sources):
+                items: queue_module.Queue = queue_module.Queue()
+                source.start(items)
+                while not isinstance(item := items.get(), SourceEnded):
+                    out.put(item)
+                source.stop()
+                if k == 0:
+                    out.put(SourceEnded(item.t, self.device_id, DeviceError("tablet0: the device went away")))
+            out.put(SourceEnded(0.0, self.device_id, None))
 
-        class Unplugged(queue_module.Queue):
-            sent = 0
-
-            def put(self, item, block=True, timeout=None) -> None:  # on the replay's thread: stamped as it comes
-                if not isinstance(item, SourceEnded):
-                    if self.sent == cut:
-                        out.put(SourceEnded(item.t, device, DeviceError("tablet0: the device went away")))
-                    self.sent += 1
-                out.put(item)
-
-        self._source.start(Unplugged())
+        threading.Thread(target=run, daemon=True).start()
 
     def stop(self) -> None:
-        self._source.stop()
+        for source in self._sources:
+            source.stop()
 
 
 def test_an_unplugged_tablet_pauses_the_session_and_plugging_it_back_resumes_it(tmp_path: Path) -> None:
+    import time
+
     from physink_tui.input.journal_compose import header_for_capture
-    from physink_tui.input.replay_clock import ReplayClock
     from physink_tui.kiosk.service import Kiosk, KioskSettings
     from physink_tui.render.export import Look
 
@@ -287,9 +288,9 @@ def test_an_unplugged_tablet_pauses_the_session_and_plugging_it_back_resumes_it(
     k = Kiosk(SessionStore(out), default_zones(), KioskSettings(look=Look(160, 100, 10)), lines.append)
     d = capture.devices[0]
     device = JournalDevice("tablet0", d.name, d.bus, d.vid, d.pid, d.descriptor)
-    clock = ReplayClock(speed=20.0)
-    assert k.run(_Unplugging(capture, cut, clock), device, header_for_capture(Capture((d,), ())), replay=True,
-                 clock=clock) == 0
+    start = time.monotonic()
+    assert k.run(_Unplugging(capture, cut), device, header_for_capture(Capture((d,), ())), replay=True,
+                 clock=lambda: (time.monotonic() - start) * 20.0) == 0
     assert any("went away" in line for line in lines)
     (record,) = index(out)  # one session across the unplugging
     assert record["ended"] == "end zone" and record["bodies"] == 2

@@ -128,6 +128,16 @@ async def click(pilot, selector: str) -> None:
     await pilot.click(selector)
 
 
+async def screen_is(pilot, kind: type, guard: float = HANG_GUARD):
+    """Wait until the app's screen is a ``kind`` (a dialog opening); fail after ``guard`` s (a hang)."""
+    deadline = time.monotonic() + guard
+    while not isinstance(pilot.app.screen, kind):
+        if time.monotonic() > deadline:
+            raise AssertionError(f"the screen is {pilot.app.screen!r}, not a {kind.__name__}")
+        await pilot.pause(0.05)
+    return pilot.app.screen
+
+
 async def open_settings(pilot) -> SettingsScreen:
     """Press F2 once the session is up and return the settings screen it opens."""
     await until(pilot, lambda v: True)

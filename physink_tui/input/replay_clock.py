@@ -1,5 +1,5 @@
-"""The input time of a replay paced in real time: a clock that runs with the wall clock but waits at the next recorded
-input's time until that input has been handed over; reads no file, decodes nothing.
+"""The input time of a replay paced in real time (the TUI's journal feed): a clock that runs with the wall clock but
+waits at the next recorded input's time until that input has been handed over; reads no file, decodes nothing.
 
 A runner stamps each input with its clock when the input arrives (`physink_tui.session.runner`). A replay paced by
 the wall clock hands its inputs over late on a loaded machine, and stamped on arrival their times would be the
@@ -18,33 +18,29 @@ from collections.abc import Callable
 
 
 class ReplayClock:
-    """Seconds on ``base`` sped up ``speed`` times, never past the time `hold_at` last named.
+    """Seconds on ``base``, never past the time `hold_at` last named.
 
     Args:
         base: the clock it runs on (seconds; `time.monotonic` by default, a test's own clock).
-        speed: how many of its seconds pass in one of ``base``'s (a replay at 20x: 20).
 
     >>> wall = iter([100.0, 103.0, 103.0, 108.0]).__next__  # base readings: at construction, then one per call
-    >>> clock = ReplayClock(wall, speed=2.0)
-    >>> clock.hold_at(5.0)
-    >>> clock(), clock()  # 6 s on, held at 5; then running free again once released
-    (5.0, 5.0)
+    >>> clock = ReplayClock(wall)
+    >>> clock.hold_at(2.0)
+    >>> clock(), clock()  # 3 s on, held at 2; then running free again once released
+    (2.0, 2.0)
     >>> clock.release(); clock()
-    16.0
+    8.0
     """
 
-    def __init__(self, base: Callable[[], float] = time.monotonic, speed: float = 1.0) -> None:
-        if not speed > 0:
-            raise ValueError(f"speed: expected > 0, got {speed!r}")
+    def __init__(self, base: Callable[[], float] = time.monotonic) -> None:
         self._base = base
-        self.speed = speed
         self._start = base()
         self._ceiling = math.inf
         self._lock = threading.Lock()
 
     def running(self) -> float:
         """The time as the base clock says, held or not."""
-        return (self._base() - self._start) * self.speed
+        return self._base() - self._start
 
     def __call__(self) -> float:
         reading = self.running()
@@ -65,6 +61,6 @@ class ReplayClock:
     def wait_until(self, t: float, stop: threading.Event) -> bool:
         """Wait until the base clock has run to ``t`` (or ``stop`` is set: returns True then)."""
         while (left := t - self.running()) > 0:
-            if stop.wait(left / self.speed):
+            if stop.wait(left):
                 return True
         return stop.is_set()

@@ -15,7 +15,6 @@ from collections.abc import Callable
 
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.pen.sample import PenSample
-from physink_tui.input.replay_clock import ReplayClock
 from physink_tui.input.sources import RawReport, SampleReady, SourceEnded, SourceItem
 
 
@@ -60,26 +59,17 @@ class ProgrammaticPenSource:
 
 class CaptureReplaySource:
     """Plays one device of a capture as RawReports, with the capture's times (plus ``t0``); ``realtime`` paces
-    them by those times, ``speed`` times faster.
-
-    Given a ``clock`` (the runner's, a `ReplayClock` of the same speed), it paces by that clock and holds it at each
-    report's time until the report has been put, so a consumer that stamps on arrival (a `SourcePump` into a runner)
-    stamps the capture's own times, shifted to when the replay began, however loaded the machine.
-    """
+    them by those times, ``speed`` times faster."""
 
     def __init__(self, capture: Capture, device_id: str = "tablet0", device_index: int = 0,
-                 realtime: bool = False, t0: float = 0.0, speed: float = 1.0,
-                 clock: ReplayClock | None = None) -> None:
+                 realtime: bool = False, t0: float = 0.0, speed: float = 1.0) -> None:
         if not speed > 0:
             raise ValueError(f"replay speed must be > 0, got {speed!r}")
-        if clock is not None and not realtime:
-            raise ValueError("a replay clock paces a replay: give it with realtime=True")
         self.device_id = device_id
         self._events = capture.events_for(device_index)
         self._realtime = realtime
         self._speed = speed
         self._t0 = t0
-        self._clock = clock
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
 
@@ -89,9 +79,6 @@ class CaptureReplaySource:
         self._thread.start()
 
     def _run(self, out: queue.Queue[SourceItem]) -> None:
-        if self._clock is not None:
-            self._run_on_clock(out, self._clock)
-            return
         start = time.monotonic()
         first = self._events[0].t if self._events else 0.0
         last_t = self._t0
@@ -104,22 +91,6 @@ class CaptureReplaySource:
                     break
             last_t = self._t0 + event.t
             out.put(RawReport(last_t, event.data, self.device_id))
-        out.put(SourceEnded(last_t, self.device_id, None))
-
-    def _run_on_clock(self, out: queue.Queue[SourceItem], clock: ReplayClock) -> None:
-        first = self._events[0].t if self._events else 0.0
-        origin = clock.running()
-        last_t = self._t0
-        try:
-            for event in self._events:
-                due = origin + (event.t - first)
-                clock.hold_at(due)
-                if clock.wait_until(due, self._stop):
-                    break
-                last_t = self._t0 + event.t
-                out.put(RawReport(last_t, event.data, self.device_id))
-        finally:
-            clock.release()
         out.put(SourceEnded(last_t, self.device_id, None))
 
     def stop(self) -> None:

@@ -11,6 +11,7 @@ import json
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from importlib import resources
 from pathlib import Path
 
 from textual.app import App
@@ -27,6 +28,9 @@ from physink_tui.tui.live import LiveSession
 from physink_tui.tui.pacing import FramePacer
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
+
+STYLESHEET = "physink.tcss"
+"""The panel's styles: package data of ``physink_tui.tui`` (pyproject.toml's package-data lists it)."""
 
 
 @dataclass
@@ -98,7 +102,8 @@ class RunnerFailed(Message):
 class PhysinkApp(App[None]):
     """The control panel. The live session starts on mount (after the recovery question, if any)."""
 
-    CSS_PATH = "physink.tcss"
+    CSS = resources.files(__package__).joinpath(STYLESHEET).read_text("utf-8")
+    """The styles, read as package data (a path beside this file is not there in every installation)."""
     TITLE = "PhysInk"
     ENABLE_COMMAND_PALETTE = False
 
@@ -114,6 +119,8 @@ class PhysinkApp(App[None]):
         self.pacer = FramePacer()
         """When views are drawn (all of them while the UI keeps up)."""
         self._waiting: SessionView | None = None  # a view passed over, drawn by `_catch_up`
+        self.failure: BaseException | None = None
+        """A bug that stopped part of the app (the session's worker, a background job): quitting then exits 1."""
 
     # -- start -----------------------------------------------------------------------------------------------
 
@@ -134,7 +141,8 @@ class PhysinkApp(App[None]):
             found = storage.unfinished_journals(self.options.journal_dir or storage.sessions_dir())
         if found:
             path, journal = found[0]
-            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n"
+            dropped = "" if journal.dropped is None else f"\nIts journal is damaged: {journal.dropped}.\n"
+            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n{dropped}"
                         "Recover it (replay it here and carry on)?")
 
             def answered(yes: bool | None) -> None:
@@ -215,7 +223,12 @@ class PhysinkApp(App[None]):
             self.main.show(view)
 
     def on_runner_failed(self, message: RunnerFailed) -> None:
-        self.push_screen(ErrorModal("Internal error", f"the session stopped: {message.error!r}"))
+        self.failed(message.error, "the session stopped")
+
+    def failed(self, error: BaseException, what: str) -> None:
+        """A bug stopped ``what``: said in a dialog; the app exits with status 1 when the user quits."""
+        self.failure = self.failure or error
+        self.push_screen(ErrorModal("Internal error", f"{what}: {error!r}\nQuitting exits with status 1."))
 
     @property
     def unsaved(self) -> bool:
@@ -257,7 +270,7 @@ class PhysinkApp(App[None]):
 
     def _quit_now(self) -> None:
         self.stop_live()
-        self.exit()
+        self.exit(return_code=1 if self.failure is not None else 0)
 
     def stop_live(self) -> None:
         """Stop the sources and the runner (the journal gets its end); an empty journal is removed."""
