@@ -285,3 +285,118 @@ def test_listen_names_a_truncated_or_header_only_wav(tmp_path, cut, fragment) ->
     path = tmp_path / "cut.wav"
     path.write_bytes(cut(WAV.read_bytes()))
     one_line_error(physink("listen", str(path)), str(path), fragment)
+
+
+# --- kiosk --------------------------------------------------------------------------------------------------------
+
+
+def kiosk(out: Path, capture: Path | str, *extra: str, speed: str = "100") -> subprocess.CompletedProcess[str]:
+    return physink("kiosk", "--out", str(out), "--replay", str(capture), "--speed", speed, "--video-size", "160x100",
+                   *extra)
+
+
+@pytest.mark.parametrize("what", ["missing", "folder"])
+def test_kiosk_replay_of_a_missing_file_or_a_folder_is_one_line(tmp_path, what) -> None:
+    capture = tmp_path / "none.hid" if what == "missing" else tmp_path
+    one_line_error(kiosk(tmp_path / "out", capture), str(capture), "cannot read the capture")
+
+
+def test_kiosk_names_a_device_value_that_can_never_be_a_tablet(tmp_path) -> None:
+    done = physink("kiosk", "--out", str(tmp_path / "out"), "--device", "zzzz:yyyy")
+    one_line_error(done, "--device 'zzzz:yyyy'", "VID:PID in hex", status=2)
+
+
+def test_kiosk_says_when_a_capture_records_no_session(tmp_path) -> None:
+    capture = tmp_path / "hover.hid"
+    lines = EGG_CAPTURE.read_text().splitlines()
+    capture.write_text("\n".join([*(line for line in lines if not line.startswith("E:")),
+                                  "E: 000001.000000 3 01 02 03"]) + "\n")
+    done = kiosk(tmp_path / "out", capture)
+    assert done.returncode == 1 and "Traceback" not in done.stderr
+    assert "the capture ended without a session" in done.stdout
+
+
+def _journals(out: Path) -> list[bytes]:
+    return [(folder / "journal.physink.jsonl").read_bytes() for folder in sorted(p for p in out.iterdir()
+                                                                                  if p.is_dir())]
+
+
+def test_the_bundled_capture_records_the_same_session_at_any_speed(tmp_path) -> None:
+    recorded = {}
+    for speed in ("5", "20", "100"):
+        done = kiosk(tmp_path / speed, EGG_CAPTURE, speed=speed)
+        assert done.returncode == 0, done.stdout + done.stderr
+        recorded[speed] = _journals(tmp_path / speed)
+    assert len(recorded["5"]) == 1 and recorded["5"] == recorded["20"] == recorded["100"]
+    summaries = [json.loads(line) for speed in recorded for line in (tmp_path / speed / "index.jsonl").read_text()
+                 .splitlines()]
+    assert len({(s["seconds"], s["bodies"], s["components"]) for s in summaries}) == 1, summaries
+
+
+def test_kiosk_retention_never_retires_the_session_just_recorded(tmp_path) -> None:
+    done = kiosk(tmp_path / "out", EGG_CAPTURE, "--max-disk", "1k")
+    assert done.returncode == 0, done.stdout + done.stderr
+    folders = [p for p in (tmp_path / "out").iterdir() if p.is_dir()]
+    assert len(folders) == 1 and (folders[0] / "session.json").exists() and "retired" not in done.stdout
+
+
+def test_kiosk_recovery_keeps_the_lines_before_a_bad_one_and_says_what_it_dropped(tmp_path) -> None:
+    first = tmp_path / "first"
+    assert kiosk(first, EGG_CAPTURE).returncode == 0
+    lines = _journals(first)[0].splitlines(keepends=True)
+    out = tmp_path / "out"
+    (out / "20260101T000000Z").mkdir(parents=True)
+    (out / "20260101T000000Z" / "journal.physink.jsonl").write_bytes(b"".join(lines[:-10]) + b"garbage{\n"
+                                                                      + b"".join(lines[-10:]))
+    silent = tmp_path / "silent.hid"
+    silent.write_text("\n".join(line for line in EGG_CAPTURE.read_text().splitlines() if not line.startswith("E:")))
+    done = kiosk(out, silent)
+    assert "Traceback" not in done.stderr
+    said = [line for line in done.stdout.splitlines() if "recovering unfinished session" in line]
+    assert said == [f"kiosk: recovering unfinished session 20260101T000000Z: {len(lines) - 11} inputs; dropped "
+                    f"line {len(lines) - 9} and the 10 after it (line {len(lines) - 9}: not valid JSON (Expecting "
+                    "value at column 1))"], done.stdout
+    summary = json.loads((out / "20260101T000000Z" / "session.json").read_text())
+    assert summary["bodies"] >= 1 and summary["dropped"].startswith(f"dropped line {len(lines) - 9}")
+    again = kiosk(out, silent)
+    assert "recovering" not in again.stdout  # finished once: never retried
+
+
+# --- tui ----------------------------------------------------------------------------------------------------------
+
+
+def test_tui_starts_beside_a_dangling_journal_symlink_and_offers_a_damaged_journal(tmp_path) -> None:
+    import asyncio
+
+    from tui_helpers import tui_app
+
+    from physink_tui.tui.screens.modals import ConfirmModal
+
+    sessions = tmp_path / "sessions"
+    sessions.mkdir()
+    (sessions / "gone.physink.jsonl").symlink_to(tmp_path / "nowhere.physink.jsonl")
+    lines = JOURNAL.read_bytes().splitlines(keepends=True)
+    (sessions / "damaged.physink.jsonl").write_bytes(b"".join(lines[:30]) + b"{not json\n" + b"".join(lines[30:40]))
+
+    async def start() -> str:
+        app = tui_app(tmp_path, recover=True)
+        async with app.run_test(size=(120, 40)) as pilot:
+            deadline = time.monotonic() + GUARD
+            while not isinstance(app.screen, ConfirmModal):
+                assert time.monotonic() < deadline, "no recovery question"
+                await pilot.pause(0.05)
+            return str(app.screen._question)
+
+    question = asyncio.run(start())
+    assert "damaged.physink.jsonl (29 inputs)" in question and "dropped line 31 and the 10 after it" in question
+
+
+def test_a_bad_setting_is_named_by_its_key(tmp_path) -> None:
+    from physink_tui.errors import PhysinkError
+    from physink_tui.tui.config import load_config
+
+    path = tmp_path / "config.json"
+    path.write_text('{"area": [0, 0, "x", 1]}')
+    with pytest.raises(PhysinkError) as caught:
+        load_config(path)
+    assert str(caught.value) == f'{path}: area[2]: expected a number in [0, 1], got "x"'
