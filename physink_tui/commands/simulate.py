@@ -4,8 +4,11 @@ demonstrated timeline (`physink_tui.sim`); the rollouts run in local processes o
 cluster (`physink_tui.sim_run.dask_executor`; the two options exclude each other).
 
 Writes ``DIR/result.json`` (``found``, both distances, ``rollouts``, ``wall_seconds``, ``parameters``,
-``verdict``), ``DIR/timeline.json`` and ``timeline.txt`` (the best candidate's simulated timeline) and
-``DIR/project.json`` (the scene with the parameters found applied, and the simulated timeline; the initial
+``verdict``, the ``rule`` compared by -- equivalent up to the last demonstrated event, as the TUI and ``physink
+equiv DEMO SIM --up-to-demonstrated`` compare -- and ``afterwards``, what the simulation does after that event, or
+null), ``DIR/timeline.json`` and ``timeline.txt`` (the best candidate's simulated timeline) and
+``DIR/project.json`` (the scene with the parameters found applied, the simulated timeline, and the demonstration
+kept beside it, so ``physink equiv DIR/project.json --up-to-demonstrated`` compares them again; the initial
 velocities are in result.json only). Deterministic for a given seed and budget whatever the worker count or
 executor; only ``wall_seconds`` varies. Ctrl-C writes the best result so far and says so (exit 130). The new files
 are written beside the last run's and renamed over them at the end, so a run killed meanwhile (SIGTERM, SIGKILL)
@@ -32,6 +35,8 @@ from physink_tui.sim.search import Search
 from physink_tui.sim.verdict import verdict
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
+from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
+from physink_tui.timeline.up_to_demonstrated import verdict as verdict_words
 
 EXIT_INTERRUPTED = 130
 OUTPUTS = ("result.json", "timeline.json", "timeline.txt", "project.json")
@@ -128,18 +133,23 @@ def run(args: argparse.Namespace) -> int:
         "wall_seconds": round(wall, 3),
         "parameters": parameters_object(best),
         "verdict": text,
+        "rule": f"equivalent {RULE}",
+        "afterwards": afterwards(comparison, result.timeline, problem.scene.names()),
         "differences": list(comparison.reasons),
     }
     try:
-        write_session_outputs(folder, apply(problem.scene, best), result.timeline, problem.canvas, vocabulary)
+        write_session_outputs(folder, apply(problem.scene, best), result.timeline, problem.canvas, vocabulary,
+                              problem.timeline)  # the project keeps the demonstration the simulation was found for
         folder.write("result.json", json.dumps(obj, indent=2, ensure_ascii=False, allow_nan=False) + "\n")
         folder.commit()
     finally:
         folder.discard()  # what a failure left staged (nothing after the commit)
     state = "found" if found else "not found"
-    sys.stdout.write(f"{state}: qualitative distance {obj['qualitative_distance']}, quantitative "
-                     f"{obj['quantitative_distance']}, {search.rollouts} rollouts ({search.exploded} exploded) in "
-                     f"{wall:.1f} s; wrote {folder.path}\n")
+    sys.stdout.write(f"{state}: qualitative distance {obj['qualitative_distance']} ({verdict_words(comparison)}), "
+                     f"quantitative {obj['quantitative_distance']}, {search.rollouts} rollouts ({search.exploded} "
+                     f"exploded) in {wall:.1f} s; wrote {folder.path}\n")
+    if obj["afterwards"]:
+        sys.stdout.write(f"{obj['afterwards']}\n")
     if interrupted:
         sys.stdout.write("interrupted: wrote the best result so far\n")
         return EXIT_INTERRUPTED

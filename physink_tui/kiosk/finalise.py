@@ -60,7 +60,7 @@ def finalise(folder: Path, session: Session, ending: Ending, look: Look,
     """
     out = OutputFolder(folder)
     scene, timeline = session.scene, session.timeline
-    write_session_outputs(out, scene, timeline, session.canvas, session.vocabulary_lines())
+    write_session_outputs(out, scene, timeline, session.canvas, session.vocabulary_lines(), session.demonstration)
     out.write(NARRATION, narration_lines(timeline, scene.names()))
     Export(scene, timeline, session.canvas, look).video(out.file(VIDEO))
     events = [] if timeline is None else [ev for ev in timeline.events if ev.type != "start"]

@@ -46,9 +46,11 @@ from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
 from physink_tui.kiosk.hot_zones import HotZones
 from physink_tui.kiosk.store import SessionStore
 from physink_tui.render.export import Look
+from physink_tui.session.modes.base import ModeName
 from physink_tui.session.runner import SessionRunner
 from physink_tui.session.session import Session
 from physink_tui.session.source_pump import SourcePump
+from physink_tui.session.view import SessionView
 
 MIN_FREE_BYTES = 50_000_000
 """A session starts only with this much free space in the output folder (a session's video is a few MB)."""
@@ -82,8 +84,7 @@ class _Live:
         self.writer = JournalWriter.create(folder / JOURNAL, header)
         self.session = Session.from_header(header)
         self.session.journal = self.writer
-        self.runner: SessionRunner = SessionRunner(self.session, clock=self.clock)
-        self.mode = "sketch"
+        self.runner: SessionRunner[SessionView] = SessionRunner(self.session, clock=self.clock)
         self.told_stopped = False
         self.runner.start()
 
@@ -303,11 +304,11 @@ class Kiosk:
             self._closing.append((live, ending))
             self._live = None
             return
-        if action == "mode":
-            action = "demo" if live.mode == "sketch" else "sketch"
+        if action == "mode":  # the mode the session's last view shows (a press's view goes out before the next)
+            view = live.runner.latest_view()
+            demonstrating = view is not None and view.mode == ModeName.DEMO
+            action = ModeName.SKETCH if demonstrating else ModeName.DEMO
         command = ZONE_COMMANDS[action]
-        if command[0] == "mode":
-            live.mode = command[1]
         live.runner.submit(CommandEntry(0.0, command[0], command[1:]))
         self.log(f"kiosk: {' '.join(command)}")
 

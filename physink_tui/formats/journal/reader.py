@@ -88,7 +88,7 @@ def read_journal(path: str | os.PathLike[str], *, salvage: bool = False) -> Jour
         JournalError: the file cannot be read, has no complete header, or (unless salvaging) has a malformed
             complete line (``<path>: line 12: key "t": expected a number >= the previous t 3.5, got 3.2``).
     """
-    with JournalReader(path, salvage=salvage) as reader:
+    with JournalReader(path, salvage=True) if salvage else iter_journal(path) as reader:
         entries = tuple(reader)
     return Journal(reader.path, reader.header, entries, tuple(reader.warnings), reader.truncated, reader.dropped)
 

@@ -155,6 +155,12 @@ def body_shapes(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
     raise SceneError(f"body {spec.id!r} has shape {spec.shape!r}; expected box, circle, ellipse, polygon or polyline")
 
 
+def body_area(spec: Body) -> float:
+    """The area of a body's collision shapes (canvas units²): its mass at density 1.0. A polyline's thin segments
+    count with their rounded thickness."""
+    return float(sum(shape.area for shape in body_shapes(pymunk.Body(), spec)))
+
+
 def outline_problem(spec: Body) -> str | None:
     """What keeps the physics from making ``spec``'s shapes, in words (None: nothing); the checks `body_shapes`
     makes, without building anything, so a project can be refused when it is read.
