@@ -67,7 +67,8 @@ def mapping_for(device: JournalDevice, zones: HotZones) -> TabletMapping:
                          area=zones.area)
 
 
-def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
+def _replay_source(path: str, speed: float, zones: HotZones,
+                   idle_s: float) -> tuple[PenSource, JournalDevice, JournalHeader]:
     try:
         capture = Capture.from_file(path)
     except OSError as exc:
@@ -77,7 +78,9 @@ def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource,
     first = capture.devices[0]
     device = JournalDevice(DEVICE_ID, first.name, first.bus, first.vid, first.pid, first.descriptor)
     header = header_for_capture(Capture((first,), ()), mapping_for(device, zones))
-    return CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed), device, header
+    # a gap longer than --idle ends the session whatever its length: the replay does not wait it out in full
+    source = CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed, max_gap=idle_s + 1.0)
+    return source, device, header
 
 
 def _wait_for(open_fn: Callable[[], T], kiosk: Kiosk) -> T:
@@ -152,7 +155,7 @@ def run(args: argparse.Namespace) -> int:
     ears = _ears(args, kiosk, kiosk.clock)  # a replay's clock is the capture's own (`Kiosk.run`)
     try:
         if args.replay is not None:
-            source, device, header = _replay_source(args.replay, args.speed, zones)
+            source, device, header = _replay_source(args.replay, args.speed, zones, args.idle)
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
             return kiosk.run(source, device, header, replay=True)
         if args.serial:
