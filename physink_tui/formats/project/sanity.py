@@ -47,6 +47,8 @@ def check_project(project: Project, where: Place | str) -> Project:
     if isinstance(where, str):
         where = Place(where, SceneError)
     check_values(project.scene, project.canvas, project.timeline, where)
+    if project.demonstration is not None:
+        _timeline(project.demonstration, project.scene, where, "demonstration.events")
     return project
 
 
