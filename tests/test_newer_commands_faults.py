@@ -304,6 +304,11 @@ def test_kiosk_replay_of_a_missing_file_or_a_folder_is_one_line(tmp_path, what) 
 def test_kiosk_names_a_device_value_that_can_never_be_a_tablet(tmp_path) -> None:
     done = physink("kiosk", "--out", str(tmp_path / "out"), "--device", "zzzz:yyyy")
     one_line_error(done, "--device 'zzzz:yyyy'", "VID:PID in hex", status=2)
+    (tmp_path / "plain").write_text("not a device")
+    done = physink("kiosk", "--out", str(tmp_path / "out"), "--device", str(tmp_path / "plain"))
+    one_line_error(done, f"--device '{tmp_path / 'plain'}': not a device node", status=2)
+    done = physink("kiosk", "--out", str(tmp_path / "out"), "--device", "/dev/null")  # a device, but no tablet
+    one_line_error(done, "/dev/null: its report descriptor is unknown")
 
 
 def test_kiosk_says_when_a_capture_records_no_session(tmp_path) -> None:

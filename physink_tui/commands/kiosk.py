@@ -102,9 +102,11 @@ def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSo
     """Waits for the tablet (hot-plug), then a source that survives it being unplugged and plugged back."""
     reader = _wait_for(lambda: open_reader(spec, DEVICE_ID), kiosk)
     info = reader.info
-    if not info.descriptor:
+    if info is None or not info.descriptor:
         reader.stop()
-        raise DeviceError(f"{info.path}: its report descriptor is unknown, and a journal needs one")
+        where = spec if info is None else info.path
+        raise DeviceError(f"{where}: its report descriptor is unknown (is it a tablet's hidraw node?), and a journal "
+                          "needs one")
     device = JournalDevice(DEVICE_ID, info.name or None, info.bus, info.vid, info.pid, info.descriptor)
     mapping = mapping_for(device, zones)
     thresholds = TipThresholds()
