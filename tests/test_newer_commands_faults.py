@@ -77,9 +77,6 @@ BAD_PROJECTS = {
     "radius-1e300": (lambda d: _ball(d).update(radius=1e300), "components[0].radius"),
     "event-ends-at-1e8": (lambda d: d["timeline"]["events"][-1].update(t1=1e8),
                           "timeline.events[3].t1: expected a time from 0 to 3600 s, got 100000000.0"),
-    "missing-body": (lambda d: d["timeline"]["events"][1]["components"][0].update(id="b99"),
-                     'timeline.events[1].components[0].id: expected the id of a component of the project\'s scene, '
-                     'got "b99"'),
     "zero-area": (lambda d: _box(d).update(outline=[[0, 0], [10, 0], [20, 0]]),
                   "components[1].outline: expected an outline the physics can use (the outline encloses no area)"),
     "self-intersecting": (lambda d: _box(d).update(shape="polygon", outline=[[0, 0], [10, 10], [10, 0], [0, 10]]),
@@ -111,6 +108,17 @@ def test_the_same_check_refuses_a_project_loaded_in_a_session(replayed, tmp_path
     assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr
     assert "load p.json: components[0].radius: expected a number from 0.01" in done.stdout + done.stderr
     assert json.loads((tmp_path / "out" / "project.json").read_text())["components"] == []
+
+
+def test_a_timeline_naming_a_body_the_scene_lacks_is_drawn_with_a_word_and_not_simulated(replayed, tmp_path) -> None:
+    # What a user gets by erasing a body after demonstrating and saving: still their work, so it loads.
+    project = write(tmp_path / "p.json", replayed,
+                    lambda d: d["timeline"]["events"][1]["components"][0].update(id="b99"))
+    exported = physink("export", str(project), "--still", str(tmp_path / "x.png"))
+    assert exported.returncode == 0 and "Traceback" not in exported.stderr
+    assert "export: the timeline names 'b99', which the scene of" in exported.stderr
+    simulated = physink("simulate", str(project), "--out", str(tmp_path / "sim"), "--workers", "1")
+    one_line_error(simulated, str(project), "the demonstration moves 'b99', which the scene does not have")
 
 
 def test_simulate_of_a_timeline_with_only_its_start_says_so(replayed, tmp_path) -> None:
