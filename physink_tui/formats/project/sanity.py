@@ -18,7 +18,7 @@ from physink_tui.errors import SceneError
 from physink_tui.formats.json_checks import Place
 from physink_tui.formats.project.codec import Project
 from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
-from physink_tui.scene.physics.build import outline_problem
+from physink_tui.scene.physics.outlines import outline_problem
 from physink_tui.timeline.events import Timeline
 
 CANVAS_MIN = 1.0
