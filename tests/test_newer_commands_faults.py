@@ -346,6 +346,30 @@ def test_the_bundled_capture_records_the_same_session_at_any_speed(tmp_path) -> 
     assert len({(s["seconds"], s["bodies"], s["components"]) for s in summaries}) == 1, summaries
 
 
+def test_quick_mode_presses_record_the_same_session_at_any_speed(tmp_path) -> None:
+    # Each press toggles the mode the session shows: a fast replay must not read it before the last press is handled.
+    from kiosk.captures import END, MODE, on_canvas, visits, write_capture
+
+    from physink_tui.formats.journal.entries import CommandEntry
+    from physink_tui.formats.journal.reader import read_journal
+    from physink_tui.input.virtual_pen import Stroke
+
+    capture = write_capture(visits([Stroke.circle(on_canvas(0.2, 0.2), 0.04, aspect=1.6),
+                                    Stroke.box(*on_canvas(0.1, 0.6), *on_canvas(0.5, 0.66)),
+                                    Stroke(MODE), Stroke(MODE), Stroke(MODE),
+                                    Stroke((on_canvas(0.2, 0.2), on_canvas(0.3, 0.4), on_canvas(0.32, 0.55))),
+                                    Stroke(END)]), tmp_path / "modes.hid")
+    journals = []
+    for speed in ("20", "10000"):
+        assert kiosk(tmp_path / speed, capture, speed=speed).returncode == 0
+        (folder,) = [p for p in (tmp_path / speed).iterdir() if p.is_dir()]
+        journals.append((folder / "journal.physink.jsonl").read_bytes())
+        modes = [e.args for e in read_journal(folder / "journal.physink.jsonl").entries
+                 if isinstance(e, CommandEntry) and e.name == "mode"]
+        assert modes == [("demo",), ("sketch",), ("demo",)], (speed, modes)
+    assert journals[0] == journals[1]
+
+
 def test_kiosk_retention_never_retires_the_session_just_recorded(tmp_path) -> None:
     done = kiosk(tmp_path / "out", EGG_CAPTURE, "--max-disk", "1k")
     assert done.returncode == 0, done.stdout + done.stderr

@@ -56,6 +56,8 @@ MIN_FREE_BYTES = 50_000_000
 """A session starts only with this much free space in the output folder (a session's video is a few MB)."""
 POLL_S = 0.05
 """How often the main thread looks at the sessions' ends (seconds)."""
+HANDLED_WAIT_S = 5.0
+"""At most this long a mode press waits for the session to have handled the inputs before it (a tick or two)."""
 VIDEO_LOOK = Look(960, 600, 30)
 """The sessions' videos: smaller than an export's, so finalising keeps up with visitors."""
 ZONE_COMMANDS = {"undo": ("undo",), "redo": ("redo",), "clear": ("clear",), "play": ("play",), "stop": ("stop",),
@@ -304,7 +306,8 @@ class Kiosk:
             self._closing.append((live, ending))
             self._live = None
             return
-        if action == "mode":  # the mode the session's last view shows (a press's view goes out before the next)
+        if action == "mode":  # the mode the session's view shows once it has handled what came before the press
+            live.runner.wait_handled(HANDLED_WAIT_S)  # (a fast replay must not outrun it: the same at any speed)
             view = live.runner.latest_view()
             demonstrating = view is not None and view.mode == ModeName.DEMO
             action = ModeName.SKETCH if demonstrating else ModeName.DEMO

@@ -29,6 +29,8 @@ class StampingInbox:
         self._last = start_t
         self._entries: list[JournalEntry] = []
         self._closed_at: float | None = None
+        self.submitted = 0
+        """Entries queued so far (read without the lock: it only grows)."""
         self._lock = threading.Lock()
         self._arrived = threading.Condition(self._lock)
         """Notified whenever an entry is queued or the inbox closes (the worker waits on it)."""
@@ -58,6 +60,7 @@ class StampingInbox:
             stamped = replace(entry, t=self._now() if at is None else max(self._last, min(at, self._now())))
             self._last = stamped.t
             self._entries.append(stamped)
+            self.submitted += 1
             self._arrived.notify()
             return stamped
 
