@@ -385,6 +385,8 @@ def test_kiosk_recovery_keeps_the_lines_before_a_bad_one_and_says_what_it_droppe
     (out / "20260101T000000Z").mkdir(parents=True)
     (out / "20260101T000000Z" / "journal.physink.jsonl").write_bytes(b"".join(lines[:-10]) + b"garbage{\n"
                                                                       + b"".join(lines[-10:]))
+    (out / "20250101T000000Z").mkdir()
+    (out / "20250101T000000Z" / "journal.physink.jsonl").write_bytes(b'{"format": "nope"}\n' + lines[1])
     silent = tmp_path / "silent.hid"
     silent.write_text("\n".join(line for line in EGG_CAPTURE.read_text().splitlines() if not line.startswith("E:")))
     done = kiosk(out, silent)
@@ -395,8 +397,11 @@ def test_kiosk_recovery_keeps_the_lines_before_a_bad_one_and_says_what_it_droppe
                     "value at column 1))"], done.stdout
     summary = json.loads((out / "20260101T000000Z" / "session.json").read_text())
     assert summary["bodies"] >= 1 and summary["dropped"].startswith(f"dropped line {len(lines) - 9}")
+    assert "cannot recover 20250101T000000Z" in done.stdout
+    assert "kept as journal.physink.jsonl.unreadable" in done.stdout
+    assert (out / "20250101T000000Z" / "journal.physink.jsonl.unreadable").exists()  # set aside, never removed
     again = kiosk(out, silent)
-    assert "recovering" not in again.stdout  # finished once: never retried
+    assert "kiosk: recovering" not in again.stdout and "cannot recover" not in again.stdout  # never retried
 
 
 # --- tui ----------------------------------------------------------------------------------------------------------

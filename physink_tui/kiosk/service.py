@@ -140,6 +140,16 @@ class Kiosk:
         for folder in self.store.unfinished():
             try:
                 journal = read_journal(folder / JOURNAL, salvage=True)
+            except JournalError as exc:  # no header to replay it with: kept aside, not tried at every start
+                try:
+                    kept = self.store.set_aside(folder).name
+                except OSError as error:
+                    self.log(f"kiosk: cannot recover {folder.name}: {exc} (nor set it aside: {error.strerror})")
+                    continue
+                self.log(f"kiosk: cannot recover {folder.name}: {exc}; its journal is kept as {kept} and not tried "
+                         "again")
+                continue
+            try:
                 lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
                 lost += f"; {journal.dropped}" if journal.dropped is not None else ""
                 self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
