@@ -154,7 +154,9 @@ def run(args: argparse.Namespace) -> int:
         return 2
     kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
-    ears = _ears(args, kiosk, kiosk.clock)  # a replay's clock is the capture's own (`Kiosk.run`)
+    if args.replay is not None:
+        kiosk.use_capture_clock()  # a replay's clock is the capture's own, the microphone's too
+    ears = _ears(args, kiosk, kiosk.clock)
     try:
         if args.replay is not None:
             source, device, header = _replay_source(args.replay, args.speed, zones, args.idle)

@@ -173,12 +173,12 @@ class Kiosk:
 
         A replay's clock is the capture's own (the time of its latest report; ``clock`` is not used), so the
         sessions it records are the same whatever pace the source plays it at: ``--speed`` changes only how long
-        the replay takes. Returns 1 when a replay recorded no session (the capture has no report that touches).
+        the replay takes. Returns 1 when the pen never touched during a replay (nothing was recorded).
         """
         self._finaliser.start()
         self._controls = ControlFilter(device, self.zones, TipThresholds(header.tip_down, header.tip_up))
-        self._replay = replay
         if replay:
+            self.use_capture_clock()
             clock = self.capture_time
         self._header, self._clock, self._mapping = header, clock, mapping
         self._last_input = clock()
@@ -203,6 +203,12 @@ class Kiosk:
                      "tablet's drawing area (nothing was recorded)")
             return 1
         return 0
+
+    def use_capture_clock(self) -> None:
+        """From now on the kiosk's clock is a replayed capture's (`run` with ``replay`` does it; call it earlier so
+        the listening thread starts on that clock too)."""
+        self._replay = True
+        self._clock = self.capture_time
 
     def capture_time(self) -> float:
         """A replay's clock: the capture time of its latest report."""
