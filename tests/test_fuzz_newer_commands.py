@@ -281,9 +281,15 @@ def recorded(tmp_path_factory) -> Path:
     return out
 
 
-@fuzz(8)
-@given(capture_text(), st.integers(min_value=0, max_value=10**6))
-def test_kiosk_on_mutated_captures_and_journals(recorded, tmp_path_factory, capture: str, cut: int) -> None:
+ZONES = {"area": [0.0, 0.1, 1.0, 1.0], "zones": [{"action": "mode", "x0": 0.0, "y0": 0.0, "x1": 0.25, "y1": 0.1},
+                                               {"action": "end", "x0": 0.75, "y0": 0.0, "x1": 1.0, "y1": 0.1}],
+         "pad": {"1": "mode", "4": "end"}}
+
+
+@fuzz(10)
+@given(capture_text(), st.integers(min_value=0, max_value=10**6), st.none() | MUTATIONS)
+def test_kiosk_on_mutated_captures_and_journals(recorded, tmp_path_factory, capture: str, cut: int,
+                                                zones_draws) -> None:
     folder = tmp_path_factory.mktemp("kiosk")
     out = folder / "out"
     shutil.copytree(recorded, out)
@@ -298,16 +304,21 @@ def test_kiosk_on_mutated_captures_and_journals(recorded, tmp_path_factory, capt
                                                        + b"".join(journal[at:at + 5])[: cut % 50])
     path = folder / "c.hid"
     path.write_text(capture)
+    zones = []
+    if zones_draws is not None:  # a hot zones file too, mutated
+        (folder / "zones.json").write_text(json.dumps(_mutated(ZONES, zones_draws)))
+        zones = ["--hot-zones", str(folder / "zones.json")]
     done = subprocess.run([sys.executable, "-m", "physink_tui", "kiosk", "--out", str(out), "--replay", str(path),
-                           "--speed", "1000", "--video-size", "160x100"], env=ENV, capture_output=True, text=True,
-                          timeout=GUARD)
+                           "--speed", "1000", "--video-size", "160x100", *zones], env=ENV, capture_output=True,
+                          text=True, timeout=GUARD)
     assert done.returncode in (0, 1) and "Traceback" not in done.stderr + done.stdout, done.stderr
     if done.returncode == 1:
         assert len([line for line in done.stderr.splitlines() if line.startswith("physink")]) <= 1, done.stderr
     assert path.read_text() == capture
     assert {p.name: p.read_bytes() for p in session.iterdir()} == earlier
     assert (out / "index.jsonl").read_bytes().startswith(index)
-    assert (unfinished / "session.json").exists()  # recovered from the lines before the damage
+    if "physink: " not in done.stderr:  # (a bad zones file is refused before anything else)
+        assert (unfinished / "session.json").exists()  # recovered from the lines before the damage
 
 
 # --- tui ----------------------------------------------------------------------------------------------------------
