@@ -442,3 +442,25 @@ def test_a_bad_setting_is_named_by_its_key(tmp_path) -> None:
     with pytest.raises(PhysinkError) as caught:
         load_config(path)
     assert str(caught.value) == f'{path}: area[2]: expected a number in [0, 1], got "x"'
+
+
+def test_physink_tui_starts_beside_a_dangling_symlink_and_offers_the_damaged_journal(tmp_path) -> None:
+    # `physink tui` in a terminal, as a person starts it (a pty read through a terminal emulator).
+    from pty_terminal import PtyProgram
+
+    sessions = tmp_path / "data" / "physink" / "sessions"
+    sessions.mkdir(parents=True)
+    (sessions / "gone.physink.jsonl").symlink_to(tmp_path / "nowhere.physink.jsonl")
+    lines = JOURNAL.read_bytes().splitlines(keepends=True)
+    (sessions / "damaged.physink.jsonl").write_bytes(b"".join(lines[:30]) + b"{not json\n" + b"".join(lines[30:40]))
+    env = {k: v for k, v in os.environ.items() if k not in ("TMUX", "PHYSINK_GRAPHICS")}
+    env.update(TERM="xterm-256color", PYTHONPATH=str(ROOT), XDG_DATA_HOME=str(tmp_path / "data"),
+               XDG_CONFIG_HOME=str(tmp_path / "config"))
+    with PtyProgram([sys.executable, "-m", "physink_tui", "tui"], env=env, cwd=tmp_path) as tui:
+        tui.wait_for(lambda s: "damaged.physink.jsonl" in s and "damaged:" in s and "Recover" in s,
+                     "the recovery question naming the damaged journal", guard=GUARD)
+        tui.send(b"n")  # start afresh: the journal is kept, renamed, and not offered again
+        tui.wait_for(lambda s: "Recover" not in s, "the control panel", guard=GUARD)
+        tui.send(b"q")
+        assert tui.wait_exit(guard=GUARD) == 0
+    assert (sessions / "damaged.physink.jsonl.recovered").exists() and (sessions / "gone.physink.jsonl").is_symlink()
