@@ -263,7 +263,11 @@ def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: 
             for built in c.build():
                 seq += 1
                 heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
-        elif _inside(c.geometry, lo, hi) and _keeps_the_outline(c, raw, diag):
+        elif not _inside(c.geometry, lo, hi):
+            if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
+                seq += 1
+                heapq.heappush(heap, (score, seq, c.fallback))
+        elif _keeps_the_outline(c, raw, diag):
             kept.append((score, c))
     if not kept:
         return Recognition(None, 0.0, None, (), "no shape fits the stroke")
