@@ -32,7 +32,8 @@ def recorded(path: str) -> tuple[JournalHeader, tuple[JournalEntry, ...]]:
 
 
 def open_tui(options: object) -> int:
-    """Runs the app until the user quits; exit status 0 (1 when stdout is no terminal)."""
+    """Runs the app until the user quits; its exit status: 0, or 1 when it crashed (Textual has shown the
+    traceback) or a bug stopped part of it (`PhysinkApp.failed`)."""
     if not (sys.stdout.isatty() and sys.stdin.isatty()):
         raise PhysinkError("physink tui needs a terminal (stdin and stdout); use physink replay or physink demo "
                            "--headless to run without one")
@@ -41,8 +42,9 @@ def open_tui(options: object) -> int:
 
     options.graphics = choose()  # type: ignore[attr-defined]  # before Textual owns the terminal
     options.cell = cell_pixels()  # type: ignore[attr-defined]
-    make_app(options).run()  # type: ignore[arg-type]
-    return 0
+    app = make_app(options)  # type: ignore[arg-type]
+    app.run()
+    return app.return_code or 0
 
 
 def run(args: argparse.Namespace) -> int:

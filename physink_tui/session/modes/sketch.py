@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from physink_tui.input.pen.gestures import Dwell, Gesture, PenDown, StrokeEnded, Tap
 from physink_tui.scene.components import Body, Joint, Scene
@@ -22,9 +22,8 @@ from physink_tui.scene.physics.overlaps import clear_overlaps
 from physink_tui.scene.physics.state import Pose
 from physink_tui.scene.recognition.primitives import Recognition
 from physink_tui.scene.recognition.recognize import recognize_stroke
-from physink_tui.session.history import Document
 from physink_tui.session.modes.adjust import AdjustMode
-from physink_tui.session.modes.base import Host, Mode
+from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.session.outcomes import erased, stroke_outcome
 from physink_tui.timeline.events import Timeline
 
@@ -58,7 +57,7 @@ class PendingStroke:
 class SketchMode:
     """Strokes, taps, the eraser and dwells while sketching."""
 
-    name = "sketch"
+    name = ModeName.SKETCH
     finished = False
 
     def __init__(self, host: Host) -> None:
@@ -190,7 +189,7 @@ class SketchMode:
         for note in notes:
             self.host.tell(note, t)
         if scene != self._scene:
-            self.host.amend(Document(scene, self.host.document.timeline))
+            self.host.amend(replace(self.host.document, scene=scene))
 
     def _apply(self, recognition: Recognition, strokes: list[Points], what: str, t: float) -> None:
         before = self._scene
@@ -201,7 +200,7 @@ class SketchMode:
         if result.message:
             self.host.tell(result.message, t)
         if result.scene != before:
-            self.host.commit(Document(result.scene, self.host.document.timeline), f"{result.action}: {what}")
+            self.host.commit(replace(self.host.document, scene=result.scene), f"{result.action}: {what}")
             if result.created:
                 self.last_created = result.created[-1]
         # a body drawn into others waits one stroke: a pin or an X drawn next may join it where it is
@@ -226,6 +225,6 @@ class SketchMode:
             found = bodies_at(scene, point, near=near)
             if found:
                 gone = (found[0].id, *scene.attached_to(found[0].id))
-                self.host.commit(Document(scene.remove(*gone), self.host.document.timeline), f"erase: {found[0].id}")
+                self.host.commit(replace(self.host.document, scene=scene.remove(*gone)), f"erase: {found[0].id}")
                 self.host.tell(erased(scene, gone), t, "outcome")
                 return
