@@ -148,4 +148,7 @@ def round_shape(work: np.ndarray) -> Candidate | None:
         return None
     rss = float(np.sum(ellipse_distances(work, centre, rx, ry, angle) ** 2))
     geometry, kind = round_geometry(ellipse)
-    return Candidate(kind, geometry, rss, 3 if kind == "circle" else 5)
+    if kind == "circle":  # rounded off to a circle, a slightly egg-shaped loop pokes out: the ellipse drawn is kept
+        drawn, _ = round_geometry(ellipse, circle_ratio=math.inf)
+        return Candidate(kind, geometry, rss, 3, Candidate("ellipse", drawn, rss, 5))
+    return Candidate(kind, geometry, rss, 5)
