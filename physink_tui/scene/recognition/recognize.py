@@ -194,7 +194,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
                        weights, raw, noise, diag)
         return _or_freeform(ranked, work, closed=False, sigma=sigma)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    if sf.turn_concentration(sg.turning(sg.resample(loop, CORNER_VIEW))) < open_shapes.SMOOTH:
+    if sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH:
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
     candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
     ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop)
@@ -202,11 +202,11 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
 
 
 FREEFORM_CONFIDENCE = 0.3
-CORNER_VIEW = 40
 LUMPY_SIDES = 4
-"""A closed stroke that turns smoothly all round (`open_shapes.SMOOTH`, judged on `CORNER_VIEW` points) is offered
-no polygon of `LUMPY_SIDES` sides or more: a lumpy circle drawn with a mouse (sparse points, flat stretches) fits a
-pentagon or hexagon closely, but a drawn polygon of that many sides turns at its corners."""
+"""A closed stroke that turns smoothly all round (`open_shapes.SMOOTH`, judged as open strokes are, on 32 to 40
+points a few noise widths apart: `stroke_geometry.coarse_turning`) is offered
+no polygon of `LUMPY_SIDES` sides or more: a lumpy circle drawn with a mouse (sparse points, flat stretches) fits
+a quad, pentagon or hexagon closely, but a drawn polygon turns at its corners."""
 
 
 def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: float) -> Recognition:
