@@ -34,7 +34,7 @@ from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
 from physink_tui.sim.evaluate import Problem, Score, compare_rollout, make_problem, simulate
 from physink_tui.sim.parameters import Parameters, apply
 from physink_tui.sim.search import Search
-from physink_tui.sim.verdict import verdict
+from physink_tui.sim.verdict import refusal_or_verdict
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
@@ -123,9 +123,7 @@ def run(args: argparse.Namespace) -> int:
     comparison = compare_rollout(problem, result, explain=True)
     score = search.best_score
     found = score is not None and not score.exploded and comparison.equivalent
-    text = verdict(problem, result.timeline, comparison, found=found,
-                   rollouts=search.rollouts - search.exploded if search.best is not None else 0,
-                   flagged=result.flagged)
+    text = refusal_or_verdict(search, problem, result, comparison, found=found)
     obj = {
         "found": found,
         "qualitative_distance": _n(comparison.qualitative_distance),
