@@ -43,6 +43,15 @@ async def until(pilot, predicate: Callable[[SessionView], bool], timeout: float 
         await pilot.pause(0.05)
 
 
+async def wait_for(pilot, condition: Callable[[], bool], what: str, guard: float = 60.0) -> None:
+    """Let the app run until ``condition()`` holds; fail saying ``what`` after ``guard`` s (a hang, not a timing)."""
+    deadline = time.monotonic() + guard
+    while not condition():
+        if time.monotonic() > deadline:
+            raise AssertionError(f"never saw {what}")
+        await pilot.pause(0.05)
+
+
 async def screen_is(pilot, kind: type, guard: float = 60.0):
     """Wait until the app's screen is a ``kind`` (a dialog opening); fail after ``guard`` s (a hang)."""
     deadline = time.monotonic() + guard

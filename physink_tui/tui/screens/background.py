@@ -1,6 +1,8 @@
 """The main screen's blocking work, each in a Textual worker thread: SIMULATE (a `SearchJob` on a snapshot of the
 document, its progress in the `SearchBar`, cancel keeping the best so far, the result handed to the session as a
-`Searched` entry) and the video export; the screen (`MainScreen`) mixes it in and owns the widgets and the session.
+`Searched` entry; an edit meanwhile stops it before its next rollout and drops it) and the exports (a video of the
+demonstration, a PNG of the moment shown); the screen (`MainScreen`) mixes it in and owns the widgets and the
+session.
 
 A search never runs on the session's thread, so pen input and keys are handled while it runs; what it found
 reaches the session as one ``simulate SEED BUDGET`` entry that a replay of the journal searches again to the same
@@ -28,6 +30,8 @@ from physink_tui.tui.live import LiveSession
 from physink_tui.tui.screens.modals import ErrorModal
 from physink_tui.tui.widgets.bars import StatusBar
 from physink_tui.tui.widgets.search_bar import SearchBar
+
+DISCARDED = "simulation discarded: the machine changed while it searched (g searches again)"
 
 
 class _Cancelled(Exception):
@@ -60,12 +64,14 @@ class BackgroundWork(Screen[None]):
     live: LiveSession | None
     view: SessionView | None
     canvas: tuple[float, float]
+    theme_name: str
 
     def __init__(self) -> None:
         super().__init__()
         self.job: SearchJob | None = None
         """The search running, or None."""
         self._simulating: JournalEntry | None = None  # the simulate entry submitted, until the session handled it
+        self._discarded: SearchJob | None = None  # a search stopped because the machine changed
         self._simulated = ""  # what the status bar says once it has
 
     # -- SIMULATE ------------------------------------------------------------------------------------------------
@@ -118,18 +124,28 @@ class BackgroundWork(Screen[None]):
             self.app.push_screen(ErrorModal("Cannot simulate", message.error))
             return
         offer = message.offer
+        latest = live.runner.latest_view()
+        if job is self._discarded or (offer is not None and (latest is None or not _shows(latest, offer))):
+            status.set(activity=DISCARDED)
+            return
         if offer is None:
             status.set(activity="simulation cancelled before its first rollout")
-            return
-        latest = live.runner.latest_view()
-        if latest is None or not _shows(latest, offer):
-            status.set(activity="simulation discarded: the machine changed while it searched (g searches again)")
             return
         self._simulating = live.submit(offer)
         rollouts = f"{offer.result.rollouts} rollout{'' if offer.result.rollouts == 1 else 's'}"
         self._simulated = (f"simulation stopped: the best of {rollouts} kept" if job.stopped else
                            f"simulation done in {rollouts}")
         status.set(activity="simulation: handing the result to the session")
+
+    def drop_changed_search(self, view: SessionView) -> None:
+        """Called with each view: once the machine differs from the one being searched, the search stops before its
+        next rollout (the one under way ends) and what it found is dropped."""
+        job = self.job
+        if job is None or job.stopped or _searched(view, job.scene, job.timeline):
+            return
+        job.stop()
+        self._discarded = job
+        self.query_one(StatusBar).set(activity=DISCARDED)
 
     def simulated(self, view: SessionView, status: StatusBar) -> None:
         """Called with each view: once the session handled the result, the status bar says so."""
@@ -174,6 +190,29 @@ class BackgroundWork(Screen[None]):
             return
         self.app.call_from_thread(status.set, activity=f"exported {path}")
 
+    def action_picture(self) -> None:
+        """A PNG of the moment the scene view shows (any mode), beside the videos in the exports folder."""
+        view = (self.live.runner.latest_view() if self.live is not None else None) or self.view
+        if view is None:
+            return
+        self._picture(view, storage.exports_dir(), self.theme_name, self.query_one(StatusBar))
+
+    @work(thread=True, exit_on_error=False, group="picture", description="export picture")
+    def _picture(self, view: SessionView, folder: Path, theme: str, status: StatusBar) -> None:
+        from physink_tui.tui.picture import PICTURE_SIZE, write_picture
+
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            path = storage.new_journal_path(folder).with_suffix("").with_suffix(".png")
+            write_picture(path, view, self.canvas, theme, PICTURE_SIZE)
+        except OSError as exc:
+            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", f"{folder}: {exc}"))
+            return
+        except PhysinkError as exc:
+            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", str(exc)))
+            return
+        self.app.call_from_thread(status.set, activity=f"picture saved to {path}")
+
     # -- both ----------------------------------------------------------------------------------------------------
 
     def action_cancel(self) -> None:
@@ -196,5 +235,10 @@ class BackgroundWork(Screen[None]):
 
 def _shows(view: SessionView, offer: Searched) -> bool:
     """Whether ``view`` shows the document ``offer`` searched."""
-    return ((view.scene is offer.scene or view.scene == offer.scene)
-            and (view.timeline is offer.timeline or view.timeline == offer.timeline))
+    return _searched(view, offer.scene, offer.timeline)
+
+
+def _searched(view: SessionView, scene: object, timeline: object) -> bool:
+    """Whether ``view`` shows this scene and timeline (the same objects, or equal ones)."""
+    return ((view.scene is scene or view.scene == scene)
+            and (view.timeline is timeline or view.timeline == timeline))

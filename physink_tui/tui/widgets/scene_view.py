@@ -75,6 +75,7 @@ class SceneView(Widget, can_focus=True):
         self._blocks = HalfBlocks()
         self._strips: list[Strip] = []
         self._pressed: int | None = None  # the mouse button held over the scene, or None
+        self._last: tuple[float, float] | None = None  # where the last pen sample went out (canvas fractions)
         self._overlay: tuple[object, Demonstration] | None = None
         self.highlight: frozenset[str] = frozenset()
         """Bodies outlined (the timeline event chosen last); forgotten when the scene changes."""
@@ -239,7 +240,20 @@ class SceneView(Widget, can_focus=True):
     def _post(self, event: events.MouseEvent, tip: bool, in_range: bool = True) -> None:
         where = self.to_canvas(*self._point(event))
         if where is not None:
+            self._last = where
             self.post_message(self.Pen(where[0], where[1], tip, self._pressed == 3, in_range))
+
+    def lift(self) -> None:
+        """End a drag under way where the mouse last was (the app quitting, or asking to): the pen goes up and out of
+        range as a mouse-up would take it; nothing when no button is held."""
+        if self._pressed is None:
+            return
+        if self._last is not None:
+            x, y = self._last
+            self.post_message(self.Pen(x, y, False, self._pressed == 3))
+            self.post_message(self.Pen(x, y, False, self._pressed == 3, False))
+        self._pressed = None
+        self.release_mouse()
 
     def on_mouse_down(self, event: events.MouseDown) -> None:
         if event.button not in (1, 3) or self._pressed is not None:
