@@ -5,6 +5,7 @@ opens the Textual app (imported only here, lazily), which does the rest.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
@@ -38,9 +39,14 @@ def open_tui(options: object) -> int:
         raise PhysinkError("physink tui needs a terminal (stdin and stdout); use physink replay or physink demo "
                            "--headless to run without one")
     from physink_tui.tui.app import make_app
-    from physink_tui.tui.graphics import cell_pixels, choose
+    from physink_tui.tui.graphics import cell_pixels, choice, probe
 
-    options.graphics = choose()  # type: ignore[attr-defined]  # before Textual owns the terminal
+    env = os.environ
+    forced = "PHYSINK_GRAPHICS" in env or env.get("TMUX") or env.get("TERM", "").startswith(("tmux", "screen"))
+    reply = None if forced else probe()  # asked before Textual owns the terminal
+    options.graphics, note = choice(env, reply)  # type: ignore[attr-defined]
+    if note:
+        options.notes.append(note)  # type: ignore[attr-defined]
     options.cell = cell_pixels()  # type: ignore[attr-defined]
     app = make_app(options)  # type: ignore[arg-type]
     app.run()

@@ -201,8 +201,24 @@ class PhysinkApp(App[None]):
             self.main.open_project(options.project)
         if options.entries:
             self.main.replay(options.entries, options.speed, simulate_after=options.simulate_after)
-        for note in options.notes:
-            self.notify(note)
+        for note in options.notes:  # e.g. why the scene is in half-blocks: long enough to be read
+            self.notify(note, timeout=30)
+
+    def _display(self, screen, renderable) -> None:  # type: ignore[no-untyped-def]
+        """Textual's one place that writes a screen update to the terminal, followed here by the scene view's Sixel
+        picture when the update wrote cells over it (Textual has no public hook after painting; the scene view
+        already writes its escapes through the same driver)."""
+        super()._display(screen, renderable)
+        main = self.main
+        if main is None or main.scene_view is None or renderable is None:
+            return
+        from textual._compositor import ChopsUpdate, LayoutUpdate
+
+        if isinstance(renderable, LayoutUpdate):
+            region = renderable.region
+            main.scene_view.painted((region.x, region.y, region.width, region.height))
+        elif isinstance(renderable, ChopsUpdate):
+            main.scene_view.painted(None, renderable.spans)
 
     # -- views -----------------------------------------------------------------------------------------------
 

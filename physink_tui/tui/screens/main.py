@@ -119,11 +119,14 @@ class MainScreen(BackgroundWork):
         self.talk: PushToTalk | None = None
         self._barrel = False
         self._seeking: tuple[JournalEntry, float] | None = None  # the last seek sent and its target clock
+        self.scene_view: SceneView | None = None
+        """The scene view, once composed (the app tells it when Textual painted over its Sixel picture)."""
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
             with Horizontal(id="top"):
-                yield SceneView(self.canvas, self.theme_name, self.graphics, self.cell, id="scene")
+                self.scene_view = SceneView(self.canvas, self.theme_name, self.graphics, self.cell, id="scene")
+                yield self.scene_view
                 with Vertical(id="side"):
                     yield TimelineTree(id="timeline")
                     yield Static("", id="event-detail", markup=False)

@@ -176,6 +176,21 @@ class SceneView(Widget, can_focus=True):
         if self.graphics == "sixel" and self.sent:
             self.call_after_refresh(self._draw_sixel, self.sent[0])
 
+    def painted(self, region: tuple[int, int, int, int] | None, spans: list[tuple[int, int, int]] = ()) -> None:
+        """Textual has just written cells to the terminal (``region`` x, y, width, height of a whole layout, or the
+        ``spans`` (y, x1, x2) of a partial update): a Sixel picture those cells covered is drawn again at once, in
+        order after them (a full repaint, e.g. when the tree first fills, writes blank cells over it)."""
+        if self.graphics != "sixel" or not self.sent or not self.screen.is_active:
+            return
+        box = self.content_region
+        if region is not None:
+            x, y, width, height = region
+            hit = x < box.right and box.x < x + width and y < box.bottom and box.y < y + height
+        else:
+            hit = any(box.y <= row < box.bottom and x1 < box.right and box.x < x2 for row, x1, x2 in spans)
+        if hit:
+            self._draw_sixel(self.sent[0])
+
     def _draw_sixel(self, data: str) -> None:
         if not self.screen.is_active or data is not self.sent[0]:
             return  # a modal covers the scene, or a newer frame follows
