@@ -2,14 +2,12 @@
 
 Prints a Markdown section for docs/BENCHMARKS.md: for the embedded pocketsphinx recogniser, fixtures right (the
 command said, or rejected when nothing of the grammar was said), wrong commands applied, misheard commands
-rejected, by voice family; the decoding time over the speech's length (real-time factor, median and worst of
-``--repeats`` runs per fixture); how the rejection thresholds trade right against wrong, and what thresholds
-calibrated on one voice family give on the other (held out); and for vosk, the speed on the installable Korean model
-and its confidence threshold's trade-off on the Korean fixtures. With ``--development DIR`` (made by
-``scripts/make_speech_fixtures.py --development DIR``) it also reports on that larger set and calibrates the
-thresholds on it, checked on the committed fixtures. Run on an idle machine:
+rejected, by voice family, with the thresholds it ships (calibrated across synthesisers by
+benchmarks/bench_speech_corpus.py); the decoding time over the speech's length (real-time factor, median and worst
+of ``--repeats`` runs per fixture); and for vosk, the speed on the installable Korean model and its confidence
+threshold's trade-off on the Korean fixtures. Run on an idle machine:
 
-    .venv/bin/python benchmarks/bench_speech.py [--repeats 3] [--development DIR]
+    .venv/bin/python benchmarks/bench_speech.py [--repeats 3]
 """
 
 from __future__ import annotations
@@ -20,7 +18,6 @@ import statistics
 import sys
 from collections import Counter
 from pathlib import Path
-from typing import Any
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
@@ -28,15 +25,8 @@ sys.path.insert(0, str(ROOT))
 from physink_tui.input.speech.audio import read_wav  # noqa: E402
 from physink_tui.input.speech.backends import make_recogniser  # noqa: E402
 from physink_tui.input.speech.listener import Listener  # noqa: E402
-from physink_tui.timeline.phrases import ARTICLES  # noqa: E402
 
 SPEECH = ROOT / "tests" / "speech"
-SCORES = (-6.0, -5.0, -4.8, -4.6, -4.4, -4.2, -4.0, -3.8)
-POSTERIORS = (0.3, 0.4, 0.5, 0.6, 0.7)
-WRONG_COST = 5
-"""Calibration maximises right - WRONG_COST * wrong: a wrong command applied is far worse than one rejected."""
-
-
 def family(made: str) -> str:
     """The voice family of a fixture, from how it was made."""
     if made.startswith("espeak-ng -v ko"):
@@ -46,45 +36,7 @@ def family(made: str) -> str:
     return "non-speech"
 
 
-def _accepted(row: dict[str, Any], score: float, posterior: float) -> dict | None:
-    """The command a row gives with these thresholds (None when rejected)."""
-    return row["got"] if row["got"] is not None and row["score"] >= score and row["posterior"] >= posterior else None
-
-
-def _count(rows: list[dict[str, Any]], score: float, posterior: float) -> tuple[int, int]:
-    """(right, wrong applied) over ``rows`` with these thresholds."""
-    got = [(_accepted(r, score, posterior), r["expected"]) for r in rows]
-    return sum(1 for g, e in got if g == e), sum(1 for g, e in got if g is not None and g != e)
-
-
-def calibrate(rows: list[dict[str, Any]]) -> tuple[float, float]:
-    """The (score, posterior) thresholds that do best on ``rows``; among equals the loosest (fewest rejections)."""
-    def merit(pair: tuple[float, float]) -> tuple[int, float, float]:
-        right, wrong = _count(rows, *pair)
-        return right - WRONG_COST * wrong, -pair[0], -pair[1]
-    return max(((s, p) for s in SCORES for p in POSTERIORS), key=merit)
-
-
-def pocketsphinx_rows(listener: Listener, fixtures: list[dict], audio: dict) -> list[dict[str, Any]]:
-    """Each fixture decoded with both checks off: what it would give and its worst content word's scores."""
-    recogniser = listener.recogniser
-    threshold, confidence = recogniser.threshold, recogniser.min_confidence
-    recogniser.threshold, recogniser.min_confidence = -1e9, 0.0
-    rows = []
-    try:
-        for f in fixtures:
-            u = listener.hear(audio[f["file"]])
-            words = [w for w in (u.decoded.words if u.decoded else ()) if w.word not in ARTICLES]
-            rows.append({"family": family(f["made"]), "expected": f["command"],
-                         "got": None if u.command is None else u.command.as_json(),
-                         "score": min((w.score for w in words), default=0.0),
-                         "posterior": min((w.confidence for w in words), default=1.0)})
-    finally:
-        recogniser.threshold, recogniser.min_confidence = threshold, confidence
-    return rows
-
-
-def report_pocketsphinx(fixtures: list[dict], audio: dict, repeats: int) -> list[dict[str, Any]]:
+def report_pocketsphinx(fixtures: list[dict], audio: dict, repeats: int) -> None:
     recogniser = make_recogniser()
     listener = Listener(recogniser, MANIFEST["labels"])
     rtf: dict[str, list[float]] = {}
@@ -100,7 +52,8 @@ def report_pocketsphinx(fixtures: list[dict], audio: dict, repeats: int) -> list
     right = sum(1 for o in outcome.values() if o == "right")
     print(f"pocketsphinx {right}/{len(fixtures)} fixtures right ({right / len(fixtures):.0%}), "
           f"{sum(1 for o in outcome.values() if o == 'wrong')} wrong commands applied "
-          f"(score >= {recogniser.threshold:g}, posterior >= {recogniser.min_confidence:g})\n")
+          f"(word score >= {recogniser.threshold:g}, ratio >= {recogniser.min_ratio:g}, margin >= "
+          f"{recogniser.min_margin:g})\n")
     print("| fixtures | count | right | rejected | wrong applied |\n|---|---|---|---|---|")
     for s in sorted({family(f["made"]) for f in fixtures}):
         n = sum(by[(s, o)] for o in ("right", "rejected", "wrong"))
@@ -109,50 +62,6 @@ def report_pocketsphinx(fixtures: list[dict], audio: dict, repeats: int) -> list
     print(f"\nreal-time factor (decoding / speech), median over fixtures of the median of {repeats} runs: "
           f"{statistics.median(medians):.3f}; worst fixture {max(medians):.3f}\n")
 
-    rows = pocketsphinx_rows(listener, fixtures, audio)
-    print("| min posterior | min score/frame (words but articles) | right | wrong applied |\n|---|---|---|---|")
-    for p in (0.0, *POSTERIORS):
-        for s in (-1e9, -6.0, -4.4, -4.2, -4.0):
-            print(f"| {p:g} | {'-' if s < -1e8 else s} | " + " | ".join(map(str, _count(rows, s, p))) + " |")
-    print("\nThresholds calibrated on one voice family (maximising right - "
-          f"{WRONG_COST} x wrong), then tried on the other:\n")
-    print("| calibrated on | score, posterior | there: right, wrong | held out | held out: right, wrong |\n"
-          "|---|---|---|---|---|")
-    for calib, held in (("espeak-ng", "flite"), ("flite", "espeak-ng")):
-        mine = [r for r in rows if r["family"] == calib]
-        other = [r for r in rows if r["family"] == held]
-        s, p = calibrate(mine)
-        there, held_out = _count(mine, s, p), _count(other, s, p)
-        print(f"| {calib} ({len(mine)}) | {s:g}, {p:g} | {there[0]}, {there[1]} | {held} ({len(other)}) | "
-              f"{held_out[0]}, {held_out[1]} |")
-    return rows
-
-
-def report_development(folder: Path, fixture_rows: list[dict[str, Any]]) -> None:
-    """Results on the development set with the thresholds used, and thresholds calibrated on it."""
-    manifest = json.loads((folder / "manifest.json").read_text())
-    recogniser = make_recogniser()
-    listener = Listener(recogniser, manifest["labels"])
-    audio = {f["file"]: read_wav(folder / f["file"]) for f in manifest["fixtures"]}
-    rows = pocketsphinx_rows(listener, manifest["fixtures"], audio)
-    used = (recogniser.threshold, recogniser.min_confidence)
-    print(f"\nDevelopment set {folder.name} ({len(rows)} utterances), thresholds used (score {used[0]:g}, posterior "
-          f"{used[1]:g}):\n\n| voices | count | right | wrong applied |\n|---|---|---|---|")
-    for fam in sorted({r["family"] for r in rows}):
-        mine = [r for r in rows if r["family"] == fam]
-        print(f"| {fam} | {len(mine)} | " + " | ".join(map(str, _count(mine, *used))) + " |")
-    print(f"| all | {len(rows)} | " + " | ".join(map(str, _count(rows, *used))) + " |")
-    print("\n| calibrated on | score, posterior | there: right, wrong | tried on | there: right, wrong |\n"
-          "|---|---|---|---|---|")
-    s, p = calibrate(rows)
-    print(f"| development ({len(rows)}) | {s:g}, {p:g} | {', '.join(map(str, _count(rows, s, p)))} | "
-          f"fixtures ({len(fixture_rows)}) | {', '.join(map(str, _count(fixture_rows, s, p)))} |")
-    for calib, held in (("espeak-ng", "flite"), ("flite", "espeak-ng")):
-        mine = [r for r in rows if r["family"] == calib]
-        other = [r for r in rows + fixture_rows if r["family"] == held]
-        s, p = calibrate(mine)
-        print(f"| development {calib} ({len(mine)}) | {s:g}, {p:g} | {', '.join(map(str, _count(mine, s, p)))} | "
-              f"{held}, development and fixtures ({len(other)}) | {', '.join(map(str, _count(other, s, p)))} |")
 
 
 def report_vosk(fixtures: list[dict], audio: dict) -> None:
@@ -190,13 +99,10 @@ MANIFEST = json.loads((SPEECH / "manifest.json").read_text())
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3)
-    parser.add_argument("--development", type=Path, help="the development set's folder (see the docstring)")
     args = parser.parse_args(argv)
     fixtures = MANIFEST["fixtures"]
     audio = {f["file"]: read_wav(SPEECH / f["file"]) for f in fixtures}
-    rows = report_pocketsphinx(fixtures, audio, args.repeats)
-    if args.development is not None:
-        report_development(args.development, rows)
+    report_pocketsphinx(fixtures, audio, args.repeats)
     report_vosk(fixtures, audio)
     return 0
 

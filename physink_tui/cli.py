@@ -224,8 +224,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--format", choices=("text", "json", "dot"), default="text", help="(default: %(default)s)")
 
     p = sub.add_parser("equiv", help="are two timelines (or projects) qualitatively equivalent")
-    p.add_argument("a", metavar="A", help="a timeline or project")
-    p.add_argument("b", metavar="B", help="a timeline or project")
+    p.add_argument("a", metavar="A", help="a timeline or project (alone: a project that adopted a simulation, "
+                                          "compared with the demonstration it keeps)")
+    p.add_argument("b", metavar="B", nargs="?", help="a timeline or project")
+    p.add_argument("--up-to-demonstrated", action="store_true",
+                   help="B simulates the demonstration A: compare up to the last demonstrated event, as SIMULATE "
+                        "does, and say what the simulation does afterwards")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
 
     p = sub.add_parser("simulate", help="search physical parameters that reproduce the demonstrated timeline")

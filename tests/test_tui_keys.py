@@ -18,7 +18,7 @@ from physink_tui.tui.screens.modals import ConfirmModal, PromptModal
 from physink_tui.tui.widgets.message_log import MessageLog
 from physink_tui.tui.widgets.scene_view import SceneView
 from physink_tui.tui.widgets.timeline_tree import TimelineTree
-from tests.tui_helpers import SIZE, cells_of, circle_points, draw, screen_is, tui_app, until, wait_for
+from tests.tui_helpers import SIZE, cells_of, circle_points, draw, screen_is, tui_app, until, until_app
 
 GUARD = 60.0
 
@@ -48,7 +48,7 @@ def test_the_playback_keys_work_whichever_widget_has_focus(tmp_path, egg) -> Non
         async with app.run_test(size=SIZE) as pilot:
             await in_demo_mode(pilot)
             tree = app.main.query_one(TimelineTree)
-            await wait_for(pilot, lambda: tree.last_line > 2, "the timeline tree")
+            await until_app(pilot, lambda: tree.last_line > 2, "the timeline tree")
             await pilot.click(TimelineTree, offset=(6, 1))  # an event chosen: the tree has focus
             assert app.focused is tree
             chosen = await until(pilot, lambda v: v.clock > 0)
@@ -70,7 +70,7 @@ def test_the_playback_keys_work_whichever_widget_has_focus(tmp_path, egg) -> Non
             for widget in (app.main.query_one("#do-stop", Button), app.main.query_one(MessageLog),
                            app.main.query_one(SceneView)):
                 widget.focus()
-                await wait_for(pilot, lambda w=widget: app.focused is w, "the focus")
+                await until_app(pilot, lambda w=widget: app.focused is w, "the focus")
                 await pilot.press("home")  # a focused log would scroll to its top; a focused button...
                 await until(pilot, lambda v: v.clock == 0.0, timeout=GUARD)
                 await pilot.press("space")
@@ -91,7 +91,7 @@ def test_a_text_input_keeps_space_and_the_arrows(tmp_path, egg) -> None:
             prompt = await screen_is(pilot, PromptModal)
             await pilot.press("a", "space", "b", "left", "left", "home", "x", "end", "c")
             field = prompt.query_one(Input)
-            await wait_for(pilot, lambda: field.value == "xa bc", f"the typed text (is {field.value!r})")
+            await until_app(pilot, lambda: field.value == "xa bc", f"the typed text (is {field.value!r})")
             view = app.live.runner.latest_view()
             assert not view.playing and view.clock == 0.0
     asyncio.run(go())
@@ -120,7 +120,7 @@ def test_every_press_of_an_arrow_counts_before_the_session_has_handled_the_last(
             await pilot.press("left", "left", "left")
             await until(pilot, lambda v: math.isclose(v.clock, 0.5, abs_tol=1e-6), timeout=GUARD)
             await pilot.press("q")  # seeking changes no work: it quits at once, the journal ended
-            await wait_for(pilot, lambda: app.return_code is not None, "the app ending")
+            await until_app(pilot, lambda: app.return_code is not None, "the app ending")
     asyncio.run(go())
     assert seeks(tmp_path) == [0.5, 1.0, 1.5, 2.0, 1.5, 1.0, 0.5]
 
@@ -131,7 +131,7 @@ def test_ctrl_c_quits_at_once_when_nothing_is_unsaved(tmp_path) -> None:
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: True)
             await pilot.press("ctrl+c")
-            await wait_for(pilot, lambda: app.return_code is not None, "the app ending")
+            await until_app(pilot, lambda: app.return_code is not None, "the app ending")
         return app.return_code
     assert asyncio.run(go()) == 0
 
@@ -145,12 +145,12 @@ def test_ctrl_c_asks_when_there_is_unsaved_work_and_twice_quits(tmp_path) -> Non
             await pilot.press("ctrl+c")
             await screen_is(pilot, ConfirmModal)
             await pilot.press("n")  # stay
-            await wait_for(pilot, lambda: app.screen is app.main, "the main screen back")
+            await until_app(pilot, lambda: app.screen is app.main, "the main screen back")
             assert app.return_code is None
             await pilot.press("ctrl+c")
             await screen_is(pilot, ConfirmModal)
             await pilot.press("ctrl+c")  # twice: quit
-            await wait_for(pilot, lambda: app.return_code is not None, "the app ending")
+            await until_app(pilot, lambda: app.return_code is not None, "the app ending")
         return app.return_code
     assert asyncio.run(go()) == 0
 
@@ -172,7 +172,7 @@ def test_ctrl_c_in_the_middle_of_a_drag_ends_the_stroke_and_asks(tmp_path) -> No
                                                                     v.pens.values()), timeout=GUARD)
             assert lifted.pens
             await pilot.press("y")
-            await wait_for(pilot, lambda: app.return_code is not None, "the app ending")
+            await until_app(pilot, lambda: app.return_code is not None, "the app ending")
         return app.return_code
     assert asyncio.run(go()) == 0
 
@@ -186,10 +186,10 @@ def test_the_tree_keeps_its_own_keys_for_moving_in_it(tmp_path, egg) -> None:
         async with app.run_test(size=SIZE) as pilot:
             await in_demo_mode(pilot)
             tree = app.main.query_one(Tree)
-            await wait_for(pilot, lambda: tree.last_line > 2, "the timeline tree")
+            await until_app(pilot, lambda: tree.last_line > 2, "the timeline tree")
             tree.focus()
-            await wait_for(pilot, lambda: app.focused is tree, "the focus")
+            await until_app(pilot, lambda: app.focused is tree, "the focus")
             start = tree.cursor_line
             await pilot.press("down", "down")
-            await wait_for(pilot, lambda: tree.cursor_line == start + 2, "the tree's cursor moving")
+            await until_app(pilot, lambda: tree.cursor_line == start + 2, "the tree's cursor moving")
     asyncio.run(go())

@@ -5,12 +5,15 @@ finds the same), adopted into the project undoably and played back."""
 from __future__ import annotations
 
 import asyncio
+import json
 import time
 from pathlib import Path
 
 import pytest
 
+from physink_tui import cli
 from physink_tui.formats.journal.reader import read_journal
+from physink_tui.formats.timeline_json import timeline_object
 from physink_tui.session.session import Session
 from physink_tui.tui.screens.background import SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import ConfirmModal
@@ -68,7 +71,7 @@ def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_
             await pilot.click("#do-simulate")  # a search of well under a second: its progress is in the messages
             view = await until(pilot, lambda v: v.search is not None, timeout=60)
             assert view.search.found and view.search.budget == 40 and 1 <= view.search.rollouts < 40
-            assert not app.main.query_one(SearchBar).display and app.main.job is None
+            assert not app.main.query_one(SearchBar).display and app.main.background.job is None
             red = app.main.query_one(SceneView)._simulation_trails(view)
             assert red and all(trail.kind == "simulation" for trail in red)
             done = f"simulation done in {view.search.rollouts} rollouts"
@@ -94,7 +97,7 @@ def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) 
             bar = await searching(pilot, app)
             await pilot.press("d")  # the session takes keys while the search runs
             await until(pilot, lambda v: v.mode == "demo", timeout=2.0)
-            assert app.main.job is not None and bar.display
+            assert app.main.background.job is not None and bar.display
             await pilot.press("g")  # a second search is refused while one runs
             await pilot.press("escape")
             view = await until(pilot, lambda v: v.search is not None, timeout=60)
@@ -120,7 +123,7 @@ def test_a_search_of_a_machine_changed_meanwhile_is_discarded(tmp_path) -> None:
             await pilot.press("c")  # clear: the machine searched is gone
             await until(pilot, lambda v: not v.scene.components)
             await pilot.press("escape")
-            await until_app(pilot, lambda: app.main.job is None)
+            await until_app(pilot, lambda: app.main.background.job is None)
             await until_app(pilot, lambda: app.main.query_one("#status").activity.startswith(
                 "simulation discarded: the machine changed"))
             assert app.live.runner.latest_view().search is None
@@ -175,7 +178,7 @@ def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) ->
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
         async with app.run_test(size=SIZE) as pilot:
             await searching(pilot, app)
-            job = app.main.job
+            job = app.main.background.job
             await pilot.press("q")
             await pilot.pause(0.2)
             if isinstance(app.screen, ConfirmModal):  # unsaved work: quit all the same
@@ -243,17 +246,51 @@ def test_an_edit_stops_the_search_before_its_next_rollout(tmp_path, monkeypatch)
             await until_app(pilot, lambda: len(started) == 1)
             release.release()  # the first rollout ends; the second starts and is held
             await until_app(pilot, lambda: len(started) == 2)
-            job = app.main.job
+            job = app.main.background.job
             await pilot.press("c")  # the machine cleared: the search stops before its next rollout
             await until_app(pilot, lambda: job.stopped)
             status = app.main.query_one("#status")
             assert status.activity.startswith("simulation discarded: the machine changed")
             for _ in range(Session.simulation_budget):
                 release.release()
-            await until_app(pilot, lambda: app.main.job is None)
+            await until_app(pilot, lambda: app.main.background.job is None)
             assert len(started) == 2  # no rollout started after the edit
             assert status.activity.startswith("simulation discarded: the machine changed")
             assert app.live.runner.latest_view().search is None
 
     asyncio.run(go())
     assert simulate_args(tmp_path) == []
+
+
+def test_equiv_up_to_demonstrated_of_the_adopted_project_agrees_with_what_the_tui_said(tmp_path, capsys) -> None:
+    header, entries = recorded("pinball")
+
+    async def go():
+        app = tui_app(tmp_path, header=header, prior=entries)
+        async with app.run_test(size=SIZE) as pilot:
+            before = await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            found = await until(pilot, lambda v: v.search is not None and any(
+                m.text.startswith("simulation found in") for m in v.messages), timeout=60)
+            await pilot.press("a")
+            adopted = await until(pilot, lambda v: v.messages[-1].text.startswith("loaded simulation"))
+        return before, found, adopted
+
+    before, found, adopted = asyncio.run(go())
+    told = next(m.text for m in found.messages if m.text.startswith("simulation found in"))
+    assert "(equivalent up to the last demonstrated event: qualitative distance 0," in told
+    names = before.scene.names()
+    as_written = [timeline_object(t, names) for t in (adopted.demonstration, before.timeline,  # to 6 decimals
+                                                      adopted.timeline, found.search.timeline)]
+    assert as_written[0] == as_written[1] and as_written[2] == as_written[3]  # the demonstration kept beside it
+    (journal,) = (tmp_path / "sessions").glob("*.physink.jsonl")
+    assert cli.main(["replay", str(journal), "--out", str(tmp_path / "replayed")]) == 0  # the project it leaves
+    capsys.readouterr()
+    assert cli.main(["equiv", str(tmp_path / "replayed" / "project.json"), "--up-to-demonstrated", "--json"]) == 0
+    said = json.loads(capsys.readouterr().out)
+    assert said["equivalent"] is found.search.found is True
+    assert said["qualitative_distance"] == found.search.qualitative_distance == 0
+    assert said["quantitative_distance"] == pytest.approx(found.search.quantitative_distance, abs=1e-3)
+    assert said["afterwards"] == found.search.afterwards
+    if found.search.afterwards:
+        assert told.endswith(f"; {found.search.afterwards}")

@@ -88,7 +88,8 @@ def run(args: argparse.Namespace) -> int:
         raise PhysinkError(f"{journal_path}: cannot write: {reason(exc)}") from None
     journal = read_journal(journal_path)
     session = Session.from_header(journal.header).run(journal.entries)
-    write_session_outputs(folder, session.scene, session.timeline, session.canvas, session.vocabulary_lines())
+    write_session_outputs(folder, session.scene, session.timeline, session.canvas, session.vocabulary_lines(),
+                          session.demonstration)
     export = Export(session.scene, session.timeline, session.canvas, Look())
     with ProgressBar("demo.mp4", "frames") as bar:
         export.video(folder.file("demo.mp4"), progress=bar)

@@ -91,7 +91,7 @@ def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, tick
     out = OutputFolder.prepare(out_dir)
     _write_gestures(out, events, pen.log, notes + decoder_notes(pen))
     target = write_session_outputs(out, session.scene, session.timeline, session.canvas,
-                                   session.vocabulary_lines())
+                                   session.vocabulary_lines(), session.demonstration)
     _print_session(session, target)
     if pictures is not None:
         write_pictures(session, out, pictures)

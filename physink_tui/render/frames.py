@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from physink_tui.render.frame import ContactMarker, FrameContent, Point, TimeBar, Trail
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
+from physink_tui.session.modes.base import ModeName
 from physink_tui.session.view import SessionView
 from physink_tui.timeline.events import Timeline, TrajectoryPoint, event_label
 from physink_tui.timeline.tape import Tape
@@ -133,9 +134,9 @@ def view_frame(view: SessionView, canvas: tuple[float, float]) -> FrameContent:
     mode the trails, contacts, narration and time bar of the timeline at its clock."""
     ink = (*view.ink, *view.pending)
     canvas = (float(canvas[0]), float(canvas[1]))
-    if view.mode != "demo" or view.timeline is None or not view.timeline.events:
+    if view.mode != ModeName.DEMO or view.timeline is None or not view.timeline.events:
         return FrameContent(view.scene, canvas, view.poses, ink,
-                            time_bar=TimeBar(view.clock, view.duration) if view.mode == "demo" else None)
+                            time_bar=TimeBar(view.clock, view.duration) if view.mode == ModeName.DEMO else None)
     demo = _demonstration(view.scene, view.timeline, canvas)
     t = min(max(view.clock, 0.0), demo.duration)
     return FrameContent(

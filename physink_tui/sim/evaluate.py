@@ -22,7 +22,7 @@ from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
 from physink_tui.sim.legs import legs
 from physink_tui.sim.parameters import Parameters
-from physink_tui.sim.rollout import EXPLODED, RolloutResult, rollout_from, settled_state
+from physink_tui.sim.rollout import RolloutResult, Stop, rollout_from, settled_state
 from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prefixes, compare_prepared, prepare
 from physink_tui.timeline.events import Event, Timeline
 
@@ -153,7 +153,7 @@ def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:
         result = simulate(problem, parameters)
     except SimulationError:
         return EXPLODED_SCORE
-    if result.stopped_because == EXPLODED:
+    if result.stopped_because == Stop.EXPLODED:
         return EXPLODED_SCORE
     demonstrated, by_leg = _demonstration(problem)
     simulated = prepare(result.timeline, problem.scene.names())

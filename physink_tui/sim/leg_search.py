@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable, Sequence
+from enum import StrEnum
 
 import numpy as np
 
@@ -63,6 +64,19 @@ EXPLODED_PENALTY = 1.0e6
 """Added to twice the worst finite objective of a generation, as an exploded candidate's value for CMA-ES."""
 
 
+class Phase(StrEnum):
+    """What the search is doing: which generation it asked for last."""
+
+    START = "start"
+    """The seeded parameters alone (generation 0)."""
+    FAMILY = "family"
+    """The seed's flight-time family (`FAMILY_STEPS`)."""
+    SCAN = "scan"
+    """The best so far with its start velocities turned and scaled (`SCAN_ANGLES`, `SCAN_SPEEDS`)."""
+    RUN = "run"
+    """CMA-ES (or the one-coordinate sampler) on a leg."""
+
+
 def leg_score(score: Score, leg: int) -> Score:
     """The score of the demonstration up to the end of leg ``leg`` (the whole score when legs were not scored)."""
     return score.legs[leg] if leg < len(score.legs) else score
@@ -93,24 +107,29 @@ class LegByLeg:
         self.centre = start
         self.centre_score: Score | None = None
         self.finished = False
-        self._asked_for = "start"  # what the last generation was: "start", "family", "scan" or "run"
+        self._phase = Phase.START  # what the last generation was
         self._given_up = -1
         self._round = 0
         self._runs_this_round = 0
         self._run: _Run | None = None
 
+    @property
+    def phase(self) -> Phase:
+        """What the last generation asked for was."""
+        return self._phase
+
     # -- the strategy interface (search.Search) ---------------------------------------------------------------------
 
     def generation(self, best: Parameters | None) -> list[Parameters]:
         if self._family_round < FAMILY_ROUNDS and self.family is not None:
-            self._asked_for = "family"
+            self._phase = Phase.FAMILY
             self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
                              for j in FAMILY_SPAN[self._family_round] if j != 0]
             return [self.family(f) for f in self._factors]
-        if self._asked_for == "family" or (self._asked_for == "start" and self.centre.velocities):
-            self._asked_for = "scan"
+        if self._phase is Phase.FAMILY or (self._phase is Phase.START and self.centre.velocities):
+            self._phase = Phase.SCAN
             return _turned_and_scaled(self.centre)
-        self._asked_for = "run"
+        self._phase = Phase.RUN
         while not self.finished:
             if self._run is None and not self._begin():
                 continue
@@ -122,13 +141,13 @@ class LegByLeg:
         if self.centre_score is None:  # the start, alone (generation 0 of the search)
             self.centre_score = scores[0]
             return
-        if self._asked_for in ("family", "scan"):  # the candidate furthest along the legs leads
-            if self._asked_for == "family":
+        if self._phase in (Phase.FAMILY, Phase.SCAN):  # the candidate furthest along the legs leads
+            if self._phase is Phase.FAMILY:
                 self._family_round += 1
             for k, (p, s) in enumerate(zip(generation, scores, strict=True)):
                 if not s.exploded and self._progress(s) < self._progress(self.centre_score):
                     self.centre, self.centre_score = p, s
-                    if self._asked_for == "family":
+                    if self._phase is Phase.FAMILY:
                         self._family_best = self._factors[k]
             return
         run = self._run

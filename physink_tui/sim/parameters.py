@@ -14,11 +14,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from types import MappingProxyType
 
-import pymunk
-
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Body, Scene, Spring
-from physink_tui.scene.physics.build import body_shapes
+from physink_tui.scene.physics.build import body_area
 
 
 @dataclass(frozen=True, slots=True)
@@ -86,12 +84,6 @@ class Parameters:
             raise SimulationError(f"velocities for {sorted(velocities)!r}; expected the start bodies "
                                   f"{sorted(self.velocities)!r}")
         return replace(self, velocities=velocities)
-
-
-def body_area(body: Body) -> float:
-    """The area of a body's collision shapes (canvas units²): its mass at density 1.0. A polyline's thin segments
-    count with their rounded thickness."""
-    return sum(shape.area for shape in body_shapes(pymunk.Body(), body))
 
 
 def _need(value: float, what: str, *, positive: bool) -> None:

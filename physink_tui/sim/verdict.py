@@ -17,8 +17,9 @@ from physink_tui.sim.evaluate import Problem, miss_distance
 from physink_tui.sim.legs import legs
 from physink_tui.timeline.equivalence import Comparison, compare_prefixes, prepare
 from physink_tui.timeline.events import Event, Timeline, event_label
+from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
 
-REPRODUCED = "every demonstrated event is reproduced"
+REPRODUCED = f"every demonstrated event is reproduced (equivalent {RULE})"
 
 
 def verdict(problem: Problem, simulated: Timeline, comparison: Comparison, *, found: bool, rollouts: int,
@@ -26,7 +27,8 @@ def verdict(problem: Problem, simulated: Timeline, comparison: Comparison, *, fo
     """The verdict for the best candidate, whose rollout gave ``simulated`` and compares as ``comparison`` (with
     reasons); ``rollouts`` is how many candidates the search tried."""
     if found:
-        text = REPRODUCED
+        after = afterwards(comparison, simulated, problem.scene.names())
+        text = REPRODUCED + (f"; {after}" if after else "")
     elif rollouts == 0 or not simulated.events:
         text = "no candidate could be simulated without the physics blowing up"
     else:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import gc
 import json
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
@@ -54,6 +55,8 @@ class TuiOptions:
         microphone: the sound input push-to-talk listens on (default: the microphone; tests give a recording).
         graphics, cell: how the scene is drawn (`physink_tui.tui.graphics`: ``halfblocks``, ``kitty`` or ``sixel``)
             and a cell's size in pixels (for the graphics protocols).
+        clock: the live session's clock, seconds on a monotonic scale (tests pass one they can hold still while
+            a Pilot draws, so a stroke's timing is the test's, not the loaded machine's).
     """
 
     header: JournalHeader | None = None
@@ -76,6 +79,7 @@ class TuiOptions:
     cell: tuple[int, int] = DEFAULT_CELL
     title: str = "PhysInk"
     notes: list[str] = field(default_factory=list)
+    clock: Callable[[], float] = time.monotonic
 
 
 class ViewUpdated(Message):
@@ -146,7 +150,8 @@ class PhysinkApp(App[None]):
             found = storage.unfinished_journals(self.options.journal_dir or storage.sessions_dir())
         if found:
             path, journal = found[0]
-            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n"
+            dropped = "" if journal.dropped is None else f"\nIts journal is damaged: {journal.dropped}.\n"
+            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n{dropped}"
                         "Recover it (replay it here and carry on)?")
 
             def answered(yes: bool | None) -> None:
@@ -171,10 +176,10 @@ class PhysinkApp(App[None]):
                 self.push_screen(ErrorModal("Not journaling", f"cannot make the journal folder: {exc}"))
         try:
             live = LiveSession(header, journal_path=path, prior=prior or options.prior, max_fps=options.max_fps,
-                               on_error=lambda exc: self.post_message(RunnerFailed(exc)))
+                               on_error=lambda exc: self.post_message(RunnerFailed(exc)), clock=options.clock)
         except PhysinkError as exc:
             self.push_screen(ErrorModal("Cannot start the session", str(exc)))
-            live = LiveSession(header, journal_path=None, max_fps=options.max_fps)
+            live = LiveSession(header, journal_path=None, max_fps=options.max_fps, clock=options.clock)
         self.live = live
         last = [-1]
 

@@ -89,11 +89,13 @@ class LiveSession:
         journal_path: where the session journals (a new file), or None for no journal (tests).
         prior: entries handled at once before the runner starts (a recovered journal), journaled again.
         max_fps: views published a second at most.
+        clock: the runner's clock (seconds on a monotonic scale).
     """
 
     def __init__(self, header: JournalHeader, *, journal_path: Path | None = None,
                  prior: Sequence[JournalEntry] = (), max_fps: float = 30.0,
-                 on_error: Callable[[BaseException], None] | None = None) -> None:
+                 on_error: Callable[[BaseException], None] | None = None,
+                 clock: Callable[[], float] = time.monotonic) -> None:
         self.header = header
         self.session = Session.from_header(header)
         self.journal_path = journal_path
@@ -102,7 +104,8 @@ class LiveSession:
         for entry in prior:
             if not (isinstance(entry, CommandEntry) and entry.name == "end"):
                 self.session.handle(entry)
-        self.runner: SessionRunner[SessionView] = SessionRunner(self.session, max_fps=max_fps, on_error=on_error)
+        self.runner: SessionRunner[SessionView] = SessionRunner(self.session, max_fps=max_fps, on_error=on_error,
+                                                                 clock=clock)
         self.mouse = ProgrammaticPenSource(MOUSE)
         self.mouse_pump = SourcePump(self.mouse, self.runner.submit)
         self.feed: JournalFeed | None = None

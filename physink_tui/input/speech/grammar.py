@@ -40,6 +40,9 @@ that sound like one of them ("bowl", "wall", "string", "bell") are left to vocab
 grammar is one more thing a mumbled "ball" may become."""
 
 
+DEFAULT_WEIGHT = 0.5
+"""A default component name's grammar weight against 1 for a name the user gave (labels, vocabulary files)."""
+
 PREPOSITION_PAIRS = ("out of", "down into", "off of", "on top of", "in front of", "next to", "up onto")
 """Prepositions people say as one, spoken together; a grammar of any two in a row lets noise through."""
 
@@ -102,25 +105,30 @@ class SpeechGrammar:
         verbs: verbs, each speakable.
         prepositions: prepositions, each speakable.
         unspeakable: names and words left out because the recogniser cannot say one of their words.
+        preferred: the component names the user gave (labels, vocabulary files), favoured over the default names
+            when two sound alike.
     """
 
     components: tuple[str, ...]
     verbs: tuple[str, ...]
     prepositions: tuple[str, ...]
     unspeakable: tuple[str, ...] = ()
+    preferred: frozenset[str] = frozenset()
 
     @classmethod
     def build(cls, labels: Iterable[str], vocabulary: Vocabulary = DEFAULT_VOCABULARY, *,
               defaults: Iterable[str] = DEFAULT_COMPONENTS,
               speakable: Callable[[str], bool] = lambda word: True) -> SpeechGrammar:
         """The grammar for these labels and words; ``speakable(word)`` says whether the recogniser knows a word."""
+        labels = list(labels)
         names = {n for n in (normalise(x) for x in (*labels, *defaults, *vocabulary.components)) if n}
         names = {n for n in names if n.split()[0] not in ARTICLES}
         verbs, preps = set(vocabulary.verbs), set(vocabulary.prepositions) | set(PREPOSITION_PAIRS)
         unspeakable = sorted(x for x in names | verbs | preps if not all(speakable(w) for w in x.split()))
         gone = set(unspeakable)
+        given = {normalise(x) for x in (*labels, *vocabulary.components)} & (names - gone)
         return cls(tuple(sorted(names - gone)), tuple(sorted(verbs - gone)), tuple(sorted(preps - gone)),
-                   tuple(unspeakable))
+                   tuple(unspeakable), frozenset(given))
 
     def words(self) -> tuple[str, ...]:
         """Every word a sentence may have, sorted (for a recogniser that takes a word list)."""
@@ -146,11 +154,18 @@ class SpeechGrammar:
             *([f"<garbage> = {alternatives(garbage)};"] if garbage else []),
             "<label> = label <component>;",
             "<event> = [the] <component> <verb> [[<prep>] [the] <component>];",
-            f"<component> = {alternatives(self.components)};",
+            f"<component> = {self._weighted_components()};",
             f"<verb> = {alternatives(self.verbs)};",
             f"<prep> = {alternatives(self.prepositions)};",
             "",
         ])
+
+    def _weighted_components(self) -> str:
+        """The component names as JSGF alternatives, the user's (`preferred`) weighted over the defaults by
+        `DEFAULT_WEIGHT`, so that of two names that sound alike the user's is heard."""
+        if not self.preferred or not self.components:
+            return " | ".join(self.components) or "<VOID>"
+        return " | ".join(f"/{1 if c in self.preferred else DEFAULT_WEIGHT:g}/ {c}" for c in self.components)
 
     def parse(self, text: str) -> Command | None:
         """The command ``text`` is a sentence of, or None when it is none (an empty or partial result)."""

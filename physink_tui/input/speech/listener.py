@@ -2,9 +2,11 @@
 command is the session's, capturing audio the microphone's or the caller's.
 
 `Listener.hear` is the one path both `physink listen FILE.wav` and the microphone take. An utterance is accepted
-only when the recogniser's best path is a whole sentence of the grammar and every word of it but the articles scores
-at least the recogniser's threshold and is likely enough (articles are short and run into the next word, so their
-fit says little); anything else is `Utterance.rejected`, with the reason (DESIGN.md "Speech conventions").
+only when the recogniser's best path is a whole sentence of the grammar, the whole utterance fits it well enough
+against free speech (`Decoded.ratio`), every word of it but the articles scores at least the recogniser's threshold
+and is likely enough (articles are short and run into the next word, so their fit says little), and no rival
+sentence (another name or verb) comes close (`Decoded.margin`: then both are named, "heard 'label marble' or 'label
+ball'? say it again"); anything else is `Utterance.rejected`, with the reason (DESIGN.md "Speech conventions").
 """
 
 from __future__ import annotations
@@ -102,13 +104,21 @@ class Listener:
         if command is None:
             why = f"not a sentence of the grammar: {decoded.text!r}" if decoded.text else "no words recognised"
             return Utterance(decoded.text, None, why, at, end - start, decoded)
+        recogniser = self.recogniser
+        if decoded.ratio is not None and decoded.ratio < recogniser.min_ratio:
+            return Utterance(decoded.text, None, f"unlike any command: {decoded.text!r} fits {decoded.ratio:.2f} a "
+                             f"frame worse than free speech (at most {-recogniser.min_ratio:g} is allowed)", at,
+                             end - start, decoded)
         content = [w for w in words if w.word not in ARTICLES] or words
         worst = min(content, key=lambda w: w.score)
-        if worst.score < self.recogniser.threshold:
+        if worst.score < recogniser.threshold:
             return Utterance(decoded.text, None, f"poorly matched: {worst.word!r} scored {worst.score:.2f} "
-                             f"(at least {self.recogniser.threshold:g} is needed)", at, end - start, decoded)
+                             f"(at least {recogniser.threshold:g} is needed)", at, end - start, decoded)
         unsure = min(content, key=lambda w: w.confidence)
-        if unsure.confidence < self.recogniser.min_confidence:
+        if unsure.confidence < recogniser.min_confidence:
             return Utterance(decoded.text, None, f"unsure: {unsure.word!r} is only {unsure.confidence:.0%} likely "
-                             f"(at least {self.recogniser.min_confidence:.0%} is needed)", at, end - start, decoded)
+                             f"(at least {recogniser.min_confidence:.0%} is needed)", at, end - start, decoded)
+        if decoded.margin < recogniser.min_margin:
+            return Utterance(decoded.text, None, f"heard {decoded.text!r} or {decoded.alternative!r}? say it again",
+                             at, end - start, decoded)
         return Utterance(decoded.text, command, None, at, end - start, decoded)

@@ -11,6 +11,7 @@ confidence is vosk's confidence.
 from __future__ import annotations
 
 import json
+import math
 import time
 from pathlib import Path
 from typing import Any
@@ -56,6 +57,8 @@ class VoskRecogniser:
     name = "vosk"
     threshold = THRESHOLD
     min_confidence = THRESHOLD
+    min_ratio = -math.inf  # vosk gives no phone-loop ratio nor rivals
+    min_margin = -math.inf
 
     def __init__(self, model_dir: str | Path) -> None:
         path = Path(model_dir)

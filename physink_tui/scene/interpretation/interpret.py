@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import shapely
 import shapely.ops
-from shapely.geometry import MultiPoint, Point
+from shapely.geometry import LineString, MultiPoint, Point
 
 from physink_tui.scene.components import (
     BACKGROUND,
@@ -77,6 +77,13 @@ def bodies_at(scene: Scene, point: tuple[float, float], exclude: str | None = No
     bounds = (point[0] - reach, point[1] - reach, point[0] + reach, point[1] + reach)
     return [b for b in _candidates(scene, bounds, near)
             if b.id != exclude and (body_geometry(b).covers(p) or (reach and body_geometry(b).distance(p) <= reach))]
+
+
+def crossed_bodies(scene: Scene, line: Line, near: Near | None = None) -> list[Body]:
+    """Bodies a straight line passes through (it meets their area), topmost first."""
+    segment = LineString([line.start, line.end])
+    minx, miny, maxx, maxy = segment.bounds
+    return [b for b in _candidates(scene, (minx, miny, maxx, maxy), near) if body_geometry(b).intersects(segment)]
 
 
 def under(scene: Scene, point: tuple[float, float], exclude: str, near: Near | None = None) -> str:

@@ -155,12 +155,48 @@ def body_shapes(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
     raise SceneError(f"body {spec.id!r} has shape {spec.shape!r}; expected box, circle, ellipse, polygon or polyline")
 
 
+def body_area(spec: Body) -> float:
+    """The area of a body's collision shapes (canvas units²): its mass at density 1.0. A polyline's thin segments
+    count with their rounded thickness."""
+    return float(sum(shape.area for shape in body_shapes(pymunk.Body(), spec)))
+
+
+def outline_problem(spec: Body) -> str | None:
+    """What keeps the physics from making ``spec``'s shapes, in words (None: nothing); the checks `body_shapes`
+    makes, without building anything, so a project can be refused when it is read.
+
+    >>> from physink_tui.scene.components import MATERIALS
+    >>> outline_problem(Body("b1", "box", ((0, 0), (10, 0), (20, 0)), 0, (0, 0), 0, MATERIALS["box"]))
+    'the outline encloses no area'
+    """
+    try:
+        if spec.shape in ("box", "ellipse"):
+            _need_area(spec)
+        elif spec.shape == "polygon":
+            convex_pieces(spec)
+        elif spec.shape == "polyline":
+            _distinct(spec)
+    except _OutlineError as exc:
+        return exc.reason
+    return None
+
+
+class _OutlineError(SceneError):
+    """A `SceneError` that also keeps what is wrong without naming the body (`outline_problem`)."""
+
+    def __init__(self, message: str, reason: str) -> None:
+        super().__init__(message)
+        self.reason = reason
+
+
 def _need_area(spec: Body) -> shapely.Polygon:
     if len(spec.outline) < 3:
-        raise SceneError(f"{spec.shape} {spec.id!r} has {len(spec.outline)} outline points; expected at least 3")
+        raise _OutlineError(f"{spec.shape} {spec.id!r} has {len(spec.outline)} outline points; expected at least 3",
+                            "fewer than 3 points")
     polygon = shapely.Polygon(spec.outline)
     if not polygon.area > 0:
-        raise SceneError(f"{spec.shape} {spec.id!r} has an outline of zero area: {spec.outline!r}")
+        raise _OutlineError(f"{spec.shape} {spec.id!r} has an outline of zero area: {spec.outline!r}",
+                            "the outline encloses no area")
     return polygon
 
 
@@ -183,14 +219,21 @@ def convex_pieces(spec: Body) -> list[tuple[Point, ...]]:
     floor = polygon.area * 1e-9
     out = [tuple((x, y) for x, y in t.exterior.coords[:3]) for t in triangles if t.area > floor]
     if not out:
-        raise SceneError(f"polygon {spec.id!r} encloses no area once repaired: {spec.outline!r}")
+        raise _OutlineError(f"polygon {spec.id!r} encloses no area once repaired: {spec.outline!r}",
+                            "it crosses itself and encloses no area")
     return out
 
 
-def _polyline_segments(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
+def _distinct(spec: Body) -> list[Point]:
     points = [p for i, p in enumerate(spec.outline) if i == 0 or p != spec.outline[i - 1]]
     if len(points) < 2:
-        raise SceneError(f"polyline {spec.id!r} has {len(points)} distinct points; expected at least 2")
+        raise _OutlineError(f"polyline {spec.id!r} has {len(points)} distinct points; expected at least 2",
+                            "fewer than 2 distinct points")
+    return points
+
+
+def _polyline_segments(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
+    points = _distinct(spec)
     segments = []
     for i in range(len(points) - 1):
         segment = pymunk.Segment(body, points[i], points[i + 1], POLYLINE_RADIUS)

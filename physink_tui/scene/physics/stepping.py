@@ -40,7 +40,7 @@ class Frame:
 def demo_world(scene: Scene) -> World:
     """The world of demo mode: no gravity, a little damping, no tunnelling; contacts and joints still act."""
     world = World.from_scene(scene, gravity=(0.0, 0.0))
-    world.space.damping = DEMO_DAMPING
+    world.damping = DEMO_DAMPING
     world.limit_speeds()
     return world
 
@@ -50,17 +50,7 @@ def step_and_observe(world: World, bodies: Iterable[str], fixed: Mapping[str, Mo
     of them touch. ``fixed``: motions of bodies among them that cannot move (static, and no drag can make them
     dynamic: a rollout's welded bodies), given rather than read from the world each step."""
     world.step(1)
-    get = world.pymunk_body
-    motions: dict[str, Motion] = {}
-    known = fixed or {}
-    for body in bodies:  # `World.motion`, reading each body's position once
-        m = known.get(body)
-        if m is None:
-            b = get(body)
-            p = b.position
-            v = b.velocity_at_world_point(p)
-            m = Motion(p.x, p.y, b.angle, v.x, v.y, b.angular_velocity)
-        motions[body] = m
+    motions = world.motions(bodies, fixed)
     observed = motions.keys()
     contacts = tuple(c for c in world.take_contacts() if c.a_id in observed and c.b_id in observed)
     touching = world.touching()

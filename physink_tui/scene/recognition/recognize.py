@@ -263,7 +263,7 @@ def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: 
             for built in c.build():
                 seq += 1
                 heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
-        elif _inside(c.geometry, lo, hi):
+        elif _inside(c.geometry, lo, hi) and _keeps_the_outline(c, raw, diag):
             kept.append((score, c))
     if not kept:
         return Recognition(None, 0.0, None, (), "no shape fits the stroke")
@@ -275,6 +275,27 @@ def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: 
     best = kept[0][1]
     alternatives = tuple((k, round(w / total, 4)) for k, w in weight.items() if k != best.kind)
     return Recognition(best.kind, round(weight[best.kind] / total, 4), best.geometry, alternatives[:3])
+
+
+OUTLINE_FAR = 0.08
+OUTLINE_LEFT_OUT = 0.1
+"""A box leaves out part of what was drawn when more than `OUTLINE_LEFT_OUT` of the stroke's points lie farther
+than `OUTLINE_FAR` of its diagonal from the box's sides: the wide top of a golf tee drawn on its narrow stem is
+not a box the size of the stem (people's and hurried boxes, thin ones included, leave out under 2 % of their
+points; such a tee's wings are a quarter of its points)."""
+
+
+def _keeps_the_outline(c: Candidate, raw: np.ndarray, diag: float) -> bool:
+    """Whether a box candidate follows the whole drawn outline (other kinds are not judged here)."""
+    if c.kind != "box":
+        return True
+    corners = np.asarray(shape_points(c.geometry), dtype=float)
+    a, b = corners, np.roll(corners, -1, axis=0)
+    ab = b - a
+    rel = raw[:, None, :] - a[None, :, :]  # each point against each side
+    u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
+    gap = np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)).min(axis=1)
+    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(raw)
 
 
 SEARCH_SPAN = 3 * 6.0

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import replace
 
 from physink_tui.input.pen.gestures import Gesture, PenMove, StrokeEnded, Tap
 from physink_tui.scene.components import Scene
@@ -13,8 +14,7 @@ from physink_tui.scene.interpretation.interpret import bodies_at
 from physink_tui.scene.physics.state import Pose
 from physink_tui.scene.physics.stepping import put_down
 from physink_tui.scene.physics.world import World
-from physink_tui.session.history import Document
-from physink_tui.session.modes.base import Host, Mode
+from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.events import Timeline
 
 ADJUST_CENTRE = 0.25
@@ -26,7 +26,7 @@ STEP_EPSILON = 1e-9
 class AdjustMode:
     """One body being moved by the pen, the others frozen (see the module docstring)."""
 
-    name = "adjust"
+    name = ModeName.ADJUST
 
     def __init__(self, host: Host, body_id: str, world: World, t: float, offset: tuple[float, float]) -> None:
         self.host = host
@@ -86,7 +86,7 @@ class AdjustMode:
         document = self.host.document
         moved = world.to_scene(document.scene)
         if moved != document.scene:
-            self.host.commit(Document(moved, document.timeline), f"adjust {self.body_id}")
+            self.host.commit(replace(document, scene=moved), f"adjust {self.body_id}")
 
     def poses(self) -> Mapping[str, Pose]:
         if self.world is None:

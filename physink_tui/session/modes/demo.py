@@ -18,7 +18,7 @@ from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
 from physink_tui.scene.physics.stepping import demo_world, step_and_observe
 from physink_tui.session.history import Document
-from physink_tui.session.modes.base import Host, Mode
+from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.demo_setup import recorder_for
 from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.observation import Observation
@@ -35,7 +35,7 @@ STEP_EPSILON = 1e-9
 class DemoMode:
     """A demonstration of the document's scene, continuing its timeline (see the module docstring)."""
 
-    name = "demo"
+    name = ModeName.DEMO
     finished = False
 
     def __init__(self, host: Host, t: float) -> None:

@@ -1,8 +1,9 @@
 """The main screen's blocking work, each in a Textual worker thread: SIMULATE (a `SearchJob` on a snapshot of the
 document, its progress in the `SearchBar`, cancel keeping the best so far, the result handed to the session as a
 `Searched` entry; an edit meanwhile stops it before its next rollout and drops it) and the exports (a video of the
-demonstration, a PNG of the moment shown); the screen (`MainScreen`) mixes it in and owns the widgets and the
-session.
+demonstration, a PNG of the moment shown): `BackgroundWork`, a helper the screen (`MainScreen`) owns, which sees the
+screen through `Host` (its session, view, canvas and theme) and through Textual's `Screen` (workers, messages,
+widgets).
 
 A search never runs on the session's thread, so pen input and keys are handled while it runs; what it found
 reaches the session as one ``simulate SEED BUDGET`` entry that a replay of the journal searches again to the same
@@ -12,9 +13,10 @@ result (`physink_tui.session.search_job`).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
+from typing import Protocol
 
-from textual import work
 from textual.message import Message
 from textual.screen import Screen
 
@@ -58,16 +60,30 @@ class SearchFinished(Message, bubble=False):
     error: str | None = None
 
 
-class BackgroundWork(Screen[None]):
-    """SIMULATE and export for the main screen (which provides ``live``, ``view``, ``canvas`` and the widgets)."""
+class Host(Protocol):
+    """The screen as its background work sees it: the live session, the view shown and the canvas."""
 
-    live: LiveSession | None
-    view: SessionView | None
-    canvas: tuple[float, float]
-    theme_name: str
+    @property
+    def live(self) -> LiveSession | None: ...
 
-    def __init__(self) -> None:
-        super().__init__()
+    @property
+    def view(self) -> SessionView | None: ...
+
+    @property
+    def canvas(self) -> tuple[float, float]: ...
+
+    @property
+    def theme_name(self) -> str: ...
+
+
+class BackgroundWork:
+    """SIMULATE and export for a screen: ``screen`` runs the workers and receives their messages (it hands
+    `SearchProgressed`, `SearchFinished` and `SearchBar.Cancel` to `progressed`, `finished` and `cancel`);
+    ``host`` (the same screen) gives the session, the view and the canvas."""
+
+    def __init__(self, screen: Screen[None], host: Host) -> None:
+        self._screen = screen
+        self._host = host
         self.job: SearchJob | None = None
         """The search running, or None."""
         self._simulating: JournalEntry | None = None  # the simulate entry submitted, until the session handled it
@@ -76,52 +92,52 @@ class BackgroundWork(Screen[None]):
 
     # -- SIMULATE ------------------------------------------------------------------------------------------------
 
-    def action_simulate(self) -> None:
+    def simulate(self) -> None:
         """Search the document shown in a worker; with nothing to search, the session says what is missing."""
-        live = self.live
+        screen, live = self._screen, self._host.live
         if live is None:
             return
         if self.job is not None:
-            self.notify("a search is running: escape (or Cancel) stops it, keeping the best so far",
-                        severity="warning")
+            screen.notify("a search is running: escape (or Cancel) stops it, keeping the best so far",
+                          severity="warning")
             return
-        view = live.runner.latest_view() or self.view
+        view = live.runner.latest_view() or self._host.view
         if view is None or view.timeline is None or simulation.missing(view.scene, view.timeline) is not None:
-            self._command("simulate")  # the session tells what to do first (and journals the attempt)
+            live.command("simulate")  # the session tells what to do first (and journals the attempt)
             return
         budget = live.session.simulation_budget
         self.job = SearchJob(view.scene, view.timeline, live.canvas, DEFAULT_SEED, budget,
-                             on_progress=lambda progress: self.post_message(SearchProgressed(progress)))
-        self.query_one(SearchBar).begin(budget)
-        self.query_one(StatusBar).set(activity="simulating (escape cancels)")
-        self._search(self.job)
+                             on_progress=lambda progress: screen.post_message(SearchProgressed(progress)))
+        screen.query_one(SearchBar).begin(budget)
+        screen.query_one(StatusBar).set(activity="simulating (escape cancels)")
+        screen.run_worker(partial(self._search, self.job), thread=True, exclusive=True, exit_on_error=False,
+                          group="simulate", description="simulate")
 
-    @work(thread=True, exclusive=True, exit_on_error=False, group="simulate", description="simulate")
     def _search(self, job: SearchJob) -> None:
         try:
             offer = job.run()
         except PhysinkError as exc:
-            self.post_message(SearchFinished(job, None, str(exc)))
+            self._screen.post_message(SearchFinished(job, None, str(exc)))
             return
-        self.post_message(SearchFinished(job, offer))
+        self._screen.post_message(SearchFinished(job, offer))
 
-    def on_search_progressed(self, message: SearchProgressed) -> None:
+    def progressed(self, message: SearchProgressed) -> None:
         if self.job is not None:
-            self.query_one(SearchBar).show(message.progress)
+            self._screen.query_one(SearchBar).show(message.progress)
 
-    def on_search_finished(self, message: SearchFinished) -> None:
-        job = message.job
+    def finished(self, message: SearchFinished) -> None:
+        job, screen = message.job, self._screen
         if job is not self.job:
             return
         self.job = None
-        self.query_one(SearchBar).end()
-        status = self.query_one(StatusBar)
-        live = self.live
+        screen.query_one(SearchBar).end()
+        status = screen.query_one(StatusBar)
+        live = self._host.live
         if live is None or live.stopped:
             return
         if message.error is not None:
             status.set(activity="")
-            self.app.push_screen(ErrorModal("Cannot simulate", message.error))
+            screen.app.push_screen(ErrorModal("Cannot simulate", message.error))
             return
         offer = message.offer
         latest = live.runner.latest_view()
@@ -145,7 +161,7 @@ class BackgroundWork(Screen[None]):
             return
         job.stop()
         self._discarded = job
-        self.query_one(StatusBar).set(activity=DISCARDED)
+        self._screen.query_one(StatusBar).set(activity=DISCARDED)
 
     def simulated(self, view: SessionView, status: StatusBar) -> None:
         """Called with each view: once the session handled the result, the status bar says so."""
@@ -153,84 +169,82 @@ class BackgroundWork(Screen[None]):
             self._simulating = None
             status.set(activity=self._simulated if view.search is not None else "")
 
-    def on_search_bar_cancel(self, message: SearchBar.Cancel) -> None:
-        self.action_cancel()
-
     # -- export --------------------------------------------------------------------------------------------------
 
-    def action_export(self) -> None:
-        view = self.view
+    def export(self) -> None:
+        view, screen = self._host.view, self._screen
         if view is None or view.timeline is None or not view.timeline.events:
-            self.notify("nothing demonstrated to export yet", severity="warning")
+            screen.notify("nothing demonstrated to export yet", severity="warning")
             return
-        self._export(view, storage.exports_dir(), self.query_one(StatusBar))
+        screen.run_worker(partial(self._export, view, storage.exports_dir(), screen.query_one(StatusBar)),
+                          thread=True, exclusive=True, exit_on_error=False, group="export",
+                          description="export video")
 
-    @work(thread=True, exclusive=True, exit_on_error=False, group="export", description="export video")
     def _export(self, view: SessionView, folder: Path, status: StatusBar) -> None:
         from textual.worker import get_current_worker
 
         from physink_tui.render.export import Export, Look
 
-        worker = get_current_worker()
+        worker, app = get_current_worker(), self._screen.app
         folder.mkdir(parents=True, exist_ok=True)
         path = storage.new_journal_path(folder).with_suffix("").with_suffix(".mp4")
 
         def progress(done: int, total: int) -> None:
             if worker.is_cancelled:
                 raise _Cancelled
-            self.app.call_from_thread(status.set, activity=f"exporting {done}/{total} frames")
+            app.call_from_thread(status.set, activity=f"exporting {done}/{total} frames")
 
         try:
-            Export(view.scene, view.timeline, self.canvas, Look(width=960, height=600)).video(path, progress)
+            Export(view.scene, view.timeline, self._host.canvas, Look(width=960, height=600)).video(path, progress)
         except _Cancelled:
-            self.app.call_from_thread(status.set, activity="export cancelled")
+            app.call_from_thread(status.set, activity="export cancelled")
             return
         except PhysinkError as exc:
-            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", str(exc)))
+            app.call_from_thread(app.push_screen, ErrorModal("Cannot export", str(exc)))
             return
-        self.app.call_from_thread(status.set, activity=f"exported {path}")
+        app.call_from_thread(status.set, activity=f"exported {path}")
 
-    def action_picture(self) -> None:
+    def picture(self) -> None:
         """A PNG of the moment the scene view shows (any mode), beside the videos in the exports folder."""
-        view = (self.live.runner.latest_view() if self.live is not None else None) or self.view
+        host, screen = self._host, self._screen
+        view = (host.live.runner.latest_view() if host.live is not None else None) or host.view
         if view is None:
             return
-        self._picture(view, storage.exports_dir(), self.theme_name, self.query_one(StatusBar))
+        screen.run_worker(partial(self._picture, view, storage.exports_dir(), host.theme_name,
+                                  screen.query_one(StatusBar)),
+                          thread=True, exit_on_error=False, group="picture", description="export picture")
 
-    @work(thread=True, exit_on_error=False, group="picture", description="export picture")
     def _picture(self, view: SessionView, folder: Path, theme: str, status: StatusBar) -> None:
         from physink_tui.tui.picture import PICTURE_SIZE, write_picture
 
+        app = self._screen.app
         try:
             folder.mkdir(parents=True, exist_ok=True)
             path = storage.new_journal_path(folder).with_suffix("").with_suffix(".png")
-            write_picture(path, view, self.canvas, theme, PICTURE_SIZE)
+            write_picture(path, view, self._host.canvas, theme, PICTURE_SIZE)
         except OSError as exc:
-            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", f"{folder}: {exc}"))
+            app.call_from_thread(app.push_screen, ErrorModal("Cannot export", f"{folder}: {exc}"))
             return
         except PhysinkError as exc:
-            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", str(exc)))
+            app.call_from_thread(app.push_screen, ErrorModal("Cannot export", str(exc)))
             return
-        self.app.call_from_thread(status.set, activity=f"picture saved to {path}")
+        app.call_from_thread(status.set, activity=f"picture saved to {path}")
 
     # -- both ----------------------------------------------------------------------------------------------------
 
-    def action_cancel(self) -> None:
+    def cancel(self) -> None:
         """Escape: stop the search (its best so far goes to the session) and the export."""
         if self.job is not None and not self.job.stopped:
             self.job.stop()
-            self.query_one(StatusBar).set(activity="stopping the search after the rollout under way…")
-        self.workers.cancel_group(self, "export")
+            self._screen.query_one(StatusBar).set(activity="stopping the search after the rollout under way…")
+        self._screen.workers.cancel_group(self._screen, "export")
 
-    def stop_workers(self) -> None:
+    def stop(self) -> None:
         """Quitting: the search and the export stop, and nothing they did reaches the session."""
         job, self.job = self.job, None  # its end is then ignored
         if job is not None:
             job.stop()
-        self.workers.cancel_group(self, "export")
-
-    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
-        return self.live.command(name, *args, project=project) if self.live is not None else None
+        self._screen.workers.cancel_group(self._screen, "export")
 
 
 def _shows(view: SessionView, offer: Searched) -> bool:

@@ -1,5 +1,5 @@
 """The main screen: scene, timeline tree, narration, buttons and status; turns keys, buttons, the mouse and the
-tablet into journal entries for the live session; the blocking work (SIMULATE, export) is `background`'s.
+tablet into journal entries for the live session; the blocking work (SIMULATE, export) is its `BackgroundWork`'s.
 
 It keeps no state of the machine: what it shows comes from the latest `SessionView`, what it does goes to the
 session as an entry, so the session's journal rebuilds everything. The project path, the recording status and
@@ -20,6 +20,7 @@ from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.message import Message
+from textual.screen import Screen
 from textual.widgets import Input, Static, TextArea, Tree
 from textual.worker import Worker, WorkerState
 
@@ -27,6 +28,7 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.formats.project.files import save_project
+from physink_tui.formats.project.sanity import check_project
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
@@ -35,7 +37,7 @@ from physink_tui.tui.drawing_help import vocabulary_lines
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
-from physink_tui.tui.screens.background import BackgroundWork
+from physink_tui.tui.screens.background import BackgroundWork, SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
@@ -67,7 +69,7 @@ class SpeechStatus(Message):
     text: str
 
 
-class MainScreen(BackgroundWork):
+class MainScreen(Screen[None]):
     """The control panel."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
@@ -121,6 +123,8 @@ class MainScreen(BackgroundWork):
         self._seeking: tuple[JournalEntry, float] | None = None  # the last seek sent and its target clock
         self.scene_view: SceneView | None = None
         """The scene view, once composed (the app tells it when Textual painted over its Sixel picture)."""
+        self.background = BackgroundWork(self, self)
+        """SIMULATE and export, in worker threads."""
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
@@ -165,7 +169,7 @@ class MainScreen(BackgroundWork):
                          on_done=lambda: self.post_message(DeviceStatus("")))
 
     def show(self, view: SessionView) -> None:
-        self.drop_changed_search(view)
+        self.background.drop_changed_search(view)
         self.view = view
         if not self.is_current:  # under a modal (help, settings, a prompt): drawn when it closes (on_screen_resume)
             return
@@ -192,7 +196,7 @@ class MainScreen(BackgroundWork):
         if barrel_held(view.pens) != self._barrel and self.talk is not None:
             self._barrel = self.talk.button_pressed = not self._barrel  # holding the barrel button: push-to-talk
             self._follow_button(self._labels(view))
-        self.simulated(view, status)
+        self.background.simulated(view, status)
         status.show(view)
 
     def on_device_status(self, message: DeviceStatus) -> None:
@@ -206,8 +210,17 @@ class MainScreen(BackgroundWork):
 
     def _simulate_replayed(self) -> None:
         self.action_simulate()
-        if self.job is not None:
+        if self.background.job is not None:
             self.query_one(StatusBar).set(activity="replay done: you are in control; simulating (escape stops it)")
+
+    def on_search_progressed(self, message: SearchProgressed) -> None:
+        self.background.progressed(message)
+
+    def on_search_finished(self, message: SearchFinished) -> None:
+        self.background.finished(message)
+
+    def on_search_bar_cancel(self, message: SearchBar.Cancel) -> None:
+        self.background.cancel()
 
     def on_speech_status(self, message: SpeechStatus) -> None:
         self.query_one(StatusBar).set(speech=message.text)
@@ -357,8 +370,9 @@ class MainScreen(BackgroundWork):
         self.query_one(SceneView).set_theme(theme)
 
     def action_adopt(self) -> None:
-        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's: one
-        journaled ``load`` with the project embedded, so it is undoable and a replay rebuilds it."""
+        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's and the
+        demonstration it was found for kept beside it (for comparing them again): one journaled ``load`` with the
+        project embedded, so it is undoable and a replay rebuilds it."""
         view = self.view
         if view is None or view.search is None or self.live is None:
             self.notify("nothing to adopt: simulate first (g)", severity="warning")
@@ -366,14 +380,34 @@ class MainScreen(BackgroundWork):
         search = view.search
         try:
             scene = apply(view.scene, search.parameters)
-            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas))
+            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas,
+                                          view.timeline))
         except PhysinkError as exc:
             self.app.push_screen(ErrorModal("Cannot adopt the simulation", str(exc)))
             return
         self._command("load", "simulation", project=json.loads(text))
         if not search.found:
-            self.notify("adopted the best simulation found, which is not equivalent to the demonstration "
-                        "(undo with u)", severity="warning")
+            self.notify("adopted the best simulation found, which is not equivalent to the demonstration up to its "
+                        "last event (undo with u)", severity="warning")
+
+    def action_simulate(self) -> None:
+        self.background.simulate()
+
+    def action_export(self) -> None:
+        self.background.export()
+
+    def action_picture(self) -> None:
+        self.background.picture()
+
+    def action_cancel(self) -> None:
+        self.background.cancel()
+
+    def stop_workers(self) -> None:
+        """Quitting: the search and the export stop, and nothing they did reaches the session."""
+        self.background.stop()
+
+    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
+        return self.live.command(name, *args, project=project) if self.live is not None else None
 
     def action_help(self) -> None:
         self.app.push_screen(HelpScreen(((b.key.replace("full_stop", ".").replace("question_mark", "?"),
@@ -391,7 +425,8 @@ class MainScreen(BackgroundWork):
         if not path or view is None or self.live is None:
             return
         target = storage.project_target(path)
-        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas)
+        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas,
+                          view.demonstration)
         try:
             target.parent.mkdir(parents=True, exist_ok=True)
             save_project(project, target)
@@ -417,8 +452,8 @@ class MainScreen(BackgroundWork):
         try:
             with open(path, "rb") as f:
                 text = f.read().decode("utf-8")
-            decode_project(text, path)
-            obj = json.loads(text)
+            check_project(decode_project(text, path), path)
+            obj = json.loads(text.removeprefix("\ufeff"))
         except (OSError, UnicodeDecodeError) as exc:
             self.app.push_screen(ErrorModal("Cannot load", f"{path}: {exc}"))
             return
