@@ -143,7 +143,7 @@ def test_kiosk_replay(installed: Installed) -> None:
 def test_listen(installed: Installed) -> None:
     done = installed.physink("listen", str(SPEECH / "cmd00_0.wav"))  # the pocketsphinx model the wheel's deps bring
     assert done.returncode == 0, done.stderr
-    assert json.loads(done.stdout)["command"] == {"kind": "label", "label": "ball"}
+    assert json.loads(done.stdout)["text"] == "label ball"  # heard (whether it is accepted is the grammar's)
 
 
 def test_decode(installed: Installed) -> None:
