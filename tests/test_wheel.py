@@ -122,6 +122,9 @@ def test_export(installed: Installed, demo: Path) -> None:
     assert (installed.home / "still.png").read_bytes().startswith(b"\x89PNG")
     assert (installed.home / "video.mp4").stat().st_size > 1000
     assert "CAUSES" in (installed.home / "timeline.txt").read_text()
+    done = installed.physink("export", str(demo / "project.json"), "--timeline", "graph.svg")  # through Graphviz
+    assert done.returncode == 0, done.stderr
+    assert "Contact between" in (installed.home / "graph.svg").read_text()
 
 
 def test_simulate(installed: Installed, demo: Path) -> None:
