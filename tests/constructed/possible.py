@@ -25,7 +25,7 @@ from physink_tui.scene.physics.world import GRAVITY
 from physink_tui.session.session import Session
 from physink_tui.sim.evaluate import evaluate, rollout_seconds
 from physink_tui.sim.parameters import Parameters
-from physink_tui.sim.rollout import EXPLODED, rollout
+from physink_tui.sim.rollout import Stop, rollout
 from physink_tui.sim.seeding import seed as seed_parameters
 from physink_tui.timeline.events import Event, Timeline
 
@@ -121,7 +121,7 @@ def _throw(drawn: Session, v: tuple[float, float], pen: str, least: int):
     parameters = seed_parameters(scene, Timeline(()), drawn.canvas)
     parameters = Parameters(parameters.bodies, parameters.springs, {ball: v})
     result = rollout(scene, drawn.canvas, parameters, max_seconds=THROW_SECONDS)
-    if result.stopped_because == EXPLODED or result.flagged:
+    if result.stopped_because == Stop.EXPLODED or result.flagged:
         return None
     events = result.timeline.events
     contacts = sorted((ev for ev in events if ev.type == "contact" and ball in ev.components), key=lambda e: e.t0)
