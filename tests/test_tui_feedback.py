@@ -57,6 +57,7 @@ def test_each_message_of_the_session_is_in_the_status_line_and_the_narration_log
                                lambda v: len(v.scene.components) == 1)
             await shown(pilot, drawn)
             (ball,) = drawn.scene.components
+            assert any(m.kind == "outcome" for m in drawn.messages)  # what the stroke became, as the session says
             told = len(drawn.messages)
             await pilot.click(SceneView, offset=cell(app, 0.5, 0.5))  # a tap selects: the session says so
             tapped = await until(pilot, lambda v: v.selected == ball and len(v.messages) > told, timeout=GUARD)
@@ -65,6 +66,7 @@ def test_each_message_of_the_session_is_in_the_status_line_and_the_narration_log
             await drag(pilot, [(0.35 + 0.3 * k / 12, 0.5) for k in range(13)], button=3)  # erased with the right button
             erased = await until(pilot, lambda v: not v.scene.components, timeout=GUARD)
             await shown(pilot, erased)
+            assert [m.kind for m in erased.messages[len(tapped.messages):]].count("outcome") == 1  # the erase, said
             log = app.main.query_one(MessageLog)
             assert len(log.written) == len(erased.messages) >= 1 and log.lines  # drawn in the log
     asyncio.run(go())
