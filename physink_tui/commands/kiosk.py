@@ -99,9 +99,10 @@ def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSo
     """Waits for the tablet (hot-plug), then a source that survives it being unplugged and plugged back."""
     reader = _wait_for(lambda: open_reader(spec, DEVICE_ID), kiosk)
     info = reader.info
-    if not info.descriptor:
+    if info is None or not info.descriptor:
         reader.stop()
-        raise DeviceError(f"{info.path}: its report descriptor is unknown, and a journal needs one")
+        where = spec or DEVICE_ID if info is None else info.path
+        raise DeviceError(f"{where}: its report descriptor is unknown, and a journal needs one")
     device = JournalDevice(DEVICE_ID, info.name or None, info.bus, info.vid, info.pid, info.descriptor)
     mapping = mapping_for(device, zones)
     thresholds = TipThresholds()
@@ -143,7 +144,7 @@ def run(args: argparse.Namespace) -> int:
         except ValueError as exc:
             print(f"physink kiosk: --max-disk: {exc}", file=sys.stderr)
             return 2
-    settings = KioskSettings(args.idle, args.keep, max_bytes, Look(*args.video_size, 30))
+    settings = KioskSettings(args.idle, args.keep, max_bytes, Look(args.video_size[0], args.video_size[1], 30))
     if args.speech and args.replay is not None and args.speed != 1.0:
         print("physink kiosk: --speech listens in real time, so a replay with it needs --speed 1", file=sys.stderr)
         return 2

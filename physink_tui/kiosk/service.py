@@ -34,7 +34,6 @@ from physink_tui.formats.journal.entries import (
     PenEntry,
 )
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.formats.journal.writer import JournalWriter
 from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
@@ -46,11 +45,9 @@ from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
 from physink_tui.kiosk.hot_zones import HotZones
 from physink_tui.kiosk.store import SessionStore
 from physink_tui.render.export import Look
+from physink_tui.session.journaled import Journaled
 from physink_tui.session.modes.base import ModeName
-from physink_tui.session.runner import SessionRunner
-from physink_tui.session.session import Session
 from physink_tui.session.source_pump import SourcePump
-from physink_tui.session.view import SessionView
 
 MIN_FREE_BYTES = 50_000_000
 """A session starts only with this much free space in the output folder (a session's video is a few MB)."""
@@ -81,10 +78,10 @@ class _Live:
         self.start = start  # the kiosk's clock when the session began
         self.ended_at: float | None = None  # session time its end was decided at (its clock stops there)
         self._kiosk_clock = clock
-        self.writer = JournalWriter.create(folder / JOURNAL, header)
-        self.session = Session.from_header(header)
-        self.session.journal = self.writer
-        self.runner: SessionRunner[SessionView] = SessionRunner(self.session, clock=self.clock)
+        journaled = Journaled.create(header, folder / JOURNAL, clock=self.clock)
+        self.session, self.runner = journaled.session, journaled.runner
+        assert journaled.writer is not None  # (given a path)
+        self.writer = journaled.writer
         self.told_stopped = False
         self.runner.start()
 
@@ -273,8 +270,8 @@ class Kiosk:
             elif isinstance(entry, PenEntry) and self._mapping is not None:  # a sample in tablet space
                 verdict = self._controls.sample(PenSample(self._clock(), entry.x, entry.y, entry.p, entry.tip,
                                                           entry.range, entry.eraser, entry.b1, entry.b2, None, None, 0))
-                entry = replace(entry, **dict(zip(("x", "y"), self._mapping.to_canvas(entry.x, entry.y),
-                                                  strict=True)))
+                x, y = self._mapping.to_canvas(entry.x, entry.y)
+                entry = replace(entry, x=x, y=y)
             else:
                 if live is not None:
                     live.runner.submit(entry)
@@ -361,5 +358,7 @@ class Kiosk:
 
     def _indexed(self, folder: Path, summary: dict[str, object]) -> None:
         self.store.index(summary)
+        files = summary["files"]
+        listed = ", ".join(map(str, files)) if isinstance(files, list) else str(files)
         self.log(f"kiosk: session {folder.name} written: {summary['bodies']} bodies, {summary['events']} events, "
-                 f"{', '.join(summary['files'])}")  # type: ignore[arg-type]
+                 f"{listed}")

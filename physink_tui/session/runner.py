@@ -28,8 +28,9 @@ import time
 from collections.abc import Callable
 from typing import Generic, Protocol, TypeVar
 
-from physink_tui.formats.journal.entries import CommandEntry, JournalEntry, SayEntry
+from physink_tui.formats.journal.entries import CommandEntry, SayEntry
 from physink_tui.session.inbox import StampingInbox
+from physink_tui.session.simulation import SessionInput
 
 TICK_RATE = 120.0
 """Default times a second the worker moves the session's time on (``session.advance`` calls)."""
@@ -48,7 +49,7 @@ class RunnableSession(Protocol[ViewT_co]):
     def t(self) -> float:
         """Seconds since the session start reached so far."""
 
-    def handle(self, entry: JournalEntry) -> None:
+    def handle(self, entry: SessionInput) -> None:
         """Consume one entry (time first moves to ``entry.t``); never raises for any input."""
 
     def advance(self, t: float) -> None:
@@ -77,13 +78,13 @@ class SessionRunner(Generic[ViewT]):
 
     def __init__(self, session: RunnableSession[ViewT], *, clock: Callable[[], float] = time.monotonic,
                  tick_rate: float = TICK_RATE, max_fps: float = MAX_FPS,
-                 on_error: Callable[[BaseException], None] | None = None) -> None:
+                 on_error: Callable[[BaseException], object] | None = None) -> None:
         if not tick_rate > 0 or not max_fps > 0:
             raise ValueError(f"tick_rate and max_fps must be > 0, got {tick_rate!r} and {max_fps!r}")
         self.session = session
         self.tick_rate = tick_rate
         self.max_fps = max_fps
-        self._inbox = StampingInbox(clock, session.t)
+        self._inbox: StampingInbox[SessionInput] = StampingInbox(clock, session.t)
         self._on_error = on_error
         self._subscribers: list[Callable[[ViewT], None]] = []
         self._latest: ViewT | None = None
@@ -98,18 +99,18 @@ class SessionRunner(Generic[ViewT]):
 
     # -- any thread ------------------------------------------------------------------------------
 
-    def submit(self, entry: JournalEntry) -> JournalEntry | None:
+    def submit(self, entry: SessionInput) -> SessionInput | None:
         """Queue an input, stamped with the time now (its own ``t`` is ignored); return the stamped entry.
 
         Returns None once `stop` has begun: the entry is dropped, so it is neither handled nor journaled.
         """
         return self._inbox.put(entry)
 
-    def command(self, name: str, *args: str | float) -> JournalEntry | None:
+    def command(self, name: str, *args: str | float) -> SessionInput | None:
         """Submit a command (a key, a pad button): ``runner.command("mode", "demo")``."""
         return self.submit(CommandEntry(0.0, name, tuple(args)))
 
-    def say(self, text: str, began: float | None = None) -> JournalEntry | None:
+    def say(self, text: str, began: float | None = None) -> SessionInput | None:
         """Submit a recognised utterance, stamped with ``began`` (session seconds: when it began, e.g.
         `Utterance.began` on the runner's `now` scale) where no later entry has been stamped yet, else when it
         arrives; without ``began``, when it arrives."""
@@ -183,7 +184,7 @@ class SessionRunner(Generic[ViewT]):
         except Exception as exc:
             self._fail(exc)
 
-    def _handle(self, entries: list[JournalEntry]) -> None:
+    def _handle(self, entries: list[SessionInput]) -> None:
         for entry in entries:
             self.session.handle(entry)
         if entries:

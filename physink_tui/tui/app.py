@@ -7,17 +7,18 @@ main screen, asks before losing work; the controls are the main screen's, the st
 from __future__ import annotations
 
 import gc
-import json
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import ClassVar
+from typing import Any, ClassVar
 
+from rich.console import RenderableType
 from textual.app import App
 from textual.binding import Binding, BindingType
 from textual.message import Message
+from textual.screen import Screen
 from textual.widgets import Input, TextArea
 
 from physink_tui.errors import PhysinkError
@@ -31,6 +32,7 @@ from physink_tui.tui.live import LiveSession
 from physink_tui.tui.pacing import FramePacer
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
+from physink_tui.tui.widgets.bars import StatusBar
 
 STYLESHEET = "physink.tcss"
 """The panel's styles: package data of ``physink_tui.tui`` (pyproject.toml's package-data lists it)."""
@@ -201,7 +203,7 @@ class PhysinkApp(App[None]):
         if options.tablet:
             self.main.watch_tablet(options.device, options.serial)
         else:
-            self.main.query_one("#status").set(device="no tablet (mouse only)")
+            self.main.query_one("#status", StatusBar).set(device="no tablet (mouse only)")
         if options.project:
             self.main.open_project(options.project)
         if options.entries:
@@ -209,7 +211,7 @@ class PhysinkApp(App[None]):
         for note in options.notes:  # e.g. why the scene is in half-blocks: long enough to be read
             self.notify(note, timeout=30)
 
-    def _display(self, screen, renderable) -> None:  # type: ignore[no-untyped-def]
+    def _display(self, screen: Screen[Any], renderable: RenderableType | None) -> None:
         """Textual's one place that writes a screen update to the terminal, followed here by the scene view's Sixel
         picture when the update wrote cells over it (Textual has no public hook after painting; the scene view
         already writes its escapes through the same driver)."""
@@ -330,7 +332,3 @@ def make_app(options: TuiOptions | None = None) -> PhysinkApp:
     """The app for ``options`` (the CLI and the tests build it the same way)."""
     return PhysinkApp(options)
 
-
-def project_object(text: str) -> dict:
-    """A project file's JSON object, to embed in a ``load`` line (checked by the session as it loads)."""
-    return json.loads(text)

@@ -47,6 +47,8 @@ def check_project(project: Project, where: Place | str) -> Project:
     if isinstance(where, str):
         where = Place(where, SceneError)
     check_values(project.scene, project.canvas, project.timeline, where)
+    if project.demonstration is not None:  # an adopted simulation's demonstration, kept beside it
+        _timeline(project.demonstration, project.scene, where, "demonstration.events")
     return project
 
 
@@ -128,6 +130,8 @@ def _timeline(timeline: Timeline, scene: Scene, where: Place, events: str) -> No
         _named((c for c, _ in ev.sides), f"{path}.sides", "component", known, where)
         _named((c for c, _ in ev.regions), f"{path}.regions", "component", known, where)
         _named((c for c, _ in ev.tracks), f"{path}.tracks", "component", known, where)
+        for k, pair in enumerate(ev.in_contact):
+            _named(pair, f"{path}.in_contact[{k}]", "id", known, where)
         rows = [(f"{path}.trajectory[{j}][0]", p.t) for j, p in enumerate(ev.trajectory)]
         rows += [(f"{path}.tracks[{k}].trajectory[{j}][0]", p.t) for k, (_, frames) in enumerate(ev.tracks)
                  for j, p in enumerate(frames)]

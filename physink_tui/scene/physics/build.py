@@ -28,7 +28,6 @@ from physink_tui.scene.components import (
     Scene,
     Spring,
 )
-from physink_tui.scene.physics.state import Pose
 from physink_tui.scene.physics.surfaces import ROPE_MATERIAL, Surfaces
 
 POLYLINE_RADIUS = 2.0
@@ -76,7 +75,7 @@ class Built:
     links: dict[str, tuple[pymunk.Body, ...]] = field(default_factory=dict)
     owner: dict[pymunk.Shape, str] = field(default_factory=dict)
     z: dict[str, int] = field(default_factory=dict)
-    rest_pose: dict[pymunk.Body, Pose] = field(default_factory=dict)
+    rest_pose: dict[pymunk.Body, tuple[float, float, float]] = field(default_factory=dict)
     carriers: dict[str, tuple[pymunk.Body, ...]] = field(default_factory=dict)
     paths: dict[str, tuple[Point, ...]] = field(default_factory=dict)
     welds: list[tuple[pymunk.Body, pymunk.Body]] = field(default_factory=list)
@@ -234,7 +233,7 @@ def _distinct(spec: Body) -> list[Point]:
 
 def _polyline_segments(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
     points = _distinct(spec)
-    segments = []
+    segments: list[pymunk.Shape] = []
     for i in range(len(points) - 1):
         segment = pymunk.Segment(body, points[i], points[i + 1], POLYLINE_RADIUS)
         # Neighbours let a ball roll over the joins between segments instead of catching on their corners.
@@ -373,7 +372,9 @@ def _add_rope(built: Built, rope: Rope, *, index: int) -> None:
     path = rope_path(rope.points)
     if not sum(math.dist(path[i], path[i + 1]) for i in range(len(path) - 1)) > 0:
         raise SceneError(f"rope {rope.id!r} has zero length: {rope.points!r}")
-    links, shapes, parts = [], [], []
+    links: list[pymunk.Body] = []
+    shapes: list[pymunk.Shape] = []
+    parts: list[pymunk.Constraint] = []
     bit = 1 << (index % 32)
     no_self = pymunk.ShapeFilter(group=index + 1, categories=bit)
     for (x0, y0), (x1, y1) in itertools.pairwise(path):

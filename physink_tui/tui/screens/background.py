@@ -21,12 +21,13 @@ from textual.message import Message
 from textual.screen import Screen
 
 from physink_tui.errors import PhysinkError
-from physink_tui.formats.journal.entries import JournalEntry
+from physink_tui.scene.components import Scene
 from physink_tui.session import simulation
 from physink_tui.session.search_job import Progress, SearchJob
-from physink_tui.session.simulation import Searched
+from physink_tui.session.simulation import Searched, SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.defaults import DEFAULT_SEED
+from physink_tui.timeline.events import Timeline
 from physink_tui.tui import storage
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.screens.modals import ErrorModal
@@ -86,7 +87,7 @@ class BackgroundWork:
         self._host = host
         self.job: SearchJob | None = None
         """The search running, or None."""
-        self._simulating: JournalEntry | None = None  # the simulate entry submitted, until the session handled it
+        self._simulating: SessionInput | None = None  # the simulate entry submitted, until the session handled it
         self._discarded: SearchJob | None = None  # a search stopped because the machine changed
         self._same: tuple[object, object] | None = None  # a (scene, timeline) found equal to the one searched
         self._simulated = ""  # what the status bar says once it has
@@ -143,7 +144,8 @@ class BackgroundWork:
             return
         offer = message.offer
         latest = live.runner.latest_view()
-        if job is self._discarded or (offer is not None and (latest is None or not _shows(latest, offer))):
+        if job is self._discarded or (offer is not None and (latest is None
+                                                             or not offer.searched(latest.scene, latest.timeline))):
             status.set(activity=DISCARDED)
             return
         if offer is None:
@@ -254,12 +256,7 @@ class BackgroundWork:
         self._screen.workers.cancel_group(self._screen, "export")
 
 
-def _shows(view: SessionView, offer: Searched) -> bool:
-    """Whether ``view`` shows the document ``offer`` searched."""
-    return _searched(view, offer.scene, offer.timeline)
-
-
-def _searched(view: SessionView, scene: object, timeline: object) -> bool:
+def _searched(view: SessionView, scene: Scene, timeline: Timeline) -> bool:
     """Whether ``view`` shows this scene and timeline (the same objects, or equal ones)."""
     return ((view.scene is scene or view.scene == scene)
             and (view.timeline is timeline or view.timeline == timeline))

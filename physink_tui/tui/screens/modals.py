@@ -36,10 +36,6 @@ class HelpScreen(ModalScreen[None]):
             with VerticalScroll():
                 yield Static("\n".join(drawing + lines + mouse), id="help-text", markup=False)
 
-    def action_dismiss(self) -> None:
-        self.dismiss(None)
-
-
 class ErrorModal(ModalScreen[None]):
     """A `PhysinkError` (or any failure a user caused), in words; the work is kept."""
 
@@ -57,9 +53,6 @@ class ErrorModal(ModalScreen[None]):
             yield Button("OK", id="ok", variant="primary")
 
     def on_button_pressed(self, event: Button.Pressed) -> None:
-        self.dismiss(None)
-
-    def action_dismiss(self) -> None:
         self.dismiss(None)
 
 
@@ -124,6 +117,3 @@ class TextScreen(ModalScreen[None]):
             with VerticalScroll():
                 yield Static(self._text, id="text-body", markup=False)
             yield Static("escape closes", classes="hint")
-
-    def action_dismiss(self) -> None:
-        self.dismiss(None)

@@ -12,6 +12,7 @@ still is a dwell (the session's gesture engine sees the time pass); positions go
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -27,7 +28,8 @@ from physink_tui.errors import RenderError
 from physink_tui.render import kitty, sixel
 from physink_tui.render.frames import Demonstration, view_frame
 from physink_tui.render.gif_palette import Palette
-from physink_tui.render.renderer import MIN_SIZE, Renderer
+from physink_tui.render.limits import MIN_SIDE
+from physink_tui.render.renderer import Renderer
 from physink_tui.session.view import SessionView
 from physink_tui.tui.graphics import DEFAULT_CELL, KINDS
 from physink_tui.tui.halfblocks import HalfBlocks
@@ -109,7 +111,7 @@ class SceneView(Widget, can_focus=True):
     def _make_renderer(self, columns: int, rows: int) -> None:
         width, height = columns * self._scale[0], rows * self._scale[1]
         self._palette = None
-        if width >= MIN_SIZE and height >= MIN_SIZE:
+        if width >= MIN_SIDE and height >= MIN_SIDE:
             self._renderer = Renderer(width, height, self.canvas, self.theme_name, controls=False)
         else:
             self._renderer = None
@@ -176,7 +178,8 @@ class SceneView(Widget, can_focus=True):
         if self.graphics == "sixel" and self.sent:
             self.call_after_refresh(self._draw_sixel, self.sent[0])
 
-    def painted(self, region: tuple[int, int, int, int] | None, spans: list[tuple[int, int, int]] = ()) -> None:
+    def painted(self, region: tuple[int, int, int, int] | None,
+                spans: Sequence[tuple[int, int, int]] = ()) -> None:
         """Textual has just written cells to the terminal (``region`` x, y, width, height of a whole layout, or the
         ``spans`` (y, x1, x2) of a partial update): a Sixel picture those cells covered is drawn again at once, in
         order after them (a full repaint, e.g. when the tree first fills, writes blank cells over it)."""
