@@ -23,7 +23,7 @@ class MessageLog(RichLog):
     """The session's messages, scrolled to the newest unless the user scrolled up."""
 
     def __init__(self, **kwargs) -> None:
-        super().__init__(max_lines=MAX_LINES, wrap=True, markup=False, highlight=False, **kwargs)
+        super().__init__(max_lines=MAX_LINES, wrap=True, min_width=20, markup=False, highlight=False, **kwargs)
         self.told: tuple[Message, ...] = ()
         """The messages the log shows (the view's)."""
         self.written: list[str] = []
