@@ -67,7 +67,8 @@ def mapping_for(device: JournalDevice, zones: HotZones) -> TabletMapping:
                          area=zones.area)
 
 
-def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
+def _replay_source(path: str, speed: float, zones: HotZones,
+                   idle_s: float) -> tuple[PenSource, JournalDevice, JournalHeader]:
     try:
         capture = Capture.from_file(path)
     except OSError as exc:
@@ -77,7 +78,9 @@ def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource,
     first = capture.devices[0]
     device = JournalDevice(DEVICE_ID, first.name, first.bus, first.vid, first.pid, first.descriptor)
     header = header_for_capture(Capture((first,), ()), mapping_for(device, zones))
-    return CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed), device, header
+    # a gap longer than --idle ends the session whatever its length: the replay does not wait it out in full
+    source = CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed, max_gap=idle_s + 1.0)
+    return source, device, header
 
 
 def _wait_for(open_fn: Callable[[], T], kiosk: Kiosk) -> T:
@@ -101,8 +104,9 @@ def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSo
     info = reader.info
     if info is None or not info.descriptor:
         reader.stop()
-        where = spec or DEVICE_ID if info is None else info.path
-        raise DeviceError(f"{where}: its report descriptor is unknown, and a journal needs one")
+        where = (spec or DEVICE_ID) if info is None else info.path
+        raise DeviceError(f"{where}: its report descriptor is unknown (is it a tablet's hidraw node?), and a journal "
+                          "needs one")
     device = JournalDevice(DEVICE_ID, info.name or None, info.bus, info.vid, info.pid, info.descriptor)
     mapping = mapping_for(device, zones)
     thresholds = TipThresholds()
@@ -150,10 +154,12 @@ def run(args: argparse.Namespace) -> int:
         return 2
     kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
-    ears = _ears(args, kiosk, kiosk.clock)  # a replay's clock is the capture's own (`Kiosk.run`)
+    if args.replay is not None:
+        kiosk.use_capture_clock()  # a replay's clock is the capture's own, the microphone's too
+    ears = _ears(args, kiosk, kiosk.clock)
     try:
         if args.replay is not None:
-            source, device, header = _replay_source(args.replay, args.speed, zones)
+            source, device, header = _replay_source(args.replay, args.speed, zones, args.idle)
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
             return kiosk.run(source, device, header, replay=True)
         if args.serial:

@@ -35,10 +35,18 @@ version; every value read is checked by the one JSON checker and named by its pl
 - `strict_json.py`: `unique_pairs`: a key twice in one JSON object is an error, not the last one silently
 - `atomic_write.py`: `write_text_atomic`: a complete new file or the old one untouched (temporary file, fsync,
   rename, directory fsync)
-- `outputs.py`: the one way commands write results: `OutputFolder` (prepared per run: made, cleared of this
-  program's own outputs (`OWN_FILES`) and leftover `.*.tmp`; each file atomic; every `OSError` one `PhysinkError`
-  naming path and cause) and `StdoutGuard` (a broken pipe silences stdout, a full one is reported at the end; files
-  are still written)
+- `outputs.py`: the one way commands write results: `OutputFolder` (prepared per run: made, cleared of this program's
+  own outputs (`OWN_FILES`) and leftover `.*.tmp`; each file atomic; every `OSError` one `PhysinkError` naming path and
+  cause; or `staged` + `commit`, `physink simulate`'s: the new files beside the last run's, renamed over them at the
+  end, so a kill leaves the last complete result), `check_outputs` (before anything is written: refuses an output that
+  is an input of the run, a file that is not a regular one -- device, FIFO, symlink, folder -- or another output of the
+  run) and `StdoutGuard` (a broken pipe silences stdout, a full one is reported at the end; files are still written)
+- `project/sanity.py`: `check_project`, the one check of a project's values every command makes before using it
+  (`load_project`: export, simulate, the TUI's start and Load; the session's `load` command), so all accept and
+  refuse the same projects: canvas sides, positions, radii, outlines the physics can build
+  (`scene.physics.outlines.outline_problem`), densities, frictions, spring constants and times bounded; each refusal
+  names the file and the JSON path. A timeline naming a component the scene lacks still loads (the user's work):
+  `named` lists them, `export` says so and `simulate` refuses it
 - `session_outputs.py`: the one output path of a session, shared by `physink demo` and `physink replay`:
   `write_session_outputs` writes `timeline.json` and `timeline.txt` (after a demonstration) and `project.json` (with
   the user's vocabulary lines); `session_output_texts` gives the same texts by name, which the tests compare replays

@@ -1,9 +1,13 @@
 """The headless kiosk recording service (`physink kiosk`): a driver of the session with no UI, never Textual.
 
 `physink kiosk` is a driver of the session with no UI. `commands/kiosk.py` opens the tablet (waiting for it;
-`ReconnectingSource` for unplugging) or a capture (`CaptureReplaySource`, realtime, `--speed` times faster, with the
-runner's clock running as fast, so the sessions' input time is the capture's), builds the journal header (the canvas
-mapped onto the tablet's area beside the hot zones), installs the SIGTERM handler and runs `kiosk.service.Kiosk`:
+`ReconnectingSource` for unplugging) or a capture (`CaptureReplaySource`, realtime, `--speed` times faster). A replay's
+clock is the capture's own: the source pump keeps each report's time (`keep_time`), the kiosk's clock is the latest
+report's and `--idle` is measured between reports, so the sessions (their journals, byte for byte) are the same at any
+speed; an end stops the ended session's clock at that moment (`_Live.end_now`); a mode press reads the mode from the
+session's view once the runner has handled every input before it (`SessionRunner.wait_handled`). A `--device` value that
+can name no tablet is refused at once. It builds the journal header (the canvas mapped onto the tablet's area beside the
+hot zones), installs the SIGTERM handler and runs `kiosk.service.Kiosk`:
 
 - `hot_zones.py`: `HotZones`: rectangles of the tablet that are buttons (`mode`, `sketch`, `demo`, `undo`, `redo`,
   `clear`, `play`, `stop`, `end`) and the drawing `area` beside them; the default strip along the top edge; the JSON
@@ -25,8 +29,15 @@ mapped onto the tablet's area beside the hot zones), installs the SIGTERM handle
   voice-activity detector cuts utterances, no push-to-talk); each utterance goes to `Kiosk.hear`, which says an
   accepted one to the session being recorded, stamped when it began (session time), counts it as input for `--idle`,
   and logs a rejected one; no microphone or model: one log line, recording goes on
-- `store.py`: `SessionStore`: folders named by UTC start, `index.jsonl` appended one fsynced line at a time (never
-  twice for a session), unfinished and finished folders, `retire` for `--keep`/`--max-disk`, free space
+- `store.py`: `SessionStore`: folders named by UTC start, `index.jsonl` appended one fsynced line at a time (never twice
+  for a session), unfinished and finished folders, `retire` for `--keep`/`--max-disk` (never the session just written
+  nor the one recording, which still count), free space
+
+Recovery reads a journal with `read_journal(salvage=True)`: every entry before the first malformed line is kept and
+`Journal.dropped` says from which line on what was left out and why (logged, and `dropped` in `session.json`), so a
+garbage line loses only what follows it and the session is finished once, never retried at every start; a journal
+whose header cannot be read is set aside as `journal.physink.jsonl.unreadable` (`SessionStore.set_aside`). The TUI's
+`storage.unfinished_journals` reads the same way and its recovery question says what is dropped.
 
 Crash safety comes from the session's journal: every handled entry is written and flushed at once (fsync paced by
 `FSYNC_INTERVAL`), so SIGKILL loses only the entries still queued for the runner's next tick (under 10 ms at 120

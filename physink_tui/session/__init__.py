@@ -22,13 +22,13 @@ the input's.
   of timeline time (demo) or of the drag (adjust), so n small advances end exactly where one large one does, step
   for step; a possible half-X that has waited `X_WAIT` with no second stroke begun is taken on its own, at the time
   it stopped waiting.
-- **`view()`** returns a frozen `SessionView` (`session/view.py`, built by `snapshot`): `revision` (grows whenever
-  the session changed), `t`, `mode`, the document's `scene`, `poses` (where the mode's world shows each body), `ink`
+- **`view()`** returns a frozen `SessionView` (`session/view.py`, built by `snapshot`): `revision` (grows whenever the
+  session changed), `t`, `mode`, the document's `scene`, `poses` (where the mode's world shows each body), `ink`
   (strokes being drawn, canvas units), `pending` (a waiting half-X), `selected`, `can_undo` (a demonstration's
   uncommitted take counts), `can_redo`, `timeline` (while demonstrating, what has been recorded so far), `clock`,
-  `duration`, `playing`, `messages`, `pens` (each input device's pen state and its stroke's pressure, for a status
-  line), and `search` (the last `simulate`'s `SearchResult` for the document shown, or None). Every field is
-  immutable. `benchmarks/bench_view.py` measures it.
+  `duration`, `playing`, `messages` (each `Message` an `outcome` of a stroke or label, or a `note`), `pens` (each input
+  device's pen state and its stroke's pressure, for a status line), and `search` (the last `simulate`'s `SearchResult`
+  for the document shown, or None). Every field is immutable. `benchmarks/bench_view.py` measures it.
 - **`finish(t)`**: time advances to `t`, what the current mode was doing is committed to the document, and a journal
   gets a `cmd` `end` line at that time and is closed. An `end` entry in the input does the same work at its time
   (the driver then calls `finish`, which journals nothing twice).

@@ -40,6 +40,8 @@ class StampingInbox(Generic[E]):
         self._last = start_t
         self._entries: list[E] = []
         self._closed_at: float | None = None
+        self.submitted = 0
+        """Entries queued so far (read without the lock: it only grows)."""
         self._lock = threading.Lock()
         self._arrived = threading.Condition(self._lock)
         """Notified whenever an entry is queued or the inbox closes (the worker waits on it)."""
@@ -69,6 +71,7 @@ class StampingInbox(Generic[E]):
             stamped = replace(entry, t=self._now() if at is None else max(self._last, min(at, self._now())))
             self._last = stamped.t
             self._entries.append(stamped)
+            self.submitted += 1
             self._arrived.notify()
             return stamped
 

@@ -94,6 +94,8 @@ class SessionRunner(Generic[ViewT]):
         self._unpublished = True  # the session changed since the last view published
         self._thread: threading.Thread | None = None
         self._finished = False
+        self._handled = 0  # entries handled, their view published (`wait_handled`)
+        self._handled_changed = threading.Condition()
         self.error: BaseException | None = None
         """The exception that stopped the worker, or None."""
 
@@ -125,6 +127,15 @@ class SessionRunner(Generic[ViewT]):
         e.g. with Textual's ``call_from_thread``; do not block in it)."""
         with self._view_lock:
             self._subscribers.append(callback)
+
+    def wait_handled(self, timeout: float) -> bool:
+        """Block until every entry submitted so far has been handled and a view showing it published (a driver that
+        reads `latest_view` to decide its next input: the kiosk's mode button); False after ``timeout`` seconds,
+        or at once when the worker is not running."""
+        target = self._inbox.submitted
+        with self._handled_changed:
+            return self._handled_changed.wait_for(
+                lambda: self._handled >= target or not self.running or self._finished, timeout)
 
     def latest_view(self) -> ViewT | None:
         """The last view published, or None before the first."""
@@ -183,6 +194,10 @@ class SessionRunner(Generic[ViewT]):
                 self._publish(now)
         except Exception as exc:
             self._fail(exc)
+        if entries:
+            with self._handled_changed:
+                self._handled += len(entries)
+                self._handled_changed.notify_all()
 
     def _handle(self, entries: list[SessionInput]) -> None:
         for entry in entries:
@@ -229,6 +244,8 @@ class SessionRunner(Generic[ViewT]):
             self._publish(end_t)
         except Exception as exc:
             self._fail(exc)
+        with self._handled_changed:
+            self._handled_changed.notify_all()  # a waiter sees the runner finished
 
     def _next_due(self) -> float:
         """Session time at which `step` next has something to do without new input."""

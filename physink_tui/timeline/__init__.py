@@ -32,9 +32,10 @@
   begin in contact (movable, of two mechanisms, within `BEGIN_IN_CONTACT` = 6 units or overlapping; for SIMULATE
   both as drawn and as settled), the regions' reach (a quarter of the canvas diagonal)
 - `begun_in_contact.py`: movable bodies that begin a demonstration in contact (thesis figure 3-9): `drives_into` (a
-  body moving towards the other, mostly along the line between them: a push, so a contact; otherwise their touches
-  are the contact they began in, and a body jostled by its moving partner is not set moving), `parted` (4 units
-  further apart than they began: the end-contact)
+  body moving towards the other, across their contact -- the physics' normal, or `facing`: from the point of its
+  hull nearest the other's centre -- at more than 30 units/s and not almost along the contact: a push, so a
+  contact; otherwise their touches are the contact they began in, and a body jostled by its moving partner is not
+  set moving), `parted` (4 units further apart than they began: the end-contact)
 - `tape.py`: playback: every body's recorded frames (trajectories and tracks) interpolated at timeline time t
 - `narrate.py`: the thesis's "X CAUSES / -- Y" text; components named as `Scene.names()` gives them (the label; an
   unlabelled spring or rope as what it is, `spring`, `rope`; an unlabelled body by its id), in the text and in

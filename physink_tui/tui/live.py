@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from physink_tui.formats.journal.entries import CommandEntry, JournalEntry, JournalHeader
+from physink_tui.input.replay_clock import ReplayClock
 from physink_tui.input.scripted_sources import ProgrammaticPenSource
 from physink_tui.session.journaled import Journaled
 from physink_tui.session.simulation import SessionInput
@@ -36,20 +37,27 @@ class JournalFeed:
     """Submits recorded entries to a runner when they are due (``speed`` times real time), from a thread.
 
     ``end`` entries are left out: the live session goes on after the feed. ``on_done`` is called on the feed's
-    thread when the last entry was submitted (or the feed was stopped).
+    thread when the last entry was submitted (or the feed was stopped). Given the runner's ``clock`` (a
+    `ReplayClock`), it paces by it and holds it at each entry's due time until the entry is submitted: each entry
+    is stamped with its recorded time (scaled by ``speed``), however late a loaded machine gets to it.
     """
 
     def __init__(self, entries: Sequence[JournalEntry], submit: Callable[[JournalEntry], object], *,
-                 speed: float = 1.0, on_done: Callable[[], object] | None = None) -> None:
+                 speed: float = 1.0, on_done: Callable[[], object] | None = None,
+                 clock: ReplayClock | None = None) -> None:
         if not speed > 0:
             raise ValueError(f"speed: expected > 0, got {speed!r}")
         self.entries = [e for e in entries if not (isinstance(e, CommandEntry) and e.name == "end")]
         self._submit = submit
         self._speed = speed
         self._on_done = on_done
+        self._clock = clock
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self.submitted = 0
+        self.last_t: float | None = None
+        """The stamp of the last entry submitted (what ``submit`` returned), once one was: the session has handled
+        all the feed gave it when its view's ``t`` is at least this."""
 
     def start(self) -> None:
         self._thread = threading.Thread(target=self._run, name="journal-feed", daemon=True)
@@ -65,18 +73,38 @@ class JournalFeed:
             self._thread.join()
 
     def _run(self) -> None:
-        start = time.monotonic()
-        first = self.entries[0].t if self.entries else 0.0
-        for entry in self.entries:
-            delay = (entry.t - first) / self._speed - (time.monotonic() - start)
-            if delay > 0 and self._stop.wait(delay):
-                break
-            if self._stop.is_set():
-                break
-            self._submit(entry)
-            self.submitted += 1
+        if self._clock is not None:
+            self._run_on_clock(self._clock)
+        else:
+            start = time.monotonic()
+            first = self.entries[0].t if self.entries else 0.0
+            for entry in self.entries:
+                delay = (entry.t - first) / self._speed - (time.monotonic() - start)
+                if delay > 0 and self._stop.wait(delay):
+                    break
+                if self._stop.is_set():
+                    break
+                self._took(self._submit(entry))
         if self._on_done is not None:
             self._on_done()
+
+    def _run_on_clock(self, clock: ReplayClock) -> None:
+        origin = clock.running()
+        first = self.entries[0].t if self.entries else 0.0
+        try:
+            for entry in self.entries:
+                due = origin + (entry.t - first) / self._speed
+                clock.hold_at(due)
+                if clock.wait_until(due, self._stop):
+                    break
+                self._took(self._submit(entry))
+        finally:
+            clock.release()
+
+    def _took(self, stamped: object) -> None:
+        self.submitted += 1
+        if isinstance(stamped, JournalEntry):
+            self.last_t = stamped.t
 
 
 class LiveSession:
@@ -97,7 +125,9 @@ class LiveSession:
                  clock: Callable[[], float] = time.monotonic) -> None:
         self.header = header
         self.journal_path = journal_path
-        journaled = Journaled.create(header, journal_path, prior=prior, clock=clock, max_fps=max_fps,
+        self.clock = ReplayClock(clock)
+        """The runner's clock: ``clock`` itself, except that a replay holds it at each entry's time (`JournalFeed`)."""
+        journaled = Journaled.create(header, journal_path, prior=prior, clock=self.clock, max_fps=max_fps,
                                      on_error=on_error)
         self.session, self.runner = journaled.session, journaled.runner
         self.mouse = ProgrammaticPenSource(MOUSE)
@@ -127,7 +157,7 @@ class LiveSession:
         """Feed recorded entries at ``speed`` times real time (one feed at a time)."""
         if self.feed is not None:
             self.feed.stop()
-        self.feed = JournalFeed(entries, self.runner.submit, speed=speed, on_done=on_done)
+        self.feed = JournalFeed(entries, self.runner.submit, speed=speed, on_done=on_done, clock=self.clock)
         self.feed.start()
         return self.feed
 

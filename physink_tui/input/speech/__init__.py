@@ -16,6 +16,9 @@ One utterance goes one way whatever brought it: `physink listen FILE.wav` and th
                  ── `physink listen` prints {"text", "command", "rejected"};
                     a TUI submits accepted text with SessionRunner.say(text, began)
 
+- `wav_file.py`: a WAV file's RIFF chunks parsed by hand (Python 3.11's `wave` refuses WAVE_FORMAT_EXTENSIBLE and
+  passes a truncated file's partial frames on silently): plain and extensible PCM of 8-32 bits, any channels; a file
+  cut off inside its header or its samples, or a header with no samples, named as such
 - `grammar.py`: `SpeechGrammar.build(labels, vocabulary, speakable=)`: names (labels, `DEFAULT_COMPONENTS`,
   vocabulary-file `component` lines), the phrase verbs and prepositions (plus a few spoken pairs, "out of"), words
   the recogniser cannot say left out and listed; `jsgf()` (`label <component>` or `[the] <component> <verb>

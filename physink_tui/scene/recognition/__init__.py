@@ -24,7 +24,11 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    four-sided fit with right angles is a `Box` placed where its four drawn sides lie. Each candidate's score is `64
    log(mse + sigma^2) + complexity * params * log 64` (`recognize.Weights`); candidates are built only when the
    ranking reaches them (`candidates.Pending`); the best one whose shape lies within the stroke's bounds grown by 5
-   % wins, the next kinds are the alternatives.
+   % wins, the next kinds are the alternatives. Outlines are kept as drawn (issue 25): a box squared from a drawn quad
+   that pokes out of those bounds (a rhombus, a diamond) gives way to the quad itself as a polygon
+   (`Candidate.fallback`), and a box that leaves more than a tenth of the stroke's points farther than 8 % of its
+   diagonal from its sides is not kept (`recognize.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is not
+   a box the size of the stem).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a

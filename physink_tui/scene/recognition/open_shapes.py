@@ -30,6 +30,9 @@ VERY_SHARP_CORNER = 100.0
 SHARP_CORNER = 62.0
 CORNER_SHARE = 0.45
 NEARLY_ROUND = 1.25
+SMOOTH = 0.55
+"""A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
+speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
 
 
 def _pt(p: np.ndarray) -> tuple[float, float]:
@@ -80,7 +83,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
                      for a, b in itertools.pairwise(corners)]
     coarse = sg.coarse_turning(work, noise)
     concentration = sf.turn_concentration(coarse)
-    smooth = concentration < 0.55  # a polyline turning the same way at sharp corners is not round
+    smooth = concentration < SMOOTH  # a polyline turning the same way at sharp corners is not round
     if (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
             and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum())):
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)

@@ -202,7 +202,17 @@ class MainScreen(Screen[None]):
             self.query_one(StatusBar).set(activity="replay done: you are in control")
             if self._simulate_after:
                 self._simulate_after = False
-                self.set_timer(0.5, self._simulate_replayed)  # once the session has handled the last entries
+                self._simulate_once_handled()
+
+    def _simulate_once_handled(self) -> None:
+        """SIMULATE once the session has handled the replay's last entry (its view's time has reached the entry's
+        stamp), however long that takes."""
+        feed = self.live.feed if self.live is not None else None
+        view = self.live.runner.latest_view() if self.live is not None else None
+        if feed is None or feed.last_t is None or (view is not None and view.t >= feed.last_t):
+            self._simulate_replayed()
+        else:
+            self.set_timer(0.05, self._simulate_once_handled)
 
     def _simulate_replayed(self) -> None:
         self.action_simulate()
