@@ -26,8 +26,10 @@ import time
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.outputs import OutputFolder, check_outputs
 from physink_tui.formats.project.files import load_project
+from physink_tui.formats.project.sanity import named
 from physink_tui.formats.session_outputs import write_session_outputs
 from physink_tui.progress import ProgressBar
+from physink_tui.scene.components import BACKGROUND
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
 from physink_tui.sim.evaluate import Problem, Score, compare_rollout, make_problem, simulate
 from physink_tui.sim.parameters import Parameters, apply
@@ -66,6 +68,10 @@ def _problem(path: str) -> tuple[Problem, tuple[str, ...]]:
         raise PhysinkError(f"{path}: no demonstration to reproduce ({what}): demonstrate the machine's behaviour "
                            "(demo mode) first")
     scene = project.scene
+    gone = sorted(named(project.timeline) - set(scene.components) - {BACKGROUND})
+    if gone:
+        raise PhysinkError(f"{path}: the demonstration moves {', '.join(map(repr, gone))}, which the scene does not "
+                           "have: demonstrate the machine again (or restore the body)")
     if not any(not scene.is_fixed(b.id) for b in scene.bodies()):
         raise PhysinkError(f"{path}: no movable body: draw a body that is not pinned or welded, and demonstrate "
                            "how it moves")

@@ -30,6 +30,7 @@ import math
 import warnings
 from collections.abc import Callable, Sequence
 from enum import StrEnum
+from typing import Any
 
 import numpy as np
 
@@ -296,7 +297,7 @@ class _Run:
     def stalled(self) -> bool:
         return self.since_better >= STALL_GENERATIONS
 
-    def _optimiser(self, n: int):
+    def _optimiser(self, n: int) -> Any:  # a cma.CMAEvolutionStrategy (cma has no type information)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # pycma warns about matplotlib, which it does not need here
             import cma

@@ -39,7 +39,9 @@ STRATEGIES = ("default", "grid")
 class Strategy(Protocol):
     """What a search strategy does between generations."""
 
-    finished: bool
+    @property
+    def finished(self) -> bool:
+        """Nothing is left to try (the search stops before the budget is spent)."""
 
     def generation(self, best: Parameters | None) -> list[Parameters]: ...
 
