@@ -22,6 +22,7 @@ from __future__ import annotations
 import argparse
 import csv
 import io
+import itertools
 import json
 import re
 import subprocess
@@ -104,9 +105,9 @@ def times_ms(raw: list[float | None]) -> list[float | None]:
     if not raw or any(t is None for t in raw):
         return [None] * len(raw)
     ts = [float(t) for t in raw if t is not None]
-    if any(b < a for a, b in zip(ts, ts[1:], strict=False)) or ts[-1] - ts[0] <= 0:
+    if any(b < a for a, b in itertools.pairwise(ts)) or ts[-1] - ts[0] <= 0:
         return [None] * len(raw)
-    steps = [b - a for a, b in zip(ts, ts[1:], strict=False) if b > a]
+    steps = [b - a for a, b in itertools.pairwise(ts) if b > a]
     scale = 1000.0 if steps and max(steps) < 1.0 else 1.0
     if (ts[-1] - ts[0]) * scale < 2.0 * len(ts):  # faster than 500 points a second: a clock in whole seconds
         return [None] * len(raw)
