@@ -101,7 +101,8 @@ def _git(gdir: Path, *args: str) -> bytes:
 
 def times_ms(raw: list[float | None]) -> list[float | None]:
     """The stroke's times in ms from its first point, or all None where the recorder kept no usable clock: a time
-    missing, going backwards, or ticking too coarsely for the stroke (whole seconds). Seconds (fractional, steps under 1) become ms."""
+    missing, going backwards, or ticking too coarsely for the stroke (whole seconds). Seconds (fractional, steps
+    under 1) become ms."""
     if not raw or any(t is None for t in raw):
         return [None] * len(raw)
     ts = [float(t) for t in raw if t is not None]
