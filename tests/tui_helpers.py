@@ -107,6 +107,25 @@ async def until_app(pilot, condition: Callable[[], bool], what: str = "", timeou
         if time.monotonic() > deadline:
             raise AssertionError(f"timed out waiting for {what or condition}")
         await pilot.pause(0.05)
+    await pilot.pause()  # what the change set going (a layout: where the next click lands) done too
+
+
+async def until_shown(pilot, predicate: Callable[[SessionView], bool]) -> SessionView:
+    """Wait until the main screen has been handed a view satisfying ``predicate`` (views reach it paced, after the
+    runner published them), then until the app is idle (that view drawn); the view."""
+    main = pilot.app.main
+    await until_app(pilot, lambda: main is not None and main.view is not None and predicate(main.view),
+                    "the screen to show the view awaited")
+    await pilot.pause()
+    return main.view
+
+
+async def click(pilot, selector: str) -> None:
+    """Click the button ``selector`` once it takes clicks: a Textual button ignores a click while its press effect
+    shows (0.2 s after the last one), so a second click on it at once would be lost."""
+    button = pilot.app.screen.query_one(selector)
+    await until_app(pilot, lambda: not button.has_class("-active"), f"{selector} to take clicks again")
+    await pilot.click(selector)
 
 
 async def screen_is(pilot, kind: type, guard: float = HANG_GUARD):

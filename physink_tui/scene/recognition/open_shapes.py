@@ -18,7 +18,7 @@ from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
 from physink_tui.scene.recognition.primitives import Line, Polyline, Recognition
-from physink_tui.scene.recognition.shape_fits import fit_circle, fit_ellipse, fit_line
+from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_circle, fit_ellipse, fit_line
 
 STRAIGHT = 0.12
 """A side is straight when it strays from its chord by less than this share of the chord (plus the noise)."""
@@ -60,7 +60,7 @@ def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     return None
 
 
-def round_error(ellipse: tuple, noise: float) -> float:
+def round_error(ellipse: EllipseFit, noise: float) -> float:
     """How far from round a stroke may be and still be a circle or ellipse: `ROUND_ERROR`, plus the pen's
     noise as a share of the ellipse's mean radius."""
     _, rx, ry, _, _ = ellipse

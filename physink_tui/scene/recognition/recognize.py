@@ -115,7 +115,8 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: fl
     if len(strokes) != 2:
         return Recognition(None, 0.0, None, (), f"expected one stroke or two (an X), got {len(strokes)}")
     first, second = recognize_stroke(strokes[0], noise=noise), recognize_stroke(strokes[1], noise=noise)
-    if first.kind == "line" and second.kind == "line":
+    if (first.kind == "line" and second.kind == "line" and isinstance(first.geometry, Line)
+            and isinstance(second.geometry, Line)):
         x = x_symbol(first.geometry, second.geometry)
         if x is not None:
             return Recognition("x", x[1], x[0], (("line", 0.5),))
@@ -250,7 +251,7 @@ def _score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> fl
             + weights.complexity * c.params * math.log(EFFECTIVE_SAMPLES))
 
 
-def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
+def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
           noise: float, diag: float, fitted: np.ndarray | None = None) -> Recognition:
     """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
     as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
