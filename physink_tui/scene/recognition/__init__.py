@@ -29,7 +29,7 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    (`Candidate.fallback`), and a box that leaves more than a tenth of the stroke's points farther than 8 % of its
    diagonal from its sides is not kept (`recognize.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is not
    a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
-   to the ellipse drawn (`Candidate.fallback` again), and a loop turning smoothly all round (under
+   to the ellipse drawn (`Candidate.fallback` again), and a loop about as wide as long turning smoothly all round (under
    `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
    (`recognize.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
