@@ -48,6 +48,8 @@ REPOS: tuple[tuple[str, str, str], ...] = (
      "datasets/custom"),
     ("ITT-25/assignment-06-gesture-recognition-uniUbungsAccount", "1b61d950dbfa872f90d437bcad0637a96cab0cd9",
      "datasets/own_recorded_gestures"),
+    ("ITT-25/assignment-06-gesture-recognition-Coldjack007", "1fa71eb0041c1e6118b22a0f077d29b88eeaa501", "datasets"),
+    ("ITT-26/assignment-06-gesture-recognition-Bam33751", "b6a1cfd75ae924030a59edf4161dd17f2d2b2dbc", "datasets"),
     ("ITT-26/assignment-06-gesture-recognition-Alphazerfall", "e406dd0263a94bd0fd0dacd791b809a4828fd998",
      "datasets/custom"),
     ("ITT-26/assignment-06-gesture-recognition-DerD4n", "1ee2c34f1e12bf8b20646375eeb1eca4a0d88450",
