@@ -2,8 +2,8 @@
 command is the session's, capturing audio the microphone's or the caller's.
 
 `Listener.hear` is the one path both `physink listen FILE.wav` and the microphone take. An utterance is accepted
-only when the recogniser's best path is a whole sentence of the grammar, the whole utterance fits it well enough
-against free speech (`Decoded.ratio`), every word of it but the articles scores at least the recogniser's threshold
+only when the recogniser's best path is a whole sentence of the grammar, every word of it but the articles scores
+at least the recogniser's threshold
 and is likely enough (articles are short and run into the next word, so their fit says little), and no rival
 sentence (another name or verb) comes close (`Decoded.margin`: then both are named, "heard 'label marble' or 'label
 ball'? say it again"); anything else is `Utterance.rejected`, with the reason (DESIGN.md "Speech conventions").
@@ -105,10 +105,6 @@ class Listener:
             why = f"not a sentence of the grammar: {decoded.text!r}" if decoded.text else "no words recognised"
             return Utterance(decoded.text, None, why, at, end - start, decoded)
         recogniser = self.recogniser
-        if decoded.ratio is not None and decoded.ratio < recogniser.min_ratio:
-            return Utterance(decoded.text, None, f"unlike any command: {decoded.text!r} fits {decoded.ratio:.2f} a "
-                             f"frame worse than free speech (at most {-recogniser.min_ratio:g} is allowed)", at,
-                             end - start, decoded)
         content = [w for w in words if w.word not in ARTICLES] or words
         worst = min(content, key=lambda w: w.score)
         if worst.score < recogniser.threshold:
