@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from physink_tui.input.speech.grammar import SpeechGrammar
 from physink_tui.input.speech.listener import Listener
@@ -83,3 +84,21 @@ def test_rivals_differ_in_exactly_one_name_or_the_verb() -> None:
     assert rival_jsgf(SpeechGrammar.build([], defaults=["ball"]), SpeechGrammar.build([], defaults=["ball"])
                       .parse("label ball")) is None
     assert differing("the ball hits paddle a".split(), "the egg hits paddle a".split()) == [1]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("voice", [("flite", "slt"), ("festival", "cmu_us_slt_arctic_hts")])
+def test_two_labels_that_sound_the_same_are_never_chosen_between_silently(voice: tuple[str, str]) -> None:
+    from speechgen import conditions, voices
+
+    from physink_tui.input.speech.audio import to_int16
+    from physink_tui.input.speech.backends import make_recogniser
+
+    if not voices.available(voice[0]):
+        pytest.fail(f"{voice[0]} cannot synthesise here: run scripts/setup.sh")
+    said = conditions.trimmed(voices.synthesise("label pear", voices.Voice(voice[0], voice[1], 1.0, None)))
+    audio = to_int16(conditions.in_room(said, np.random.default_rng(0)))
+    utterance = Listener(make_recogniser(), ["pear", "pair"]).hear(audio)
+    assert utterance.command is None
+    assert utterance.rejected in ("heard 'label pear' or 'label pair'? say it again",
+                                  "heard 'label pair' or 'label pear'? say it again")

@@ -111,10 +111,21 @@ class Listener:
             return Utterance(decoded.text, None, f"poorly matched: {worst.word!r} scored {worst.score:.2f} "
                              f"(at least {recogniser.threshold:g} is needed)", at, end - start, decoded)
         unsure = min(content, key=lambda w: w.confidence)
-        if unsure.confidence < recogniser.min_confidence:
+        if unsure.confidence < recogniser.min_confidence and not _close(decoded, unsure.word):
             return Utterance(decoded.text, None, f"unsure: {unsure.word!r} is only {unsure.confidence:.0%} likely "
                              f"(at least {recogniser.min_confidence:.0%} is needed)", at, end - start, decoded)
-        if decoded.margin < recogniser.min_margin:
+        if unsure.confidence < recogniser.min_confidence or decoded.margin < recogniser.min_margin:
             return Utterance(decoded.text, None, f"heard {decoded.text!r} or {decoded.alternative!r}? say it again",
                              at, end - start, decoded)
         return Utterance(decoded.text, command, None, at, end - start, decoded)
+
+
+CLOSE = 1.0
+"""A rival within this margin a frame is what an unsure word may have been: the rejection names it."""
+
+
+def _close(decoded: Decoded, word: str) -> bool:
+    """Whether ``decoded``'s rival differs in ``word`` and fits nearly as well (then it is worth naming)."""
+    if decoded.alternative is None or decoded.margin > CLOSE:
+        return False
+    return word in set(decoded.text.split()) - set(decoded.alternative.split())

@@ -181,9 +181,8 @@ class PocketsphinxRecogniser:
         decoded = Decoded(" ".join(w.word for w in words), tuple(words), len(samples) / RATE)
         command = self._grammar.parse(decoded.text)
         content = [w for w in words if w.word not in ARTICLES] or words
-        if (command is not None and min(w.score for w in content) >= self.threshold
-                and min(w.confidence for w in content) >= self.min_confidence):
-            decoded = self._rival(decoded, command, audio)
+        if command is not None and min(w.score for w in content) >= self.threshold:
+            decoded = self._rival(decoded, command, audio)  # also names what an unsure word may have been
         return replace(decoded, decode_seconds=time.perf_counter() - started)
 
     def _rival(self, decoded: Decoded, command: Command, audio: bytes) -> Decoded:
