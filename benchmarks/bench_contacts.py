@@ -42,9 +42,9 @@ def egg_cracker() -> Scene:
 def raw(scene: Scene) -> World:
     """The world of ``scene`` as plain pymunk: real materials on the shapes, no collision callbacks."""
     world = World.from_scene(scene)
-    for shape in world.space.shapes:
-        shape.elasticity, shape.friction = world.surface(shape)
-    for handler in world.space._handlers.values():
+    for shape in world.pymunk_parts.space.shapes:
+        shape.elasticity, shape.friction = world.pymunk_parts.surfaces.of(shape)
+    for handler in world.pymunk_parts.space._handlers.values():
         handler.begin = handler.pre_solve = handler.post_solve = handler.separate = None
     return world
 
@@ -52,7 +52,7 @@ def raw(scene: Scene) -> World:
 def bare(scene: Scene) -> World:
     """The world of ``scene`` as built, less its collision callbacks (contacts never bounce; some frictions are off)."""
     world = World.from_scene(scene)
-    for handler in world.space._handlers.values():
+    for handler in world.pymunk_parts.space._handlers.values():
         handler.begin = handler.pre_solve = handler.post_solve = handler.separate = None
     return world
 
@@ -85,7 +85,7 @@ def main(argv: list[str] | None = None) -> int:
             for make in best:
                 best[make] = min(best[make], median_step(make(scene), args.settle, args.steps))
         built, quiet, plain = best.values()
-        shapes = len(World.from_scene(scene).space.shapes)
+        shapes = len(World.from_scene(scene).pymunk_parts.space.shapes)
         print(f"| {label} | {shapes} | {built:.3f} ms | {quiet:.3f} ms | {plain:.3f} ms | {built / plain:.2f}x |")
     return 0
 

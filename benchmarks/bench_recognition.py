@@ -26,6 +26,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import numpy as np
+from label_kinds import read_table
 
 from physink_tui.scene.recognition.primitives import KINDS, Recognition
 from physink_tui.scene.recognition.recognize import recognize_stroke, recognize_strokes
@@ -33,19 +34,11 @@ from physink_tui.scene.recognition.recognize import recognize_stroke, recognize_
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from strokegen.strokes import generate
 
-LABEL_CLASS = {
-    "circle": "round",
-    "rectangle": "box",
-    "triangle": "polygon",
-    "star": "polygon",
-    **dict.fromkeys(
-        ("v", "caret", "check", "left_sq_bracket", "right_sq_bracket", "delete_mark", "arrow", "x"), "polyline"
-    ),
-    **dict.fromkeys(("left_curly_brace", "right_curly_brace", "question_mark", "pigtail"), "curve"),
-}
+LABELS = read_table()
+"""The label -> kind table (benchmarks/label_kinds.tsv), fixed before scoring."""
+LABEL_CLASS = LABELS.of_set("dollar1")
 CLASSES = ("round", "box", "polygon", "polyline", "curve")
-ACCEPTS = {"round": {"circle", "ellipse"}, "box": {"box"}, "polygon": {"polygon"}, "polyline": {"polyline"},
-           "curve": {"curve"}}
+ACCEPTS = {cls: set(LABELS.kinds[cls]) for cls in CLASSES}
 COLUMNS = (*KINDS, "none")
 
 

@@ -84,8 +84,8 @@ def time_steps(world: World, settle: int, steps: int) -> tuple[list[float], int]
 def row(label: str, world: World, times: list[float], began: int) -> str:
     ms = sorted(t * 1000 for t in times)
     median, p95 = statistics.median(ms), ms[int(0.95 * (len(ms) - 1))]
-    shapes, constraints = len(world.space.shapes), len(world.space.constraints)
-    arbiters = len(world.space._get_arbiters())  # live contact pairs, for the record
+    shapes, constraints = len(world.pymunk_parts.space.shapes), len(world.pymunk_parts.space.constraints)
+    arbiters = len(world.pymunk_parts.space._get_arbiters())  # live contact pairs, for the record
     realtime = world.dt * 1000 / median
     return (f"| {label} | {len(world.body_ids())} | {shapes} | {constraints} | {arbiters} | {began} | "
             f"{median:.3f} ms | {p95:.3f} ms | {realtime:.1f}x |")
@@ -111,7 +111,7 @@ def main(argv: list[str] | None = None) -> int:
     times, began = time_steps(world, args.settle, args.steps)
     print(row("as built (begin: records, bounces; pre-solve: mean friction where needed)", world, times, began))
     world = World.from_scene(scene)
-    world.space.on_collision(begin=pymunk.empty_callback)
+    world.pymunk_parts.space.on_collision(begin=pymunk.empty_callback)
     times, _ = time_steps(world, args.settle, args.steps)
     print(row("the same without the begin callback (no records, no bounces)", world, times, 0))
     return 0

@@ -2,7 +2,7 @@
 
 Every subcommand of the DESIGN.md table is parsed here. A built subcommand names its ``module:function`` in
 ``HANDLERS`` and is imported only when run, so ``physink --help`` never loads Textual, numpy or a device
-library. A subcommand not built yet names its plan in ``PLANNED`` and exits 2 with one line saying so.
+library. A subcommand whose module is missing exits 2 with one line saying so.
 
 Exit status: 0 success, 1 a user error (a ``PhysinkError``, printed as one line), 2 bad usage or a subcommand
 not available yet, 130 interrupted. A reader that closes stdout early (``| head -1``) only ends the printing:
@@ -22,6 +22,7 @@ from physink_tui import __version__
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.value_checks import MAX_COUNT
 from physink_tui.formats.outputs import StdoutGuard
+from physink_tui.render.limits import MAX_FPS, MAX_SIDE, MIN_SIDE
 
 PROG = "physink"
 
@@ -46,14 +47,8 @@ HANDLERS: dict[str, str] = {
     "kiosk": "physink_tui.commands.kiosk:run",
 }
 
-#: Subcommands not built yet: name -> where they are planned (shown to the user as is).
-PLANNED: dict[str, str] = {}
 
 
-MIN_SIDE, MAX_SIDE = 16, 7680
-"""Picture sides a renderer draws (pixels)."""
-MAX_FPS = 120
-"""The most video frames a second."""
 MAX_SEED = MAX_COUNT
 """The largest seed: what a journal's ``simulate`` line takes."""
 
@@ -224,8 +219,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--format", choices=("text", "json", "dot"), default="text", help="(default: %(default)s)")
 
     p = sub.add_parser("equiv", help="are two timelines (or projects) qualitatively equivalent")
-    p.add_argument("a", metavar="A", help="a timeline or project")
-    p.add_argument("b", metavar="B", help="a timeline or project")
+    p.add_argument("a", metavar="A", help="a timeline or project (alone: a project that adopted a simulation, "
+                                          "compared with the demonstration it keeps)")
+    p.add_argument("b", metavar="B", nargs="?", help="a timeline or project")
+    p.add_argument("--up-to-demonstrated", action="store_true",
+                   help="B simulates the demonstration A: compare up to the last demonstrated event, as SIMULATE "
+                        "does, and say what the simulation does afterwards")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
 
     p = sub.add_parser("simulate", help="search physical parameters that reproduce the demonstrated timeline")
@@ -290,12 +289,10 @@ def _resolve(target: str) -> Callable[[argparse.Namespace], int] | None:
 
 def _dispatch(args: argparse.Namespace) -> int:
     command = args.command
-    if command in HANDLERS:
-        run = _resolve(HANDLERS[command])
-        if run is None:
-            return _not_available(command, f"{HANDLERS[command].partition(':')[0]} is not written yet")
-        return run(args)
-    return _not_available(command, f"planned in {PLANNED[command]}")
+    run = _resolve(HANDLERS[command])
+    if run is None:
+        return _not_available(command, f"{HANDLERS[command].partition(':')[0]} is not written yet")
+    return run(args)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -307,7 +304,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 0
         return exc.code if isinstance(exc.code, int) else EXIT_USAGE
     guard = StdoutGuard(sys.stdout)
-    sys.stdout = guard  # type: ignore[assignment]
+    sys.stdout = guard
     try:
         status = _dispatch(args)
     except PhysinkError as exc:

@@ -7,4 +7,5 @@ from physink_tui.session.session import Session
 
 
 def outputs(session: Session) -> dict[str, str]:
-    return session_output_texts(session.scene, session.timeline, session.canvas, session.vocabulary_lines())
+    return session_output_texts(session.scene, session.timeline, session.canvas, session.vocabulary_lines(),
+                                session.demonstration)

@@ -56,11 +56,11 @@ def test_contacts_in_a_pile_take_max_restitution_on_fast_first_contacts_and_mean
     for _ in range(360):
         world.step()
         seen: list[pymunk.Arbiter] = []
-        for body in world.space.bodies:
+        for body in world.pymunk_parts.space.bodies:
             body.each_arbiter(seen.append)  # (each contact twice, once per body)
         for arbiter in seen:
             sa, sb = arbiter.shapes
-            (ea, fa), (eb, fb) = world.surface(sa), world.surface(sb)
+            (ea, fa), (eb, fb) = world.pymunk_parts.surfaces.of(sa), world.pymunk_parts.surfaces.of(sb)
             assert arbiter.friction == (fa + fb) / 2
             if arbiter.restitution:
                 assert arbiter.is_first_contact and arbiter.restitution == max(ea, eb)

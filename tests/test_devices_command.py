@@ -174,7 +174,7 @@ def feed(node: Path, output: Path, reports: list[bytes]) -> threading.Thread:
         with open(node, "wb", buffering=0) as fifo:  # blocks until the reader has opened it
             for n, report in enumerate(reports, start=1):
                 fifo.write(report)
-                deadline = time.monotonic() + 10
+                deadline = time.monotonic() + 60  # hang guard: a FIFO would merge reports written before a read
                 while events_written() < n and time.monotonic() < deadline:
                     time.sleep(0.002)
 

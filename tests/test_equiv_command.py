@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 from test_demo_mode import block_demo_journal
-from test_equivalence import FIG_2_15, NAMES, ON_A, ON_B, UNDER_B, behaviour, renamed
+from test_equivalence import FIG_2_15, NAMES, ON_A, ON_B, UNDER_B, behaviour, landed, renamed
 
 from physink_tui.cli import main
 from physink_tui.formats.project.codec import Project
@@ -124,3 +124,39 @@ def test_a_project_without_a_timeline_is_a_clear_one_line_error(tmp_path, capsys
     status, out, err = run(capsys, project, good)
     assert (status, out) == (1, "")
     assert err.count("\n") == 1 and project in err and "holds no timeline" in err
+
+
+def test_up_to_demonstrated_forgives_the_simulation_bouncing_on_after_the_demonstration_and_says_so(
+        tmp_path, capsys) -> None:
+    # the two answers of issue 26: the search said equivalent, a plain comparison "not equivalent, distance 4"
+    demonstrated = write_timeline(tmp_path / "demo.json", landed(behaviour(ON_B)))
+    simulated = write_timeline(tmp_path / "sim.json", landed(behaviour(ON_B), bounces=2))
+    status, out, _ = run(capsys, demonstrated, simulated)
+    assert status == 0 and out.splitlines()[:2] == ["not equivalent", "qualitative distance: 4"]
+    status, out, _ = run(capsys, demonstrated, simulated, "--up-to-demonstrated")
+    lines = out.splitlines()
+    assert status == 0 and lines[0] == "equivalent up to the last demonstrated event"
+    assert lines[1] == "qualitative distance: 0" and lines[2].startswith("quantitative distance: ")
+    assert lines[3:] == ["afterwards the simulation goes on: the ball bounces on the basket twice more"]
+    status, out, _ = run(capsys, demonstrated, simulated, "--up-to-demonstrated", "--json")
+    doc = json.loads(out)
+    assert list(doc) == ["equivalent", "qualitative_distance", "quantitative_distance", "reasons", "rule",
+                         "afterwards"]
+    assert (doc["equivalent"], doc["qualitative_distance"], doc["rule"]) == (True, 0,
+                                                                             "up to the last demonstrated event")
+    assert doc["afterwards"] == "afterwards the simulation goes on: the ball bounces on the basket twice more"
+
+
+def test_up_to_demonstrated_still_names_what_the_simulation_does_otherwise(tmp_path, capsys) -> None:
+    demonstrated = write_timeline(tmp_path / "demo.json", landed(behaviour(ON_B)))
+    simulated = write_timeline(tmp_path / "sim.json", landed(behaviour(UNDER_B)))
+    status, out, _ = run(capsys, demonstrated, simulated, "--up-to-demonstrated")
+    lines = out.splitlines()
+    assert status == 0 and lines[:2] == ["not equivalent up to the last demonstrated event", "qualitative distance: 1"]
+    assert lines[3].startswith("- Contact between ball and platform B")
+
+
+def test_one_file_alone_must_be_a_project_that_kept_its_demonstration(tmp_path, capsys) -> None:
+    timeline = write_timeline(tmp_path / "a.json", behaviour(ON_A))
+    status, _, err = run(capsys, timeline, "--up-to-demonstrated")
+    assert status == 1 and "a.json" in err and "must be a project that adopted a simulation" in err

@@ -146,7 +146,7 @@ def test_virtual_pen_capture_through_the_reader_path_gives_its_strokes() -> None
     source.start(q)
     gestures = []
     while True:
-        item = q.get(timeout=5)
+        item = q.get(timeout=60)  # hang guard
         gestures += pen.handle(item)
         if isinstance(item, SourceEnded):
             break

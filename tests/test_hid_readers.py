@@ -31,9 +31,11 @@ from physink_tui.input.sources import RawReport, SourceEnded
 
 RECORDED = Path(__file__).resolve().parent / "recorded_hid"
 REPORTS = [bytes([2, 0x20 | (i & 1), i, 0, i, 0, 0, 0, 0x1D, 0x13]) for i in range(20)]
+HANG_S = 60.0
+"""Hang guard: the longest a test waits for an item or a state (only a stuck reader gets there)."""
 
 
-def drain(q: queue.Queue, timeout: float = 5.0) -> list:
+def drain(q: queue.Queue, timeout: float = HANG_S) -> list:
     """Items until (and with) the first SourceEnded."""
     items = []
     deadline = time.monotonic() + timeout
@@ -44,7 +46,7 @@ def drain(q: queue.Queue, timeout: float = 5.0) -> list:
             return items
 
 
-def wait_until(predicate, timeout: float = 5.0) -> bool:
+def wait_until(predicate, timeout: float = HANG_S) -> bool:
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         if predicate():
@@ -66,7 +68,7 @@ def test_reports_arrive_in_order_with_monotonic_times_and_stop_ends_cleanly() ->
     before = time.monotonic()
     for report in REPORTS:
         os.write(w, report)
-    got = [q.get(timeout=5) for _ in REPORTS]
+    got = [q.get(timeout=HANG_S) for _ in REPORTS]
     reader.stop()
     rest = drain(q)
     os.close(w)
@@ -108,7 +110,7 @@ def test_a_pty_whose_other_end_closes_is_a_read_error_like_an_unplugged_tablet()
     q: queue.Queue = queue.Queue()
     reader.start(q)
     os.write(slave, REPORTS[0])
-    first = q.get(timeout=5)
+    first = q.get(timeout=HANG_S)
     os.close(slave)
     end = drain(q)[-1]
     assert first.data == REPORTS[0]
@@ -147,7 +149,7 @@ def test_a_capture_replayed_through_a_pipe_decodes_exactly_as_the_capture_does()
 
     writer = threading.Thread(target=write_all)
     writer.start()
-    items = drain(q, timeout=30)
+    items = drain(q)
     writer.join()
     reports = [i for i in items if isinstance(i, RawReport)]
     assert [r.data for r in reports] == [e.data for e in capture.events]
@@ -219,7 +221,7 @@ def test_open_reader_auto_picks_the_tablet_and_reads_it(tmp_path: Path) -> None:
     reader.start(q)
     with open(node, "wb", buffering=0) as w:
         w.write(REPORTS[0])
-        assert q.get(timeout=5).data == REPORTS[0]
+        assert q.get(timeout=HANG_S).data == REPORTS[0]
     assert "disappeared" in str(drain(q)[-1].error)
 
 
@@ -405,7 +407,7 @@ def test_reconnecting_source_passes_the_vanishing_on_and_resumes_when_the_device
     q: queue.Queue = queue.Queue()
     source.start(q)
     device.send(REPORTS[0])
-    first = q.get(timeout=5)
+    first = q.get(timeout=HANG_S)
     assert isinstance(first, RawReport) and first.data == REPORTS[0] and first.device == "tablet0"  # relabelled
     device.unplug()
     vanished = drain(q)
@@ -414,7 +416,7 @@ def test_reconnecting_source_passes_the_vanishing_on_and_resumes_when_the_device
     assert source.running
     device.plug()
     device.send(REPORTS[1])
-    back = q.get(timeout=5)
+    back = q.get(timeout=HANG_S)
     assert isinstance(back, RawReport) and back.data == REPORTS[1] and back.device == "tablet0"
     assert device.opens == 2 and source.reconnects == 1
     source.stop()

@@ -674,7 +674,9 @@ def test_a_journal_killed_mid_write_reads_back_every_whole_line(tmp_path: Path) 
     )
     try:
         assert proc.stdout is not None and proc.stdout.readline() == b"ready\n", proc.stderr
-        time.sleep(0.3)
+        deadline = time.monotonic() + 60  # hang guard: the writer is killed once lines are on disk, not after a time
+        while path.stat().st_size < 256 * 1024 and time.monotonic() < deadline:
+            time.sleep(0.01)
     finally:
         proc.send_signal(signal.SIGKILL)
         proc.wait()

@@ -34,7 +34,9 @@ def test_a_serial_tablet_draws_on_the_canvas_and_taps_its_end_zone(tmp_path: Pat
     tablet = FakeTablet(packet(0.2, 0.54, tip=False) + b"".join(stroke) + packet(0.6, 0.54, tip=False)
                         + b"".join(end_tap) + packet(0.875, 0.04, tip=False, proximity=False))
     try:
-        source = SerialPenSource(tablet.path, "serial0", settle_s=0.01, query_timeout=0.3)
+        # the reply ends the handshake as soon as it comes: a generous timeout costs nothing and a loaded machine
+        # cannot miss it
+        source = SerialPenSource(tablet.path, "serial0", settle_s=0.01, query_timeout=60.0)
         source.open()
         zones = default_zones()
         mapping = TabletMapping(canvas_width=1600, canvas_height=1000, tablet_width=1.6, tablet_height=1.0,
@@ -46,11 +48,12 @@ def test_a_serial_tablet_draws_on_the_canvas_and_taps_its_end_zone(tmp_path: Pat
         runner = threading.Thread(target=kiosk.run, args=(source, None, header), kwargs={"replay": False,
                                                                                          "mapping": mapping})
         runner.start()
-        deadline = time.monotonic() + 20
+        deadline = time.monotonic() + 60  # hang guard
         while not (out / "index.jsonl").exists() and time.monotonic() < deadline:
             time.sleep(0.05)
         kiosk.stop()
-        runner.join(timeout=30)
+        runner.join(timeout=60)
+        assert not runner.is_alive()
     finally:
         tablet.close()
     (record,) = [json.loads(line) for line in (out / "index.jsonl").read_text().splitlines()]

@@ -4,6 +4,8 @@ drawn; speech outside a session and a missing microphone change nothing else."""
 
 from __future__ import annotations
 
+import itertools
+import queue
 import threading
 import time
 from collections.abc import Callable
@@ -14,10 +16,13 @@ import pytest
 from kiosk.captures import END, on_canvas, visits, write_capture
 
 from physink_tui.cli import main
+from physink_tui.commands import kiosk as kiosk_command
 from physink_tui.errors import MicrophoneError
 from physink_tui.formats.journal.entries import SayEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.project.files import load_project
+from physink_tui.input.captures.capture import Capture
+from physink_tui.input.sources import RawReport
 from physink_tui.input.speech.audio import RATE, read_wav
 from physink_tui.input.speech.microphone import BLOCK
 from physink_tui.input.virtual_pen import Stroke
@@ -26,6 +31,7 @@ from physink_tui.kiosk.folder_files import JOURNAL
 from physink_tui.kiosk.store import SessionStore
 
 SPEECH = Path(__file__).parent / "speech"
+HANG_GUARD = 60.0
 
 
 class LiveRecording:
@@ -69,9 +75,43 @@ def visitor_drawing_a_ball(tmp_path: Path) -> Path:
                                 pause_s=5.0), tmp_path / "ball.hid")
 
 
+def waiting_for(heard: threading.Event, capture: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The kiosk's replay of ``capture`` waits, before the last report of the visitor's drawing, until ``heard``:
+    the replay's clock stands at that report's time meanwhile, so the words are taken as said just after the
+    drawing however long a loaded machine takes to recognise them (their "just after" is 5 s of input time)."""
+    events = Capture.from_file(capture).events
+    gaps = [b.t - a.t for a, b in itertools.pairwise(events)]
+    last_drawn = gaps.index(max(gaps))  # the pause between the drawing and the end zone
+    make_source = kiosk_command._replay_source
+
+    def gated_source(*args, **kwargs):
+        source, device, header = make_source(*args, **kwargs)
+        start = source.start
+
+        class Gate(queue.Queue):
+            reports = 0
+
+            def put(self, item, block=True, timeout=None) -> None:
+                if isinstance(item, RawReport):
+                    if self.reports == last_drawn:
+                        assert heard.wait(HANG_GUARD), "the words were never heard"
+                    self.reports += 1
+                self.out.put(item)
+
+        def gated_start(out) -> None:
+            gate = Gate()
+            gate.out = out
+            start(gate)
+
+        source.start = gated_start
+        return source, device, header
+
+    monkeypatch.setattr(kiosk_command, "_replay_source", gated_source)
+
+
 def test_a_spoken_label_during_a_session_is_journaled_and_labels_what_was_drawn(
         tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
-    cue = threading.Event()
+    cue, heard = threading.Event(), threading.Event()
     said = read_wav(SPEECH / "cmd00_0.wav")  # "label ball"
     monkeypatch.setattr(kiosk_speech, "sounddevice_stream",
                         lambda: (lambda deliver: LiveRecording(said, cue, deliver)))
@@ -83,12 +123,15 @@ def test_a_spoken_label_during_a_session_is_journaled_and_labels_what_was_drawn(
         logged.append(line)
         if "started" in line:  # the visitor's first touch began a session: they speak now
             cue.set()
+        if "heard" in line:
+            heard.set()
         real_print(*args, **kwargs)
 
     monkeypatch.setattr("builtins.print", watching_print)
     out = tmp_path / "out"
-    assert main(["kiosk", "--out", str(out), "--replay", str(visitor_drawing_a_ball(tmp_path)), "--speech",
-                 "--video-size", "160x100"]) == 0
+    capture = visitor_drawing_a_ball(tmp_path)
+    waiting_for(heard, capture, monkeypatch)
+    assert main(["kiosk", "--out", str(out), "--replay", str(capture), "--speech", "--video-size", "160x100"]) == 0
     assert any("listening for spoken labels" in line for line in logged)
     assert any('heard "label ball"' in line for line in logged)
     (folder,) = SessionStore(out).sessions()

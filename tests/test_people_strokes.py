@@ -29,19 +29,23 @@ CANVAS = (1600.0, 1000.0)
 SUBJECT_FLOORS = {"s02": 98.6, "s03": 98.2, "s04": 98.0}
 """Per person, % of their 480 strokes recognised right: today (main e00d849) 99.6, 99.2, 99.0; issue 10 asks 98."""
 LABEL_FLOORS = {
-    "arrow": 97.5, "caret": 98.5, "check": 96.5, "circle": 97.5, "delete_mark": 98.5, "left_curly_brace": 97.5,
-    "left_sq_bracket": 96.5, "pigtail": 98.5, "question_mark": 97.5, "rectangle": 98.5, "right_curly_brace": 96.5,
+    "arrow": 97.5, "caret": 98.5, "check": 98.5, "circle": 98.5, "delete_mark": 98.5, "left_curly_brace": 97.5,
+    "left_sq_bracket": 97.5, "pigtail": 98.5, "question_mark": 97.5, "rectangle": 98.5, "right_curly_brace": 96.5,
     "right_sq_bracket": 98.5, "star": 97.5, "triangle": 98.5, "v": 98.5, "x": 98.5,
 }
-"""Per label, % of its 90 strokes: one more miss than today's (main e00d849: check, left_sq_bracket and
-right_curly_brace 97.8; arrow, circle, left_curly_brace, question_mark and star 98.9; the rest 100); none under
-90."""
+"""Per label, % of its 90 strokes: the highest floor each has had, never lowered (today, main 230344e: check and
+right_curly_brace 97.8; arrow, circle, left_curly_brace, left_sq_bracket, question_mark and star 98.9; the rest
+100); none under 90. A label under its floor today is in `BELOW_FLOOR`."""
+BELOW_FLOOR: dict[str, str] = {
+    "check": "97.8 % (floor 98.5, set before 521e7fb and lowered by fffe890): s04/fast/check09.xml and "
+             "s04/slow/check10.xml are read as curves, not polylines",
+}
+"""Labels whose accuracy is under their floor today (label -> by how much and why): strict xfails, so a fix turns
+them red; delete the entry then."""
 EVERY = 4
 """Interpretation tests take every 4th stroke of a label (23 of 90, all three people, all speeds)."""
 KNOWN_FAILING: dict[str, str] = {
     "s02/fast/circle01.xml": "recognised as a curve, so it becomes a rope (since 08e5de4; a circle before)",
-    "s03/fast/circle03.xml": "scaled to 272 px it becomes a 6-corner polygon body (since 08e5de4; a circle before, "
-                             "and still one at its own size)",
 }
 """People's strokes that the interpretation tests below get wrong today (file -> what happens). They run as strict
 xfails: a fix turns them red; delete the entry then."""
@@ -85,7 +89,9 @@ def test_each_persons_strokes_are_recognised(subject: str) -> None:
 
 
 @pytest.mark.parametrize("label", sorted(LABEL_FLOORS))
-def test_each_gesture_is_recognised(label: str) -> None:
+def test_each_gesture_is_recognised(label: str, request) -> None:
+    if label in BELOW_FLOOR:
+        request.applymarker(pytest.mark.xfail(strict=True, reason=BELOW_FLOOR[label]))
     accuracy, wrong = _accuracy(1, label)
     assert accuracy >= LABEL_FLOORS[label], f"{label}: {accuracy:.1f} % right; wrong: {wrong}"
 
@@ -95,6 +101,7 @@ def test_the_floors_cover_every_label_and_person() -> None:
     assert set(LABEL_FLOORS) == set(LABEL_CLASS) == {r["label"] for r in rows}
     assert set(SUBJECT_FLOORS) == {r["subject"] for r in rows}
     assert min(LABEL_FLOORS.values()) >= 90.0 and min(SUBJECT_FLOORS.values()) >= 98.0
+    assert set(BELOW_FLOOR) <= set(LABEL_FLOORS)
 
 
 # -- interpretation: a person's stroke, scaled onto the canvas, as pen input to a Session ---------------------------

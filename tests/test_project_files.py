@@ -6,6 +6,7 @@ import json
 import math
 import os
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import pytest
@@ -105,7 +106,7 @@ def test_encoding_is_deterministic_and_survives_a_round_trip_byte_for_byte() -> 
 def test_the_layout_is_indented_json_with_one_component_a_line_in_a_fixed_key_order() -> None:
     lines = encode_project(PROJECT).splitlines()
 
-    assert lines[:5] == ["{", '  "format": "physink-project",', '  "version": 1,',
+    assert lines[:5] == ["{", '  "format": "physink-project",', '  "version": 2,',
                          f'  "program": "physink-tui {__version__}",', '  "canvas": {"width": 800.0, "height": 600.0},']
     assert lines[5] == '  "components": ['
     assert lines[6].startswith('    {"id": "b1", "type": "body", "shape": "box", "outline": [[-50.0, -10.0], ')
@@ -116,9 +117,9 @@ def test_the_layout_is_indented_json_with_one_component_a_line_in_a_fixed_key_or
                          '"start_body": "b2", "end_body": null, "label": "string"},')
     timeline = json.dumps(timeline_object(_demonstration(), PROJECT.scene.names()), ensure_ascii=False,
                           separators=(", ", ": "))
-    assert lines[-5:] == ["  ],", '  "next_id": {"b": 6, "j": 3, "r": 2, "s": 2},',
+    assert lines[-6:] == ["  ],", '  "next_id": {"b": 6, "j": 3, "r": 2, "s": 2},',
                           '  "vocabulary": ["verb plummets Topples", "prep amid", "verb écrase"],',
-                          f'  "timeline": {timeline}', "}"]
+                          f'  "timeline": {timeline},', '  "demonstration": null', "}"]
     assert '"components": [{"id": "b2", "label": "ball"}, {"id": "r1", "label": "string"}]' in timeline
 
 
@@ -143,6 +144,36 @@ def test_the_timeline_is_typed_and_named_by_the_scene() -> None:
     raw = _raw()
     raw["timeline"]["events"][1]["components"][0]["label"] = "not the scene's name"
     assert decode_project(json.dumps(raw), "p.json") == PROJECT  # names come from the scene's labels
+
+
+def test_an_adopted_simulation_keeps_the_demonstration_it_was_found_for() -> None:
+    simulated = Timeline((Event("e1", "start"), Event("e2", "movement", ("b2",), ("e1",), 0.0, 0.75)))
+    adopted = replace(PROJECT, timeline=simulated, demonstration=_demonstration())
+    text = encode_project(adopted)
+
+    assert decode_project(text, "p.json") == adopted and encode_project(decode_project(text, "p.json")) == text
+    assert json.loads(text)["demonstration"] == json.loads(encode_project(PROJECT))["timeline"]
+    raw = json.loads(text)
+    raw["demonstration"]["events"][1]["causes"] = ["e9"]
+    with pytest.raises(SceneError, match=r"^p\.json: demonstration: event 'e2' names unknown cause 'e9'"):
+        decode_project(json.dumps(raw), "p.json")
+
+
+@pytest.mark.parametrize(("change", "path"), [
+    (lambda raw: raw["demonstration"]["events"][1]["components"][0].update(id="b99"),
+     "demonstration.events[1].components[0].id"),
+    (lambda raw: raw["demonstration"]["events"][0]["in_contact"].append([{"id": "b2"}, {"id": "b99"}]),
+     r"demonstration.events[0].in_contact[0][1].id"),
+])
+def test_a_kept_demonstration_naming_a_body_the_scene_lacks_is_refused_on_loading(change, path, tmp_path) -> None:
+    simulated = Timeline((Event("e1", "start"), Event("e2", "movement", ("b2",), ("e1",), 0.0, 0.75)))
+    raw = json.loads(encode_project(replace(PROJECT, timeline=simulated, demonstration=_demonstration())))
+    change(raw)
+    target = tmp_path / "adopted.physink.json"
+    target.write_text(json.dumps(raw), encoding="utf-8")
+    with pytest.raises(SceneError) as caught:
+        load_project(target)
+    assert str(caught.value).startswith(f"{target}: {path}: expected the id of a component of the project's scene")
 
 
 def test_the_vocabulary_round_trips_as_the_sessions_vocabulary() -> None:
@@ -310,7 +341,7 @@ ERRORS = [
                  "missing", id="timeline-missing-sides"),
     pytest.param(_set(("timeline", "events", 0, "causes"), ["e3"]), "timeline: the timeline has a causal cycle",
                  id="timeline-cycle"),
-    pytest.param(_set(("version",), "1"), 'version: expected an integer from 1 to 1, got "1"', id="version-text"),
+    pytest.param(_set(("version",), "1"), 'version: expected an integer from 1 to 2, got "1"', id="version-text"),
     pytest.param(_set(("format",), "physink-journal"), 'format: expected "physink-project", got "physink-journal"',
                  id="wrong-format"),
     pytest.param(_drop(("program",)), "program: expected a string naming the program that wrote it, but it is "
@@ -352,7 +383,7 @@ def test_a_project_from_a_newer_version_is_refused_naming_both_versions() -> Non
     with pytest.raises(SceneError) as caught:
         decode_project(json.dumps(raw), "project.json")
 
-    assert str(caught.value) == ("project.json was written by format version 2; this program reads version 1 "
+    assert str(caught.value) == ("project.json was written by format version 3; this program reads version 2 "
                                  "(upgrade physink-tui)")
 
 

@@ -53,7 +53,7 @@ def test_reader_path_gives_the_samples_of_direct_decoding(name: str) -> None:
     live = HidPenDecoder(device.descriptor, device.vid, device.pid)
     got = []
     while True:
-        item = q.get(timeout=10)
+        item = q.get(timeout=60)  # hang guard
         if isinstance(item, RawReport):
             sample = live.decode(item.data, item.t)
             if sample is not None:

@@ -15,6 +15,9 @@ from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.journal.writer import JournalWriter
 from physink_tui.session.runner import SessionRunner
 
+HANG_S = 60.0
+"""Hang guard: the longest a test waits for the worker (only a stuck one gets there)."""
+
 
 class FakeClock:
     """A monotonic clock that moves only when told to."""
@@ -234,7 +237,7 @@ def test_the_worker_thread_runs_the_session_and_stop_joins_it() -> None:
     with pytest.raises(RuntimeError):
         runner.step()  # the worker is the session's only caller
     stamped = [runner.submit(pen(i / 10)) for i in range(10)]
-    deadline = time.monotonic() + 5
+    deadline = time.monotonic() + HANG_S
     while (runner.latest_view() or (0,))[0] < 10:
         assert time.monotonic() < deadline, "no view with the ten inputs"
         time.sleep(0.005)
@@ -251,7 +254,7 @@ def test_an_exception_on_the_worker_thread_is_raised_by_stop() -> None:
     runner = SessionRunner(session, on_error=errors.append)
     runner.start()
     runner.command("clear")
-    deadline = time.monotonic() + 5
+    deadline = time.monotonic() + HANG_S
     while runner.running:
         assert time.monotonic() < deadline, "the worker went on after the error"
         time.sleep(0.005)
@@ -331,8 +334,9 @@ def test_a_live_session_on_the_real_clock_and_thread_replays_to_the_same_files(t
 
     worker = threading.Thread(target=hand)
     worker.start()
-    worker.join(timeout=20)
-    time.sleep(0.3)  # the pushed box slides on while nothing is input
+    worker.join(timeout=HANG_S)
+    assert not worker.is_alive()
+    time.sleep(0.3)  # the pushed box slides on while nothing is input (however far it gets, the replay agrees)
     runner.stop()
     assert not session.errors and views and views[-1].mode == "sketch"
     journal = read_journal(tmp_path / "live.physink.jsonl")

@@ -17,7 +17,7 @@ from physink_tui.commands.simulate import parameters_object
 from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.journal.writer import JournalWriter
-from physink_tui.formats.project.codec import Project, encode_project
+from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.scene.components import Scene
 from physink_tui.session.session import Session
 from physink_tui.sim.evaluate import compare_rollout, make_problem, simulate
@@ -187,3 +187,24 @@ def test_the_session_finds_what_physink_simulate_finds_on_the_same_project(tmp_p
     assert parameters_object(result.parameters) == written["parameters"]
     assert (round(result.qualitative_distance, 6), round(result.quantitative_distance, 6)) == (
         written["qualitative_distance"], written["quantitative_distance"])
+
+
+def test_a_loaded_adopted_simulation_keeps_its_demonstration_until_the_machine_is_demonstrated_again() -> None:
+    simulated = Timeline(demonstration().events[:2])
+    adopted = json.loads(encode_project(Project(ball_floor_wall(), (), simulated, CANVAS, demonstration())))
+    read = decode_project(json.dumps(adopted), "adopted.physink.json")  # its numbers to 6 decimals
+    simulated, kept = read.timeline, read.demonstration
+    session = Session.from_header(pen_header())
+    session.handle(CommandEntry(0.5, "load", ("adopted.physink.json",), adopted))
+    assert session.timeline == simulated and session.demonstration == kept
+    session.handle(CommandEntry(0.6, "label", ("b3", "the wall")))  # editing the sketch keeps it
+    assert session.scene.components["b3"].label == "the wall" and session.demonstration == kept
+    assert session.view().demonstration == kept
+    assert decode_project(outputs(session)["project.json"], "out.json").demonstration == kept  # and is saved
+    session.handle(CommandEntry(0.7, "mode", ("demo",)))
+    for entry in drag(0.8, (500 / 1600, 655 / 1000), (700 / 1600, 655 / 1000)):
+        session.handle(entry)
+    session.handle(CommandEntry(2.0, "mode", ("sketch",)))  # a new demonstration: its timeline is what was shown
+    assert session.timeline != simulated and session.demonstration is None
+    session.handle(CommandEntry(2.1, "undo", ()))
+    assert session.timeline == simulated and session.demonstration == kept

@@ -8,7 +8,6 @@ import os
 import socket
 import subprocess
 import sys
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -39,16 +38,15 @@ def cluster() -> Iterator[distributed.LocalCluster]:
 def search_with(executor: Executor, budget: int = 20) -> tuple:
     problem = make_problem(ball_floor_wall(), demonstration(), CANVAS)
     search = Search(problem.scene, problem.timeline, CANVAS, seed=7, budget=budget, start=parameters((100.0, 0.0)))
-    start = time.monotonic()
     with executor:
         run_search(search, problem, executor)
-    return (search.rollouts, search.exploded, search.best, search.best_score), time.monotonic() - start
+    return search.rollouts, search.exploded, search.best, search.best_score
 
 
 def test_same_search_as_the_local_executors(cluster: distributed.LocalCluster) -> None:
-    serial, _ = search_with(SerialExecutor())
-    processes, _ = search_with(ProcessExecutor(2))
-    dask, _ = search_with(DaskExecutor(cluster=cluster))
+    serial = search_with(SerialExecutor())
+    processes = search_with(ProcessExecutor(2))
+    dask = search_with(DaskExecutor(cluster=cluster))
     assert serial[0] <= 20
     assert dask == serial == processes
 
@@ -78,7 +76,7 @@ def test_the_problem_is_sent_once_per_search(cluster: distributed.LocalCluster,
     scattered = []
     scatter = executor._client.scatter
     monkeypatch.setattr(executor._client, "scatter", lambda data, **kw: scattered.append(kw) or scatter(data, **kw))
-    result, _ = search_with(executor, budget=12)
+    result = search_with(executor, budget=12)
     assert 1 < result[0] <= 12
     assert scattered == [{"broadcast": True, "hash": False}]
 
@@ -103,26 +101,27 @@ def closed_port() -> str:
 
 def test_unreachable_scheduler_is_one_line_and_exit_1(tmp_path: Path, capsys: pytest.CaptureFixture[str],
                                                       monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(dask_executor, "CONNECT_SECONDS", 1.0)
+    monkeypatch.setattr(dask_executor, "CONNECT_SECONDS", 1.0)  # nothing listens there: no wait would connect
     address = closed_port()
     (tmp_path / "out").mkdir()
     (tmp_path / "out" / "result.json").write_text("{}")
-    start = time.monotonic()
     status, out = simulate(tmp_path, "out", "--budget", "4", "--scheduler", address)
-    assert status == 1 and time.monotonic() - start < 5
+    assert status == 1
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and address in err and "Traceback" not in err
     assert (out / "result.json").read_text() == "{}"  # the last run's files are left alone
 
 
 @pytest.mark.parametrize("address", ["nonsense", "foo://host:1", "tcp://host:port"])
-def test_malformed_address_is_one_line_at_once(tmp_path: Path, capsys: pytest.CaptureFixture[str],
-                                               address: str) -> None:
-    start = time.monotonic()
+def test_malformed_address_is_one_line_before_any_connection(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                             monkeypatch: pytest.MonkeyPatch, address: str) -> None:
+    def no_client(*args, **kwargs):
+        raise AssertionError("a Client was made for a malformed address (it hangs for seconds when collected)")
+
+    monkeypatch.setattr(distributed, "Client", no_client)
     assert simulate(tmp_path, "out", "--scheduler", address)[0] == 1
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and f"{address!r} is not a Dask scheduler address" in err
-    assert time.monotonic() - start < 2
 
 
 def test_scheduler_and_workers_exclude_each_other(tmp_path: Path) -> None:

@@ -11,11 +11,12 @@ import pytest
 from physink_tui.errors import SimulationError
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Scene, Spring, material_class
+from physink_tui.scene.physics.build import body_area
 from physink_tui.scene.physics.world import GRAVITY, World
 from physink_tui.session.replay_driver import replay
 from physink_tui.session.session import Session
-from physink_tui.sim.parameters import BodyParameters, Parameters, apply, body_area
-from physink_tui.sim.rollout import AT_REST, EXPLODED, OFF_CANVAS, rollout, rollout_from, settled_state
+from physink_tui.sim.parameters import BodyParameters, Parameters, apply
+from physink_tui.sim.rollout import Stop, rollout, rollout_from, settled_state
 from physink_tui.sim.seeding import first_contact, seed, start_movements
 
 JOURNALS = ("egg_cracker", "bouncing_hits_a", "golf_ball_helper", "cup_dispenser")
@@ -178,7 +179,7 @@ def test_a_ball_drawn_above_its_shelf_comes_flush() -> None:
 
 def test_a_dropped_ball_stops_at_rest_well_before_max_seconds() -> None:
     result = rollout(dropped_ball(), CANVAS, ball_parameters(), max_seconds=30.0)
-    assert result.stopped_because == AT_REST
+    assert result.stopped_because == Stop.AT_REST
     assert result.steps / 120 < 10.0
     types = [ev.type for ev in result.timeline.events]
     assert types[:3] == ["start", "movement", "contact"]
@@ -187,19 +188,19 @@ def test_a_dropped_ball_stops_at_rest_well_before_max_seconds() -> None:
 
 def test_a_body_gone_off_the_canvas_stops_the_rollout() -> None:
     result = rollout(dropped_ball(platform=False), CANVAS, ball_parameters((300.0, 0.0)), max_seconds=30.0)
-    assert result.stopped_because == OFF_CANVAS
+    assert result.stopped_because == Stop.OFF_CANVAS
     assert result.steps / 120 < 5.0
 
 
 def test_absurd_velocities_explode() -> None:
     result = rollout(dropped_ball(), CANVAS, ball_parameters((1e12, 0.0)), max_seconds=5.0)
-    assert result.stopped_because == EXPLODED
+    assert result.stopped_because == Stop.EXPLODED
     assert result.steps <= 2
 
 
 def test_fast_bodies_are_flagged_not_limited() -> None:
     result = rollout(dropped_ball(), CANVAS, ball_parameters((0.0, 4000.0)), max_seconds=5.0)
-    assert result.stopped_because != EXPLODED
+    assert result.stopped_because != Stop.EXPLODED
     assert any("demo mode's limit" in flag for flag in result.flagged)
 
 
@@ -231,7 +232,7 @@ def test_a_fork_puts_the_rope_where_settling_left_it() -> None:
     assert len(state.links["r1"]) >= 8
     scene = apply(s.scene, params)
     forked = rollout_from(s.scene, settled, s.canvas, params, max_seconds=0.1)
-    assert forked.stopped_because != EXPLODED
+    assert forked.stopped_because != Stop.EXPLODED
     world = World.from_state(scene, state)  # what the fork starts from, on a world we can inspect
     end = world.to_scene(scene).components["r1"].points[-1]
     knife = state.bodies["b5"]

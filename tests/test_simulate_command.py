@@ -125,3 +125,29 @@ def test_a_missing_second_touch_is_named_as_such_in_the_verdict() -> None:
     never = behaviour([])
     text = verdict(problem, never, compare(twice, never, NAMES, NAMES, simulation=True), found=False, rollouts=12)
     assert "the ball never reaches the platform B" in text, text
+
+
+def test_equiv_up_to_demonstrated_gives_the_verdict_and_distances_of_result_json(tmp_path: Path, capsys) -> None:
+    status, out = simulate(tmp_path, "out", "--budget", "12", "--workers", "1")
+    assert status == 0
+    result = json.loads((out / "result.json").read_text())
+    assert result["rule"] == "equivalent up to the last demonstrated event"
+    kept = load_project(out / "project.json")
+    assert kept.demonstration == load_project(tmp_path / "machine.physink.json").timeline  # kept beside it
+    capsys.readouterr()
+    for files in ([str(out / "project.json")], [str(tmp_path / "machine.physink.json"), str(out / "timeline.json")]):
+        assert cli.main(["equiv", *files, "--up-to-demonstrated", "--json"]) == 0
+        said = json.loads(capsys.readouterr().out)
+        assert said["equivalent"] == result["found"]
+        assert said["qualitative_distance"] == result["qualitative_distance"]
+        assert said["quantitative_distance"] == pytest.approx(result["quantitative_distance"], abs=1e-3)
+        assert said["rule"] == "up to the last demonstrated event" and said["afterwards"] == result["afterwards"]
+    assert cli.main(["equiv", str(out / "project.json"), "--up-to-demonstrated"]) == 0
+    verdict = capsys.readouterr().out.splitlines()[0]
+    assert verdict == ("equivalent" if result["found"] else "not equivalent") + " up to the last demonstrated event"
+
+
+def test_equiv_of_one_project_that_kept_no_demonstration_says_so(tmp_path: Path, capsys) -> None:
+    assert cli.main(["equiv", project(tmp_path), "--up-to-demonstrated"]) == 1
+    err = capsys.readouterr().err
+    assert "machine.physink.json" in err and "keeps no demonstration" in err and err.count("\n") == 1

@@ -51,7 +51,7 @@ def test_what_it_hears_stays_inside_the_grammar_and_is_rejected(recogniser: Vosk
     heard = utterance.decoded.text.split()
     assert heard and set(heard) <= set(KOREAN)  # forced into the grammar's words, then refused by the parser
     assert utterance.rejected.startswith("not a sentence of the grammar")
-    assert utterance.decoded.decode_seconds < utterance.decoded.seconds  # faster than real time
+    # how much faster than real time it decodes is benchmarks/bench_speech.py's (docs/BENCHMARKS.md)
 
 
 def test_korean_speech_is_heard_as_said_or_falls_below_the_threshold(recogniser: VoskRecogniser) -> None:
@@ -63,7 +63,6 @@ def test_korean_speech_is_heard_as_said_or_falls_below_the_threshold(recogniser:
         heard = [w.word for w in utterance.decoded.words]
         right += heard == said
         assert heard == said or min(w.score for w in utterance.decoded.words) < recogniser.threshold, (name, heard)
-        assert utterance.decoded.decode_seconds < 0.2 * utterance.decoded.seconds, name
     assert right >= len(SAID_IN_KOREAN) - 1
 
 

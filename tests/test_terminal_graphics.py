@@ -12,6 +12,7 @@ from physink_tui.render import kitty, sixel
 from physink_tui.render.frames import view_frame
 from physink_tui.render.renderer import Renderer
 from physink_tui.scene.physics.state import Pose
+from physink_tui.session.modes.base import ModeName
 from physink_tui.session.view import SessionView
 from physink_tui.tui.graphics import choose
 from tests.sim_scenes import CANVAS, ball_floor_wall
@@ -21,7 +22,7 @@ def scene_frame(width: int = 301, height: int = 199) -> np.ndarray:
     """A real frame: the ball, floor and wall machine as the renderer draws it (anti-aliased edges included)."""
     scene = ball_floor_wall()
     poses = {b.id: Pose(*b.position, b.angle) for b in scene.bodies()}
-    view = SessionView(1, 0.0, "sketch", scene, poses, (), (), None, False, False, None, 0.0, 0.0, False, ())
+    view = SessionView(1, 0.0, ModeName.SKETCH, scene, poses, (), (), None, False, False, None, 0.0, 0.0, False, ())
     return Renderer(width, height, CANVAS, "dark", controls=False).render(view_frame(view, CANVAS))
 
 

@@ -71,7 +71,8 @@ def test_the_drawing_becomes_the_machine_the_thesis_describes(name: str) -> None
     scene = session.scene
     # bodies are known by their drawing order: the n-th body drawn is the n-th expected one
     names = {b.id: want.name for b, want in zip(scene.bodies(), scenario.expect.bodies, strict=False)}
-    told = [m.text for m in session.messages if m.t < scenario.demo_start]  # the demonstration's are checked apart
+    told = [m.text for m in session.messages  # the demonstration's are checked apart; each stroke's outcome too
+            if m.t < scenario.demo_start and m.kind == "note"]
     actual = described(scene, names, told, scenario.expect.messages)
     assert actual == expected(scenario)
     assert [b.id for b in scene.bodies()] == [f"b{i}" for i in range(1, len(scenario.expect.bodies) + 1)]

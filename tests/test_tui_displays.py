@@ -12,7 +12,7 @@ from physink_tui.tui import displays
 from physink_tui.tui.config import Config, load_config, save_config
 from physink_tui.tui.displays import Monitor, Rect
 from physink_tui.tui.widgets.scene_view import SceneView
-from tests.tui_helpers import SIZE, open_settings, tui_app
+from tests.tui_helpers import SIZE, click, open_settings, tui_app, until_app
 
 XRANDR = """Monitors: 2
  0: +*eDP-1 1920/344x1080/193+0+0  eDP-1
@@ -71,20 +71,21 @@ def test_the_settings_screen_fits_the_area_to_the_canvas_on_the_chosen_monitor(t
         app = tui_app(tmp_path)
         async with app.run_test(size=SIZE) as pilot:
             screen = await open_settings(pilot)
-            await pilot.click("#fit-area")
-            assert "choose the monitor" in str(screen.query_one("#settings-error").render())
+            error = screen.query_one("#settings-error")
+            await click(pilot, "#fit-area")
+            await until_app(pilot, lambda: "choose the monitor" in str(error.render()), "the monitor asked for")
             screen.query_one("#display").value = "DP-2"
-            await pilot.pause(0.1)  # the Select's change reaches the screen as a message
-            await pilot.click("#fit-area")
-            await pilot.pause(0.1)
+            await click(pilot, "#fit-area")
+            await until_app(pilot, lambda: "Area fitted" in str(error.render()), "the area fitted")
             (columns, rows), (left, top, width, height) = app.main.query_one(SceneView).canvas_cells()
             assert (columns, rows) == SIZE and width > 0 and height > 0
             expected = (left * 10 / 2560, top * 20 / 1440, (left + width) * 10 / 2560, (top + height) * 20 / 1440)
             area = tuple(float(screen.query_one(f"#area-{n}").value) for n in ("x0", "y0", "x1", "y1"))
             assert area == pytest.approx(expected, abs=1e-4)
             assert screen.query_one("#display-tablet").value
-            await pilot.click("#save")
-            await pilot.pause(0.2)
+            await click(pilot, "#save")
+            await until_app(pilot, lambda: app.screen is app.main and app.config.display == "DP-2",
+                            "the settings saved and closed")
             assert app.config.display == "DP-2" and app.config.display_tablet
             assert app.config.area == pytest.approx(expected, abs=1e-4)
 

@@ -11,7 +11,7 @@ from terminal_graphics import kitty_image, sixel_image
 
 from physink_tui.render import kitty
 from physink_tui.tui.widgets.scene_view import SceneView
-from tests.tui_helpers import SIZE, box_points, cells_of, draw, tui_app, until
+from tests.tui_helpers import SIZE, box_points, cells_of, draw, tui_app, until, until_app, until_shown
 
 CELL = (6, 12)
 
@@ -22,7 +22,7 @@ def test_kitty_frames_are_sent_whole_and_shown_through_placeholders(tmp_path) ->
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: v.mode == "sketch")
             scene = app.main.query_one(SceneView)
-            await pilot.pause(0.2)
+            await until_app(pilot, lambda: bool(scene.sent), "a frame sent")
             columns, rows = scene.size.width, scene.size.height
             keys, pixels = kitty_image(scene.sent[0])
             assert (keys["c"], keys["r"]) == (str(columns), str(rows))
@@ -35,7 +35,7 @@ def test_kitty_frames_are_sent_whole_and_shown_through_placeholders(tmp_path) ->
                                lambda v: len(v.scene.components) == 1)
             body = next(iter(drawn.scene.components.values()))
             assert 0.4 * 1600 < body.position[0] < 0.5 * 1600 and 0.4 * 1000 < body.position[1] < 0.5 * 1000
-            await pilot.pause(0.2)
+            await until_shown(pilot, lambda v: v.scene == drawn.scene)
             _, after = kitty_image(scene.sent[0])
             assert not np.array_equal(after, pixels)  # the box is in the picture sent
     asyncio.run(go())
@@ -47,7 +47,7 @@ def test_sixel_frames_decode_to_the_scene_and_the_cells_stay_blank(tmp_path) -> 
         async with app.run_test(size=SIZE) as pilot:
             await until(pilot, lambda v: v.mode == "sketch")
             scene = app.main.query_one(SceneView)
-            await pilot.pause(0.2)
+            await until_app(pilot, lambda: bool(scene.sent), "a frame sent")
             pixels = sixel_image(scene.sent[0])
             assert pixels.shape == (scene.size.height * CELL[1], scene.size.width * CELL[0], 3)
             assert scene.render_line(5).text == " " * scene.size.width

@@ -14,6 +14,7 @@ import struct
 import sys
 import termios
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -24,11 +25,17 @@ from physink_tui.tui.widgets.scene_view import KITTY_IMAGE
 
 ROOT = Path(__file__).resolve().parent.parent
 CELLS, PIXELS = (120, 40), (1200, 800)  # 10 x 20 pixels a cell
+HANG_GUARD = 120.0
+"""Seconds after which the test stops reading and fails (only a stuck app gets there, never a slow one)."""
+KITTY_SEND = re.compile(r"\x1b_Ga=T[^\x1b]*m=(?:0[;\x1b][^\x1b]*\x1b\\|1;[^\x1b]*\x1b\\(?:\x1b_Gm=1;[^\x1b]*\x1b\\)*"
+                        r"\x1b_Gm=0;[^\x1b]*\x1b\\)")
+"""A whole Kitty image: its first chunk, then (if it said more) the chunks up to the last (``m=0``)."""
+SIXEL_IMAGE = re.compile(r"\x1b7\x1b\[(\d+);(\d+)H(\x1bP0;1;0q.*?\x1b\\)\x1b8", re.S)
 
 
-def run_tui(term: str, tmp_path: Path, seconds: float = 6.0, colours: str | None = None) -> bytes:
-    """What ``physink tui`` wrote to a 120x40 pty of 1200x800 pixels in ``seconds``, then asked to quit
-    (``colours``: ``COLORTERM``, e.g. ``truecolor``)."""
+def run_tui(term: str, tmp_path: Path, until: Callable[[str], bool], colours: str | None = None) -> str:
+    """What ``physink tui`` wrote to a 120x40 pty of 1200x800 pixels until ``until(written so far)``, then asked
+    to quit (``colours``: ``COLORTERM``, e.g. ``truecolor``)."""
     pid, fd = pty.fork()
     if pid == 0:  # the child: the app, as a user starts it
         env = {k: v for k, v in os.environ.items() if k not in ("TMUX", "PHYSINK_GRAPHICS", "KITTY_WINDOW_ID",
@@ -40,8 +47,9 @@ def run_tui(term: str, tmp_path: Path, seconds: float = 6.0, colours: str | None
     fcntl.ioctl(fd, termios.TIOCSWINSZ, struct.pack("HHHH", CELLS[1], CELLS[0], *PIXELS))
     out = b""
     try:
-        deadline = time.monotonic() + seconds
-        while time.monotonic() < deadline:
+        deadline = time.monotonic() + HANG_GUARD
+        while not until(out.decode("utf-8", errors="replace")):
+            assert time.monotonic() < deadline, f"not seen in {HANG_GUARD:g} s: {out[-500:]!r}"
             if select.select([fd], [], [], 0.1)[0]:
                 try:
                     out += os.read(fd, 1 << 16)
@@ -53,15 +61,15 @@ def run_tui(term: str, tmp_path: Path, seconds: float = 6.0, colours: str | None
         os.kill(pid, signal.SIGKILL)
         os.waitpid(pid, 0)
         os.close(fd)
-    return out
+    return out.decode("utf-8", errors="replace")
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("colours", ["truecolor", None])
 def test_a_kitty_terminal_gets_the_scene_as_kitty_graphics_in_placeholder_cells(tmp_path, colours) -> None:
-    out = run_tui("xterm-kitty", tmp_path, colours=colours).decode("utf-8", errors="replace")
-    sends = re.findall(r"\x1b_Ga=T[^\x1b]*\x1b\\(?:\x1b_Gm=[^\x1b]*\x1b\\)*", out)
-    assert sends, out[:500]
+    out = run_tui("xterm-kitty", tmp_path, lambda out: KITTY_SEND.search(out) is not None
+                  and kitty.PLACEHOLDER in out[KITTY_SEND.search(out).end():], colours=colours)
+    sends = [m.group(0) for m in KITTY_SEND.finditer(out)]
     keys, pixels = kitty_image(sends[-1])
     columns, rows = int(keys["c"]), int(keys["r"])
     assert pixels.shape == (rows * 20, columns * 10, 4) and 60 < columns < 120 and 30 < rows < 40
@@ -75,10 +83,8 @@ def test_a_kitty_terminal_gets_the_scene_as_kitty_graphics_in_placeholder_cells(
 
 @pytest.mark.slow
 def test_a_sixel_terminal_gets_the_scene_as_sixel_at_the_view(tmp_path) -> None:
-    out = run_tui("foot", tmp_path).decode("utf-8", errors="replace")
-    images = re.findall(r"\x1b7\x1b\[(\d+);(\d+)H(\x1bP0;1;0q.*?\x1b\\)\x1b8", out, re.S)
-    assert images, out[:500]
-    row, column, data = images[-1]
+    out = run_tui("foot", tmp_path, lambda out: SIXEL_IMAGE.search(out) is not None)
+    row, column, data = SIXEL_IMAGE.findall(out)[-1]
     assert (int(row), int(column)) == (1, 1)  # the scene view's top left cell
     pixels = sixel_image(data)
     assert pixels.shape[0] % 20 == 0 and pixels.shape[1] % 10 == 0 and 60 < pixels.shape[1] / 10 < 120
@@ -86,5 +92,5 @@ def test_a_sixel_terminal_gets_the_scene_as_sixel_at_the_view(tmp_path) -> None:
 
 @pytest.mark.slow
 def test_another_terminal_gets_half_blocks(tmp_path) -> None:
-    out = run_tui("xterm-256color", tmp_path).decode("utf-8", errors="replace")
+    out = run_tui("xterm-256color", tmp_path, lambda out: "\u2580" in out)
     assert "\u2580" in out and "\x1b_G" not in out and "\x1bP0;1;0q" not in out

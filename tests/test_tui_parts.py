@@ -9,16 +9,19 @@ import threading
 import time
 
 import numpy as np
+import pytest
 
 from physink_tui.errors import DeviceError
 from physink_tui.formats.journal.entries import CommandEntry, DeviceEntry, HidEntry
 from physink_tui.formats.journal.writer import JournalWriter
 from physink_tui.input.hid.reference_descriptors import REFERENCE_DEVICES
+from physink_tui.input.replay_clock import ReplayClock
 from physink_tui.input.sources import RawReport, SourceEnded
 from physink_tui.tui import storage
 from physink_tui.tui.halfblocks import UPPER_HALF, HalfBlocks
 from physink_tui.tui.live import JournalFeed, default_header
 from physink_tui.tui.tablet import DEVICE_ID, TabletWatch
+from tests.tui_helpers import HANG_GUARD
 
 
 def test_half_blocks_put_two_pixels_in_a_cell_and_merge_runs() -> None:
@@ -70,16 +73,26 @@ def test_finished_empty_and_unreadable_journals_are_not_offered(tmp_path) -> Non
     assert not storage.remove_if_empty(tmp_path / "a.physink.jsonl")
 
 
-def test_the_feed_submits_entries_when_they_are_due_and_leaves_out_the_end() -> None:
+def test_the_feed_submits_entries_at_their_due_time_on_the_runners_clock_and_leaves_out_the_end() -> None:
     got: list[tuple[float, object]] = []
     done = threading.Event()
     entries = [CommandEntry(0.0, "mode", ("demo",)), CommandEntry(0.2, "play", ()), CommandEntry(0.4, "end", ())]
-    start = time.monotonic()
-    feed = JournalFeed(entries, lambda e: got.append((time.monotonic() - start, e)), speed=2.0, on_done=done.set)
+    clock = ReplayClock()
+    feed = JournalFeed(entries, lambda e: got.append((clock(), e)), speed=2.0, on_done=done.set, clock=clock)
     feed.start()
-    assert done.wait(5)
+    assert done.wait(HANG_GUARD)
     assert [e.name for _, e in got] == ["mode", "play"]
-    assert 0.09 <= got[1][0] < 2.0  # 0.2 s of journal at twice the speed (a loaded machine may be late)
+    # 0.2 s of journal at twice the speed: the clock read as each is submitted, however late the thread ran
+    assert got[1][0] - got[0][0] == pytest.approx(0.1, abs=1e-9)
+    assert clock() >= got[1][0]  # released at the end: it runs on
+
+
+def wait_for(condition, what: str) -> None:
+    """Wait until ``condition()``; fail only after the hang guard."""
+    deadline = time.monotonic() + HANG_GUARD
+    while not condition():
+        assert time.monotonic() < deadline, f"timed out waiting for {what}"
+        time.sleep(0.01)
 
 
 class _FakeReader:
@@ -120,16 +133,12 @@ def test_the_tablet_watch_says_when_there_is_none_and_picks_one_up_when_plugged_
 
     watch = TabletWatch(submitted.append, statuses.append, opener=opener, scan_s=0.05)
     watch.start()
-    deadline = time.monotonic() + 5
-    while not statuses and time.monotonic() < deadline:
-        time.sleep(0.01)
-    assert statuses and statuses[0].startswith("no tablet") and "mouse" in statuses[0]
+    wait_for(lambda: statuses, "a status")
+    assert statuses[0].startswith("no tablet") and "mouse" in statuses[0]
     plugged.set()
-    while not any(isinstance(e, HidEntry) for e in submitted) and time.monotonic() < deadline:
-        time.sleep(0.01)
+    wait_for(lambda: any(isinstance(e, HidEntry) for e in submitted), "a report")
     readers[0].unplug()  # mid-stroke: the stroke ends (the pump lifts the pen), the status says so; it comes back
-    while sum(isinstance(e, DeviceEntry) for e in submitted) < 2 and time.monotonic() < deadline:
-        time.sleep(0.01)
+    wait_for(lambda: sum(isinstance(e, DeviceEntry) for e in submitted) >= 2, "the tablet announced again")
     watch.stop()
     assert any("lost" in s for s in statuses) and statuses[-1] == "tablet: Fake Tablet"
     assert sum(isinstance(e, DeviceEntry) for e in submitted) == 2  # announced again before its next report

@@ -15,7 +15,7 @@ from physink_tui.session.session import Session
 from physink_tui.tui import storage
 from physink_tui.tui.live import default_header
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal, PromptModal
-from tests.tui_helpers import SIZE, box_points, cells_of, circle_points, drag, draw, tui_app, until
+from tests.tui_helpers import SIZE, box_points, cells_of, circle_points, click, drag, draw, tui_app, until, until_app
 
 
 def run(coro) -> None:
@@ -61,9 +61,8 @@ def test_an_unfinished_session_is_offered_for_recovery(tmp_path) -> None:
     async def go() -> None:
         app = tui_app(tmp_path, recover=True)
         async with app.run_test(size=SIZE) as pilot:
-            await pilot.pause(0.2)
-            assert isinstance(app.screen, ConfirmModal)
-            await pilot.click("#yes")
+            await until_app(pilot, lambda: isinstance(app.screen, ConfirmModal), "the recovery question")
+            await click(pilot, "#yes")
             view = await until(pilot, lambda v: len(v.scene.components) == 1)
             assert next(iter(view.scene.components.values())).shape == "box"
             assert view.t >= 0.6
@@ -83,17 +82,16 @@ def test_save_writes_the_project_and_load_reads_it_back(tmp_path) -> None:
                                lambda v: len(v.scene.components) == 1)
             assert app.unsaved
             await pilot.press("ctrl+s")
-            await pilot.pause(0.1)
-            assert isinstance(app.screen, PromptModal)
+            await until_app(pilot, lambda: isinstance(app.screen, PromptModal), "the save prompt")
             app.screen.query_one("Input").value = str(path)
             await pilot.press("enter")
-            await pilot.pause(0.2)
-            assert path.exists() and not app.unsaved
+            await until_app(pilot, lambda: not app.unsaved, "the project saved")
+            assert path.exists()
             assert load_project(path).scene == drawn.scene
-            await pilot.click("#do-clear")
+            await click(pilot, "#do-clear")
             await until(pilot, lambda v: not v.scene.components)
-            await pilot.click("#do-load")
-            await pilot.pause(0.1)
+            await click(pilot, "#do-load")
+            await until_app(pilot, lambda: isinstance(app.screen, PromptModal), "the load prompt")
             app.screen.query_one("Input").value = str(path)
             await pilot.press("enter")
             await until(pilot, lambda v: v.scene == drawn.scene)
@@ -116,15 +114,14 @@ def test_loading_a_broken_project_shows_the_problem_and_keeps_the_work(tmp_path)
             drawn = await draw(pilot, [cells_of(app, box_points(0.2, 0.5, 0.5, 0.8))],
                                lambda v: len(v.scene.components) == 1)
             app.main.open_project(str(broken))
-            await pilot.pause(0.2)
-            assert isinstance(app.screen, ErrorModal)
+            await until_app(pilot, lambda: isinstance(app.screen, ErrorModal), "the error")
             assert "broken.physink.json" in app.screen._message
             await pilot.press("enter")
-            await pilot.pause(0.3)
+            await until_app(pilot, lambda: app.screen is app.main, "the error closed")
             assert app.live.runner.latest_view().scene == drawn.scene
             app.main.open_project(str(tmp_path / "missing.physink.json"))
-            await pilot.pause(0.2)
-            assert isinstance(app.screen, ErrorModal)
+            await until_app(pilot, lambda: isinstance(app.screen, ErrorModal), "the error")
+            assert "missing.physink.json" in app.screen._message
     run(go())
 
 
@@ -145,12 +142,12 @@ def test_the_demo_is_replayed_into_the_live_session_and_leaves_the_user_in_contr
     async def go() -> None:
         app = tui_app(tmp_path, header=header, entries=tuple(entries), speed=8.0)
         async with app.run_test(size=SIZE) as pilot:
-            view = await until(pilot, lambda v: v.mode == "demo", timeout=20)
+            view = await until(pilot, lambda v: v.mode == "demo")
             assert len(view.scene.components) >= 7
-            await until(pilot, lambda v: v.mode == "sketch" and v.timeline is not None, timeout=20)
-            await pilot.pause(0.3)
-            assert app.main.query_one("#status").activity.startswith("replay done")
-            await pilot.click("#do-clear")
+            await until(pilot, lambda v: v.mode == "sketch" and v.timeline is not None)
+            await until_app(pilot, lambda: app.main.query_one("#status").activity.startswith("replay done"),
+                            "replay done in the status bar")
+            await click(pilot, "#do-clear")
             await until(pilot, lambda v: not v.scene.components)
     run(go())
 
@@ -180,10 +177,10 @@ def test_a_journal_folder_that_cannot_be_made_is_said_and_the_session_runs_witho
     async def go() -> None:
         app = tui_app(tmp_path, journal_dir=blocker / "sessions")
         async with app.run_test(size=SIZE) as pilot:
-            await pilot.pause(0.3)
-            assert isinstance(app.screen, ErrorModal) and "journal folder" in app.screen._message
+            await until_app(pilot, lambda: isinstance(app.screen, ErrorModal), "the error")
+            assert "journal folder" in app.screen._message
             await pilot.press("enter")
-            await pilot.click("#do-demo")
+            await click(pilot, "#do-demo")
             await until(pilot, lambda v: v.mode == "demo")
             assert app.live.journal_path is None
     run(go())

@@ -11,7 +11,7 @@ import pytest
 from physink_tui.errors import PhysinkError
 from physink_tui.tui.config import Config, config_path, load_config, save_config
 from physink_tui.tui.widgets.scene_view import SceneView
-from tests.tui_helpers import SIZE, open_settings, tui_app, until
+from tests.tui_helpers import SIZE, click, open_settings, tui_app, until, until_app
 
 
 def test_the_settings_file_round_trips_and_names_a_bad_setting(tmp_path, monkeypatch) -> None:
@@ -42,17 +42,17 @@ def test_the_settings_screen_saves_applies_the_theme_and_refuses_bad_values(tmp_
             screen = await open_settings(pilot)
             screen.query_one("#tip-down").value = "0.01"
             screen.query_one("#tip-up").value = "0.02"
-            await pilot.click("#save")
-            await pilot.pause(0.1)
-            assert app.screen is screen and "tip" in str(screen.query_one("#settings-error").render())
+            await click(pilot, "#save")
+            await until_app(pilot, lambda: "tip" in str(screen.query_one("#settings-error").render()), "the refusal")
+            assert app.screen is screen
             screen.query_one("#tip-down").value = "0.08"
             screen.query_one("#tip-up").value = "0.02"
             screen.query_one("#theme").value = "light"
             screen.query_one("#rotation").value = 270
             screen.query_one("#left-handed").value = True
-            await pilot.click("#save")
-            await pilot.pause(0.2)
-            assert app.screen is app.main
+            await click(pilot, "#save")
+            await until_app(pilot, lambda: app.screen is app.main and app.config.rotation == 270,
+                            "the settings saved and closed")
             assert app.main.query_one(SceneView).theme_name == "light"
             assert app.config.rotation == 270 and app.config.tip_down == 0.08
     asyncio.run(go())

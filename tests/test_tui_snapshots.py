@@ -15,8 +15,9 @@ from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.session.search_job import Progress
 from physink_tui.tui.app import TuiOptions, make_app
+from physink_tui.tui.screens.modals import TextScreen
 from physink_tui.tui.widgets.search_bar import SearchBar
-from tests.tui_helpers import SIZE, until
+from tests.tui_helpers import SIZE, until_app, until_shown
 
 NO_SETTINGS = Path("/nonexistent/physink/config.json")
 """The default settings, whatever the user's own are."""
@@ -27,13 +28,14 @@ def app_with(prior=(), header=None):
                                config_path=NO_SETTINGS))
 
 
-def waiting_for(predicate, *keys):
+def waiting_for(predicate, *keys, then=lambda app: True):
+    """Wait until the screen shows a view satisfying ``predicate``, press ``keys``, wait until ``then(app)``."""
     async def run_before(pilot) -> None:
-        await until(pilot, predicate)
-        await pilot.pause(0.3)
+        await until_shown(pilot, predicate)
         if keys:
             await pilot.press(*keys)
-            await pilot.pause(0.3)
+            await until_app(pilot, lambda: then(pilot.app), "what the keys open")
+            await pilot.pause()
     return run_before
 
 
@@ -70,7 +72,8 @@ def test_demo_playback(snap_compare) -> None:
 def test_timeline_view(snap_compare) -> None:
     header, prior = demonstrated(1.0)
     assert snap_compare(app_with(prior, header), terminal_size=SIZE,
-                        run_before=waiting_for(lambda v: v.mode == "demo" and v.clock == 1.0, "t"))
+                        run_before=waiting_for(lambda v: v.mode == "demo" and v.clock == 1.0, "t",
+                                               then=lambda app: isinstance(app.screen, TextScreen)))
 
 
 def test_simulation_result(snap_compare) -> None:
@@ -91,5 +94,5 @@ def test_searching(snap_compare) -> None:
         bar = pilot.app.main.query_one(SearchBar)
         bar.begin(200)
         bar.show(Progress(37, 200, 2.0, 135.25))
-        await pilot.pause(0.3)
+        await pilot.pause()
     assert snap_compare(app_with(prior, header), terminal_size=SIZE, run_before=run_before)

@@ -16,6 +16,17 @@ pytestmark = [pytest.mark.slow, pytest.mark.skipif(shutil.which("tmux") is None,
 
 WIDTH, HEIGHT = 120, 40
 SCENE_COLUMNS = 70  # the scene view's share of a line (the timeline tree is to its right)
+HANG_GUARD = 300.0
+"""Seconds after which a wait on the screen fails (only a stuck app gets there, never a slow one)."""
+
+
+def wait_for(socket: str, condition, what: str) -> list[str]:
+    """The pane's lines once ``condition(lines)`` holds; fail after the hang guard."""
+    deadline = time.monotonic() + HANG_GUARD
+    while not condition(lines := screen(socket)):
+        assert time.monotonic() < deadline, f"{what} not seen:\n" + "\n".join(lines)
+        time.sleep(0.1)
+    return lines
 
 
 def tmux(socket: str, *args: str) -> str:
@@ -37,13 +48,13 @@ def test_physink_demo_opens_the_tui_and_replays_the_egg_cracker(tmp_path: Path) 
     # the pane exists at its size before the program starts (started with the session, it may see tmux's
     # default 80x24 first)
     tmux(socket, "new-session", "-d", "-s", "demo", "-x", str(WIDTH), "-y", str(HEIGHT), "-c", str(tmp_path), "sh")
-    time.sleep(0.3)
     tmux(socket, "send-keys", "-t", "demo", f"clear; {command}; echo physink-exited-$?", "Enter")
     try:
         scenes, trees, narrations = [], set(), []
-        deadline = time.monotonic() + 90
-        while time.monotonic() < deadline:
-            time.sleep(0.5)
+        deadline = time.monotonic() + HANG_GUARD
+        while True:  # the screen sampled as the replay runs (at real speed: tens of seconds), until all is seen
+            assert time.monotonic() < deadline, "the replay's scene, tree and narration were not all seen"
+            time.sleep(0.2)
             plain = screen(socket)
             coloured = screen(socket, escapes=True)
             assert not any("physink-exited" in line for line in plain), "\n".join(plain)
@@ -53,7 +64,7 @@ def test_physink_demo_opens_the_tui_and_replays_the_egg_cracker(tmp_path: Path) 
             if said and (not narrations or narrations[-1] != said):
                 narrations.append(said)
             if "Contact between" in "".join(trees) and any("Movement of" in n for n in narrations) \
-                    and "replay done" in plain[HEIGHT - 1] + "".join(plain[HEIGHT - 2:]):
+                    and "replay done" in plain[HEIGHT - 1] + "".join(plain[HEIGHT - 2:]) and len(set(scenes)) > 5:
                 break
         final = screen(socket)
         assert any("\u2580" in line for line in final[:30]), "\n".join(final)
@@ -63,12 +74,11 @@ def test_physink_demo_opens_the_tui_and_replays_the_egg_cracker(tmp_path: Path) 
         assert len(narrations) >= 2 and any("Movement of" in n for n in narrations), narrations
         assert "SKETCH" in final[HEIGHT - 1] or "DEMO" in final[HEIGHT - 1], final[HEIGHT - 1]
         tmux(socket, "send-keys", "-t", "demo", "q")
-        time.sleep(1.0)
-        tmux(socket, "send-keys", "-t", "demo", "y")
-        for _ in range(40):
-            time.sleep(0.25)
-            if any("physink-exited-0" in line for line in screen(socket)):
-                break
+        asked = wait_for(socket, lambda lines: any("Quit anyway?" in line or "physink-exited-" in line
+                                                   for line in lines), "the question before quitting (or the exit)")
+        if any("Quit anyway?" in line for line in asked):  # the replayed work is not saved
+            tmux(socket, "send-keys", "-t", "demo", "y")
+        wait_for(socket, lambda lines: any("physink-exited-" in line for line in lines), "the app's exit")
         assert any("physink-exited-0" in line for line in screen(socket)), "\n".join(screen(socket))
     finally:
         subprocess.run(["tmux", "-L", socket, "kill-server"], capture_output=True)

@@ -91,11 +91,11 @@ def test_ball_dropped_on_a_fixed_freeform_platform_comes_to_rest_on_it() -> None
 def test_non_convex_polygon_is_triangulated_and_weighs_its_area_times_density() -> None:
     heavy = Material(2.5, 0.2, 0.0)
     world = World.from_scene(scene(polygon("b1", 300.0, 300.0, L_OUTLINE, heavy)))
-    shapes = world.shapes_of("b1")
+    shapes = world.pymunk_parts.shapes["b1"]
     assert len(shapes) == 4
     assert all(isinstance(s, pymunk.Poly) and len(s.get_vertices()) == 3 for s in shapes)
     assert sum(s.area for s in shapes) == pytest.approx(400.0, rel=1e-9)
-    assert world.pymunk_body("b1").mass == pytest.approx(400.0 * 2.5, rel=1e-9)
+    assert world.pymunk_parts.bodies["b1"].mass == pytest.approx(400.0 * 2.5, rel=1e-9)
     union = shapely.union_all([shapely.Polygon(s.get_vertices()) for s in shapes])
     assert union.symmetric_difference(shapely.Polygon(L_OUTLINE)).area < 1e-6
 
@@ -105,19 +105,19 @@ def test_body_kinds_become_the_right_shapes() -> None:
                 MATERIALS["freeform"])
     world = World.from_scene(scene(box("b1", 100, 100, 60, 20), ball("b2", 300, 100), ellipse("b3", 500, 100, 40, 20),
                                    ramp, polygon("b5", 700, 100, ((-10, -10), (10, -10), (0, 10)))))
-    assert [type(s).__name__ for s in world.shapes_of("b1")] == ["Poly"]
-    assert world.pymunk_body("b1").mass == pytest.approx(1200.0)
-    assert [type(s).__name__ for s in world.shapes_of("b2")] == ["Circle"]
-    assert world.pymunk_body("b2").mass == pytest.approx(math.pi * 25**2)
-    (oval,) = world.shapes_of("b3")
+    assert [type(s).__name__ for s in world.pymunk_parts.shapes["b1"]] == ["Poly"]
+    assert world.pymunk_parts.bodies["b1"].mass == pytest.approx(1200.0)
+    assert [type(s).__name__ for s in world.pymunk_parts.shapes["b2"]] == ["Circle"]
+    assert world.pymunk_parts.bodies["b2"].mass == pytest.approx(math.pi * 25**2)
+    (oval,) = world.pymunk_parts.shapes["b3"]
     assert len(oval.get_vertices()) == 32
-    segments = world.shapes_of("b4")
+    segments = world.pymunk_parts.shapes["b4"]
     assert [type(s).__name__ for s in segments] == ["Segment", "Segment"]
     length = math.dist((-100, -50), (0, 0)) + math.dist((0, 0), (100, 20))
     r = segments[0].radius
     assert 0 < r <= 3.0
-    assert world.pymunk_body("b4").mass == pytest.approx(2 * r * length, rel=0.05)  # a thin strip
-    assert len(world.shapes_of("b5")) == 1  # a convex freeform stays one polygon
+    assert world.pymunk_parts.bodies["b4"].mass == pytest.approx(2 * r * length, rel=0.05)  # a thin strip
+    assert len(world.pymunk_parts.shapes["b5"]) == 1  # a convex freeform stays one polygon
 
 
 def test_materials_set_the_shapes_and_contacts_take_max_restitution_and_mean_friction() -> None:
@@ -125,12 +125,13 @@ def test_materials_set_the_shapes_and_contacts_take_max_restitution_and_mean_fri
     ramp = polygon("b1", 500.0, 800.0, ((-200.0, -20.0), (200.0, -20.0), (200.0, 20.0), (-200.0, 20.0)), soft)
     s = scene(ramp, weld("j1", "b1", (500.0, 800.0)), ball("b2", 500.0, 735.0, material=hard))  # 20 above it
     world = World.from_scene(s)
-    (shape,) = world.shapes_of("b2")
-    assert world.surface(shape) == (0.6, 0.8)
+    (shape,) = world.pymunk_parts.shapes["b2"]
+    assert world.pymunk_parts.surfaces.of(shape) == (0.6, 0.8)
 
     def arbiters() -> list[tuple[float, float]]:
         seen: list[tuple[float, float]] = []
-        world.pymunk_body("b2").each_arbiter(lambda arbiter: seen.append((arbiter.restitution, arbiter.friction)))
+        body = world.pymunk_parts.bodies["b2"]
+        body.each_arbiter(lambda arbiter: seen.append((arbiter.restitution, arbiter.friction)))
         return seen
 
     while not world.take_contacts():
@@ -199,7 +200,7 @@ def test_pivot_to_the_background_lets_a_plank_turn_about_the_pin_but_not_fall() 
     plank = box("b1", 500.0, 300.0, 300.0, 20.0)
     pin = (400.0, 300.0)  # 100 units left of the centre: the plank swings down about it
     world = World.from_scene(scene(plank, Joint("j1", "pivot", "b1", BACKGROUND, pin)))
-    body = world.pymunk_body("b1")
+    body = world.pymunk_parts.bodies["b1"]
     local_pin = body.world_to_local(pin)
     angles = []
     for _ in range(240):
@@ -238,7 +239,7 @@ def test_vertical_spring_settles_at_rest_length_plus_mg_over_k_and_never_moves_s
     # Hooked near the weight's top-left corner, so gravity also pulls it sideways and twists it about the hook.
     spring = Spring("s1", "b1", "b2", (485.0, 110.0), (485.0, 380.0), "vertical", 270.0, k)
     world = World.from_scene(scene(ceiling, weight, weld("j1", "b1", (500.0, 100.0)), spring))
-    m = world.pymunk_body("b2").mass
+    m = world.pymunk_parts.bodies["b2"].mass
     world.set_velocity("b2", (0.0, 400.0))  # plucked
     for _ in range(3000):
         world.step()
@@ -270,9 +271,9 @@ def test_rope_from_a_fixed_peg_holds_a_hanging_ball_within_its_length() -> None:
     length = sum(math.dist(p, q) for p, q in itertools.pairwise(pts))
     world = World.from_scene(scene(peg, ball("b2", 700.0, 200.0), weld("j1", "b1", (500.0, 200.0)),
                                    Rope("r1", pts, "b1", "b2")))
-    assert len(world.links_of("r1")) == 20
-    rope_mass = sum(link.mass for link in world.links_of("r1"))
-    assert rope_mass < 0.05 * world.pymunk_body("b2").mass  # light next to what it holds
+    assert len(world.pymunk_parts.links["r1"]) == 20
+    rope_mass = sum(link.mass for link in world.pymunk_parts.links["r1"])
+    assert rope_mass < 0.05 * world.pymunk_parts.bodies["b2"].mass  # light next to what it holds
     lowest = 0.0
     for _ in range(1200):
         world.step()
@@ -280,7 +281,7 @@ def test_rope_from_a_fixed_peg_holds_a_hanging_ball_within_its_length() -> None:
         assert math.dist((x, y), (500.0, 200.0)) < 1.01 * length  # the solver lets it stretch under 1%
         lowest = max(lowest, y)
     assert lowest > 200.0 + 0.95 * length  # it swung through the bottom, taut
-    links, shapes = world.links_of("r1"), world.shapes_of("r1")
+    links, shapes = world.pymunk_parts.links["r1"], world.pymunk_parts.shapes["r1"]
     for (l1, s1), (l2, s2) in zip(zip(links, shapes, strict=True), zip(links[1:], shapes[1:], strict=True),
                                   strict=False):
         assert math.dist(l1.local_to_world(s1.b), l2.local_to_world(s2.a)) < 1.0  # the chain holds together
@@ -289,8 +290,8 @@ def test_rope_from_a_fixed_peg_holds_a_hanging_ball_within_its_length() -> None:
 def test_rope_is_resampled_into_8_to_40_links() -> None:
     short = World.from_scene(scene(Rope("r1", ((0.0, 0.0), (40.0, 0.0)))))
     long = World.from_scene(scene(Rope("r1", ((0.0, 0.0), (500.0, 0.0), (500.0, 900.0)))))
-    assert len(short.links_of("r1")) == 8
-    assert len(long.links_of("r1")) == 40
+    assert len(short.pymunk_parts.links["r1"]) == 8
+    assert len(long.pymunk_parts.links["r1"]) == 40
 
 
 def test_bad_components_raise_scene_errors_naming_them() -> None:
@@ -324,7 +325,7 @@ def machine() -> Scene:
 
 def snapshot(world: World) -> list[tuple[float, ...]]:
     bodies = [world.pose(i) + world.velocity(i) for i in world.body_ids()]
-    links = [(*link.position, link.angle) for link in world.links_of("r1")]
+    links = [(*link.position, link.angle) for link in world.pymunk_parts.links["r1"]]
     return bodies + links
 
 
@@ -398,14 +399,14 @@ def test_freeze_all_except_and_drag_move_one_body_while_the_others_stay_put() ->
     world.step(30)  # everything is in motion
     world.freeze_all_except("b3")
     others = {i: world.pose(i) for i in world.body_ids() if i != "b3"}
-    links = [tuple(link.position) for link in world.links_of("r1")]
+    links = [tuple(link.position) for link in world.pymunk_parts.links["r1"]]
     start = world.pose("b3")
     for _ in range(240):
         world.drag("b3", (150.0, 150.0), grab_point=start[:2])
         world.step()
     assert math.dist(world.pose("b3")[:2], (150.0, 150.0)) < 2.0
     assert {i: world.pose(i) for i in others} == others
-    assert [tuple(link.position) for link in world.links_of("r1")] == links
+    assert [tuple(link.position) for link in world.pymunk_parts.links["r1"]] == links
     assert all(not math.isnan(v) for i in world.body_ids() for v in world.pose(i))
     world.release()
     world.unfreeze()
@@ -467,11 +468,11 @@ def test_dragging_a_different_body_releases_the_first() -> None:
     world.step(60)
     world.drag("b2", (300.0, 200.0))
     world.step(120)
-    assert len(world.space.bodies) == 4  # background, two balls, one control body
-    assert len(world.space.constraints) == 1
+    assert len(world.pymunk_parts.space.bodies) == 4  # background, two balls, one control body
+    assert len(world.pymunk_parts.space.constraints) == 1
     world.release()
-    assert len(world.space.bodies) == 3
-    assert len(world.space.constraints) == 0
+    assert len(world.pymunk_parts.space.bodies) == 3
+    assert len(world.pymunk_parts.space.constraints) == 0
 
 
 def test_a_frozen_body_can_be_dragged_and_thaws_with_the_others() -> None:
@@ -489,3 +490,27 @@ def test_a_frozen_body_can_be_dragged_and_thaws_with_the_others() -> None:
     assert world.is_dynamic("b2")
     world.step(10)
     assert world.pose("b2")[1] > y
+
+
+# -- the questions a simulation asks (it never touches the pymunk space) -----------------------------------------
+
+
+def test_the_world_answers_half_size_damping_sleep_and_the_contact_between_two_bodies() -> None:
+    world = World.from_scene(scene(box("floor", 500.0, 600.0, 800.0, 40.0), weld("j1", "floor", (500.0, 600.0)),
+                                   ball("b2", 500.0, 555.0), ball("b3", 200.0, 100.0)))
+    assert world.half_size("floor") == pytest.approx(20.0)  # its thinnest side is 40 units
+    assert world.half_size("b2") == pytest.approx(25.0)
+    assert world.half_size(BACKGROUND) == math.inf  # no shapes
+    world.damping = 0.25
+    assert world.damping == 0.25
+    world.step(60)  # the ball drawn 5 units above the floor comes to rest on it
+    record = world.contact_between("b2", "floor", world.steps)
+    assert record is not None and (record.a_id, record.b_id, record.step) == ("b2", "floor", world.steps)
+    assert record.normal[1] == pytest.approx(1.0, abs=1e-6)  # from the ball down into the floor
+    assert world.contact_between("b3", "floor", world.steps) is None  # b3 is still falling, far above
+    world.hold_until_touched({"b3"})
+    world.step()
+    assert world.is_asleep("b2") and not world.is_asleep("b3")
+    before = world.pose("b2")
+    world.step(30)
+    assert world.pose("b2") == before  # asleep: gravity does not move it

@@ -17,17 +17,17 @@ from physink_tui.scene.recognition.primitives import Box, Circle, Curve, Helix, 
 
 def describe(world: World, scene: Scene) -> dict:
     """What a world holds, by component id (pymunk objects compared through what they do)."""
-    space = world.space
+    space = world.pymunk_parts.space
     live = set(space.constraints)
     out = {"bodies": [], "holders": {}, "counts": (len(space.bodies), len(space.shapes), len(live))}
     for bid in world.body_ids():
-        b = world.pymunk_body(bid)
+        b = world.pymunk_parts.bodies[bid]
         mass = round(b.mass, 6) if b.body_type == pymunk.Body.DYNAMIC else None
         out["bodies"].append((bid, b.body_type, round(b.position.x, 6), round(b.position.y, 6), round(b.angle, 9),
-                              len(world.shapes_of(bid)), mass))
+                              len(world.pymunk_parts.shapes[bid]), mass))
     for cid, c in scene.components.items():
         if not isinstance(c, Body):
-            parts = world.constraints_of(cid)
+            parts = world.pymunk_parts.constraints.get(cid, ())
             out["holders"][cid] = sorted((type(p).__name__, p in live) for p in parts)
     return out
 

@@ -3,8 +3,8 @@
 the signals.
 
 ``--replay CAPTURE.hid [--speed X]`` feeds a capture through the same path as a live tablet, paced by its
-timestamps X times faster; the sessions' input time is the capture's own (the runner's clock runs X times
-faster too), so a session replayed at any speed journals what the tablet sent when it sent it.
+timestamps X times faster; the sessions' time is the capture's own (the kiosk's clock is the time of the
+capture's latest report), so a replay at any speed records the same sessions, byte for byte.
 """
 
 from __future__ import annotations
@@ -13,15 +13,15 @@ import argparse
 import signal
 import sys
 import threading
-import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, TypeVar
 
 from physink_tui.errors import DeviceError, PhysinkError
 from physink_tui.formats.journal.entries import JournalDevice, JournalHeader
+from physink_tui.formats.outputs import reason
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.hid.decoder import HidPenDecoder
-from physink_tui.input.hid.readers import open_reader
+from physink_tui.input.hid.readers import check_device_spec, open_reader
 from physink_tui.input.journal_compose import header_for_capture
 from physink_tui.input.pen.mapping import TabletMapping, mapping_to_header
 from physink_tui.input.pen.state import TipThresholds
@@ -67,14 +67,20 @@ def mapping_for(device: JournalDevice, zones: HotZones) -> TabletMapping:
                          area=zones.area)
 
 
-def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
-    capture = Capture.from_file(path)
+def _replay_source(path: str, speed: float, zones: HotZones,
+                   idle_s: float) -> tuple[PenSource, JournalDevice, JournalHeader]:
+    try:
+        capture = Capture.from_file(path)
+    except OSError as exc:
+        raise PhysinkError(f"{path}: cannot read the capture: {reason(exc)}") from None
     if not capture.devices:
         raise PhysinkError(f"{path}: the capture describes no device")
     first = capture.devices[0]
     device = JournalDevice(DEVICE_ID, first.name, first.bus, first.vid, first.pid, first.descriptor)
     header = header_for_capture(Capture((first,), ()), mapping_for(device, zones))
-    return CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed), device, header
+    # a gap longer than --idle ends the session whatever its length: the replay does not wait it out in full
+    source = CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed, max_gap=idle_s + 1.0)
+    return source, device, header
 
 
 def _wait_for(open_fn: Callable[[], T], kiosk: Kiosk) -> T:
@@ -96,9 +102,11 @@ def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSo
     """Waits for the tablet (hot-plug), then a source that survives it being unplugged and plugged back."""
     reader = _wait_for(lambda: open_reader(spec, DEVICE_ID), kiosk)
     info = reader.info
-    if not info.descriptor:
+    if info is None or not info.descriptor:
         reader.stop()
-        raise DeviceError(f"{info.path}: its report descriptor is unknown, and a journal needs one")
+        where = (spec or DEVICE_ID) if info is None else info.path
+        raise DeviceError(f"{where}: its report descriptor is unknown (is it a tablet's hidraw node?), and a journal "
+                          "needs one")
     device = JournalDevice(DEVICE_ID, info.name or None, info.bus, info.vid, info.pid, info.descriptor)
     mapping = mapping_for(device, zones)
     thresholds = TipThresholds()
@@ -126,6 +134,12 @@ def run(args: argparse.Namespace) -> int:
     from physink_tui.kiosk.service import Kiosk, KioskSettings
     from physink_tui.render.export import Look
 
+    if args.replay is None and not args.serial:
+        try:
+            check_device_spec(args.device)
+        except DeviceError as exc:
+            print(f"physink kiosk: {exc}", file=sys.stderr)
+            return 2
     zones = read_zones(args.hot_zones)
     max_bytes = None
     if args.max_disk is not None:
@@ -134,21 +148,20 @@ def run(args: argparse.Namespace) -> int:
         except ValueError as exc:
             print(f"physink kiosk: --max-disk: {exc}", file=sys.stderr)
             return 2
-    settings = KioskSettings(args.idle, args.keep, max_bytes, Look(*args.video_size, 30))
+    settings = KioskSettings(args.idle, args.keep, max_bytes, Look(args.video_size[0], args.video_size[1], 30))
     if args.speech and args.replay is not None and args.speed != 1.0:
         print("physink kiosk: --speech listens in real time, so a replay with it needs --speed 1", file=sys.stderr)
         return 2
     kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
-    start = time.monotonic()
-    clock: Callable[[], float] = (  # a replay's input time is the capture's own
-        (lambda: (time.monotonic() - start) * args.speed) if args.replay is not None else time.monotonic)
-    ears = _ears(args, kiosk, clock)
+    if args.replay is not None:
+        kiosk.use_capture_clock()  # a replay's clock is the capture's own, the microphone's too
+    ears = _ears(args, kiosk, kiosk.clock)
     try:
         if args.replay is not None:
-            source, device, header = _replay_source(args.replay, args.speed, zones)
+            source, device, header = _replay_source(args.replay, args.speed, zones, args.idle)
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
-            return kiosk.run(source, device, header, replay=True, clock=clock)
+            return kiosk.run(source, device, header, replay=True)
         if args.serial:
             serial_source, mapping, header = _serial_source(args.serial, zones, kiosk)
             return kiosk.run(serial_source, None, header, replay=False, mapping=mapping)

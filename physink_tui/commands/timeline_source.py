@@ -38,13 +38,7 @@ def _refuse_other_kinds(text: str, path: Path) -> None:
         raise TimelineError(f"{path}: this is a journal (.physink.jsonl); {takes}")
 
 
-def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
-    """The timeline in a timeline JSON or project file, with its component labels (id -> label).
-
-    Raises:
-        PhysinkError: one line naming the file: it cannot be read, is not UTF-8, is no valid project or timeline,
-            or is a project without a timeline.
-    """
+def _read(path: Path) -> str:
     try:
         text = path.read_bytes().decode("utf-8")
     except OSError as e:
@@ -53,6 +47,39 @@ def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
         raise TimelineError(f"{path}: not UTF-8 text (byte {e.start})") from None
     text = text.removeprefix("\ufeff")
     _refuse_other_kinds(text, path)
+    return text
+
+
+Named = tuple[Timeline, dict[str, str]]
+
+
+def load_kept_demonstration(path: Path) -> tuple[Named, Named]:
+    """The demonstration a project keeps and its (adopted, simulated) timeline, each with the scene's names.
+
+    Raises:
+        PhysinkError: one line naming the file: as `load_timeline`, or it is no project, or it keeps no
+            demonstration (no simulation was adopted).
+    """
+    text = _read(path)
+    if not _is_project(text):
+        raise PhysinkError(f"{path}: one file alone must be a project that adopted a simulation; name the "
+                           "demonstration and the simulation to compare two timelines")
+    project = decode_project(text, path)
+    if project.demonstration is None or project.timeline is None:
+        raise PhysinkError(f"{path}: the project keeps no demonstration (no simulation was adopted in it); name the "
+                           "demonstration and the simulation to compare")
+    names = project.scene.names()
+    return (project.demonstration, names), (project.timeline, dict(names))
+
+
+def load_timeline(path: Path) -> tuple[Timeline, dict[str, str]]:
+    """The timeline in a timeline JSON or project file, with its component labels (id -> label).
+
+    Raises:
+        PhysinkError: one line naming the file: it cannot be read, is not UTF-8, is no valid project or timeline,
+            or is a project without a timeline.
+    """
+    text = _read(path)
     if not _is_project(text):
         try:
             return decode_timeline_json(text)

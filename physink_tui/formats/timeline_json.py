@@ -1,14 +1,18 @@
 """The causal timeline as JSON, both ways (DESIGN.md "Timeline JSON"); checks are `json_checks`', no file I/O.
 
-A timeline file is ``{"format": "physink-timeline", "version": 1, "events": [...]}``; a project embeds the
+A timeline file is ``{"format": "physink-timeline", "version": 2, "events": [...]}``; a project embeds the
 ``{"events": [...]}`` object alone (`timeline_object`), versioned by the project. One object per event in creation
 order, every key present for every type (empty lists where a type has none), floats rounded to 6 decimals, so
 the same timeline always gives the same bytes and decoding what was encoded gives an equal `Timeline` (once its
 numbers are rounded: encoding a decoded timeline gives the same bytes back). ``label`` is the narration shown
 and ``user_label`` the user's phrase; component ``label`` values are the names used for the narration.
 
+``in_contact`` is the start event's: the pairs of movable bodies in contact when the demonstration began, each
+a list of two ``{"id", "label"}`` objects (empty for every other event, and for a start with none).
+
 Version 0 is the unversioned ``{"events": [...]}`` file written before the timeline carried a version; it reads
-as version 1 through `migrations.upgrade`.
+as version 1, and version 1 (before ``in_contact``) as version 2, through `migrations.upgrade`: a timeline written
+before pairs in contact at the start were recorded names none.
 """
 
 from __future__ import annotations
@@ -25,11 +29,12 @@ from physink_tui.timeline.events import Event, Timeline, TimelineError, Trajecto
 from physink_tui.timeline.graph import check_acyclic
 
 FORMAT = "physink-timeline"
-FORMAT_VERSION = 1
-"""The version this program writes, and the newest it reads (0: the unversioned file of before)."""
+FORMAT_VERSION = 2
+"""The version this program writes, and the newest it reads (0: the unversioned file of before; 1: before
+``in_contact``)."""
 
 EVENT_KEYS = ("id", "type", "components", "causes", "t0", "t1", "label", "user_label", "sides", "regions", "point",
-              "trajectory", "tracks")
+              "trajectory", "tracks", "in_contact")
 """An event object's keys, in the order written."""
 
 MAX_VALUE = 1e9
@@ -65,6 +70,7 @@ def _event_obj(ev: Event, names: Mapping[str, str]) -> dict[str, Any]:
         "point": None if ev.point is None else [_r(ev.point[0]), _r(ev.point[1])],
         "trajectory": _frames(ev.trajectory),
         "tracks": [{"component": c, "trajectory": _frames(frames)} for c, frames in ev.tracks],
+        "in_contact": [[{"id": c, "label": names.get(c)} for c in pair] for pair in ev.in_contact],
     }
 
 
@@ -104,8 +110,8 @@ def decode_timeline_json(text: str) -> tuple[Timeline, dict[str, str]]:
         raise TimelineError(f"timeline JSON is not valid JSON: {exc}") from None
     where = Place("", TimelineError)
     doc = checks.an_object(where, "timeline JSON", doc, 'an object {"format", "version", "events": [...]}')
-    doc = upgrade(doc, _version(doc, where), {1: _from_unversioned}, FORMAT_VERSION, what="timeline format",
-                  where=Place("timeline JSON", TimelineError))
+    doc = upgrade(doc, _version(doc, where), {1: _from_unversioned, 2: _with_in_contact}, FORMAT_VERSION,
+                  what="timeline format", where=Place("timeline JSON", TimelineError))
     return timeline_from_object(doc, where, "")
 
 
@@ -123,6 +129,20 @@ def _version(doc: dict[str, Any], where: Place) -> int:
 def _from_unversioned(doc: dict[str, Any]) -> dict[str, Any]:
     """Version 0 (``{"events": [...]}``, no format or version) as version 1: the same events, now labelled."""
     return {"format": FORMAT, "version": 1, **doc}
+
+
+def _with_in_contact(doc: dict[str, Any]) -> dict[str, Any]:
+    """Version 1 as version 2: the same events, none naming pairs in contact at the start."""
+    return {**events_with_in_contact(doc), "version": 2}
+
+
+def events_with_in_contact(obj: dict[str, Any]) -> dict[str, Any]:
+    """An ``{"events": [...]}`` object of before ``in_contact`` (timeline version 1, project version 1) with an
+    empty ``in_contact`` on every event; what is not an event object is left for the checks to name."""
+    events = obj.get("events")
+    if not isinstance(events, list):
+        return dict(obj)
+    return {**obj, "events": [{"in_contact": [], **ev} if isinstance(ev, dict) else ev for ev in events]}
 
 
 def timeline_from_object(obj: dict[str, Any], where: Place, path: str) -> tuple[Timeline, dict[str, str]]:
@@ -206,6 +226,17 @@ def _event(where: Place, path: str, obj: Any, names: dict[str, str]) -> Event:
         for at, track in _parts(where, obj, path, "tracks", '{"component", "trajectory"}'):
             tracks.append((_str(where, f"{at}.component", _field(where, track, at, "component", "a string")),
                            _frames_at(where, f"{at}.trajectory", _field(where, track, at, "trajectory", "a list"))))
+    in_contact = []
+    for j, pair in enumerate(checks.a_list(where, f"{path}.in_contact",
+                                           _field(where, obj, path, "in_contact", "a list of pairs"),
+                                           "a list of pairs")):
+        at = f"{path}.in_contact[{j}]"
+        pair = checks.a_list(where, at, pair, 'a pair [{"id", "label"}, {"id", "label"}]')
+        if len(pair) != 2:
+            raise where.bad(at, 'a pair [{"id", "label"}, {"id", "label"}]', pair)
+        ids = [_named(where, f"{at}[{k}]", checks.an_object(where, f"{at}[{k}]", part, 'an object {"id", "label"}'),
+                      "id", names) for k, part in enumerate(pair)]
+        in_contact.append((ids[0], ids[1]))
     causes = checks.a_list(where, f"{path}.causes", _field(where, obj, path, "causes", "a list of event ids"),
                            "a list of event ids")
     return Event(
@@ -221,4 +252,5 @@ def _event(where: Place, path: str, obj: Any, names: dict[str, str]) -> Event:
         point=point,
         trajectory=_frames_at(where, f"{path}.trajectory", _field(where, obj, path, "trajectory", "a list")),
         tracks=tuple(tracks),
+        in_contact=tuple(in_contact),
     )

@@ -50,15 +50,17 @@ def narration_lines(timeline: Timeline | None, names: Mapping[str, str]) -> str:
     return "".join(f"{ev.t0:8.2f} s  {event_label(ev, names)}\n" for ev in events)
 
 
-def finalise(folder: Path, session: Session, ending: Ending, look: Look) -> dict[str, object]:
+def finalise(folder: Path, session: Session, ending: Ending, look: Look,
+             dropped: str | None = None) -> dict[str, object]:
     """Write the outputs of ``session`` (finished) into ``folder``; return the summary (also ``session.json``).
+    ``dropped`` says which journal lines a recovery left out (a ``dropped`` key of the summary).
 
     Raises:
         PhysinkError: a file cannot be written (a full disk); what was written before stays valid.
     """
     out = OutputFolder(folder)
     scene, timeline = session.scene, session.timeline
-    write_session_outputs(out, scene, timeline, session.canvas, session.vocabulary_lines())
+    write_session_outputs(out, scene, timeline, session.canvas, session.vocabulary_lines(), session.demonstration)
     out.write(NARRATION, narration_lines(timeline, scene.names()))
     Export(scene, timeline, session.canvas, look).video(out.file(VIDEO))
     events = [] if timeline is None else [ev for ev in timeline.events if ev.type != "start"]
@@ -70,10 +72,12 @@ def finalise(folder: Path, session: Session, ending: Ending, look: Look) -> dict
         "bodies": sum(1 for c in scene.components.values() if isinstance(c, Body)),
         "components": len(scene.components),
         "events": len(events),
-        "labels": sorted({c.label for c in scene.components.values() if getattr(c, "label", None)}),
+        "labels": sorted(set(scene.labels().values())),
         "files": sorted({JOURNAL, SUMMARY, *(name for name in OUTPUTS if out.file(name).exists())}),
         "messages": len(session.messages),
     }
+    if dropped is not None:
+        summary["dropped"] = dropped
     out.write(SUMMARY, json.dumps(summary, sort_keys=True) + "\n")
     return summary
 
@@ -83,14 +87,15 @@ NICENESS = 10
 
 
 def finalise_journal(folder: Path, ending: Ending, look: Look) -> dict[str, object]:
-    """Replay the folder's journal (up to its last whole line) and `finalise` the session it gives.
+    """Replay the folder's journal (up to its last whole line, and up to its first malformed one: what is dropped
+    is said in the summary) and `finalise` the session it gives.
 
     Raises:
-        PhysinkError: the journal cannot be read (a torn header) or a file cannot be written.
+        PhysinkError: the journal's header cannot be read (torn or malformed) or a file cannot be written.
     """
-    journal = read_journal(folder / JOURNAL)
+    journal = read_journal(folder / JOURNAL, salvage=True)
     session = Session.from_header(journal.header).run(journal.entries)
-    return finalise(folder, session, ending, look)
+    return finalise(folder, session, ending, look, None if journal.dropped is None else str(journal.dropped))
 
 
 def child_command(folder: Path, ending: Ending, look: Look) -> list[str]:

@@ -34,7 +34,6 @@ from physink_tui.formats.journal.entries import (
     PenEntry,
 )
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.formats.journal.writer import JournalWriter
 from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
@@ -46,14 +45,16 @@ from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
 from physink_tui.kiosk.hot_zones import HotZones
 from physink_tui.kiosk.store import SessionStore
 from physink_tui.render.export import Look
-from physink_tui.session.runner import SessionRunner
-from physink_tui.session.session import Session
+from physink_tui.session.journaled import Journaled
+from physink_tui.session.modes.base import ModeName
 from physink_tui.session.source_pump import SourcePump
 
 MIN_FREE_BYTES = 50_000_000
 """A session starts only with this much free space in the output folder (a session's video is a few MB)."""
 POLL_S = 0.05
 """How often the main thread looks at the sessions' ends (seconds)."""
+HANDLED_WAIT_S = 5.0
+"""At most this long a mode press waits for the session to have handled the inputs before it (a tick or two)."""
 VIDEO_LOOK = Look(960, 600, 30)
 """The sessions' videos: smaller than an export's, so finalising keeps up with visitors."""
 ZONE_COMMANDS = {"undo": ("undo",), "redo": ("redo",), "clear": ("clear",), "play": ("play",), "stop": ("stop",),
@@ -77,13 +78,23 @@ class _Live:
     def __init__(self, folder: Path, header: JournalHeader, clock: Callable[[], float], start: float) -> None:
         self.folder = folder
         self.start = start  # the kiosk's clock when the session began
-        self.writer = JournalWriter.create(folder / JOURNAL, header)
-        self.session = Session.from_header(header)
-        self.session.journal = self.writer
-        self.runner: SessionRunner = SessionRunner(self.session, clock=clock)
-        self.mode = "sketch"
+        self.ended_at: float | None = None  # session time its end was decided at (its clock stops there)
+        self._kiosk_clock = clock
+        journaled = Journaled.create(header, folder / JOURNAL, clock=self.clock)
+        self.session, self.runner = journaled.session, journaled.runner
+        assert journaled.writer is not None  # (given a path)
+        self.writer = journaled.writer
         self.told_stopped = False
         self.runner.start()
+
+    def clock(self) -> float:
+        """Seconds since the session began by the kiosk's clock, standing still once its end is decided."""
+        return self.ended_at if self.ended_at is not None else self._kiosk_clock() - self.start
+
+    def end_now(self, at: float | None = None) -> None:
+        """Stop the session's clock now (or at session time ``at``): what arrives later is not its input."""
+        if self.ended_at is None:
+            self.ended_at = self.clock() if at is None else at
 
 
 class Kiosk:
@@ -114,6 +125,9 @@ class Kiosk:
         self._finishing: queue.Queue[tuple[Path, Ending] | None] = queue.Queue()
         self._finaliser = threading.Thread(target=self._finalise_queue, name="kiosk-finalise", daemon=True)
         self._full_disk_told = False
+        self._replay = False
+        self._capture_t = 0.0  # a replay's clock: the time of the capture's latest report
+        self._touched = False  # a pen touched the drawing area (a session began, or would have with room)
 
     # -- recovery ---------------------------------------------------------------------------------------------------
 
@@ -122,8 +136,19 @@ class Kiosk:
         count = 0
         for folder in self.store.unfinished():
             try:
-                journal = read_journal(folder / JOURNAL)
+                journal = read_journal(folder / JOURNAL, salvage=True)
+            except JournalError as exc:  # no header to replay it with: kept aside, not tried at every start
+                try:
+                    kept = self.store.set_aside(folder).name
+                except OSError as error:
+                    self.log(f"kiosk: cannot recover {folder.name}: {exc} (nor set it aside: {error.strerror})")
+                    continue
+                self.log(f"kiosk: cannot recover {folder.name}: {exc}; its journal is kept as {kept} and not tried "
+                         "again")
+                continue
+            try:
                 lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
+                lost += f"; {journal.dropped}" if journal.dropped is not None else ""
                 self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
                 summary = finalise_journal(folder, Ending("recovered", folder.name, recovered=True),
                                            self.settings.look)
@@ -142,12 +167,20 @@ class Kiosk:
 
         ``device`` is the HID tablet whose reports the source reads; None for a source of samples in tablet space
         (a serial tablet), which ``mapping`` maps onto the canvas after the hot zones had their look.
+
+        A replay's clock is the capture's own (the time of its latest report; ``clock`` is not used), so the
+        sessions it records are the same whatever pace the source plays it at: ``--speed`` changes only how long
+        the replay takes. Returns 1 when the pen never touched during a replay (nothing was recorded).
         """
         self._finaliser.start()
         self._controls = ControlFilter(device, self.zones, TipThresholds(header.tip_down, header.tip_up))
+        if replay:
+            self.use_capture_clock()
+            clock = self.capture_time
         self._header, self._clock, self._mapping = header, clock, mapping
         self._last_input = clock()
-        pump = SourcePump(source, self._entry, device=None if replay else device, on_ended=self._ended)
+        pump = SourcePump(source, self._entry, device=None if replay else device, on_ended=self._ended,
+                          keep_time=replay)
         what = "the capture" if replay else source.device_id if device is None else device.name or device.id
         self.log(f"kiosk: reading {what}; a session starts when the pen touches the tablet")
         pump.start()
@@ -162,7 +195,25 @@ class Kiosk:
             self._end("stopped" if self._stop.is_set() else "capture ended")
             self._finishing.put(None)
             self._finaliser.join()
+        if replay and not self._touched and not self._stop.is_set():
+            self.log("kiosk: the capture ended without a session: none of its reports is a pen touching the "
+                     "tablet's drawing area (nothing was recorded)")
+            return 1
         return 0
+
+    def use_capture_clock(self) -> None:
+        """From now on the kiosk's clock is a replayed capture's (`run` with ``replay`` does it; call it earlier so
+        the listening thread starts on that clock too)."""
+        self._replay = True
+        self._clock = self.capture_time
+
+    def capture_time(self) -> float:
+        """A replay's clock: the capture time of its latest report."""
+        return self._capture_t
+
+    def clock(self) -> float:
+        """The kiosk's clock (the capture's during a replay), for the listening thread."""
+        return self._clock()
 
     def stop(self) -> None:
         """End the current session (finalised) and the run; safe from a signal handler."""
@@ -224,15 +275,21 @@ class Kiosk:
 
     def _entry(self, entry: JournalEntry) -> None:
         with self._lock:
-            self._last_input = self._clock()
             live = self._live
+            if self._replay and isinstance(entry, HidEntry):
+                self._capture_t = max(self._capture_t, entry.t)
+                if live is not None and self._capture_t - self._last_input > self.settings.idle_s:
+                    live.end_now(self._last_input - live.start + self.settings.idle_s)  # idle, in capture time
+                    self._closing.append((live, "idle"))
+                    self._live = live = None
+            self._last_input = self._clock()
             if isinstance(entry, HidEntry):
                 verdict = self._controls.report(entry.data, self._clock())
             elif isinstance(entry, PenEntry) and self._mapping is not None:  # a sample in tablet space
                 verdict = self._controls.sample(PenSample(self._clock(), entry.x, entry.y, entry.p, entry.tip,
                                                           entry.range, entry.eraser, entry.b1, entry.b2, None, None, 0))
-                entry = replace(entry, **dict(zip(("x", "y"), self._mapping.to_canvas(entry.x, entry.y),
-                                                  strict=True)))
+                x, y = self._mapping.to_canvas(entry.x, entry.y)
+                entry = replace(entry, x=x, y=y)
             else:
                 if live is not None:
                     live.runner.submit(entry)
@@ -248,6 +305,7 @@ class Kiosk:
             if live is None:
                 if not verdict.touch_began:
                     return  # hovering before any session: nothing to record yet
+                self._touched = True
                 live = self._start()
                 if live is None:
                     return
@@ -257,14 +315,16 @@ class Kiosk:
         if live is None:
             return  # a button before the first touch: there is no session to act on
         if action == "end":  # detached at once: what the tablet sends next belongs to the next session
+            live.end_now()
             self._closing.append((live, ending))
             self._live = None
             return
-        if action == "mode":
-            action = "demo" if live.mode == "sketch" else "sketch"
+        if action == "mode":  # the mode the session's view shows once it has handled what came before the press
+            live.runner.wait_handled(HANDLED_WAIT_S)  # (a fast replay must not outrun it: the same at any speed)
+            view = live.runner.latest_view()
+            demonstrating = view is not None and view.mode == ModeName.DEMO
+            action = ModeName.SKETCH if demonstrating else ModeName.DEMO
         command = ZONE_COMMANDS[action]
-        if command[0] == "mode":
-            live.mode = command[1]
         live.runner.submit(CommandEntry(0.0, command[0], command[1:]))
         self.log(f"kiosk: {' '.join(command)}")
 
@@ -282,7 +342,7 @@ class Kiosk:
         try:
             folder = self.store.new_folder(started)
             start = self._clock()
-            self._live = _Live(folder, self._header, lambda: self._clock() - start, start)
+            self._live = _Live(folder, self._header, self._clock, start)
         except (OSError, JournalError) as exc:
             self.log(f"kiosk: cannot start a session in {self.store.root}: {exc}")
             return None
@@ -308,7 +368,8 @@ class Kiosk:
                          "kiosk next starts)")
                 continue
             self._indexed(folder, json.loads((folder / SUMMARY).read_text(encoding="utf-8")))
-            self.store.retire(self.settings.keep, self.settings.max_bytes, self._current_folder(), self.log)
+            # never the session just written (however small --max-disk is) nor the one being recorded
+            self.store.retire(self.settings.keep, self.settings.max_bytes, (folder, self._current_folder()), self.log)
 
     def _current_folder(self) -> Path | None:
         with self._lock:
@@ -316,5 +377,7 @@ class Kiosk:
 
     def _indexed(self, folder: Path, summary: dict[str, object]) -> None:
         self.store.index(summary)
+        files = summary["files"]
+        listed = ", ".join(map(str, files)) if isinstance(files, list) else str(files)
         self.log(f"kiosk: session {folder.name} written: {summary['bodies']} bodies, {summary['events']} events, "
-                 f"{', '.join(summary['files'])}")  # type: ignore[arg-type]
+                 f"{listed}")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import os
 import shutil
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from datetime import datetime
 from pathlib import Path
 
@@ -49,6 +49,13 @@ class SessionStore:
         folder.mkdir()
         return folder
 
+    def set_aside(self, folder: Path) -> Path:
+        """Renames an unfinished session's journal that cannot be read at all to ``journal.physink.jsonl.unreadable``
+        (the folder then holds no session: it is neither recovered again nor retired); returns the new path."""
+        target = folder / (JOURNAL + ".unreadable")
+        os.replace(folder / JOURNAL, target)
+        return target
+
     def sessions(self) -> list[Path]:
         """Every session folder (one with a journal), oldest first."""
         return sorted((p for p in self.root.iterdir() if p.is_dir() and (p / JOURNAL).exists()),
@@ -84,17 +91,21 @@ class SessionStore:
         self._append(summary)
         return True
 
-    def retire(self, keep: int | None, max_bytes: int | None, spare: Path | None = None,
+    def retire(self, keep: int | None, max_bytes: int | None, spare: Iterable[Path | None] = (),
                log: Callable[[str], None] = print) -> list[str]:
         """Remove the oldest finished sessions until at most ``keep`` remain and they take at most ``max_bytes``
-        (None: no limit); never ``spare`` (the session being recorded). Returns the names removed."""
-        done = [p for p in self.finished() if p != spare]
-        sizes = {p: _size(p) for p in done}
-        total = sum(sizes.values())
+        (None: no limit); never those in ``spare`` (the session just written, the one being recorded), which
+        count towards the limits all the same. Returns the names removed."""
+        spared = {p for p in spare if p is not None}
+        finished = self.finished()
+        sizes = {p: _size(p) for p in finished}
+        count, total = len(finished), sum(sizes.values())
+        removable = [p for p in finished if p not in spared]
         removed = []
-        while done and ((keep is not None and len(done) > keep) or (max_bytes is not None and total > max_bytes)):
-            oldest = done.pop(0)
+        while removable and ((keep is not None and count > keep) or (max_bytes is not None and total > max_bytes)):
+            oldest = removable.pop(0)
             shutil.rmtree(oldest, ignore_errors=True)
+            count -= 1
             total -= sizes[oldest]
             removed.append(oldest.name)
             self._append({"session": oldest.name, "retired": True})

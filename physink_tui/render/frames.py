@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from physink_tui.render.frame import ContactMarker, FrameContent, Point, TimeBar, Trail
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
+from physink_tui.session.modes.base import ModeName
 from physink_tui.session.view import SessionView
 from physink_tui.timeline.events import Timeline, TrajectoryPoint, event_label
 from physink_tui.timeline.tape import Tape
@@ -50,7 +51,7 @@ class Demonstration:
         self.duration = self.tape.duration
         names = scene.names()
         known = {id(track.trajectory): track for track in previous._tracks} if previous is not None else {}
-        self._tracks = tuple(
+        self._tracks: tuple[_Track, ...] = tuple(
             known[id(ev.trajectory)] if id(ev.trajectory) in known else _Track.of(ev.trajectory)
             for ev in timeline.events if ev.type == "movement" and len(ev.trajectory) >= 2)
         self._contacts = sorted(
@@ -133,9 +134,9 @@ def view_frame(view: SessionView, canvas: tuple[float, float]) -> FrameContent:
     mode the trails, contacts, narration and time bar of the timeline at its clock."""
     ink = (*view.ink, *view.pending)
     canvas = (float(canvas[0]), float(canvas[1]))
-    if view.mode != "demo" or view.timeline is None or not view.timeline.events:
+    if view.mode != ModeName.DEMO or view.timeline is None or not view.timeline.events:
         return FrameContent(view.scene, canvas, view.poses, ink,
-                            time_bar=TimeBar(view.clock, view.duration) if view.mode == "demo" else None)
+                            time_bar=TimeBar(view.clock, view.duration) if view.mode == ModeName.DEMO else None)
     demo = _demonstration(view.scene, view.timeline, canvas)
     t = min(max(view.clock, 0.0), demo.duration)
     return FrameContent(

@@ -10,10 +10,19 @@ from physink_tui.timeline.events import Timeline
 
 @dataclass(frozen=True, slots=True)
 class Document:
-    """What the user has made: the sketch and, once demonstrated, its timeline."""
+    """What the user has made: the sketch and, once demonstrated, its timeline.
+
+    Attributes:
+        scene: the sketch.
+        timeline: the demonstrated timeline, or an adopted simulation's, or None.
+        demonstration: when ``timeline`` is an adopted simulation, the demonstrated timeline it was found for
+            (kept for comparing them again); None otherwise. Editing the sketch keeps it; demonstrating again
+            drops it.
+    """
 
     scene: Scene = field(default_factory=Scene)
     timeline: Timeline | None = None
+    demonstration: Timeline | None = None
 
 
 @dataclass

@@ -11,6 +11,8 @@ from physink_tui.input.speech.dictionary import guessed_words, unspeakable_words
 from physink_tui.scene.components import Body, Rope, Scene, Spring
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session.history import Document
+from physink_tui.session.modes.base import ModeName
+from physink_tui.session.outcomes import labelled
 from physink_tui.session.speech_target import PenWatch
 
 
@@ -28,7 +30,7 @@ class LabelHost(Protocol):
     def scene(self) -> Scene: ...
 
     @property
-    def mode(self) -> str: ...
+    def mode(self) -> ModeName: ...
 
     @property
     def last_created(self) -> str | None: ...
@@ -40,7 +42,7 @@ class LabelHost(Protocol):
     def stroke_pending(self) -> bool:
         """A stroke has ended but the sketch has not yet decided what it makes (an X's first half)."""
 
-    def tell(self, text: str, t: float | None = None) -> None: ...
+    def tell(self, text: str, t: float | None = None, kind: str = "note") -> None: ...
 
     def commit(self, document: Document, description: str) -> None: ...
 
@@ -54,7 +56,7 @@ def spoken_label(host: LabelHost, text: str, t: float) -> None:
         label(host, host.selected, text)
     elif (recent := watch.recent(t)) is not None and recent in host.scene.components:
         label(host, recent, text)
-    elif (watch.drawing and host.mode == "sketch") or host.stroke_pending:
+    elif (watch.drawing and host.mode == ModeName.SKETCH) or host.stroke_pending:
         watch.wait(text, t)
     elif watch.hover is not None and (under := body_under(host, *watch.hover)) is not None:
         label(host, under, text)
@@ -82,8 +84,10 @@ def label(host: LabelHost, target: str, text: str) -> None:
     if not isinstance(component, Body | Rope | Spring):
         host.tell(f"label {text!r}: joints take no labels")
         return
-    scene = host.scene.update(replace(component, label=text))
-    host.commit(Document(scene, host.document.timeline), f"label {component_id} {text}")
+    before = host.scene
+    scene = before.update(replace(component, label=text))
+    host.commit(replace(host.document, scene=scene), f"label {component_id} {text}")
+    host.tell(labelled(before, component_id, text), kind="outcome")
     unsayable = unspeakable_words(text)
     if unsayable:
         host.tell(f"label {text!r}: {', '.join(map(repr, unsayable))} cannot be said (not in the speech "

@@ -39,12 +39,12 @@ from physink_tui.input.sources import RawReport, SourceEnded
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.session import labelling, simulation
-from physink_tui.session.command_handling import SessionCommands
+from physink_tui.session.command_handling import Commands
 from physink_tui.session.history import Document, History
-from physink_tui.session.modes.base import Mode
+from physink_tui.session.modes.base import Mode, ModeName
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import SketchMode
-from physink_tui.session.simulation import SearchResult
+from physink_tui.session.simulation import SearchResult, SessionInput
 from physink_tui.session.speech_target import PenWatch
 from physink_tui.session.view import Message, SessionView, snapshot
 from physink_tui.sim.defaults import DEFAULT_BUDGET
@@ -52,7 +52,7 @@ from physink_tui.timeline.events import Timeline
 from physink_tui.timeline.phrases import DEFAULT_VOCABULARY, Vocabulary, parse_vocabulary
 
 
-class Session(SessionCommands):
+class Session:
     """One session's state (see the module docstring). Build with `from_header`; feed with `handle` and
     `advance`; look with `view`; end with `finish`.
 
@@ -87,8 +87,8 @@ class Session(SessionCommands):
         self.sketch = SketchMode(self)
         self.current: Mode = self.sketch
         self._searched: tuple[Document, SearchResult] | None = None  # the last SIMULATE and its document
-        self._offered: simulation.Searched | None = None  # the search a driver ran for the entry being handled
         self.watch = PenWatch()  # drawing, hovering and what strokes made: whom a spoken label names
+        self._commands = Commands(self)
 
     @classmethod
     def from_header(cls, header: JournalHeader, document: Document | None = None) -> Session:
@@ -119,6 +119,11 @@ class Session(SessionCommands):
         return self.current.timeline()
 
     @property
+    def demonstration(self) -> Timeline | None:
+        """When the timeline is an adopted simulation, the demonstrated timeline it was found for; else None."""
+        return self.document.demonstration
+
+    @property
     def vocabulary(self) -> Vocabulary:
         """The words phrases may use: the default ones and the user's."""
         return DEFAULT_VOCABULARY.extended(self.words)
@@ -132,8 +137,8 @@ class Session(SessionCommands):
         return vocabulary_lines(self.words)
 
     @property
-    def mode(self) -> str:
-        """``sketch``, ``adjust`` or ``demo``."""
+    def mode(self) -> ModeName:
+        """The mode the session is in."""
         return self.current.name
 
     @property
@@ -161,7 +166,7 @@ class Session(SessionCommands):
 
     # -- input ---------------------------------------------------------------------------------------------
 
-    def handle(self, entry: JournalEntry) -> None:
+    def handle(self, entry: SessionInput) -> None:
         """Consume one input: time first advances to its ``t``; then it is acted on (or refused, with a message);
         then it is journaled. An entry the journal cannot hold (a value out of range, time going backwards) is
         refused before it is acted on, so a replay of the journal sees what the session saw. Nothing an input can
@@ -176,17 +181,14 @@ class Session(SessionCommands):
             self.tell(f"input refused: {refusal}")
             return
         errors = len(self.errors)
-        self._offered = offered
         try:
             self.advance(entry.t)
-            self._act(entry)
+            self._act(entry, offered)
         except PhysinkError as exc:  # input the session cannot use (an unknown device, a bad descriptor)
             self.tell(str(exc))
         except Exception as exc:  # a bug: recorded and told; the session and its journal carry on
             self.errors.append("".join(traceback.format_exception(exc)))
             self.tell(f"internal error handling the input at {entry.t:g} s: {exc!r} (reported; carrying on)")
-        finally:
-            self._offered = None
         self._forget_stale_search()
         self.revision += 1
         self._journal(entry)
@@ -225,34 +227,49 @@ class Session(SessionCommands):
         if t is not None:
             self.advance(t)
         if not self.ended:
-            self._end()
+            self._commands.end()
+            self._forget_stale_search()
             if self.journal is not None:
                 self._journal(CommandEntry(self.t, "end", ()))
         if self.journal is not None:
             self.journal.close()
             self.journal = None
 
-    def tell(self, text: str, t: float | None = None) -> None:
-        self.messages.append(Message(self.t if t is None else t, text))
+    def tell(self, text: str, t: float | None = None, kind: str = "note") -> None:
+        self.messages.append(Message(self.t if t is None else t, text, kind))
 
     # -- what modes may do (`modes.base.Host`) ----------------------------------------------------------------
 
     def commit(self, document: Document, description: str) -> None:
         self.history.push(document, description)
-        self._forget_gone()
+        self.forget_gone()
 
     def amend(self, document: Document) -> None:
         self.history.amend(document)
-        self._forget_gone()
+        self.forget_gone()
 
     def select(self, component_id: str | None) -> None:
         self.selected = component_id
         if component_id is not None:
             self.tell(f"selected {self.scene.called(component_id)}")
 
+    # -- what commands may do (`command_handling.CommandHost`) ------------------------------------------------
+
+    def forget_gone(self) -> None:
+        """A selection or last stroke whose component is gone (erased, undone) is forgotten."""
+        components = self.scene.components
+        if self.selected not in components:
+            self.selected = None
+        if self.sketch.last_created not in components:
+            self.sketch.last_created = None
+
+    def found(self, result: SearchResult) -> None:
+        """SIMULATE gave ``result`` for the document now: shown until the document changes."""
+        self._searched = (self.document, result)
+
     # -- acting on entries ---------------------------------------------------------------------------------
 
-    def _act(self, entry: JournalEntry) -> None:
+    def _act(self, entry: JournalEntry, offered: simulation.Searched | None) -> None:
         if isinstance(entry, HidEntry):
             self._gestures(self.pen.handle(RawReport(entry.t, entry.data, entry.dev)))
         elif isinstance(entry, PenEntry):
@@ -260,7 +277,7 @@ class Session(SessionCommands):
                                entry.b1, entry.b2, None, None, 0)
             self._gestures(self.pen.feed_canvas_sample(PEN_DEVICE, sample))
         elif isinstance(entry, CommandEntry):
-            self._command(entry)
+            self._commands.handle(entry, offered)
         elif isinstance(entry, SayEntry):
             self._say(entry)
         elif isinstance(entry, DeviceEntry):  # a tablet plugged in during the session, or plugged back in
@@ -282,8 +299,8 @@ class Session(SessionCommands):
         if self.current.finished:
             self.current = self.sketch
         self._note_created(before, g.t)
-        if self.watch.waiting is not None and not self.watch.drawing and self.sketch.pending is None:
-            waiting = self.watch.take_waiting()  # the stroke said to be labelled ended without making anything
+        waiting = None if self.watch.drawing or self.sketch.pending is not None else self.watch.take_waiting()
+        if waiting is not None:  # the stroke said to be labelled ended without making anything
             self.tell(f"label {waiting.text!r}: the stroke being drawn made no component to label")
 
     def _note_created(self, before: str | None, t: float) -> None:
@@ -310,14 +327,6 @@ class Session(SessionCommands):
             self.current.narrate(entry.text, self.vocabulary, entry.t)
         elif entry.text.strip():
             self.tell(f"heard {entry.text!r}; only 'label <name>' is understood while sketching")
-
-    def _forget_gone(self) -> None:
-        """A selection or last stroke whose component is gone (erased, undone) is forgotten."""
-        components = self.scene.components
-        if self.selected not in components:
-            self.selected = None
-        if self.sketch.last_created not in components:
-            self.sketch.last_created = None
 
     def _refusal(self, entry: JournalEntry) -> str | None:
         """Why ``entry`` cannot be taken (what a journal could not hold, or time going backwards), or None."""

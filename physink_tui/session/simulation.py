@@ -9,7 +9,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from physink_tui.errors import SimulationError
-from physink_tui.formats.journal.entries import CommandEntry
+from physink_tui.formats.journal.entries import CommandEntry, JournalEntry
 from physink_tui.scene.components import BACKGROUND, Scene
 from physink_tui.session.history import Document
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
@@ -17,6 +17,7 @@ from physink_tui.sim.evaluate import Problem, Score, compare_rollout, evaluate_p
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.search import Search
 from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,6 +37,8 @@ class SearchResult:
         reasons: what the best candidate does not reproduce (A = demonstration, B = simulation), first difference
             first; empty when found.
         exploded: candidates discarded because their physics blew up.
+        afterwards: what the best candidate's simulation does after the last demonstrated event, left out of the
+            comparison (`up_to_demonstrated.afterwards`), or None.
     """
 
     found: bool
@@ -48,6 +51,7 @@ class SearchResult:
     timeline: Timeline
     reasons: tuple[str, ...]
     exploded: int = 0
+    afterwards: str | None = None
 
 
 Evaluate = Callable[[Problem, Parameters], Score]
@@ -82,9 +86,16 @@ class Searched:
 
     def fits(self, document: Document, seed: int, budget: int) -> bool:
         """Whether ``result`` is what ``simulate seed budget`` gives on ``document``."""
-        return ((seed, budget) == (self.seed, self.budget)
-                and (document.scene is self.scene or document.scene == self.scene)
-                and (document.timeline is self.timeline or document.timeline == self.timeline))
+        return (seed, budget) == (self.seed, self.budget) and self.searched(document.scene, document.timeline)
+
+    def searched(self, scene: Scene, timeline: Timeline | None) -> bool:
+        """Whether ``scene`` and ``timeline`` are the document searched (the same objects, or equal ones)."""
+        return ((scene is self.scene or scene == self.scene)
+                and (timeline is self.timeline or timeline == self.timeline))
+
+
+SessionInput = JournalEntry | Searched
+"""What a session takes: a journal entry, or a ``simulate`` whose search a driver ran (`Searched`)."""
 
 
 def with_defaults(entry: CommandEntry, budget: int = DEFAULT_BUDGET) -> CommandEntry:
@@ -155,18 +166,21 @@ def run(scene: Scene, timeline: Timeline, canvas: tuple[float, float], seed: int
         timeline=rollout.timeline,
         reasons=() if found else tuple(comparison.reasons),
         exploded=search.exploded,
+        afterwards=afterwards(comparison, rollout.timeline, problem.scene.names()),
     )
 
 
 def summary(result: SearchResult) -> str:
-    """The outcome in one message."""
+    """The outcome in one message, naming the rule compared by (`up_to_demonstrated`: what ``physink equiv DEMO
+    SIM --up-to-demonstrated`` says of the same two timelines)."""
     rollouts = f"{result.rollouts} rollout{'' if result.rollouts == 1 else 's'}"
+    after = f"; {result.afterwards}" if result.afterwards else ""
     if result.found:
-        return (f"simulation found in {rollouts} (qualitative distance "
-                f"{result.qualitative_distance:g}, quantitative {result.quantitative_distance:.1f})")
+        return (f"simulation found in {rollouts} (equivalent {RULE}: qualitative distance "
+                f"{result.qualitative_distance:g}, quantitative {result.quantitative_distance:.1f}){after}")
     text = f"no simulation reproduces the demonstration within {rollouts}"
     if result.rollouts == result.exploded:
         return text + ": every candidate's physics blew up"
     first = f"; first difference: {result.reasons[0]}" if result.reasons else ""
-    return (f"{text} (qualitative distance {result.qualitative_distance:g}, quantitative "
-            f"{result.quantitative_distance:.1f}){first}")
+    return (f"{text} (best: not equivalent {RULE}, qualitative distance {result.qualitative_distance:g}, "
+            f"quantitative {result.quantitative_distance:.1f}){first}")

@@ -3,7 +3,8 @@
 A `SourcePump` hands its source a queue whose ``put`` converts and submits on the source's own thread, so an
 item is stamped the moment the source has it:
 
-- `RawReport` -> `HidEntry` (the report's own time is dropped: the runner stamps arrivals);
+- `RawReport` -> `HidEntry` (the report's own time is dropped: the runner stamps arrivals; with ``keep_time``
+  the entry carries it, for a driver whose clock is the source's own, the kiosk replaying a capture);
 - `SampleReady` -> `PenEntry`, in canvas coordinates: given a `TabletMapping` (a serial tablet, whose samples
   are in tablet space) the pump maps them with it, without one the samples are taken as canvas ones already
   (mouse, scripts); positions and pressure are clamped into [0, 1];
@@ -41,10 +42,12 @@ class SourcePump:
             `DeviceEntry` when the device comes back after an error; None for sample sources (or to announce
             nothing, in which case a returning device's reports simply carry on).
         on_ended: called on the source's thread with every `SourceEnded`.
+        keep_time: a `HidEntry` carries its report's own time (else 0.0; the runner stamps it either way).
     """
 
     def __init__(self, source: PenSource, submit: Submit, *, mapping: TabletMapping | None = None,
-                 device: JournalDevice | None = None, on_ended: Callable[[SourceEnded], None] | None = None) -> None:
+                 device: JournalDevice | None = None, on_ended: Callable[[SourceEnded], None] | None = None,
+                 keep_time: bool = False) -> None:
         if device is not None and device.id != source.device_id:
             raise ValueError(f"device {device.id!r} is announced for source {source.device_id!r}: the ids must match")
         self.source = source
@@ -52,6 +55,7 @@ class SourcePump:
         self._mapping = mapping
         self._device = device
         self._on_ended = on_ended
+        self._keep_time = keep_time
         self._lock = threading.Lock()  # keeps a device announcement and the report after it in order
         self._lost = False  # the device ended with an error: announce it again before its next report
         self._last_pen: PenEntry | None = None
@@ -71,7 +75,7 @@ class SourcePump:
                 if self._lost and self._device is not None:
                     self._submit(DeviceEntry(0.0, (self._device,)))
                 self._lost = False
-                self._submit(HidEntry(0.0, item.device, item.data))
+                self._submit(HidEntry(item.t if self._keep_time else 0.0, item.device, item.data))
             elif isinstance(item, SampleReady):
                 self._lost = False
                 self._last_pen = self._pen_entry(item.sample)
@@ -100,7 +104,7 @@ def _unit(value: float) -> float:
     return min(1.0, max(0.0, float(value)))
 
 
-class _SubmittingQueue(queue.Queue):
+class _SubmittingQueue(queue.Queue[SourceItem]):
     """The queue a source puts its items on: ``put`` hands each to the pump at once; nothing is ever queued."""
 
     def __init__(self, take: Callable[[SourceItem], None]) -> None:

@@ -11,7 +11,7 @@ from physink_tui.input.pen.gestures import StrokePoint
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
 from physink_tui.session.history import History
-from physink_tui.session.modes.base import Mode
+from physink_tui.session.modes.base import Mode, ModeName
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import PendingStroke
 from physink_tui.session.simulation import SearchResult
@@ -22,10 +22,18 @@ Stroke = tuple[tuple[float, float], ...]
 
 @dataclass(frozen=True, slots=True)
 class Message:
-    """Something the user should be told, at input time ``t``."""
+    """Something the user should be told, at input time ``t``.
+
+    Attributes:
+        t: input time (seconds since the session start).
+        text: what to tell, one line.
+        kind: ``outcome`` for what a stroke or a label made of the sketch ("circle → body b3", "erased box b4 — u
+            to undo"), one per stroke; ``note`` for everything else (repairs, refusals, odd cases).
+    """
 
     t: float
     text: str
+    kind: str = "note"
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,7 +43,7 @@ class SessionView:
     Attributes:
         revision: grows whenever the session changed (a view drawn at the same revision is up to date).
         t: the input time reached (seconds since the session start).
-        mode: ``sketch``, ``adjust`` or ``demo``.
+        mode: the mode the session is in.
         scene: the document's scene.
         poses: where each body is shown now (the mode's world: moved while adjusting or demonstrating).
         ink: strokes being drawn now, canvas units, one per pen down.
@@ -51,11 +59,13 @@ class SessionView:
             changed).
         pens: for each input device, its pen state (`PenState` value, e.g. ``"touching"``) and the pressure
             (0..1) of the stroke being drawn, 0 when none (the status bar).
+        demonstration: when ``timeline`` is an adopted simulation, the demonstration it was found for (kept in the
+            project so the two can be compared again); None otherwise, and while a new take is being recorded.
     """
 
     revision: int
     t: float
-    mode: str
+    mode: ModeName
     scene: Scene
     poses: Mapping[str, Pose]
     ink: tuple[Stroke, ...]
@@ -70,6 +80,7 @@ class SessionView:
     messages: tuple[Message, ...]
     search: SearchResult | None = None
     pens: Mapping[str, tuple[str, float]] = field(default_factory=lambda: MappingProxyType({}))
+    demonstration: Timeline | None = None
 
 
 def snapshot(revision: int, t: float, mode: Mode, scene: Scene, canvas: tuple[float, float],
@@ -99,4 +110,5 @@ def snapshot(revision: int, t: float, mode: Mode, scene: Scene, canvas: tuple[fl
         messages=tuple(messages),
         search=search,
         pens=MappingProxyType(dict(pens or {})),
+        demonstration=None if demo is not None and demo.has_take else history.current.demonstration,
     )

@@ -21,8 +21,8 @@ import numpy as np
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
 from physink_tui.sim.legs import legs
-from physink_tui.sim.parameters import Parameters
-from physink_tui.sim.rollout import EXPLODED, RolloutResult, rollout_from, settled_state
+from physink_tui.sim.parameters import Parameters, Structure
+from physink_tui.sim.rollout import RolloutResult, Settled, Stop, rollout_from, settled_state
 from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prefixes, compare_prepared, prepare
 from physink_tui.timeline.events import Event, Timeline
 
@@ -114,7 +114,7 @@ def make_problem(scene: Scene, timeline: Timeline, canvas: tuple[float, float],
 
 
 _prepared: dict[int, tuple[Prepared, tuple[frozenset[str], ...]]] = {}
-_settled: OrderedDict[tuple, object] = OrderedDict()
+_settled: OrderedDict[tuple[int, Structure], Settled] = OrderedDict()
 
 
 def _demonstration(problem: Problem) -> tuple[Prepared, tuple[frozenset[str], ...]]:
@@ -153,7 +153,7 @@ def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:
         result = simulate(problem, parameters)
     except SimulationError:
         return EXPLODED_SCORE
-    if result.stopped_because == EXPLODED:
+    if result.stopped_because == Stop.EXPLODED:
         return EXPLODED_SCORE
     demonstrated, by_leg = _demonstration(problem)
     simulated = prepare(result.timeline, problem.scene.names())

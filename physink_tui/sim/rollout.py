@@ -34,10 +34,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from enum import StrEnum
 
 from physink_tui.scene.components import Body, Scene
 from physink_tui.scene.interpretation.body_shapes import body_geometry
-from physink_tui.scene.physics.contacts import ContactRecord, touching_record
+from physink_tui.scene.physics.contacts import ContactRecord
 from physink_tui.scene.physics.speed import MIN_SPEED_LIMIT, SPEED_LIMIT
 from physink_tui.scene.physics.state import REST, Motion, WorldState
 from physink_tui.scene.physics.stepping import Frame, step_and_observe
@@ -79,10 +80,19 @@ the start event would explain). Two steps already give the same rollout to 1e-6;
 EXPLODED_SPEED = 1.0e5
 """Canvas units per second (about 75 canvas heights a second) above which the physics has blown up."""
 
-AT_REST = "at rest"
-OFF_CANVAS = "off canvas"
-MAX_SECONDS = "max seconds"
-EXPLODED = "exploded"
+
+
+class Stop(StrEnum):
+    """Why a rollout stopped (a string, so it reads the same in JSON and in messages)."""
+
+    AT_REST = "at rest"
+    """Every body still, or gone off the canvas, none gone."""
+    OFF_CANVAS = "off canvas"
+    """The same, at least one body gone."""
+    MAX_SECONDS = "max seconds"
+    """The time allowed ran out first."""
+    EXPLODED = "exploded"
+    """NaN or a speed above `EXPLODED_SPEED`: discard the candidate."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,8 +102,7 @@ class RolloutResult:
     Attributes:
         timeline: the simulated timeline (movements still open when it stopped are closed at the last step).
         steps: physics steps recorded (the settling steps are not counted).
-        stopped_because: `AT_REST` (every body still, or gone off the canvas), `OFF_CANVAS` (the same, at least one
-            body gone), `MAX_SECONDS` or `EXPLODED` (NaN or a speed above `EXPLODED_SPEED`: discard the candidate).
+        stopped_because: why it stopped (`Stop`).
         flagged: one sentence per body that moved more than `FLUSH_DISTANCE` while settling, and per body and kind
             the first time it went faster than demo mode's speed limit or than could pass through the thinnest body
             in one step; empty for a trustworthy rollout of a scene drawn at rest.
@@ -101,7 +110,7 @@ class RolloutResult:
 
     timeline: Timeline
     steps: int
-    stopped_because: str
+    stopped_because: Stop
     flagged: tuple[str, ...] = ()
 
 
@@ -143,7 +152,7 @@ def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Paramet
 
 def _settle(scene: Scene, canvas: tuple[float, float], held: set[str]) -> World:
     world = World.from_scene(scene, gravity=GRAVITY)
-    world.space.damping = SETTLE_DAMPING
+    world.damping = SETTLE_DAMPING
     poses = {b: world.pose(b) for b in sorted(held)}
     for body, pose in poses.items():
         world.follow(body, pose, REST)
@@ -188,7 +197,7 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     applied = apply(scene, parameters)
     world = World.from_state(applied, settled.state, warm=WARM_STEPS)
     start_scene = world.to_scene(applied)
-    recorder = recorder_for(start_scene, canvas, world.dt)
+    recorder = recorder_for(start_scene, canvas, world.dt, drawn=applied)
     bodies = tuple(b.id for b in applied.bodies())
     movable = [b for b in bodies if not applied.is_fixed(b)]
     came_flush = _came_flush(world, applied, movable)
@@ -205,15 +214,15 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     flagged = {(body, "settle"): f"the {names.get(body, body)} would not stay where it is drawn (it moved {d:.0f} "
                                  "units under gravity): held there until touched" for body, d in settled.held}
     max_steps = int(max_seconds / world.dt + 1e-9)
-    stopped, still, steps = MAX_SECONDS, 0, 0
+    stopped, still, steps = Stop.MAX_SECONDS, 0, 0
     while steps < max_steps:
-        asleep = {b for b in sleepers if world.pymunk_body(b).is_sleeping}
+        asleep = {b for b in sleepers if world.is_asleep(b)}
         sleepers = asleep
         frame = step_and_observe(world, bodies, welded)
         steps += 1
         t = round(steps * world.dt, 6)
         if any(_blown(frame.motions[body]) for body in movable):
-            stopped = EXPLODED
+            stopped = Stop.EXPLODED
             break
         contacts = frame.contacts
         if asleep:  # pairs that rested on each other asleep touch again as they wake: no new contact
@@ -237,7 +246,7 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
         world.substeps = min(math.ceil(need), MAX_SUBSTEPS)
         still = 0 if moving else still + 1
         if still >= REST_STEPS:  # the recorder's own stop never fires for a body falling off the canvas
-            stopped = OFF_CANVAS if gone else AT_REST
+            stopped = Stop.OFF_CANVAS if gone else Stop.AT_REST
             break
     timeline = recorder.finish()
     return RolloutResult(timeline, steps, stopped, tuple(flagged.values()))
@@ -268,7 +277,7 @@ def _set_moving(world: World, frame: Frame, came_flush: set[tuple[str, str]]) ->
             came_flush.discard((a, b))
         elif any(math.hypot(m.vx, m.vy) > MOVING_SPEED for m in (frame.motions[a], frame.motions[b])):
             came_flush.discard((a, b))
-            record = touching_record(frame.step, world.pymunk_body(a), world.pymunk_body(b), a, b)
+            record = world.contact_between(a, b, frame.step)
             if record is not None:
                 out.append(record)
     return tuple(out)
@@ -303,15 +312,10 @@ def _inside(world: World, body: str, bounds: tuple[float, float, float, float]) 
     return _inside_xy(x, y, bounds)
 
 
-def _half_size(world: World, body: str) -> float:
-    shapes = world.shapes_of(body)
-    return min((min(s.bb.right - s.bb.left, s.bb.top - s.bb.bottom) / 2 for s in shapes), default=math.inf)
-
-
 def _speed_limits(world: World, bodies: tuple[str, ...], dt: float) -> dict[str, tuple[float, float]]:
     """Per body: demo mode's speed limit for it (`speed.limit_speed`) and the speed at which it could pass through
     the thinnest body of the scene in one step (its own half-size plus the thinnest one's, per step)."""
-    halves = {b: _half_size(world, b) for b in bodies}
+    halves = {b: world.half_size(b) for b in bodies}
     thinnest = min(halves.values(), default=math.inf)
     return {b: (max(SPEED_LIMIT * halves[b] / dt, MIN_SPEED_LIMIT), (halves[b] + thinnest) / dt) for b in bodies}
 

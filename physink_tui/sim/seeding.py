@@ -23,8 +23,9 @@ from __future__ import annotations
 import math
 
 from physink_tui.scene.components import MATERIALS, Body, Point, Scene, Spring, material_class
+from physink_tui.scene.physics.build import body_area
 from physink_tui.scene.physics.world import GRAVITY
-from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters, body_area
+from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters
 from physink_tui.timeline.events import Event, Timeline
 
 DENSITY = 1.0

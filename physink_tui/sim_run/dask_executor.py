@@ -16,6 +16,7 @@ one thread each and as many processes as cores (``dask worker ADDRESS --nworkers
 
 from __future__ import annotations
 
+import asyncio
 import threading
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -34,6 +35,48 @@ def _call(fn: Callable[..., Any], *args: Any) -> Any:
     """On a worker: ``fn(*args)``, one call at a time in this process."""
     with _one_at_a_time:
         return fn(*args)
+
+
+def _probe(distributed: Any, address: str, seconds: float) -> None:
+    """Connects to ``address`` and asks the scheduler who it is, every wait bounded by ``seconds`` in all
+    (connecting, the comm handshake, the first answer), on a thread of its own: a port that accepts and never
+    answers, or answers something that is not Dask, is one `SimulationError`, and no half-made client is left
+    behind to complain when it is collected."""
+    outcome: list[BaseException | object] = []
+    reached: list[bool] = []  # the TCP connection was made: what follows is the handshake and the answer
+
+    async def ask() -> object:
+        host, port = distributed.comm.get_address_host_port(address)
+        _, writer = await asyncio.open_connection(host, port)  # the bare connection first, to tell the waits apart
+        writer.close()
+        reached.append(True)
+        comm = await distributed.comm.connect(address, timeout=seconds)
+        try:
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    def run() -> None:
+        try:
+            outcome.append(asyncio.run(asyncio.wait_for(ask(), seconds)))
+        except BaseException as exc:  # anything at all: it is reported below, in the caller's thread
+            outcome.append(exc)
+
+    thread = threading.Thread(target=run, name="dask-probe", daemon=True)
+    thread.start()
+    thread.join(seconds + 1.0)
+    reply = outcome[0] if outcome else TimeoutError()
+    if isinstance(reply, OSError | TimeoutError | asyncio.TimeoutError) and reached:
+        raise SimulationError(f"no Dask scheduler answered at {address!r} within {seconds:g} s (something accepted "
+                              "the connection and said nothing a scheduler says)")
+    if isinstance(reply, OSError | TimeoutError | asyncio.TimeoutError):
+        cause = f" ({reply.strerror or reply})" if isinstance(reply, OSError) and str(reply) else ""
+        raise SimulationError(f"cannot reach the Dask scheduler at {address!r} within {seconds:g} s{cause}")
+    if isinstance(reply, BaseException) or not (isinstance(reply, dict) and reply.get("type") == "Scheduler"):
+        what = f"{type(reply).__name__}" if isinstance(reply, BaseException) else "an answer that is not a scheduler's"
+        raise SimulationError(f"no Dask scheduler at {address!r}: something answered there, but not as a Dask "
+                              f"scheduler ({what})")
 
 
 class DaskExecutor:
@@ -61,6 +104,8 @@ class DaskExecutor:
                 raise SimulationError(f"{address!r} is not a Dask scheduler address like tcp://HOST:8786 "
                                       f"({exc})") from None
         seconds = CONNECT_SECONDS if timeout is None else timeout
+        if address is not None:
+            _probe(distributed, address, seconds)
         try:
             self._client = distributed.Client(address if address is not None else cluster, timeout=seconds,
                                               set_as_default=False)
@@ -72,6 +117,12 @@ class DaskExecutor:
                                   f"{type(exc).__name__}: {exc}") from None
         self._shared: tuple[Any, Any] | None = None  # (value, its future on the cluster)
         self._pending: list[Any] = []
+        try:  # the first answer: a worker to run the rollouts (without one, gathering would wait for ever)
+            self._client.wait_for_workers(1, timeout=seconds)
+        except Exception:
+            self._client.close()
+            raise SimulationError(f"the Dask scheduler at {self.address!r} has no worker (waited {seconds:g} s); "
+                                  f"start some: dask worker {self.address} --nworkers -1 --nthreads 1") from None
 
     def map(self, fn: Callable[[Any], Any], items: Sequence[Any]) -> list[Any]:
         return self._run([fn] * len(items), items)

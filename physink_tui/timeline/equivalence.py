@@ -81,6 +81,9 @@ class Comparison:
             then those in B only, then the differences of matched events, each group in comparison order.
         matches: ``(event id in A, event id in B)`` per matched pair, in A's comparison order (starts first).
         only_a, only_b: ids of the events without a counterpart, in comparison order.
+        after_b: with ``simulation=True``, B's events left out of the comparison, in comparison order: what the
+            simulation does after its last event matched with the demonstration, and its bounces coming to rest
+            (`afterwards` says it in words); empty otherwise.
     """
 
     equivalent: bool
@@ -90,6 +93,7 @@ class Comparison:
     matches: tuple[tuple[str, str], ...]
     only_a: tuple[str, ...]
     only_b: tuple[str, ...]
+    after_b: tuple[str, ...] = ()
 
 
 def _align(sa: Sequence[str], sb: Sequence[str]) -> list[tuple[int, int]]:
@@ -220,11 +224,14 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
     only_a = [i for i in (*pa.starts, *pa.others) if to_b[i] < 0]
     only_b = [j for j in (*pb.starts, *pb.others) if to_a[j] < 0]
     goes_on: dict[int, int] = {}  # B's movements split off by a bounce coming to rest -> the one they go on with
+    after_b: list[int] = []
     if simulation and only_b:
         resting = coming_to_rest(pa, pb, to_b, only_b)
         goes_on = continued(pb, resting)
         until = max((ev_b[ib].t0 for _, ib in pairs if ev_b[ib].type != "start"), default=-1.0)
-        only_b = [j for j in only_b if j not in resting and _before(ev_b[j], until)]
+        kept = [j for j in only_b if j not in resting and _before(ev_b[j], until)]
+        after_b = [j for j in only_b if j not in kept]
+        only_b = kept
     ledger = _Ledger([(i, UNMATCHED_EVENT_COST) for i in only_a],
                      [(ev_b[j], UNMATCHED_EVENT_COST) for j in only_b], [],
                      {ia: ev_b[ib].t0 for ia, ib in pairs})
@@ -255,8 +262,7 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
             rows_a.append(pa.rows[ia])
             rows_b.append(pb.rows[ib])
             row_owner.append(ia)
-        elif ea.point is not None and ev_b[ib].point is not None:
-            pta, ptb = ea.point, ev_b[ib].point
+        elif (pta := ea.point) is not None and (ptb := ev_b[ib].point) is not None:
             ledger.distances.append((ia, ((pta[0] - ptb[0]) ** 2 + (pta[1] - ptb[1]) ** 2) ** 0.5))
     if rows_a:
         gap = pa.paths[rows_a] - pb.paths[rows_b]
@@ -272,6 +278,7 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
         matches=tuple((ev_a[ia].id, ev_b[ib].id) for ia, ib in pairs),
         only_a=tuple(ev_a[i].id for i in only_a),
         only_b=tuple(ev_b[j].id for j in only_b),
+        after_b=tuple(ev_b[j].id for j in after_b),
     )
     return comparison, ledger
 

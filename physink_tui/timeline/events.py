@@ -60,6 +60,9 @@ class Event:
         point: contact only: the exact contact point in canvas units, when known.
         tracks: movement only: ``(body id, frames)`` for each body attached to the moving one (the knife on the
             lever's rope), so that playback can move them too; the moving body's own frames are ``trajectory``.
+        in_contact: start only: the pairs of movable bodies (of different mechanisms) in contact when the
+            demonstration began, each pair's ids sorted and the pairs sorted (`begun_in_contact`); separating one
+            makes an end-contact (thesis figure 3-9).
     """
 
     id: str
@@ -74,6 +77,7 @@ class Event:
     trajectory: tuple[TrajectoryPoint, ...] = ()
     point: tuple[float, float] | None = None
     tracks: tuple[tuple[str, tuple[TrajectoryPoint, ...]], ...] = ()
+    in_contact: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         if self.type not in EVENT_TYPES:
@@ -95,6 +99,8 @@ class Event:
         if self.type != "movement" and (self.regions or self.trajectory or self.tracks):
             raise TimelineError(f"event {self.id!r} is a {self.type}; only movements have regions and trajectories",
                                 self.id)
+        if self.type != "start" and self.in_contact:
+            raise TimelineError(f"event {self.id!r} is a {self.type}; only the start names pairs in contact", self.id)
         if self.id in self.causes:
             raise TimelineError(f"event {self.id!r} names itself as a cause; events cannot cause themselves", self.id)
 
@@ -228,7 +234,8 @@ def default_label(event: Event, names: Mapping[str, str]) -> str:
     """
     parts = [_name(c, names) for c in event.components]
     if event.type == "start":
-        return "Start"
+        touching = [_join([_name(c, names) for c in pair]) for pair in event.in_contact]
+        return f"Start ({'; '.join(touching)} in contact)" if touching else "Start"
     if event.type == "movement":
         if not parts:
             return "Movement"

@@ -12,10 +12,12 @@ the body the pen holds, the bodies playing back their recording), it keeps one o
   nothing else has touched since, still pushes it in the same contact (the pen catching up with what it pushed:
   the egg pushed through the paddles, thesis 2.3.3, touches each paddle once); a contact with a body that is
   playing back its recording splits that body's recorded movement (concurrent movement, thesis 4.1);
-- movable bodies that begin in contact and come apart make an end-contact, which causes a movement of each
-  (thesis figure 3-9); a body that starts moving by itself is explained by the moving body it touches (a contact),
-  else by a recent separation (an end-contact, the cup dispenser), else it continues its latest movement, else the
-  start explains it;
+- movable bodies that begin in contact are named by the start; they are in that contact until they come apart,
+  which makes an end-contact caused by the movement that parted them and causing a movement of each (thesis
+  figure 3-9), or until one drives into the other, which is a contact (`begun_in_contact`); their other touches
+  are no events; a body that starts moving by itself is explained by the moving body it touches (a contact; only
+  a jostle when that body began in contact with it and does not drive into it), else by a recent separation (an
+  end-contact, the cup dispenser), else it continues its latest movement, else the start explains it;
 - movements record every frame of the moving body (and of the bodies tied to it) and the regions of other bodies
   the moving body passes through (`qualitative.regions_at`); a group still for `STILL_FRAMES` ends its movement.
 
@@ -30,19 +32,18 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from physink_tui.scene.physics.contacts import ContactRecord
+from physink_tui.timeline.begun_in_contact import drives_into, facing, parted
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.movement_record import OpenMovement, Regions
 from physink_tui.timeline.observation import Observation
-from physink_tui.timeline.qualitative import BodyOutline, contact_sides, separated
+from physink_tui.timeline.qualitative import BodyOutline, contact_sides
 from physink_tui.timeline.touches import Touches, pushed_again
 
 MOVING_SPEED = 5.0
 """Canvas units per second above which a body counts as moving (its centre, or its rim when it spins)."""
 STILL_FRAMES = 12
 """Frames below `MOVING_SPEED` after which a movement ends."""
-SEPARATION_GAP = 4.0
-"""Canvas units between two bodies that began in contact after which they have come apart."""
 RECENT_SEPARATION = 1.0
 """Seconds after two bodies stop touching during which a body starting to move by itself was released by it."""
 
@@ -76,6 +77,7 @@ class Recorder:
     _ended_pairs: set[frozenset[str]] = field(default_factory=set)
     _touching: frozenset[frozenset[str]] = frozenset()
     _separated_at: dict[frozenset[str], float] = field(default_factory=dict)
+    _began_gap: dict[frozenset[str], float] = field(default_factory=dict)
     _start: str | None = None
     _grabbed: str | None = None
     _group: dict[str, str] = field(default_factory=dict)
@@ -205,7 +207,8 @@ class Recorder:
     def _start_event(self, t: float) -> str:
         if self._start is None:
             self._start = self._new_id()
-            self.timeline = self.timeline.add(Event(self._start, "start", (), (), t, t))
+            in_contact = tuple(sorted((a, b) for a, b in map(sorted, self.initial_pairs)))
+            self.timeline = self.timeline.add(Event(self._start, "start", (), (), t, t, in_contact=in_contact))
         return self._start
 
     def _begin(self, t: float, body: str, obs: Observation, *, grabbed: bool) -> None:
@@ -215,16 +218,24 @@ class Recorder:
             self._open[key].still = 0
             return
         if not grabbed:
+            jostled = False
             for pair in sorted(obs.touching, key=sorted):
                 if body in pair and len(pair) == 2:
                     (other,) = pair - {body}
                     if self._group.get(other, other) != key and self._cause_of(other, t, obs) is not None:
+                        begun = self._begun_touching(pair)
+                        across = facing(self.outlines[other], obs.poses[other], obs.poses[body]) if begun else None
+                        if begun and not self._drives(obs, other, body, across):
+                            jostled = True  # its partner from the start moves on without pushing it
+                            continue
                         ongoing = self._touches.going_on(pair)
                         if ongoing is not None and ongoing in self.timeline:
                             self._moved_on(t, body, self.timeline.event(ongoing))  # in a contact going on
-                        else:
-                            self._add_contact(obs, body, other, None, None)  # pushed by a moving body
+                        else:  # pushed by a moving body (across the contact they began in, when they did)
+                            self._add_contact(obs, body, other, None, across and (-across[0], -across[1]))
                         return
+            if jostled:
+                return
         latest = self._latest_movement(body)
         latest_t = latest.t1 if latest is not None else -math.inf
         for pair, when in sorted(self._separated_at.items(), key=lambda item: (-item[1], sorted(item[0]))):
@@ -257,6 +268,17 @@ class Recorder:
             return ev.id if ev is not None else None
         return None
 
+    def _begun_touching(self, pair: frozenset[str]) -> bool:
+        """Whether ``pair`` began in contact and is in that contact still (no contact or end-contact since)."""
+        return pair in self.initial_pairs and pair not in self._ended_pairs
+
+    def _drives(self, obs: Observation, mover: str, other: str, normal: tuple[float, float] | None) -> bool:
+        """Whether ``mover``, moving, drives into ``other`` (`begun_in_contact.drives_into`)."""
+        pm, po = obs.poses.get(mover), obs.poses.get(other)
+        if pm is None or po is None or self._cause_of(mover, obs.t, obs) is None:
+            return False
+        return drives_into(pm, po, normal)
+
     def _latest_movement(self, body: str) -> Event | None:
         """The latest movement of ``body``'s mechanism (open or ended), which a new grab continues."""
         return covering(self.timeline, self.group_bodies(body), math.inf)
@@ -272,6 +294,9 @@ class Recorder:
             return  # the contact recorded goes on (see touches.py)
         if a in obs.playing and b in obs.playing:
             return  # both replaying what was recorded
+        if self._begun_touching(pair) and not (self._drives(obs, a, b, contact.normal)
+                                               or self._drives(obs, b, a, (-contact.normal[0], -contact.normal[1]))):
+            return  # the contact they began in, going on
         again = None if obs.grabbed is None else pushed_again(self.timeline, pair, obs.grabbed, self.group_bodies)
         if again is not None:
             self._touches.recorded(pair, obs.t, again)
@@ -335,16 +360,11 @@ class Recorder:
                 self._open_movement(obs.t, body, (cause,))
 
     def _check_initial_pairs(self, obs: Observation) -> None:
-        if not self.initial_pairs:
-            return
         for pair in sorted(self.initial_pairs - self._ended_pairs, key=sorted):
             a, b = sorted(pair)
-            if self._cause_of(a, obs.t, obs) is None and self._cause_of(b, obs.t, obs) is None:
-                continue  # neither moves: they cannot have come apart
-            pa, pb = obs.poses.get(a), obs.poses.get(b)
-            if pa is not None and pb is not None and separated(self.outlines[a], pa, self.outlines[b], pb,
-                                                               SEPARATION_GAP):
-                self._add_end_contact(obs, a, b)
+            moving = self._cause_of(a, obs.t, obs) is not None or self._cause_of(b, obs.t, obs) is not None
+            if (moving or pair not in self._began_gap) and parted(self.outlines, pair, obs.poses, self._began_gap):
+                self._add_end_contact(obs, a, b)  # (neither moving, they cannot have come apart)
 
     # -- movements -------------------------------------------------------------------------------------------
 

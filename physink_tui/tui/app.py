@@ -7,9 +7,10 @@ main screen, asks before losing work; the controls are the main screen's, the st
 from __future__ import annotations
 
 import gc
-import json
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from importlib import resources
 from pathlib import Path
 
 from textual.app import App
@@ -26,6 +27,10 @@ from physink_tui.tui.live import LiveSession
 from physink_tui.tui.pacing import FramePacer
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
+from physink_tui.tui.widgets.bars import StatusBar
+
+STYLESHEET = "physink.tcss"
+"""The panel's styles: package data of ``physink_tui.tui`` (pyproject.toml's package-data lists it)."""
 
 
 @dataclass
@@ -47,6 +52,8 @@ class TuiOptions:
         microphone: the sound input push-to-talk listens on (default: the microphone; tests give a recording).
         graphics, cell: how the scene is drawn (`physink_tui.tui.graphics`: ``halfblocks``, ``kitty`` or ``sixel``)
             and a cell's size in pixels (for the graphics protocols).
+        clock: the live session's clock, seconds on a monotonic scale (tests pass one they can hold still while
+            a Pilot draws, so a stroke's timing is the test's, not the loaded machine's).
     """
 
     header: JournalHeader | None = None
@@ -69,6 +76,7 @@ class TuiOptions:
     cell: tuple[int, int] = DEFAULT_CELL
     title: str = "PhysInk"
     notes: list[str] = field(default_factory=list)
+    clock: Callable[[], float] = time.monotonic
 
 
 class ViewUpdated(Message):
@@ -94,7 +102,8 @@ class RunnerFailed(Message):
 class PhysinkApp(App[None]):
     """The control panel. The live session starts on mount (after the recovery question, if any)."""
 
-    CSS_PATH = "physink.tcss"
+    CSS = resources.files(__package__).joinpath(STYLESHEET).read_text("utf-8")
+    """The styles, read as package data (a path beside this file is not there in every installation)."""
     TITLE = "PhysInk"
     ENABLE_COMMAND_PALETTE = False
 
@@ -110,6 +119,8 @@ class PhysinkApp(App[None]):
         self.pacer = FramePacer()
         """When views are drawn (all of them while the UI keeps up)."""
         self._waiting: SessionView | None = None  # a view passed over, drawn by `_catch_up`
+        self.failure: BaseException | None = None
+        """A bug that stopped part of the app (the session's worker, a background job): quitting then exits 1."""
 
     # -- start -----------------------------------------------------------------------------------------------
 
@@ -130,7 +141,8 @@ class PhysinkApp(App[None]):
             found = storage.unfinished_journals(self.options.journal_dir or storage.sessions_dir())
         if found:
             path, journal = found[0]
-            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n"
+            dropped = "" if journal.dropped is None else f"\nIts journal is damaged: {journal.dropped}.\n"
+            question = (f"A session did not finish: {path.name} ({len(journal.entries)} inputs).\n{dropped}"
                         "Recover it (replay it here and carry on)?")
 
             def answered(yes: bool | None) -> None:
@@ -155,10 +167,10 @@ class PhysinkApp(App[None]):
                 self.push_screen(ErrorModal("Not journaling", f"cannot make the journal folder: {exc}"))
         try:
             live = LiveSession(header, journal_path=path, prior=prior or options.prior, max_fps=options.max_fps,
-                               on_error=lambda exc: self.post_message(RunnerFailed(exc)))
+                               on_error=lambda exc: self.post_message(RunnerFailed(exc)), clock=options.clock)
         except PhysinkError as exc:
             self.push_screen(ErrorModal("Cannot start the session", str(exc)))
-            live = LiveSession(header, journal_path=None, max_fps=options.max_fps)
+            live = LiveSession(header, journal_path=None, max_fps=options.max_fps, clock=options.clock)
         self.live = live
         last = [-1]
 
@@ -180,7 +192,7 @@ class PhysinkApp(App[None]):
         if options.tablet:
             self.main.watch_tablet(options.device, options.serial)
         else:
-            self.main.query_one("#status").set(device="no tablet (mouse only)")
+            self.main.query_one("#status", StatusBar).set(device="no tablet (mouse only)")
         if options.project:
             self.main.open_project(options.project)
         if options.entries:
@@ -211,7 +223,12 @@ class PhysinkApp(App[None]):
             self.main.show(view)
 
     def on_runner_failed(self, message: RunnerFailed) -> None:
-        self.push_screen(ErrorModal("Internal error", f"the session stopped: {message.error!r}"))
+        self.failed(message.error, "the session stopped")
+
+    def failed(self, error: BaseException, what: str) -> None:
+        """A bug stopped ``what``: said in a dialog; the app exits with status 1 when the user quits."""
+        self.failure = self.failure or error
+        self.push_screen(ErrorModal("Internal error", f"{what}: {error!r}\nQuitting exits with status 1."))
 
     @property
     def unsaved(self) -> bool:
@@ -253,7 +270,7 @@ class PhysinkApp(App[None]):
 
     def _quit_now(self) -> None:
         self.stop_live()
-        self.exit()
+        self.exit(return_code=1 if self.failure is not None else 0)
 
     def stop_live(self) -> None:
         """Stop the sources and the runner (the journal gets its end); an empty journal is removed."""
@@ -277,7 +294,3 @@ def make_app(options: TuiOptions | None = None) -> PhysinkApp:
     """The app for ``options`` (the CLI and the tests build it the same way)."""
     return PhysinkApp(options)
 
-
-def project_object(text: str) -> dict:
-    """A project file's JSON object, to embed in a ``load`` line (checked by the session as it loads)."""
-    return json.loads(text)

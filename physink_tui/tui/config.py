@@ -12,10 +12,13 @@ import json
 import os
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import Any
 
 from physink_tui.errors import PhysinkError
+from physink_tui.formats import json_checks as checks
 from physink_tui.formats.atomic_write import write_text_atomic
 from physink_tui.formats.journal.entries import JournalHeader
+from physink_tui.formats.json_checks import Place
 from physink_tui.input.pen.mapping import TabletMapping, mapping_to_header
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.tui import storage
@@ -68,7 +71,7 @@ class Config:
         return self
 
     def mapping(self, canvas: tuple[float, float] = DEFAULT_CANVAS) -> TabletMapping:
-        return TabletMapping(canvas_width=canvas[0], canvas_height=canvas[1], area=tuple(self.area),
+        return TabletMapping(canvas_width=canvas[0], canvas_height=canvas[1], area=self.area,
                              rotation=self.rotation, left_handed=self.left_handed, keep_aspect=self.keep_aspect,
                              display_tablet=self.display_tablet)
 
@@ -107,16 +110,35 @@ def load_config(path: str | os.PathLike[str] | None = None) -> Config:
     unknown = sorted(set(data) - set(known))
     if unknown:
         raise PhysinkError(f"{target}: unknown setting {unknown[0]!r} (known: {', '.join(known)})")
-    values = dict(data)
-    if "area" in values:
-        area = values["area"]
-        if not (isinstance(area, list) and len(area) == 4):
-            raise PhysinkError(f"{target}: area: expected [x0, y0, x1, y1], got {area!r}")
-        values["area"] = tuple(area)
+    values = _checked(dict(data), Place(str(target), PhysinkError))
     try:
         return Config(**values).check()
     except PhysinkError as exc:
         raise PhysinkError(f"{target}: {exc}") from None
+
+
+def _checked(values: dict[str, Any], where: Place) -> dict[str, Any]:
+    """Each setting's type and range, named by its key (``area[2]: expected a number in [0, 1], got "x"``);
+    how settings go together (x0 < x1...) is `Config.check`'s."""
+    for key in ("left_handed", "keep_aspect", "display_tablet"):
+        if key in values:
+            checks.flag(where, key, values[key])
+    if "theme" in values:
+        checks.one_of(where, "theme", values["theme"], THEMES)
+    if "display" in values:
+        checks.text(where, "display", values["display"], 'a monitor\'s name (e.g. "DP-1") or ""')
+    rotation = values.get("rotation", 0)
+    if isinstance(rotation, bool | float) or rotation not in (0, 90, 180, 270):
+        raise where.bad("rotation", "0, 90, 180 or 270", rotation)
+    for key in ("tip_down", "tip_up"):
+        if key in values:
+            values[key] = checks.unit(where, key, values[key])
+    if "area" in values:
+        area = values["area"]
+        if not (isinstance(area, list) and len(area) == 4):
+            raise where.bad("area", "[x0, y0, x1, y1], four numbers in [0, 1]", area)
+        values["area"] = tuple(checks.unit(where, f"area[{i}]", v) for i, v in enumerate(area))
+    return values
 
 
 def save_config(config: Config, path: str | os.PathLike[str] | None = None) -> Path:

@@ -14,14 +14,14 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import Any
 
 from physink_tui.formats.journal.entries import CommandEntry, JournalEntry, JournalHeader
-from physink_tui.formats.journal.writer import JournalWriter
+from physink_tui.input.replay_clock import ReplayClock
 from physink_tui.input.scripted_sources import ProgrammaticPenSource
-from physink_tui.session.runner import SessionRunner
-from physink_tui.session.session import Session
+from physink_tui.session.journaled import Journaled
+from physink_tui.session.simulation import SessionInput
 from physink_tui.session.source_pump import SourcePump
-from physink_tui.session.view import SessionView
 
 MOUSE = "mouse"
 """The mouse pen's source id (its samples become ``pen`` lines, which name no device)."""
@@ -37,20 +37,27 @@ class JournalFeed:
     """Submits recorded entries to a runner when they are due (``speed`` times real time), from a thread.
 
     ``end`` entries are left out: the live session goes on after the feed. ``on_done`` is called on the feed's
-    thread when the last entry was submitted (or the feed was stopped).
+    thread when the last entry was submitted (or the feed was stopped). Given the runner's ``clock`` (a
+    `ReplayClock`), it paces by it and holds it at each entry's due time until the entry is submitted: each entry
+    is stamped with its recorded time (scaled by ``speed``), however late a loaded machine gets to it.
     """
 
     def __init__(self, entries: Sequence[JournalEntry], submit: Callable[[JournalEntry], object], *,
-                 speed: float = 1.0, on_done: Callable[[], None] | None = None) -> None:
+                 speed: float = 1.0, on_done: Callable[[], object] | None = None,
+                 clock: ReplayClock | None = None) -> None:
         if not speed > 0:
             raise ValueError(f"speed: expected > 0, got {speed!r}")
         self.entries = [e for e in entries if not (isinstance(e, CommandEntry) and e.name == "end")]
         self._submit = submit
         self._speed = speed
         self._on_done = on_done
+        self._clock = clock
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self.submitted = 0
+        self.last_t: float | None = None
+        """The stamp of the last entry submitted (what ``submit`` returned), once one was: the session has handled
+        all the feed gave it when its view's ``t`` is at least this."""
 
     def start(self) -> None:
         self._thread = threading.Thread(target=self._run, name="journal-feed", daemon=True)
@@ -66,18 +73,38 @@ class JournalFeed:
             self._thread.join()
 
     def _run(self) -> None:
-        start = time.monotonic()
-        first = self.entries[0].t if self.entries else 0.0
-        for entry in self.entries:
-            delay = (entry.t - first) / self._speed - (time.monotonic() - start)
-            if delay > 0 and self._stop.wait(delay):
-                break
-            if self._stop.is_set():
-                break
-            self._submit(entry)
-            self.submitted += 1
+        if self._clock is not None:
+            self._run_on_clock(self._clock)
+        else:
+            start = time.monotonic()
+            first = self.entries[0].t if self.entries else 0.0
+            for entry in self.entries:
+                delay = (entry.t - first) / self._speed - (time.monotonic() - start)
+                if delay > 0 and self._stop.wait(delay):
+                    break
+                if self._stop.is_set():
+                    break
+                self._took(self._submit(entry))
         if self._on_done is not None:
             self._on_done()
+
+    def _run_on_clock(self, clock: ReplayClock) -> None:
+        origin = clock.running()
+        first = self.entries[0].t if self.entries else 0.0
+        try:
+            for entry in self.entries:
+                due = origin + (entry.t - first) / self._speed
+                clock.hold_at(due)
+                if clock.wait_until(due, self._stop):
+                    break
+                self._took(self._submit(entry))
+        finally:
+            clock.release()
+
+    def _took(self, stamped: object) -> None:
+        self.submitted += 1
+        if isinstance(stamped, JournalEntry):
+            self.last_t = stamped.t
 
 
 class LiveSession:
@@ -89,20 +116,20 @@ class LiveSession:
         journal_path: where the session journals (a new file), or None for no journal (tests).
         prior: entries handled at once before the runner starts (a recovered journal), journaled again.
         max_fps: views published a second at most.
+        clock: the runner's clock (seconds on a monotonic scale).
     """
 
     def __init__(self, header: JournalHeader, *, journal_path: Path | None = None,
                  prior: Sequence[JournalEntry] = (), max_fps: float = 30.0,
-                 on_error: Callable[[BaseException], None] | None = None) -> None:
+                 on_error: Callable[[BaseException], object] | None = None,
+                 clock: Callable[[], float] = time.monotonic) -> None:
         self.header = header
-        self.session = Session.from_header(header)
         self.journal_path = journal_path
-        if journal_path is not None:
-            self.session.journal = JournalWriter.create(journal_path, header)
-        for entry in prior:
-            if not (isinstance(entry, CommandEntry) and entry.name == "end"):
-                self.session.handle(entry)
-        self.runner: SessionRunner[SessionView] = SessionRunner(self.session, max_fps=max_fps, on_error=on_error)
+        self.clock = ReplayClock(clock)
+        """The runner's clock: ``clock`` itself, except that a replay holds it at each entry's time (`JournalFeed`)."""
+        journaled = Journaled.create(header, journal_path, prior=prior, clock=self.clock, max_fps=max_fps,
+                                     on_error=on_error)
+        self.session, self.runner = journaled.session, journaled.runner
         self.mouse = ProgrammaticPenSource(MOUSE)
         self.mouse_pump = SourcePump(self.mouse, self.runner.submit)
         self.feed: JournalFeed | None = None
@@ -118,19 +145,19 @@ class LiveSession:
         self.runner.start()
         self.mouse_pump.start()
 
-    def submit(self, entry: JournalEntry) -> JournalEntry | None:
+    def submit(self, entry: SessionInput) -> SessionInput | None:
         return self.runner.submit(entry)
 
-    def command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
+    def command(self, name: str, *args: str | float, project: dict[str, Any] | None = None) -> SessionInput | None:
         """Submit a command (a key or a button)."""
         return self.runner.submit(CommandEntry(0.0, name, tuple(args), project))
 
     def replay(self, entries: Sequence[JournalEntry], *, speed: float = 1.0,
-               on_done: Callable[[], None] | None = None) -> JournalFeed:
+               on_done: Callable[[], object] | None = None) -> JournalFeed:
         """Feed recorded entries at ``speed`` times real time (one feed at a time)."""
         if self.feed is not None:
             self.feed.stop()
-        self.feed = JournalFeed(entries, self.runner.submit, speed=speed, on_done=on_done)
+        self.feed = JournalFeed(entries, self.runner.submit, speed=speed, on_done=on_done, clock=self.clock)
         self.feed.start()
         return self.feed
 

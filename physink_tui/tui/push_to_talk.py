@@ -13,6 +13,7 @@ from physink_tui.input.pen.state import PenState
 from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener, Utterance
 from physink_tui.input.speech.microphone import MicrophoneListener, StreamFactory
+from physink_tui.input.speech.recogniser import Recogniser
 from physink_tui.session.runner import SessionRunner
 
 BUTTON_STATES = frozenset({PenState.HOVERING_BUTTON.value, PenState.TOUCHING_BUTTON.value})
@@ -38,14 +39,15 @@ class PushToTalk:
         recogniser: makes the recogniser on the first use (loading pocketsphinx's model takes a moment).
     """
 
-    def __init__(self, runner: SessionRunner, status: Callable[[str], None], stream: StreamFactory | None = None,
-                 recogniser: Callable[[], object] = make_recogniser) -> None:
+    def __init__(self, runner: SessionRunner, status: Callable[[str], object], stream: StreamFactory | None = None,
+                 recogniser: Callable[[], Recogniser] = make_recogniser) -> None:
         self.runner = runner
         self.status = status
         self._stream = stream
         self._make_recogniser = recogniser
         self._microphone: MicrophoneListener | None = None
         self._lock = threading.Lock()  # the key and the button each start a worker: one toggles at a time
+        self._telling = threading.Lock()  # "listening" is told before anything heard on the listening thread
         self._by_button = False
         self.button_pressed = False
         """Whether the pen's barrel button is held, as last seen (set by the UI thread; `follow_button` acts on it,
@@ -82,17 +84,18 @@ class PushToTalk:
             self._microphone.stop()  # hears the utterance under way first
             self.status(f'speech: off (last heard "{self.last_heard}")' if self.last_heard else "speech: off")
             return
-        try:
-            if self._microphone is None:
-                listener = Listener(self._make_recogniser())  # type: ignore[arg-type]
-                self._microphone = MicrophoneListener(listener, self._heard, clock=self.runner.now,
-                                                      stream=self._stream)
-            self._microphone.listener.set_words(labels)
-            self._microphone.start()
-        except PhysinkError as exc:  # no PortAudio, no microphone, no model
-            self.status(f"speech: {exc}")
-            return
-        self.status(f"speech: listening ({how_to_stop})")
+        with self._telling:  # what the listening thread hears waits until "listening" has been told
+            try:
+                if self._microphone is None:
+                    listener = Listener(self._make_recogniser())
+                    self._microphone = MicrophoneListener(listener, self._heard, clock=self.runner.now,
+                                                          stream=self._stream)
+                self._microphone.listener.set_words(labels)
+                self._microphone.start()
+            except PhysinkError as exc:  # no PortAudio, no microphone, no model
+                self.status(f"speech: {exc}")
+                return
+            self.status(f"speech: listening ({how_to_stop})")
 
     def stop(self) -> None:
         """Stop listening, if listening (the session is ending)."""
@@ -101,6 +104,10 @@ class PushToTalk:
             self._microphone.stop()
 
     def _heard(self, utterance: Utterance) -> None:
+        with self._telling:
+            self._tell_heard(utterance)
+
+    def _tell_heard(self, utterance: Utterance) -> None:
         if utterance.command is None:
             self.status(f"speech: not understood ({utterance.rejected})")
             return

@@ -2,14 +2,16 @@
 
 Every TUI session journals to ``$XDG_DATA_HOME/physink/sessions/`` (default ``~/.local/share/physink/sessions/``),
 one ``YYYYmmdd-HHMMSS-PID.physink.jsonl`` per session, from its first input. A journal whose last line is not
-``end`` was left by a session that did not finish (a crash, a killed terminal): the TUI offers to recover it,
-then renames it ``….physink.jsonl.recovered`` so it is offered once. Reading and replaying are the journal
-reader's and the session's.
+``end`` was left by a session that did not finish (a crash, a killed terminal): the TUI offers to recover it
+(every line before a malformed one, saying what is dropped, as the kiosk does), then renames it
+``….physink.jsonl.recovered`` so it is offered once. Reading and replaying are the journal reader's and the
+session's.
 """
 
 from __future__ import annotations
 
 import os
+import stat
 import time
 from pathlib import Path
 
@@ -74,15 +76,29 @@ def unfinished_journals(folder: Path | None = None, exclude: Path | None = None,
     if not folder.is_dir():
         return []
     found = []
-    for path in sorted(folder.glob(f"*{SUFFIX}"), key=lambda p: p.stat().st_mtime, reverse=True)[:limit]:
+    for path, _ in sorted(_journals(folder), key=lambda pair: pair[1], reverse=True)[:limit]:
         if exclude is not None and path.resolve() == exclude.resolve():
             continue
         try:
-            journal = read_journal(path)
-        except JournalError:
-            continue
+            journal = read_journal(path, salvage=True)  # the lines before a malformed one are still worth having
+        except (JournalError, OSError):
+            continue  # no header to replay it with, or gone meanwhile
         if journal.entries and not finished(journal):
             found.append((path, journal))
+    return found
+
+
+def _journals(folder: Path) -> list[tuple[Path, float]]:
+    """The journal files in ``folder`` with their modification times; a dangling symlink or a file that vanished
+    meanwhile is left out, and so is anything that is not a regular file."""
+    found = []
+    for path in folder.glob(f"*{SUFFIX}"):
+        try:
+            st = path.stat()
+        except OSError:
+            continue
+        if stat.S_ISREG(st.st_mode):
+            found.append((path, st.st_mtime))
     return found
 
 

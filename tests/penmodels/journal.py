@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 import random
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from penmodels.hurried import HurriedPen, PenPoint, touching
 from penmodels.shapes import CANVAS, Shape, group_scenario_strokes
@@ -84,3 +84,19 @@ def write_hurried_journal(steps: Sequence, seed: int, path: str | os.PathLike[st
     ``physink replay PATH --out DIR`` or open in the TUI."""
     entries, _ = hurried_drawing(steps, seed)
     write_journal(path, header(), entries)
+
+
+def demonstration_entries(scenario, seed: int) -> list[JournalEntry]:
+    """A `scenarios.thesis.Scenario` drawn and then demonstrated by the hurried pen seeded ``seed``: its drawing,
+    ``mode demo`` after the last drawing step, the demonstration, and ``mode sketch`` `settle_s` after it."""
+    steps = list(scenario.steps)
+    last = steps[-1]
+    steps[-1] = replace(last, commands=(*last.commands, ("mode", ("demo",))))
+    entries, _ = hurried_drawing((*steps, *scenario.demo), seed)
+    entries.append(CommandEntry(round(entries[-1].t + scenario.settle_s, 6), "mode", ("sketch",)))
+    return entries
+
+
+def write_hurried_demonstration(scenario, seed: int, path: str | os.PathLike[str]) -> None:
+    """Write `demonstration_entries` as a journal at ``path`` (which must not exist), for ``physink replay``."""
+    write_journal(path, header(), demonstration_entries(scenario, seed))

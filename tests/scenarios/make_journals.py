@@ -1,5 +1,6 @@
 """Records the thesis scenarios (``thesis.py``) and the demonstrations on the ball-and-platforms machine
-(``bouncing.py``) with the virtual pen into ``tests/journals/<name>.physink.jsonl``.
+(``bouncing.py``) with the virtual pen into ``tests/journals/<name>.physink.jsonl``, and the demonstrations kept
+from earlier drawings (``restored.py``) into ``tests/journals/restored/``.
 
 Run ``python tests/scenarios/make_journals.py`` after changing a drawing, the virtual pen or the journal
 format; the tests check that the stored journals are exactly what this makes. A journal is never
@@ -19,13 +20,17 @@ from physink_tui.session.session import Session
 
 try:
     from scenarios.bouncing import all_scenarios as bouncing_scenarios
+    from scenarios.restored import restored_scenarios
     from scenarios.thesis import MAPPING, Scenario, all_scenarios
 except ModuleNotFoundError:  # run as a script: the tests folder is not on the path
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
     from scenarios.bouncing import all_scenarios as bouncing_scenarios
+    from scenarios.restored import restored_scenarios
     from scenarios.thesis import MAPPING, Scenario, all_scenarios
 
 JOURNALS = Path(__file__).resolve().parents[1] / "journals"
+RESTORED = JOURNALS / "restored"
+"""Demonstrations kept from earlier drawings (`scenarios.restored`), apart from the portfolio's journals."""
 SUFFIX = ".physink.jsonl"
 
 
@@ -54,6 +59,12 @@ def main() -> int:
     JOURNALS.mkdir(parents=True, exist_ok=True)
     for scenario in (*all_scenarios(), *bouncing_scenarios()):
         path = journal_path(scenario)
+        path.unlink(missing_ok=True)
+        write_scenario_journal(scenario, path)
+        print(f"{path}: {path.stat().st_size} bytes, {len(scenario.steps)} strokes")
+    RESTORED.mkdir(parents=True, exist_ok=True)
+    for scenario in restored_scenarios():
+        path = journal_path(scenario, RESTORED)
         path.unlink(missing_ok=True)
         write_scenario_journal(scenario, path)
         print(f"{path}: {path.stat().st_size} bytes, {len(scenario.steps)} strokes")

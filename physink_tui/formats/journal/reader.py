@@ -3,7 +3,8 @@
 A UTF-8 byte order mark before the header is skipped. A last line that is not complete JSON (the process or
 the machine died while writing it) is not an error: everything before it is returned and its line number is
 reported as `Journal.truncated`. A malformed complete line anywhere raises `JournalError` naming the path, the
-line and the key. Blank lines are skipped.
+line and the key, except when salvaging (recovering a crashed session: the kiosk, the TUI): then every line
+before it is kept and `Journal.dropped` says which lines were left out and why. Blank lines are skipped.
 """
 
 from __future__ import annotations
@@ -55,6 +56,7 @@ class Journal:
         warnings: one message per unknown key, which was ignored (``line 5: unknown key "tilt" ignored``).
         truncated: the 1-based line number of an incomplete last line (cut off mid-write, not returned), or
             None when the file ends with a whole line.
+        dropped: when salvaged, what was left out from the first malformed line on; else None.
     """
 
     path: str
@@ -62,18 +64,33 @@ class Journal:
     entries: tuple[JournalEntry, ...]
     warnings: tuple[str, ...] = ()
     truncated: int | None = None
+    dropped: Dropped | None = None
 
 
-def read_journal(path: str | os.PathLike[str]) -> Journal:
-    """Read the whole journal at ``path``.
+@dataclass(frozen=True, slots=True)
+class Dropped:
+    """The lines a salvaging read left out: from ``line`` (1-based, the first malformed one) to the end, ``lines``
+    of them, and why the first was refused (``reason``, the `JournalError` message without the path)."""
+
+    line: int
+    lines: int
+    reason: str
+
+    def __str__(self) -> str:
+        rest = f" and the {self.lines - 1} after it" if self.lines > 1 else ""
+        return f"dropped line {self.line}{rest} ({self.reason})"
+
+
+def read_journal(path: str | os.PathLike[str], *, salvage: bool = False) -> Journal:
+    """Read the whole journal at ``path``; with ``salvage``, up to its first malformed line (`Journal.dropped`).
 
     Raises:
-        JournalError: the file cannot be read, has no complete header, or has a malformed complete line
-            (``<path>: line 12: key "t": expected a number >= the previous t 3.5, got 3.2``).
+        JournalError: the file cannot be read, has no complete header, or (unless salvaging) has a malformed
+            complete line (``<path>: line 12: key "t": expected a number >= the previous t 3.5, got 3.2``).
     """
-    with iter_journal(path) as reader:
+    with JournalReader(path, salvage=True) if salvage else iter_journal(path) as reader:
         entries = tuple(reader)
-    return Journal(reader.path, reader.header, entries, tuple(reader.warnings), reader.truncated)
+    return Journal(reader.path, reader.header, entries, tuple(reader.warnings), reader.truncated, reader.dropped)
 
 
 def iter_journal(path: str | os.PathLike[str]) -> JournalReader:
@@ -107,10 +124,12 @@ class JournalReader:
         truncated: line number of an incomplete last line, set when the iteration reaches it; else None.
     """
 
-    def __init__(self, path: str | os.PathLike[str]) -> None:
+    def __init__(self, path: str | os.PathLike[str], *, salvage: bool = False) -> None:
         self.path = os.fspath(path)
         self.warnings: list[str] = []
         self.truncated: int | None = None
+        self.dropped: Dropped | None = None
+        self._salvage = salvage
         try:
             self._file: BinaryIO = open(self.path, "rb")  # closed by close() or the iteration
         except OSError as e:
@@ -172,6 +191,9 @@ class JournalReader:
                     if last:  # cut inside a multi-byte character
                         self.truncated = lineno
                         return
+                    if self._salvage:
+                        self._drop(lineno, f"line {lineno}: not valid UTF-8 (byte {e.start + 1})")
+                        return
                     raise JournalError(f"{self.path}: line {lineno}: not valid UTF-8 (byte {e.start + 1})") from None
                 if not text.strip(" \t\r\n"):
                     continue
@@ -183,6 +205,9 @@ class JournalReader:
                         text, lineno, previous_t=previous, devices=self._devices, warnings=self.warnings
                     )
                 except JournalError as e:
+                    if self._salvage:
+                        self._drop(lineno, str(e))
+                        return
                     raise JournalError(f"{self.path}: {e}") from None
                 previous = entry.t
                 if isinstance(entry, DeviceEntry):
@@ -193,3 +218,8 @@ class JournalReader:
             raise JournalError(f"{self.path}: line {lineno}: cannot read: {e.strerror or e}") from None
         finally:
             self._file.close()
+
+    def _drop(self, lineno: int, reason: str) -> None:
+        """Salvaging: the lines from ``lineno`` on are left out (counted; a torn last one among them)."""
+        rest = sum(1 for _ in self._file)
+        self.dropped = Dropped(lineno, 1 + rest, reason)

@@ -5,7 +5,7 @@ writes them, so a value read back equals the one written and the same project al
 
     {
       "format": "physink-project",
-      "version": 1,
+      "version": 2,
       "program": "physink-tui 0.1.0",
       "canvas": {"width": 800.0, "height": 600.0},
       "components": [
@@ -14,17 +14,22 @@ writes them, so a value read back equals the one written and the same project al
       ],
       "next_id": {"b": 2, "j": 2, "r": 1, "s": 1},
       "vocabulary": ["verb plummets topples", "prep amid"],
-      "timeline": {"events": [...]}
+      "timeline": {"events": [...]},
+      "demonstration": null
     }
 
 Components are in scene order. Numbers of the scene and canvas are written as floats (``5`` reads back as
 ``5.0``); ``next_id`` is written with sorted keys. ``vocabulary`` holds the lines of the user's vocabulary
 (`physink_tui.timeline.phrases.parse_vocabulary`), each checked as such; ``timeline`` is null or the object
 `physink_tui.formats.timeline_json.timeline_object` writes (its component labels are the scene's names, and
-reading takes the names from the scene), versioned by the project's version. Reading names the first bad
-field by its JSON path and says what was expected, e.g. ``project.json: components[3].material.friction:
+reading takes the names from the scene), versioned by the project's version; ``demonstration`` likewise, the
+demonstrated timeline when ``timeline`` is a simulation adopted for it (else null). Version 1 (before
+``demonstration`` and the timeline's ``in_contact``) reads as version 2 (`migrations.upgrade`). Reading names
+the first bad field by its JSON path and says what was expected, e.g. ``project.json: components[3].material.friction:
 expected a number >= 0, got "high"``; unknown keys are ignored with a warning. Encoding checks the project
-with the same rules, so whatever is written reads back. Both raise `SceneError`.
+with the same rules, so whatever is written reads back. Both raise `SceneError`. The values every command needs
+(sizes, times, outlines, the timeline's components) are `physink_tui.formats.project.sanity`'s, checked by
+`load_project` and wherever else a project is taken in; the codec itself round-trips any well-formed project.
 """
 
 from __future__ import annotations
@@ -37,6 +42,7 @@ from physink_tui import __version__
 from physink_tui.errors import PhysinkError, SceneError
 from physink_tui.formats import json_checks as checks
 from physink_tui.formats.json_checks import MISSING, Place, show
+from physink_tui.formats.migrations import upgrade
 from physink_tui.formats.project.scene_fields import (
     Fields,
     decode_components,
@@ -46,16 +52,17 @@ from physink_tui.formats.project.scene_fields import (
     sub_object,
 )
 from physink_tui.formats.strict_json import DuplicateKey, unique_pairs
-from physink_tui.formats.timeline_json import timeline_from_object, timeline_object
+from physink_tui.formats.timeline_json import events_with_in_contact, timeline_from_object, timeline_object
 from physink_tui.scene.components import Scene
 from physink_tui.timeline.events import Timeline, TimelineError
 from physink_tui.timeline.phrases import Vocabulary, parse_vocabulary
 
 FORMAT = "physink-project"
-FORMAT_VERSION = 1
-"""The version this program writes, and the newest it reads."""
+FORMAT_VERSION = 2
+"""The version this program writes, and the newest it reads (1: before ``demonstration`` and ``in_contact``)."""
 
-TOP_KEYS = ("format", "version", "program", "canvas", "components", "next_id", "vocabulary", "timeline")
+TOP_KEYS = ("format", "version", "program", "canvas", "components", "next_id", "vocabulary", "timeline",
+            "demonstration")
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,12 +77,16 @@ class Project:
         timeline: the demonstrated timeline, or None. Its numbers are written rounded to 6 decimals, so a
             timeline read back equals the one written once they are (as every timeline read from a file is).
         canvas: (width, height) of the canvas in canvas units, both > 0.
+        demonstration: when ``timeline`` is a simulation the user adopted (its parameters now the scene's), the
+            demonstrated timeline it was found for, kept so that the two can be compared again
+            (``physink equiv PROJECT --up-to-demonstrated``); None otherwise.
     """
 
     scene: Scene
     vocabulary: tuple[str, ...]
     timeline: Timeline | None
     canvas: tuple[float, float]
+    demonstration: Timeline | None = None
 
 
 def vocabulary_lines(vocabulary: Vocabulary) -> tuple[str, ...]:
@@ -143,24 +154,43 @@ def decode_project(text: str, path: Any, *, warnings: list[str] | None = None) -
         SceneError: the text is no JSON object, a project from a newer program, or a field is bad: the message
             starts with ``path`` and names the field's JSON path and what was expected.
 
-    >>> decode_project('{"format": "physink-project", "version": 2}', "project.json")
+    >>> decode_project('{"format": "physink-project", "version": 3}', "project.json")
     Traceback (most recent call last):
     ...
-    physink_tui.errors.SceneError: project.json was written by format version 2; this program reads version 1 \
+    physink_tui.errors.SceneError: project.json was written by format version 3; this program reads version 2 \
 (upgrade physink-tui)
     """
     where = str(path)
+    text = text.removeprefix("\ufeff")  # a UTF-8 byte order mark, as editors on Windows write
     try:
         value = _DECODER.decode(text)
     except DuplicateKey as e:
         raise SceneError(f'{where}: not valid JSON: key "{e.key}" appears twice in one object') from None
     except json.JSONDecodeError as e:
+        kind = _other_kind(text)
+        if kind:
+            raise SceneError(f"{where}: {kind}; expected a project (.physink.json)") from None
         raise SceneError(f"{where}: not valid JSON ({e.msg} at line {e.lineno}, column {e.colno})") from None
     except (ValueError, RecursionError) as e:
         raise SceneError(f"{where}: not valid JSON ({e})") from None
     if not isinstance(value, dict):
         raise SceneError(f"{where}: expected a JSON object (a physink project), got {show(value)}")
     return _project(value, Place(where, SceneError), warnings)
+
+
+def _other_kind(text: str) -> str:
+    """What a file that is no JSON document is, when it is one of this program's other files (else "")."""
+    body = text.strip()
+    first = body.split("\n", 1)[0].strip()
+    if first.startswith(("#", "R:", "N:", "I:", "P:", "D:", "E:")):
+        return "this is a capture (.hid)"
+    try:
+        head = json.loads(first)
+    except (ValueError, RecursionError):
+        return ""
+    if isinstance(head, dict) and head.get("format") == "physink-journal":
+        return "this is a journal (.physink.jsonl)"
+    return ""
 
 
 # --- writing -----------------------------------------------------------------------------------------------------
@@ -181,7 +211,7 @@ def _plain_project(project: Project, where: Place) -> dict[str, Any]:
     if not isinstance(canvas, tuple | list) or len(canvas) != 2:
         raise where.bad("canvas", "(width, height)", plain(canvas))
     width, height = canvas
-    timeline = project.timeline
+    timeline, demonstration = project.timeline, project.demonstration
     return {
         "format": FORMAT,
         "version": FORMAT_VERSION,
@@ -191,6 +221,7 @@ def _plain_project(project: Project, where: Place) -> dict[str, Any]:
         "next_id": dict(project.scene.next_id) if isinstance(project.scene.next_id, dict) else project.scene.next_id,
         "vocabulary": plain(project.vocabulary),
         "timeline": None if timeline is None else timeline_object(timeline, project.scene.names()),
+        "demonstration": None if demonstration is None else timeline_object(demonstration, project.scene.names()),
     }
 
 
@@ -211,6 +242,7 @@ def _emit(obj: dict[str, Any]) -> str:
         f'  "next_id": {_dump(dict(sorted(obj["next_id"].items())))}',
         f'  "vocabulary": {_dump(obj["vocabulary"])}',
         f'  "timeline": {_dump(obj["timeline"])}',
+        f'  "demonstration": {_dump(obj["demonstration"])}',
     ]
     return "{\n" + ",\n".join(lines) + "\n}\n"
 
@@ -236,9 +268,7 @@ def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> P
     version = checks.get(obj, where, "version", "version", f"an integer from 1 to {FORMAT_VERSION}")
     if isinstance(version, bool) or not isinstance(version, int) or version < 1:
         raise where.bad("version", f"an integer from 1 to {FORMAT_VERSION}", version)
-    if version > FORMAT_VERSION:
-        raise where.error(f"{where} was written by format version {version}; this program reads version "
-                          f"{FORMAT_VERSION} (upgrade physink-tui)")
+    obj = upgrade(obj, version, {2: _v1_to_v2}, FORMAT_VERSION, what="format", where=where)
     checks.known_keys(where, "", obj, TOP_KEYS, warnings)
     top = Fields(where, "", obj, {})
     top.text("program", "a string naming the program that wrote it")
@@ -253,15 +283,29 @@ def _project(obj: dict[str, Any], where: Place, warnings: list[str] | None) -> P
     vocabulary = checks.a_list(where, "vocabulary", top.get("vocabulary", "a list of vocabulary lines (strings)"),
                                "a list of vocabulary lines (strings)")
     words = tuple(_vocabulary_line(where, f"vocabulary[{i}]", w) for i, w in enumerate(vocabulary))
-    raw = checks.optional(checks.an_object, where, "timeline", top.get("timeline", "null or an object"),
-                          "null or an object")
-    timeline = None
-    if raw is not None:
-        try:
-            timeline, _ = timeline_from_object(raw, where, "timeline")
-        except TimelineError as e:  # an event's own rules, or a cycle: not tied to one key
-            raise where.fail(f"timeline: {e}") from None
-    return Project(Scene({c.id: c for c in components}, next_id), words, timeline, (width, height))
+    timeline, demonstration = (_timeline(where, top, key) for key in ("timeline", "demonstration"))
+    return Project(Scene({c.id: c for c in components}, next_id), words, timeline, (width, height), demonstration)
+
+
+def _timeline(where: Place, top: Fields, key: str) -> Timeline | None:
+    """The timeline object under ``key`` (null: None)."""
+    raw = checks.optional(checks.an_object, where, key, top.get(key, "null or an object"), "null or an object")
+    if raw is None:
+        return None
+    try:
+        timeline, _ = timeline_from_object(raw, where, key)
+    except TimelineError as e:  # an event's own rules, or a cycle: not tied to one key
+        raise where.fail(f"{key}: {e}") from None
+    return timeline
+
+
+def _v1_to_v2(doc: dict[str, Any]) -> dict[str, Any]:
+    """Version 1 as version 2: no demonstration kept, and the timeline's events naming no pairs in contact at the
+    start (timeline format 2)."""
+    timeline = doc.get("timeline")
+    if isinstance(timeline, dict):
+        timeline = events_with_in_contact(timeline)
+    return {**doc, "version": 2, "timeline": timeline, "demonstration": None}
 
 
 def _vocabulary_line(where: Place, key: str, value: Any) -> str:

@@ -11,6 +11,7 @@ import os
 from physink_tui.errors import SceneError
 from physink_tui.formats.atomic_write import write_text_atomic
 from physink_tui.formats.project.codec import Project, decode_project, encode_project
+from physink_tui.formats.project.sanity import check_project
 
 
 def save_project(project: Project, path: str | os.PathLike[str]) -> None:
@@ -35,7 +36,8 @@ def load_project(path: str | os.PathLike[str], *, warnings: list[str] | None = N
         warnings: when given, one message per unknown key (which is ignored) is appended.
 
     Raises:
-        SceneError: the file cannot be read, is not UTF-8, or is no valid project (the first bad field named).
+        SceneError: the file cannot be read, is not UTF-8, or is no valid project (the first bad field named),
+            or holds a value no command can use (`sanity.check_project`).
     """
     target = os.fspath(path)
     try:
@@ -47,4 +49,4 @@ def load_project(path: str | os.PathLike[str], *, warnings: list[str] | None = N
         text = data.decode("utf-8")
     except UnicodeDecodeError as e:
         raise SceneError(f"{target}: not UTF-8 text (byte {e.start} is {data[e.start]:#04x})") from None
-    return decode_project(text, target, warnings=warnings)
+    return check_project(decode_project(text, target, warnings=warnings), target)

@@ -8,13 +8,13 @@ others.
 
 from __future__ import annotations
 
-import io
 import wave
 from pathlib import Path
 
 import numpy as np
 
 from physink_tui.errors import SpeechError
+from physink_tui.input.speech.wav_file import WavProblem, parse_wav
 
 RATE = 16000
 """Samples a second of everything the recognisers hear."""
@@ -24,11 +24,12 @@ _WIDTHS = {1: "8-bit", 2: "16-bit", 3: "24-bit", 4: "32-bit"}
 def read_wav(path: str | Path, data: bytes | None = None) -> np.ndarray:
     """The recording as 16 kHz mono int16 samples.
 
-    Any rate, 8/16/24/32-bit PCM, any number of channels (averaged) is taken. ``data`` gives the file's bytes when
-    they were read already (a pipe).
+    Any rate, 8/16/24/32-bit PCM (plain or WAVE_FORMAT_EXTENSIBLE), any number of channels (averaged) is taken.
+    ``data`` gives the file's bytes when they were read already (a pipe).
 
     Raises:
-        SpeechError: the file cannot be read, or is not a PCM WAV file (naming it and what is wrong).
+        SpeechError: the file cannot be read, is not a PCM WAV file, holds a header and no samples, or is cut off
+            (naming it and what is wrong; `wav_file.parse_wav`).
     """
     name = str(path)
     try:
@@ -38,14 +39,13 @@ def read_wav(path: str | Path, data: bytes | None = None) -> np.ndarray:
     if not raw:
         raise SpeechError(f"{name}: empty file; expected a WAV recording", name)
     try:
-        with wave.open(io.BytesIO(raw)) as wav:
-            channels, width, rate, frames = (wav.getnchannels(), wav.getsampwidth(), wav.getframerate(),
-                                             wav.getnframes())
-            pcm = wav.readframes(frames)
-    except (wave.Error, EOFError) as exc:
-        raise SpeechError(f"{name}: not a PCM WAV file ({exc or 'it ends inside its header'}); expected a WAV like "
-                          "'ffmpeg -i IN -ac 1 -ar 16000 OUT.wav' writes", name) from None
-    if width not in _WIDTHS or channels < 1 or rate < 4000:
+        wav = parse_wav(raw)
+    except WavProblem as exc:
+        hint = "; expected a WAV like 'ffmpeg -i IN -ac 1 -ar 16000 OUT.wav' writes" if str(exc).startswith(
+            "not a PCM") else ""
+        raise SpeechError(f"{name}: {exc}{hint}", name) from None
+    channels, width, rate, pcm = wav.channels, wav.width, wav.rate, wav.pcm
+    if rate < 4000:
         raise SpeechError(f"{name}: unsupported WAV: {channels} channel(s), {width * 8}-bit, {rate} Hz; expected "
                           "8, 16, 24 or 32-bit PCM at 4000 Hz or more", name)
     samples = _to_float(pcm, width)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from itertools import islice, pairwise
-from typing import cast
+from typing import Self
 
 import pymunk
 
@@ -43,22 +43,21 @@ class LiveWorld(World):
     ()
     """
 
-    _scene: Scene
-    _fixed: frozenset[str]
-    _next_rope: int
-    _rope_bits: dict[str, int]
-    _strips: dict[str, float]  # polyline id -> half-width of its strip as `body_geometry` draws it
+    def __init__(self, scene: Scene, *, gravity: tuple[float, float] = (0.0, 0.0), dt: float = DT) -> None:
+        """The world of ``scene``, ready to follow it (no gravity unless given: a sketch stands still)."""
+        super().__init__(scene, gravity=gravity, dt=dt)
+        self._scene = scene
+        self._fixed = scene.fixed_bodies()
+        links = self._built.links
+        self._next_rope = len(links)
+        self._rope_bits = {rid: 1 << (i % 32) for i, rid in enumerate(links)}
+        self._strips = {b.id: _strip(b) for b in scene.bodies() if b.shape == "polyline"}
+        """polyline id -> half-width of its strip as `body_geometry` draws it"""
 
     @classmethod
-    def from_scene(cls, scene: Scene, *, gravity: tuple[float, float] = (0.0, 0.0), dt: float = DT) -> LiveWorld:
+    def from_scene(cls, scene: Scene, *, gravity: tuple[float, float] = (0.0, 0.0), dt: float = DT) -> Self:
         """The world of ``scene``, ready to follow it (no gravity unless given: a sketch stands still)."""
-        world = cast(LiveWorld, super().from_scene(scene, gravity=gravity, dt=dt))
-        world._scene = scene
-        world._fixed = scene.fixed_bodies()
-        world._next_rope = len(world._built.links)
-        world._rope_bits = {rid: 1 << (i % 32) for i, rid in enumerate(world._built.links)}
-        world._strips = {b.id: _strip(b) for b in scene.bodies() if b.shape == "polyline"}
-        return world
+        return cls(scene, gravity=gravity, dt=dt)
 
     @property
     def scene(self) -> Scene:
@@ -198,8 +197,11 @@ def _same_solid(a: Body, b: Body) -> bool:
 
 def _ends(c: Component) -> set[str]:
     """The bodies a joint, spring or rope holds on to (not the background)."""
+    ends: set[str | None]
     if isinstance(c, Rope):
         ends = {c.start_body, c.end_body}
+    elif isinstance(c, Body):
+        return set()
     else:
         ends = {c.a, c.b}
     return {e for e in ends if e is not None and e != BACKGROUND}

@@ -18,6 +18,8 @@ CATCH_UP_STEPS = 60
 """Steps an adjusted body gets to catch up with where the pen lifted (unless something blocks it)."""
 SETTLE_STEPS = 30
 """Steps after an adjusted body is put down in which overlaps resolve, so bodies end flush (thesis figure 2-6)."""
+STEP_EPSILON = 1e-9
+"""Slack (in steps) when counting the steps up to an input time, so float rounding never loses a step."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,9 +42,19 @@ class Frame:
 def demo_world(scene: Scene) -> World:
     """The world of demo mode: no gravity, a little damping, no tunnelling; contacts and joints still act."""
     world = World.from_scene(scene, gravity=(0.0, 0.0))
-    world.space.damping = DEMO_DAMPING
+    world.damping = DEMO_DAMPING
     world.limit_speeds()
     return world
+
+
+def steps_until(t: float, origin: float, dt: float) -> int:
+    """The whole steps of ``dt`` from input time ``origin`` to ``t``: a mode counts its steps from where it began,
+    so advancing in many small pieces or one large one takes exactly the same steps.
+
+    >>> 1.025 / (1 / 120), steps_until(1.025, 0.0, 1 / 120)
+    (122.99999999999999, 123)
+    """
+    return int((t - origin) / dt + STEP_EPSILON)
 
 
 def step_and_observe(world: World, bodies: Iterable[str], fixed: Mapping[str, Motion] | None = None) -> Frame:
@@ -50,17 +62,7 @@ def step_and_observe(world: World, bodies: Iterable[str], fixed: Mapping[str, Mo
     of them touch. ``fixed``: motions of bodies among them that cannot move (static, and no drag can make them
     dynamic: a rollout's welded bodies), given rather than read from the world each step."""
     world.step(1)
-    get = world.pymunk_body
-    motions: dict[str, Motion] = {}
-    known = fixed or {}
-    for body in bodies:  # `World.motion`, reading each body's position once
-        m = known.get(body)
-        if m is None:
-            b = get(body)
-            p = b.position
-            v = b.velocity_at_world_point(p)
-            m = Motion(p.x, p.y, b.angle, v.x, v.y, b.angular_velocity)
-        motions[body] = m
+    motions = world.motions(bodies, fixed)
     observed = motions.keys()
     contacts = tuple(c for c in world.take_contacts() if c.a_id in observed and c.b_id in observed)
     touching = world.touching()

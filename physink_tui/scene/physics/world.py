@@ -9,14 +9,16 @@ poses back into a Scene. Deciding what strokes become (interpret), what contacts
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import math
+from collections.abc import Iterable, Mapping
+from typing import Self
 
 import pymunk
 
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import BACKGROUND, Point, Scene
 from physink_tui.scene.physics.build import Built, build
-from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction
+from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction, touching_record
 from physink_tui.scene.physics.dragging import Drag, grab_body
 from physink_tui.scene.physics.sleeping import sleep_groups, tied_groups
 from physink_tui.scene.physics.speed import limit_speed
@@ -56,10 +58,20 @@ class World:
     546
     """
 
-    def __init__(self, built: Built, *, dt: float) -> None:
-        """Use `from_scene`; this takes the output of `build.build`."""
+    def __init__(self, scene: Scene, *, gravity: Point = GRAVITY, dt: float = DT) -> None:
+        """The world of ``scene`` (`from_scene` says the same by name); a subclass adds its own state after this.
+
+        Raises:
+            SceneError: a component the world cannot build (see `build.build`), or a non-positive ``dt``.
+        """
+        if not dt > 0:
+            raise SceneError(f"time step {dt!r} is not positive")
+        space = pymunk.Space()
+        space.gravity = gravity
+        space.iterations = ITERATIONS
+        built = build(scene, space)
         self._built = built
-        self._space = built.space
+        self._space = space
         self._dt = dt
         self._steps = 0
         self._listener = ContactListener(built.owner, built.surfaces.bounces)
@@ -76,24 +88,15 @@ class World:
         self._sync_constraints()
 
     @classmethod
-    def from_scene(cls, scene: Scene, *, gravity: Point = GRAVITY, dt: float = DT) -> World:
+    def from_scene(cls, scene: Scene, *, gravity: Point = GRAVITY, dt: float = DT) -> Self:
         """Builds the world for ``scene``.
 
         Raises:
             SceneError: a component the world cannot build (see `build.build`), or a non-positive ``dt``.
         """
-        if not dt > 0:
-            raise SceneError(f"time step {dt!r} is not positive")
-        space = pymunk.Space()
-        space.gravity = gravity
-        space.iterations = ITERATIONS
-        return cls(build(scene, space), dt=dt)
+        return cls(scene, gravity=gravity, dt=dt)
 
     # -- what the world holds -------------------------------------------------------------------------------------
-
-    @property
-    def space(self) -> pymunk.Space:
-        return self._space
 
     @property
     def dt(self) -> float:
@@ -106,7 +109,8 @@ class World:
 
     @property
     def gravity(self) -> Point:
-        return tuple(self._space.gravity)
+        g = self._space.gravity
+        return (g.x, g.y)
 
     @gravity.setter
     def gravity(self, value: Point) -> None:
@@ -116,28 +120,21 @@ class World:
         """The bodies' ids, bottom first (creation order)."""
         return tuple(self._by_z)
 
-    def pymunk_body(self, component_id: str) -> pymunk.Body:
-        """The pymunk body of a body id or `BACKGROUND`."""
-        return self._get(component_id)
+    @property
+    def damping(self) -> float:
+        """Share of its velocity a free body keeps after one second (1.0: none lost)."""
+        return float(self._space.damping)
 
-    def shapes_of(self, component_id: str) -> tuple[pymunk.Shape, ...]:
-        """The shapes of a body or rope."""
-        return self._built.shapes[component_id]
+    @damping.setter
+    def damping(self, value: float) -> None:
+        self._space.damping = value
 
-    def constraints_of(self, component_id: str) -> tuple[pymunk.Constraint, ...]:
-        """The pymunk constraints that hold a joint, spring or rope (whether in the space now or not)."""
-        return tuple(self._built.constraints.get(component_id, ()))
-
-    def links_of(self, rope_id: str) -> tuple[pymunk.Body, ...]:
-        return self._built.links[rope_id]
-
-    def owner(self, shape: pymunk.Shape) -> str | None:
-        """The id of the body or rope a shape belongs to."""
-        return self._built.owner.get(shape)
-
-    def surface(self, shape: pymunk.Shape) -> tuple[float, float]:
-        """``(restitution, friction)`` of the material of a shape."""
-        return self._built.surfaces.of(shape)
+    @property
+    def pymunk_parts(self) -> Built:
+        """The pymunk objects behind the world, by component id: for tests and benchmarks that look at what pymunk
+        holds. The program asks the world its questions instead; only `scene.physics` imports pymunk (import-linter).
+        """
+        return self._built
 
     # -- queries --------------------------------------------------------------------------------------------------
 
@@ -165,9 +162,32 @@ class World:
 
     def motion(self, body_id: str) -> Motion:
         """A body's pose and velocity together."""
-        body = self._get(body_id)
-        v = body.velocity_at_world_point(body.position)
-        return Motion(body.position.x, body.position.y, body.angle, v.x, v.y, body.angular_velocity)
+        return _motion(self._get(body_id))
+
+    def motions(self, body_ids: Iterable[str], known: Mapping[str, Motion] | None = None) -> dict[str, Motion]:
+        """`motion` of each of ``body_ids``, or its motion in ``known`` when given there (bodies that cannot move)."""
+        get = self._get
+        given = known or {}
+        out: dict[str, Motion] = {}
+        for body_id in body_ids:
+            m = given.get(body_id)
+            out[body_id] = _motion(get(body_id)) if m is None else m
+        return out
+
+    def is_asleep(self, body_id: str) -> bool:
+        """Whether a body sleeps (`hold_until_touched`): gravity does not move it until something wakes it."""
+        return bool(self._get(body_id).is_sleeping)
+
+    def half_size(self, body_id: str) -> float:
+        """Half the smaller side of the smallest bounding box of a body's shapes (canvas units): how far the body
+        reaches from its middle at its thinnest; infinite for a body without shapes (the background)."""
+        shapes = self._built.shapes.get(body_id, ())
+        return min((min(s.bb.right - s.bb.left, s.bb.top - s.bb.bottom) / 2 for s in shapes), default=math.inf)
+
+    def contact_between(self, a_id: str, b_id: str, step: int) -> ContactRecord | None:
+        """The contact joining bodies ``a_id`` and ``b_id`` now, as a record of one begun in ``step``
+        (`contacts.touching_record`); None when they do not touch."""
+        return touching_record(step, self._get(a_id), self._get(b_id), a_id, b_id)
 
     def state(self) -> WorldState:
         """The world now as a frozen value: every body's and rope link's motion, the steps taken and the gravity."""
@@ -395,8 +415,11 @@ class World:
 
 
 def _motion(body: pymunk.Body) -> Motion:
-    v = body.velocity
-    return Motion(body.position.x, body.position.y, body.angle, v.x, v.y, body.angular_velocity)
+    """A body's motion, its velocity taken at its origin (`Body.position`), each coordinate read once (a rope link's
+    origin is its centre of gravity: its velocity there is pymunk's ``velocity``, bit for bit)."""
+    p = body.position
+    v = body.velocity_at_world_point(p)
+    return Motion(p.x, p.y, body.angle, v.x, v.y, body.angular_velocity)
 
 
 def _put(space: pymunk.Space, body: pymunk.Body, pose: Pose, velocity: Velocity) -> None:

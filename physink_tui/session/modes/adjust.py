@@ -5,28 +5,26 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import replace
 
 from physink_tui.input.pen.gestures import Gesture, PenMove, StrokeEnded, Tap
 from physink_tui.scene.components import Scene
 from physink_tui.scene.interpretation.body_shapes import body_size
 from physink_tui.scene.interpretation.interpret import bodies_at
 from physink_tui.scene.physics.state import Pose
-from physink_tui.scene.physics.stepping import put_down
+from physink_tui.scene.physics.stepping import put_down, steps_until
 from physink_tui.scene.physics.world import World
-from physink_tui.session.history import Document
-from physink_tui.session.modes.base import Host, Mode
+from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.events import Timeline
 
 ADJUST_CENTRE = 0.25
 """A body grabbed within this share of its size from its centre moves without turning."""
-STEP_EPSILON = 1e-9
-"""Slack (in steps) when counting the steps up to an input time, so float rounding never loses a step."""
 
 
 class AdjustMode:
     """One body being moved by the pen, the others frozen (see the module docstring)."""
 
-    name = "adjust"
+    name = ModeName.ADJUST
 
     def __init__(self, host: Host, body_id: str, world: World, t: float, offset: tuple[float, float]) -> None:
         self.host = host
@@ -57,6 +55,8 @@ class AdjustMode:
         return cls(host, body.id, world, t, offset)
 
     def gesture(self, g: Gesture) -> Mode | None:
+        if self.world is None:  # put down already: the session goes back to sketching
+            return None
         if isinstance(g, PenMove) and g.touching:
             x, y = g.x * self.host.canvas[0], g.y * self.host.canvas[1]
             self.world.drag(self.body_id, (x - self.offset[0], y - self.offset[1]))
@@ -70,7 +70,9 @@ class AdjustMode:
         return self.world is None
 
     def advance(self, t: float) -> bool:
-        target = int((t - self.origin) / self.world.dt + STEP_EPSILON)
+        if self.world is None:
+            return False
+        target = steps_until(t, self.origin, self.world.dt)
         if target <= self.steps:
             return False
         self.world.step(target - self.steps)
@@ -86,7 +88,7 @@ class AdjustMode:
         document = self.host.document
         moved = world.to_scene(document.scene)
         if moved != document.scene:
-            self.host.commit(Document(moved, document.timeline), f"adjust {self.body_id}")
+            self.host.commit(replace(document, scene=moved), f"adjust {self.body_id}")
 
     def poses(self) -> Mapping[str, Pose]:
         if self.world is None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
+from enum import StrEnum
 from typing import Protocol
 
 from physink_tui.input.pen.gestures import Gesture
@@ -10,6 +11,17 @@ from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
 from physink_tui.session.history import Document
 from physink_tui.timeline.events import Timeline
+
+
+class ModeName(StrEnum):
+    """Which mode a session is in (a string, so views, logs and journals read the same)."""
+
+    SKETCH = "sketch"
+    """Strokes become components."""
+    ADJUST = "adjust"
+    """A body is being moved by the pen (sketching resumes when it is put down)."""
+    DEMO = "demo"
+    """Moving bodies by hand records a demonstration's timeline."""
 
 
 class Host(Protocol):
@@ -20,8 +32,8 @@ class Host(Protocol):
     @property
     def document(self) -> Document: ...
 
-    def tell(self, text: str, t: float | None = None) -> None:
-        """Tell the user ``text`` (stamped ``t``, default the session's time)."""
+    def tell(self, text: str, t: float | None = None, kind: str = "note") -> None:
+        """Tell the user ``text`` (stamped ``t``, default the session's time); ``kind`` is `view.Message`'s."""
 
     def commit(self, document: Document, description: str) -> None:
         """``document`` is the result of an action the user can undo."""
@@ -34,9 +46,9 @@ class Host(Protocol):
 
 
 class Mode(Protocol):
-    """One mode of the session. ``name`` is what a view shows: ``sketch``, ``adjust`` or ``demo``."""
+    """One mode of the session. ``name`` is what a view shows."""
 
-    name: str
+    name: ModeName
 
     @property
     def finished(self) -> bool:

@@ -1,5 +1,6 @@
 """Sketch mode (thesis 3.2): finished strokes are recognised and interpreted into the scene, taps select, the
-eraser removes, a dwell starts adjusting; a short straight stroke waits to see whether the next makes an X.
+eraser removes, a dwell starts adjusting; a straight stroke that is short, or that crosses a body, waits to see
+whether the next makes an X (a weld) or not (alone, a line through a body erases it: thesis 2.1).
 
 The mode keeps the sketch's live world (`LiveWorld`, gravity-free, updated by difference) as the spatial index
 of the scene; the session decides when gestures and time reach it.
@@ -9,49 +10,54 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from physink_tui.input.pen.gestures import Dwell, Gesture, PenDown, StrokeEnded, Tap
 from physink_tui.scene.components import Body, Joint, Scene
-from physink_tui.scene.interpretation.interpret import Near, bodies_at, interpret
+from physink_tui.scene.interpretation.body_shapes import body_size
+from physink_tui.scene.interpretation.interpret import Near, bodies_at, crossed_bodies, interpret
 from physink_tui.scene.interpretation.x_pairing import pair_x, x_arm
 from physink_tui.scene.physics.live import LiveWorld
 from physink_tui.scene.physics.overlaps import clear_overlaps
 from physink_tui.scene.physics.state import Pose
 from physink_tui.scene.recognition.primitives import Recognition
 from physink_tui.scene.recognition.recognize import recognize_stroke
-from physink_tui.session.history import Document
 from physink_tui.session.modes.adjust import AdjustMode
-from physink_tui.session.modes.base import Host, Mode
+from physink_tui.session.modes.base import Host, Mode, ModeName
+from physink_tui.session.outcomes import erased, stroke_outcome
 from physink_tui.timeline.events import Timeline
 
 X_CANDIDATE = 0.08
 """A nearly straight stroke (`x_pairing.x_arm`) shorter than this share of the canvas diagonal may be half of an X:
-it waits for the next stroke."""
+it waits for the next stroke. One that crosses a body may be half of an X up to that body's own size."""
 PIN_SIZE = 0.012
 """A circle with a radius under this share of the canvas diagonal looks like a pin."""
 VIEW_PIXELS = 1600.0
 """How many pixels across the canvas's longer side is taken to span on screen (the pen's noise is a pixel of it:
 1 canvas unit on the thesis's 1600 x 1000 canvas)."""
 X_WAIT = 1.5
-"""Seconds a possible half-X waits for its second stroke to begin before it is taken on its own."""
+"""The X window: seconds from the end of a possible half-X to the start of the stroke that may complete it; when
+none begins in it, the stroke is taken on its own (an erase, when it is a line through a body). Judged on the
+inputs' times, so a replay decides the same."""
 
 Points = list[tuple[float, float]]
 
 
 @dataclass(frozen=True, slots=True)
 class PendingStroke:
-    """A possible half-X waiting for the next stroke: when it ended, its points (canvas units), what it is alone."""
+    """A possible half-X waiting for the next stroke: when it ended, its points (canvas units), what it is alone,
+    and how long (canvas units) an arm may be in an X it starts."""
 
     t: float
     points: tuple[tuple[float, float], ...]
     recognition: Recognition
+    arm_limit: float = math.inf
 
 
 class SketchMode:
     """Strokes, taps, the eraser and dwells while sketching."""
 
-    name = "sketch"
+    name = ModeName.SKETCH
     finished = False
 
     def __init__(self, host: Host) -> None:
@@ -139,18 +145,19 @@ class SketchMode:
         points = [self._to_canvas(p.x, p.y) for p in stroke.points]
         if stroke.eraser:
             self.flush(t)
-            self._erase(points)
+            self._erase(points, t)
             return
         if self.pending is not None:
             pending, self.pending = self.pending, None
-            pair = pair_x(list(pending.points), points, self._x_arm_limit(), self._pen_noise())
+            pair = pair_x(list(pending.points), points, pending.arm_limit, self._pen_noise())
             if pair is not None:
                 self._apply(pair, [list(pending.points), points], "X-symbol", t)
                 return
             self._apply(pending.recognition, [list(pending.points)], pending.recognition.kind or "stroke", t)
         recognition = recognize_stroke(points, noise=self._pen_noise())
-        if x_arm(points, self._x_arm_limit()) is not None:  # whatever the recogniser named it: a bowed or hooked
-            self.pending = PendingStroke(t, tuple(points), recognition)  # half-X is seldom a clean line
+        limit = self._x_arm_limit(points)
+        if limit > 0.0:  # whatever the recogniser named it: a bowed or hooked half-X is seldom a clean line
+            self.pending = PendingStroke(t, tuple(points), recognition, limit)
             return
         self._apply(recognition, [points], recognition.kind or "stroke", t)
 
@@ -158,8 +165,19 @@ class SketchMode:
         """The pen's jitter in canvas units: a pixel of a view `VIEW_PIXELS` wide showing the whole canvas."""
         return max(self.canvas) / VIEW_PIXELS
 
-    def _x_arm_limit(self) -> float:
-        return X_CANDIDATE * math.hypot(*self.canvas)
+    def _x_arm_limit(self, points: Points) -> float:
+        """How long an arm of an X this stroke may start can be, or 0 when it cannot start one: a straight stroke
+        up to `X_CANDIDATE` of the diagonal, or up to the size of the largest body its straight axis crosses."""
+        short = X_CANDIDATE * math.hypot(*self.canvas)
+        arm = x_arm(points)
+        if arm is None:
+            return 0.0
+        length = math.dist(arm.start, arm.end)
+        if length <= short:
+            return short
+        crossed = crossed_bodies(self._scene, arm, self.near(self._scene))
+        largest = max((body_size(b) for b in crossed), default=0.0)
+        return max(short, largest) if length <= largest else 0.0
 
     def _settle(self, t: float) -> None:
         """Push the bodies still waiting clear of what they overlap (as part of the action that made them)."""
@@ -171,15 +189,18 @@ class SketchMode:
         for note in notes:
             self.host.tell(note, t)
         if scene != self._scene:
-            self.host.amend(Document(scene, self.host.document.timeline))
+            self.host.amend(replace(self.host.document, scene=scene))
 
     def _apply(self, recognition: Recognition, strokes: list[Points], what: str, t: float) -> None:
         before = self._scene
         result = interpret(before, recognition, strokes, self.near(before))
+        outcome = stroke_outcome(recognition.kind, result, before)
+        if outcome:
+            self.host.tell(outcome, t, "outcome")
         if result.message:
             self.host.tell(result.message, t)
         if result.scene != before:
-            self.host.commit(Document(result.scene, self.host.document.timeline), f"{result.action}: {what}")
+            self.host.commit(replace(self.host.document, scene=result.scene), f"{result.action}: {what}")
             if result.created:
                 self.last_created = result.created[-1]
         # a body drawn into others waits one stroke: a pin or an X drawn next may join it where it is
@@ -196,7 +217,7 @@ class SketchMode:
                 self.host.tell(f"the small circle {small[0].id} is outside every body, so it became a body; "
                                "a pin is drawn inside the body it holds", t)
 
-    def _erase(self, points: Points) -> None:
+    def _erase(self, points: Points, t: float) -> None:
         """An eraser stroke removes the topmost body it passes over (and what holds on to it)."""
         scene = self._scene
         near = self.near(scene)
@@ -204,5 +225,6 @@ class SketchMode:
             found = bodies_at(scene, point, near=near)
             if found:
                 gone = (found[0].id, *scene.attached_to(found[0].id))
-                self.host.commit(Document(scene.remove(*gone), self.host.document.timeline), f"erase: {found[0].id}")
+                self.host.commit(replace(self.host.document, scene=scene.remove(*gone)), f"erase: {found[0].id}")
+                self.host.tell(erased(scene, gone), t, "outcome")
                 return

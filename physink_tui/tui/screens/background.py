@@ -1,6 +1,7 @@
 """The main screen's blocking work, each in a Textual worker thread: SIMULATE (a `SearchJob` on a snapshot of the
 document, its progress in the `SearchBar`, cancel keeping the best so far, the result handed to the session as a
-`Searched` entry) and the video export; the screen (`MainScreen`) mixes it in and owns the widgets and the session.
+`Searched` entry) and the video export: `BackgroundWork`, a helper the screen (`MainScreen`) owns, which sees the
+screen through `Host` (its session, view and canvas) and through Textual's `Screen` (workers, messages, widgets).
 
 A search never runs on the session's thread, so pen input and keys are handled while it runs; what it found
 reaches the session as one ``simulate SEED BUDGET`` entry that a replay of the journal searches again to the same
@@ -10,17 +11,17 @@ result (`physink_tui.session.search_job`).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
+from typing import Protocol
 
-from textual import work
 from textual.message import Message
 from textual.screen import Screen
 
 from physink_tui.errors import PhysinkError
-from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.session import simulation
 from physink_tui.session.search_job import Progress, SearchJob
-from physink_tui.session.simulation import Searched
+from physink_tui.session.simulation import Searched, SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.defaults import DEFAULT_SEED
 from physink_tui.tui import storage
@@ -54,75 +55,87 @@ class SearchFinished(Message, bubble=False):
     error: str | None = None
 
 
-class BackgroundWork(Screen[None]):
-    """SIMULATE and export for the main screen (which provides ``live``, ``view``, ``canvas`` and the widgets)."""
+class Host(Protocol):
+    """The screen as its background work sees it: the live session, the view shown and the canvas."""
 
-    live: LiveSession | None
-    view: SessionView | None
-    canvas: tuple[float, float]
+    @property
+    def live(self) -> LiveSession | None: ...
 
-    def __init__(self) -> None:
-        super().__init__()
+    @property
+    def view(self) -> SessionView | None: ...
+
+    @property
+    def canvas(self) -> tuple[float, float]: ...
+
+
+class BackgroundWork:
+    """SIMULATE and export for a screen: ``screen`` runs the workers and receives their messages (it hands
+    `SearchProgressed`, `SearchFinished` and `SearchBar.Cancel` to `progressed`, `finished` and `cancel`);
+    ``host`` (the same screen) gives the session, the view and the canvas."""
+
+    def __init__(self, screen: Screen[None], host: Host) -> None:
+        self._screen = screen
+        self._host = host
         self.job: SearchJob | None = None
         """The search running, or None."""
-        self._simulating: JournalEntry | None = None  # the simulate entry submitted, until the session handled it
+        self._simulating: SessionInput | None = None  # the simulate entry submitted, until the session handled it
         self._simulated = ""  # what the status bar says once it has
 
     # -- SIMULATE ------------------------------------------------------------------------------------------------
 
-    def action_simulate(self) -> None:
+    def simulate(self) -> None:
         """Search the document shown in a worker; with nothing to search, the session says what is missing."""
-        live = self.live
+        screen, live = self._screen, self._host.live
         if live is None:
             return
         if self.job is not None:
-            self.notify("a search is running: escape (or Cancel) stops it, keeping the best so far",
-                        severity="warning")
+            screen.notify("a search is running: escape (or Cancel) stops it, keeping the best so far",
+                          severity="warning")
             return
-        view = live.runner.latest_view() or self.view
+        view = live.runner.latest_view() or self._host.view
         if view is None or view.timeline is None or simulation.missing(view.scene, view.timeline) is not None:
-            self._command("simulate")  # the session tells what to do first (and journals the attempt)
+            live.command("simulate")  # the session tells what to do first (and journals the attempt)
             return
         budget = live.session.simulation_budget
         self.job = SearchJob(view.scene, view.timeline, live.canvas, DEFAULT_SEED, budget,
-                             on_progress=lambda progress: self.post_message(SearchProgressed(progress)))
-        self.query_one(SearchBar).begin(budget)
-        self.query_one(StatusBar).set(activity="simulating (escape cancels)")
-        self._search(self.job)
+                             on_progress=lambda progress: screen.post_message(SearchProgressed(progress)))
+        screen.query_one(SearchBar).begin(budget)
+        screen.query_one(StatusBar).set(activity="simulating (escape cancels)")
+        screen.run_worker(partial(self._search, self.job), thread=True, exclusive=True, exit_on_error=False,
+                          group="simulate", description="simulate")
 
-    @work(thread=True, exclusive=True, exit_on_error=False, group="simulate", description="simulate")
     def _search(self, job: SearchJob) -> None:
         try:
             offer = job.run()
         except PhysinkError as exc:
-            self.post_message(SearchFinished(job, None, str(exc)))
+            self._screen.post_message(SearchFinished(job, None, str(exc)))
             return
-        self.post_message(SearchFinished(job, offer))
+        self._screen.post_message(SearchFinished(job, offer))
 
-    def on_search_progressed(self, message: SearchProgressed) -> None:
+    def progressed(self, message: SearchProgressed) -> None:
         if self.job is not None:
-            self.query_one(SearchBar).show(message.progress)
+            self._screen.query_one(SearchBar).show(message.progress)
 
-    def on_search_finished(self, message: SearchFinished) -> None:
-        job = message.job
+    def finished(self, message: SearchFinished) -> None:
+        job, screen = message.job, self._screen
         if job is not self.job:
             return
         self.job = None
-        self.query_one(SearchBar).end()
-        status = self.query_one(StatusBar)
-        live = self.live
+        screen.query_one(SearchBar).end()
+        status = screen.query_one(StatusBar)
+        live = self._host.live
         if live is None or live.stopped:
             return
         if message.error is not None:
             status.set(activity="")
-            self.app.push_screen(ErrorModal("Cannot simulate", message.error))
+            screen.app.push_screen(ErrorModal("Cannot simulate", message.error))
             return
         offer = message.offer
         if offer is None:
             status.set(activity="simulation cancelled before its first rollout")
             return
         latest = live.runner.latest_view()
-        if latest is None or not _shows(latest, offer):
+        if latest is None or not offer.searched(latest.scene, latest.timeline):
             status.set(activity="simulation discarded: the machine changed while it searched (g searches again)")
             return
         self._simulating = live.submit(offer)
@@ -137,64 +150,54 @@ class BackgroundWork(Screen[None]):
             self._simulating = None
             status.set(activity=self._simulated if view.search is not None else "")
 
-    def on_search_bar_cancel(self, message: SearchBar.Cancel) -> None:
-        self.action_cancel()
-
     # -- export --------------------------------------------------------------------------------------------------
 
-    def action_export(self) -> None:
-        view = self.view
+    def export(self) -> None:
+        view, screen = self._host.view, self._screen
         if view is None or view.timeline is None or not view.timeline.events:
-            self.notify("nothing demonstrated to export yet", severity="warning")
+            screen.notify("nothing demonstrated to export yet", severity="warning")
             return
-        self._export(view, storage.exports_dir(), self.query_one(StatusBar))
+        screen.run_worker(partial(self._export, view, storage.exports_dir(), screen.query_one(StatusBar)),
+                          thread=True, exclusive=True, exit_on_error=False, group="export",
+                          description="export video")
 
-    @work(thread=True, exclusive=True, exit_on_error=False, group="export", description="export video")
     def _export(self, view: SessionView, folder: Path, status: StatusBar) -> None:
         from textual.worker import get_current_worker
 
         from physink_tui.render.export import Export, Look
 
-        worker = get_current_worker()
+        worker, app = get_current_worker(), self._screen.app
         folder.mkdir(parents=True, exist_ok=True)
         path = storage.new_journal_path(folder).with_suffix("").with_suffix(".mp4")
 
         def progress(done: int, total: int) -> None:
             if worker.is_cancelled:
                 raise _Cancelled
-            self.app.call_from_thread(status.set, activity=f"exporting {done}/{total} frames")
+            app.call_from_thread(status.set, activity=f"exporting {done}/{total} frames")
 
         try:
-            Export(view.scene, view.timeline, self.canvas, Look(width=960, height=600)).video(path, progress)
+            Export(view.scene, view.timeline, self._host.canvas, Look(width=960, height=600)).video(path, progress)
         except _Cancelled:
-            self.app.call_from_thread(status.set, activity="export cancelled")
+            app.call_from_thread(status.set, activity="export cancelled")
             return
         except PhysinkError as exc:
-            self.app.call_from_thread(self.app.push_screen, ErrorModal("Cannot export", str(exc)))
+            app.call_from_thread(app.push_screen, ErrorModal("Cannot export", str(exc)))
             return
-        self.app.call_from_thread(status.set, activity=f"exported {path}")
+        app.call_from_thread(status.set, activity=f"exported {path}")
 
     # -- both ----------------------------------------------------------------------------------------------------
 
-    def action_cancel(self) -> None:
+    def cancel(self) -> None:
         """Escape: stop the search (its best so far goes to the session) and the export."""
         if self.job is not None and not self.job.stopped:
             self.job.stop()
-            self.query_one(StatusBar).set(activity="stopping the search after the rollout under way…")
-        self.workers.cancel_group(self, "export")
+            self._screen.query_one(StatusBar).set(activity="stopping the search after the rollout under way…")
+        self._screen.workers.cancel_group(self._screen, "export")
 
-    def stop_workers(self) -> None:
+    def stop(self) -> None:
         """Quitting: the search and the export stop, and nothing they did reaches the session."""
         job, self.job = self.job, None  # its end is then ignored
         if job is not None:
             job.stop()
-        self.workers.cancel_group(self, "export")
+        self._screen.workers.cancel_group(self._screen, "export")
 
-    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
-        return self.live.command(name, *args, project=project) if self.live is not None else None
-
-
-def _shows(view: SessionView, offer: Searched) -> bool:
-    """Whether ``view`` shows the document ``offer`` searched."""
-    return ((view.scene is offer.scene or view.scene == offer.scene)
-            and (view.timeline is offer.timeline or view.timeline == offer.timeline))

@@ -1,5 +1,5 @@
 """The main screen: scene, timeline tree, narration, buttons and status; turns keys, buttons, the mouse and the
-tablet into journal entries for the live session; the blocking work (SIMULATE, export) is `background`'s.
+tablet into journal entries for the live session; the blocking work (SIMULATE, export) is its `BackgroundWork`'s.
 
 It keeps no state of the machine: what it shows comes from the latest `SessionView`, what it does goes to the
 session as an entry, so the session's journal rebuilds everything. The project path, the recording status and
@@ -12,7 +12,7 @@ import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar
+from typing import Any, ClassVar, Protocol, cast
 
 from textual import events, work
 from textual.app import ComposeResult
@@ -20,19 +20,24 @@ from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.message import Message
+from textual.screen import Screen
 from textual.widgets import Static
+from textual.worker import Worker, WorkerState
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.formats.project.files import save_project
+from physink_tui.formats.project.sanity import check_project
+from physink_tui.session.simulation import SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
+from physink_tui.tui.config import Config
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
-from physink_tui.tui.screens.background import BackgroundWork
+from physink_tui.tui.screens.background import BackgroundWork, SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
@@ -63,7 +68,19 @@ class SpeechStatus(Message):
     text: str
 
 
-class MainScreen(BackgroundWork):
+class PanelApp(Protocol):
+    """What the screen needs of its app (`app.PhysinkApp`, which imports this module) besides Textual's `App`."""
+
+    config: Config
+
+    def failed(self, error: BaseException, what: str) -> None: ...
+
+    def mark_saved(self, view: SessionView) -> None: ...
+
+    def adopt_settings(self, config: Config | None) -> None: ...
+
+
+class MainScreen(Screen[None]):
     """The control panel."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
@@ -104,6 +121,13 @@ class MainScreen(BackgroundWork):
         self._simulate_after = False  # SIMULATE once the replay is done
         self.talk: PushToTalk | None = None
         self._barrel = False
+        self.background = BackgroundWork(self, self)
+        """SIMULATE and export, in worker threads."""
+
+    @property
+    def panel_app(self) -> PanelApp:
+        """The app, as `PanelApp` (Textual types ``self.app`` as any `App`)."""
+        return cast(PanelApp, self.app)
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
@@ -168,7 +192,7 @@ class MainScreen(BackgroundWork):
         if barrel_held(view.pens) != self._barrel and self.talk is not None:
             self._barrel = self.talk.button_pressed = not self._barrel  # holding the barrel button: push-to-talk
             self._follow_button(self._labels(view))
-        self.simulated(view, status)
+        self.background.simulated(view, status)
         status.show(view)
 
     def on_device_status(self, message: DeviceStatus) -> None:
@@ -178,12 +202,31 @@ class MainScreen(BackgroundWork):
             self.query_one(StatusBar).set(activity="replay done: you are in control")
             if self._simulate_after:
                 self._simulate_after = False
-                self.set_timer(0.5, self._simulate_replayed)  # once the session has handled the last entries
+                self._simulate_once_handled()
+
+    def _simulate_once_handled(self) -> None:
+        """SIMULATE once the session has handled the replay's last entry (its view's time has reached the entry's
+        stamp), however long that takes."""
+        feed = self.live.feed if self.live is not None else None
+        view = self.live.runner.latest_view() if self.live is not None else None
+        if feed is None or feed.last_t is None or (view is not None and view.t >= feed.last_t):
+            self._simulate_replayed()
+        else:
+            self.set_timer(0.05, self._simulate_once_handled)
 
     def _simulate_replayed(self) -> None:
         self.action_simulate()
-        if self.job is not None:
+        if self.background.job is not None:
             self.query_one(StatusBar).set(activity="replay done: you are in control; simulating (escape stops it)")
+
+    def on_search_progressed(self, message: SearchProgressed) -> None:
+        self.background.progressed(message)
+
+    def on_search_finished(self, message: SearchFinished) -> None:
+        self.background.finished(message)
+
+    def on_search_bar_cancel(self, message: SearchBar.Cancel) -> None:
+        self.background.cancel()
 
     def on_speech_status(self, message: SpeechStatus) -> None:
         self.query_one(StatusBar).set(speech=message.text)
@@ -197,7 +240,7 @@ class MainScreen(BackgroundWork):
     @staticmethod
     def _labels(view: SessionView | None) -> list[str]:
         """The labels speech listens for: the components' in ``view``."""
-        return [] if view is None else [c.label for c in view.scene.components.values() if getattr(c, "label", None)]
+        return [] if view is None else list(view.scene.labels().values())
 
     @work(thread=True, group="speech")
     def _toggle_talk(self, labels: list[str]) -> None:
@@ -226,6 +269,11 @@ class MainScreen(BackgroundWork):
         if self.view is not None and self.view.mode != "demo":
             self._command("mode", "demo")
         self._command("seek", round(t, 6))
+
+    def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
+        """A worker that died on a bug (SIMULATE, export: ``exit_on_error=False``) is said, never silent."""
+        if event.state == WorkerState.ERROR and event.worker.error is not None:
+            self.panel_app.failed(event.worker.error, event.worker.description or event.worker.name)
 
     async def on_controls_action(self, message: Controls.Action) -> None:
         await self.run_action(message.name)
@@ -287,17 +335,18 @@ class MainScreen(BackgroundWork):
         self.app.push_screen(TextScreen("Timeline", text))
 
     def action_settings(self) -> None:
-        config = self.app.config  # type: ignore[attr-defined]
+        config = self.panel_app.config
         self.app.push_screen(SettingsScreen(config, self.query_one(SceneView).canvas_cells),
-                             self.app.adopt_settings)  # type: ignore[attr-defined]
+                             self.panel_app.adopt_settings)
 
     def set_theme(self, theme: str) -> None:
         self.theme_name = theme
         self.query_one(SceneView).set_theme(theme)
 
     def action_adopt(self) -> None:
-        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's: one
-        journaled ``load`` with the project embedded, so it is undoable and a replay rebuilds it."""
+        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's and the
+        demonstration it was found for kept beside it (for comparing them again): one journaled ``load`` with the
+        project embedded, so it is undoable and a replay rebuilds it."""
         view = self.view
         if view is None or view.search is None or self.live is None:
             self.notify("nothing to adopt: simulate first (g)", severity="warning")
@@ -305,18 +354,35 @@ class MainScreen(BackgroundWork):
         search = view.search
         try:
             scene = apply(view.scene, search.parameters)
-            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas))
+            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas,
+                                          view.timeline))
         except PhysinkError as exc:
             self.app.push_screen(ErrorModal("Cannot adopt the simulation", str(exc)))
             return
         self._command("load", "simulation", project=json.loads(text))
         if not search.found:
-            self.notify("adopted the best simulation found, which is not equivalent to the demonstration "
-                        "(undo with u)", severity="warning")
+            self.notify("adopted the best simulation found, which is not equivalent to the demonstration up to its "
+                        "last event (undo with u)", severity="warning")
+
+    def action_simulate(self) -> None:
+        self.background.simulate()
+
+    def action_export(self) -> None:
+        self.background.export()
+
+    def action_cancel(self) -> None:
+        self.background.cancel()
+
+    def stop_workers(self) -> None:
+        """Quitting: the search and the export stop, and nothing they did reaches the session."""
+        self.background.stop()
+
+    def _command(self, name: str, *args: str | float, project: dict[str, Any] | None = None) -> SessionInput | None:
+        return self.live.command(name, *args, project=project) if self.live is not None else None
 
     def action_help(self) -> None:
         self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),
-                                         b.description) for b in self.BINDINGS))
+                                         b.description) for b in self.BINDINGS if isinstance(b, Binding)))
 
     # -- files ---------------------------------------------------------------------------------------------------
 
@@ -328,7 +394,8 @@ class MainScreen(BackgroundWork):
         view = self.view if self.live is None else self.live.runner.latest_view()
         if not path or view is None or self.live is None:
             return
-        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas)
+        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas,
+                          view.demonstration)
         try:
             save_project(project, path)
         except PhysinkError as exc:
@@ -336,7 +403,7 @@ class MainScreen(BackgroundWork):
             return
         self.project_path = path
         self._command("save", os.path.abspath(path))
-        self.app.mark_saved(view)  # type: ignore[attr-defined]
+        self.panel_app.mark_saved(view)
         self.notify(f"saved {path}")
 
     def action_load(self) -> None:
@@ -348,8 +415,8 @@ class MainScreen(BackgroundWork):
         try:
             with open(path, "rb") as f:
                 text = f.read().decode("utf-8")
-            decode_project(text, path)
-            obj = json.loads(text)
+            check_project(decode_project(text, path), path)
+            obj = json.loads(text.removeprefix("\ufeff"))
         except (OSError, UnicodeDecodeError) as exc:
             self.app.push_screen(ErrorModal("Cannot load", f"{path}: {exc}"))
             return
