@@ -68,7 +68,8 @@ The thresholds (`pocketsphinx_backend.THRESHOLD`, `MIN_CONFIDENCE`, `MIN_MARGIN`
 thresholds chosen on the other three, and shipped among those that keep issue 16's fixtures (`tests/speech/`, made
 by `scripts/make_speech_fixtures.py`) at their test's floor; `GARBAGE_WEIGHT` 0.01 and `vosk_backend.THRESHOLD` 0.65
 are issue 16's. `benchmarks/bench_speech.py` measures the fixtures' accuracy and real-time factors
-(docs/BENCHMARKS.md); `tests/test_speech_voices.py` hears a sample of every family, made at test time. The journal's `t` never decreases, so a live `say` is stamped with the time the utterance
-began only where no later entry has been stamped yet (`StampingInbox.put(entry, at=)`); otherwise it is stamped when
-it arrives.
+(docs/BENCHMARKS.md); `tests/test_speech_voices.py` hears a sample of every family, made at test time.
+
+The journal's `t` never decreases, so a live `say` is stamped with the time the utterance began only where no later
+entry has been stamped yet (`StampingInbox.put(entry, at=)`); otherwise it is stamped when it arrives.
 """
