@@ -60,7 +60,8 @@ def meaning(command: dict | None) -> tuple | None:
     return None if command is None else tuple(sorted((k, v) for k, v in command.items() if k != "text"))
 
 
-def decode(folder: Path, cache: Path, shard: tuple[int, int] = (0, 1), every: int = 1) -> None:
+def decode(folder: Path, cache: Path, shard: tuple[int, int] = (0, 1), every: int = 1,
+           done: frozenset[str] = frozenset()) -> None:
     """One row per recording (of shard ``i`` of ``n``: every n-th from the i-th) into ``cache``: what it must give,
     what the recogniser heard and its confidences (checks off)."""
     recogniser = make_recogniser()
@@ -70,7 +71,7 @@ def decode(folder: Path, cache: Path, shard: tuple[int, int] = (0, 1), every: in
     listener = Listener(recogniser, manifest["labels"])
     with cache.open("w") as out:
         for n, (item, samples) in enumerate(corpus.load(folder, shard)):
-            if n % every:
+            if n % every or item.id in done:
                 continue
             u = listener.hear(samples)
             d = u.decoded
@@ -274,13 +275,19 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--corpus", type=Path, default=corpus.DEFAULT_DIR)
     parser.add_argument("--redecode", action="store_true", help="decode again even when decoded rows are cached")
     parser.add_argument("--every", type=int, default=1, help="decode every N-th recording only (quick looks)")
+    parser.add_argument("--rest", action="store_true", help="decode only what no cached shard has (a second file)")
     parser.add_argument("--shard", default="0/1", help="decode only shard I/N (run N at once on N cores), no report")
     parser.add_argument("--budget", type=float, default=0.005, help="wrong commands allowed while calibrating")
     parser.add_argument("--write", type=Path, help="replace the marked section of this Markdown file")
     args = parser.parse_args(argv)
     i, n = map(int, args.shard.split("/"))
-    cache = args.corpus / f"decoded-{i}of{n}.jsonl"
-    if args.redecode or not list(args.corpus.glob("decoded-*.jsonl")):
+    cache = args.corpus / f"decoded-{i}of{n}{'-rest' if args.rest else ''}.jsonl"
+    if args.rest:
+        done = frozenset(r["id"] for r in load_rows(args.corpus))
+        decode(args.corpus, cache, (i, n), args.every, done)
+        if n > 1:
+            return 0
+    elif args.redecode or not list(args.corpus.glob("decoded-*.jsonl")):
         decode(args.corpus, cache, (i, n), args.every)
         if n > 1:
             return 0
