@@ -17,6 +17,9 @@ posterior, `Decoded.margin` to the best rival sentence), then:
     nice -n 10 .venv/bin/python benchmarks/bench_speech_corpus.py --redecode --shard 1/2; wait
     .venv/bin/python benchmarks/bench_speech_corpus.py [--corpus DIR] [--write docs/BENCHMARKS.md]
 
+``--every N`` decodes every N-th recording only (a quick look); ``--rest --shard I/N`` later decodes what the cached
+shards lack, into files of its own, so a corpus can be decoded in parts.
+
 Commands are compared by what they mean (kind, names, verb, prepositions), not by whether "the" was said.
 """
 
