@@ -14,7 +14,7 @@ account, device ``mouse``, label from the file name (spellings unified, see `LAB
 
 Copies of the original $1 logs (Wobbrock et al. 2007), reserved for independent measurement, are refused: a file
 dated before 2010, or whose points equal a stroke of ../shared/data/strokes/dollar1-dev.jsonl, stops the script
-with its name. Repositories found to hold such copies were left out of `REPOS` (BENCHMARKS.md names them).
+with its name. Repositories found to hold such copies were left out of `REPOS` (SOURCES.md names them).
 """
 
 from __future__ import annotations
