@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import gc
 import math
 import sys
 from collections.abc import Callable
@@ -129,17 +128,11 @@ def stream_decode(capture: CaptureColumns, write: Callable[[PenColumns, TextIO],
 
 
 def run(args: argparse.Namespace) -> int:
-    collecting = gc.isenabled()
-    gc.disable()  # arrays, byte strings and lists that make no cycles: the collector would only walk them
-    try:
-        capture = read_capture_columns(args.file)
-        if args.format == "jsonl":
-            results = stream_decode(capture, write_jsonl, sys.stdout)
-        else:
-            results = stream_decode(capture, _write_text_rows, sys.stdout, TEXT_HEADER + "\n")
-    finally:
-        if collecting:
-            gc.enable()
+    capture = read_capture_columns(args.file)
+    if args.format == "jsonl":
+        results = stream_decode(capture, write_jsonl, sys.stdout)
+    else:
+        results = stream_decode(capture, _write_text_rows, sys.stdout, TEXT_HEADER + "\n")
     sys.stdout.flush()
     print(summary(capture, results), file=sys.stderr)
     return 0
