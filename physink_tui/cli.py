@@ -2,7 +2,7 @@
 
 Every subcommand of the DESIGN.md table is parsed here. A built subcommand names its ``module:function`` in
 ``HANDLERS`` and is imported only when run, so ``physink --help`` never loads Textual, numpy or a device
-library. A subcommand not built yet names its plan in ``PLANNED`` and exits 2 with one line saying so.
+library. A subcommand whose module is missing exits 2 with one line saying so.
 
 Exit status: 0 success, 1 a user error (a ``PhysinkError``, printed as one line), 2 bad usage or a subcommand
 not available yet, 130 interrupted. A reader that closes stdout early (``| head -1``) only ends the printing:
@@ -22,6 +22,7 @@ from collections.abc import Callable, Sequence
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.outputs import StdoutGuard
+from physink_tui.render.limits import MAX_FPS, MAX_SIDE, MIN_SIDE
 
 PROG = "physink"
 
@@ -46,14 +47,8 @@ HANDLERS: dict[str, str] = {
     "kiosk": "physink_tui.commands.kiosk:run",
 }
 
-#: Subcommands not built yet: name -> where they are planned (shown to the user as is).
-PLANNED: dict[str, str] = {}
 
 
-MIN_SIDE, MAX_SIDE = 16, 7680
-"""Picture sides a renderer draws (pixels)."""
-MAX_FPS = 120
-"""The most video frames a second."""
 
 
 def _whole(text: str, low: int, high: int, expected: str) -> int:
@@ -295,12 +290,10 @@ def _resolve(target: str) -> Callable[[argparse.Namespace], int] | None:
 
 def _dispatch(args: argparse.Namespace) -> int:
     command = args.command
-    if command in HANDLERS:
-        run = _resolve(HANDLERS[command])
-        if run is None:
-            return _not_available(command, f"{HANDLERS[command].partition(':')[0]} is not written yet")
-        return run(args)
-    return _not_available(command, f"planned in {PLANNED[command]}")
+    run = _resolve(HANDLERS[command])
+    if run is None:
+        return _not_available(command, f"{HANDLERS[command].partition(':')[0]} is not written yet")
+    return run(args)
 
 
 def entry() -> None:
@@ -321,7 +314,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 0
         return exc.code if isinstance(exc.code, int) else EXIT_USAGE
     guard = StdoutGuard(sys.stdout)
-    sys.stdout = guard  # type: ignore[assignment]
+    sys.stdout = guard
     try:
         status = _dispatch(args)
     except PhysinkError as exc:

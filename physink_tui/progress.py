@@ -15,7 +15,7 @@ REDRAW_INTERVAL = 0.1
 class Progress(Protocol):
     """Told how far a long task has come: ``done`` of ``total`` units, called from the task's own thread."""
 
-    def __call__(self, done: int, total: int) -> None: ...
+    def __call__(self, done: int, total: int, /) -> None: ...
 
 
 class ProgressBar:

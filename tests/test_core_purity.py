@@ -102,3 +102,17 @@ def test_core_source_reads_no_clock_and_does_no_io() -> None:
     assert files, "no core source found"
     found = [use for path in files for use in io_uses(path.read_text(), str(path.relative_to(REPO)))]
     assert found == [], "the core must get time and data from its inputs:\n" + "\n".join(found)
+
+
+def pymunk_reaches(source: str, where: str = "<source>") -> list[str]:
+    """Where ``source`` reaches the pymunk objects behind a `World` (``.pymunk_parts``, kept for tests)."""
+    return [f"{where}:{node.lineno}: .pymunk_parts" for node in ast.walk(ast.parse(source))
+            if isinstance(node, ast.Attribute) and node.attr == "pymunk_parts"]
+
+
+def test_only_the_physics_layer_reaches_the_pymunk_objects_behind_a_world() -> None:
+    assert pymunk_reaches("x = world.pymunk_parts.space\n") == ["<source>:1: .pymunk_parts"]
+    physics = PACKAGE / "scene" / "physics"
+    files = sorted(path for path in PACKAGE.rglob("*.py") if physics not in path.parents)
+    found = [use for path in files for use in pymunk_reaches(path.read_text(), str(path.relative_to(REPO)))]
+    assert found == [], "ask World its questions (pymunk is scene.physics' alone):\n" + "\n".join(found)

@@ -46,8 +46,6 @@ EVERY = 4
 """Interpretation tests take every 4th stroke of a label (23 of 90, all three people, all speeds)."""
 KNOWN_FAILING: dict[str, str] = {
     "s02/fast/circle01.xml": "recognised as a curve, so it becomes a rope (since 08e5de4; a circle before)",
-    "s03/fast/circle03.xml": "scaled to 272 px it becomes a 6-corner polygon body (since 08e5de4; a circle before, "
-                             "and still one at its own size)",
 }
 """People's strokes that the interpretation tests below get wrong today (file -> what happens). They run as strict
 xfails: a fix turns them red; delete the entry then."""

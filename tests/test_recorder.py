@@ -135,6 +135,63 @@ def test_moving_a_stopper_away_from_a_ball_resting_on_it_is_an_end_contact_that_
     assert len(ball_moves) == 1 and ball_moves[0].causes == (end.id,) and len(ball_moves[0].trajectory) > 15
 
 
+def test_the_physics_reporting_a_pair_that_began_in_contact_is_no_contact_unless_one_drives_into_the_other() -> None:
+    # figure 3-9 as a session sees it: the ball drawn 2 px into the stopper, the overlap resolved on the first step
+    # (a contact report), the stopper grazing the ball as it slides out (another): the start names the pair, and
+    # the only event between them is the end-contact
+    outlines = {"ball": box("ball", 20, 20), "stopper": box("stopper", 60, 20)}
+    recorder = Recorder(outlines, frozenset(outlines), initial_pairs=frozenset({frozenset(outlines)}))
+    run = Run(recorder)
+    graze = ContactRecord(0, "ball", "stopper", (100, 90), (0.0, 1.0))
+    for k in range(1, 40):
+        run.step({"ball": moving(100, 80, 0, -12 if k < 3 else 0), "stopper": moving(100 + 3 * k, 100, 360, -3)},
+                 [graze] if k in (1, 5) else [], grabbed="stopper", touching=[("ball", "stopper")] if k < 20 else [])
+    timeline = run.timeline
+    assert timeline.events[0].in_contact == (("ball", "stopper"),)
+    assert [e.type for e in timeline.events if e.type in ("contact", "end_contact")] == ["end_contact"]
+    assert [e.components[0] for e in timeline.events if e.type == "movement"] == ["stopper", "stopper", "ball"]
+
+
+def test_a_body_driving_into_the_one_it_began_in_contact_with_makes_a_contact() -> None:
+    # the cup dispenser: the cup stands on the platform from the start; pressed down, it carries the platform
+    outlines = {"cup": box("cup", 20, 20), "platform": box("platform", 100, 10)}
+    recorder = Recorder(outlines, frozenset(outlines), initial_pairs=frozenset({frozenset(outlines)}))
+    run = Run(recorder)
+    for k in range(10):
+        run.step({"cup": moving(100, 85 + k, 0, 120), "platform": moving(100, 100 + k, 0, 120 if k else 0)},
+                 grabbed="cup", touching=[("cup", "platform")])
+    contact = next(e for e in run.timeline.events if e.type == "contact")
+    assert contact.components == ("cup", "platform") and dict(contact.sides) == {"cup": "bottom", "platform": "top"}
+    assert any(e.components[:1] == ("platform",) and e.causes == (contact.id,) for e in run.timeline.events)
+    assert not [e for e in run.timeline.events if e.type == "end_contact"]
+
+
+def test_a_stopper_lifting_a_ball_that_rests_near_its_end_drives_into_it() -> None:
+    # pushed up across their contact, not along the line between their centres (which runs mostly sideways)
+    outlines = {"ball": box("ball", 20, 20), "stopper": box("stopper", 240, 40)}
+    recorder = Recorder(outlines, frozenset(outlines), initial_pairs=frozenset({frozenset(outlines)}))
+    run = Run(recorder)
+    for k in range(1, 6):
+        y = 100 - 100 * k / 120
+        run.step({"ball": moving(210, y - 30, 0, -100 if k > 1 else 0), "stopper": moving(100, y, 0, -100)},
+                 grabbed="stopper", touching=[("ball", "stopper")])
+    contact = next(e for e in run.timeline.events if e.type == "contact")
+    assert contact.components == ("stopper", "ball") and dict(contact.sides) == {"stopper": "top", "ball": "bottom"}
+
+
+def test_a_pair_drawn_a_few_units_apart_parts_only_once_further_apart_than_it_began() -> None:
+    outlines = {"ball": box("ball", 20, 20), "stopper": box("stopper", 60, 20)}
+    recorder = Recorder(outlines, frozenset(outlines), initial_pairs=frozenset({frozenset(outlines)}))
+    run = Run(recorder)
+    for k in range(1, 8):  # 5 units apart as drawn; lifted 3 units more: still in contact
+        run.step({"ball": moving(100, 75 - 0.5 * k, 0, -60), "stopper": still(100, 100)}, grabbed="ball")
+    assert not [e for e in run.timeline.events if e.type == "end_contact"]
+    for k in range(8, 12):
+        run.step({"ball": moving(100, 75 - 0.5 * k, 0, -60), "stopper": still(100, 100)}, grabbed="ball")
+    (end,) = [e for e in run.timeline.events if e.type == "end_contact"]
+    assert run.timeline.event(end.causes[0]).components[0] == "ball"
+
+
 def test_a_body_pushed_by_a_moving_body_it_touches_is_moved_by_a_contact() -> None:
     recorder = Recorder({"cup": box("cup", 20, 20), "platform": box("platform", 100, 10)},
                         frozenset({"cup", "platform"}))

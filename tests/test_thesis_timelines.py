@@ -6,7 +6,8 @@ end-contact (section 4.3) and the golf ball helper's chain (section 4.2); and ea
 from __future__ import annotations
 
 import pytest
-from scenarios.make_journals import journal_path
+from scenarios.bouncing import all_scenarios as bouncing_scenarios
+from scenarios.make_journals import journal_path, replayed
 from scenarios.thesis import PINBALL_EDIT_T, all_scenarios
 from test_thesis_scenarios import session_over
 
@@ -187,3 +188,17 @@ def test_a_demonstration_replays_to_identical_timeline_files(name: str, tmp_path
     for file in ("timeline.json", "timeline.txt", "project.json"):
         assert (tmp_path / "a" / file).read_bytes() == (tmp_path / "b" / file).read_bytes(), file
     assert (tmp_path / "a" / "timeline.txt").read_text().splitlines() == text_of(name)
+
+
+@pytest.mark.parametrize("scenario", [*all_scenarios(), *bouncing_scenarios()], ids=lambda s: s.name)
+def test_only_the_cup_dispenser_begins_with_movable_bodies_in_contact(scenario) -> None:
+    # figure 3-9's rule on the thirteen journals: the cup drawn into its platform and the peg into the platform's
+    # side, both pushed flush, begin in contact; nothing else does (the egg is drawn above its paddles)
+    session = replayed(scenario.name, journal_path(scenario))
+    (start,) = [e for e in session.timeline.events if e.type == "start"]
+    names = session.scene.names()
+    pairs = {frozenset(names[c] for c in pair) for pair in start.in_contact}
+    cup = scenario.name == "cup_dispenser"
+    assert pairs == ({frozenset({"platform", "cup"}), frozenset({"platform", "peg"})} if cup else set())
+    ended = {frozenset(names[c] for c in e.components) for e in session.timeline.events if e.type == "end_contact"}
+    assert ended == ({frozenset({"platform", "peg"})} if cup else set())

@@ -16,6 +16,7 @@ from physink_tui.formats.timeline_json import timeline_object
 from physink_tui.session.session import Session
 from physink_tui.tui.screens.background import SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import ConfirmModal
+from physink_tui.tui.widgets.bars import NarrationBar
 from physink_tui.tui.widgets.scene_view import SceneView
 from physink_tui.tui.widgets.search_bar import SearchBar
 from tests.tui_helpers import SIZE, click, tui_app, until, until_app
@@ -192,6 +193,8 @@ def test_equiv_up_to_demonstrated_of_the_adopted_project_agrees_with_what_the_tu
             await pilot.press("g")
             found = await until(pilot, lambda v: v.search is not None and any(
                 m.text.startswith("simulation found in") for m in v.messages), timeout=60)
+            bar = app.main.query_one(NarrationBar)  # the narration says it in the same words
+            await until_app(pilot, lambda: "equivalent up to the last demonstrated event" in bar.text)
             await pilot.press("a")
             adopted = await until(pilot, lambda v: v.messages[-1].text.startswith("loaded simulation"))
         return before, found, adopted

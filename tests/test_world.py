@@ -490,3 +490,27 @@ def test_a_frozen_body_can_be_dragged_and_thaws_with_the_others() -> None:
     assert world.is_dynamic("b2")
     world.step(10)
     assert world.pose("b2")[1] > y
+
+
+# -- the questions a simulation asks (it never touches the pymunk space) -----------------------------------------
+
+
+def test_the_world_answers_half_size_damping_sleep_and_the_contact_between_two_bodies() -> None:
+    world = World.from_scene(scene(box("floor", 500.0, 600.0, 800.0, 40.0), weld("j1", "floor", (500.0, 600.0)),
+                                   ball("b2", 500.0, 555.0), ball("b3", 200.0, 100.0)))
+    assert world.half_size("floor") == pytest.approx(20.0)  # its thinnest side is 40 units
+    assert world.half_size("b2") == pytest.approx(25.0)
+    assert world.half_size(BACKGROUND) == math.inf  # no shapes
+    world.damping = 0.25
+    assert world.damping == 0.25
+    world.step(60)  # the ball drawn 5 units above the floor comes to rest on it
+    record = world.contact_between("b2", "floor", world.steps)
+    assert record is not None and (record.a_id, record.b_id, record.step) == ("b2", "floor", world.steps)
+    assert record.normal[1] == pytest.approx(1.0, abs=1e-6)  # from the ball down into the floor
+    assert world.contact_between("b3", "floor", world.steps) is None  # b3 is still falling, far above
+    world.hold_until_touched({"b3"})
+    world.step()
+    assert world.is_asleep("b2") and not world.is_asleep("b3")
+    before = world.pose("b2")
+    world.step(30)
+    assert world.pose("b2") == before  # asleep: gravity does not move it

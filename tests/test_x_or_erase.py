@@ -20,6 +20,7 @@ from xerase_drawings import (
 )
 
 from physink_tui.formats.journal.entries import CommandEntry, PenEntry
+from physink_tui.formats.session_outputs import session_output_texts
 from physink_tui.scene.components import BACKGROUND, Body, Joint
 from physink_tui.session.modes.sketch import X_WAIT
 from physink_tui.session.session import Session
@@ -111,3 +112,25 @@ def test_each_stroke_tells_what_it_made() -> None:
     assert isinstance(session.scene.components["b1"], Body)
 
 
+
+
+@pytest.mark.parametrize("pen", PENS)
+def test_the_x_window_is_read_from_the_journals_times(pen: str, tmp_path) -> None:
+    """The same two arms 1.3 s apart make an X; 1.8 s apart the first has erased the platform by the time the
+    second lands. The live session and the replay of its journal agree on both, to the byte."""
+    rng = random.Random(f"window:{pen}")
+    arm = 0.1 * DIAGONAL
+    first, second = x_segments(rng, PLATFORM_CENTRE, arm)
+    outcomes = {}
+    for gap in (1.3, 1.8):
+        header, entries = journal(pen, 5, 12.0, platform_length(arm), [first, second], gap)
+        live = Session.from_header(header).run(entries)
+        folder = tmp_path / f"{gap}"
+        folder.mkdir()
+        _, told = replayed_project(header, entries, folder)
+        assert (folder / "out" / "project.json").read_text() == session_output_texts(
+            live.scene, live.timeline, live.canvas, live.vocabulary_lines())["project.json"]
+        outcomes[gap] = [m.text for m in live.messages if m.kind == "outcome"]
+        assert all(f"told          {text}" in told for text in outcomes[gap]), (outcomes[gap], told)
+    assert outcomes[1.3][-1] == "X → platform b1 fixed", outcomes
+    assert outcomes[1.8][1] == "erased platform b1 — u to undo", outcomes

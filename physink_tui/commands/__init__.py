@@ -1,1 +1,10 @@
-"""One module per ``physink`` subcommand, each a ``run(args) -> int`` driving the session; cli parses."""
+"""One module per ``physink`` subcommand, each a ``run(args) -> int`` driving the session; cli parses.
+
+Reachable from the command line today: `physink decode`, `devices`, `record`, `recognize`, `replay` (captures to
+gestures; journals through the whole session, `--ticks HZ` to advance the clock between inputs as a live driver
+does, `--video --frames` to draw the demonstration), `timeline`, `equiv`, `export`, `demo`, `simulate`, `kiosk`,
+`tui` and `listen`, through `physink_tui/commands/` (`demo` on a terminal and `tui` open the Textual app): every
+subcommand of the DESIGN.md table is built (one whose module is missing says `physink <command>: not available yet
+(… is not written yet)` on stderr and exits 2). `physink replay` of a capture runs only the input side (`PenInput`,
+no session).
+"""

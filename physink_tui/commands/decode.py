@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TextIO
 
 from physink_tui.commands.decode_jsonl import format_jsonl
@@ -90,7 +90,8 @@ def _write_text_rows(cols: PenColumns, out: TextIO) -> None:
         )
 
 
-def summary(capture: Capture | CaptureColumns, results: list[tuple[int, HidPenDecoder, PenColumns | None]]) -> str:
+def summary(capture: Capture | CaptureColumns,
+            results: Sequence[tuple[int, HidPenDecoder, PenColumns | None]]) -> str:
     """The stderr summary: per device, reports read, samples, ignored by reason, first bad line."""
     lines = []
     for index, decoder, _ in results:

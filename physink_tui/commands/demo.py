@@ -34,6 +34,9 @@ from physink_tui.session.session import Session
 from physink_tui.timeline.narrate import timeline_text
 
 CANVAS = (1600.0, 1000.0)
+MAPPING = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=TABLET_ASPECT,
+                        tablet_height=1.0)
+"""The bundled tablet's active area on the canvas (its proportions, the whole area used)."""
 JOURNAL = "session.physink.jsonl"
 
 PLURAL = {"body": "bodies"}
@@ -53,13 +56,18 @@ def describe(session: Session) -> list[str]:
     return lines
 
 
-def demo_journal() -> tuple[JournalHeader, list[JournalEntry]]:
-    """The bundled session: the journal header of the demo capture and its entries merged with what is typed."""
-    capture = Capture.from_text(demo_capture_text(), path=f"<bundled {DEMO_FILE}>")
-    mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=TABLET_ASPECT,
-                            tablet_height=1.0)
-    entries = sorted([*capture_entries(capture), *demo_script()], key=lambda e: e.t)
-    return header_for_capture(capture, mapping), entries
+def bundled_capture() -> Capture:
+    """The bundled capture: the egg cracker drawn and then demonstrated with the virtual pen (`demo_data`)."""
+    return Capture.from_text(demo_capture_text(), path=f"<bundled {DEMO_FILE}>")
+
+
+def demo_journal(capture: Capture | None = None) -> tuple[JournalHeader, list[JournalEntry]]:
+    """The bundled session: the journal header of the demo capture (`bundled_capture` unless given) and its
+    entries merged by time with what is typed (stable: a report before a command of the same time)."""
+    capture = bundled_capture() if capture is None else capture
+    entries: list[JournalEntry] = [*capture_entries(capture), *demo_script()]
+    entries.sort(key=lambda e: e.t)
+    return header_for_capture(capture, MAPPING), entries
 
 
 def run(args: argparse.Namespace) -> int:
@@ -71,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
         return open_tui(TuiOptions(header=header, entries=tuple(entries), title="PhysInk demo", simulate_after=True))
     folder = OutputFolder.prepare(args.out)  # holds only this run's files
     out = folder.path
-    capture = Capture.from_text(demo_capture_text(), path=f"<bundled {DEMO_FILE}>")
+    capture = bundled_capture()
     results = decode_capture(capture)
     _, _, cols = results[0]
     samples = io.StringIO()
@@ -79,11 +87,9 @@ def run(args: argparse.Namespace) -> int:
     folder.write("samples.jsonl", samples.getvalue())
     folder.write("summary.txt", summary(capture, results) + "\n")
 
-    mapping = TabletMapping(canvas_width=CANVAS[0], canvas_height=CANVAS[1], tablet_width=TABLET_ASPECT,
-                            tablet_height=1.0)
     journal_path = out / JOURNAL
     try:  # prepare removed the last run's journal: a journal is never overwritten, the demo starts a fresh one
-        write_journal(journal_path, header_for_capture(capture, mapping), capture_entries(capture), demo_script())
+        write_journal(journal_path, *demo_journal(capture))
     except OSError as exc:
         raise PhysinkError(f"{journal_path}: cannot write: {reason(exc)}") from None
     journal = read_journal(journal_path)

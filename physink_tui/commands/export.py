@@ -23,12 +23,14 @@ from physink_tui.errors import PhysinkError
 from physink_tui.formats.atomic_write import write_text_atomic
 from physink_tui.formats.outputs import FRAME_FILE, check_outputs, prepare_frames_folder, reason
 from physink_tui.formats.project.files import load_project
+from physink_tui.formats.project.sanity import named
 from physink_tui.formats.timeline_dot import encode_timeline_dot
 from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.formats.timeline_text import encode_timeline_text
 from physink_tui.progress import ProgressBar
 from physink_tui.render.export import Export, Look
 from physink_tui.render.video_spec import CONTAINERS
+from physink_tui.scene.components import BACKGROUND
 
 TIMELINE_WRITERS = {".json": encode_timeline_json, ".txt": encode_timeline_text, ".dot": encode_timeline_dot}
 
@@ -61,6 +63,11 @@ def run(args: argparse.Namespace) -> int:
     _check_files(args)
     project = load_project(args.project)
     overlay = load_timeline(Path(args.overlay))[0] if args.overlay else None
+    for timeline, what in ((project.timeline, "the timeline"), (overlay, f"--overlay {args.overlay}")):
+        gone = sorted(named(timeline) - set(project.scene.components) - {BACKGROUND}) if timeline else []
+        if gone:
+            print(f"export: {what} names {', '.join(map(repr, gone))}, which the scene of {args.project} does not "
+                  "have: those are not drawn", file=sys.stderr)
     width, height = args.size
     export = Export(project.scene, project.timeline, project.canvas, Look(width, height, args.fps, args.theme),
                     overlay)

@@ -67,7 +67,8 @@ def mapping_for(device: JournalDevice, zones: HotZones) -> TabletMapping:
                          area=zones.area)
 
 
-def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource, JournalDevice, JournalHeader]:
+def _replay_source(path: str, speed: float, zones: HotZones,
+                   idle_s: float) -> tuple[PenSource, JournalDevice, JournalHeader]:
     try:
         capture = Capture.from_file(path)
     except OSError as exc:
@@ -77,7 +78,9 @@ def _replay_source(path: str, speed: float, zones: HotZones) -> tuple[PenSource,
     first = capture.devices[0]
     device = JournalDevice(DEVICE_ID, first.name, first.bus, first.vid, first.pid, first.descriptor)
     header = header_for_capture(Capture((first,), ()), mapping_for(device, zones))
-    return CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed), device, header
+    # a gap longer than --idle ends the session whatever its length: the replay does not wait it out in full
+    source = CaptureReplaySource(capture, DEVICE_ID, first.index, realtime=True, speed=speed, max_gap=idle_s + 1.0)
+    return source, device, header
 
 
 def _wait_for(open_fn: Callable[[], T], kiosk: Kiosk) -> T:
@@ -99,9 +102,11 @@ def _live_source(spec: str | None, zones: HotZones, kiosk: Kiosk) -> tuple[PenSo
     """Waits for the tablet (hot-plug), then a source that survives it being unplugged and plugged back."""
     reader = _wait_for(lambda: open_reader(spec, DEVICE_ID), kiosk)
     info = reader.info
-    if not info.descriptor:
+    if info is None or not info.descriptor:
         reader.stop()
-        raise DeviceError(f"{info.path}: its report descriptor is unknown, and a journal needs one")
+        where = (spec or DEVICE_ID) if info is None else info.path
+        raise DeviceError(f"{where}: its report descriptor is unknown (is it a tablet's hidraw node?), and a journal "
+                          "needs one")
     device = JournalDevice(DEVICE_ID, info.name or None, info.bus, info.vid, info.pid, info.descriptor)
     mapping = mapping_for(device, zones)
     thresholds = TipThresholds()
@@ -143,16 +148,18 @@ def run(args: argparse.Namespace) -> int:
         except ValueError as exc:
             print(f"physink kiosk: --max-disk: {exc}", file=sys.stderr)
             return 2
-    settings = KioskSettings(args.idle, args.keep, max_bytes, Look(*args.video_size, 30))
+    settings = KioskSettings(args.idle, args.keep, max_bytes, Look(args.video_size[0], args.video_size[1], 30))
     if args.speech and args.replay is not None and args.speed != 1.0:
         print("physink kiosk: --speech listens in real time, so a replay with it needs --speed 1", file=sys.stderr)
         return 2
     kiosk = Kiosk(SessionStore(args.out), zones, settings, log, stop)
     kiosk.recover()
-    ears = _ears(args, kiosk, kiosk.clock)  # a replay's clock is the capture's own (`Kiosk.run`)
+    if args.replay is not None:
+        kiosk.use_capture_clock()  # a replay's clock is the capture's own, the microphone's too
+    ears = _ears(args, kiosk, kiosk.clock)
     try:
         if args.replay is not None:
-            source, device, header = _replay_source(args.replay, args.speed, zones)
+            source, device, header = _replay_source(args.replay, args.speed, zones, args.idle)
             log(f"kiosk: replaying {args.replay} at {args.speed:g}x")
             return kiosk.run(source, device, header, replay=True)
         if args.serial:

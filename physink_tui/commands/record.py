@@ -25,7 +25,7 @@ from physink_tui.input.captures.writer import format_capture
 from physink_tui.input.hid.hidraw import BUS_USB, HidrawInfo
 from physink_tui.input.hid.readers import open_reader
 from physink_tui.input.hid.vendor_init import VendorInit, initialise_usb, needs_vendor_init
-from physink_tui.input.sources import RawReport, SourceEnded, SourceItem
+from physink_tui.input.sources import PenSource, RawReport, SourceEnded, SourceItem
 
 DEVICE_ID = "tablet0"
 EXIT_USAGE = 2
@@ -71,7 +71,7 @@ def vendor_initialise(info: HidrawInfo, err: TextIO) -> VendorInit | None:
     return init
 
 
-def record(reader: object, out_file: TextIO, items: queue.Queue[SourceItem]) -> tuple[int, SourceEnded | None]:
+def record(reader: PenSource, out_file: TextIO, items: queue.Queue[SourceItem]) -> tuple[int, SourceEnded | None]:
     """Writes every report the started ``reader`` puts on ``items`` until it ends or Ctrl-C; returns the count
     and the reader's end (None when interrupted). Stops the reader either way and writes what it had queued."""
     count = 0
@@ -99,7 +99,7 @@ def record(reader: object, out_file: TextIO, items: queue.Queue[SourceItem]) -> 
     except KeyboardInterrupt:
         pass
     finally:
-        reader.stop()  # type: ignore[attr-defined]
+        reader.stop()
         while True:  # reports read before the stop took effect
             try:
                 item = items.get_nowait()

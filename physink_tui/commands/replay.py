@@ -72,10 +72,10 @@ def replay_journal(path: Path, out_dir: str, vocabulary: Vocabulary | None, tick
                    pictures: Pictures | None = None) -> None:
     """Read the journal once, run it through the session (which decodes it, once) and write the gestures the
     session's input side found, DIR/project.json and, after a demonstration, the timeline."""
-    from physink_tui.input.journal_replay import decoder_notes, entry_line, pen_input_for
+    from physink_tui.input.journal_replay import decoder_notes, entry_line, logged_pen_input_for
 
     journal = read_journal(path)
-    pen = pen_input_for(journal.header, str(path), logged=True)
+    pen = logged_pen_input_for(journal.header, str(path))
     session = Session.from_header(journal.header)
     session.pen = pen
     if vocabulary is not None:

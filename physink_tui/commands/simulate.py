@@ -26,13 +26,15 @@ import time
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.outputs import OutputFolder, check_outputs
 from physink_tui.formats.project.files import load_project
+from physink_tui.formats.project.sanity import named
 from physink_tui.formats.session_outputs import write_session_outputs
 from physink_tui.progress import ProgressBar
+from physink_tui.scene.components import BACKGROUND
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
 from physink_tui.sim.evaluate import Problem, Score, compare_rollout, make_problem, simulate
 from physink_tui.sim.parameters import Parameters, apply
 from physink_tui.sim.search import Search
-from physink_tui.sim.verdict import verdict
+from physink_tui.sim.verdict import refusal_or_verdict
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
@@ -66,6 +68,10 @@ def _problem(path: str) -> tuple[Problem, tuple[str, ...]]:
         raise PhysinkError(f"{path}: no demonstration to reproduce ({what}): demonstrate the machine's behaviour "
                            "(demo mode) first")
     scene = project.scene
+    gone = sorted(named(project.timeline) - set(scene.components) - {BACKGROUND})
+    if gone:
+        raise PhysinkError(f"{path}: the demonstration moves {', '.join(map(repr, gone))}, which the scene does not "
+                           "have: demonstrate the machine again (or restore the body)")
     if not any(not scene.is_fixed(b.id) for b in scene.bodies()):
         raise PhysinkError(f"{path}: no movable body: draw a body that is not pinned or welded, and demonstrate "
                            "how it moves")
@@ -117,9 +123,7 @@ def run(args: argparse.Namespace) -> int:
     comparison = compare_rollout(problem, result, explain=True)
     score = search.best_score
     found = score is not None and not score.exploded and comparison.equivalent
-    text = verdict(problem, result.timeline, comparison, found=found,
-                   rollouts=search.rollouts - search.exploded if search.best is not None else 0,
-                   flagged=result.flagged)
+    text = refusal_or_verdict(search, problem, result, comparison, found=found)
     obj = {
         "found": found,
         "qualitative_distance": _n(comparison.qualitative_distance),

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import TYPE_CHECKING
 
 from physink_tui.commands.input_file import BOM, read_bytes, regular_copy, sniff
 from physink_tui.errors import PhysinkError
@@ -14,6 +15,9 @@ from physink_tui.formats.journal.reader import read_journal
 from physink_tui.input.captures.capture import Capture
 from physink_tui.input.journal_compose import capture_entries, header_for_capture
 from physink_tui.input.pen.mapping import TabletMapping
+
+if TYPE_CHECKING:  # (imported only when the TUI opens: the CLI starts without Textual)
+    from physink_tui.tui.app import TuiOptions
 
 CANVAS = (1600.0, 1000.0)
 """The canvas a replayed capture is drawn on (a journal names its own)."""
@@ -31,7 +35,7 @@ def recorded(path: str) -> tuple[JournalHeader, tuple[JournalEntry, ...]]:
     return journal.header, journal.entries
 
 
-def open_tui(options: object) -> int:
+def open_tui(options: TuiOptions) -> int:
     """Runs the app until the user quits; its exit status: 0, or 1 when it crashed (Textual has shown the
     traceback) or a bug stopped part of it (`PhysinkApp.failed`)."""
     if not (sys.stdout.isatty() and sys.stdin.isatty()):
@@ -40,9 +44,9 @@ def open_tui(options: object) -> int:
     from physink_tui.tui.app import make_app
     from physink_tui.tui.graphics import cell_pixels, choose
 
-    options.graphics = choose()  # type: ignore[attr-defined]  # before Textual owns the terminal
-    options.cell = cell_pixels()  # type: ignore[attr-defined]
-    app = make_app(options)  # type: ignore[arg-type]
+    options.graphics = choose()  # before Textual owns the terminal
+    options.cell = cell_pixels()
+    app = make_app(options)
     app.run()
     return app.return_code or 0
 

@@ -189,14 +189,17 @@ class OutputFolder:
         Raises:
             PhysinkError: a file cannot be renamed or an old output removed (path and cause named).
         """
-        for name, staging in self._staged.items():
+        staged = self._staged
+        if staged is None:
+            raise RuntimeError(f"{self.path}: commit() of a folder that stages nothing (see OutputFolder.staged)")
+        for name, staging in staged.items():
             try:
                 os.replace(staging, self.path / name)
             except OSError as exc:
                 raise PhysinkError(f"{self.path / name}: cannot write: {reason(exc)}") from None
         fsync_directory(str(self.path))
         for name in OWN_FILES:
-            if name not in self._staged and (self.path / name).is_file():
+            if name not in staged and (self.path / name).is_file():
                 try:
                     (self.path / name).unlink()
                 except OSError as exc:
@@ -206,7 +209,7 @@ class OutputFolder:
 
     def discard(self) -> None:
         """Removes the staged files (the run failed): the previous run's outputs stay as they were."""
-        for staging in self._staged.values():
+        for staging in (self._staged or {}).values():
             try:
                 os.unlink(staging)
             except OSError:

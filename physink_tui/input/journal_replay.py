@@ -8,6 +8,7 @@ and utterances with their times. Acting on the entries is the session's job.
 from __future__ import annotations
 
 import os
+from typing import Any, TypeVar
 
 from physink_tui.errors import DescriptorError, JournalError
 from physink_tui.formats.journal.entries import (
@@ -23,11 +24,13 @@ from physink_tui.formats.journal.entries import (
 from physink_tui.formats.journal.reader import iter_journal
 from physink_tui.input.hid.decoder import HidPenDecoder
 from physink_tui.input.pen.gestures import Gesture, GestureConfig
-from physink_tui.input.pen.mapping import mapping_from_header
+from physink_tui.input.pen.mapping import TabletMapping, mapping_from_header
 from physink_tui.input.pen.pen_input import PenInput
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
 from physink_tui.input.sources import RawReport, SourceEnded, SourceItem
+
+P = TypeVar("P", bound=PenInput)
 
 PEN_DEVICE = "pen"
 """The device id of journal ``pen`` lines (canvas samples from the mouse, serial tablets, scripts)."""
@@ -37,7 +40,7 @@ class LoggedPenInput(PenInput):
     """A `PenInput` that also keeps every gesture it returns in `log`: a replay lists the gestures of the session's
     own decoding instead of decoding the journal a second time."""
 
-    def __init__(self, *args, **kwargs) -> None:
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self.log: list[Gesture] = []
 
@@ -57,9 +60,9 @@ class LoggedPenInput(PenInput):
         return gestures
 
 
-def pen_input_for(header: JournalHeader, where: str = "journal", logged: bool = False) -> PenInput:
+def pen_input_for(header: JournalHeader, where: str = "journal") -> PenInput:
     """The input side a journal header describes: its devices' decoders, its mapping and tip thresholds, and
-    the canvas-space device of its ``pen`` lines.
+    the canvas-space device of its ``pen`` lines (`logged_pen_input_for`: one that keeps its gestures).
 
     Mapping keys the header leaves out take the identity: the canvas size is the header's, the tablet's
     proportions are the canvas's and the whole area is used, so tablet (x, y) in 0..1 lands on canvas (x, y).
@@ -68,6 +71,15 @@ def pen_input_for(header: JournalHeader, where: str = "journal", logged: bool = 
         JournalError: ``<where>: line 1: ...`` for a mapping that leaves no usable area or a device whose
             descriptor cannot be decoded (naming the device id).
     """
+    return _with_devices(PenInput(*_mapping_and_config(header, where)), header, where)
+
+
+def logged_pen_input_for(header: JournalHeader, where: str = "journal") -> LoggedPenInput:
+    """`pen_input_for`, keeping every gesture it returns (`LoggedPenInput`)."""
+    return _with_devices(LoggedPenInput(*_mapping_and_config(header, where)), header, where)
+
+
+def _mapping_and_config(header: JournalHeader, where: str) -> tuple[TabletMapping, GestureConfig]:
     defaults = {"canvas_width": header.canvas_width, "canvas_height": header.canvas_height}
     defaults |= {"tablet_width": header.canvas_width, "tablet_height": header.canvas_height}
     try:
@@ -79,7 +91,10 @@ def pen_input_for(header: JournalHeader, where: str = "journal", logged: bool = 
         raise JournalError(f'{where}: line 1: key "mapping": expected canvas and tablet proportions that leave a '
                            f'usable area, got canvas {header.canvas_width!r} x {header.canvas_height!r}') from None
     config = GestureConfig(thresholds=TipThresholds(down=header.tip_down, up=header.tip_up))
-    pen = (LoggedPenInput if logged else PenInput)(mapping, config)
+    return mapping, config
+
+
+def _with_devices(pen: P, header: JournalHeader, where: str) -> P:
     for device in header.devices:
         add_journal_device(pen, device, f"{where}: line 1")
     pen.add_sample_device(PEN_DEVICE, canvas_space=True)

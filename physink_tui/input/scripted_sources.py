@@ -59,16 +59,18 @@ class ProgrammaticPenSource:
 
 class CaptureReplaySource:
     """Plays one device of a capture as RawReports, with the capture's times (plus ``t0``); ``realtime`` paces
-    them by those times, ``speed`` times faster."""
+    them by those times, ``speed`` times faster, waiting out at most ``max_gap`` capture seconds between two
+    reports (None: every gap; the reports keep their times either way)."""
 
     def __init__(self, capture: Capture, device_id: str = "tablet0", device_index: int = 0,
-                 realtime: bool = False, t0: float = 0.0, speed: float = 1.0) -> None:
+                 realtime: bool = False, t0: float = 0.0, speed: float = 1.0, max_gap: float | None = None) -> None:
         if not speed > 0:
             raise ValueError(f"replay speed must be > 0, got {speed!r}")
         self.device_id = device_id
         self._events = capture.events_for(device_index)
         self._realtime = realtime
         self._speed = speed
+        self._max_gap = max_gap
         self._t0 = t0
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
@@ -82,11 +84,15 @@ class CaptureReplaySource:
         start = time.monotonic()
         first = self._events[0].t if self._events else 0.0
         last_t = self._t0
+        previous, skipped = first, 0.0  # capture seconds of the gaps not waited out
         for event in self._events:
             if self._stop.is_set():
                 break
             if self._realtime:
-                delay = (event.t - first) / self._speed - (time.monotonic() - start)
+                if self._max_gap is not None and event.t - previous > self._max_gap:
+                    skipped += event.t - previous - self._max_gap
+                previous = event.t
+                delay = (event.t - first - skipped) / self._speed - (time.monotonic() - start)
                 if delay > 0 and self._stop.wait(delay):
                     break
             last_t = self._t0 + event.t

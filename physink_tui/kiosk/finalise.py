@@ -72,7 +72,7 @@ def finalise(folder: Path, session: Session, ending: Ending, look: Look,
         "bodies": sum(1 for c in scene.components.values() if isinstance(c, Body)),
         "components": len(scene.components),
         "events": len(events),
-        "labels": sorted({c.label for c in scene.components.values() if getattr(c, "label", None)}),
+        "labels": sorted(set(scene.labels().values())),
         "files": sorted({JOURNAL, SUMMARY, *(name for name in OUTPUTS if out.file(name).exists())}),
         "messages": len(session.messages),
     }

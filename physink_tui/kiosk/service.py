@@ -34,7 +34,6 @@ from physink_tui.formats.journal.entries import (
     PenEntry,
 )
 from physink_tui.formats.journal.reader import read_journal
-from physink_tui.formats.journal.writer import JournalWriter
 from physink_tui.input.pen.mapping import TabletMapping
 from physink_tui.input.pen.sample import PenSample
 from physink_tui.input.pen.state import TipThresholds
@@ -46,16 +45,16 @@ from physink_tui.kiosk.folder_files import JOURNAL, SUMMARY
 from physink_tui.kiosk.hot_zones import HotZones
 from physink_tui.kiosk.store import SessionStore
 from physink_tui.render.export import Look
+from physink_tui.session.journaled import Journaled
 from physink_tui.session.modes.base import ModeName
-from physink_tui.session.runner import SessionRunner
-from physink_tui.session.session import Session
 from physink_tui.session.source_pump import SourcePump
-from physink_tui.session.view import SessionView
 
 MIN_FREE_BYTES = 50_000_000
 """A session starts only with this much free space in the output folder (a session's video is a few MB)."""
 POLL_S = 0.05
 """How often the main thread looks at the sessions' ends (seconds)."""
+HANDLED_WAIT_S = 5.0
+"""At most this long a mode press waits for the session to have handled the inputs before it (a tick or two)."""
 VIDEO_LOOK = Look(960, 600, 30)
 """The sessions' videos: smaller than an export's, so finalising keeps up with visitors."""
 ZONE_COMMANDS = {"undo": ("undo",), "redo": ("redo",), "clear": ("clear",), "play": ("play",), "stop": ("stop",),
@@ -81,10 +80,10 @@ class _Live:
         self.start = start  # the kiosk's clock when the session began
         self.ended_at: float | None = None  # session time its end was decided at (its clock stops there)
         self._kiosk_clock = clock
-        self.writer = JournalWriter.create(folder / JOURNAL, header)
-        self.session = Session.from_header(header)
-        self.session.journal = self.writer
-        self.runner: SessionRunner[SessionView] = SessionRunner(self.session, clock=self.clock)
+        journaled = Journaled.create(header, folder / JOURNAL, clock=self.clock)
+        self.session, self.runner = journaled.session, journaled.runner
+        assert journaled.writer is not None  # (given a path)
+        self.writer = journaled.writer
         self.told_stopped = False
         self.runner.start()
 
@@ -138,6 +137,16 @@ class Kiosk:
         for folder in self.store.unfinished():
             try:
                 journal = read_journal(folder / JOURNAL, salvage=True)
+            except JournalError as exc:  # no header to replay it with: kept aside, not tried at every start
+                try:
+                    kept = self.store.set_aside(folder).name
+                except OSError as error:
+                    self.log(f"kiosk: cannot recover {folder.name}: {exc} (nor set it aside: {error.strerror})")
+                    continue
+                self.log(f"kiosk: cannot recover {folder.name}: {exc}; its journal is kept as {kept} and not tried "
+                         "again")
+                continue
+            try:
                 lost = f" (its last line was torn at line {journal.truncated})" if journal.truncated else ""
                 lost += f"; {journal.dropped}" if journal.dropped is not None else ""
                 self.log(f"kiosk: recovering unfinished session {folder.name}: {len(journal.entries)} inputs{lost}")
@@ -161,12 +170,12 @@ class Kiosk:
 
         A replay's clock is the capture's own (the time of its latest report; ``clock`` is not used), so the
         sessions it records are the same whatever pace the source plays it at: ``--speed`` changes only how long
-        the replay takes. Returns 1 when a replay recorded no session (the capture has no report that touches).
+        the replay takes. Returns 1 when the pen never touched during a replay (nothing was recorded).
         """
         self._finaliser.start()
         self._controls = ControlFilter(device, self.zones, TipThresholds(header.tip_down, header.tip_up))
-        self._replay = replay
         if replay:
+            self.use_capture_clock()
             clock = self.capture_time
         self._header, self._clock, self._mapping = header, clock, mapping
         self._last_input = clock()
@@ -191,6 +200,12 @@ class Kiosk:
                      "tablet's drawing area (nothing was recorded)")
             return 1
         return 0
+
+    def use_capture_clock(self) -> None:
+        """From now on the kiosk's clock is a replayed capture's (`run` with ``replay`` does it; call it earlier so
+        the listening thread starts on that clock too)."""
+        self._replay = True
+        self._clock = self.capture_time
 
     def capture_time(self) -> float:
         """A replay's clock: the capture time of its latest report."""
@@ -273,8 +288,8 @@ class Kiosk:
             elif isinstance(entry, PenEntry) and self._mapping is not None:  # a sample in tablet space
                 verdict = self._controls.sample(PenSample(self._clock(), entry.x, entry.y, entry.p, entry.tip,
                                                           entry.range, entry.eraser, entry.b1, entry.b2, None, None, 0))
-                entry = replace(entry, **dict(zip(("x", "y"), self._mapping.to_canvas(entry.x, entry.y),
-                                                  strict=True)))
+                x, y = self._mapping.to_canvas(entry.x, entry.y)
+                entry = replace(entry, x=x, y=y)
             else:
                 if live is not None:
                     live.runner.submit(entry)
@@ -304,7 +319,8 @@ class Kiosk:
             self._closing.append((live, ending))
             self._live = None
             return
-        if action == "mode":  # the mode the session's last view shows (a press's view goes out before the next)
+        if action == "mode":  # the mode the session's view shows once it has handled what came before the press
+            live.runner.wait_handled(HANDLED_WAIT_S)  # (a fast replay must not outrun it: the same at any speed)
             view = live.runner.latest_view()
             demonstrating = view is not None and view.mode == ModeName.DEMO
             action = ModeName.SKETCH if demonstrating else ModeName.DEMO
@@ -361,5 +377,7 @@ class Kiosk:
 
     def _indexed(self, folder: Path, summary: dict[str, object]) -> None:
         self.store.index(summary)
+        files = summary["files"]
+        listed = ", ".join(map(str, files)) if isinstance(files, list) else str(files)
         self.log(f"kiosk: session {folder.name} written: {summary['bodies']} bodies, {summary['events']} events, "
-                 f"{', '.join(summary['files'])}")  # type: ignore[arg-type]
+                 f"{listed}")

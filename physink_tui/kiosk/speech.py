@@ -15,6 +15,7 @@ from physink_tui.errors import PhysinkError
 from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener, Utterance
 from physink_tui.input.speech.microphone import MicrophoneListener, StreamFactory, sounddevice_stream
+from physink_tui.input.speech.recogniser import Recogniser
 
 
 class KioskSpeech:
@@ -30,7 +31,7 @@ class KioskSpeech:
 
     def __init__(self, hear: Callable[[Utterance], None], clock: Callable[[], float], log: Callable[[str], None],
                  stream: StreamFactory | None = None,
-                 recogniser: Callable[[], object] = make_recogniser) -> None:
+                 recogniser: Callable[[], Recogniser] = make_recogniser) -> None:
         self._hear = hear
         self._clock = clock
         self._log = log
@@ -41,7 +42,7 @@ class KioskSpeech:
     def start(self) -> bool:
         """Load the recogniser and open the microphone; False (and a log line) when either cannot be had."""
         try:
-            listener = Listener(self._make_recogniser())  # type: ignore[arg-type]
+            listener = Listener(self._make_recogniser())
             microphone = MicrophoneListener(listener, self._hear, clock=self._clock,
                                             stream=self._stream or sounddevice_stream())
             microphone.start()

@@ -49,6 +49,13 @@ class SessionStore:
         folder.mkdir()
         return folder
 
+    def set_aside(self, folder: Path) -> Path:
+        """Renames an unfinished session's journal that cannot be read at all to ``journal.physink.jsonl.unreadable``
+        (the folder then holds no session: it is neither recovered again nor retired); returns the new path."""
+        target = folder / (JOURNAL + ".unreadable")
+        os.replace(folder / JOURNAL, target)
+        return target
+
     def sessions(self) -> list[Path]:
         """Every session folder (one with a journal), oldest first."""
         return sorted((p for p in self.root.iterdir() if p.is_dir() and (p / JOURNAL).exists()),

@@ -104,7 +104,7 @@ class RopeShape:
         for body in scene.bodies():
             if body.id in (rope.start_body, rope.end_body):
                 continue
-            for i in np.nonzero(_near_body(every, body))[0]:
+            for i in np.nonzero(_near_body(every, body))[0].tolist():
                 if 0 < i < count - 1 and on[i] is None:
                     on[i] = body.id
         # Keep the ends, the first and last point of each stretch lying on a body, and points ROPE_STEP apart.

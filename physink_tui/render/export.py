@@ -49,8 +49,8 @@ class Export:
         self.notes: list[str] = []
         if not scene.components:
             self.notes.append("the project has nothing in it: the pictures show an empty canvas")
-        recorded = timeline is not None and any(ev.type != "start" for ev in timeline.events)
-        self.demonstration = Demonstration(scene, timeline, canvas) if recorded else None
+        recorded = timeline if timeline is not None and any(ev.type != "start" for ev in timeline.events) else None
+        self.demonstration = Demonstration(scene, recorded, canvas) if recorded is not None else None
         self.overlay = Demonstration(scene, overlay, canvas) if overlay is not None and overlay.events else None
         if self.demonstration is None:
             self.times: tuple[float, ...] = tuple(k / look.fps for k in range(max(1, round(STILL_SECONDS * look.fps))))

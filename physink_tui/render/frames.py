@@ -51,7 +51,7 @@ class Demonstration:
         self.duration = self.tape.duration
         names = scene.names()
         known = {id(track.trajectory): track for track in previous._tracks} if previous is not None else {}
-        self._tracks = tuple(
+        self._tracks: tuple[_Track, ...] = tuple(
             known[id(ev.trajectory)] if id(ev.trajectory) in known else _Track.of(ev.trajectory)
             for ev in timeline.events if ev.type == "movement" and len(ev.trajectory) >= 2)
         self._contacts = sorted(

@@ -18,6 +18,7 @@ import skia
 from physink_tui.errors import RenderError
 from physink_tui.render.attachments import RopeShape, carried
 from physink_tui.render.frame import FrameContent, TimeBar, Trail
+from physink_tui.render.limits import MAX_SIDE, MIN_SIDE
 from physink_tui.render.shapes import body_path, cross, extend, lowest, polyline, zigzag
 from physink_tui.render.theme import Theme, theme_named
 from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope, Scene, Spring
@@ -25,8 +26,6 @@ from physink_tui.scene.physics.state import Pose
 
 FONT_PATH = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 """The one font every text is drawn with, so that images are the same on every machine."""
-MIN_SIZE, MAX_SIZE = 16, 7680
-"""The smallest and largest output width or height, pixels."""
 
 # Sizes in canvas units (never thinner than MIN_LINE pixels).
 BODY_LINE, POLYLINE_LINE, ROPE_LINE, SPRING_LINE, JOINT_LINE, INK_LINE, TRAIL_LINE = 3.0, 4.0, 3.0, 2.5, 3.0, 3.0, 3.0
@@ -51,8 +50,8 @@ def load_typeface(path: str = FONT_PATH) -> skia.Typeface:
 
 
 def _size(name: str, value: object) -> int:
-    if isinstance(value, bool) or not isinstance(value, int) or not MIN_SIZE <= value <= MAX_SIZE:
-        raise ValueError(f"{name}: expected a whole number of pixels from {MIN_SIZE} to {MAX_SIZE}, got {value!r}")
+    if isinstance(value, bool) or not isinstance(value, int) or not MIN_SIDE <= value <= MAX_SIDE:
+        raise ValueError(f"{name}: expected a whole number of pixels from {MIN_SIDE} to {MAX_SIDE}, got {value!r}")
     return value
 
 

@@ -78,7 +78,7 @@ class FrameEncoder:
             return None, np.empty((height, width, 4), np.uint8)
         frame = av.VideoFrame(width, height, "rgba")
         plane = frame.planes[0]
-        rows = np.frombuffer(plane, np.uint8).reshape(height, plane.line_size)
+        rows = np.frombuffer(memoryview(plane), np.uint8).reshape(height, plane.line_size)
         return frame, rows[:, : width * 4].reshape(height, width, 4)
 
     def stage(self, buffer: tuple[Any, np.ndarray], rgba: np.ndarray) -> None:
@@ -91,7 +91,9 @@ class FrameEncoder:
         if self.is_gif:
             if self.palette is None:
                 self.palette = Palette.from_frame(pixels)
-            return av.VideoFrame.from_ndarray((self.palette.indices(pixels), self.palette.argb), format="pal8")
+            return av.VideoFrame.from_ndarray(
+                (self.palette.indices(pixels), self.palette.argb),  # type: ignore[arg-type]  # pal8: (indices, palette)
+                format="pal8")
         return self.reformatter.reformat(frame, format="yuv420p", threads=SCALER_THREADS,
                                          interpolation=SCALER_INTERPOLATION)
 

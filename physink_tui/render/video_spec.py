@@ -7,15 +7,7 @@ from dataclasses import dataclass
 from numbers import Integral
 
 from physink_tui.errors import RenderError
-
-MAX_FPS = 120
-"""Highest frame rate accepted; 30 and 60 are the usual ones."""
-
-MIN_SIDE = 16
-"""Smallest width or height in pixels (H.264 and VP9 code 16x16 macroblocks; smaller is surely a mistake)."""
-
-MAX_SIDE = 8192
-"""Largest width or height in pixels (8K; anything larger is surely a mistake and would exhaust memory)."""
+from physink_tui.render.limits import MAX_FPS, MAX_SIDE, MIN_SIDE
 
 GIF_MAX_FPS = 30
 """A GIF is written at no more than this rate: its frame delays are whole hundredths of a second and players
@@ -120,7 +112,7 @@ def check_fps(fps: object) -> int:
         else:
             raise RenderError(f"frame rate {fps!r} is not a whole number of frames per second "
                               f"(expected 1 to {MAX_FPS}, usually 30 or 60)")
-    if not 1 <= fps <= MAX_FPS:
+    if not 1 <= int(fps) <= MAX_FPS:
         raise RenderError(f"frame rate {fps!r} is out of range (expected 1 to {MAX_FPS} fps, usually 30 or 60)")
     return int(fps)
 
@@ -129,7 +121,7 @@ def check_side(name: str, value: object, container: Container) -> int:
     """``value`` as an int when it is a usable ``name`` (width or height) for ``container``; else `RenderError`."""
     if isinstance(value, bool) or not isinstance(value, Integral):
         raise RenderError(f"video {name} {value!r} is not a whole number of pixels")
-    if not MIN_SIDE <= value <= MAX_SIDE:
+    if not MIN_SIDE <= int(value) <= MAX_SIDE:
         raise RenderError(f"video {name} {value!r} is out of range (expected {MIN_SIDE} to {MAX_SIDE} pixels)")
     if container.pix_fmt == "yuv420p" and value % 2:
         raise RenderError(f"video {name} {value!r} must be even for {container.description}: yuv420p stores colour "

@@ -155,12 +155,19 @@ class Scene:
             raise KeyError(component.id)
         return replace(self, components={**self.components, component.id: component})
 
+    def body(self, body_id: str) -> Body:
+        """The body with this id (KeyError when the scene has no body of that id)."""
+        c = self.components[body_id]
+        if not isinstance(c, Body):
+            raise KeyError(body_id)
+        return c
+
     def bodies(self) -> list[Body]:
         return [c for c in self.components.values() if isinstance(c, Body)]
 
     def labels(self) -> dict[str, str]:
         """Component id -> the user's label, for every labelled component (what phrases name them by)."""
-        return {c.id: c.label for c in self.components.values() if getattr(c, "label", None)}
+        return {c.id: label for c in self.components.values() if (label := getattr(c, "label", None))}
 
     def names(self) -> dict[str, str]:
         """Component id -> what narration calls it: its label; an unlabelled spring or rope by what it is.

@@ -134,6 +134,7 @@ class Commands:
         """``simulate SEED BUDGET``: the search a driver ran for this document (`simulation.Searched`), else one
         run here and now (`simulation.attempt`); the result is shown until the document changes."""
         host = self.host
+        result: SearchResult | None
         if offered is not None and offered.fits(host.document, seed, budget):
             result, text = offered.result, simulation.summary(offered.result)
         else:

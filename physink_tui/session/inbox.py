@@ -10,12 +10,23 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable
 from dataclasses import replace
+from typing import Any, ClassVar, Generic, Protocol, TypeVar
 
-from physink_tui.formats.journal.entries import JournalEntry
+
+class Stamped(Protocol):
+    """An input the inbox can stamp: a frozen dataclass with a time ``t`` (a journal entry, a driver's search)."""
+
+    __dataclass_fields__: ClassVar[dict[str, Any]]
+
+    @property
+    def t(self) -> float: ...
 
 
-class StampingInbox:
-    """A thread-safe queue of journal entries stamped with seconds since the session start.
+E = TypeVar("E", bound=Stamped)
+
+
+class StampingInbox(Generic[E]):
+    """A thread-safe queue of inputs (journal entries) stamped with seconds since the session start.
 
     Args:
         clock: seconds on a monotonic clock (``time.monotonic``; tests pass a fake one).
@@ -27,8 +38,10 @@ class StampingInbox:
         self._clock = clock
         self._origin = clock() - start_t
         self._last = start_t
-        self._entries: list[JournalEntry] = []
+        self._entries: list[E] = []
         self._closed_at: float | None = None
+        self.submitted = 0
+        """Entries queued so far (read without the lock: it only grows)."""
         self._lock = threading.Lock()
         self._arrived = threading.Condition(self._lock)
         """Notified whenever an entry is queued or the inbox closes (the worker waits on it)."""
@@ -45,7 +58,7 @@ class StampingInbox:
         with self._lock:
             return self._now()
 
-    def put(self, entry: JournalEntry, at: float | None = None) -> JournalEntry | None:
+    def put(self, entry: E, at: float | None = None) -> E | None:
         """Stamp ``entry`` with the time now and queue it; return the stamped entry, or None once closed (dropped:
         it will never be handled nor journaled).
 
@@ -58,10 +71,11 @@ class StampingInbox:
             stamped = replace(entry, t=self._now() if at is None else max(self._last, min(at, self._now())))
             self._last = stamped.t
             self._entries.append(stamped)
+            self.submitted += 1
             self._arrived.notify()
             return stamped
 
-    def take(self) -> tuple[float, list[JournalEntry]]:
+    def take(self) -> tuple[float, list[E]]:
         """The time now and every entry queued so far (all stamped at or before it), in arrival order."""
         with self._lock:
             now = self._now()

@@ -62,10 +62,10 @@ def stroke_outcome(kind: str | None, result: Interpretation, before: Scene) -> s
     if result.action == "erase" and result.removed:
         return erased(before, result.removed)
     if result.action == "body" and result.created:
-        made = [i for i in result.created if isinstance(after.components.get(i), Body)]
-        if len(made) == 1:
-            return f"{what} → body {made[0]}"
-        return f"{what} → bodies {', '.join(made)}"
+        bodies = [i for i in result.created if isinstance(after.components.get(i), Body)]
+        if len(bodies) == 1:
+            return f"{what} → body {bodies[0]}"
+        return f"{what} → bodies {', '.join(bodies)}"
     created = [after.components[i] for i in result.created if i in after.components]
     if not created:
         return None

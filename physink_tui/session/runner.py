@@ -28,8 +28,9 @@ import time
 from collections.abc import Callable
 from typing import Generic, Protocol, TypeVar
 
-from physink_tui.formats.journal.entries import CommandEntry, JournalEntry, SayEntry
+from physink_tui.formats.journal.entries import CommandEntry, SayEntry
 from physink_tui.session.inbox import StampingInbox
+from physink_tui.session.simulation import SessionInput
 
 TICK_RATE = 120.0
 """Default times a second the worker moves the session's time on (``session.advance`` calls)."""
@@ -48,7 +49,7 @@ class RunnableSession(Protocol[ViewT_co]):
     def t(self) -> float:
         """Seconds since the session start reached so far."""
 
-    def handle(self, entry: JournalEntry) -> None:
+    def handle(self, entry: SessionInput) -> None:
         """Consume one entry (time first moves to ``entry.t``); never raises for any input."""
 
     def advance(self, t: float) -> None:
@@ -77,13 +78,13 @@ class SessionRunner(Generic[ViewT]):
 
     def __init__(self, session: RunnableSession[ViewT], *, clock: Callable[[], float] = time.monotonic,
                  tick_rate: float = TICK_RATE, max_fps: float = MAX_FPS,
-                 on_error: Callable[[BaseException], None] | None = None) -> None:
+                 on_error: Callable[[BaseException], object] | None = None) -> None:
         if not tick_rate > 0 or not max_fps > 0:
             raise ValueError(f"tick_rate and max_fps must be > 0, got {tick_rate!r} and {max_fps!r}")
         self.session = session
         self.tick_rate = tick_rate
         self.max_fps = max_fps
-        self._inbox = StampingInbox(clock, session.t)
+        self._inbox: StampingInbox[SessionInput] = StampingInbox(clock, session.t)
         self._on_error = on_error
         self._subscribers: list[Callable[[ViewT], None]] = []
         self._latest: ViewT | None = None
@@ -93,23 +94,25 @@ class SessionRunner(Generic[ViewT]):
         self._unpublished = True  # the session changed since the last view published
         self._thread: threading.Thread | None = None
         self._finished = False
+        self._handled = 0  # entries handled, their view published (`wait_handled`)
+        self._handled_changed = threading.Condition()
         self.error: BaseException | None = None
         """The exception that stopped the worker, or None."""
 
     # -- any thread ------------------------------------------------------------------------------
 
-    def submit(self, entry: JournalEntry) -> JournalEntry | None:
+    def submit(self, entry: SessionInput) -> SessionInput | None:
         """Queue an input, stamped with the time now (its own ``t`` is ignored); return the stamped entry.
 
         Returns None once `stop` has begun: the entry is dropped, so it is neither handled nor journaled.
         """
         return self._inbox.put(entry)
 
-    def command(self, name: str, *args: str | float) -> JournalEntry | None:
+    def command(self, name: str, *args: str | float) -> SessionInput | None:
         """Submit a command (a key, a pad button): ``runner.command("mode", "demo")``."""
         return self.submit(CommandEntry(0.0, name, tuple(args)))
 
-    def say(self, text: str, began: float | None = None) -> JournalEntry | None:
+    def say(self, text: str, began: float | None = None) -> SessionInput | None:
         """Submit a recognised utterance, stamped with ``began`` (session seconds: when it began, e.g.
         `Utterance.began` on the runner's `now` scale) where no later entry has been stamped yet, else when it
         arrives; without ``began``, when it arrives."""
@@ -124,6 +127,15 @@ class SessionRunner(Generic[ViewT]):
         e.g. with Textual's ``call_from_thread``; do not block in it)."""
         with self._view_lock:
             self._subscribers.append(callback)
+
+    def wait_handled(self, timeout: float) -> bool:
+        """Block until every entry submitted so far has been handled and a view showing it published (a driver that
+        reads `latest_view` to decide its next input: the kiosk's mode button); False after ``timeout`` seconds,
+        or at once when the worker is not running."""
+        target = self._inbox.submitted
+        with self._handled_changed:
+            return self._handled_changed.wait_for(
+                lambda: self._handled >= target or not self.running or self._finished, timeout)
 
     def latest_view(self) -> ViewT | None:
         """The last view published, or None before the first."""
@@ -182,8 +194,12 @@ class SessionRunner(Generic[ViewT]):
                 self._publish(now)
         except Exception as exc:
             self._fail(exc)
+        if entries:
+            with self._handled_changed:
+                self._handled += len(entries)
+                self._handled_changed.notify_all()
 
-    def _handle(self, entries: list[JournalEntry]) -> None:
+    def _handle(self, entries: list[SessionInput]) -> None:
         for entry in entries:
             self.session.handle(entry)
         if entries:
@@ -228,6 +244,8 @@ class SessionRunner(Generic[ViewT]):
             self._publish(end_t)
         except Exception as exc:
             self._fail(exc)
+        with self._handled_changed:
+            self._handled_changed.notify_all()  # a waiter sees the runner finished
 
     def _next_due(self) -> float:
         """Session time at which `step` next has something to do without new input."""

@@ -57,7 +57,7 @@ class SearchJob:
     """
 
     def __init__(self, scene: Scene, timeline: Timeline, canvas: tuple[float, float], seed: int, budget: int, *,
-                 on_progress: Callable[[Progress], None] | None = None,
+                 on_progress: Callable[[Progress], object] | None = None,
                  evaluate: simulation.Evaluate = evaluate_problem) -> None:
         if budget < 1:
             raise ValueError(f"budget is {budget!r}; expected at least 1 rollout")

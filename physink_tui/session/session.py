@@ -44,7 +44,7 @@ from physink_tui.session.history import Document, History
 from physink_tui.session.modes.base import Mode, ModeName
 from physink_tui.session.modes.demo import DemoMode
 from physink_tui.session.modes.sketch import SketchMode
-from physink_tui.session.simulation import SearchResult
+from physink_tui.session.simulation import SearchResult, SessionInput
 from physink_tui.session.speech_target import PenWatch
 from physink_tui.session.view import Message, SessionView, snapshot
 from physink_tui.sim.defaults import DEFAULT_BUDGET
@@ -166,7 +166,7 @@ class Session:
 
     # -- input ---------------------------------------------------------------------------------------------
 
-    def handle(self, entry: JournalEntry) -> None:
+    def handle(self, entry: SessionInput) -> None:
         """Consume one input: time first advances to its ``t``; then it is acted on (or refused, with a message);
         then it is journaled. An entry the journal cannot hold (a value out of range, time going backwards) is
         refused before it is acted on, so a replay of the journal sees what the session saw. Nothing an input can
@@ -299,8 +299,8 @@ class Session:
         if self.current.finished:
             self.current = self.sketch
         self._note_created(before, g.t)
-        if self.watch.waiting is not None and not self.watch.drawing and self.sketch.pending is None:
-            waiting = self.watch.take_waiting()  # the stroke said to be labelled ended without making anything
+        waiting = None if self.watch.drawing or self.sketch.pending is not None else self.watch.take_waiting()
+        if waiting is not None:  # the stroke said to be labelled ended without making anything
             self.tell(f"label {waiting.text!r}: the stroke being drawn made no component to label")
 
     def _note_created(self, before: str | None, t: float) -> None:

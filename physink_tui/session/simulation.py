@@ -9,7 +9,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from physink_tui.errors import SimulationError
-from physink_tui.formats.journal.entries import CommandEntry
+from physink_tui.formats.journal.entries import CommandEntry, JournalEntry
 from physink_tui.scene.components import BACKGROUND, Scene
 from physink_tui.session.history import Document
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
@@ -86,9 +86,16 @@ class Searched:
 
     def fits(self, document: Document, seed: int, budget: int) -> bool:
         """Whether ``result`` is what ``simulate seed budget`` gives on ``document``."""
-        return ((seed, budget) == (self.seed, self.budget)
-                and (document.scene is self.scene or document.scene == self.scene)
-                and (document.timeline is self.timeline or document.timeline == self.timeline))
+        return (seed, budget) == (self.seed, self.budget) and self.searched(document.scene, document.timeline)
+
+    def searched(self, scene: Scene, timeline: Timeline | None) -> bool:
+        """Whether ``scene`` and ``timeline`` are the document searched (the same objects, or equal ones)."""
+        return ((scene is self.scene or scene == self.scene)
+                and (timeline is self.timeline or timeline == self.timeline))
+
+
+SessionInput = JournalEntry | Searched
+"""What a session takes: a journal entry, or a ``simulate`` whose search a driver ran (`Searched`)."""
 
 
 def with_defaults(entry: CommandEntry, budget: int = DEFAULT_BUDGET) -> CommandEntry:

@@ -104,7 +104,7 @@ def _unit(value: float) -> float:
     return min(1.0, max(0.0, float(value)))
 
 
-class _SubmittingQueue(queue.Queue):
+class _SubmittingQueue(queue.Queue[SourceItem]):
     """The queue a source puts its items on: ``put`` hands each to the pump at once; nothing is ever queued."""
 
     def __init__(self, take: Callable[[SourceItem], None]) -> None:

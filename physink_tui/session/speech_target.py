@@ -2,9 +2,10 @@
 seconds, else the one being drawn, else the one under the hovering pen; recognising speech and changing the scene
 are left to others (the recogniser, the session).
 
-The session feeds it the pen's gestures and the components its strokes create (`PenWatch.gesture`,
-`PenWatch.created`); `PenWatch.target` answers for an utterance at time t. A label said while a stroke is being
-drawn waits for the component that stroke makes (`PenWatch.wait`, `PenWatch.take_waiting`).
+The session feeds it the pen's gestures and the components its strokes make (`PenWatch.gesture`, `PenWatch.made`);
+`PenWatch.recent` names the component drawn in the last few seconds before an utterance at time t and
+`PenWatch.hover` where the pen hovers (`labelling.spoken_label` decides among them). A label said while a stroke is
+being drawn waits for the component that stroke makes (`PenWatch.wait`, `PenWatch.take_waiting`).
 """
 
 from __future__ import annotations

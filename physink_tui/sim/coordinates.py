@@ -10,7 +10,7 @@ at least `MIN_SPEED_SCALE`), which is what an optimiser such as CMA-ES moves in.
 from __future__ import annotations
 
 import math
-from collections.abc import Collection, Sequence
+from collections.abc import Collection, Iterable, Sequence
 from dataclasses import dataclass
 
 from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters
@@ -96,7 +96,7 @@ class Normalisation:
         self.centre = centre
         self.scales = tuple(_scale(c, seeded) for c in self.coords)
 
-    def decode(self, z: Sequence[float]) -> Parameters:
+    def decode(self, z: Iterable[float]) -> Parameters:
         """The parameters at ``z`` (0 is the centre)."""
         p = self.centre
         for c, scale, zi in zip(self.coords, self.scales, z, strict=True):

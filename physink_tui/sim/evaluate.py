@@ -21,8 +21,8 @@ import numpy as np
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
 from physink_tui.sim.legs import legs
-from physink_tui.sim.parameters import Parameters
-from physink_tui.sim.rollout import RolloutResult, Stop, rollout_from, settled_state
+from physink_tui.sim.parameters import Parameters, Structure
+from physink_tui.sim.rollout import RolloutResult, Settled, Stop, rollout_from, settled_state
 from physink_tui.timeline.equivalence import Comparison, Prepared, compare_prefixes, compare_prepared, prepare
 from physink_tui.timeline.events import Event, Timeline
 
@@ -114,7 +114,7 @@ def make_problem(scene: Scene, timeline: Timeline, canvas: tuple[float, float],
 
 
 _prepared: dict[int, tuple[Prepared, tuple[frozenset[str], ...]]] = {}
-_settled: OrderedDict[tuple, object] = OrderedDict()
+_settled: OrderedDict[tuple[int, Structure], Settled] = OrderedDict()
 
 
 def _demonstration(problem: Problem) -> tuple[Prepared, tuple[frozenset[str], ...]]:

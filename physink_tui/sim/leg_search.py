@@ -30,9 +30,11 @@ import math
 import warnings
 from collections.abc import Callable, Sequence
 from enum import StrEnum
+from typing import Any
 
 import numpy as np
 
+from physink_tui.sim.aim import Aimed, AimSpace
 from physink_tui.sim.coordinates import Normalisation, coordinates
 from physink_tui.sim.evaluate import Score
 from physink_tui.sim.legs import Leg
@@ -58,6 +60,15 @@ SCAN_ANGLES = tuple(range(-45, 46, 15))
 SCAN_SPEEDS = (0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0)
 """After the family, the best one's start velocities turned by -45°…45° in 15° steps and scaled x0.5…x2 in
 x0.25 steps, all start bodies alike (the thesis grid's velocity steps: 48 rollouts), the best of which leads."""
+AIM_GENERATION = 16
+"""Aimed candidates (`aim.aimed`) handed out per generation, so that a search reproducing the demonstration stops
+within 16 rollouts of the candidate that does."""
+AIM_RUN_SIGMA = 1.0
+"""CMA-ES's initial step size in `aim.AimSpace` (a quarter of the edge or fan, a flight-time factor of e^0.35)."""
+AIM_RUN_ROUND = 1_000_000
+"""The round number in the aim run's random key (rounds of leg runs count from 0)."""
+AIM_RUN_ROLLOUTS = 60
+"""The most rollouts of the run that corrects the best aimed candidate (it stops sooner when it stalls)."""
 LINE_SAMPLES = 8
 """Candidates per generation of the one-coordinate sampler."""
 EXPLODED_PENALTY = 1.0e6
@@ -71,6 +82,10 @@ class Phase(StrEnum):
     """The seeded parameters alone (generation 0)."""
     FAMILY = "family"
     """The seed's flight-time family (`FAMILY_STEPS`)."""
+    AIM = "aim"
+    """Launches aimed at the first contact's surface (`aim.aimed`), `AIM_GENERATION` at a time."""
+    AIM_RUN = "aim run"
+    """CMA-ES in `aim.AimSpace` round the best aimed candidate (at most `AIM_RUN_ROLLOUTS`)."""
     SCAN = "scan"
     """The best so far with its start velocities turned and scaled (`SCAN_ANGLES`, `SCAN_SPEEDS`)."""
     RUN = "run"
@@ -91,12 +106,17 @@ class LegByLeg:
         seed: the random seed.
         family: the seed with its start bodies' flight time scaled by a factor (`seeding.seed_family`), searched
             first; None to skip it.
+        aims: launches aimed at the first contact's surface (`aim.aimed`), tried after the family.
     """
 
     def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int,
-                 family: Callable[[float], Parameters] | None = None) -> None:
+                 family: Callable[[float], Parameters] | None = None, aims: Sequence[Aimed] = ()) -> None:
         self.start = start
         self.family = family
+        self._aims = list(aims)
+        self._aimed: list[Aimed] = []  # the last generation's aims
+        self._best_aim: Aimed | None = None
+        self._aim_run_rollouts = 0
         self._family_round = 0 if family is not None else FAMILY_ROUNDS
         self._family_best = 1.0
         self._factors: list[float] = []
@@ -126,7 +146,19 @@ class LegByLeg:
             self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
                              for j in FAMILY_SPAN[self._family_round] if j != 0]
             return [self.family(f) for f in self._factors]
-        if self._phase is Phase.FAMILY or (self._phase is Phase.START and self.centre.velocities):
+        if self._aims and self._phase in (Phase.FAMILY, Phase.AIM):
+            self._phase = Phase.AIM
+            self._aimed, self._aims = self._aims[:AIM_GENERATION], self._aims[AIM_GENERATION:]
+            return [a.parameters for a in self._aimed]
+        if self._phase in (Phase.AIM, Phase.AIM_RUN) and self._best_aim is not None:
+            if self._run is None and self._phase is Phase.AIM:
+                self._begin_aim_run()
+            if self._run is not None and self._aim_run_rollouts < AIM_RUN_ROLLOUTS:
+                self._phase = Phase.AIM_RUN
+                return self._run.ask()
+            self._run = None
+        if self._phase in (Phase.FAMILY, Phase.AIM, Phase.AIM_RUN) or (self._phase is Phase.START
+                                                                       and self.centre.velocities):
             self._phase = Phase.SCAN
             return _turned_and_scaled(self.centre)
         self._phase = Phase.RUN
@@ -141,7 +173,7 @@ class LegByLeg:
         if self.centre_score is None:  # the start, alone (generation 0 of the search)
             self.centre_score = scores[0]
             return
-        if self._phase in (Phase.FAMILY, Phase.SCAN):  # the candidate furthest along the legs leads
+        if self._phase in (Phase.FAMILY, Phase.SCAN, Phase.AIM):  # the candidate furthest along the legs leads
             if self._phase is Phase.FAMILY:
                 self._family_round += 1
             for k, (p, s) in enumerate(zip(generation, scores, strict=True)):
@@ -149,6 +181,19 @@ class LegByLeg:
                     self.centre, self.centre_score = p, s
                     if self._phase is Phase.FAMILY:
                         self._family_best = self._factors[k]
+                    if self._phase is Phase.AIM:
+                        self._best_aim = self._aimed[k]
+            return
+        if self._phase is Phase.AIM_RUN:
+            run = self._run
+            assert run is not None
+            self._aim_run_rollouts += len(generation)
+            stopped = run.tell(generation, scores, [self._key(s) for s in scores])
+            if run.best is not None and self._progress(run.best[2]) < self._progress(self.centre_score):
+                self._adopt(run.best)
+            if stopped or run.stalled or (run.best is not None and run.best[2].qualitative == 0):
+                self._run = None
+                self._best_aim = None  # corrected once; on to the scan
             return
         run = self._run
         assert run is not None
@@ -183,6 +228,17 @@ class LegByLeg:
 
     def _adopt(self, best: tuple[tuple[float, float], Parameters, Score]) -> None:
         self.centre, self.centre_score = best[1], best[2]
+
+    def _begin_aim_run(self) -> None:
+        """A CMA-ES run in `AimSpace` round the best aimed candidate, on the first leg the centre does not
+        reproduce (the aimed candidate corrected by rollouts)."""
+        assert self.centre_score is not None and self._best_aim is not None
+        self.leg = next((k for k in range(len(self.legs)) if leg_score(self.centre_score, k).qualitative > 0),
+                        len(self.legs))
+        if self.leg >= len(self.legs):
+            self._best_aim = None
+            return
+        self._run = _Run(AimSpace(self.centre, self._best_aim), AIM_RUN_SIGMA, (self.seed, AIM_RUN_ROUND, self.leg, 0))
 
     def _begin(self) -> bool:
         """Starts a run on the first leg after the last given up that the centre does not reproduce; False when
@@ -226,7 +282,7 @@ def _turned_and_scaled(p: Parameters) -> list[Parameters]:
 class _Run:
     """One CMA-ES run (or one-coordinate sampler) on one leg, from one centre."""
 
-    def __init__(self, norm: Normalisation, sigma: float, rng_key: tuple[int, ...]) -> None:
+    def __init__(self, norm: Normalisation | AimSpace, sigma: float, rng_key: tuple[int, ...]) -> None:
         self.norm = norm
         self.sigma = sigma
         self.rng_key = rng_key
@@ -241,7 +297,7 @@ class _Run:
     def stalled(self) -> bool:
         return self.since_better >= STALL_GENERATIONS
 
-    def _optimiser(self, n: int):
+    def _optimiser(self, n: int) -> Any:  # a cma.CMAEvolutionStrategy (cma has no type information)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # pycma warns about matplotlib, which it does not need here
             import cma

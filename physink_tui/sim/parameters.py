@@ -45,6 +45,10 @@ class SpringParameters:
     rest_length: float
 
 
+Structure = tuple[tuple[tuple[str, BodyParameters], ...], tuple[tuple[str, SpringParameters], ...], tuple[str, ...]]
+"""`Parameters.structure()`: the bodies' and springs' parameters, sorted by id, and the start bodies."""
+
+
 @dataclass(frozen=True, slots=True)
 class Parameters:
     """One candidate of the parameter search.
@@ -64,7 +68,8 @@ class Parameters:
         for name in ("bodies", "springs", "velocities"):
             object.__setattr__(self, name, MappingProxyType(dict(getattr(self, name))))
 
-    def __reduce__(self) -> tuple:
+    def __reduce__(self) -> tuple[type[Parameters], tuple[dict[str, BodyParameters], dict[str, SpringParameters],
+                                                          dict[str, tuple[float, float]]]]:
         """Pickled as plain dicts (a mapping proxy does not pickle), so candidates can go to worker processes."""
         return (Parameters, (dict(self.bodies), dict(self.springs), dict(self.velocities)))
 
@@ -73,7 +78,7 @@ class Parameters:
         """The bodies the start event moves, sorted."""
         return tuple(sorted(self.velocities))
 
-    def structure(self) -> tuple:
+    def structure(self) -> Structure:
         """Everything but the initial velocities, as a hashable key: candidates with equal keys settle alike, so a
         search may fork them all from one settled state (rollout.settled_state)."""
         return (tuple(sorted(self.bodies.items())), tuple(sorted(self.springs.items())), self.start_bodies)
@@ -109,13 +114,13 @@ def apply(scene: Scene, parameters: Parameters) -> Scene:
         _need(p.friction, f"friction of {body_id!r}", positive=False)
         material = replace(body.material, density=p.mass / body_area(body), friction=p.friction)
         components[body_id] = replace(body, material=material)
-    for spring_id, p in parameters.springs.items():
+    for spring_id, sp in parameters.springs.items():
         spring = components.get(spring_id)
         if not isinstance(spring, Spring):
             raise SimulationError(f"parameters for spring {spring_id!r}, which the scene does not have")
-        _need(p.k, f"k of {spring_id!r}", positive=True)
-        _need(p.rest_length, f"rest length of {spring_id!r}", positive=False)
-        components[spring_id] = replace(spring, k=p.k, rest_length=p.rest_length)
+        _need(sp.k, f"k of {spring_id!r}", positive=True)
+        _need(sp.rest_length, f"rest length of {spring_id!r}", positive=False)
+        components[spring_id] = replace(spring, k=sp.k, rest_length=sp.rest_length)
     for body_id in parameters.velocities:
         if not isinstance(components.get(body_id), Body):
             raise SimulationError(f"initial velocity for body {body_id!r}, which the scene does not have")

@@ -11,7 +11,9 @@ equivalent to the demonstration (the thesis halts once the qualitative score cro
 budget or when the strategy has nothing left to try.
 
 The objective is `Score.objective` (qualitative distance weighted above quantitative); exploded candidates score
-inf, are never best and are counted (`exploded`). Ties go to the earlier candidate.
+inf, are never best and are counted (`exploded`). Ties go to the earlier candidate. Beside the best, the search
+keeps the candidate that reproduces the most leading legs of the demonstration (`furthest`, by `progress`): when
+nothing is found, the first event that candidate misses is the first one no candidate reproduces (the verdict's).
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from typing import Protocol
 
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
+from physink_tui.sim.aim import aimed
 from physink_tui.sim.evaluate import Score
 from physink_tui.sim.grid import ThesisGrid
 from physink_tui.sim.leg_search import LegByLeg
@@ -36,11 +39,21 @@ STRATEGIES = ("default", "grid")
 class Strategy(Protocol):
     """What a search strategy does between generations."""
 
-    finished: bool
+    @property
+    def finished(self) -> bool:
+        """Nothing is left to try (the search stops before the budget is spent)."""
 
     def generation(self, best: Parameters | None) -> list[Parameters]: ...
 
     def told(self, generation: list[Parameters], scores: list[Score]) -> None: ...
+
+
+def progress(score: Score) -> tuple[int, float]:
+    """How far along the demonstration's legs a score reaches (smaller is further): more leading legs reproduced,
+    then the first unreproduced leg's objective; a score without legs counts as one leg."""
+    legs_ = score.legs or (score,)
+    solved = next((k for k, s in enumerate(legs_) if s.qualitative > 0), len(legs_))
+    return (-solved, legs_[solved].objective if solved < len(legs_) else 0.0)
 
 
 class Search:
@@ -73,6 +86,8 @@ class Search:
         self.best: Parameters | None = None
         self.best_score: Score | None = None
         self.found_at: int | None = None
+        self.furthest: Parameters | None = None
+        self.furthest_score: Score | None = None
         self._pending: list[Parameters] | None = None
         self._finished = False
         self._strategy: Strategy
@@ -82,8 +97,10 @@ class Search:
             def family(factor: float) -> Parameters:
                 return seed_family(scene, timeline, canvas, (factor,))[0]
 
-            self._strategy = LegByLeg(self.start, legs(timeline), seed=seed,
-                                      family=family if start is None and self.start.velocities else None)
+            seeded = start is None and bool(self.start.velocities)
+            aims = aimed(scene, timeline, self.start) if seeded else []
+            self._strategy = LegByLeg(self.start, legs(timeline), seed=seed, family=family if seeded else None,
+                                      aims=aims)
 
     @property
     def by_leg(self) -> bool:
@@ -126,6 +143,8 @@ class Search:
         for p, s in zip(generation, results, strict=True):
             self.rollouts += 1
             self.exploded += s.exploded
+            if not s.exploded and (self.furthest_score is None or progress(s) < progress(self.furthest_score)):
+                self.furthest, self.furthest_score = p, s
             if not s.exploded and (self.best_score is None or s.objective < self.best_score.objective):
                 self.best, self.best_score = p, s
                 if s.qualitative == 0 and self.found_at is None:

@@ -9,17 +9,36 @@ reproduce, then the first of that leg's own events the simulation lacks. Why, in
 - a contact the simulation never makes: how close the body came to where the contact was demonstrated, and, for a
   pair that touches again in the demonstration (the ball bouncing on platform B twice), how often it touched;
 - otherwise the metric's own reason for that leg (another side, another region, another cause, an event more).
+
+A reproduced demonstration's verdict adds where the simulation's contacts lie far from the drawn ones
+(`where.differences_in_place`: the metric compares sides, not places).
 """
 
 from __future__ import annotations
 
-from physink_tui.sim.evaluate import Problem, miss_distance
+from physink_tui.sim.evaluate import Problem, compare_rollout, miss_distance, simulate
 from physink_tui.sim.legs import legs
+from physink_tui.sim.rollout import RolloutResult
+from physink_tui.sim.search import Search
+from physink_tui.sim.where import differences_in_place
 from physink_tui.timeline.equivalence import Comparison, compare_prefixes, prepare
 from physink_tui.timeline.events import Event, Timeline, event_label
 from physink_tui.timeline.up_to_demonstrated import RULE, afterwards
 
 REPRODUCED = f"every demonstrated event is reproduced (equivalent {RULE})"
+
+
+def refusal_or_verdict(search: Search, problem: Problem, best: RolloutResult, comparison: Comparison, *,
+                       found: bool) -> str:
+    """The verdict of a finished search whose best candidate rolled out as ``best`` and compares as
+    ``comparison``: when nothing was found, told from the candidate that got furthest along the demonstration's
+    legs (`Search.furthest`), so that the event it names is the first one no candidate reproduces."""
+    rollouts = search.rollouts - search.exploded if search.best is not None else 0
+    if found or search.furthest is None or search.furthest is search.best:
+        return verdict(problem, best.timeline, comparison, found=found, rollouts=rollouts, flagged=best.flagged)
+    furthest = simulate(problem, search.furthest)
+    return verdict(problem, furthest.timeline, compare_rollout(problem, furthest, explain=True), found=False,
+                   rollouts=rollouts, flagged=furthest.flagged)
 
 
 def verdict(problem: Problem, simulated: Timeline, comparison: Comparison, *, found: bool, rollouts: int,
@@ -29,6 +48,9 @@ def verdict(problem: Problem, simulated: Timeline, comparison: Comparison, *, fo
     if found:
         after = afterwards(comparison, simulated, problem.scene.names())
         text = REPRODUCED + (f"; {after}" if after else "")
+        elsewhere = differences_in_place(problem.scene, problem.timeline, simulated, comparison)
+        if elsewhere:
+            text += "; where it differs from the drawing: " + "; ".join(elsewhere)
     elif rollouts == 0 or not simulated.events:
         text = "no candidate could be simulated without the physics blowing up"
     else:

@@ -10,8 +10,8 @@ driving into it is jostled, not set moving. When a demonstrated movement takes t
 inserts an end-contact caused by that movement, which causes a movement of each (figure 3-9: the stopper pulled
 out from under the ball; the cup dispenser's platform weighed down away from the peg).
 
-One body *drives into* the other when it moves towards the other, mostly along the line between them
-(`DRIVE_SHARE`) and faster than the recorder's moving speed: the cup the ball lands in pressing the platform it
+One body *drives into* the other when it moves towards the other faster than `DRIVE_SPEED` and not almost across
+the line between them (`DRIVE_SHARE`): the cup the ball lands in pressing the platform it
 stands on down, the egg pushed down through the paddles it rests on. Its own velocity counts, not the two bodies'
 relative one: a cup pressing a platform down carries the platform with it at its own speed from the first step.
 That is a contact, as between bodies that met during the demonstration; once a pair has had a contact, or an
@@ -23,24 +23,37 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+from shapely.geometry import Point, Polygon
+from shapely.ops import nearest_points
+
 from physink_tui.scene.physics.state import Motion
-from physink_tui.timeline.qualitative import BodyOutline, hull_gap
+from physink_tui.timeline.qualitative import BodyOutline, hull_gap, placed
 
 SEPARATION_GAP = 4.0
 """Canvas units by which two bodies that began in contact must get further apart than they began (drawn a few
 pixels apart, or touching) to have come apart."""
-DRIVE_SHARE = 0.5
-"""The least share of the mover's speed that must point from one body towards the other for it to drive into it
-(60 degrees off the line between them at most)."""
+DRIVE_SPEED = 30.0
+"""Canvas units per second towards its partner above which a body drives into it: the hook of a hurried pen taking
+hold of a stopper moves it up into the ball at up to 15 units/s (the hurried hand of tests/penmodels, 30 drawings
+of figure 3-9), a cup the ball lands in presses its platform down at 65-80 units/s (the cup dispenser demonstrated,
+and in SIMULATE's rollouts). A slower press is not told from a jostle: its pair stays in the contact it began in."""
+DRIVE_SHARE = 0.2
+"""The least share of the mover's speed that must point towards the other for it to drive into it (about 78 degrees
+off the line between them at most): a cup knocked sideways by the ball landing in it still presses its platform
+down (in SIMULATE's rollouts 65 of its 216 units/s); a stopper pulled out sideways from under a ball, wobbling a
+few units/s up and down with the pen, slides along it."""
 
 
-def drives_into(mover: Motion, other: Motion, normal: tuple[float, float] | None, speed: float) -> bool:
+def drives_into(mover: Motion, other: Motion, normal: tuple[float, float] | None,
+                speed: float = DRIVE_SPEED) -> bool:
     """Whether ``mover`` drives into ``other``: its velocity towards it along ``normal`` (pointing from the mover
     to the other; None: from centre to centre) faster than ``speed`` and at least `DRIVE_SHARE` of its speed.
 
-    >>> drives_into((0, 0, 0, 0, 100, 0), (0, 50, 0, 0, 100, 0), None, 5.0)  # pressing down what is below
+    >>> drives_into((0, 0, 0, 0, 100, 0), (0, 50, 0, 0, 100, 0), None)  # pressing down what is below
     True
-    >>> drives_into((0, 50, 0, 600, -3, 0), (0, 0, 0, 0, 0, 0), None, 5.0)  # sliding out from under it
+    >>> drives_into((0, 50, 0, 600, -3, 0), (0, 0, 0, 0, 0, 0), None)  # sliding out from under it
+    False
+    >>> drives_into((0, 50, 0, 6, -15, 0), (0, 0, 0, 0, -15, 0), None)  # the pen's hook as it takes hold
     False
     """
     if normal is None:
@@ -52,6 +65,27 @@ def drives_into(mover: Motion, other: Motion, normal: tuple[float, float] | None
     vx, vy = mover[3], mover[4]
     approach = vx * normal[0] + vy * normal[1]
     return approach > speed and approach >= DRIVE_SHARE * math.hypot(vx, vy)
+
+
+def facing(mover: BodyOutline, pose: Motion, other: Motion) -> tuple[float, float] | None:
+    """The direction from ``mover`` towards ``other``'s centre across their contact: from the point of the mover's
+    hull nearest that centre (a ball resting near one end of a long stopper is above it, not beside its middle);
+    None when the centre is within the hull or the hull has no area (then centre to centre serves).
+
+    >>> plank = BodyOutline("p", ((-120, -20), (120, -20), (120, 20), (-120, 20)), False)
+    >>> facing(plank, (0, 0, 0, 0, 0, 0), (100, -60, 0, 0, 0, 0))
+    (0.0, -1.0)
+    """
+    hull = placed(mover, pose)
+    if len(hull) < 3:
+        return None
+    polygon, centre = Polygon(hull), Point(other[0], other[1])
+    if polygon.area == 0 or polygon.covers(centre):
+        return None
+    near = nearest_points(polygon.exterior, centre)[0]
+    dx, dy = other[0] - near.x, other[1] - near.y
+    d = math.hypot(dx, dy)
+    return (dx / d, dy / d) if d > 0 else None
 
 
 def parted(outlines: Mapping[str, BodyOutline], pair: frozenset[str], poses: Mapping[str, Motion],

@@ -262,8 +262,7 @@ def _compare(pa: Prepared, pb: Prepared, say: _Explainer | None, simulation: boo
             rows_a.append(pa.rows[ia])
             rows_b.append(pb.rows[ib])
             row_owner.append(ia)
-        elif ea.point is not None and ev_b[ib].point is not None:
-            pta, ptb = ea.point, ev_b[ib].point
+        elif (pta := ea.point) is not None and (ptb := ev_b[ib].point) is not None:
             ledger.distances.append((ia, ((pta[0] - ptb[0]) ** 2 + (pta[1] - ptb[1]) ** 2) ** 0.5))
     if rows_a:
         gap = pa.paths[rows_a] - pb.paths[rows_b]

@@ -61,10 +61,11 @@ def outline_of(body: Body) -> BodyOutline:
     container = False
     if body.shape in ("polyline", "polygon") and isinstance(placed_hull, Polygon):
         rect = placed_hull.minimum_rotated_rectangle
-        xs, ys = rect.exterior.coords.xy
-        sides = [math.dist((xs[i], ys[i]), (xs[i + 1], ys[i + 1])) for i in range(2)]
-        container = (placed_hull.area > CONTAINER_HULL_RATIO * geometry.area
-                     and min(sides) > CONTAINER_MIN_DEPTH * body_size(body))
+        if isinstance(rect, Polygon):  # (a hull with no area has a line or a point for its rectangle)
+            xs, ys = rect.exterior.coords.xy
+            sides = [math.dist((xs[i], ys[i]), (xs[i + 1], ys[i + 1])) for i in range(2)]
+            container = (placed_hull.area > CONTAINER_HULL_RATIO * geometry.area
+                         and min(sides) > CONTAINER_MIN_DEPTH * body_size(body))
     points = body.outline if body.outline else ((0.0, 0.0),)
     local = Polygon(points).convex_hull if len(points) >= 3 else None
     if local is None or not isinstance(local, Polygon) or local.area == 0:

@@ -32,7 +32,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from physink_tui.scene.physics.contacts import ContactRecord
-from physink_tui.timeline.begun_in_contact import drives_into, parted
+from physink_tui.timeline.begun_in_contact import drives_into, facing, parted
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
 from physink_tui.timeline.movement_record import OpenMovement, Regions
@@ -223,14 +223,16 @@ class Recorder:
                 if body in pair and len(pair) == 2:
                     (other,) = pair - {body}
                     if self._group.get(other, other) != key and self._cause_of(other, t, obs) is not None:
-                        if self._begun_touching(pair) and not self._drives(obs, other, body, None):
+                        begun = self._begun_touching(pair)
+                        across = facing(self.outlines[other], obs.poses[other], obs.poses[body]) if begun else None
+                        if begun and not self._drives(obs, other, body, across):
                             jostled = True  # its partner from the start moves on without pushing it
                             continue
                         ongoing = self._touches.going_on(pair)
                         if ongoing is not None and ongoing in self.timeline:
                             self._moved_on(t, body, self.timeline.event(ongoing))  # in a contact going on
-                        else:
-                            self._add_contact(obs, body, other, None, None)  # pushed by a moving body
+                        else:  # pushed by a moving body (across the contact they began in, when they did)
+                            self._add_contact(obs, body, other, None, across and (-across[0], -across[1]))
                         return
             if jostled:
                 return
@@ -273,9 +275,9 @@ class Recorder:
     def _drives(self, obs: Observation, mover: str, other: str, normal: tuple[float, float] | None) -> bool:
         """Whether ``mover``, moving, drives into ``other`` (`begun_in_contact.drives_into`)."""
         pm, po = obs.poses.get(mover), obs.poses.get(other)
-        if pm is None or self._cause_of(mover, obs.t, obs) is None:
+        if pm is None or po is None or self._cause_of(mover, obs.t, obs) is None:
             return False
-        return drives_into(pm, po if po is not None else (pm[0], pm[1], 0.0, 0.0, 0.0, 0.0), normal, MOVING_SPEED)
+        return drives_into(pm, po, normal)
 
     def _latest_movement(self, body: str) -> Event | None:
         """The latest movement of ``body``'s mechanism (open or ended), which a new grab continues."""

@@ -77,8 +77,13 @@ def afterwards(comparison: Comparison, simulated: Timeline, names: Mapping[str, 
         else:
             parts.append(f"{name(a)} touches {name(b)}" + ("" if n == 1 else f" {_times(n)}"))
     in_contacts = {c for pair in pairs for c in pair}
-    ended = [ev for ev in left if ev.type == "end_contact" and len(ev.components) == 2]
-    parts += [f"{name(ev.components[0])} comes away from {name(ev.components[1])}" for ev in ended]
+    ended: dict[tuple[str, str], int] = {}
+    for ev in left:
+        if ev.type == "end_contact" and len(ev.components) == 2:
+            key = next((k for k in ended if set(k) == set(ev.components)), (ev.components[0], ev.components[1]))
+            ended[key] = ended.get(key, 0) + 1
+    parts += [f"{name(a)} comes away from {name(b)}" + ("" if n == 1 else f" {_times(n)}")
+              for (a, b), n in ended.items()]
     movers = dict.fromkeys(ev.components[0] for ev in left if ev.type == "movement" and ev.components)
     parts += [f"{name(body)} moves on" for body in movers if body not in in_contacts]
     return "afterwards the simulation goes on: " + "; ".join(parts)

@@ -7,7 +7,6 @@ main screen, asks before losing work; the controls are the main screen's, the st
 from __future__ import annotations
 
 import gc
-import json
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -28,6 +27,7 @@ from physink_tui.tui.live import LiveSession
 from physink_tui.tui.pacing import FramePacer
 from physink_tui.tui.screens.main import MainScreen
 from physink_tui.tui.screens.modals import ConfirmModal, ErrorModal
+from physink_tui.tui.widgets.bars import StatusBar
 
 STYLESHEET = "physink.tcss"
 """The panel's styles: package data of ``physink_tui.tui`` (pyproject.toml's package-data lists it)."""
@@ -192,7 +192,7 @@ class PhysinkApp(App[None]):
         if options.tablet:
             self.main.watch_tablet(options.device, options.serial)
         else:
-            self.main.query_one("#status").set(device="no tablet (mouse only)")
+            self.main.query_one("#status", StatusBar).set(device="no tablet (mouse only)")
         if options.project:
             self.main.open_project(options.project)
         if options.entries:
@@ -294,7 +294,3 @@ def make_app(options: TuiOptions | None = None) -> PhysinkApp:
     """The app for ``options`` (the CLI and the tests build it the same way)."""
     return PhysinkApp(options)
 
-
-def project_object(text: str) -> dict:
-    """A project file's JSON object, to embed in a ``load`` line (checked by the session as it loads)."""
-    return json.loads(text)

@@ -12,6 +12,7 @@ import json
 import os
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import Any
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats import json_checks as checks
@@ -70,7 +71,7 @@ class Config:
         return self
 
     def mapping(self, canvas: tuple[float, float] = DEFAULT_CANVAS) -> TabletMapping:
-        return TabletMapping(canvas_width=canvas[0], canvas_height=canvas[1], area=tuple(self.area),
+        return TabletMapping(canvas_width=canvas[0], canvas_height=canvas[1], area=self.area,
                              rotation=self.rotation, left_handed=self.left_handed, keep_aspect=self.keep_aspect,
                              display_tablet=self.display_tablet)
 
@@ -116,7 +117,7 @@ def load_config(path: str | os.PathLike[str] | None = None) -> Config:
         raise PhysinkError(f"{target}: {exc}") from None
 
 
-def _checked(values: dict[str, object], where: Place) -> dict[str, object]:
+def _checked(values: dict[str, Any], where: Place) -> dict[str, Any]:
     """Each setting's type and range, named by its key (``area[2]: expected a number in [0, 1], got "x"``);
     how settings go together (x0 < x1...) is `Config.check`'s."""
     for key in ("left_handed", "keep_aspect", "display_tablet"):

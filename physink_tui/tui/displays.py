@@ -84,7 +84,10 @@ def area_on(monitor: Monitor, rect: Rect) -> tuple[float, float, float, float]:
         raise PhysinkError(f"the canvas ({rect.width:g}x{rect.height:g} at {rect.x:g},{rect.y:g}) is not wholly on "
                            f"monitor {monitor.name} ({m.width:g}x{m.height:g} at {m.x:g},{m.y:g}): move the "
                            "terminal window onto the pen display")
-    return tuple(round(min(max(v, 0.0), 1.0), 4) for v in (x0, y0, x1, y1))  # type: ignore[return-value]
+    def fraction(v: float) -> float:
+        return round(min(max(v, 0.0), 1.0), 4)
+
+    return fraction(x0), fraction(y0), fraction(x1), fraction(y1)
 
 
 def _run(args: list[str]) -> str:

@@ -14,15 +14,14 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import Any
 
 from physink_tui.formats.journal.entries import CommandEntry, JournalEntry, JournalHeader
-from physink_tui.formats.journal.writer import JournalWriter
 from physink_tui.input.replay_clock import ReplayClock
 from physink_tui.input.scripted_sources import ProgrammaticPenSource
-from physink_tui.session.runner import SessionRunner
-from physink_tui.session.session import Session
+from physink_tui.session.journaled import Journaled
+from physink_tui.session.simulation import SessionInput
 from physink_tui.session.source_pump import SourcePump
-from physink_tui.session.view import SessionView
 
 MOUSE = "mouse"
 """The mouse pen's source id (its samples become ``pen`` lines, which name no device)."""
@@ -44,7 +43,7 @@ class JournalFeed:
     """
 
     def __init__(self, entries: Sequence[JournalEntry], submit: Callable[[JournalEntry], object], *,
-                 speed: float = 1.0, on_done: Callable[[], None] | None = None,
+                 speed: float = 1.0, on_done: Callable[[], object] | None = None,
                  clock: ReplayClock | None = None) -> None:
         if not speed > 0:
             raise ValueError(f"speed: expected > 0, got {speed!r}")
@@ -122,20 +121,15 @@ class LiveSession:
 
     def __init__(self, header: JournalHeader, *, journal_path: Path | None = None,
                  prior: Sequence[JournalEntry] = (), max_fps: float = 30.0,
-                 on_error: Callable[[BaseException], None] | None = None,
+                 on_error: Callable[[BaseException], object] | None = None,
                  clock: Callable[[], float] = time.monotonic) -> None:
         self.header = header
-        self.session = Session.from_header(header)
         self.journal_path = journal_path
-        if journal_path is not None:
-            self.session.journal = JournalWriter.create(journal_path, header)
-        for entry in prior:
-            if not (isinstance(entry, CommandEntry) and entry.name == "end"):
-                self.session.handle(entry)
         self.clock = ReplayClock(clock)
         """The runner's clock: ``clock`` itself, except that a replay holds it at each entry's time (`JournalFeed`)."""
-        self.runner: SessionRunner[SessionView] = SessionRunner(self.session, max_fps=max_fps, on_error=on_error,
-                                                                 clock=self.clock)
+        journaled = Journaled.create(header, journal_path, prior=prior, clock=self.clock, max_fps=max_fps,
+                                     on_error=on_error)
+        self.session, self.runner = journaled.session, journaled.runner
         self.mouse = ProgrammaticPenSource(MOUSE)
         self.mouse_pump = SourcePump(self.mouse, self.runner.submit)
         self.feed: JournalFeed | None = None
@@ -151,15 +145,15 @@ class LiveSession:
         self.runner.start()
         self.mouse_pump.start()
 
-    def submit(self, entry: JournalEntry) -> JournalEntry | None:
+    def submit(self, entry: SessionInput) -> SessionInput | None:
         return self.runner.submit(entry)
 
-    def command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
+    def command(self, name: str, *args: str | float, project: dict[str, Any] | None = None) -> SessionInput | None:
         """Submit a command (a key or a button)."""
         return self.runner.submit(CommandEntry(0.0, name, tuple(args), project))
 
     def replay(self, entries: Sequence[JournalEntry], *, speed: float = 1.0,
-               on_done: Callable[[], None] | None = None) -> JournalFeed:
+               on_done: Callable[[], object] | None = None) -> JournalFeed:
         """Feed recorded entries at ``speed`` times real time (one feed at a time)."""
         if self.feed is not None:
             self.feed.stop()

@@ -13,6 +13,7 @@ from physink_tui.input.pen.state import PenState
 from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener, Utterance
 from physink_tui.input.speech.microphone import MicrophoneListener, StreamFactory
+from physink_tui.input.speech.recogniser import Recogniser
 from physink_tui.session.runner import SessionRunner
 
 BUTTON_STATES = frozenset({PenState.HOVERING_BUTTON.value, PenState.TOUCHING_BUTTON.value})
@@ -38,8 +39,8 @@ class PushToTalk:
         recogniser: makes the recogniser on the first use (loading pocketsphinx's model takes a moment).
     """
 
-    def __init__(self, runner: SessionRunner, status: Callable[[str], None], stream: StreamFactory | None = None,
-                 recogniser: Callable[[], object] = make_recogniser) -> None:
+    def __init__(self, runner: SessionRunner, status: Callable[[str], object], stream: StreamFactory | None = None,
+                 recogniser: Callable[[], Recogniser] = make_recogniser) -> None:
         self.runner = runner
         self.status = status
         self._stream = stream
@@ -86,7 +87,7 @@ class PushToTalk:
         with self._telling:  # what the listening thread hears waits until "listening" has been told
             try:
                 if self._microphone is None:
-                    listener = Listener(self._make_recogniser())  # type: ignore[arg-type]
+                    listener = Listener(self._make_recogniser())
                     self._microphone = MicrophoneListener(listener, self._heard, clock=self.runner.now,
                                                           stream=self._stream)
                 self._microphone.listener.set_words(labels)

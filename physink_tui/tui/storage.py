@@ -76,8 +76,7 @@ def unfinished_journals(folder: Path | None = None, exclude: Path | None = None,
     if not folder.is_dir():
         return []
     found = []
-    for path in sorted(_journals(folder), key=lambda pair: pair[1], reverse=True)[:limit]:
-        path = path[0]
+    for path, _ in sorted(_journals(folder), key=lambda pair: pair[1], reverse=True)[:limit]:
         if exclude is not None and path.resolve() == exclude.resolve():
             continue
         try:

@@ -38,7 +38,7 @@ class TabletWatch:
         opener: opens a reader for a spec (tests pass a fake); default `open_reader`.
     """
 
-    def __init__(self, submit: Callable[[JournalEntry], object], on_status: Callable[[str], None], *,
+    def __init__(self, submit: Callable[[JournalEntry], object], on_status: Callable[[str], object], *,
                  spec: str | None = None, serial: str | None = None, mapping: TabletMapping | None = None,
                  opener: Callable[[str | None, str], PenSource] | None = None, scan_s: float = SCAN_S) -> None:
         self._submit = submit
@@ -101,7 +101,7 @@ class TabletWatch:
         info = getattr(reader, "info", None)
         device: JournalDevice | None = None
         name = self._serial or "tablet"
-        if info is not None and getattr(info, "descriptor", b""):
+        if info is not None and getattr(info, "descriptor", None):
             name = info.name or info.path
             device = JournalDevice(DEVICE_ID, info.name or None, info.bus, info.vid, info.pid, info.descriptor)
             self._submit(DeviceEntry(0.0, (device,)))

@@ -9,7 +9,7 @@ from physink_tui.session.session import Session
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
 from physink_tui.sim.evaluate import compare_rollout, make_problem, simulate
 from physink_tui.sim.search import Search
-from physink_tui.sim.verdict import verdict
+from physink_tui.sim.verdict import refusal_or_verdict
 from physink_tui.sim_run.driver import run_search
 from physink_tui.sim_run.executors import Executor
 
@@ -35,7 +35,5 @@ def judge(session: Session, executor: Executor, *, seed: int = DEFAULT_SEED, bud
     result = simulate(problem, best)
     comparison = compare_rollout(problem, result, explain=True)
     found = search.best_score is not None and not search.best_score.exploded and comparison.equivalent
-    text = verdict(problem, result.timeline, comparison, found=found,
-                   rollouts=search.rollouts - search.exploded if search.best is not None else 0,
-                   flagged=result.flagged)
+    text = refusal_or_verdict(search, problem, result, comparison, found=found)
     return Outcome(found, search.found_at, search.rollouts, comparison.qualitative_distance, text)

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Collection
-from typing import Any
+from typing import Any, cast
 
 from physink_tui.errors import JournalError
 from physink_tui.formats import json_checks as checks
@@ -127,8 +127,7 @@ def encode_entry(
     ...
     physink_tui.errors.JournalError: pen entry: key "pen.y": expected a number in [0, 1], got 1.5
     """
-    kind = type(entry)
-    if kind is PenEntry:
+    if type(entry) is PenEntry:
         where = at("pen entry")
         t = value_checks.seconds(where, "t", entry.t, previous_t)
         unit, flag = checks.unit, checks.flag
@@ -139,13 +138,13 @@ def encode_entry(
             f'"eraser":{_BOOL[flag(where, "pen.eraser", entry.eraser)]},'
             f'"b1":{_BOOL[flag(where, "pen.b1", entry.b1)]},"b2":{_BOOL[flag(where, "pen.b2", entry.b2)]}}}}}'
         )
-    if kind is HidEntry:
+    if type(entry) is HidEntry:
         where = at("hid entry")
         t = value_checks.seconds(where, "t", entry.t, previous_t)
         data = value_checks.report_bytes(where, "hid", entry.data)
         dev = _device(where, checks.text(where, "dev", entry.dev, empty=False), devices)
         return f'{{"t":{t!r},"hid":"{data.hex(" ")}","dev":{json_string(dev)}}}'
-    if kind is CommandEntry:
+    if type(entry) is CommandEntry:
         where = at("cmd entry")
         t = value_checks.seconds(where, "t", entry.t, previous_t)
         args = value_checks.command(where, entry.name, entry.args)
@@ -153,11 +152,11 @@ def encode_entry(
         embedded = _embedded_project(where, entry.name, entry.project, entry.project is not None)
         project = "" if embedded is None else f',"project":{compact_json(embedded)}'
         return f'{{"t":{t!r},"cmd":{json_string(entry.name)},"args":[{listed}]{project}}}'
-    if kind is SayEntry:
+    if type(entry) is SayEntry:
         where = at("say entry")
         t = value_checks.seconds(where, "t", entry.t, previous_t)
         return f'{{"t":{t!r},"say":{json_string(checks.text(where, "say", entry.text))}}}'
-    if kind is DeviceEntry:
+    if type(entry) is DeviceEntry:
         where = at("device entry")
         t = value_checks.seconds(where, "t", entry.t, previous_t)
         if not entry.devices:
@@ -178,7 +177,7 @@ def _embedded_project(where: Place, name: str, project: Any, present: bool,
         raise where.bad("project", _LOAD_EXPECTED)
     checks.json_value(where, "project", project)
     decode_project_object(project, Place(f'{where}: key "project"', JournalError), warnings)
-    return project
+    return cast("dict[str, Any]", project)  # decode_project_object has checked that it is a JSON object
 
 
 def _device(where: Place, dev: str, devices: Collection[str] | None) -> str:

@@ -120,14 +120,17 @@ def decode_devices(where: Place, devices: Any, warnings: list[str] | None, top: 
         if not isinstance(dev, dict):
             raise bad(where, key, "an object with " + ", ".join(DEVICE_KEYS), dev)
         name = get(dev, where, "name", f"{key}.name", "a string or null")
+        bus, vid, pid = (
+            checks.optional_int(where, f"{key}.{k}", get(dev, where, k, f"{key}.{k}", _INT), 0xFFFF)
+            for k in ("bus", "vid", "pid")
+        )
         out.append(
             JournalDevice(
                 dev_id,
                 None if name is None else checks.text(where, f"{key}.name", name),
-                *(
-                    checks.optional_int(where, f"{key}.{k}", get(dev, where, k, f"{key}.{k}", _INT), 0xFFFF)
-                    for k in ("bus", "vid", "pid")
-                ),
+                bus,
+                vid,
+                pid,
                 value_checks.hex_bytes(
                     where, f"{key}.descriptor", get(dev, where, "descriptor", f"{key}.descriptor", _HEX)
                 ),

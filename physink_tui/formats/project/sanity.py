@@ -3,8 +3,8 @@ TUI's start and Load; a session's ``load`` command: the kiosk, the TUI, replays)
 within the timeline's, outlines the physics accepts; reads no file (the format itself is `codec`'s).
 
 A project can be well-formed JSON and still be unusable: a canvas 1e300 units wide overflows the recorder, a ball of
-radius 1e8 never settles, an event ending at t = 1e8 asks for three billion video frames, a timeline naming a body
-the scene lacks draws nothing, and a zero-area outline is refused by the physics only once a simulation starts.
+radius 1e8 never settles, an event ending at t = 1e8 asks for three billion video frames, and a zero-area outline
+is refused by the physics only once a simulation starts.
 `check_values` refuses each of them when the project is read, naming the file and the JSON path
 (``p.json: components[1].radius: expected a number from 0.01 to 1600 (the canvas's larger side), got 100000000.0``),
 so every command accepts and refuses the same projects.
@@ -13,13 +13,12 @@ so every command accepts and refuses the same projects.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 
 from physink_tui.errors import SceneError
 from physink_tui.formats.json_checks import Place
 from physink_tui.formats.project.codec import Project
-from physink_tui.scene.components import BACKGROUND, Body, Joint, Rope, Scene, Spring
-from physink_tui.scene.physics.build import outline_problem
+from physink_tui.scene.components import Body, Joint, Rope, Scene, Spring
+from physink_tui.scene.physics.outlines import outline_problem
 from physink_tui.timeline.events import Timeline
 
 CANVAS_MIN = 1.0
@@ -47,6 +46,8 @@ def check_project(project: Project, where: Place | str) -> Project:
     if isinstance(where, str):
         where = Place(where, SceneError)
     check_values(project.scene, project.canvas, project.timeline, where)
+    if project.demonstration is not None:  # an adopted simulation's demonstration, kept beside it
+        _timeline(project.demonstration, project.scene, where, "demonstration.events")
     return project
 
 
@@ -117,17 +118,22 @@ def _body(b: Body, path: str, where: Place, largest: float, box: tuple[float, fl
         raise where.bad(f"{path}.material.friction", f"a number from 0 to {MAX_FRICTION:g}", m.friction)
 
 
+def named(timeline: Timeline) -> set[str]:
+    """Every component id the timeline's events name (their components, sides, regions and tracks).
+
+    A timeline may name a component the scene no longer has (the user erased it after demonstrating, and saved):
+    such a project still loads (it is the user's work); `physink simulate` refuses it and `physink export` says so.
+    """
+    return {c for ev in timeline.events for c in (*ev.components, *(c for c, _ in ev.sides),
+                                                  *(c for c, _ in ev.regions), *(c for c, _ in ev.tracks))}
+
+
 def _timeline(timeline: Timeline, scene: Scene, where: Place, events: str) -> None:
-    known = set(scene.components) | {BACKGROUND}
     for i, ev in enumerate(timeline.events):
         path = f"{events}[{i}]"
         if ev.t1 > MAX_DURATION or ev.t0 < 0:
             key, value = (f"{path}.t1", ev.t1) if ev.t1 > MAX_DURATION else (f"{path}.t0", ev.t0)
             raise where.bad(key, f"a time from 0 to {MAX_DURATION:g} s", value)
-        _named(ev.components, f"{path}.components", "id", known, where)
-        _named((c for c, _ in ev.sides), f"{path}.sides", "component", known, where)
-        _named((c for c, _ in ev.regions), f"{path}.regions", "component", known, where)
-        _named((c for c, _ in ev.tracks), f"{path}.tracks", "component", known, where)
         rows = [(f"{path}.trajectory[{j}][0]", p.t) for j, p in enumerate(ev.trajectory)]
         rows += [(f"{path}.tracks[{k}].trajectory[{j}][0]", p.t) for k, (_, frames) in enumerate(ev.tracks)
                  for j, p in enumerate(frames)]
@@ -135,9 +141,3 @@ def _timeline(timeline: Timeline, scene: Scene, where: Place, events: str) -> No
             if not 0 <= t <= MAX_DURATION:
                 raise where.bad(key, f"a time from 0 to {MAX_DURATION:g} s", t)
 
-
-def _named(ids: Iterable[str], path: str, key: str, known: set[str], where: Place) -> None:
-    for j, cid in enumerate(ids):
-        if cid not in known:
-            raise where.bad(f"{path}[{j}].{key}", "the id of a component of the project's scene", cid,
-                            " (no component has that id)")

@@ -6,6 +6,7 @@ they refer to each other (a joint's or spring's bodies, a rope's ends), and the 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from physink_tui.formats import json_checks as checks
@@ -196,7 +197,8 @@ def _spring(f: Fields, cid: str, warnings: list[str] | None) -> Spring:
     return Spring(cid, a, b, anchor_a, anchor_b, axis, rest, f.number("k", "a number > 0", above=0.0), f.label())
 
 
-_READERS = {"body": _body, "joint": _joint, "rope": _rope, "spring": _spring}
+_READERS: dict[str, Callable[[Fields, str, list[str] | None], Component]] = {
+    "body": _body, "joint": _joint, "rope": _rope, "spring": _spring}
 
 
 def decode_next_id(where: Place, raw: Any, components: list[Component]) -> dict[str, int]:

@@ -130,8 +130,11 @@ class CaptureParser:
     def events(self, lines: list[str], first: int) -> None:
         """A run of lines starting ``"E: "``, the first being line ``first``: all at once when each is well formed."""
         dev = self.current
-        ready = dev is not None and bool(dev.descriptor)
-        strict = strict_events(lines, MAX_SECONDS) if ready else None
+        if dev is None or not dev.descriptor:  # no descriptor yet: line by line (each says what is missing)
+            for k, raw in enumerate(lines):
+                self.slow_line(first + k, raw.strip())
+            return
+        strict = strict_events(lines, MAX_SECONDS)
         if strict is not None:  # the usual case: checked and read a column at a time
             self.pending.clear()
             self.t.frombytes(strict[0].tobytes())
@@ -140,8 +143,8 @@ class CaptureParser:
             self.lengths.frombytes(strict[1].tobytes())
             self.blob += strict[2]
             return
-        rows = _FAST_EVENTS.findall("\n".join(lines)) if ready else ()
-        if len(rows) != len(lines):  # something to report, or no descriptor yet: line by line
+        rows = _FAST_EVENTS.findall("\n".join(lines))
+        if len(rows) != len(lines):  # something to report: line by line
             for k, raw in enumerate(lines):
                 self.slow_line(first + k, raw.strip())
             return
@@ -155,7 +158,7 @@ class CaptureParser:
         if not ok.all():
             for k in np.flatnonzero(~ok).tolist():  # rare: report them as the line-by-line path would
                 self.read_event(first + k, lines[k].strip())
-            hexes = [hexes[k] for k in np.flatnonzero(ok).tolist()]
+            hexes = tuple(hexes[k] for k in np.flatnonzero(ok).tolist())
             t, found, linenos = t[ok], found[ok], linenos[ok]
         self.t.frombytes(t.tobytes())
         self.line.frombytes(linenos.tobytes())

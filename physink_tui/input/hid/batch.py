@@ -128,17 +128,18 @@ def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.n
     if lay.invert is not None and not lay.eraser_is_button:
         eraser |= _bit(m, lay.invert)
     eraser |= erase
-    rp = _raw(m, lay.pressure) if lay.pressure is not None else None
+    pressure = lay.pressure
+    rp = _raw(m, pressure) if pressure is not None else None
     if lay.tip is not None:
         tip = _bit(m, lay.tip) | erase
-    elif rp is not None:
-        tip = (rp > lay.pressure.lo) | erase
+    elif pressure is not None and rp is not None:
+        tip = (rp > pressure.lo) | erase
     else:
         tip = erase.copy()
-    if rp is not None:
-        p, p_wide = _normalise(rp, lay.pressure, keep, "pressure", learned, seen)
+    if pressure is not None and rp is not None:
+        p, p_wide = _normalise(rp, pressure, keep, "pressure", learned, seen)
         if lay.b1 is not None or lay.b2 is not None:
-            tip &= ~((rp <= lay.pressure.lo) & (b1 | b2))
+            tip &= ~((rp <= pressure.lo) & (b1 | b2))
         p = np.where(tip, p, 0.0)
     else:
         p, p_wide = np.where(tip, 1.0, 0.0), False
@@ -147,8 +148,8 @@ def _decode_group(lay: PenLayout, m: np.ndarray, stats: DecodeStats, lines: np.n
         in_value = not lay.in_range_inverted
         if lay.learn_in_range:
             strong = keep & (tip | (p > 0) | b1 | b2)
-            counts = (np.count_nonzero(strong), np.count_nonzero(ib[strong]), np.count_nonzero(keep),
-                      np.count_nonzero(ib[keep]))
+            counts = (int(np.count_nonzero(strong)), int(np.count_nonzero(ib[strong])), int(np.count_nonzero(keep)),
+                      int(np.count_nonzero(ib[keep])))
             seen["in_counts"] = counts
             in_value = learned.get("in_value", polarity(counts, in_value))
         rng = (ib == in_value) | tip
@@ -190,7 +191,7 @@ def decode_batch(
     decoder: HidPenDecoder,
     times: Sequence[float] | np.ndarray,
     reports: Sequence[bytes],
-    lines: Sequence[int] | None = None,
+    lines: Sequence[int] | np.ndarray | None = None,
     *,
     learned: dict[int, dict] | None = None,
     seen: dict[int, dict] | None = None,

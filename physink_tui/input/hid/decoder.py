@@ -120,15 +120,8 @@ class HidPenDecoder:
                 stats.ignore(where, f"unknown report id 0x{rid:02x}")
             return None
         result = fn(data, t)
-        if result.__class__ is str:
+        if isinstance(result, str):
             stats.ignore(where, f"{result} 0x{rid:02x}")
             return None
         stats.samples += 1
         return result
-
-    def note_widening(self) -> None:
-        """Copy which ranges widened into the stats (cheap; call once after decoding)."""
-        for rid, c in self.compiled.items():
-            for name, bounds in (("x", c.x), ("y", c.y), ("pressure", c.p)):
-                if bounds is not None and bounds.widened:
-                    self.stats.widened.add(f"0x{rid:02x} {name}")

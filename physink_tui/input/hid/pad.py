@@ -48,11 +48,6 @@ class PadDecoder:
                     if usage >> 16 == BUTTON_PAGE and usage & 0xFFFF:
                         self._bits.setdefault(report.report_id, []).append((f.bit_offset + i, usage & 0xFFFF))
 
-    @property
-    def has_pad(self) -> bool:
-        """Whether this tablet can report pad buttons at all."""
-        return bool(self._bits or self._vendor)
-
     def buttons(self, data: bytes) -> frozenset[int] | None:
         """The buttons (numbered from 1) that ``data`` says are held, or None when it is no pad report."""
         if not data:

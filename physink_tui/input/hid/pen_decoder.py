@@ -10,6 +10,7 @@ that some models invert.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 from physink_tui.input.hid.pen_layout import PenLayout, ValueField
 from physink_tui.input.pen.sample import PenSample
@@ -178,7 +179,7 @@ class CompiledLayout:
             src.append(f"    {name} = {-TILT_LIMIT} if {name} < {-TILT_LIMIT} else {TILT_LIMIT} "
                        f"if {name} > {TILT_LIMIT} else float({name})")
         src.append(f"    return S(t, x, y, p, tip, rng, eraser, b1, b2, tilt_x, tilt_y, {lay.report_id})")
-        namespace = {"S": PenSample, "X": self.x, "Y": self.y, "P": self.p, "C": self}
+        namespace: dict[str, Any] = {"S": PenSample, "X": self.x, "Y": self.y, "P": self.p, "C": self}
         code = "\n".join(src)
         exec(compile(code, f"<pen layout 0x{lay.report_id:02x} {lay.source}>", "exec"), namespace)
         self.source_code = code

@@ -44,10 +44,6 @@ class ValueField:
     def width(self) -> int:
         return sum(size for _, size in self.parts)
 
-    @property
-    def end_bit(self) -> int:
-        return max(off + size for off, size in self.parts)
-
 
 @dataclass(frozen=True, slots=True)
 class PenLayout:
@@ -190,7 +186,7 @@ def layout_for_report(fields: list[Field], report_id: int, length: int) -> PenLa
     barrels: list[int] = []
     has_contact_id = False
     for u, f, i in _values(fields):
-        bit = f.bit_offset + i * f.size
+        offset = f.bit_offset + i * f.size
         one_bit = f.size == 1
         if u == U.GD_X and "x" not in found and not f.is_relative:
             found["x"] = (f, i)
@@ -217,7 +213,7 @@ def layout_for_report(fields: list[Field], report_id: int, length: int) -> PenLa
                 U.DG_TABLET_PICK: "pick",
             }.get(u)
             if u == U.DG_BARREL_SWITCH:
-                barrels.append(bit)
+                barrels.append(offset)
             elif name and name not in found:
                 found[name] = (f, i)
     if "x" not in found or "y" not in found:

@@ -15,6 +15,7 @@ import os
 import queue
 import re
 import select
+import stat
 import time
 from dataclasses import replace
 from typing import Any
@@ -202,7 +203,8 @@ def choose_tablet(nodes: list[HidrawInfo]) -> HidrawInfo | None:
 
 
 def check_device_spec(spec: str | None) -> None:
-    """Refuses a ``--device`` value that names no device however long one waits (`open_reader`'s forms only).
+    """Refuses a ``--device`` value that names no device however long one waits: none of `open_reader`'s forms, or
+    a path to a regular file or a folder (a node that does not exist yet may appear when the tablet is plugged in).
 
     >>> check_device_spec("zzzz:yyyy")
     Traceback (most recent call last):
@@ -211,7 +213,17 @@ def check_device_spec(spec: str | None) -> None:
 VID:PID in hex such as 256c:006d
     """
     spec = (spec or "auto").strip()
-    if spec == "auto" or parse_vid_pid(spec) is not None or "/" in spec or spec.startswith("hidraw"):
+    if "/" in spec:
+        try:
+            mode = os.stat(spec).st_mode
+        except FileNotFoundError:
+            return  # a node that may appear when the tablet is plugged in
+        except OSError as exc:
+            raise DeviceError(f"--device {spec!r}: {exc.strerror or exc}") from None
+        if stat.S_ISREG(mode) or stat.S_ISDIR(mode):
+            raise DeviceError(f"--device {spec!r}: not a device node; expected a hidraw node such as /dev/hidraw3")
+        return
+    if spec == "auto" or parse_vid_pid(spec) is not None or spec.startswith("hidraw"):
         return
     raise DeviceError(f"--device {spec!r}: expected 'auto', a hidraw path such as /dev/hidraw3, or VID:PID in hex "
                       "such as 256c:006d")
@@ -235,7 +247,9 @@ def open_reader(spec: str | None, device_id: str = "tablet0", *, sysfs_root: str
     ids = parse_vid_pid(spec)
     if ids is not None:
         return _open_vid_pid(*ids, device_id, sysfs_root, dev_root)
-    check_device_spec(spec)
+    if not ("/" in spec or spec.startswith("hidraw")):
+        raise DeviceError(f"--device {spec!r}: expected 'auto', a hidraw path such as /dev/hidraw3, or VID:PID in "
+                          "hex such as 256c:006d")
     path = spec if "/" in spec else os.path.join(dev_root, spec)
     return HidrawReader(path, device_id, info=info_for_path(path, sysfs_root, dev_root))
 

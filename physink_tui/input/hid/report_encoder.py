@@ -151,9 +151,9 @@ def encode_report(layout: PenLayout, state: PenState, *, padding_ones: bool = Fa
         if touching and raw <= v.lo:
             raw = v.lo + 1
         bits |= _put_value(v, raw)
-    for v, degrees in ((layout.tilt_x, state.tilt_x), (layout.tilt_y, state.tilt_y)):
-        if v is not None:
-            bits |= _put_value(v, tilt_value(v, degrees))
+    for tilt, degrees in ((layout.tilt_x, state.tilt_x), (layout.tilt_y, state.tilt_y)):
+        if tilt is not None:
+            bits |= _put_value(tilt, tilt_value(tilt, degrees))
 
     id_bits = 8 if layout.report_id else 0
     if padding_ones:

@@ -19,7 +19,7 @@ from __future__ import annotations
 import errno
 import re
 from dataclasses import dataclass
-from typing import Any, Protocol
+from typing import Any, Protocol, TypeGuard
 
 from physink_tui.errors import DeviceError
 from physink_tui.input.hid.hidraw import UDEV_INSTALL
@@ -168,7 +168,7 @@ def _read_optional(dev: UsbControlDevice, index: int, ids: str, length: int = 25
         return None
 
 
-def _plausible(data: bytes | None, min_length: int) -> bool:
+def _plausible(data: bytes | None, min_length: int) -> TypeGuard[bytes]:
     return (data is not None and len(data) >= min_length and data[1] == DESCRIPTOR_TYPE_STRING
             and not is_text_only(data))
 

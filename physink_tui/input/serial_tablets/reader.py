@@ -216,6 +216,7 @@ class SerialPenSource:
         try:
             self.open()  # sets _ser and parser, or raises
             ser, parser, device = self._ser, self.parser, self.device_id
+            assert ser is not None and parser is not None  # (open sets both)
             ser.write(CMD_START)
             while not self._stop.is_set():
                 chunk = ser.read(ser.in_waiting or 1)

@@ -1,2 +1,65 @@
 """Speech input: recordings and the microphone to grammar-restricted commands, offline; acting on them is the
-session's."""
+session's.
+
+One utterance goes one way whatever brought it: `physink listen FILE.wav` and the microphone both call
+`Listener.hear(samples, began)`. The session never sees audio: a recognised utterance reaches it as a `say` entry
+(text), so a replay needs no audio and no recogniser.
+
+     WAV file ── audio.read_wav (any PCM rate/width/channels → 16 kHz mono int16, FFT resampling)
+     microphone ── microphone.MicrophoneListener (sounddevice RawInputStream, 50 ms blocks, own thread)
+                     └─ vad.VoiceActivityDetector (energy over a tracked noise floor) cuts utterances
+            ▼
+     listener.Listener.hear: vad.speech_bounds → no speech? rejected
+            → Recogniser.decode (grammar-restricted) → outside the grammar? not a whole sentence
+              (grammar.parse)? a word's acoustic score under the threshold? a word's posterior too low? rejected
+            → Utterance(text, command, rejected, began)
+                 ── `physink listen` prints {"text", "command", "rejected"};
+                    a TUI submits accepted text with SessionRunner.say(text, began)
+
+- `wav_file.py`: a WAV file's RIFF chunks parsed by hand (Python 3.11's `wave` refuses WAVE_FORMAT_EXTENSIBLE and
+  passes a truncated file's partial frames on silently): plain and extensible PCM of 8-32 bits, any channels; a file
+  cut off inside its header or its samples, or a header with no samples, named as such
+- `grammar.py`: `SpeechGrammar.build(labels, vocabulary, speakable=)`: names (labels, `DEFAULT_COMPONENTS`,
+  vocabulary-file `component` lines), the phrase verbs and prepositions (plus a few spoken pairs, "out of"), words
+  the recogniser cannot say left out and listed; `jsgf()` (`label <component>` or `[the] <component> <verb>
+  [[<prep>] [the] <component>]`, an article never on both sides of a word, optionally a weighted garbage loop);
+  `parse(text)` → `LabelCommand` / `PhraseCommand` or None
+- `recogniser.py`: the `Recogniser` protocol (`speakable`, `set_grammar`, `decode` → `Decoded` of `Word`s with
+  times, acoustic score and posterior; `threshold`, `min_confidence`), `backends.make_recogniser(vosk_model=None)`
+  importing the backend lazily (its own module, so the backends importing the contract make no cycle)
+- `pocketsphinx_backend.py`: the default: pocketsphinx 5 and its bundled en-us model. Two decoders share the
+  grammar: the *screen* also has a loop of single phones at weight 0.01 (speech outside the grammar takes the loop:
+  rejected), the *words* decoder gives the best sentence with lattice posteriors (the loop makes lattices huge, so
+  it is not in this one). British variants (non-rhotic, broad A) are added to every grammar word; a word the
+  dictionary lacks gets `letter_to_sound.pronounce`'s guess. Each decode resets the front end (noise estimate,
+  cepstral mean) and gives it the whole utterance at once, so the model's batch cepstral mean comes from this audio
+  alone (one pass; seeded one-bit dither): a result depends on its audio only (tests and replays agree)
+- `vosk_backend.py`: `--vosk-model DIR`: a `KaldiRecognizer` in grammar mode given the grammar's speakable words
+  (and `[unk]` when the model has it); the listener's parser enforces the sentence shape; `parse_result` reads
+  vosk's JSON
+- `listener.py`: `Listener` (keeps the recogniser on the grammar of the current labels, rebuilt only when they
+  change) and `Utterance`
+- `vad.py`: `VoiceActivityDetector` (streaming, 10 ms frames, noise floor over 3 s, 12 dB above it and 40 dB
+  absolute, 80 ms to start, 0.5 s of quiet to end, 0.25 s padding) and `speech_bounds` for a whole recording;
+  reusable by the kiosk
+- `microphone.py`: `MicrophoneListener(listener, on_utterance, clock=, stream=)`: `start()` / `stop()`
+  (push-to-talk: `stop` ends and hears the utterance under way), `on_utterance` called on the listening thread with
+  `Utterance.began` on `clock`'s scale; `sounddevice_stream(device)`: no PortAudio or no device is a
+  `MicrophoneError` at `start()`
+- `letter_to_sound.py`: `pronounce(word)`: ARPAbet phones guessed from English spelling by rules of our own
+  (digraphs, soft c/g, silent final e, r-coloured vowels, `-s`/`-es`/`-ed`/`-ing` endings, letter names for single
+  letters), None for words not spelled with letters; about 9 % of phones wrong on the grammar's own words, 20 % on
+  dictionary words at large (tests/test_speech_letter_to_sound.py)
+- `audio.py`, `dictionary.py`: WAV reading, resampling, writing; whether a typed label's words are in the speech
+  dictionary, or guessed, or not speakable
+
+The thresholds (`pocketsphinx_backend.THRESHOLD` -4.2 log-likelihood per frame and `MIN_CONFIDENCE` 0.4 posterior,
+both for the words other than articles, calibrated on a development set the fixture script writes with
+`--development DIR` and checked on the committed fixtures, `GARBAGE_WEIGHT` 0.01; `vosk_backend.THRESHOLD` 0.65)
+were chosen on the fixtures (`tests/speech/`, made by `scripts/make_speech_fixtures.py` with espeak-ng's Klatt
+voices and flite's slt and rms, some with noise, and espeak-ng's Korean voice for the vosk test model);
+`benchmarks/bench_speech.py` measures accuracy, the thresholds' trade-off and real-time factors
+(docs/BENCHMARKS.md). The journal's `t` never decreases, so a live `say` is stamped with the time the utterance
+began only where no later entry has been stamped yet (`StampingInbox.put(entry, at=)`); otherwise it is stamped when
+it arrives.
+"""

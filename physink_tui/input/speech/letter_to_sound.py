@@ -80,18 +80,18 @@ def _with_suffix(word: str) -> list[str]:
         stem = word[:-3]
         return _part(stem) + (["IY", "Z"] if _has_vowel(stem) else ["AY", "Z"])
     if len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is")):
-        stem = _part(word[:-1])
-        if not stem:
+        phones = _part(word[:-1])
+        if not phones:
             return _part(word)
-        end = stem[-1]
-        return stem + (["IH", "Z"] if end in _SIBILANTS and word.endswith("es") else
+        end = phones[-1]
+        return phones + (["IH", "Z"] if end in _SIBILANTS and word.endswith("es") else
                        ["S"] if end in _VOICELESS else ["Z"])
     if len(word) > 4 and word.endswith("ing") and _has_vowel(word[:-3]):
         return [*_part(word[:-3]), "IH", "NG"]
     if len(word) > 4 and word.endswith("ed") and _has_vowel(word[:-2]):
-        stem = _part(word[:-2] + ("e" if _silent_final_e(word[:-1]) else ""))
-        end = stem[-1] if stem else ""
-        return stem + (["IH", "D"] if end in ("T", "D") else ["T"] if end in _VOICELESS | _SIBILANTS else ["D"])
+        phones = _part(word[:-2] + ("e" if _silent_final_e(word[:-1]) else ""))
+        end = phones[-1] if phones else ""
+        return phones + (["IH", "D"] if end in ("T", "D") else ["T"] if end in _VOICELESS | _SIBILANTS else ["D"])
     return _part(word)
 
 

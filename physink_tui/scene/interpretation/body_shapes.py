@@ -13,6 +13,7 @@ import shapely
 from shapely.geometry import LineString, MultiPolygon, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 
+from physink_tui.errors import SceneError
 from physink_tui.scene.components import Body
 from physink_tui.scene.recognition.primitives import Box, Circle, Ellipse, Geometry, Line, Polyline
 from physink_tui.scene.recognition.primitives import Polygon as PolygonPrim
@@ -65,7 +66,11 @@ def outline_of(geometry: Geometry) -> tuple[str, XY, tuple[XY, ...], float, str 
 
 def valid_polygon(points: list[tuple[float, float]]) -> tuple[Polygon, str | None]:
     """A simple polygon from possibly self-intersecting vertices: repaired with shapely (the largest
-    piece is kept when it falls apart), with a note saying so."""
+    piece is kept when it falls apart), with a note saying so.
+
+    Raises:
+        SceneError: points that all lie on one line (no polygon has them as its outline).
+    """
     polygon = Polygon(points)
     if polygon.is_valid:
         return polygon, None
@@ -73,7 +78,10 @@ def valid_polygon(points: list[tuple[float, float]]) -> tuple[Polygon, str | Non
     pieces = [g for g in getattr(repaired, "geoms", [repaired]) if isinstance(g, Polygon | MultiPolygon)]
     polys = [p for g in pieces for p in getattr(g, "geoms", [g])]
     if not polys:
-        return polygon.convex_hull, "the shape crossed itself into nothing; its outline was used"
+        hull = polygon.convex_hull
+        if not isinstance(hull, Polygon):
+            raise SceneError(f"a polygon through {points!r} has no area (its points lie on one line)")
+        return hull, "the shape crossed itself into nothing; its outline was used"
     largest = max(polys, key=lambda p: p.area)
     note = "the shape crossed itself; it was repaired" if len(polys) == 1 else (
         f"the shape crossed itself into {len(polys)} pieces; the largest was kept")

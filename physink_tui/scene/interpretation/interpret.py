@@ -30,7 +30,7 @@ from physink_tui.scene.components import (
     material_class,
 )
 from physink_tui.scene.interpretation.body_shapes import body_geometry, body_size, outline_of
-from physink_tui.scene.recognition.primitives import Circle, Ellipse, Helix, Line, Recognition, XSymbol
+from physink_tui.scene.recognition.primitives import Circle, Ellipse, Geometry, Helix, Line, Recognition, XSymbol
 
 JOINT_MAX_SIZE = 0.6
 """A circle or curve is a joint symbol only when smaller than this share of the body it is drawn in."""
@@ -67,7 +67,7 @@ def _candidates(scene: Scene, bounds: tuple[float, float, float, float], near: N
     """The bodies that may meet ``bounds``, topmost (created last) first."""
     if near is None:
         return list(reversed(scene.bodies()))
-    return [scene.components[i] for i in near(bounds)]  # type: ignore[misc]
+    return [scene.body(i) for i in near(bounds)]
 
 
 def bodies_at(scene: Scene, point: tuple[float, float], exclude: str | None = None,
@@ -123,10 +123,11 @@ def interpret(scene: Scene, recognition: Recognition,
         near: a spatial index of ``scene``'s bodies (the same answers, sooner in a big sketch), or None.
     """
     kind, geometry = recognition.kind, recognition.geometry
-    points = [tuple(p[:2]) for s in strokes for p in s]
+    points = [(p[0], p[1]) for s in strokes for p in s]
     if kind is None or geometry is None:
         return Interpretation(scene, "none", message=f"stroke not used: {recognition.reason or 'not recognised'}")
     if kind == "line":
+        assert isinstance(geometry, Line)
         erased = _erase(scene, geometry, near)
         if erased is not None:
             return erased
@@ -146,6 +147,7 @@ def interpret(scene: Scene, recognition: Recognition,
                               message="an X pins a body to what lies under it, but this one is outside every "
                                       "body; it became two line bodies")
     if kind == "helix":
+        assert isinstance(geometry, Helix)
         return _spring(scene, geometry, points, near)
     if kind in ("curve", "arc"):
         return _rope(scene, points, near)
@@ -199,7 +201,7 @@ def _joint(scene: Scene, kind: str, host: Body, anchor: tuple[float, float], nea
     return Interpretation(scene2.add(joint), kind, created=(jid,))
 
 
-def _add_body(scene: Scene, geometry) -> Interpretation:
+def _add_body(scene: Scene, geometry: Geometry) -> Interpretation:
     shape, position, outline, radius, note = outline_of(geometry)
     bid, scene2 = scene.new_id("b")
     body = Body(bid, shape, outline, radius, position, 0.0, MATERIALS[material_class(shape)])
@@ -218,13 +220,10 @@ def _attach_rope_ends(scene: Scene, body: Body) -> tuple[Scene, list[str]]:
     for c in list(scene.components.values()):
         if not isinstance(c, Rope):
             continue
-        changes = {}
-        if c.start_body is None and area.covers(Point(c.points[0])):
-            changes["start_body"] = body.id
-        if c.end_body is None and area.covers(Point(c.points[-1])):
-            changes["end_body"] = body.id
-        if changes:
-            scene = scene.update(replace(c, **changes))
+        start = body.id if c.start_body is None and area.covers(Point(c.points[0])) else c.start_body
+        end = body.id if c.end_body is None and area.covers(Point(c.points[-1])) else c.end_body
+        if (start, end) != (c.start_body, c.end_body):
+            scene = scene.update(replace(c, start_body=start, end_body=end))
             attached.append(c.id)
     return scene, attached
 
@@ -246,18 +245,20 @@ def _spring(scene: Scene, helix: Helix, points: Sequence[tuple[float, float]], n
                          bodies_at(scene, last, reach=reach, near=near))
     fixed_first = next((b for b in at_first if scene.is_fixed(b.id)), None)
     fixed_last = next((b for b in at_last if scene.is_fixed(b.id)), None)
-    if fixed_first is None and fixed_last is None:
+    if fixed_first is not None:
+        fixed = fixed_first
+    elif fixed_last is not None:  # make the first end the fixed one
+        first, last, at_last, fixed = last, first, at_first, fixed_last
+    else:
         result = _rope(scene, points, near)
         return replace(result, message="a spring needs one end in a fixed body (weld one with an X first); "
                                        "this helix was kept as a rope")
-    if fixed_first is None:  # make the first end the fixed one
-        first, last, at_last, fixed_first = last, first, at_first, fixed_last
-    other = next((b for b in at_last if b.id != fixed_first.id), None)
+    other = next((b for b in at_last if b.id != fixed.id), None)
     dx, dy = last[0] - first[0], last[1] - first[1]
     axis = "horizontal" if abs(dx) >= abs(dy) else "vertical"
     rest = abs(dx) if axis == "horizontal" else abs(dy)
     sid, scene2 = scene.new_id("s")
-    spring = Spring(sid, fixed_first.id, other.id if other else BACKGROUND, (float(first[0]), float(first[1])),
+    spring = Spring(sid, fixed.id, other.id if other else BACKGROUND, (float(first[0]), float(first[1])),
                     (float(last[0]), float(last[1])), axis, rest, SPRING_K)
     message = None if other else "the spring's free end touches no body; it is held by the background there"
     return Interpretation(scene2.add(spring), "spring", created=(sid,), message=message)

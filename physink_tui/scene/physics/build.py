@@ -15,7 +15,6 @@ import math
 from dataclasses import dataclass, field
 
 import pymunk
-import shapely
 
 from physink_tui.errors import SceneError
 from physink_tui.scene.components import (
@@ -28,7 +27,7 @@ from physink_tui.scene.components import (
     Scene,
     Spring,
 )
-from physink_tui.scene.physics.state import Pose
+from physink_tui.scene.physics.outlines import convex_pieces, distinct_points, need_area
 from physink_tui.scene.physics.surfaces import ROPE_MATERIAL, Surfaces
 
 POLYLINE_RADIUS = 2.0
@@ -76,7 +75,7 @@ class Built:
     links: dict[str, tuple[pymunk.Body, ...]] = field(default_factory=dict)
     owner: dict[pymunk.Shape, str] = field(default_factory=dict)
     z: dict[str, int] = field(default_factory=dict)
-    rest_pose: dict[pymunk.Body, Pose] = field(default_factory=dict)
+    rest_pose: dict[pymunk.Body, tuple[float, float, float]] = field(default_factory=dict)
     carriers: dict[str, tuple[pymunk.Body, ...]] = field(default_factory=dict)
     paths: dict[str, tuple[Point, ...]] = field(default_factory=dict)
     welds: list[tuple[pymunk.Body, pymunk.Body]] = field(default_factory=list)
@@ -146,7 +145,7 @@ def body_shapes(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
             raise SceneError(f"circle {spec.id!r} has radius {spec.radius!r}; expected a positive radius")
         return [pymunk.Circle(body, spec.radius)]
     if spec.shape in ("box", "ellipse"):
-        _need_area(spec)
+        need_area(spec)
         return [pymunk.Poly(body, spec.outline)]
     if spec.shape == "polygon":
         return [pymunk.Poly(body, triangle) for triangle in convex_pieces(spec)]
@@ -161,80 +160,9 @@ def body_area(spec: Body) -> float:
     return float(sum(shape.area for shape in body_shapes(pymunk.Body(), spec)))
 
 
-def outline_problem(spec: Body) -> str | None:
-    """What keeps the physics from making ``spec``'s shapes, in words (None: nothing); the checks `body_shapes`
-    makes, without building anything, so a project can be refused when it is read.
-
-    >>> from physink_tui.scene.components import MATERIALS
-    >>> outline_problem(Body("b1", "box", ((0, 0), (10, 0), (20, 0)), 0, (0, 0), 0, MATERIALS["box"]))
-    'the outline encloses no area'
-    """
-    try:
-        if spec.shape in ("box", "ellipse"):
-            _need_area(spec)
-        elif spec.shape == "polygon":
-            convex_pieces(spec)
-        elif spec.shape == "polyline":
-            _distinct(spec)
-    except _OutlineError as exc:
-        return exc.reason
-    return None
-
-
-class _OutlineError(SceneError):
-    """A `SceneError` that also keeps what is wrong without naming the body (`outline_problem`)."""
-
-    def __init__(self, message: str, reason: str) -> None:
-        super().__init__(message)
-        self.reason = reason
-
-
-def _need_area(spec: Body) -> shapely.Polygon:
-    if len(spec.outline) < 3:
-        raise _OutlineError(f"{spec.shape} {spec.id!r} has {len(spec.outline)} outline points; expected at least 3",
-                            "fewer than 3 points")
-    polygon = shapely.Polygon(spec.outline)
-    if not polygon.area > 0:
-        raise _OutlineError(f"{spec.shape} {spec.id!r} has an outline of zero area: {spec.outline!r}",
-                            "the outline encloses no area")
-    return polygon
-
-
-def convex_pieces(spec: Body) -> list[tuple[Point, ...]]:
-    """A closed outline as convex pieces: itself when convex, else its constrained Delaunay triangles.
-
-    A self-intersecting outline is first repaired with ``shapely.make_valid`` (its enclosed areas are kept).
-
-    >>> from physink_tui.scene.components import MATERIALS
-    >>> ell = Body("b1", "polygon", ((0, 0), (20, 0), (20, 10), (10, 10), (10, 30), (0, 30)), 0, (0, 0), 0,
-    ...            MATERIALS["freeform"])
-    >>> len(convex_pieces(ell))
-    4
-    """
-    polygon = _need_area(spec)
-    if polygon.is_valid and polygon.area >= polygon.convex_hull.area * (1 - 1e-9):
-        return [tuple(spec.outline)]
-    pieces = [g for g in shapely.get_parts(shapely.make_valid(polygon)) if isinstance(g, shapely.Polygon)]
-    triangles = shapely.get_parts(shapely.constrained_delaunay_triangles(shapely.MultiPolygon(pieces)))
-    floor = polygon.area * 1e-9
-    out = [tuple((x, y) for x, y in t.exterior.coords[:3]) for t in triangles if t.area > floor]
-    if not out:
-        raise _OutlineError(f"polygon {spec.id!r} encloses no area once repaired: {spec.outline!r}",
-                            "it crosses itself and encloses no area")
-    return out
-
-
-def _distinct(spec: Body) -> list[Point]:
-    points = [p for i, p in enumerate(spec.outline) if i == 0 or p != spec.outline[i - 1]]
-    if len(points) < 2:
-        raise _OutlineError(f"polyline {spec.id!r} has {len(points)} distinct points; expected at least 2",
-                            "fewer than 2 distinct points")
-    return points
-
-
 def _polyline_segments(body: pymunk.Body, spec: Body) -> list[pymunk.Shape]:
-    points = _distinct(spec)
-    segments = []
+    points = distinct_points(spec)
+    segments: list[pymunk.Shape] = []
     for i in range(len(points) - 1):
         segment = pymunk.Segment(body, points[i], points[i + 1], POLYLINE_RADIUS)
         # Neighbours let a ball roll over the joins between segments instead of catching on their corners.
@@ -373,7 +301,9 @@ def _add_rope(built: Built, rope: Rope, *, index: int) -> None:
     path = rope_path(rope.points)
     if not sum(math.dist(path[i], path[i + 1]) for i in range(len(path) - 1)) > 0:
         raise SceneError(f"rope {rope.id!r} has zero length: {rope.points!r}")
-    links, shapes, parts = [], [], []
+    links: list[pymunk.Body] = []
+    shapes: list[pymunk.Shape] = []
+    parts: list[pymunk.Constraint] = []
     bit = 1 << (index % 32)
     no_self = pymunk.ShapeFilter(group=index + 1, categories=bit)
     for (x0, y0), (x1, y1) in itertools.pairwise(path):

@@ -72,7 +72,9 @@ class ContactListener:
         restitution = self._bounces[sa.collision_type, sb.collision_type]
         if restitution > 0.0:
             points = arbiter.contact_point_set
-            if _approach_speed(sa.body, sb.body, points) > BOUNCE_THRESHOLD:
+            body_a, body_b = sa.body, sb.body
+            assert body_a is not None and body_b is not None  # shapes in a collision are on bodies
+            if _approach_speed(body_a, body_b, points) > BOUNCE_THRESHOLD:
                 # Chipmunk multiplies the shapes' elasticities (0.0) again on the contact's next step: one bounce.
                 arbiter.restitution = restitution
         a, b = self._owner.get(sa), self._owner.get(sb)
@@ -85,7 +87,7 @@ class ContactListener:
         self._touched.add((a, b))
         if points is None:
             points = arbiter.contact_point_set
-        at = points.points[0].point_a if points.points else sa.body.position
+        at = points.points[0].point_a if points.points else _position(sa)
         self._records.append(ContactRecord(self.step, a, b, (at[0], at[1]), (points.normal.x, points.normal.y)))
 
     def separate(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
@@ -120,6 +122,13 @@ def touching_record(step: int, a: pymunk.Body, b: pymunk.Body, a_id: str, b_id: 
 def set_friction(arbiter: pymunk.Arbiter, space: pymunk.Space, friction: float) -> None:
     """Pre-solve callback for one pair of surfaces (``friction`` is its mean): Chipmunk sets the product each step."""
     arbiter.friction = friction
+
+
+def _position(shape: pymunk.Shape) -> pymunk.Vec2d:
+    """Where the body of a shape in a collision is."""
+    body = shape.body
+    assert body is not None  # shapes in a collision are on bodies
+    return body.position
 
 
 def _approach_speed(a: pymunk.Body, b: pymunk.Body, points: pymunk.ContactPointSet) -> float:

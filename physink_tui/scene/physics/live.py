@@ -197,8 +197,11 @@ def _same_solid(a: Body, b: Body) -> bool:
 
 def _ends(c: Component) -> set[str]:
     """The bodies a joint, spring or rope holds on to (not the background)."""
+    ends: set[str | None]
     if isinstance(c, Rope):
         ends = {c.start_body, c.end_body}
+    elif isinstance(c, Body):
+        return set()
     else:
         ends = {c.a, c.b}
     return {e for e in ends if e is not None and e != BACKGROUND}

@@ -58,7 +58,7 @@ def overlapped(scene: Scene, body_id: str, near: Near | None = None) -> list[str
     it, in scene order (``near``: a spatial index of the scene's bodies, see `interpret.Near`)."""
     area = body_geometry(scene.components[body_id])
     x0, y0, x1, y1 = area.bounds
-    candidates = scene.bodies() if near is None else [scene.components[i] for i in reversed(near(area.bounds))]
+    candidates = scene.bodies() if near is None else [scene.body(i) for i in reversed(near(area.bounds))]
     joined = {end for c in scene.components.values() if isinstance(c, Joint) and body_id in (c.a, c.b)
               for end in (c.a, c.b)}
     hit = []
@@ -67,8 +67,8 @@ def overlapped(scene: Scene, body_id: str, near: Near | None = None) -> list[str
             continue
         geometry = body_geometry(b)
         bx0, by0, bx1, by1 = geometry.bounds
-        near = bx0 <= x1 and x0 <= bx1 and by0 <= y1 and y0 <= by1
-        if near and geometry.intersection(area).area > OVERLAP * area.area:
+        close = bx0 <= x1 and x0 <= bx1 and by0 <= y1 and y0 <= by1
+        if close and geometry.intersection(area).area > OVERLAP * area.area:
             hit.append(b.id)
     return hit
 
@@ -81,7 +81,7 @@ def push_clear(scene: Scene, body_id: str, hit: list[str]) -> Scene:
     that from where it was (so it might now meet a body the world did not hold), it is pushed again in a
     neighbourhood twice as wide, up to the whole sketch.
     """
-    reach = body_size(scene.components[body_id])
+    reach = body_size(scene.body(body_id))
     group = _weld_group(scene, body_id)
     while True:
         local = neighbourhood(scene, body_id, reach)

@@ -18,6 +18,8 @@ CATCH_UP_STEPS = 60
 """Steps an adjusted body gets to catch up with where the pen lifted (unless something blocks it)."""
 SETTLE_STEPS = 30
 """Steps after an adjusted body is put down in which overlaps resolve, so bodies end flush (thesis figure 2-6)."""
+STEP_EPSILON = 1e-9
+"""Slack (in steps) when counting the steps up to an input time, so float rounding never loses a step."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,6 +45,16 @@ def demo_world(scene: Scene) -> World:
     world.damping = DEMO_DAMPING
     world.limit_speeds()
     return world
+
+
+def steps_until(t: float, origin: float, dt: float) -> int:
+    """The whole steps of ``dt`` from input time ``origin`` to ``t``: a mode counts its steps from where it began,
+    so advancing in many small pieces or one large one takes exactly the same steps.
+
+    >>> 1.025 / (1 / 120), steps_until(1.025, 0.0, 1 / 120)
+    (122.99999999999999, 123)
+    """
+    return int((t - origin) / dt + STEP_EPSILON)
 
 
 def step_and_observe(world: World, bodies: Iterable[str], fixed: Mapping[str, Motion] | None = None) -> Frame:

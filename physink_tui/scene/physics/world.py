@@ -109,7 +109,8 @@ class World:
 
     @property
     def gravity(self) -> Point:
-        return tuple(self._space.gravity)
+        g = self._space.gravity
+        return (g.x, g.y)
 
     @gravity.setter
     def gravity(self, value: Point) -> None:
@@ -190,7 +191,7 @@ class World:
 
     def state(self) -> WorldState:
         """The world now as a frozen value: every body's and rope link's motion, the steps taken and the gravity."""
-        links = {rope: tuple(_link_motion(link) for link in bodies) for rope, bodies in self._built.links.items()}
+        links = {rope: tuple(_motion(link) for link in bodies) for rope, bodies in self._built.links.items()}
         return WorldState(self._steps, {cid: self.motion(cid) for cid in self._by_z}, self.gravity, links)
 
     @classmethod
@@ -414,15 +415,11 @@ class World:
 
 
 def _motion(body: pymunk.Body) -> Motion:
-    """A body's motion, its velocity taken at its origin (`Body.position`), each coordinate read once."""
+    """A body's motion, its velocity taken at its origin (`Body.position`), each coordinate read once (a rope link's
+    origin is its centre of gravity: its velocity there is pymunk's ``velocity``, bit for bit)."""
     p = body.position
     v = body.velocity_at_world_point(p)
     return Motion(p.x, p.y, body.angle, v.x, v.y, body.angular_velocity)
-
-
-def _link_motion(body: pymunk.Body) -> Motion:
-    v = body.velocity
-    return Motion(body.position.x, body.position.y, body.angle, v.x, v.y, body.angular_velocity)
 
 
 def _put(space: pymunk.Space, body: pymunk.Body, pose: Pose, velocity: Velocity) -> None:

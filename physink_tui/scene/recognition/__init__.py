@@ -1,1 +1,60 @@
-"""Stroke recognition: one stroke (or an X's two) to a primitive with beautified geometry; no interpretation."""
+"""Stroke recognition: one stroke (or an X's two) to a primitive with beautified geometry; no interpretation.
+
+PaleoSketch's way (Paulson & Hammond 2008): interpretations compete rather than pass a cascade of cut-offs. The
+stroke is moved to unit size round its centroid (no overflow on absurd input), judged, and the geometry is scaled
+back. Every threshold allows for the pen's noise in absolute units (`noise`, 1 canvas pixel unless the caller says,
+or the stroke's own measured jitter when that is worse) as well as the shape's size, so a 22-pixel gesture and a
+600-pixel one are judged alike where that makes sense and differently where noise decides.
+
+1. A line (judged on steps a few noise widths long), a spring (loops turning one way whose centres advance along an
+   axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a stroke under three noise widths
+   across is a dot (no kind).
+2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
+   drawn past its start and comes back to it (cut there), or it goes round the same sides twice.
+3. Closed strokes are **ranked**: `polygon_fit` finds, for every number of sides k = 3..10, the best k-gon by
+   dynamic programming over candidate vertices (a short Douglas-Peucker pass for the big corners plus local peaks
+   for small features such as a thin wall's end); each side is scored by its own total-least-squares line, and a
+   vertex is where neighbouring sides' lines meet, if that is near the join and inside the stroke's bounds, else the
+   join itself, so nearly parallel sides never meet far away. The loop is tried from two starts (the point farthest
+   from the centre, then the sharpest corner found). `polygon_checks` keeps only fits whose vertices are real
+   corners: every turn at least 35 degrees, sides not bowed (four in five points within 6 % of the side plus the
+   noise of its line), no short side between two gentle turns that together make a right angle (a corner a hurried
+   hand rounded or cut back); an outline that doubles back along itself at one vertex (a thin wall's end) becomes a
+   flat end with two corners. Against these, a circle or ellipse (direct fit). `candidates` builds them: a
+   four-sided fit with right angles is a `Box` placed where its four drawn sides lie. Each candidate's score is `64
+   log(mse + sigma^2) + complexity * params * log 64` (`recognize.Weights`); candidates are built only when the
+   ranking reaches them (`candidates.Pending`); the best one whose shape lies within the stroke's bounds grown by 5
+   % wins, the next kinds are the alternatives. Outlines are kept as drawn (issue 25): a box squared from a drawn quad
+   that pokes out of those bounds (a rhombus, a diamond) gives way to the quad itself as a polygon
+   (`Candidate.fallback`), and a box that leaves more than a tenth of the stroke's points farther than 8 % of its
+   diagonal from its sides is not kept (`recognize.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is not
+   a box the size of the stem).
+4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
+   open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
+   really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
+   curve's), an arc, or a curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked
+   polyline.
+
+- `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
+  `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
+- `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above, closure, scoring
+  and ranking (`Weights`, `DEFAULT_WEIGHTS`)
+- `candidates.py`: the competing interpretations of a closed stroke with their fit error and complexity: polygonal
+  ones (built only when the ranking reaches them), a circle or ellipse; a box placed where its four sides were drawn
+- `polygon_fit.py`: best k-gon / k-segment chain for every k: candidate vertices, per-run line costs from prefix
+  sums, dynamic programming, vertices where sides meet
+- `polygon_checks.py`: whether a fit's vertices are real corners; flat ends for hairpins
+- `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
+- `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
+  ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
+- `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
+  loops
+- `shape_fits.py`: total-least-squares line, Kasa circle, Fitzgibbon direct ellipse, cubic Bézier fits
+- `beautify.py`: the clean geometry of each kind, points on it (`shape_points`, for the bounds check), mapping back
+  to the stroke's units
+
+Test-side generators live under `tests/`: `strokegen/` (seeded strokes per kind, thin boxes and U containers) and
+`penmodels/` (a second, hurried pen model that draws the thesis scenes, written apart from the virtual pen).
+`benchmarks/bench_recognition.py` and `bench_recognition_robust.py` (leave one person out, stress variants, thin
+boxes, containers) measure what the tests only floor.
+"""

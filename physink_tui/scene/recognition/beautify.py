@@ -9,11 +9,12 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import fields, replace
+from typing import Any
 
 import numpy as np
 
 from physink_tui.scene.recognition.primitives import Arc, Box, Circle, Curve, Ellipse, Geometry, Helix, Line, XSymbol
-from physink_tui.scene.recognition.shape_fits import fit_cubic
+from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_cubic
 
 _UNSCALED = {"angle", "start_angle", "sweep", "turns"}
 
@@ -26,7 +27,7 @@ CIRCLE_RATIO = 0.8
 """Minor/major axis ratio above which a round shape is a circle."""
 
 
-def round_geometry(ellipse: tuple, circle_ratio: float = CIRCLE_RATIO) -> tuple[Circle | Ellipse, str]:
+def round_geometry(ellipse: EllipseFit, circle_ratio: float = CIRCLE_RATIO) -> tuple[Circle | Ellipse, str]:
     centre, rx, ry, angle, _ = ellipse
     if ry / rx >= circle_ratio:
         return Circle(_pt(centre), (rx + ry) / 2), "circle"
@@ -146,7 +147,7 @@ def scale_geometry(g: Geometry, origin: np.ndarray, scale: float) -> Geometry:
     """Map geometry found at unit size back to the stroke's units: points ``origin + scale * p``,
     lengths times ``scale``, angles and turn counts unchanged."""
     ox, oy = float(origin[0]), float(origin[1])
-    changes = {}
+    changes: dict[str, Any] = {}
     for f in fields(g):
         v = getattr(g, f.name)
         if isinstance(v, Line):
@@ -188,13 +189,13 @@ def shape_points(g: Geometry, per_piece: int = 12) -> list[tuple[float, float]]:
                 for k in range(per_piece + 1)]
     if isinstance(g, Curve):
         ctrl = np.asarray(g.control_points, dtype=float)
-        u = np.linspace(0.0, 1.0, per_piece + 1)[:, None]
-        out = [tuple(map(float, ctrl[0]))]
+        ts = np.linspace(0.0, 1.0, per_piece + 1)[:, None]
+        out = [(float(ctrl[0][0]), float(ctrl[0][1]))]
         for i in range(0, len(ctrl) - 3, 3):
             p0, p1, p2, p3 = ctrl[i:i + 4]
-            pts = (1 - u) ** 3 * p0 + 3 * u * (1 - u) ** 2 * p1 + 3 * u * u * (1 - u) * p2 + u ** 3 * p3
+            pts = (1 - ts) ** 3 * p0 + 3 * ts * (1 - ts) ** 2 * p1 + 3 * ts * ts * (1 - ts) * p2 + ts ** 3 * p3
             out += [(float(x), float(y)) for x, y in pts[1:]]
         return out
     if isinstance(g, Helix):
         return [g.start, g.end]
-    return [tuple(map(float, p)) for p in g.points]  # Polyline, Polygon
+    return [(float(p[0]), float(p[1])) for p in g.points]  # Polyline, Polygon

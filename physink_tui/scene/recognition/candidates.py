@@ -36,12 +36,15 @@ class Candidate:
         geometry: its beautified shape, in the units the stroke was judged at.
         rss: summed squared distance of the judged points to the shape (those units squared).
         params: how many numbers the shape needs (its complexity).
+        fallback: what the same fit stands for when this shape does not stay within the stroke (a box squared
+            from a rhombus pokes out of it: the four-sided polygon drawn is kept instead), or None.
     """
 
     kind: str
     geometry: Geometry
     rss: float
     params: int
+    fallback: Candidate | None = None
 
 
 def _pt(p: np.ndarray) -> tuple[float, float]:
@@ -91,7 +94,8 @@ def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float
     if closed:
         box = box_geometry(verts) if k == 4 else None
         if box is not None:
-            out.append(Candidate("box", _box_from_sides(box, fit), fit.rss, 8))
+            quad = Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 8)
+            out.append(Candidate("box", _box_from_sides(box, fit), fit.rss, 8, quad))
         else:
             out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k))
     elif k == 1:
@@ -144,4 +148,7 @@ def round_shape(work: np.ndarray) -> Candidate | None:
         return None
     rss = float(np.sum(ellipse_distances(work, centre, rx, ry, angle) ** 2))
     geometry, kind = round_geometry(ellipse)
-    return Candidate(kind, geometry, rss, 3 if kind == "circle" else 5)
+    if kind == "circle":  # rounded off to a circle, a slightly egg-shaped loop pokes out: the ellipse drawn is kept
+        drawn, _ = round_geometry(ellipse, circle_ratio=math.inf)
+        return Candidate(kind, geometry, rss, 3, Candidate("ellipse", drawn, rss, 5))
+    return Candidate(kind, geometry, rss, 5)

@@ -18,7 +18,7 @@ from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
 from physink_tui.scene.recognition.primitives import Line, Polyline, Recognition
-from physink_tui.scene.recognition.shape_fits import fit_circle, fit_ellipse, fit_line
+from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_circle, fit_ellipse, fit_line
 
 STRAIGHT = 0.12
 """A side is straight when it strays from its chord by less than this share of the chord (plus the noise)."""
@@ -30,6 +30,9 @@ VERY_SHARP_CORNER = 100.0
 SHARP_CORNER = 62.0
 CORNER_SHARE = 0.45
 NEARLY_ROUND = 1.25
+SMOOTH = 0.55
+"""A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
+speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
 
 
 def _pt(p: np.ndarray) -> tuple[float, float]:
@@ -57,7 +60,7 @@ def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     return None
 
 
-def round_error(ellipse: tuple, noise: float) -> float:
+def round_error(ellipse: EllipseFit, noise: float) -> float:
     """How far from round a stroke may be and still be a circle or ellipse: `ROUND_ERROR`, plus the pen's
     noise as a share of the ellipse's mean radius."""
     _, rx, ry, _, _ = ellipse
@@ -80,7 +83,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
                      for a, b in itertools.pairwise(corners)]
     coarse = sg.coarse_turning(work, noise)
     concentration = sf.turn_concentration(coarse)
-    smooth = concentration < 0.55  # a polyline turning the same way at sharp corners is not round
+    smooth = concentration < SMOOTH  # a polyline turning the same way at sharp corners is not round
     if (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
             and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum())):
         # most of a turn, smoothly: a round shape left open (people often stop short of the start)

@@ -119,7 +119,7 @@ def line_costs(pts: np.ndarray, cand: np.ndarray, sums: tuple[np.ndarray, ...] |
     cyy = syy[hi] - syy[lo] - py * py / m
     cxy = sxy[hi] - sxy[lo] - px * py / m
     half = (cxx + cyy) / 2
-    cost = np.maximum(half - np.sqrt(np.maximum(((cxx - cyy) / 2) ** 2 + cxy * cxy, 0.0)), 0.0)
+    cost: np.ndarray = np.maximum(half - np.sqrt(np.maximum(((cxx - cyy) / 2) ** 2 + cxy * cxy, 0.0)), 0.0)
     cost[~ok] = np.inf
     return cost
 
@@ -246,7 +246,7 @@ def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, re
     lo, hi = pts.min(axis=0) - reach, pts.max(axis=0) + reach
     near = np.hypot(*(meet - at).T) <= np.minimum(chords[first], chords[second]) / 3
     ok = (np.abs(denom) > 1e-9) & near & (meet >= lo).all(axis=1) & (meet <= hi).all(axis=1)
-    inner = np.where(ok[:, None], meet, at)
+    inner: np.ndarray = np.where(ok[:, None], meet, at)
     if closed:
         return inner
     return np.concatenate([pts[idx[:1]], inner, pts[idx[-1:]]])

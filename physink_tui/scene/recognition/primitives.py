@@ -51,9 +51,10 @@ class Box:
         c, s = math.cos(self.angle), math.sin(self.angle)
         hw, hh = self.width / 2, self.height / 2
         cx, cy = self.center
-        return tuple(  # type: ignore[return-value]
-            (cx + dx * c - dy * s, cy + dx * s + dy * c) for dx, dy in ((-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh))
-        )
+        def corner(dx: float, dy: float) -> Point:
+            return (cx + dx * c - dy * s, cy + dx * s + dy * c)
+
+        return corner(-hw, -hh), corner(hw, -hh), corner(hw, hh), corner(-hw, hh)
 
 
 @dataclass(frozen=True, slots=True)

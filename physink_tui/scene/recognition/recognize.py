@@ -115,7 +115,8 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: fl
     if len(strokes) != 2:
         return Recognition(None, 0.0, None, (), f"expected one stroke or two (an X), got {len(strokes)}")
     first, second = recognize_stroke(strokes[0], noise=noise), recognize_stroke(strokes[1], noise=noise)
-    if first.kind == "line" and second.kind == "line":
+    if (first.kind == "line" and second.kind == "line" and isinstance(first.geometry, Line)
+            and isinstance(second.geometry, Line)):
         x = x_symbol(first.geometry, second.geometry)
         if x is not None:
             return Recognition("x", x[1], x[0], (("line", 0.5),))
@@ -193,13 +194,20 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         ranked = _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
                        weights, raw, noise, diag)
         return _or_freeform(ranked, work, closed=False, sigma=sigma)
-    candidates: list[Candidate | Pending | None] = [
-        *polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise), round_shape(loop)]
-    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag)
+    polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
+    if sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH:
+        polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
+    candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
+    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop)
     return _or_freeform(ranked, loop, closed=True, sigma=sigma)
 
 
 FREEFORM_CONFIDENCE = 0.3
+LUMPY_SIDES = 4
+"""A closed stroke that turns smoothly all round (`open_shapes.SMOOTH`, judged as open strokes are, on 32 to 40
+points a few noise widths apart: `stroke_geometry.coarse_turning`) is offered
+no polygon of `LUMPY_SIDES` sides or more: a lumpy circle drawn with a mouse (sparse points, flat stretches) fits
+a quad, pentagon or hexagon closely, but a drawn polygon turns at its corners."""
 
 
 def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: float) -> Recognition:
@@ -243,8 +251,8 @@ def _score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> fl
             + weights.complexity * c.params * math.log(EFFECTIVE_SAMPLES))
 
 
-def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
-          noise: float, diag: float) -> Recognition:
+def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
+          noise: float, diag: float, fitted: np.ndarray | None = None) -> Recognition:
     """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
     as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
     once what is left could not change the answer or its alternatives."""
@@ -263,7 +271,11 @@ def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: 
             for built in c.build():
                 seq += 1
                 heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
-        elif _inside(c.geometry, lo, hi) and _keeps_the_outline(c, raw, diag):
+        elif not _inside(c.geometry, lo, hi):
+            if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
+                seq += 1
+                heapq.heappush(heap, (score, seq, c.fallback))
+        elif _keeps_the_outline(c, raw if fitted is None else fitted):
             kept.append((score, c))
     if not kept:
         return Recognition(None, 0.0, None, (), "no shape fits the stroke")
@@ -279,23 +291,25 @@ def _rank(candidates: list[Candidate | Pending], n: int, sigma: float, weights: 
 
 OUTLINE_FAR = 0.08
 OUTLINE_LEFT_OUT = 0.1
-"""A box leaves out part of what was drawn when more than `OUTLINE_LEFT_OUT` of the stroke's points lie farther
-than `OUTLINE_FAR` of its diagonal from the box's sides: the wide top of a golf tee drawn on its narrow stem is
+"""A box leaves out part of what was drawn when more than `OUTLINE_LEFT_OUT` of the closed loop's points lie farther
+than `OUTLINE_FAR` of the loop's diagonal from the box's sides: the wide top of a golf tee drawn on its narrow stem is
 not a box the size of the stem (people's and hurried boxes, thin ones included, leave out under 2 % of their
 points; such a tee's wings are a quarter of its points)."""
 
 
-def _keeps_the_outline(c: Candidate, raw: np.ndarray, diag: float) -> bool:
-    """Whether a box candidate follows the whole drawn outline (other kinds are not judged here)."""
+def _keeps_the_outline(c: Candidate, drawn: np.ndarray) -> bool:
+    """Whether a box candidate follows the whole outline it was fitted to (``drawn``: the closed loop, without a
+    tail drawn on past it); other kinds are not judged here."""
     if c.kind != "box":
         return True
+    diag = float(np.hypot(*(drawn.max(axis=0) - drawn.min(axis=0))))
     corners = np.asarray(shape_points(c.geometry), dtype=float)
     a, b = corners, np.roll(corners, -1, axis=0)
     ab = b - a
-    rel = raw[:, None, :] - a[None, :, :]  # each point against each side
+    rel = drawn[:, None, :] - a[None, :, :]  # each point against each side
     u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
     gap = np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)).min(axis=1)
-    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(raw)
+    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(drawn)
 
 
 SEARCH_SPAN = 3 * 6.0

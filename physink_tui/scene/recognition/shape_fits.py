@@ -12,6 +12,9 @@ import math
 
 import numpy as np
 
+EllipseFit = tuple[np.ndarray, float, float, float, float]
+"""An ellipse fitted to points (`fit_ellipse`): its centre, radii rx >= ry, the angle of rx and the RMS error."""
+
 
 def fit_line(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
     """Total least squares line: ``(point, unit direction, max distance / length)``."""
@@ -43,7 +46,7 @@ def fit_circle(pts: np.ndarray) -> tuple[np.ndarray, float, float]:
     return np.array([cx, cy]), r, float(np.sqrt(np.mean((d - r) ** 2))) / r
 
 
-def fit_ellipse(pts: np.ndarray) -> tuple[np.ndarray, float, float, float, float] | None:
+def fit_ellipse(pts: np.ndarray) -> EllipseFit | None:
     """Direct ellipse fit: ``(centre, rx, ry, angle of rx, RMS normalised radial error)``, rx >= ry.
 
     None when the points do not determine an ellipse (collinear, too few).

@@ -12,15 +12,13 @@ from physink_tui.scene.components import Scene
 from physink_tui.scene.interpretation.body_shapes import body_size
 from physink_tui.scene.interpretation.interpret import bodies_at
 from physink_tui.scene.physics.state import Pose
-from physink_tui.scene.physics.stepping import put_down
+from physink_tui.scene.physics.stepping import put_down, steps_until
 from physink_tui.scene.physics.world import World
 from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.events import Timeline
 
 ADJUST_CENTRE = 0.25
 """A body grabbed within this share of its size from its centre moves without turning."""
-STEP_EPSILON = 1e-9
-"""Slack (in steps) when counting the steps up to an input time, so float rounding never loses a step."""
 
 
 class AdjustMode:
@@ -57,6 +55,8 @@ class AdjustMode:
         return cls(host, body.id, world, t, offset)
 
     def gesture(self, g: Gesture) -> Mode | None:
+        if self.world is None:  # put down already: the session goes back to sketching
+            return None
         if isinstance(g, PenMove) and g.touching:
             x, y = g.x * self.host.canvas[0], g.y * self.host.canvas[1]
             self.world.drag(self.body_id, (x - self.offset[0], y - self.offset[1]))
@@ -70,7 +70,9 @@ class AdjustMode:
         return self.world is None
 
     def advance(self, t: float) -> bool:
-        target = int((t - self.origin) / self.world.dt + STEP_EPSILON)
+        if self.world is None:
+            return False
+        target = steps_until(t, self.origin, self.world.dt)
         if target <= self.steps:
             return False
         self.world.step(target - self.steps)

@@ -16,7 +16,7 @@ from collections.abc import Mapping
 from physink_tui.input.pen.gestures import Gesture, PenDown, PenMove, StrokeEnded, Tap
 from physink_tui.scene.components import Scene
 from physink_tui.scene.physics.state import Pose
-from physink_tui.scene.physics.stepping import demo_world, step_and_observe
+from physink_tui.scene.physics.stepping import demo_world, step_and_observe, steps_until
 from physink_tui.session.history import Document
 from physink_tui.session.modes.base import Host, Mode, ModeName
 from physink_tui.timeline.demo_setup import recorder_for
@@ -28,8 +28,6 @@ from physink_tui.timeline.tape import Tape
 
 TIME_EPSILON = 1e-6
 """Timeline times are kept to the microsecond: a recorded time within this of the clock is now, not later."""
-STEP_EPSILON = 1e-9
-"""Slack (in steps) when counting the steps up to an input time, so float rounding never loses a step."""
 
 
 class DemoMode:
@@ -89,7 +87,7 @@ class DemoMode:
         still and the next run starts from ``t``. Steps are counted from the run's start, so advancing in many
         small pieces or one large one takes exactly the same steps."""
         dt = self.world.dt
-        target = int((t - self.origin) / dt + STEP_EPSILON)
+        target = steps_until(t, self.origin, dt)
         stepped = False
         while self.steps < target and self._running():
             self._step(dt)

@@ -19,10 +19,9 @@ from textual.message import Message
 from textual.screen import Screen
 
 from physink_tui.errors import PhysinkError
-from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.session import simulation
 from physink_tui.session.search_job import Progress, SearchJob
-from physink_tui.session.simulation import Searched
+from physink_tui.session.simulation import Searched, SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.defaults import DEFAULT_SEED
 from physink_tui.tui import storage
@@ -79,7 +78,7 @@ class BackgroundWork:
         self._host = host
         self.job: SearchJob | None = None
         """The search running, or None."""
-        self._simulating: JournalEntry | None = None  # the simulate entry submitted, until the session handled it
+        self._simulating: SessionInput | None = None  # the simulate entry submitted, until the session handled it
         self._simulated = ""  # what the status bar says once it has
 
     # -- SIMULATE ------------------------------------------------------------------------------------------------
@@ -136,7 +135,7 @@ class BackgroundWork:
             status.set(activity="simulation cancelled before its first rollout")
             return
         latest = live.runner.latest_view()
-        if latest is None or not _shows(latest, offer):
+        if latest is None or not offer.searched(latest.scene, latest.timeline):
             status.set(activity="simulation discarded: the machine changed while it searched (g searches again)")
             return
         self._simulating = live.submit(offer)
@@ -202,8 +201,3 @@ class BackgroundWork:
             job.stop()
         self._screen.workers.cancel_group(self._screen, "export")
 
-
-def _shows(view: SessionView, offer: Searched) -> bool:
-    """Whether ``view`` shows the document ``offer`` searched."""
-    return ((view.scene is offer.scene or view.scene == offer.scene)
-            and (view.timeline is offer.timeline or view.timeline == offer.timeline))

@@ -12,7 +12,7 @@ import json
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar
+from typing import Any, ClassVar, Protocol, cast
 
 from textual import events, work
 from textual.app import ComposeResult
@@ -29,9 +29,11 @@ from physink_tui.formats.journal.entries import JournalEntry
 from physink_tui.formats.project.codec import Project, decode_project, encode_project
 from physink_tui.formats.project.files import save_project
 from physink_tui.formats.project.sanity import check_project
+from physink_tui.session.simulation import SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
+from physink_tui.tui.config import Config
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
@@ -64,6 +66,18 @@ class SpeechStatus(Message):
     """What push-to-talk is doing or heard (posted from its threads)."""
 
     text: str
+
+
+class PanelApp(Protocol):
+    """What the screen needs of its app (`app.PhysinkApp`, which imports this module) besides Textual's `App`."""
+
+    config: Config
+
+    def failed(self, error: BaseException, what: str) -> None: ...
+
+    def mark_saved(self, view: SessionView) -> None: ...
+
+    def adopt_settings(self, config: Config | None) -> None: ...
 
 
 class MainScreen(Screen[None]):
@@ -109,6 +123,11 @@ class MainScreen(Screen[None]):
         self._barrel = False
         self.background = BackgroundWork(self, self)
         """SIMULATE and export, in worker threads."""
+
+    @property
+    def panel_app(self) -> PanelApp:
+        """The app, as `PanelApp` (Textual types ``self.app`` as any `App`)."""
+        return cast(PanelApp, self.app)
 
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
@@ -221,7 +240,7 @@ class MainScreen(Screen[None]):
     @staticmethod
     def _labels(view: SessionView | None) -> list[str]:
         """The labels speech listens for: the components' in ``view``."""
-        return [] if view is None else [c.label for c in view.scene.components.values() if getattr(c, "label", None)]
+        return [] if view is None else list(view.scene.labels().values())
 
     @work(thread=True, group="speech")
     def _toggle_talk(self, labels: list[str]) -> None:
@@ -254,7 +273,7 @@ class MainScreen(Screen[None]):
     def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
         """A worker that died on a bug (SIMULATE, export: ``exit_on_error=False``) is said, never silent."""
         if event.state == WorkerState.ERROR and event.worker.error is not None:
-            self.app.failed(event.worker.error, event.worker.description or event.worker.name)  # type: ignore[attr-defined]
+            self.panel_app.failed(event.worker.error, event.worker.description or event.worker.name)
 
     async def on_controls_action(self, message: Controls.Action) -> None:
         await self.run_action(message.name)
@@ -316,9 +335,9 @@ class MainScreen(Screen[None]):
         self.app.push_screen(TextScreen("Timeline", text))
 
     def action_settings(self) -> None:
-        config = self.app.config  # type: ignore[attr-defined]
+        config = self.panel_app.config
         self.app.push_screen(SettingsScreen(config, self.query_one(SceneView).canvas_cells),
-                             self.app.adopt_settings)  # type: ignore[attr-defined]
+                             self.panel_app.adopt_settings)
 
     def set_theme(self, theme: str) -> None:
         self.theme_name = theme
@@ -358,12 +377,12 @@ class MainScreen(Screen[None]):
         """Quitting: the search and the export stop, and nothing they did reaches the session."""
         self.background.stop()
 
-    def _command(self, name: str, *args: str | float, project: dict | None = None) -> JournalEntry | None:
+    def _command(self, name: str, *args: str | float, project: dict[str, Any] | None = None) -> SessionInput | None:
         return self.live.command(name, *args, project=project) if self.live is not None else None
 
     def action_help(self) -> None:
         self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),
-                                         b.description) for b in self.BINDINGS))
+                                         b.description) for b in self.BINDINGS if isinstance(b, Binding)))
 
     # -- files ---------------------------------------------------------------------------------------------------
 
@@ -384,7 +403,7 @@ class MainScreen(Screen[None]):
             return
         self.project_path = path
         self._command("save", os.path.abspath(path))
-        self.app.mark_saved(view)  # type: ignore[attr-defined]
+        self.panel_app.mark_saved(view)
         self.notify(f"saved {path}")
 
     def action_load(self) -> None:

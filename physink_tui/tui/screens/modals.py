@@ -33,10 +33,6 @@ class HelpScreen(ModalScreen[None]):
             with VerticalScroll():
                 yield Static("\n".join(lines + mouse), id="help-text")
 
-    def action_dismiss(self) -> None:
-        self.dismiss(None)
-
-
 class ErrorModal(ModalScreen[None]):
     """A `PhysinkError` (or any failure a user caused), in words; the work is kept."""
 
@@ -54,9 +50,6 @@ class ErrorModal(ModalScreen[None]):
             yield Button("OK", id="ok", variant="primary")
 
     def on_button_pressed(self, event: Button.Pressed) -> None:
-        self.dismiss(None)
-
-    def action_dismiss(self) -> None:
         self.dismiss(None)
 
 
@@ -121,6 +114,3 @@ class TextScreen(ModalScreen[None]):
             with VerticalScroll():
                 yield Static(self._text, id="text-body", markup=False)
             yield Static("escape closes", classes="hint")
-
-    def action_dismiss(self) -> None:
-        self.dismiss(None)

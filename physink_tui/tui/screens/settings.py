@@ -86,11 +86,12 @@ class SettingsScreen(ModalScreen[Config | None]):
             except ValueError:
                 raise PhysinkError(f"{widget_id}: expected a number, got {text!r}") from None
 
-        area = tuple(number(f"area-{n}") for n in ("x0", "y0", "x1", "y1"))
+        x0, y0, x1, y1 = (number(f"area-{n}") for n in ("x0", "y0", "x1", "y1"))
+        rotation = self.query_one("#rotation", Select).value  # one of 0, 90, 180, 270 (never blank)
         return Config(
             theme=str(self.query_one("#theme", Select).value),
-            area=area,  # type: ignore[arg-type]
-            rotation=int(self.query_one("#rotation", Select).value),  # type: ignore[arg-type]
+            area=(x0, y0, x1, y1),
+            rotation=rotation if isinstance(rotation, int) else 0,
             left_handed=self.query_one("#left-handed", Checkbox).value,
             keep_aspect=self.query_one("#keep-aspect", Checkbox).value,
             display_tablet=self.query_one("#display-tablet", Checkbox).value,

@@ -27,7 +27,8 @@ from physink_tui.errors import RenderError
 from physink_tui.render import kitty, sixel
 from physink_tui.render.frames import Demonstration, view_frame
 from physink_tui.render.gif_palette import Palette
-from physink_tui.render.renderer import MIN_SIZE, Renderer
+from physink_tui.render.limits import MIN_SIDE
+from physink_tui.render.renderer import Renderer
 from physink_tui.session.view import SessionView
 from physink_tui.tui.graphics import DEFAULT_CELL, KINDS
 from physink_tui.tui.halfblocks import HalfBlocks
@@ -108,7 +109,7 @@ class SceneView(Widget, can_focus=True):
     def _make_renderer(self, columns: int, rows: int) -> None:
         width, height = columns * self._scale[0], rows * self._scale[1]
         self._palette = None
-        if width >= MIN_SIZE and height >= MIN_SIZE:
+        if width >= MIN_SIDE and height >= MIN_SIDE:
             self._renderer = Renderer(width, height, self.canvas, self.theme_name, controls=False)
         else:
             self._renderer = None

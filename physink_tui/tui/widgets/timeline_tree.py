@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 from textual.message import Message
 from textual.widgets import Tree
+from textual.widgets.tree import TreeNode
 
 from physink_tui.session.view import SessionView
 from physink_tui.timeline.events import Event, Timeline, event_label
@@ -48,7 +49,7 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
             self.root.add_leaf("(nothing demonstrated yet: press d for demo mode and move a body)")
             return
         events = {ev.id: ev for ev in timeline.events}
-        nodes = {}
+        nodes: dict[str, TreeNode[tuple[float, tuple[str, ...]]]] = {}
         waiting = sorted(timeline.events, key=lambda e: (e.t0, e.id))
         while waiting:  # parents first: an event waits until its first cause has a node
             later = []

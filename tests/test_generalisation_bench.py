@@ -1,0 +1,102 @@
+"""The generalisation benchmark reads the public sets in the forms their authors publish (made here in miniature),
+maps labels only through benchmarks/label_kinds.tsv, and holds each source out in turn."""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+from bench_generalisation import leave_one_source_out, scored_rows
+from bench_recognition import ACCEPTS, LABEL_CLASS
+from label_kinds import read_table
+from stroke_sets import read_set, source_of
+
+from physink_tui.scene.recognition.recognize import DEFAULT_WEIGHTS
+
+
+def _circle(r: float = 40.0, n: int = 48) -> list[tuple[float, float]]:
+    return [(100 + r * math.cos(2 * math.pi * k / n), 100 + r * math.sin(2 * math.pi * k / n)) for k in range(n + 1)]
+
+
+def _square(s: float = 80.0) -> list[tuple[float, float]]:
+    corners = [(0, 0), (s, 0), (s, s), (0, s), (0, 0)]
+    out = []
+    for (ax, ay), (bx, by) in itertools.pairwise(corners):
+        out += [(ax + (bx - ax) * i / 20, ay + (by - ay) * i / 20) for i in range(20)]
+    return [*out, corners[-1]]
+
+
+def _points_xml(points) -> str:
+    return "".join(f'<Point X="{x:.1f}" Y="{y:.1f}" T="{10 * i}"/>' for i, (x, y) in enumerate(points))
+
+
+def test_the_dollar1_logs_read_by_person_with_labels_without_numbers(tmp_path) -> None:
+    folder = tmp_path / "s05" / "medium"
+    folder.mkdir(parents=True)
+    (folder / "circle01.xml").write_text(f'<?xml version="1.0"?><Gesture Name="circle01" Subject="5" Speed="medium" '
+                                         f'Number="1" NumPts="49">{_points_xml(_circle())}</Gesture>')
+    (row,) = read_set(tmp_path)
+    assert (row["source"], row["subject"], row["label"], len(row["strokes"])) == ("dollar1", "s05", "circle", 1)
+    assert source_of(row, "person") == "dollar1:s05" and row["strokes"][0][1][2] == 10.0
+
+
+def test_the_mmg_set_keeps_its_strokes_device_and_person(tmp_path) -> None:
+    folder = tmp_path / "10-stylus-FAST"
+    folder.mkdir()
+    strokes = "".join(f'<Stroke index="{k}">{_points_xml(part)}</Stroke>'
+                      for k, part in enumerate(([(0, 0), (50, 50)], [(50, 0), (0, 50)]), 1))
+    (folder / "10-stylus-fast-X-01.xml").write_text(f'<Gesture Name="X~01" Subject="10" InputType="stylus" '
+                                                    f'Speed="FAST" NumPts="4">{strokes}</Gesture>')
+    line = f'<Stroke index="1">{_points_xml([(0, 0), (30, 1), (60, 2), (90, 3)])}</Stroke>'
+    (folder / "10-stylus-fast-line-01.xml").write_text(f'<Gesture Name="line~01" Subject="10" InputType="stylus" '
+                                                       f'Speed="FAST" NumPts="4">{line}</Gesture>')
+    rows = {r["label"]: r for r in read_set(tmp_path)}
+    assert len(rows["X"]["strokes"]) == 2 and rows["line"]["device"] == "stylus"
+    kept, left = scored_rows(list(rows.values()))
+    assert [r["label"] for r in kept] == ["line"] and sum(left.values()) == 1  # the X: two strokes, no kind
+
+
+def test_the_drawn_shapes_set_is_one_source_with_string_coordinates(tmp_path) -> None:
+    for shape, points in (("circle", _circle()), ("square", _square())):
+        (tmp_path / "paths" / shape).mkdir(parents=True)
+        (tmp_path / "paths" / shape / "1.json").write_text(json.dumps([[[f"{x}", f"{y}"] for x, y in points]]))
+    rows = read_set(tmp_path)
+    assert {source_of(r, "person") for r in rows} == {"bouchal"}
+    kept, _ = scored_rows(rows)
+    assert {r["label"]: sorted(r["accepts"]) for r in kept} == {"circle": ["circle", "ellipse"], "square": ["box"]}
+
+
+def test_a_label_missing_from_the_table_stops_the_scoring_by_name() -> None:
+    row = {"source": "bouchal", "label": "hexagon", "strokes": [[[0, 0, None], [1, 1, None]]], "file": "h.json"}
+    with pytest.raises(SystemExit, match=r"'hexagon'.*label_kinds\.tsv"):
+        scored_rows([row])
+
+
+def test_each_source_is_held_out_and_scored_with_weights_chosen_on_the_others(tmp_path, capsys) -> None:
+    rows = []
+    for person in ("a", "b"):
+        rows += [{"source": "dollar1", "subject": person, "label": "circle", "file": f"{person}c",
+                  "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(_circle(30 + 10 * k))]]} for k in range(3)]
+        rows += [{"source": "dollar1", "subject": person, "label": "rectangle", "file": f"{person}r",
+                  "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(_square(60 + 20 * k))]]} for k in range(3)]
+    kept, _ = scored_rows(rows)
+    leave_one_source_out(kept, "person", [DEFAULT_WEIGHTS])
+    out = capsys.readouterr().out
+    assert "| dollar1:a | 6 | 100.00 |" in out and "| dollar1:b | 6 | 100.00 |" in out
+    assert "targets (every source >= 98.6 %; every label with >= 50 strokes in a source >= 97 %): met" in out
+
+
+def test_the_table_is_the_one_the_people_tests_score_with(tmp_path) -> None:
+    table = read_table()
+    assert LABEL_CLASS == table.of_set("dollar1")
+    assert all(set(table.kinds[c]) == ACCEPTS[c] for c in ACCEPTS)
+    bad = tmp_path / "bad.tsv"
+    bad.write_text("set\tlabel\tclass\taccepts\twhy\na\tcircle\tround\tcircle\tx\nb\toval\tround\tellipse\ty\n")
+    with pytest.raises(ValueError, match=r"bad.tsv:3: class 'round' accepts \['ellipse'\]"):
+        read_table(bad)

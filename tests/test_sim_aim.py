@@ -1,0 +1,69 @@
+"""Aiming at surfaces (sim/aim.py) and telling where a contact lies on a body (sim/where.py)."""
+
+from __future__ import annotations
+
+import math
+from functools import cache
+from pathlib import Path
+
+from physink_tui.formats.journal.reader import read_journal
+from physink_tui.scene.components import MATERIALS, Body
+from physink_tui.scene.physics.world import GRAVITY
+from physink_tui.session.session import Session
+from physink_tui.sim.aim import aim_points, aimed, launch
+from physink_tui.sim.seeding import seed
+from physink_tui.sim.where import place
+from physink_tui.timeline.qualitative import side_along
+
+RESTORED = Path(__file__).parent / "journals" / "restored"
+
+
+@cache
+def first_drawing(behaviour: str) -> Session:
+    journal = read_journal(RESTORED / f"bouncing_first_{behaviour}.physink.jsonl")
+    return Session.from_header(journal.header).run(journal.entries)
+
+
+def test_the_ball_is_aimed_along_the_top_of_platform_a_ends_and_corners_included() -> None:
+    s = first_drawing("a_then_b_bottom")
+    ball_id, aims = aim_points(s.scene, s.timeline)
+    names = s.scene.names()
+    assert names[ball_id] == "ball"
+    platform = next(b for b in s.scene.bodies() if names[b.id] == "platform a")
+    ball = s.scene.components[ball_id]
+    c, sn = math.cos(platform.angle), math.sin(platform.angle)
+    placed = sorted((platform.position[0] + x * c - y * sn, platform.position[1] + x * sn + y * c)
+                    for x, y in platform.outline)
+    top_ends = [min(placed[:2], key=lambda p: p[1]), min(placed[2:], key=lambda p: p[1])]
+    assert all(side_along(*a.normal) == "top" for a in aims), "only the demonstrated side is aimed at"
+    for end in top_ends:
+        assert any(math.dist(a.point, end) < 1e-6 for a in aims), f"the top's end {end} is aimed at"
+    corners = [a for a in aims if a.corner and a.normal[0] > 0.2]
+    assert corners, "the right corner is aimed at from beside it, not only from above"
+    for a in aims:
+        assert math.isclose(math.dist(a.centre, a.point), ball.radius + 1.0, rel_tol=1e-9)
+    demonstrated = next(ev for ev in s.timeline.events if ev.type == "contact").point
+    assert math.dist(aims[0].point, demonstrated) == min(math.dist(a.point, demonstrated) for a in aims)
+    start = seed(s.scene, s.timeline, s.canvas)
+    assert len(aimed(s.scene, s.timeline, start)) == 4 * len(aims)
+
+
+def test_a_launch_passes_through_its_aim_point() -> None:
+    d = (420.0, 130.0)
+    for factor in (0.75, 1.0, 2.2):
+        vx, vy = launch(d, factor)
+        t = factor * math.sqrt(2 * math.hypot(*d) / math.hypot(*GRAVITY))
+        assert math.isclose(vx * t + GRAVITY[0] * t * t / 2, d[0], abs_tol=1e-3)
+        assert math.isclose(vy * t + GRAVITY[1] * t * t / 2, d[1], abs_tol=1e-3)
+
+
+def test_a_place_on_a_platform_is_told_in_words() -> None:
+    box = Body("b2", "box", ((-200.0, -20.0), (200.0, -20.0), (200.0, 20.0), (-200.0, 20.0)), 0.0, (800.0, 600.0),
+               0.0, MATERIALS["box"], "platform a")
+    assert place(box, (1000.0, 580.0))[1] == "at its right corner"
+    assert place(box, (605.0, 580.0))[1] == "at its left corner"
+    assert place(box, (640.0, 580.0))[1] == "near its left end"
+    assert place(box, (800.0, 580.0))[1] == "at its middle"
+    assert place(box, (700.0, 580.0))[1] == "25% of the way from its left end"
+    turned = Body("b3", "box", box.outline, 0.0, (800.0, 600.0), math.pi / 2, MATERIALS["box"], "wall")
+    assert place(turned, (780.0, 800.0))[1] == "at its right corner", "read in the body's own frame"
