@@ -22,6 +22,7 @@ from __future__ import annotations
 import argparse
 import csv
 import io
+import itertools
 import json
 import re
 import subprocess
@@ -100,13 +101,14 @@ def _git(gdir: Path, *args: str) -> bytes:
 
 def times_ms(raw: list[float | None]) -> list[float | None]:
     """The stroke's times in ms from its first point, or all None where the recorder kept no usable clock: a time
-    missing, going backwards, or ticking too coarsely for the stroke (whole seconds). Seconds (fractional, steps under 1) become ms."""
+    missing, going backwards, or ticking too coarsely for the stroke (whole seconds). Seconds (fractional, steps
+    under 1) become ms."""
     if not raw or any(t is None for t in raw):
         return [None] * len(raw)
     ts = [float(t) for t in raw if t is not None]
-    if any(b < a for a, b in zip(ts, ts[1:], strict=False)) or ts[-1] - ts[0] <= 0:
+    if any(b < a for a, b in itertools.pairwise(ts)) or ts[-1] - ts[0] <= 0:
         return [None] * len(raw)
-    steps = [b - a for a, b in zip(ts, ts[1:], strict=False) if b > a]
+    steps = [b - a for a, b in itertools.pairwise(ts) if b > a]
     scale = 1000.0 if steps and max(steps) < 1.0 else 1.0
     if (ts[-1] - ts[0]) * scale < 2.0 * len(ts):  # faster than 500 points a second: a clock in whole seconds
         return [None] * len(raw)
