@@ -52,7 +52,7 @@ def report_pocketsphinx(fixtures: list[dict], audio: dict, repeats: int) -> None
     right = sum(1 for o in outcome.values() if o == "right")
     print(f"pocketsphinx {right}/{len(fixtures)} fixtures right ({right / len(fixtures):.0%}), "
           f"{sum(1 for o in outcome.values() if o == 'wrong')} wrong commands applied "
-          f"(word score >= {recogniser.threshold:g}, ratio >= {recogniser.min_ratio:g}, margin >= "
+          f"(word score >= {recogniser.threshold:g}, posterior >= {recogniser.min_confidence:g}, margin >= "
           f"{recogniser.min_margin:g})\n")
     print("| fixtures | count | right | rejected | wrong applied |\n|---|---|---|---|---|")
     for s in sorted({family(f["made"]) for f in fixtures}):

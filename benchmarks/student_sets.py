@@ -14,7 +14,7 @@ account, device ``mouse``, label from the file name (spellings unified, see `LAB
 
 Copies of the original $1 logs (Wobbrock et al. 2007), reserved for independent measurement, are refused: a file
 dated before 2010, or whose points equal a stroke of ../shared/data/strokes/dollar1-dev.jsonl, stops the script
-with its name. Repositories found to hold such copies were left out of `REPOS` (BENCHMARKS.md names them).
+with its name. Repositories found to hold such copies were left out of `REPOS` (SOURCES.md names them).
 """
 
 from __future__ import annotations
@@ -48,6 +48,8 @@ REPOS: tuple[tuple[str, str, str], ...] = (
      "datasets/custom"),
     ("ITT-25/assignment-06-gesture-recognition-uniUbungsAccount", "1b61d950dbfa872f90d437bcad0637a96cab0cd9",
      "datasets/own_recorded_gestures"),
+    ("ITT-25/assignment-06-gesture-recognition-Coldjack007", "1fa71eb0041c1e6118b22a0f077d29b88eeaa501", "datasets"),
+    ("ITT-26/assignment-06-gesture-recognition-Bam33751", "b6a1cfd75ae924030a59edf4161dd17f2d2b2dbc", "datasets"),
     ("ITT-26/assignment-06-gesture-recognition-Alphazerfall", "e406dd0263a94bd0fd0dacd791b809a4828fd998",
      "datasets/custom"),
     ("ITT-26/assignment-06-gesture-recognition-DerD4n", "1ee2c34f1e12bf8b20646375eeb1eca4a0d88450",

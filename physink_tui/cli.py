@@ -257,7 +257,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--frames", metavar="DIR", help="every frame as DIR/NNNNN.png")
     p.add_argument("--still", metavar="FILE.png", help="one picture (at the end of the demonstration, or --at)")
     p.add_argument("--at", metavar="T", type=_seconds, help="timeline time of --still, in seconds")
-    p.add_argument("--timeline", metavar="FILE", help="the timeline as FILE (.json, .txt or .dot)")
+    p.add_argument("--timeline", metavar="FILE", help="the timeline as FILE (.json, .txt or .dot), or drawn as a "
+                   "picture of the causal graph (.svg or .png, through Graphviz)")
     p.add_argument("--overlay", metavar="FILE", help="another timeline of the scene (a simulation's timeline.json "
                    "or project) drawn in red over the demonstration")
     _add_look(p)

@@ -21,9 +21,10 @@ PY=${PHYSINK_PYTHON:-python3}
 # microphone (sounddevice; without it everything but listening on a microphone works), tmux, in which a test runs
 # `physink demo` in a real terminal (tests/test_tui_tmux.py), and the speech synthesisers whose voices the speech tests
 # hear (tests/test_speech_voices.py, scripts/make_speech_corpus.py): espeak-ng, flite, festival with its English
-# festvox voices (SVOX Pico comes from the test extra, py-nanotts).
+# festvox voices (SVOX Pico comes from the test extra, py-nanotts); and Graphviz, whose `dot` draws the causal
+# timeline as a picture (`physink export PROJECT --timeline graph.svg|graph.png`).
 DEBIAN_LIBS=(libusb-1.0-0 libhidapi-hidraw0 libgl1 libegl1 libx11-6 fonts-dejavu-core libportaudio2 tmux
-             espeak-ng flite festival festvox-kallpc16k festvox-kdlpc16k festvox-us-slt-hts)
+             espeak-ng flite festival festvox-kallpc16k festvox-kdlpc16k festvox-us-slt-hts graphviz)
 
 log() { printf 'setup: %s\n' "$*" >&2; }
 die() { log "$*"; exit 1; }

@@ -1,5 +1,6 @@
 """A program run in a pseudo-terminal whose output goes through a terminal emulator (pyte), so a test reads the screen
-a person would see and waits until it shows something, never for a fixed time."""
+a person would see and waits until it shows something, never for a fixed time. Like a real terminal it answers the
+primary device-attributes query (as a VT102: no graphics)."""
 
 from __future__ import annotations
 
@@ -20,13 +21,27 @@ HANG_GUARD = 90.0
 """Seconds after which a wait gives up: only a hung program gets there (a guard, not a timing)."""
 
 
+class _Screen(pyte.Screen):
+    """pyte's screen, answering the program's device-attributes query as a VT102 does (``CSI ? 6 c``)."""
+
+    def __init__(self, columns: int, rows: int, answer: Callable[[bytes], object]) -> None:
+        super().__init__(columns, rows)
+        self._answer = answer
+
+    def write_process_input(self, data: str) -> None:
+        self._answer(data.encode())
+
+
 class PtyProgram:
     """``argv`` started in a ``columns`` x ``rows`` pty (``cwd``, ``env``); its screen in ``self.screen``."""
 
     def __init__(self, argv: Sequence[str], *, env: Mapping[str, str], cwd: Path, size: tuple[int, int] = (120, 40),
-                 pixels: tuple[int, int] = (1200, 800)) -> None:
+                 pixels: tuple[int, int] = (1200, 800), answer: bytes | None = None) -> None:
+        """``answer``: what the terminal says to the program's first device-attributes query (the answers of
+        another terminal, e.g. kitty's to its graphics query, XTVERSION and DA1), instead of a VT102's."""
         self.columns, self.rows = size
-        self.screen = pyte.Screen(*size)
+        self.answer = answer
+        self.screen = _Screen(*size, answer=lambda data: None if answer else os.write(self.fd, data))
         self.stream = pyte.ByteStream(self.screen)
         self.raw = b""
         self.status: int | None = None
@@ -55,6 +70,9 @@ class PtyProgram:
         if not data:
             return False
         self.raw += data
+        if self.answer is not None and b"\x1b[c" in self.raw:
+            os.write(self.fd, self.answer)
+            self.answer = None
         self.stream.feed(data)
         return True
 

@@ -56,8 +56,8 @@ def test_a_load_without_its_project_is_an_error_naming_the_line() -> None:
     (lambda p: p["canvas"].update(width=-1), 'line 7: key "project": canvas.width: expected a number > 0, got -1'),
     (lambda p: p["components"][0].update(radius="big"),
      'line 7: key "project": components[0].radius: expected a number > 0, got "big"'),
-    (lambda p: p.update(version=2), 'line 7: key "project" was written by format version 2; this program reads '
-                                    "version 1"),
+    (lambda p: p.update(version=3), 'line 7: key "project" was written by format version 3; this program reads '
+                                    "version 2"),
 ])
 def test_a_bad_embedded_project_is_named_by_the_line_and_its_field(change, message: str) -> None:
     project = json.loads(json.dumps(PROJECT))

@@ -2,7 +2,8 @@
 embedded pocketsphinx recogniser: each is recognised to its command or rejected; no microphone is needed.
 
 The fixtures the recogniser gets wrong today are listed (strict xfail: one that starts passing must leave the
-list). Accuracy and real-time figures are benchmarks/bench_speech.py's (docs/BENCHMARKS.md).
+list; revisited for issue 29's thresholds, calibrated across four synthesisers: one more is rejected, none heard
+wrong). Accuracy and real-time figures are benchmarks/bench_speech.py's (docs/BENCHMARKS.md).
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ FIXTURES = {f["file"]: f for f in MANIFEST["fixtures"]}
 MISHEARD = {  # rejected although a command was said (synthetic voices the model hears badly, or heavy noise)
     "cmd10_1.wav", "cmd11_0.wav", "cmd12_0.wav", "cmd12_1.wav", "cmd13_0.wav", "cmd14_0.wav",
     "cmd14_1.wav", "cmd17_1.wav",
+    "cmd06_1.wav",  # "label spring" heard, but "spring" scores -4.11 against the -4.0 calibrated across synthesisers
 }
 WRONGLY_APPLIED = {  # a command other than the one said (or one for out-of-grammar speech) passed every check
     "cmd09_1.wav",  # "the ball falls" heard as "the ball fills" (posterior 0.83, -3.8 per frame; clean, it is heard)

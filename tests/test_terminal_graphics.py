@@ -100,3 +100,92 @@ def test_the_protocol_is_chosen_from_the_environment(env, expected) -> None:
 def test_a_bad_override_is_named() -> None:
     with pytest.raises(RenderError, match="PHYSINK_GRAPHICS='png'"):
         choose({"PHYSINK_GRAPHICS": "png"})
+
+
+# -- what the terminal says it can do (issue 30) ----------------------------------------------------------------------
+
+XTERM_VT340 = b"\x1bP>|XTerm(379)\x1b\\\x1b[?63;1;2;4;6;9;15;16;22;28;29c"  # xterm -ti vt340 (Debian 12)
+XTERM = b"\x1bP>|XTerm(379)\x1b\\\x1b[?64;1;2;6;9;15;16;17;18;21;22;28;29c"  # xterm as a VT420: no Sixel
+KITTY_026 = b"\x1b_Gi=31;OK\x1b\\\x1bP>|kitty(0.26.5)\x1b\\\x1b[?62;c"  # Debian 12's kitty
+KITTY_035 = b"\x1b_Gi=31;OK\x1b\\\x1bP>|kitty(0.35.2)\x1b\\\x1b[?62;c"
+
+
+@pytest.mark.parametrize(("answer", "expected", "noted"), [
+    (XTERM_VT340, "sixel", False),
+    (XTERM, "halfblocks", False),
+    (KITTY_035, "kitty", False),
+    (KITTY_026, "halfblocks", True),  # no Unicode placeholders before 0.28: half-blocks, and a note saying why
+    (b"\x1b[?6c", "halfblocks", False),  # a VT102 (pyte)
+])
+def test_the_protocol_is_chosen_from_what_the_terminal_answers_whatever_term_says(answer, expected, noted) -> None:
+    from physink_tui.tui.graphics import TerminalReply, choice
+
+    reply = TerminalReply.parse(answer)
+    assert reply is not None
+    for term in ("xterm-kitty", "foot", "xterm-256color"):  # TERM does not decide once the terminal answered
+        kind, note = choice({"TERM": term}, reply)
+        assert kind == expected and (note is not None) == noted
+    if noted:
+        assert "0.26.5" in note and "0.28" in note
+
+
+def test_no_answer_is_no_reply() -> None:
+    from physink_tui.tui.graphics import TerminalReply
+
+    assert TerminalReply.parse(b"") is None and TerminalReply.parse(b"\x1b_Gi=31;OK\x1b\\") is None
+
+
+def answering(master: int, answer: bytes, asked: list[bytes]) -> None:
+    """A terminal on the pty's ``master`` side: reads the queries until DA1's, then answers ``answer``."""
+    import os
+    import select
+
+    data = b""
+    while not data.endswith(b"\x1b[c"):
+        if not select.select([master], [], [], 10)[0]:
+            return
+        data += os.read(master, 4096)
+    asked.append(data)
+    os.write(master, answer)
+
+
+@pytest.mark.parametrize("answer", [XTERM_VT340, KITTY_026])
+def test_probe_asks_the_terminal_and_reads_its_answers(answer) -> None:
+    import os
+    import pty
+    import termios
+    import threading
+
+    from physink_tui.tui.graphics import QUERIES, TerminalReply, probe
+
+    master, slave = pty.openpty()
+    try:
+        modes = termios.tcgetattr(slave)
+        asked: list[bytes] = []
+        terminal = threading.Thread(target=answering, args=(master, answer, asked))
+        terminal.start()
+        reply = probe(slave, slave, wait=30)
+        terminal.join()
+        assert asked == [QUERIES]
+        assert reply == TerminalReply.parse(answer)
+        assert termios.tcgetattr(slave) == modes  # echo and line editing back as they were
+    finally:
+        os.close(master)
+        os.close(slave)
+
+
+def test_probe_of_a_terminal_that_answers_nothing_is_none() -> None:
+    import os
+    import pty
+
+    from physink_tui.tui.graphics import QUERIES, probe
+
+    master, slave = pty.openpty()
+    null = os.open(os.devnull, os.O_RDONLY)
+    try:
+        assert probe(slave, slave, wait=0.2) is None
+        assert probe(null, slave) is None  # not a terminal: nothing is asked
+        assert os.read(master, 4096) == QUERIES  # asked once, the first time
+    finally:
+        for fd in (master, slave, null):
+            os.close(fd)

@@ -93,4 +93,41 @@ def test_a_sixel_terminal_gets_the_scene_as_sixel_at_the_view(tmp_path) -> None:
 @pytest.mark.slow
 def test_another_terminal_gets_half_blocks(tmp_path) -> None:
     out = run_tui("xterm-256color", tmp_path, lambda out: "\u2580" in out)
-    assert "\u2580" in out and "\x1b_G" not in out and "\x1bP0;1;0q" not in out
+    # no Kitty image sent (the start's graphics query, ``\x1b_Gi=31,…a=q``, is not one) and no Sixel picture
+    assert "\u2580" in out and "\x1b_Ga=T" not in out and "\x1bP0;1;0q" not in out
+
+
+# -- the terminal's own answers decide (issue 30) --------------------------------------------------------------------
+
+
+def _tui_in(tmp_path: Path, answer: bytes):
+    from pty_terminal import PtyProgram
+
+    env = {k: v for k, v in os.environ.items() if k not in ("TMUX", "PHYSINK_GRAPHICS", "KITTY_WINDOW_ID",
+                                                             "TERM_PROGRAM", "COLORTERM")}
+    env.update(TERM="xterm-256color", PYTHONPATH=str(ROOT), XDG_DATA_HOME=str(tmp_path / "data"),
+               XDG_CONFIG_HOME=str(tmp_path / "config"))
+    return PtyProgram([sys.executable, "-m", "physink_tui", "tui"], env=env, cwd=tmp_path, answer=answer)
+
+
+@pytest.mark.slow
+def test_a_terminal_announcing_sixel_gets_sixel_whatever_term_says(tmp_path) -> None:
+    from test_terminal_graphics import XTERM_VT340
+
+    with _tui_in(tmp_path, XTERM_VT340) as tui:  # TERM=xterm-256color names no graphics; the DA1 answer does
+        tui.wait_for(lambda s: "SKETCH" in s, "the control panel")
+        tui.wait_for(lambda s: b"\x1bP0;1;0q" in tui.raw, "a Sixel picture")
+        tui.send(b"q")
+        assert tui.wait_exit() == 0
+
+
+@pytest.mark.slow
+def test_kitty_026_gets_half_blocks_and_a_note_saying_why(tmp_path) -> None:
+    from test_terminal_graphics import KITTY_026
+
+    with _tui_in(tmp_path, KITTY_026) as tui:
+        screen = tui.wait_for(lambda s: "0.26.5" in s and "placeholders" in s, "the note about kitty 0.26")
+        tui.wait_for(lambda s: "\u2580" in s, "half-blocks")
+        assert b"\x1b_Ga=T" not in tui.raw and "SKETCH" in screen
+        tui.send(b"q")
+        assert tui.wait_exit() == 0

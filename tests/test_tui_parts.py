@@ -174,3 +174,13 @@ def test_tui_replay_reads_a_journal_or_a_capture() -> None:
     header, entries = recorded(str(root / "recorded_hid" / "windows-ink-strokes.hid"))
     assert (header.canvas_width, header.canvas_height) == (1600.0, 1000.0) and len(entries) > 100
     assert all(isinstance(e, HidEntry) and e.dev == header.devices[0].id for e in entries)
+
+
+def test_the_timeline_tree_names_the_pairs_the_start_found_in_contact() -> None:
+    from physink_tui.timeline.events import Event
+    from physink_tui.tui.widgets.timeline_tree import TimelineTree
+
+    names = {"b1": "stopper", "b2": "ball"}
+    begun = Event("e1", "start", in_contact=(("b1", "b2"),))
+    assert TimelineTree._label(begun, {}, names) == " 0.00 s  start (stopper and ball in contact)"
+    assert TimelineTree._label(Event("e1", "start"), {}, names) == " 0.00 s  start"

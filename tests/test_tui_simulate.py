@@ -183,6 +183,76 @@ def test_quitting_during_a_search_stops_it_and_journals_no_simulate(tmp_path) ->
     assert simulate_args(tmp_path) == []
 
 
+
+def test_a_verdict_leaves_the_narration_once_the_machine_it_was_about_changed(tmp_path) -> None:
+    from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
+
+    header, entries = recorded("pinball")
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=entries)
+        async with app.run_test(size=SIZE) as pilot:
+            view = await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            app.live.session.simulation_budget = 40
+            await pilot.press("g")
+            found = await until(pilot, lambda v: v.search is not None, timeout=60)
+            narration, status = app.main.query_one(NarrationBar), app.main.query_one(StatusBar)
+            verdict = found.messages[-1].text
+            assert verdict.startswith("simulation found")
+            await until_app(pilot, lambda: narration.text == verdict and verdict in status._shown)
+            await pilot.press("u")  # the demonstration undone: the verdict is about a machine that is gone
+            edited = await until(pilot, lambda v: v.search is None and v.timeline != view.timeline, timeout=60)
+            await until_app(pilot, lambda: narration.text != verdict and verdict not in status._shown)
+            assert verdict in [m.text for m in edited.messages]  # still in the narration log: it was said
+            await pilot.press("r")
+            await until(pilot, lambda v: v.timeline == view.timeline)
+
+    asyncio.run(go())
+
+
+def test_an_edit_stops_the_search_before_its_next_rollout(tmp_path, monkeypatch) -> None:
+    """Clearing the machine while a search runs: the rollout under way ends, no other starts, nothing reaches the
+    session, and the status says why."""
+    import threading
+    from functools import partial
+
+    from physink_tui.sim.evaluate import evaluate_problem
+    from physink_tui.tui.screens import background
+
+    header, entries = recorded("cup_dispenser")
+    started, release = [], threading.Semaphore(0)
+
+    def gated(problem, candidate):  # each rollout waits for the test to let it run
+        started.append(candidate)
+        release.acquire(timeout=60)
+        return evaluate_problem(problem, candidate)
+
+    monkeypatch.setattr(background, "SearchJob", partial(background.SearchJob, evaluate=gated))
+
+    async def go() -> None:
+        app = tui_app(tmp_path, header=header, prior=tuple(entries))
+        async with app.run_test(size=SIZE) as pilot:
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            await pilot.press("g")
+            await until_app(pilot, lambda: len(started) == 1)
+            release.release()  # the first rollout ends; the second starts and is held
+            await until_app(pilot, lambda: len(started) == 2)
+            job = app.main.background.job
+            await pilot.press("c")  # the machine cleared: the search stops before its next rollout
+            await until_app(pilot, lambda: job.stopped)
+            status = app.main.query_one("#status")
+            assert status.activity.startswith("simulation discarded: the machine changed")
+            for _ in range(Session.simulation_budget):
+                release.release()
+            await until_app(pilot, lambda: app.main.background.job is None)
+            assert len(started) == 2  # no rollout started after the edit
+            assert status.activity.startswith("simulation discarded: the machine changed")
+            assert app.live.runner.latest_view().search is None
+
+    asyncio.run(go())
+    assert simulate_args(tmp_path) == []
+
+
 def test_equiv_up_to_demonstrated_of_the_adopted_project_agrees_with_what_the_tui_said(tmp_path, capsys) -> None:
     header, entries = recorded("pinball")
 

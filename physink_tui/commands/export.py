@@ -4,8 +4,9 @@ picture, or its timeline file; drawing and encoding are `render.export`'s, this 
 ``--video FILE`` (the suffix picks the format), ``--frames DIR`` (``DIR/00000.png`` ... at the video's rate; frames
 an earlier export left there are removed first), ``--still FILE.png [--at T]`` (one picture, by default at the end
 of the demonstration, trails and contacts showing everything that happened) and ``--timeline FILE`` (``.json``,
-``.txt`` or ``.dot``); ``--overlay FILE`` draws another timeline of the scene (`physink simulate`'s
-``timeline.json``) in red over the demonstration; ``--size WxH``, ``--fps N`` and ``--theme light|dark`` say how.
+``.txt`` or ``.dot``, or drawn as ``.svg`` or ``.png`` through Graphviz, `render.timeline_graph`); ``--overlay FILE``
+draws another timeline of the scene (`physink simulate`'s ``timeline.json``) in red over the demonstration;
+``--size WxH``, ``--fps N`` and ``--theme light|dark`` say how.
 A project without a timeline gives a one-second still of its scene, and says so. Before anything is written, outputs
 that would replace an input, a file that is not a regular file (a device, a FIFO, a symlink) or another output
 of the same run are refused (`formats.outputs.check_outputs`).
@@ -29,6 +30,8 @@ from physink_tui.formats.timeline_json import encode_timeline_json
 from physink_tui.formats.timeline_text import encode_timeline_text
 from physink_tui.progress import ProgressBar
 from physink_tui.render.export import Export, Look
+from physink_tui.render.timeline_graph import FORMATS as PICTURES
+from physink_tui.render.timeline_graph import write_timeline_picture
 from physink_tui.render.video_spec import CONTAINERS
 from physink_tui.scene.components import BACKGROUND
 
@@ -54,8 +57,8 @@ def run(args: argparse.Namespace) -> int:
     if not (args.video or args.frames or args.still or args.timeline):
         raise PhysinkError("export: nothing to write; give --video FILE, --frames DIR, --still FILE.png or "
                            "--timeline FILE")
-    if args.timeline and Path(args.timeline).suffix.lower() not in TIMELINE_WRITERS:
-        raise PhysinkError(f"{args.timeline}: a timeline is written as .json, .txt or .dot")
+    if args.timeline and Path(args.timeline).suffix.lower() not in (*TIMELINE_WRITERS, *PICTURES):
+        raise PhysinkError(f"{args.timeline}: a timeline is written as .json, .txt or .dot, or drawn as .svg or .png")
     if args.video and Path(args.video).suffix.lower() not in CONTAINERS:
         raise PhysinkError(f"{args.video}: a video is written as {', '.join(CONTAINERS)} (the suffix chooses)")
     if args.still and Path(args.still).suffix.lower() != ".png":
@@ -87,12 +90,15 @@ def run(args: argparse.Namespace) -> int:
     if args.timeline:
         if project.timeline is None:
             raise PhysinkError(f"{args.project}: the project has no timeline to write to {args.timeline}")
-        encode = TIMELINE_WRITERS[Path(args.timeline).suffix.lower()]
-        text = encode(project.timeline, project.scene.names())
-        try:
-            write_text_atomic(args.timeline, text if text.endswith("\n") else text + "\n")
-        except OSError as exc:
-            raise PhysinkError(f"{args.timeline}: cannot write: {reason(exc)}") from None
+        suffix = Path(args.timeline).suffix.lower()
+        if suffix in PICTURES:
+            write_timeline_picture(args.timeline, project.timeline, project.scene.names())
+        else:
+            text = TIMELINE_WRITERS[suffix](project.timeline, project.scene.names())
+            try:
+                write_text_atomic(args.timeline, text if text.endswith("\n") else text + "\n")
+            except OSError as exc:
+                raise PhysinkError(f"{args.timeline}: cannot write: {reason(exc)}") from None
         written.append(args.timeline)
     for note in export.notes:
         print(f"export: {note}", file=sys.stderr)

@@ -5,6 +5,7 @@ opens the Textual app (imported only here, lazily), which does the rest.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from typing import TYPE_CHECKING
 
@@ -42,9 +43,14 @@ def open_tui(options: TuiOptions) -> int:
         raise PhysinkError("physink tui needs a terminal (stdin and stdout); use physink replay or physink demo "
                            "--headless to run without one")
     from physink_tui.tui.app import make_app
-    from physink_tui.tui.graphics import cell_pixels, choose
+    from physink_tui.tui.graphics import cell_pixels, choice, probe
 
-    options.graphics = choose()  # before Textual owns the terminal
+    env = os.environ
+    forced = "PHYSINK_GRAPHICS" in env or env.get("TMUX") or env.get("TERM", "").startswith(("tmux", "screen"))
+    reply = None if forced else probe()  # asked before Textual owns the terminal
+    options.graphics, note = choice(env, reply)
+    if note:
+        options.notes.append(note)
     options.cell = cell_pixels()
     app = make_app(options)
     app.run()

@@ -35,6 +35,11 @@ world, and returns pixels; files go through `formats/atomic_write.py` (PNG) and 
   trails over the demonstration; a project without a timeline is a one-second still, an empty one an empty canvas,
   each with a note
 - `braille.py`: the demo's terminal plot of points
+- `timeline_graph.py`: the causal timeline as a picture (`physink export --timeline graph.svg|graph.png`): a styled
+  Graphviz digraph (`rankdir=LR`: every cause left of its effects; each event type its fill and outline, with a
+  legend of the types present; each node the user's phrase over the default narration, and its start time; DejaVu
+  Sans) drawn by Debian's `dot` (installed by scripts/setup.sh) and written atomically; no `dot` is one
+  `RenderError` saying what to install (`tests/test_timeline_picture.py` reads the SVG back)
 
 `physink_tui/progress.py` is the one progress bar of long commands (counts and ETA on a terminal, silent elsewhere).
 Golden images of six thesis scenes in both themes (`tests/golden/`, 320x200, compared decoded with a tolerance;

@@ -22,13 +22,18 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-from physink_tui.scene.components import Body, Scene
+from physink_tui.scene.components import Body, Point, Scene
 from physink_tui.scene.physics.world import GRAVITY
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.seeding import first_contact, start_movements
 from physink_tui.timeline.events import Timeline
+
+if TYPE_CHECKING:
+    import numpy as np
 from physink_tui.timeline.qualitative import side_along
 
 EDGE_SAMPLES = 5
@@ -85,7 +90,7 @@ class AimSpace:
         self.start = start
         self.aimed = aimed_
 
-    def decode(self, z) -> Parameters:
+    def decode(self, z: Sequence[float] | np.ndarray) -> Parameters:
         a = self.aimed.aim
         along, flight = float(z[0]), float(z[1])
         if a.edge is not None:
@@ -172,15 +177,19 @@ def launch(d: tuple[float, float], factor: float, gravity: tuple[float, float] =
     return (round(d[0] / t - gravity[0] * t / 2, 6), round(d[1] / t - gravity[1] * t / 2, 6))
 
 
-def _surface(target: Body, side: str) -> list[tuple]:
+Surface = tuple[Point, Point, bool, tuple[Point, Point] | None, tuple[float, float] | None]
+"""A point of a target's surface: the point, its outward normal, at a corner, the edge it lies on, a corner's fan."""
+
+
+def _surface(target: Body, side: str) -> list[Surface]:
     """(surface point, outward normal, at a corner, edge, fan) facing ``side`` of the target (``inside``: its
     hollow); edge is the edge a point lies on, fan a corner direction's range of normal angles."""
     px, py = target.position
+    out: list[Surface] = []
     if target.shape == "circle":
-        out = []
         for k in range(CIRCLE_SAMPLES):
-            a = 2 * math.pi * k / CIRCLE_SAMPLES
-            n = (math.cos(a), math.sin(a))
+            angle = 2 * math.pi * k / CIRCLE_SAMPLES
+            n = (math.cos(angle), math.sin(angle))
             if side in ("inside", side_along(*n)):
                 out.append(((px + target.radius * n[0], py + target.radius * n[1]), n, False, None, None))
         return out
@@ -190,7 +199,6 @@ def _surface(target: Body, side: str) -> list[tuple]:
     if closed and len(pts) >= 3 and _area(pts) < 0:
         pts.reverse()  # counter-clockwise on screen (y down): outward normals are (dy, -dx)
     edges = list(zip(pts, pts[1:] + pts[:1], strict=True)) if closed else list(itertools.pairwise(pts))
-    out: list[tuple] = []
     normals = []
     hollow = _hollow(pts)
     for a, b in edges:

@@ -46,7 +46,7 @@ def _difference(scene: Scene, timeline: Timeline, a: Event, b: Event, names: dic
     moving = mover(timeline, a)
     touched = next((c for c in a.components if c != moving), None)
     body = scene.components.get(touched) if touched is not None else None
-    if not isinstance(body, Body) or body.shape == "circle" or not body.outline:
+    if not isinstance(body, Body) or body.shape == "circle" or not body.outline or a.point is None or b.point is None:
         return None
     length, shown = place(body, a.point)
     _, made = place(body, b.point)

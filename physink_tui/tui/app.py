@@ -12,9 +12,14 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
+from typing import Any, ClassVar
 
+from rich.console import RenderableType
 from textual.app import App
+from textual.binding import Binding, BindingType
 from textual.message import Message
+from textual.screen import Screen
+from textual.widgets import Input, TextArea
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry, JournalHeader
@@ -106,6 +111,11 @@ class PhysinkApp(App[None]):
     """The styles, read as package data (a path beside this file is not there in every installation)."""
     TITLE = "PhysInk"
     ENABLE_COMMAND_PALETTE = False
+    BINDINGS: ClassVar[list[BindingType]] = [
+        # ctrl+c quits as q does, on every screen and in the middle of a drag (Textual's own binding only says how
+        # to quit); a focused text input keeps it for copying (`check_action`)
+        Binding("ctrl+c", "quit", "quit", show=False, priority=True),
+    ]
 
     def __init__(self, options: TuiOptions | None = None) -> None:
         super().__init__()
@@ -119,6 +129,7 @@ class PhysinkApp(App[None]):
         self.pacer = FramePacer()
         """When views are drawn (all of them while the UI keeps up)."""
         self._waiting: SessionView | None = None  # a view passed over, drawn by `_catch_up`
+        self._asking_to_quit = False  # the unsaved-work question is up: quitting again quits
         self.failure: BaseException | None = None
         """A bug that stopped part of the app (the session's worker, a background job): quitting then exits 1."""
 
@@ -197,8 +208,24 @@ class PhysinkApp(App[None]):
             self.main.open_project(options.project)
         if options.entries:
             self.main.replay(options.entries, options.speed, simulate_after=options.simulate_after)
-        for note in options.notes:
-            self.notify(note)
+        for note in options.notes:  # e.g. why the scene is in half-blocks: long enough to be read
+            self.notify(note, timeout=30)
+
+    def _display(self, screen: Screen[Any], renderable: RenderableType | None) -> None:
+        """Textual's one place that writes a screen update to the terminal, followed here by the scene view's Sixel
+        picture when the update wrote cells over it (Textual has no public hook after painting; the scene view
+        already writes its escapes through the same driver)."""
+        super()._display(screen, renderable)
+        main = self.main
+        if main is None or main.scene_view is None or renderable is None:
+            return
+        from textual._compositor import ChopsUpdate, LayoutUpdate
+
+        if isinstance(renderable, LayoutUpdate):
+            region = renderable.region
+            main.scene_view.painted((region.x, region.y, region.width, region.height))
+        elif isinstance(renderable, ChopsUpdate):
+            main.scene_view.painted(None, renderable.spans)
 
     # -- views -----------------------------------------------------------------------------------------------
 
@@ -232,12 +259,12 @@ class PhysinkApp(App[None]):
 
     @property
     def unsaved(self) -> bool:
-        """Whether the document differs from the one last saved or opened."""
+        """Whether the document differs from the one last saved or opened, or a stroke is being drawn."""
         view = self.live.runner.latest_view() if self.live is not None else None
         if view is None or self.saved_document is None:
             return False
         scene, timeline = self.saved_document
-        return view.scene is not scene or view.timeline is not timeline
+        return view.scene is not scene or view.timeline is not timeline or bool(view.ink or view.pending)
 
     def mark_saved(self, view: SessionView) -> None:
         self.saved_document = (view.scene, view.timeline)
@@ -258,11 +285,22 @@ class PhysinkApp(App[None]):
 
     # -- the end ---------------------------------------------------------------------------------------------
 
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        if action == "quit" and isinstance(self.focused, Input | TextArea):
+            return False  # ctrl+c in a text input copies, as Textual has it
+        return True
+
     async def action_quit(self) -> None:
-        if self.unsaved:
+        if self.main is not None:
+            self.main.lift_pen()  # quitting in the middle of a drag: the stroke ends where the mouse is
+        if self._asking_to_quit:  # asked to quit again while the question is up (ctrl+c twice): quit
+            self._quit_now()
+        elif self.unsaved:
             def answered(yes: bool | None) -> None:
+                self._asking_to_quit = False
                 if yes:
                     self._quit_now()
+            self._asking_to_quit = True
             self.push_screen(ConfirmModal("There is unsaved work (save it with ctrl+s).\nQuit anyway? The "
                                           "session's journal keeps everything.", "Quit", "Stay"), answered)
         else:

@@ -20,6 +20,7 @@ from physink_tui.formats.journal.entries import CommandEntry
 from physink_tui.formats.journal.reader import Journal, read_journal
 
 SUFFIX = ".physink.jsonl"
+PROJECT_SUFFIX = ".physink.json"
 RECOVERED = ".recovered"
 
 
@@ -43,6 +44,31 @@ def sessions_dir() -> Path:
 def exports_dir() -> Path:
     """The folder videos exported from the TUI go to (not created here)."""
     return data_home() / "physink" / "exports"
+
+
+def projects_dir() -> Path:
+    """The folder Save offers (``$XDG_DATA_HOME/physink/projects/``; made when a project is saved there)."""
+    return data_home() / "physink" / "projects"
+
+
+def new_project_path(now: float | None = None) -> Path:
+    """The name Save offers: ``machine-YYYYmmdd-HHMMSS.physink.json`` in `projects_dir`, not taken yet."""
+    folder = projects_dir()
+    stamp = time.strftime("%Y%m%d-%H%M%S", time.localtime(now))
+    path, n = folder / f"machine-{stamp}{PROJECT_SUFFIX}", 1
+    while path.exists():
+        n += 1
+        path = folder / f"machine-{stamp}-{n}{PROJECT_SUFFIX}"
+    return path
+
+
+def project_target(text: str) -> Path:
+    """Where Save writes for what the user typed: ``~`` expanded; a bare name (no folder) goes in `projects_dir`
+    and gets the ``.physink.json`` suffix if it has none; any other path is taken as given (made absolute)."""
+    path = Path(text.strip()).expanduser()
+    if not path.is_absolute() and path.parent == Path("."):
+        path = projects_dir() / (path.name if path.name.endswith(".json") else path.name + PROJECT_SUFFIX)
+    return path.absolute()
 
 
 def new_journal_path(folder: Path | None = None, now: float | None = None) -> Path:

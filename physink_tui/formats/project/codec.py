@@ -134,7 +134,8 @@ def encode_project(project: Project, *, where: str = "project") -> str:
       "components": [],
       "next_id": {"b": 1, "j": 1, "r": 1, "s": 1},
       "vocabulary": ["verb topples"],
-      "timeline": null
+      "timeline": null,
+      "demonstration": null
     }
     """
     at = Place(where, SceneError)

@@ -40,9 +40,6 @@ that sound like one of them ("bowl", "wall", "string", "bell") are left to vocab
 grammar is one more thing a mumbled "ball" may become."""
 
 
-DEFAULT_WEIGHT = 0.5
-"""A default component name's grammar weight against 1 for a name the user gave (labels, vocabulary files)."""
-
 PREPOSITION_PAIRS = ("out of", "down into", "off of", "on top of", "in front of", "next to", "up onto")
 """Prepositions people say as one, spoken together; a grammar of any two in a row lets noise through."""
 
@@ -154,18 +151,11 @@ class SpeechGrammar:
             *([f"<garbage> = {alternatives(garbage)};"] if garbage else []),
             "<label> = label <component>;",
             "<event> = [the] <component> <verb> [[<prep>] [the] <component>];",
-            f"<component> = {self._weighted_components()};",
+            f"<component> = {alternatives(self.components)};",
             f"<verb> = {alternatives(self.verbs)};",
             f"<prep> = {alternatives(self.prepositions)};",
             "",
         ])
-
-    def _weighted_components(self) -> str:
-        """The component names as JSGF alternatives, the user's (`preferred`) weighted over the defaults by
-        `DEFAULT_WEIGHT`, so that of two names that sound alike the user's is heard."""
-        if not self.preferred or not self.components:
-            return " | ".join(self.components) or "<VOID>"
-        return " | ".join(f"/{1 if c in self.preferred else DEFAULT_WEIGHT:g}/ {c}" for c in self.components)
 
     def parse(self, text: str) -> Command | None:
         """The command ``text`` is a sentence of, or None when it is none (an empty or partial result)."""

@@ -2,8 +2,8 @@
 command is the session's, capturing audio the microphone's or the caller's.
 
 `Listener.hear` is the one path both `physink listen FILE.wav` and the microphone take. An utterance is accepted
-only when the recogniser's best path is a whole sentence of the grammar, the whole utterance fits it well enough
-against free speech (`Decoded.ratio`), every word of it but the articles scores at least the recogniser's threshold
+only when the recogniser's best path is a whole sentence of the grammar, every word of it but the articles scores
+at least the recogniser's threshold
 and is likely enough (articles are short and run into the next word, so their fit says little), and no rival
 sentence (another name or verb) comes close (`Decoded.margin`: then both are named, "heard 'label marble' or 'label
 ball'? say it again"); anything else is `Utterance.rejected`, with the reason (DESIGN.md "Speech conventions").
@@ -105,20 +105,27 @@ class Listener:
             why = f"not a sentence of the grammar: {decoded.text!r}" if decoded.text else "no words recognised"
             return Utterance(decoded.text, None, why, at, end - start, decoded)
         recogniser = self.recogniser
-        if decoded.ratio is not None and decoded.ratio < recogniser.min_ratio:
-            return Utterance(decoded.text, None, f"unlike any command: {decoded.text!r} fits {decoded.ratio:.2f} a "
-                             f"frame worse than free speech (at most {-recogniser.min_ratio:g} is allowed)", at,
-                             end - start, decoded)
         content = [w for w in words if w.word not in ARTICLES] or words
         worst = min(content, key=lambda w: w.score)
         if worst.score < recogniser.threshold:
             return Utterance(decoded.text, None, f"poorly matched: {worst.word!r} scored {worst.score:.2f} "
                              f"(at least {recogniser.threshold:g} is needed)", at, end - start, decoded)
         unsure = min(content, key=lambda w: w.confidence)
-        if unsure.confidence < recogniser.min_confidence:
+        if unsure.confidence < recogniser.min_confidence and not _close(decoded, unsure.word):
             return Utterance(decoded.text, None, f"unsure: {unsure.word!r} is only {unsure.confidence:.0%} likely "
                              f"(at least {recogniser.min_confidence:.0%} is needed)", at, end - start, decoded)
-        if decoded.margin < recogniser.min_margin:
+        if unsure.confidence < recogniser.min_confidence or decoded.margin < recogniser.min_margin:
             return Utterance(decoded.text, None, f"heard {decoded.text!r} or {decoded.alternative!r}? say it again",
                              at, end - start, decoded)
         return Utterance(decoded.text, command, None, at, end - start, decoded)
+
+
+CLOSE = 1.0
+"""A rival within this margin a frame is what an unsure word may have been: the rejection names it."""
+
+
+def _close(decoded: Decoded, word: str) -> bool:
+    """Whether ``decoded``'s rival differs in ``word`` and fits nearly as well (then it is worth naming)."""
+    if decoded.alternative is None or decoded.margin > CLOSE:
+        return False
+    return word in set(decoded.text.split()) - set(decoded.alternative.split())

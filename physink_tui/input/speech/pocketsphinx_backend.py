@@ -1,17 +1,18 @@
 """The default recogniser: pocketsphinx 5 with its bundled US English model and a JSGF grammar; parsing is not here.
 
 British pronunciations are added for every grammar word the US dictionary has in one accent only (non-rhotic
-"platform" P L AE T F AO M, the broad A of "basket" B AA S K IH T; DESIGN.md "Speech conventions"). A word the
+"platform" P L AE T F AO M, the broad A of "basket" B AA S K IH T; DESIGN.md "Speech conventions"). Each word is
+scored by its mean log acoustic likelihood per 10 ms frame (pocketsphinx normalises a frame's senone scores to its
+best one, so 0 is a perfect fit) and by its posterior probability in the decoder's lattice. A grammar forces any sound
+into a sentence, so the grammar given to pocketsphinx also has a loop of single phones (`GARBAGE`, at weight
+`GARBAGE_WEIGHT`): speech outside the grammar fits the loop better and comes out as `Decoded.outside`. A word the
 dictionary lacks is given the pronunciation `letter_to_sound.pronounce` guesses from its spelling.
 
-One utterance is searched three times on the same model (issue 29): through the grammar (the Viterbi path: the
-sentence heard), through a free phone loop (``allphone`` with the model's phone bigram: the best any speech could
-score), and, when the sentence is a command, through its rivals (`rivals.rival_jsgf`: the sentences that differ in one
-name or the verb). What decides is relative, so that it carries from one voice to another: each word's fit against
-the phone loop over the same frames, per frame (`Word.score`), the whole utterance's (`Decoded.ratio`), and the margin
-per frame of the differing words to the best rival (`Decoded.margin`), with names the user gave (labels, vocabulary
-files) favoured by `PREFERENCE` over the built-in default names. The thresholds were calibrated leaving each
-synthesiser out in turn (benchmarks/bench_speech_corpus.py, docs/BENCHMARKS.md).
+A command that passes is also aligned against its rivals (`rivals.rival_jsgf`: the sentences that differ from it in
+one name or the verb) and alone, by the same search: `Decoded.margin` is how much better it fits, per frame of the
+words that differ, with names the user gave (labels, vocabulary files) favoured by `PREFERENCE` over the built-in
+default names (issue 29). `THRESHOLD`, `MIN_CONFIDENCE` and `MIN_MARGIN` are calibrated on synthetic voices of four
+synthesisers, each checked with thresholds chosen without it (benchmarks/bench_speech_corpus.py, docs/BENCHMARKS.md).
 """
 
 from __future__ import annotations
@@ -32,19 +33,30 @@ from physink_tui.input.speech.recogniser import Decoded, Word
 from physink_tui.input.speech.rivals import differing, rival_jsgf
 from physink_tui.timeline.phrases import ARTICLES
 
-THRESHOLD = -1.0
-"""Words other than articles fitting worse than the phone loop by more than this a frame are rejected (calibrated)."""
-MIN_RATIO = -1.0
-"""Utterances fitting worse than the phone loop by more than this a frame are rejected (calibrated)."""
-MIN_MARGIN = 0.0
-"""Commands whose best rival comes within this a frame of the differing words are rejected as ambiguous."""
+THRESHOLD = -4.0
+"""Words other than articles whose mean log likelihood per frame is below this are rejected. Calibrated with
+`MIN_CONFIDENCE` and `MIN_MARGIN` on four synthesisers' voices among the thresholds that keep issue 16's fixtures at
+their test's floor (benchmarks/bench_speech_corpus.py; each family's figures with thresholds chosen without it are in
+docs/BENCHMARKS.md)."""
+MIN_CONFIDENCE = 0.5
+"""Words other than articles with a lattice posterior below this are rejected (calibrated with `THRESHOLD`)."""
+MIN_MARGIN = -1.0
+"""Commands whose best rival fits better than this a frame (of the words that differ, the user's names favoured by
+`PREFERENCE`) are rejected as ambiguous, naming both (calibrated with `THRESHOLD`)."""
 PREFERENCE = 1.0
 """A name the user gave is favoured over a default name in the margin by this much a frame: a rival that is the
 user's name needs the default name heard to fit this much better, and a user's name is kept against a default rival
 that fits as well (a homophone)."""
 SCALE = 1024.0
-"""pocketsphinx's Viterbi segment scores arrive shifted down by 2^10; this brings them back to log likelihoods."""
+"""pocketsphinx's Viterbi segment scores arrive shifted down by 2^10 (measured); this brings them back to log
+likelihoods, so that margins read as log likelihood a frame."""
+GARBAGE = tuple(f"gb{p.lower()}" for p in """AA AE AH AO AW AY B CH D DH EH ER EY F G HH IH IY JH K L M N NG OW OY P R S
+    SH T TH UH UW V W Y Z ZH""".split())
+"""One pseudo-word per phone of the en-us model, spelled ``gb`` + the phone (``gbaa`` is AA)."""
+GARBAGE_WEIGHT = 0.01
+"""The phone loop's weight against each sentence shape's 1 (calibrated on the out-of-grammar fixtures)."""
 FRAME_SECONDS = 0.01
+_GARBAGE = frozenset(GARBAGE)
 _VARIANT = re.compile(r"\(\d+\)$")
 _VOWELS = {"AA", "AE", "AH", "AO", "AW", "AY", "EH", "ER", "EY", "IH", "IY", "OW", "OY", "UH", "UW"}
 _BROAD_A = {"S", "F", "TH", "N"}  # "basket", "after", "path", "dance": AE before these is AA in the south of England
@@ -82,14 +94,13 @@ def dithered(samples: np.ndarray) -> np.ndarray:
 
 
 class PocketsphinxRecogniser:
-    """pocketsphinx 5's `Decoder` with the bundled en-us model, restricted by a JSGF grammar, with a phone loop and
-    each command's rivals to judge the sentence by."""
+    """pocketsphinx 5's `Decoder` with the bundled en-us model, restricted by a JSGF grammar; each command is also
+    weighed against its rivals."""
 
     name = "pocketsphinx"
     threshold = THRESHOLD
-    min_ratio = MIN_RATIO
+    min_confidence = MIN_CONFIDENCE
     min_margin = MIN_MARGIN
-    min_confidence = 0.0
 
     def __init__(self, **options: object) -> None:
         """``options`` are pocketsphinx configuration parameters over the defaults (benchmarks tune with them)."""
@@ -97,79 +108,93 @@ class PocketsphinxRecogniser:
             import pocketsphinx
         except ImportError as exc:
             raise SpeechError(f"pocketsphinx is not installed ({exc}); pip install pocketsphinx") from None
-        config = {"lm": None, "loglevel": "FATAL", "samprate": RATE, "bestpath": False, **options}
-        self._decoder = pocketsphinx.Decoder(**config)
-        self._decoder.add_allphone_file("phones", pocketsphinx.get_model_path("en-us/en-us-phone.lm.bin"))
-        self._logmath = self._decoder.get_logmath()
+        config = {"lm": None, "loglevel": "FATAL", "samprate": RATE, **options}
+        # Two decoders on the same model: the screen (sentences against the phone loop, no lattice: the loop makes
+        # lattices huge; it also aligns a command's rivals) and the words (sentences only, with the lattice that gives
+        # each word's posterior).
+        self._screen = pocketsphinx.Decoder(**{**config, "bestpath": False})
+        self._words = pocketsphinx.Decoder(**config)
+        self._logmath = self._screen.get_logmath()
         self._added: set[str] = set()
         self._guessed: dict[str, str] = {}  # words added with a pronunciation guessed from their spelling
         self._grammar: SpeechGrammar | None = None
+        for word in GARBAGE:
+            self._screen.add_word(word, word[2:].upper(), word == GARBAGE[-1])
 
     def speakable(self, word: str) -> bool:
-        return self._decoder.lookup_word(word) is not None or pronounce(word) is not None
+        return self._words.lookup_word(word) is not None or pronounce(word) is not None
 
     def guessed(self, word: str) -> str | None:
         if word in self._guessed:
             return self._guessed[word]
-        return None if self._decoder.lookup_word(word) is not None else pronounce(word)
+        return None if self._words.lookup_word(word) is not None else pronounce(word)
 
     def set_grammar(self, grammar: SpeechGrammar) -> None:
         for word in grammar.words():
             self._add_variants(word)
         try:
-            self._decoder.add_jsgf_string("physink", grammar.jsgf())
+            self._screen.add_jsgf_string("physink", grammar.jsgf(GARBAGE, GARBAGE_WEIGHT))
+            self._words.add_jsgf_string("physink", grammar.jsgf())
         except (ValueError, RuntimeError) as exc:
             raise SpeechError(f"the speech grammar cannot be used by pocketsphinx: {exc}") from None
+        self._words.activate_search("physink")
         self._grammar = grammar
 
     def _add_variants(self, word: str) -> None:
         if word in self._added:
             return
         self._added.add(word)
-        lookup = self._decoder.lookup_word
+        lookup = self._words.lookup_word
         known = [p for p in (lookup(word if n == 1 else f"{word}({n})") for n in range(1, 6)) if p]
         if not known:
             guess = pronounce(word)
             if guess is None:
                 return
-            self._decoder.add_word(word, guess, True)
+            for decoder in (self._screen, self._words):
+                decoder.add_word(word, guess, True)
             self._guessed[word] = guess
             known = [guess]
         extra = [v for v in (british(p) for p in known) if v is not None and v not in known]
         extra = list(dict.fromkeys(extra))
         for n, phones in enumerate(extra, start=len(known) + 1):
-            self._decoder.add_word(f"{word}({n})", phones, n == len(known) + len(extra))
+            for decoder in (self._screen, self._words):
+                decoder.add_word(f"{word}({n})", phones, n == len(known) + len(extra))
 
     def decode(self, samples: np.ndarray) -> Decoded:
         if self._grammar is None:
             raise SpeechError("no grammar set before decoding")
         started = time.perf_counter()
         audio = dithered(samples).tobytes()
-        path = self._search("physink", audio)
-        phones = self._search("phones", audio)
-        frames = max(1, phones[-1].end + 1 if phones else len(samples) // 160)
-        words = tuple(Word(s.word, s.start * FRAME_SECONDS, (s.end + 1) * FRAME_SECONDS,
-                           (s.score - _over(phones, s.start, s.end)) / (s.end - s.start + 1))
-                      for s in path if not s.word.startswith(("<", "[", "(")))
-        ratio = (sum(s.score for s in path) - sum(s.score for s in phones)) / frames if path else -math.inf
-        text = " ".join(w.word for w in words)
-        decoded = Decoded(text, words, len(samples) / RATE, 0.0, ratio=ratio)
-        command = self._grammar.parse(text)
-        content = [w.score for w in words if w.word not in ARTICLES] or [w.score for w in words]
-        if command is not None and ratio >= self.min_ratio and min(content) >= self.threshold:
-            decoded = self._rival(decoded, command, path, audio)
+        self._screen.activate_search("physink")
+        screened = list(_run(self._screen, audio))
+        if any(_VARIANT.sub("", seg.word) in _GARBAGE for seg in screened):
+            return Decoded("", (), len(samples) / RATE, time.perf_counter() - started, True)
+        words = []
+        for seg in _run(self._words, audio):
+            word = _VARIANT.sub("", seg.word)
+            if word.startswith(("<", "[", "(")):
+                continue  # <s>, </s>, <sil>, fillers, (NULL) transitions
+            frames = seg.end_frame - seg.start_frame + 1
+            score = math.log(seg.ascore) / frames if seg.ascore > 0 else -math.inf
+            words.append(Word(word, seg.start_frame * FRAME_SECONDS, (seg.end_frame + 1) * FRAME_SECONDS, score,
+                              seg.prob))
+        decoded = Decoded(" ".join(w.word for w in words), tuple(words), len(samples) / RATE)
+        command = self._grammar.parse(decoded.text)
+        content = [w for w in words if w.word not in ARTICLES] or words
+        if command is not None and min(w.score for w in content) >= self.threshold:
+            decoded = self._rival(decoded, command, audio)  # also names what an unsure word may have been
         return replace(decoded, decode_seconds=time.perf_counter() - started)
 
-    def _rival(self, decoded: Decoded, command: Command, path: list[_Segment], audio: bytes) -> Decoded:
-        """``decoded`` with its best rival sentence and the margin to it (per frame of the words that differ)."""
+    def _rival(self, decoded: Decoded, command: Command, audio: bytes) -> Decoded:
+        """``decoded`` with its best rival sentence and the margin to it per frame of the words that differ, both
+        aligned by the same narrow search (the sentence alone, then its rivals)."""
         assert self._grammar is not None
         jsgf = rival_jsgf(self._grammar, command)
         if jsgf is None:
             return decoded
-        self._decoder.add_jsgf_string("rival", jsgf)
+        self._screen.add_jsgf_string("rival", jsgf)
         rival = self._search("rival", audio)
-        # the sentence heard, aligned alone: scored by the same narrow search as its rivals, not the wide one
-        self._decoder.add_jsgf_string("said", f"#JSGF V1.0;\ngrammar said;\npublic <said> = {decoded.text};")
+        self._screen.add_jsgf_string("said", f"#JSGF V1.0;\ngrammar said;\npublic <said> = {decoded.text};")
         said_path = self._search("said", audio)
         if not rival or not said_path:
             return decoded
@@ -183,11 +208,11 @@ class PocketsphinxRecogniser:
         return replace(decoded, alternative=" ".join(other), margin=margin)
 
     def _search(self, search: str, audio: bytes) -> list[_Segment]:
-        """The segments of the best path of ``search`` through ``audio``, scores in natural log units."""
-        self._decoder.activate_search(search)
+        """The segments of the screen decoder's best path of ``search`` through ``audio``, in natural log units."""
+        self._screen.activate_search(search)
         return [_Segment(_VARIANT.sub("", s.word), s.start_frame, s.end_frame,
                          self._logmath.log_to_ln(self._logmath.log(s.ascore)) * SCALE if s.ascore > 0 else -1e9)
-                for s in _run(self._decoder, audio) if s.end_frame >= s.start_frame]
+                for s in _run(self._screen, audio) if s.end_frame >= s.start_frame]
 
 
 @dataclass(frozen=True, slots=True)
@@ -196,12 +221,6 @@ class _Segment:
     start: int
     end: int
     score: float
-
-
-def _over(segments: list[_Segment], start: int, end: int) -> float:
-    """The score of ``segments`` over frames ``start``..``end``, each segment's shared out by its frames there."""
-    return sum(s.score * (min(s.end, end) - max(s.start, start) + 1) / (s.end - s.start + 1)
-               for s in segments if min(s.end, end) >= max(s.start, start))
 
 
 def _preferred(grammar: SpeechGrammar, command: Command | None) -> int:

@@ -26,11 +26,10 @@ class Word:
         word: the word, lower-case, without a pronunciation variant's ``(2)``.
         start: seconds from the start of the audio decoded.
         end: seconds from the start of the audio decoded (> start).
-        score: the backend's goodness of fit (pocketsphinx: its log likelihood per 10 ms frame less a free phone
-            loop's over the same frames, about 0 for a word said as the grammar has it; vosk: its word confidence
-            in [0, 1]).
-        confidence: the word's probability in [0, 1] where the backend gives one (vosk: its confidence again;
-            pocketsphinx: 1, its rivals are judged by `Decoded.margin` instead).
+        score: the backend's goodness of fit (pocketsphinx: mean log acoustic likelihood per 10 ms frame relative
+            to the best senone, <= 0; vosk: its word confidence in [0, 1]).
+        confidence: the word's posterior probability given the audio and the grammar, in [0, 1] (pocketsphinx:
+            from its lattice, shared among a word's pronunciations; vosk: its confidence again).
     """
 
     word: str
@@ -51,8 +50,6 @@ class Decoded:
         decode_seconds: wall time the decoding took (for real-time factors; never used to decide anything).
         outside: whether some of the audio matched the recogniser's garbage model (sounds outside the grammar)
             better than any word; those stretches are not in ``words``.
-        ratio: the whole utterance's fit through the grammar less a free phone loop's, per frame (0 at best; None
-            when the backend gives none).
         alternative: the best rival sentence (one name or the verb other than in ``text``), or None.
         margin: how much better ``text`` fits than ``alternative``, per frame of the words that differ (infinite
             without a rival).
@@ -63,7 +60,6 @@ class Decoded:
     seconds: float
     decode_seconds: float = 0.0
     outside: bool = False
-    ratio: float | None = None
     alternative: str | None = None
     margin: float = math.inf
 
@@ -81,8 +77,6 @@ class Recogniser(Protocol):
     """Words (articles aside) scoring below this are too poorly matched: the utterance is rejected."""
     min_confidence: float
     """Words (articles aside) less likely than this are too uncertain: the utterance is rejected."""
-    min_ratio: float
-    """Utterances whose `Decoded.ratio` is below this fit the grammar too poorly: rejected."""
     min_margin: float
     """Commands whose `Decoded.margin` to their best rival is below this are ambiguous: rejected, naming both."""
 

@@ -57,8 +57,7 @@ class VoskRecogniser:
     name = "vosk"
     threshold = THRESHOLD
     min_confidence = THRESHOLD
-    min_ratio = -math.inf  # vosk gives no phone-loop ratio nor rivals
-    min_margin = -math.inf
+    min_margin = -math.inf  # vosk gives no rivals
 
     def __init__(self, model_dir: str | Path) -> None:
         path = Path(model_dir)

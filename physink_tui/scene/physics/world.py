@@ -156,9 +156,7 @@ class World:
 
     def velocity(self, body_id: str) -> Velocity:
         """How fast a body's origin moves (canvas units per second) and turns (radians per second)."""
-        body = self._get(body_id)
-        v = body.velocity_at_world_point(body.position)
-        return Velocity(v.x, v.y, body.angular_velocity)
+        return _motion(self._get(body_id)).velocity
 
     def motion(self, body_id: str) -> Motion:
         """A body's pose and velocity together."""

@@ -28,7 +28,10 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    that pokes out of those bounds (a rhombus, a diamond) gives way to the quad itself as a polygon
    (`Candidate.fallback`), and a box that leaves more than a tenth of the stroke's points farther than 8 % of its
    diagonal from its sides is not kept (`recognize.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is not
-   a box the size of the stem).
+   a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
+   to the ellipse drawn (`Candidate.fallback` again), and a loop about as wide as long turning smoothly all round (under
+   `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
+   (`recognize.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a

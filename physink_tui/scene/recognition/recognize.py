@@ -195,7 +195,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
                        weights, raw, noise, diag)
         return _or_freeform(ranked, work, closed=False, sigma=sigma)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    if sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH:
+    if _lumpy_round(loop, noise):
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
     candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
     ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop)
@@ -208,6 +208,9 @@ LUMPY_SIDES = 4
 points a few noise widths apart: `stroke_geometry.coarse_turning`) is offered
 no polygon of `LUMPY_SIDES` sides or more: a lumpy circle drawn with a mouse (sparse points, flat stretches) fits
 a quad, pentagon or hexagon closely, but a drawn polygon turns at its corners."""
+LUMPY_ASPECT = 0.5
+"""Only a loop whose fitted ellipse is at least this wide for its length is judged lumpy-round (an oval drawn by a
+person is rarely flatter than 2:1; a thin box is far flatter)."""
 
 
 def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: float) -> Recognition:
@@ -222,6 +225,15 @@ def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: f
     if len(points) >= 3:
         return Recognition("polyline", FREEFORM_CONFIDENCE, Polyline(points), ())
     return Recognition("line", FREEFORM_CONFIDENCE, Line(points[0], points[-1]), ())
+
+
+def _lumpy_round(loop: np.ndarray, noise: float) -> bool:
+    """A closed loop about as wide as it is long (its ellipse no flatter than `LUMPY_ASPECT`) that turns smoothly all
+    round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides are not lumps)."""
+    ellipse = fit_ellipse(loop)
+    if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
+        return False
+    return sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH
 
 
 def _polygon_left_open(work: np.ndarray, diag: float) -> bool:

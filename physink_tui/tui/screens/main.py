@@ -21,7 +21,7 @@ from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.message import Message
 from textual.screen import Screen
-from textual.widgets import Static
+from textual.widgets import Input, Static, TextArea, Tree
 from textual.worker import Worker, WorkerState
 
 from physink_tui.errors import PhysinkError
@@ -33,7 +33,9 @@ from physink_tui.session.simulation import SessionInput
 from physink_tui.session.view import SessionView
 from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
+from physink_tui.tui import storage
 from physink_tui.tui.config import Config
+from physink_tui.tui.drawing_help import vocabulary_lines
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
@@ -43,6 +45,7 @@ from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
 from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
 from physink_tui.tui.widgets.controls import Controls
+from physink_tui.tui.widgets.message_log import MessageLog
 from physink_tui.tui.widgets.scene_view import PRESSURE, SceneView
 from physink_tui.tui.widgets.search_bar import SearchBar
 from physink_tui.tui.widgets.time_slider import TimeSlider
@@ -86,27 +89,37 @@ class MainScreen(Screen[None]):
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("s", "sketch", "sketch mode"),
         Binding("d", "demo", "demo mode (record a demonstration)"),
-        Binding("space,p", "play_pause", "play / pause the demonstration"),
+        # the playback keys work whichever widget has focus (the tree, a button): priority bindings, which
+        # `check_action` hands back to a text input
+        Binding("space", "play_pause", "play / pause the demonstration", priority=True),
+        Binding("p", "play_pause", "play / pause the demonstration"),
         Binding("full_stop", "stop", "stop (back to the start)"),
-        Binding("left", "seek(-1)", f"seek back {SEEK_STEP:g} s"),
-        Binding("right", "seek(1)", f"seek forward {SEEK_STEP:g} s"),
+        Binding("left", "seek(-1)", f"seek back {SEEK_STEP:g} s (each press counts)", priority=True),
+        Binding("right", "seek(1)", f"seek forward {SEEK_STEP:g} s (each press counts)", priority=True),
+        Binding("home", "seek_to('start')", "go to the start of the demonstration", priority=True),
+        Binding("end", "seek_to('end')", "go to the end of the demonstration", priority=True),
         Binding("u,ctrl+z", "undo", "undo"),
         Binding("r,ctrl+y", "redo", "redo"),
         Binding("c", "clear", "clear the sketch"),
         Binding("l", "label", "label the selected body (or the last drawn)"),
-        Binding("ctrl+s", "save", "save the project"),
+        Binding("ctrl+s", "save", "save the project (in $XDG_DATA_HOME/physink/projects/ unless told)"),
         Binding("ctrl+o", "load", "load a project"),
         Binding("t", "timeline", "the timeline as text"),
         Binding("g", "simulate", "simulate (search a physical simulation)"),
         Binding("a", "adopt", "adopt the simulation: its parameters and timeline become the project's (undoable)"),
         Binding("e", "export", "export the demonstration as a video"),
+        Binding("i", "picture", "export a picture (PNG) of the moment shown"),
         Binding("escape", "cancel", "cancel the search (keeping the best so far) or the export"),
         Binding("f2", "settings", "settings: tablet mapping, tip thresholds, theme"),
         Binding("v", "listen", "push-to-talk: listen on the microphone / stop (\"label ball\", \"the ball falls\"); "
                 "or hold the pen's barrel button while speaking"),
-        Binding("question_mark,f1", "help", "this help"),
-        Binding("q,ctrl+q", "app.quit", "quit (asks when there is unsaved work)"),
+        Binding("question_mark,f1", "help", "this help: what to draw, and the keys"),
+        Binding("q,ctrl+q,ctrl+c", "app.quit", "quit (asks when there is unsaved work; ctrl+c also while drawing, "
+                "and twice quits)"),
     ]
+
+    PLAYBACK = frozenset({"play_pause", "seek", "seek_to"})
+    """Actions of priority keys that a focused text input keeps for itself."""
 
     def __init__(self, canvas: tuple[float, float], theme: str = "dark", graphics: str = "halfblocks",
                  cell: tuple[int, int] = DEFAULT_CELL) -> None:
@@ -121,6 +134,9 @@ class MainScreen(Screen[None]):
         self._simulate_after = False  # SIMULATE once the replay is done
         self.talk: PushToTalk | None = None
         self._barrel = False
+        self._seeking: tuple[SessionInput, float] | None = None  # the last seek sent and its target clock
+        self.scene_view: SceneView | None = None
+        """The scene view, once composed (the app tells it when Textual painted over its Sixel picture)."""
         self.background = BackgroundWork(self, self)
         """SIMULATE and export, in worker threads."""
 
@@ -132,8 +148,12 @@ class MainScreen(Screen[None]):
     def compose(self) -> ComposeResult:
         with Vertical(id="panel"):
             with Horizontal(id="top"):
-                yield SceneView(self.canvas, self.theme_name, self.graphics, self.cell, id="scene")
-                yield TimelineTree(id="timeline")
+                self.scene_view = SceneView(self.canvas, self.theme_name, self.graphics, self.cell, id="scene")
+                yield self.scene_view
+                with Vertical(id="side"):
+                    yield TimelineTree(id="timeline")
+                    yield Static("", id="event-detail", markup=False)
+                    yield MessageLog(id="log")
             yield TimeSlider(id="slider")
             yield NarrationBar(id="narration")
             yield SearchBar(id="search")
@@ -168,6 +188,7 @@ class MainScreen(Screen[None]):
                          on_done=lambda: self.post_message(DeviceStatus("")))
 
     def show(self, view: SessionView) -> None:
+        self.background.drop_changed_search(view)
         self.view = view
         if not self.is_current:  # under a modal (help, settings, a prompt): drawn when it closes (on_screen_resume)
             return
@@ -183,7 +204,9 @@ class MainScreen(Screen[None]):
 
     def _show(self, view: SessionView) -> None:
         self.query_one(SceneView).show(view)
-        self.query_one(TimelineTree).show(view)
+        if self.query_one(TimelineTree).show(view):
+            self.query_one("#event-detail", Static).update("")
+        self.query_one(MessageLog).show(view)
         self.query_one(TimeSlider).show(view)
         self.query_one(NarrationBar).show(view, self.canvas)
         status = self.query_one(StatusBar)
@@ -257,6 +280,11 @@ class MainScreen(Screen[None]):
             self.live.mouse.push(message.x, message.y, p=PRESSURE if message.tip else 0.0, tip=message.tip,
                                  in_range=message.in_range, eraser=message.eraser)
 
+    def on_tree_node_highlighted(self, event: Tree.NodeHighlighted) -> None:
+        """The event under the tree's cursor, in full below the tree (a narrow tree cuts long names)."""
+        if isinstance(event.control, TimelineTree):
+            self.query_one("#event-detail", Static).update(str(event.node.label).strip())
+
     def on_timeline_tree_seek(self, message: TimelineTree.Seek) -> None:
         self._seek(message.t)
         self.query_one(SceneView).emphasise(message.components)
@@ -268,7 +296,8 @@ class MainScreen(Screen[None]):
     def _seek(self, t: float) -> None:
         if self.view is not None and self.view.mode != "demo":
             self._command("mode", "demo")
-        self._command("seek", round(t, 6))
+        entry = self._command("seek", round(t, 6))
+        self._seeking = (entry, round(t, 6)) if entry is not None else None
 
     def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
         """A worker that died on a bug (SIMULATE, export: ``exit_on_error=False``) is said, never silent."""
@@ -302,11 +331,37 @@ class MainScreen(Screen[None]):
     def action_stop(self) -> None:
         self._command("stop")
 
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        if action in self.PLAYBACK and isinstance(self.focused, Input | TextArea):
+            return False  # a text input keeps space and the arrows
+        return True
+
+    def _clock(self) -> SessionView | None:
+        """The latest view, for a playback key: the runner's (the one drawn may be a frame behind)."""
+        return (self.live.runner.latest_view() if self.live is not None else None) or self.view
+
     def action_seek(self, direction: int) -> None:
-        view = self.view
+        """Every press moves `SEEK_STEP` from where the last one went, even before the session has handled it (a
+        key held down repeats faster than views come)."""
+        view = self._clock()
         if view is None or view.mode != "demo":
             return
-        self._command("seek", round(min(max(view.clock + direction * SEEK_STEP, 0.0), view.duration), 6))
+        clock = view.clock
+        if self._seeking is not None and view.t < self._seeking[0].t:  # the last seek is not handled yet
+            clock = self._seeking[1]
+        self._seek(min(max(clock + direction * SEEK_STEP, 0.0), view.duration))
+
+    def action_seek_to(self, where: str) -> None:
+        view = self._clock()
+        if view is not None and view.mode == "demo":
+            self._seek(0.0 if where == "start" else view.duration)
+
+    def lift_pen(self) -> None:
+        """A drag under way on the scene ends (quitting)."""
+        try:
+            self.query_one(SceneView).lift()
+        except NoMatches:
+            pass
 
     def action_undo(self) -> None:
         self._command("undo")
@@ -370,6 +425,9 @@ class MainScreen(Screen[None]):
     def action_export(self) -> None:
         self.background.export()
 
+    def action_picture(self) -> None:
+        self.background.picture()
+
     def action_cancel(self) -> None:
         self.background.cancel()
 
@@ -381,30 +439,39 @@ class MainScreen(Screen[None]):
         return self.live.command(name, *args, project=project) if self.live is not None else None
 
     def action_help(self) -> None:
-        self.app.push_screen(HelpScreen((b.key.replace("full_stop", ".").replace("question_mark", "?"),
-                                         b.description) for b in self.BINDINGS if isinstance(b, Binding)))
+        self.app.push_screen(HelpScreen(((b.key.replace("full_stop", ".").replace("question_mark", "?"),
+                                          b.description) for b in self.BINDINGS if isinstance(b, Binding)),
+                                        vocabulary_lines(self.canvas)))
 
     # -- files ---------------------------------------------------------------------------------------------------
 
     def action_save(self) -> None:
-        default = self.project_path or "machine.physink.json"
-        self.app.push_screen(PromptModal("Save the project as:", default), self.save_project)
+        default = self.project_path or str(storage.new_project_path())
+        self.app.push_screen(PromptModal(f"Save the project as (a name alone goes in {storage.projects_dir()}):",
+                                         default), self.save_project)
 
     def save_project(self, path: str | None) -> None:
         view = self.view if self.live is None else self.live.runner.latest_view()
         if not path or view is None or self.live is None:
             return
+        target = storage.project_target(path)
         project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas,
                           view.demonstration)
         try:
-            save_project(project, path)
+            target.parent.mkdir(parents=True, exist_ok=True)
+            save_project(project, target)
+        except OSError as exc:
+            self.app.push_screen(ErrorModal("Cannot save", f"cannot make the folder {target.parent}: "
+                                                           f"{exc.strerror or exc}"))
+            return
         except PhysinkError as exc:
             self.app.push_screen(ErrorModal("Cannot save", str(exc)))
             return
-        self.project_path = path
-        self._command("save", os.path.abspath(path))
+        self.project_path = str(target)
+        self._command("save", str(target))
         self.panel_app.mark_saved(view)
-        self.notify(f"saved {path}")
+        self.query_one(StatusBar).set(activity=f"saved {target}")
+        self.notify(f"saved the project to {target}")
 
     def action_load(self) -> None:
         self.app.push_screen(PromptModal("Load the project:", self.project_path or ""), self.open_project)

@@ -15,23 +15,26 @@ from textual.widgets import Button, Input, Label, Static
 
 
 class HelpScreen(ModalScreen[None]):
-    """Every key binding of the control panel, with what it does."""
+    """What to draw (the drawing vocabulary, `physink_tui.tui.drawing_help`) and every key binding of the control
+    panel, with what each does."""
 
     BINDINGS: ClassVar[list[BindingType]] = [Binding("escape,q,question_mark,f1", "dismiss", "close")]
 
-    def __init__(self, bindings: Iterable[tuple[str, str]]) -> None:
+    def __init__(self, bindings: Iterable[tuple[str, str]], drawing: Iterable[str] = ()) -> None:
         super().__init__()
         self._keys = list(bindings)
+        self._drawing = list(drawing)
 
     def compose(self) -> ComposeResult:
-        lines = [f"  {keys:<16} {what}" for keys, what in self._keys]
+        drawing = ["What to draw (left mouse button or the pen):", "", *self._drawing] if self._drawing else []
+        lines = ["Keys:", "", *(f"  {keys:<16} {what}" for keys, what in self._keys)]
         mouse = ["", "  mouse in the scene: left button draws (hold still to dwell, then drag to move a body),",
                  "  right button erases; in demo mode dragging a body demonstrates its movement.",
                  "  timeline: choose an event to play back from it.", "", "  escape closes this help"]
         with Vertical(id="dialog", classes="help"):
-            yield Label("PhysInk — keys", classes="title")
+            yield Label("PhysInk — drawing and keys", classes="title")
             with VerticalScroll():
-                yield Static("\n".join(lines + mouse), id="help-text")
+                yield Static("\n".join(drawing + lines + mouse), id="help-text", markup=False)
 
 class ErrorModal(ModalScreen[None]):
     """A `PhysinkError` (or any failure a user caused), in words; the work is kept."""

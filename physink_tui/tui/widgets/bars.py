@@ -1,5 +1,5 @@
-"""The narration bar (what is happening, in words) and the status bar (mode, device, pen, journal); both only
-show what the `SessionView` and the drivers say.
+"""The narration bar (what is happening, in words) and the status bar (mode, the latest message, device, pen,
+journal); both only show what the `SessionView` and the drivers say.
 """
 
 from __future__ import annotations
@@ -7,16 +7,30 @@ from __future__ import annotations
 from textual.widgets import Static
 
 from physink_tui.render.frames import Demonstration
-from physink_tui.session.view import SessionView
+from physink_tui.session import simulation
+from physink_tui.session.view import Message, SessionView
+
+
+def latest_told(view: SessionView, verdicts: set[str]) -> Message | None:
+    """The latest message of ``view``, passing over a SIMULATE verdict (one of ``verdicts``) once the view no
+    longer shows that search (the machine changed since: the verdict is about a machine that is gone)."""
+    for message in reversed(view.messages):
+        if view.search is None and message.text in verdicts:
+            continue
+        return message
+    return None
 
 
 class NarrationBar(Static):
-    """The narration of the event at the playback clock in demo mode, else the latest message."""
+    """The narration of the event at the playback clock in demo mode, else the latest message (never the verdict
+    of a search whose machine has changed since)."""
 
     def __init__(self, **kwargs) -> None:
         super().__init__("", **kwargs)
         self._demo: Demonstration | None = None
         self.text = ""
+        self.verdicts: set[str] = set()
+        """What the session said of each search shown (`simulation.summary`), to pass over once it is gone."""
 
     def show(self, view: SessionView, canvas: tuple[float, float]) -> None:
         text = ""
@@ -27,16 +41,20 @@ class NarrationBar(Static):
             said = demo.subtitle_at(min(view.clock, demo.duration))
             if said:
                 text = said
-        if not text and view.messages:
-            text = view.messages[-1].text
+        if view.search is not None:
+            self.verdicts.add(simulation.summary(view.search))
+        told = latest_told(view, self.verdicts)
+        if not text and told is not None:
+            text = told.text
         if text != self.text:
             self.text = text
             self.update(text, layout=False)  # a fixed size (physink.tcss): a layout of the whole screen is not needed
 
 
 class StatusBar(Static):
-    """One line: mode (in demo mode the clock, and ``● recording`` while the pen moves a body), what a worker is
-    doing, pen, device, speech, journal."""
+    """One line: mode (in demo mode the clock, never past the duration, and ``● recording`` while the pen moves a
+    body), the session's latest message (what the last stroke became), what a worker is doing, pen, device,
+    speech, journal."""
 
     def __init__(self, **kwargs) -> None:
         super().__init__("", **kwargs)
@@ -45,6 +63,8 @@ class StatusBar(Static):
         self.activity = ""
         self.pen = "pen out of range"
         self.speech = ""
+        self.verdicts: set[str] = set()
+        """What the session said of each search shown (`simulation.summary`), to pass over once it is gone."""
         self._view: SessionView | None = None
         self._shown = ""
 
@@ -75,9 +95,13 @@ class StatusBar(Static):
                 holding = any(state in ("touching", "touching with a button pressed") for state, _ in
                               view.pens.values())
                 state = "● recording" if holding else "playing" if view.playing else "paused"
-                mode += f" {view.clock:5.2f}/{view.duration:.2f} s {state}"
+                mode += f" {min(view.clock, view.duration):5.2f}/{view.duration:.2f} s {state}"
             parts.append(mode)
-            parts.append(f"{len(view.scene.components)} parts")
+            if view.search is not None:
+                self.verdicts.add(simulation.summary(view.search))
+            told = latest_told(view, self.verdicts)
+            if told is not None:
+                parts.append(told.text)
         if self.activity:
             parts.append(self.activity)
         parts += [self.pen, self.device]

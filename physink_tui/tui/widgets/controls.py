@@ -12,9 +12,10 @@ from textual.message import Message
 from textual.widgets import Button
 
 BUTTONS: tuple[tuple[str, str], ...] = (
-    ("sketch", "Sketch"), ("demo", "Demo"), ("play_pause", "Play/Pause"), ("stop", "Stop"),
+    ("sketch", "Sketch"), ("demo", "Demo"), ("play_pause", "Play"), ("stop", "Stop"),
     ("undo", "Undo"), ("redo", "Redo"), ("clear", "Clear"), ("label", "Label"), ("save", "Save"),
-    ("load", "Load"), ("timeline", "Timeline"), ("simulate", "Simulate"), ("export", "Export"), ("help", "Help"),
+    ("load", "Load"), ("timeline", "Timeline"), ("simulate", "Simulate"), ("export", "Video"), ("picture", "Picture"),
+    ("help", "Help"),
 )
 """(action, label) of each button, left to right; the button's id is ``do-<action>``."""
 

@@ -12,6 +12,7 @@ still is a dwell (the session's gesture engine sees the time pass); positions go
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -76,6 +77,7 @@ class SceneView(Widget, can_focus=True):
         self._blocks = HalfBlocks()
         self._strips: list[Strip] = []
         self._pressed: int | None = None  # the mouse button held over the scene, or None
+        self._last: tuple[float, float] | None = None  # where the last pen sample went out (canvas fractions)
         self._overlay: tuple[object, Demonstration] | None = None
         self.highlight: frozenset[str] = frozenset()
         """Bodies outlined (the timeline event chosen last); forgotten when the scene changes."""
@@ -176,6 +178,22 @@ class SceneView(Widget, can_focus=True):
         if self.graphics == "sixel" and self.sent:
             self.call_after_refresh(self._draw_sixel, self.sent[0])
 
+    def painted(self, region: tuple[int, int, int, int] | None,
+                spans: Sequence[tuple[int, int, int]] = ()) -> None:
+        """Textual has just written cells to the terminal (``region`` x, y, width, height of a whole layout, or the
+        ``spans`` (y, x1, x2) of a partial update): a Sixel picture those cells covered is drawn again at once, in
+        order after them (a full repaint, e.g. when the tree first fills, writes blank cells over it)."""
+        if self.graphics != "sixel" or not self.sent or not self.screen.is_active:
+            return
+        box = self.content_region
+        if region is not None:
+            x, y, width, height = region
+            hit = x < box.right and box.x < x + width and y < box.bottom and box.y < y + height
+        else:
+            hit = any(box.y <= row < box.bottom and x1 < box.right and box.x < x2 for row, x1, x2 in spans)
+        if hit:
+            self._draw_sixel(self.sent[0])
+
     def _draw_sixel(self, data: str) -> None:
         if not self.screen.is_active or data is not self.sent[0]:
             return  # a modal covers the scene, or a newer frame follows
@@ -240,7 +258,20 @@ class SceneView(Widget, can_focus=True):
     def _post(self, event: events.MouseEvent, tip: bool, in_range: bool = True) -> None:
         where = self.to_canvas(*self._point(event))
         if where is not None:
+            self._last = where
             self.post_message(self.Pen(where[0], where[1], tip, self._pressed == 3, in_range))
+
+    def lift(self) -> None:
+        """End a drag under way where the mouse last was (the app quitting, or asking to): the pen goes up and out of
+        range as a mouse-up would take it; nothing when no button is held."""
+        if self._pressed is None:
+            return
+        if self._last is not None:
+            x, y = self._last
+            self.post_message(self.Pen(x, y, False, self._pressed == 3))
+            self.post_message(self.Pen(x, y, False, self._pressed == 3, False))
+        self._pressed = None
+        self.release_mouse()
 
     def on_mouse_down(self, event: events.MouseDown) -> None:
         if event.button not in (1, 3) or self._pressed is not None:

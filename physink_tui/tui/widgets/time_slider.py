@@ -33,7 +33,7 @@ class TimeSlider(Widget):
         self.mode = "sketch"
 
     def show(self, view: SessionView) -> None:
-        state = (view.clock, view.duration, view.mode)
+        state = (min(view.clock, view.duration), view.duration, view.mode)  # the clock can step past the end
         if state != (self.clock, self.duration, self.mode):
             self.clock, self.duration, self.mode = state
             self.refresh()

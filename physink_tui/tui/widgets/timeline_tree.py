@@ -37,17 +37,18 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
         self._names: dict[str, str] = {}
         self.guide_depth = 2
 
-    def show(self, view: SessionView) -> None:
+    def show(self, view: SessionView) -> bool:
+        """Show ``view``'s timeline; whether the tree was built again (its cursor is then back at the top)."""
         timeline = view.timeline
         names = dict(view.scene.names())
         key = self._key(timeline, names)
         if key == self._shown:
-            return
+            return False
         self._shown, self._names = key, names
         self.clear()
         if timeline is None or not timeline.events:
             self.root.add_leaf("(nothing demonstrated yet: press d for demo mode and move a body)")
-            return
+            return True
         events = {ev.id: ev for ev in timeline.events}
         nodes: dict[str, TreeNode[tuple[float, tuple[str, ...]]]] = {}
         waiting = sorted(timeline.events, key=lambda e: (e.t0, e.id))
@@ -68,6 +69,7 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
             waiting = later
         for node in nodes.values():
             node.allow_expand = bool(node.children)
+        return True
 
     @staticmethod
     def _key(timeline: Timeline | None, names: dict[str, str]) -> tuple:
@@ -78,7 +80,9 @@ class TimelineTree(Tree[tuple[float, tuple[str, ...]]]):
 
     @staticmethod
     def _label(ev: Event, events: dict[str, Event], names: dict[str, str]) -> str:
-        text = "start" if ev.type == "start" else event_label(ev, names)
+        text = event_label(ev, names)
+        if ev.type == "start":  # "start", with the pairs that began in contact: "start (stopper and ball in contact)"
+            text = "start" + text.removeprefix("Start") if ev.label is None else text
         more = [c for c in ev.causes[1:] if c in events]
         also = f"  (also caused by {', '.join(more)})" if more else ""
         return f"{ev.t0:5.2f} s  {text}{also}"
