@@ -12,6 +12,7 @@ the command finishes its files and its status is what it would have been (0 on s
 from __future__ import annotations
 
 import argparse
+import gc
 import importlib
 import math
 import re
@@ -20,7 +21,6 @@ from collections.abc import Callable, Sequence
 
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError
-from physink_tui.formats.journal.value_checks import MAX_COUNT
 from physink_tui.formats.outputs import StdoutGuard
 from physink_tui.render.limits import MAX_FPS, MAX_SIDE, MIN_SIDE
 
@@ -49,8 +49,6 @@ HANDLERS: dict[str, str] = {
 
 
 
-MAX_SEED = MAX_COUNT
-"""The largest seed: what a journal's ``simulate`` line takes."""
 
 
 def _whole(text: str, low: int, high: int, expected: str) -> int:
@@ -69,8 +67,11 @@ def _positive_int(text: str) -> int:
 
 
 def _seed(text: str) -> int:
-    """A search's seed: what a journal's ``simulate`` line takes."""
-    return _whole(text, 0, MAX_SEED, f"an integer in [0, {MAX_SEED}]")
+    """A search's seed: what a journal's ``simulate`` line takes (up to its `MAX_COUNT`, imported only here: the
+    journal's checks are not every command's start-up)."""
+    from physink_tui.formats.journal.value_checks import MAX_COUNT
+
+    return _whole(text, 0, MAX_COUNT, f"an integer in [0, {MAX_COUNT}]")
 
 
 def _positive(text: str, expected: str) -> float:
@@ -294,6 +295,15 @@ def _dispatch(args: argparse.Namespace) -> int:
     if run is None:
         return _not_available(command, f"{HANDLERS[command].partition(':')[0]} is not written yet")
     return run(args)
+
+
+def entry() -> None:
+    """The ``physink`` program (its console script, ``python -m physink_tui``): `main` on the process arguments,
+    then the exit. What the command made dies with the process, so it is frozen first and the interpreter's last
+    collections skip it (about a tenth of a short command's CPU: ``physink decode``, docs/BENCHMARKS.md)."""
+    status = main()
+    gc.freeze()
+    sys.exit(status)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -74,8 +74,10 @@ FOUND: dict[str, tuple[str, Outline]] = {
                                                                (30.0, 20.0), (-30.0, 20.0)),
                                                start=0.577, closing=5.0, jitter=1.89, seed=3350)),
     "thin_60x2.8": ("reverse", Outline("rectangle", _rect(30.0, 1.4), closing=2.0, jitter=1.0, seed=3)),
-    # what the derandomised reverse property meets (minimised by hypothesis): a 60 x 4.2 px box
+    # what the derandomised reverse property met (minimised by hypothesis): a 60 x 4.2 px box (fixed on main
+    # 2026-12-03), then a 60 px square with a 4 px closing gap
     "thin_60x4.2": ("reverse", Outline("rectangle", _rect(30.0, 2.1), angle=1.0, start=0.25, jitter=1.5, seed=5357)),
+    "square_60_gap4": ("reverse", Outline("rectangle", _rect(30.0, 30.0), closing=4.0, jitter=2.0, seed=1)),
 }
 """Every counterexample the properties below have found (minimised by hypothesis or by hand): name -> (property,
 outline). Each is an explicit test, and an ``@example`` of its property once it passes."""
@@ -84,14 +86,14 @@ KNOWN_FAILING: dict[str, str] = {
     "thin_60x2.6_clean_backwards": "polygon forwards, box backwards (since 08e5de4, which gave it a kind)",
     "thin_100x3.8": "polygon forwards, ellipse backwards",
     "thin_131x3.4": "ellipse forwards, polygon backwards",
-    "thin_60x4.2": "box forwards, polygon backwards: one of its long sides bends enough with the jitter to read as a "
-                   "fifth corner when drawn from the other end",
+    "square_60_gap4": "circle forwards, box backwards: a small square drawn from its corner with a 4 px gap reads "
+                      "round one way",
 }
 """The cases of `FOUND` that fail with today's recogniser, and what comes out. They run as strict xfails (a fix
 turns them red: delete the name here)."""
 
 MEETS: dict[str, str] = {
-    "reverse": "thin_60x4.2",
+    "reverse": "square_60_gap4",
 }
 """The known failing case each derandomised property test meets today (it fails on it, or on an outline that
 hypothesis minimises to it): the property test is then a strict xfail naming it. A fix that makes the property pass

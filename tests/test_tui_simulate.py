@@ -41,10 +41,16 @@ def simulate_args(folder: Path) -> list[tuple]:
     return [e.args for e in read_journal(path).entries if getattr(e, "name", None) == "simulate"]
 
 
+ENDLESS = 100_000
+"""A budget no search here runs out before the test stops it (a search runs its whole budget, found or not): what
+the keys meet is a search under way however fast the machine."""
+
+
 async def searching(pilot, app) -> SearchBar:
-    """Once the demonstration is in, press Simulate and wait for its first rollout; the search bar. (The cup
-    dispenser's search runs its whole budget without a solution, docs/BENCHMARKS.md, so it is still running.)"""
+    """Once the demonstration is in, press Simulate (a search of `ENDLESS` rollouts) and wait for its first
+    rollout; the search bar."""
     await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+    app.live.session.simulation_budget = ENDLESS
     await pilot.press("g")
     bar = app.main.query_one(SearchBar)
     await until_app(pilot, lambda: bar.progress is not None and bar.progress.rollouts >= 1)
@@ -94,8 +100,8 @@ def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) 
             await pilot.press("escape")
             view = await until(pilot, lambda v: v.search is not None)
             kept = view.search
-            assert kept.budget == kept.rollouts and 1 <= kept.rollouts < Session.simulation_budget
-            assert not kept.found and view.mode == "demo"
+            assert kept.budget == kept.rollouts and 1 <= kept.rollouts < ENDLESS
+            assert view.mode == "demo"  # (found or not: how far it got before the escape is the machine's pace)
             stopped = f"simulation stopped: the best of {kept.rollouts} rollout{'' if kept.rollouts == 1 else 's'} kept"
             await until_app(pilot, lambda: app.main.query_one("#status").activity == stopped)
         return kept

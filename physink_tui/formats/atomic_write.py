@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import tempfile
 
 
 def write_text_atomic(path: str | os.PathLike[str], text: str) -> None:
@@ -29,6 +28,8 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
         mode = os.stat(target).st_mode & 0o777
     except FileNotFoundError:
         mode = 0o644
+    import tempfile  # here, not at the top: a command that writes no file (`physink decode`) starts without it
+
     fd, tmp = tempfile.mkstemp(prefix=f".{base}.", suffix=".tmp", dir=directory)
     try:
         with os.fdopen(fd, "wb") as f:

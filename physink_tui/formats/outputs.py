@@ -15,7 +15,6 @@ from __future__ import annotations
 import errno
 import os
 import re
-import secrets
 import stat
 from collections.abc import Iterable
 from pathlib import Path
@@ -179,6 +178,8 @@ class OutputFolder:
                 except OSError:
                     pass  # another run's, still being written
         folder._staged = {}
+        import secrets  # here, not at the top: the CLI imports this module for every command (`StdoutGuard`)
+
         folder._token = f"{os.getpid()}-{secrets.token_hex(4)}"
         return folder
 
