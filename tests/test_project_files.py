@@ -159,21 +159,24 @@ def test_an_adopted_simulation_keeps_the_demonstration_it_was_found_for() -> Non
         decode_project(json.dumps(raw), "p.json")
 
 
-@pytest.mark.parametrize(("change", "path"), [
-    (lambda raw: raw["demonstration"]["events"][1]["components"][0].update(id="b99"),
-     "demonstration.events[1].components[0].id"),
-    (lambda raw: raw["demonstration"]["events"][0]["in_contact"].append([{"id": "b2"}, {"id": "b99"}]),
-     r"demonstration.events[0].in_contact[0][1].id"),
+@pytest.mark.parametrize("change", [
+    lambda raw: raw["demonstration"]["events"][1]["components"][0].update(id="b99"),
+    lambda raw: raw["demonstration"]["events"][0]["in_contact"].append([{"id": "b2"}, {"id": "b99"}]),
 ])
-def test_a_kept_demonstration_naming_a_body_the_scene_lacks_is_refused_on_loading(change, path, tmp_path) -> None:
+def test_a_kept_demonstration_naming_a_body_the_scene_lacks_still_loads(change, tmp_path) -> None:
+    """What a user gets by erasing a body after adopting a simulation (sketch edits keep the demonstration) and
+    saving: still their work, so it loads with the ids it names, as a timeline naming an erased body does
+    (tests/test_newer_commands_faults.py); `physink simulate` is what refuses such a timeline."""
     simulated = Timeline((Event("e1", "start"), Event("e2", "movement", ("b2",), ("e1",), 0.0, 0.75)))
     raw = json.loads(encode_project(replace(PROJECT, timeline=simulated, demonstration=_demonstration())))
     change(raw)
     target = tmp_path / "adopted.physink.json"
     target.write_text(json.dumps(raw), encoding="utf-8")
-    with pytest.raises(SceneError) as caught:
-        load_project(target)
-    assert str(caught.value).startswith(f"{target}: {path}: expected the id of a component of the project's scene")
+    loaded = load_project(target)
+    assert loaded.demonstration is not None
+    named = {c for ev in loaded.demonstration.events for c in (*ev.components, *(i for pair in ev.in_contact
+                                                                                   for i in pair))}
+    assert "b99" in named
 
 
 def test_the_vocabulary_round_trips_as_the_sessions_vocabulary() -> None:

@@ -86,22 +86,47 @@ def test_simulate_shows_progress_then_the_result_in_red_and_the_journal_replays_
     assert journaled(tmp_path).view().search == shown
 
 
-def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path) -> None:
+def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path, monkeypatch) -> None:
+    """Keys reach the session while a search runs, and escape stops it keeping the best so far. The rollouts are
+    held by the test, so the search is still under way when the keys arrive however fast the machine (the cup
+    dispenser's search may otherwise find its answer first)."""
+    import threading
+    from functools import partial
+
+    from physink_tui.sim.evaluate import evaluate_problem
+    from physink_tui.tui.screens import background
+
     header, entries = recorded("cup_dispenser")
+    started, release = [], threading.Semaphore(0)
+
+    def gated(problem, candidate):  # each rollout waits for the test to let it run
+        started.append(candidate)
+        release.acquire(timeout=60)
+        return evaluate_problem(problem, candidate)
+
+    monkeypatch.setattr(background, "SearchJob", partial(background.SearchJob, evaluate=gated))
 
     async def go():
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
         async with app.run_test(size=SIZE) as pilot:
-            bar = await searching(pilot, app)
+            await until(pilot, lambda v: v.timeline is not None and v.timeline.events)
+            app.live.session.simulation_budget = ENDLESS
+            await pilot.press("g")
+            bar = app.main.query_one(SearchBar)
+            await until_app(pilot, lambda: len(started) == 1)
+            release.release()  # the first rollout ends; the second starts and is held
+            await until_app(pilot, lambda: len(started) == 2 and bar.progress is not None
+                            and bar.progress.rollouts >= 1)
             await pilot.press("d")  # the session takes keys while the search runs
             await until(pilot, lambda v: v.mode == "demo")
             assert app.main.background.job is not None and bar.display
             await pilot.press("g")  # a second search is refused while one runs
             await pilot.press("escape")
+            release.release(ENDLESS)  # the held rollout ends; the stopped search starts no other
             view = await until(pilot, lambda v: v.search is not None)
             kept = view.search
-            assert kept.budget == kept.rollouts and 1 <= kept.rollouts < ENDLESS
-            assert view.mode == "demo"  # (found or not: how far it got before the escape is the machine's pace)
+            assert kept.budget == kept.rollouts and 1 <= kept.rollouts <= len(started) < ENDLESS
+            assert view.mode == "demo"
             stopped = f"simulation stopped: the best of {kept.rollouts} rollout{'' if kept.rollouts == 1 else 's'} kept"
             await until_app(pilot, lambda: app.main.query_one("#status").activity == stopped)
         return kept
