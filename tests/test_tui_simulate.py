@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import asyncio
 import json
+import threading
+from functools import partial
 from pathlib import Path
 
 import pytest
@@ -14,6 +16,8 @@ from physink_tui import cli
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.formats.timeline_json import timeline_object
 from physink_tui.session.session import Session
+from physink_tui.sim.evaluate import evaluate_problem
+from physink_tui.tui.screens import background
 from physink_tui.tui.screens.background import SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import ConfirmModal
 from physink_tui.tui.widgets.bars import NarrationBar
@@ -44,6 +48,21 @@ def simulate_args(folder: Path) -> list[tuple]:
 ENDLESS = 100_000
 """A budget no search here runs out before the test stops it (a search runs its whole budget, found or not): what
 the keys meet is a search under way however fast the machine."""
+
+
+def held_rollouts(monkeypatch) -> tuple[list[object], threading.Semaphore]:
+    """Make the TUI's searches wait before each rollout until the test releases it: the candidates started so far
+    and the semaphore to release them with (each wait gives up after 60 s, a hang guard)."""
+    started: list[object] = []
+    release = threading.Semaphore(0)
+
+    def gated(problem, candidate):
+        started.append(candidate)
+        release.acquire(timeout=60)
+        return evaluate_problem(problem, candidate)
+
+    monkeypatch.setattr(background, "SearchJob", partial(background.SearchJob, evaluate=gated))
+    return started, release
 
 
 async def searching(pilot, app) -> SearchBar:
@@ -90,21 +109,8 @@ def test_keys_work_while_it_searches_and_cancel_keeps_the_best_so_far(tmp_path, 
     """Keys reach the session while a search runs, and escape stops it keeping the best so far. The rollouts are
     held by the test, so the search is still under way when the keys arrive however fast the machine (the cup
     dispenser's search may otherwise find its answer first)."""
-    import threading
-    from functools import partial
-
-    from physink_tui.sim.evaluate import evaluate_problem
-    from physink_tui.tui.screens import background
-
     header, entries = recorded("cup_dispenser")
-    started, release = [], threading.Semaphore(0)
-
-    def gated(problem, candidate):  # each rollout waits for the test to let it run
-        started.append(candidate)
-        release.acquire(timeout=60)
-        return evaluate_problem(problem, candidate)
-
-    monkeypatch.setattr(background, "SearchJob", partial(background.SearchJob, evaluate=gated))
+    started, release = held_rollouts(monkeypatch)
 
     async def go():
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
@@ -244,21 +250,8 @@ def test_a_verdict_leaves_the_narration_once_the_machine_it_was_about_changed(tm
 def test_an_edit_stops_the_search_before_its_next_rollout(tmp_path, monkeypatch) -> None:
     """Clearing the machine while a search runs: the rollout under way ends, no other starts, nothing reaches the
     session, and the status says why."""
-    import threading
-    from functools import partial
-
-    from physink_tui.sim.evaluate import evaluate_problem
-    from physink_tui.tui.screens import background
-
     header, entries = recorded("cup_dispenser")
-    started, release = [], threading.Semaphore(0)
-
-    def gated(problem, candidate):  # each rollout waits for the test to let it run
-        started.append(candidate)
-        release.acquire(timeout=60)
-        return evaluate_problem(problem, candidate)
-
-    monkeypatch.setattr(background, "SearchJob", partial(background.SearchJob, evaluate=gated))
+    started, release = held_rollouts(monkeypatch)
 
     async def go() -> None:
         app = tui_app(tmp_path, header=header, prior=tuple(entries))
