@@ -72,16 +72,21 @@ BETWEEN = (PLATFORM_B[3] + PLATFORM_A[1]) / 2
 """Halfway down from B's bottom to A's top: the height of the gap a ball passes through below B."""
 
 
-def machine() -> tuple[tuple[Step, ...], Expected]:
-    """The drawing (thesis figure 2-12) and the scene it must become."""
+Box = tuple[float, float, float, float]
+
+
+def drawn_machine(platform_a: Box, platform_b: Box, basket: tuple[Point, ...], welds: tuple[Point, Point, Point]
+                  ) -> tuple[tuple[Step, ...], Expected]:
+    """A ball-and-platforms drawing (thesis figure 2-12) and the scene it must become: the ball at `BALL`, the two
+    platforms and the basket, each welded to the background by an X at ``welds`` (A's, B's, the basket's)."""
     steps = (
         Step("the ball, top left", ball(BALL, RADIUS), say=("label ball",)),
-        Step("platform A", Stroke.box(*PLATFORM_A), say=("label platform a",)),
-        *_x_steps("platform A", middle(PLATFORM_A)),
-        Step("platform B, right of A and higher", Stroke.box(*PLATFORM_B), say=("label platform b",)),
-        *_x_steps("platform B", middle(PLATFORM_B)),
-        Step("the basket, bottom right", Stroke(BASKET), say=("label basket",)),
-        *_x_steps("basket", (BASKET_X, BASKET[1][1])),
+        Step("platform A", Stroke.box(*platform_a), say=("label platform a",)),
+        *_x_steps("platform A", welds[0]),
+        Step("platform B, right of A and higher", Stroke.box(*platform_b), say=("label platform b",)),
+        *_x_steps("platform B", welds[1]),
+        Step("the basket, bottom right", Stroke(basket), say=("label basket",)),
+        *_x_steps("basket", welds[2]),
     )
     expect = Expected(
         bodies=(BodyX("ball", "circle", "ball"), BodyX("a", "box", "platform a"), BodyX("b", "box", "platform b"),
@@ -93,10 +98,22 @@ def machine() -> tuple[tuple[Step, ...], Expected]:
     return steps, expect
 
 
-def _scenario(behaviour: str, source: str, what: str, path: tuple[Point, ...], seed: int) -> Scenario:
-    steps, expect = machine()
+def demonstration(name: str, drawing: tuple[tuple[Step, ...], Expected], source: str, what: str,
+                  path: tuple[Point, ...], seed: int) -> Scenario:
+    """The scenario ``name``: ``drawing``, then the pen dragging the ball from `BALL` along ``path``."""
+    steps, expect = drawing
     demo = (Step(what, Stroke((BALL, *path))),)
-    return Scenario(f"bouncing_{behaviour}", source, steps, expect, seed=seed, demo=demo)
+    return Scenario(name, source, steps, expect, seed=seed, demo=demo)
+
+
+def machine() -> tuple[tuple[Step, ...], Expected]:
+    """The drawing (thesis figure 2-12) and the scene it must become."""
+    return drawn_machine(PLATFORM_A, PLATFORM_B, BASKET,
+                         (middle(PLATFORM_A), middle(PLATFORM_B), (BASKET_X, BASKET[1][1])))
+
+
+def _scenario(behaviour: str, source: str, what: str, path: tuple[Point, ...], seed: int) -> Scenario:
+    return demonstration(f"bouncing_{behaviour}", machine(), source, what, path, seed)
 
 
 def hits_a() -> Scenario:

@@ -1,7 +1,8 @@
 """The ball-and-platforms machine as first drawn (tests/scenarios/bouncing.py before commit 0909bba), kept so that
-SIMULATE is measured on a drawing nobody redrew for it (issue 27): B lower and further right, the basket's rim 36
-canvas units right of B's end. Its eight demonstrations are named ``bouncing_first_<behaviour>`` and recorded into
-tests/journals/restored/ (`make_journals`). The code below is that of the first drawing, unchanged but for the names.
+SIMULATE is measured on a drawing nobody redrew for it (issue 27): B lower and further right, the basket's rim 36 canvas
+units right of B's end. Its eight demonstrations are named ``bouncing_first_<behaviour>`` and recorded into
+tests/journals/restored/ (`make_journals`). Its drawing and paths are the first drawing's, unchanged; the shared code is
+bouncing.py's.
 
 "Consider the simple mechanism in Figure 2-12, where a ball can take a number of different paths before landing in
 a basket" (thesis 2.4). The machine is drawn once (`machine`): the ball top left, platform A on the left, platform B
@@ -12,63 +13,26 @@ bounces the ball off a platform, and the stroke ends with the ball resting on th
 
 from __future__ import annotations
 
-from physink_tui.input.virtual_pen import Stroke
-from scenarios.thesis import BACKGROUND, BodyX, Expected, JointX, Scenario, Step, _x_steps, ball
+from scenarios.bouncing import PRESS, RADIUS, Point, demonstration, drawn_machine, on_top, under
+from scenarios.thesis import Expected, Scenario, Step
 
-Point = tuple[float, float]
-
-BALL = (0.10, 0.10)
-"""The ball's centre, where every demonstration's stroke begins (the pen grabs the ball there)."""
-RADIUS = 0.035
-"""The ball's radius, a fraction of the tablet's height (35 canvas units)."""
 PLATFORM_A = (0.14, 0.62, 0.40, 0.665)
 """Platform A: left, top, right, bottom (tablet fractions)."""
 PLATFORM_B = (0.50, 0.34, 0.74, 0.385)
 """Platform B, right of A and higher."""
 BASKET = ((0.76, 0.68), (0.78, 0.90), (0.94, 0.90), (0.96, 0.68))
 """The basket's outline: an open cup, rim first."""
-PRESS = 0.012
-"""How far past touching (a fraction of the tablet's height, 4 canvas units) the pen pushes the ball into a
-platform at a corner of its stroke."""
 FLOOR = BASKET[1][1] - RADIUS + PRESS
 """Where the pen leaves the ball in the basket: pressed onto its floor, as onto a platform."""
 
 
-def on_top(x: float, box: tuple[float, float, float, float]) -> Point:
-    """Where the pen stops to put the ball on the top of ``box`` at ``x``."""
-    return (x, box[1] - RADIUS + PRESS)
-
-
-def under(x: float, box: tuple[float, float, float, float]) -> Point:
-    """Where the pen stops to put the ball against the bottom of ``box`` at ``x``."""
-    return (x, box[3] + RADIUS - PRESS)
-
-
 def machine() -> tuple[tuple[Step, ...], Expected]:
-    """The drawing (thesis figure 2-12) and the scene it must become."""
-    steps = (
-        Step("the ball, top left", ball(BALL, RADIUS), say=("label ball",)),
-        Step("platform A", Stroke.box(*PLATFORM_A), say=("label platform a",)),
-        *_x_steps("platform A", (0.27, 0.6425)),
-        Step("platform B, right of A and higher", Stroke.box(*PLATFORM_B), say=("label platform b",)),
-        *_x_steps("platform B", (0.62, 0.3625)),
-        Step("the basket, bottom right", Stroke(BASKET), say=("label basket",)),
-        *_x_steps("basket", (0.86, 0.90)),
-    )
-    expect = Expected(
-        bodies=(BodyX("ball", "circle", "ball"), BodyX("a", "box", "platform a"), BodyX("b", "box", "platform b"),
-                BodyX("basket", "polyline", "basket")),
-        joints=(JointX("weld", "a", BACKGROUND), JointX("weld", "b", BACKGROUND),
-                JointX("weld", "basket", BACKGROUND)),
-        fixed=("a", "b", "basket"),
-    )
-    return steps, expect
+    """The first drawing (thesis figure 2-12) and the scene it must become."""
+    return drawn_machine(PLATFORM_A, PLATFORM_B, BASKET, ((0.27, 0.6425), (0.62, 0.3625), (0.86, 0.90)))
 
 
 def _scenario(behaviour: str, source: str, what: str, path: tuple[Point, ...], seed: int) -> Scenario:
-    steps, expect = machine()
-    demo = (Step(what, Stroke((BALL, *path))),)
-    return Scenario(f"bouncing_first_{behaviour}", source, steps, expect, seed=seed, demo=demo)
+    return demonstration(f"bouncing_first_{behaviour}", machine(), source, what, path, seed)
 
 
 def hits_a() -> Scenario:
