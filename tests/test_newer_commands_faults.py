@@ -410,7 +410,7 @@ def test_kiosk_recovery_keeps_the_lines_before_a_bad_one_and_says_what_it_droppe
 def test_tui_starts_beside_a_dangling_journal_symlink_and_offers_a_damaged_journal(tmp_path) -> None:
     import asyncio
 
-    from tui_helpers import tui_app
+    from tui_helpers import screen_is, tui_app
 
     from physink_tui.tui.screens.modals import ConfirmModal
 
@@ -423,11 +423,8 @@ def test_tui_starts_beside_a_dangling_journal_symlink_and_offers_a_damaged_journ
     async def start() -> str:
         app = tui_app(tmp_path, recover=True)
         async with app.run_test(size=(120, 40)) as pilot:
-            deadline = time.monotonic() + GUARD
-            while not isinstance(app.screen, ConfirmModal):
-                assert time.monotonic() < deadline, "no recovery question"
-                await pilot.pause(0.05)
-            return str(app.screen._question)
+            question = await screen_is(pilot, ConfirmModal)  # the recovery question (a 120 s hang guard)
+            return str(question._question)
 
     question = asyncio.run(start())
     assert "damaged.physink.jsonl (29 inputs)" in question and "dropped line 31 and the 10 after it" in question

@@ -132,17 +132,7 @@ class OutputFolder:
         """
         folder = cls(path)
         out = folder.path
-        if out.exists() and not out.is_dir():
-            raise PhysinkError(f"{out}: cannot use as the output folder: it exists and is not a folder")
-        try:
-            out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise PhysinkError(f"{out}: cannot create the output folder: {reason(exc)}") from None
-        try:
-            names = os.listdir(out)
-        except OSError as exc:
-            raise PhysinkError(f"{out}: cannot read the output folder: {reason(exc)}") from None
-        for name in sorted(names):
+        for name in _made_and_listed(out):
             if (name in OWN_FILES or _OWN_TMP.match(name)) and not (out / name).is_dir():
                 try:
                     (out / name).unlink()
@@ -164,14 +154,7 @@ class OutputFolder:
         """
         folder = cls(path)
         out = folder.path
-        if out.exists() and not out.is_dir():
-            raise PhysinkError(f"{out}: cannot use as the output folder: it exists and is not a folder")
-        try:
-            out.mkdir(parents=True, exist_ok=True)
-            names = os.listdir(out)
-        except OSError as exc:
-            raise PhysinkError(f"{out}: cannot use the output folder: {reason(exc)}") from None
-        for name in sorted(names):
+        for name in _made_and_listed(out):
             if _OWN_TMP.match(name) and not (out / name).is_dir():
                 try:
                     (out / name).unlink()
@@ -288,3 +271,21 @@ class StdoutGuard:
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self.stream, name)
+
+
+def _made_and_listed(out: Path) -> list[str]:
+    """The names in the output folder ``out``, sorted, the folder made first if needed.
+
+    Raises:
+        PhysinkError: ``out`` is not a folder, or cannot be made or read (path and cause named).
+    """
+    if out.exists() and not out.is_dir():
+        raise PhysinkError(f"{out}: cannot use as the output folder: it exists and is not a folder")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise PhysinkError(f"{out}: cannot create the output folder: {reason(exc)}") from None
+    try:
+        return sorted(os.listdir(out))
+    except OSError as exc:
+        raise PhysinkError(f"{out}: cannot read the output folder: {reason(exc)}") from None

@@ -61,6 +61,11 @@ movement and tablet report becomes a journal entry submitted to a `SessionRunner
   handled between frames
 - `widgets/search_bar.py`: `SearchBar`: the search's progress line (a `ProgressBar` of rollouts, the best distances,
   Cancel), shown only while a search runs
+- `screens/project_files.py`: `ProjectFiles`, a helper `MainScreen` owns (typed `Host`): Save (default in the projects
+  folder, says where), Load (`load_project`, the one read and check every command makes, embedded in a ``load``) and
+  adopting a simulation
+- `screens/playback_keys.py`: `PlaybackKeys`, a helper `MainScreen` owns: the seeks of the arrow, home and end keys
+  and of the tree and slider (`SEEK_STEP` from the last seek sent, so every press counts)
 - `screens/main.py`: `MainScreen`: the layout (the scene; beside it the tree, the chosen event's full name below it — a
   deep event's name is cut in the tree — and the narration log), every key binding, actions → commands; the playback
   keys (space, ←, →, home, end) are priority bindings, so they work whichever widget has focus (the tree, a button, the

@@ -8,8 +8,6 @@ the workers' progress are all it holds.
 
 from __future__ import annotations
 
-import json
-import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, ClassVar, Protocol, cast
@@ -24,23 +22,19 @@ from textual.screen import Screen
 from textual.widgets import Input, Static, TextArea, Tree
 from textual.worker import Worker, WorkerState
 
-from physink_tui.errors import PhysinkError
 from physink_tui.formats.journal.entries import JournalEntry
-from physink_tui.formats.project.codec import Project, decode_project, encode_project
-from physink_tui.formats.project.files import save_project
-from physink_tui.formats.project.sanity import check_project
 from physink_tui.session.simulation import SessionInput
 from physink_tui.session.view import SessionView
-from physink_tui.sim.parameters import apply
 from physink_tui.timeline.narrate import timeline_text
-from physink_tui.tui import storage
 from physink_tui.tui.config import Config
 from physink_tui.tui.drawing_help import vocabulary_lines
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
 from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
 from physink_tui.tui.screens.background import BackgroundWork, SearchFinished, SearchProgressed
-from physink_tui.tui.screens.modals import ErrorModal, HelpScreen, PromptModal, TextScreen
+from physink_tui.tui.screens.modals import HelpScreen, PromptModal, TextScreen
+from physink_tui.tui.screens.playback_keys import SEEK_STEP, PlaybackKeys
+from physink_tui.tui.screens.project_files import ProjectFiles
 from physink_tui.tui.screens.settings import SettingsScreen
 from physink_tui.tui.tablet import TabletWatch
 from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
@@ -53,8 +47,6 @@ from physink_tui.tui.widgets.timeline_tree import TimelineTree
 
 MIN_WIDTH, MIN_HEIGHT = 60, 16
 """The smallest terminal the panel is laid out in; below it a notice says so."""
-SEEK_STEP = 0.5
-"""Seconds of timeline time the arrow keys move the playback."""
 
 
 @dataclass
@@ -128,17 +120,19 @@ class MainScreen(Screen[None]):
         self.theme_name = theme
         self.graphics, self.cell = graphics, cell
         self.live: LiveSession | None = None
-        self.project_path: str | None = None
         self.view: SessionView | None = None
         self.tablet: TabletWatch | None = None
         self._simulate_after = False  # SIMULATE once the replay is done
         self.talk: PushToTalk | None = None
         self._barrel = False
-        self._seeking: tuple[SessionInput, float] | None = None  # the last seek sent and its target clock
         self.scene_view: SceneView | None = None
         """The scene view, once composed (the app tells it when Textual painted over its Sixel picture)."""
         self.background = BackgroundWork(self, self)
         """SIMULATE and export, in worker threads."""
+        self.files = ProjectFiles(self, self)
+        """Save, Load and adopting a simulation."""
+        self.playback = PlaybackKeys(self._latest, self.command)
+        """Where the playback keys and the seek messages send the clock."""
 
     @property
     def panel_app(self) -> PanelApp:
@@ -286,18 +280,12 @@ class MainScreen(Screen[None]):
             self.query_one("#event-detail", Static).update(str(event.node.label).strip())
 
     def on_timeline_tree_seek(self, message: TimelineTree.Seek) -> None:
-        self._seek(message.t)
+        self.playback.seek(message.t)
         self.query_one(SceneView).emphasise(message.components)
 
     def on_time_slider_seek(self, message: TimeSlider.Seek) -> None:
-        self._seek(message.t)
+        self.playback.seek(message.t)
         self.query_one(SceneView).emphasise(())
-
-    def _seek(self, t: float) -> None:
-        if self.view is not None and self.view.mode != "demo":
-            self._command("mode", "demo")
-        entry = self._command("seek", round(t, 6))
-        self._seeking = (entry, round(t, 6)) if entry is not None else None
 
     def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
         """A worker that died on a bug (SIMULATE, export: ``exit_on_error=False``) is said, never silent."""
@@ -318,43 +306,33 @@ class MainScreen(Screen[None]):
     # -- commands ------------------------------------------------------------------------------------------------
 
     def action_sketch(self) -> None:
-        self._command("mode", "sketch")
+        self.command("mode", "sketch")
 
     def action_demo(self) -> None:
-        self._command("mode", "demo")
+        self.command("mode", "demo")
 
     def action_play_pause(self) -> None:
         if self.view is not None and self.view.mode != "demo":
-            self._command("mode", "demo")
-        self._command("pause" if self.view is not None and self.view.playing else "play")
+            self.command("mode", "demo")
+        self.command("pause" if self.view is not None and self.view.playing else "play")
 
     def action_stop(self) -> None:
-        self._command("stop")
+        self.command("stop")
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         if action in self.PLAYBACK and isinstance(self.focused, Input | TextArea):
             return False  # a text input keeps space and the arrows
         return True
 
-    def _clock(self) -> SessionView | None:
+    def _latest(self) -> SessionView | None:
         """The latest view, for a playback key: the runner's (the one drawn may be a frame behind)."""
         return (self.live.runner.latest_view() if self.live is not None else None) or self.view
 
     def action_seek(self, direction: int) -> None:
-        """Every press moves `SEEK_STEP` from where the last one went, even before the session has handled it (a
-        key held down repeats faster than views come)."""
-        view = self._clock()
-        if view is None or view.mode != "demo":
-            return
-        clock = view.clock
-        if self._seeking is not None and view.t < self._seeking[0].t:  # the last seek is not handled yet
-            clock = self._seeking[1]
-        self._seek(min(max(clock + direction * SEEK_STEP, 0.0), view.duration))
+        self.playback.step(direction)
 
     def action_seek_to(self, where: str) -> None:
-        view = self._clock()
-        if view is not None and view.mode == "demo":
-            self._seek(0.0 if where == "start" else view.duration)
+        self.playback.to_end(where)
 
     def lift_pen(self) -> None:
         """A drag under way on the scene ends (quitting)."""
@@ -364,13 +342,13 @@ class MainScreen(Screen[None]):
             pass
 
     def action_undo(self) -> None:
-        self._command("undo")
+        self.command("undo")
 
     def action_redo(self) -> None:
-        self._command("redo")
+        self.command("redo")
 
     def action_clear(self) -> None:
-        self._command("clear")
+        self.command("clear")
 
     def action_label(self) -> None:
         view = self.view
@@ -379,7 +357,7 @@ class MainScreen(Screen[None]):
 
         def done(text: str | None) -> None:
             if text:
-                self._command("label", target, text)
+                self.command("label", target, text)
         self.app.push_screen(PromptModal(f"Label for {what}:", placeholder="ball"), done)
 
     def action_timeline(self) -> None:
@@ -399,25 +377,7 @@ class MainScreen(Screen[None]):
         self.query_one(SceneView).set_theme(theme)
 
     def action_adopt(self) -> None:
-        """The SIMULATE result's parameters applied to the scene, its simulated timeline as the project's and the
-        demonstration it was found for kept beside it (for comparing them again): one journaled ``load`` with the
-        project embedded, so it is undoable and a replay rebuilds it."""
-        view = self.view
-        if view is None or view.search is None or self.live is None:
-            self.notify("nothing to adopt: simulate first (g)", severity="warning")
-            return
-        search = view.search
-        try:
-            scene = apply(view.scene, search.parameters)
-            text = encode_project(Project(scene, self.live.vocabulary_lines(), search.timeline, self.live.canvas,
-                                          view.timeline))
-        except PhysinkError as exc:
-            self.app.push_screen(ErrorModal("Cannot adopt the simulation", str(exc)))
-            return
-        self._command("load", "simulation", project=json.loads(text))
-        if not search.found:
-            self.notify("adopted the best simulation found, which is not equivalent to the demonstration up to its "
-                        "last event (undo with u)", severity="warning")
+        self.files.adopt()
 
     def action_simulate(self) -> None:
         self.background.simulate()
@@ -435,7 +395,8 @@ class MainScreen(Screen[None]):
         """Quitting: the search and the export stop, and nothing they did reaches the session."""
         self.background.stop()
 
-    def _command(self, name: str, *args: str | float, project: dict[str, Any] | None = None) -> SessionInput | None:
+    def command(self, name: str, *args: str | float, project: dict[str, Any] | None = None) -> SessionInput | None:
+        """Send the command ``name`` to the live session; the input it became (None when no session is live)."""
         return self.live.command(name, *args, project=project) if self.live is not None else None
 
     def action_help(self) -> None:
@@ -446,49 +407,19 @@ class MainScreen(Screen[None]):
     # -- files ---------------------------------------------------------------------------------------------------
 
     def action_save(self) -> None:
-        default = self.project_path or str(storage.new_project_path())
-        self.app.push_screen(PromptModal(f"Save the project as (a name alone goes in {storage.projects_dir()}):",
-                                         default), self.save_project)
-
-    def save_project(self, path: str | None) -> None:
-        view = self.view if self.live is None else self.live.runner.latest_view()
-        if not path or view is None or self.live is None:
-            return
-        target = storage.project_target(path)
-        project = Project(view.scene, self.live.vocabulary_lines(), view.timeline, self.live.canvas,
-                          view.demonstration)
-        try:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            save_project(project, target)
-        except OSError as exc:
-            self.app.push_screen(ErrorModal("Cannot save", f"cannot make the folder {target.parent}: "
-                                                           f"{exc.strerror or exc}"))
-            return
-        except PhysinkError as exc:
-            self.app.push_screen(ErrorModal("Cannot save", str(exc)))
-            return
-        self.project_path = str(target)
-        self._command("save", str(target))
-        self.panel_app.mark_saved(view)
-        self.query_one(StatusBar).set(activity=f"saved {target}")
-        self.notify(f"saved the project to {target}")
+        self.files.ask_save()
 
     def action_load(self) -> None:
-        self.app.push_screen(PromptModal("Load the project:", self.project_path or ""), self.open_project)
+        self.files.ask_load()
 
     def open_project(self, path: str | None) -> None:
-        if not path:
-            return
-        try:
-            with open(path, "rb") as f:
-                text = f.read().decode("utf-8")
-            check_project(decode_project(text, path), path)
-            obj = json.loads(text.removeprefix("\ufeff"))
-        except (OSError, UnicodeDecodeError) as exc:
-            self.app.push_screen(ErrorModal("Cannot load", f"{path}: {exc}"))
-            return
-        except PhysinkError as exc:
-            self.app.push_screen(ErrorModal("Cannot load", str(exc)))
-            return
-        self.project_path = path
-        self._command("load", os.path.abspath(path), project=obj)
+        """Load the project at ``path`` (the TUI's PROJECT argument, the Load dialog)."""
+        self.files.load(path)
+
+    @property
+    def project_path(self) -> str | None:
+        """The project file last saved or loaded."""
+        return self.files.path
+
+    def mark_saved(self, view: SessionView) -> None:
+        self.panel_app.mark_saved(view)
