@@ -1,7 +1,7 @@
 """Benchmark: SIMULATE on machines made by construction (tests/constructed, issue 27), possible and impossible.
 
 Usage: .venv/bin/python benchmarks/bench_constructed.py [--possible 5000-5199] [--impossible 5000-5049]
-       [--levers 5000-5019] [--budget 200] [--seed 0] [--workers 2] [--grid 0] [--grid-budget 3000] [--needle]
+       [--levers 5000-5019] [--springs 5000-5029] [--impossible-springs 5000-5019] [--budget 200] [--seed 0] [--workers 2] [--grid 0] [--grid-budget 3000] [--needle]
        [--dask 0] [--rows FILE.jsonl] [--write docs/BENCHMARKS.md]
 
 Each case is generated (drawn and demonstrated by its pen, its witness re-checked for a possible case; not timed),
@@ -10,16 +10,21 @@ then searched as ``physink simulate`` does (`constructed.judge`: the default sea
 it). Per case: found (qualitative 0) or not, the rollout it was found at, rollouts run, wall seconds of the search
 and its verdict; an impossible case counts as refused with its impossibility named when the verdict names the
 contact its construction made impossible (its label and demonstrated time). ``--levers`` adds lever machines
-(`constructed.levers`: the ball tips a pivoted lever on its way into the basket), searched the same way.
+(`constructed.levers`: the ball tips a pivoted lever on its way into the basket), searched the same way;
+``--springs`` and ``--impossible-springs`` spring machines (`constructed.springs`: a trampoline on a vertical spring
+catches the ball; impossible: the trampoline's top and the base under it touched one right after the other), a
+spring case also counting whether its spring matters (`springs.spring_matters`).
 
 Needle-ness (``--needle``, possible cases; costly, never in CI): the share of a coarse scan of the ball's launch
-velocity, `SCAN` x `SCAN` throws (``--scan``) over vx `SCAN_VX` and vy `SCAN_VY` (canvas units/s), that is
-equivalent to the demonstration; cases are grouped by it (`BUCKETS`).
+velocity, `SCAN` x `SCAN` throws (``--scan``) over vx `SCAN_VX` and vy `SCAN_VY` (canvas units/s; mirrored when
+the seeded throw goes left), every other parameter at its seed, that is equivalent to the demonstration; cases are
+grouped by it (`BUCKETS`).
 
 The grid (``--grid N``): the thesis's grid (`sim/grid.py`) with ``--grid-budget`` on the first N possible cases,
 beside the default: rollouts to an equivalent, and their ratio where the grid finds one.
 
-Dask (``--dask N``): the first N possible and N impossible cases searched again on a `distributed.LocalCluster`
+Dask (``--dask N``): the first N possible and N impossible cases (and the first spring case, with ``--springs``)
+searched again on a `distributed.LocalCluster`
 of ``--workers`` single-threaded processes; every outcome (found, found at, rollouts, distance, verdict) must be
 identical to the local one (the script says how many are).
 
@@ -47,9 +52,11 @@ from constructed.impossible import impossible
 from constructed.judge import Outcome, judge
 from constructed.levers import lever
 from constructed.possible import possible
+from constructed.springs import impossible_spring, spring_case, spring_matters
 
 from physink_tui.sim.defaults import DEFAULT_BUDGET, DEFAULT_SEED
 from physink_tui.sim.evaluate import evaluate_problem, make_problem
+from physink_tui.sim.seeding import seed as seed_parameters
 from physink_tui.sim_run.executors import Executor, ProcessExecutor, SerialExecutor
 from physink_tui.timeline.events import event_label
 
@@ -79,6 +86,7 @@ class Row:
     grid_found_at: int | None = None
     grid_rollouts: int | None = None
     grid_wall: float | None = None
+    spring_matters: bool | None = None
 
 
 def seeds(text: str) -> range:
@@ -97,7 +105,9 @@ def run_case(case, kind: str, executor: Executor, args) -> tuple[Row, Outcome]:
               outcome.rollouts, outcome.qualitative, round(wall, 3), outcome.verdict)
     if kind == "lever":
         row.contacts = None
-    elif kind == "impossible":
+    elif kind == "spring":
+        row.spring_matters = spring_matters(case)
+    elif kind in ("impossible", "impossible-spring"):
         event = case.impossible_event()
         label = f'"{event_label(event, s.scene.names())}" (t={event.t0:.2f} s'
         row.named = not outcome.found and label in outcome.verdict
@@ -108,10 +118,20 @@ def run_case(case, kind: str, executor: Executor, args) -> tuple[Row, Outcome]:
 
 def needle(case, executor: Executor, scan: int = SCAN) -> float:
     s = case.session()
-    problem = make_problem(s.scene, s.timeline, s.canvas)
-    base = case.witness_parameters()
+    return needle_of(s.scene, s.timeline, s.canvas, executor, scan)
+
+
+def needle_of(scene, timeline, canvas, executor: Executor, scan: int = SCAN) -> float | None:
+    """The equivalent share of the coarse scan of the first start body's launch velocity (the module docstring);
+    None when the demonstration moves no body from the start."""
+    problem = make_problem(scene, timeline, canvas)
+    base = seed_parameters(scene, timeline, canvas)
+    if not base.start_bodies:
+        return None
     ball = base.start_bodies[0]
-    grid = [base.with_velocities({ball: (SCAN_VX[0] + i * (SCAN_VX[1] - SCAN_VX[0]) / (scan - 1),
+    side = -1.0 if base.velocities[ball][0] < 0 else 1.0
+    grid = [base.with_velocities({**base.velocities,
+                                  ball: (side * (SCAN_VX[0] + i * (SCAN_VX[1] - SCAN_VX[0]) / (scan - 1)),
                                          SCAN_VY[0] + j * (SCAN_VY[1] - SCAN_VY[0]) / (scan - 1))})
             for i in range(scan) for j in range(scan)]
     from functools import partial
@@ -139,6 +159,8 @@ def summary(rows: list[Row], args, command: str) -> str:
     poss = [r for r in rows if r.kind == "possible"]
     imp = [r for r in rows if r.kind == "impossible"]
     levers = [r for r in rows if r.kind == "lever"]
+    springs = [r for r in rows if r.kind == "spring"]
+    imp_springs = [r for r in rows if r.kind == "impossible-spring"]
     lines = [f"Measured {datetime.now(UTC):%Y-%m-%d %H:%M} UTC: `{command}`; {os.cpu_count()} cpus, "
              f"{args.workers} workers, CPython {platform.python_version()}; load average at the start "
              f"{args.load:.1f}.", ""]
@@ -203,6 +225,32 @@ def summary(rows: list[Row], args, command: str) -> str:
                      f"an equivalent median {statistics.median(got) if got else '—'}, 90th pct "
                      f"{percentile(got, 0.9) if got else '—'}; wall median {statistics.median(walls):.2f} s, 90th "
                      f"pct {percentile(walls, 0.9):.2f} s.")
+    if springs:
+        walls = [r.wall for r in springs]
+        got = [r.found_at for r in springs if r.found_at is not None]
+        matters = [r for r in springs if r.spring_matters]
+        lines.append("")
+        lines.append(f"Spring machines {args.springs}: {len(springs)} (pens: virtual "
+                     f"{sum(r.pen == 'virtual' for r in springs)}, hurried {sum(r.pen == 'hurried' for r in springs)}); "
+                     f"found at seed {args.seed} within the budget of {args.budget}: {sum(r.found for r in springs)}; "
+                     f"rollouts to an equivalent median {statistics.median(got) if got else '—'}, 90th pct "
+                     f"{percentile(got, 0.9) if got else '—'}; wall median {statistics.median(walls):.2f} s, 90th "
+                     f"pct {percentile(walls, 0.9):.2f} s. The witness's throw with the seeded spring misses the "
+                     f"demonstration in {len(matters)} of them; found {sum(r.found for r in matters)} of those.")
+        missed = [r for r in springs if not r.found]
+        if missed:
+            lines.append("Not found: " + "; ".join(f"{r.name} ({r.qualitative:g}: {r.verdict[:160]})"
+                                                  for r in missed) + ".")
+    if imp_springs:
+        lines.append("")
+        lines.append(f"Impossible spring cases {args.impossible_springs}: {len(imp_springs)}; refused "
+                     f"{sum(not r.found for r in imp_springs)}; the verdict naming the constructed impossibility "
+                     f"(the second of the trampoline's and the base's tops) {sum(bool(r.named) for r in imp_springs)}; "
+                     f"wall median {statistics.median([r.wall for r in imp_springs]):.2f} s, 90th pct "
+                     f"{percentile([r.wall for r in imp_springs], 0.9):.2f} s.")
+        other = [r for r in imp_springs if not r.named]
+        if other:
+            lines.append("Naming another event: " + "; ".join(f"{r.name} ({r.verdict[:160]})" for r in other) + ".")
     if args.dask_line:
         lines.append("")
         lines.append(args.dask_line)
@@ -241,6 +289,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--possible", default="5000-5199")
     parser.add_argument("--impossible", default="5000-5049")
     parser.add_argument("--levers", default="")
+    parser.add_argument("--springs", default="")
+    parser.add_argument("--impossible-springs", default="")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET)
     parser.add_argument("--seed", type=int, default=DEFAULT_SEED)
     parser.add_argument("--workers", type=int, default=2)
@@ -261,11 +311,13 @@ def main(argv: list[str] | None = None) -> int:
     try:
         for kind, make, span in (("possible", possible, seeds(args.possible)),
                                  ("impossible", impossible, seeds(args.impossible)),
-                                 ("lever", lever, seeds(args.levers))):
+                                 ("lever", lever, seeds(args.levers)),
+                                 ("spring", spring_case, seeds(args.springs)),
+                                 ("impossible-spring", impossible_spring, seeds(args.impossible_springs))):
             for k, seed in enumerate(span):
                 case = make(seed)
                 row, _ = run_case(case, kind, executor, args)
-                if kind == "possible" and args.needle:
+                if kind in ("possible", "spring") and args.needle:
                     row.needle = needle(case, executor, args.scan)
                 if kind == "possible" and k < args.grid:
                     s = case.session()
@@ -284,7 +336,8 @@ def main(argv: list[str] | None = None) -> int:
             out.close()
     if args.dask:
         cases = ([(possible(s), "possible") for s in list(seeds(args.possible))[: args.dask]]
-                 + [(impossible(s), "impossible") for s in list(seeds(args.impossible))[: args.dask]])
+                 + [(impossible(s), "impossible") for s in list(seeds(args.impossible))[: args.dask]]
+                 + [(spring_case(s), "spring") for s in list(seeds(args.springs))[:1]])
         args.dask_line = dask_check(cases, args)
         print(args.dask_line)
     text = summary(rows, args, command)
