@@ -1,7 +1,8 @@
 """Benchmark: SIMULATE on machines made by construction (tests/constructed, issue 27), possible and impossible.
 
 Usage: .venv/bin/python benchmarks/bench_constructed.py [--possible 5000-5199] [--impossible 5000-5049]
-       [--levers 5000-5019] [--springs 5000-5029] [--impossible-springs 5000-5019] [--budget 200] [--seed 0] [--workers 2] [--grid 0] [--grid-budget 3000] [--needle]
+       [--levers 5000-5019] [--springs 5000-5029] [--impossible-springs 5000-5019] [--budget 200] [--seed 0]
+       [--workers 2] [--grid 0] [--grid-budget 3000] [--needle]
        [--dask 0] [--rows FILE.jsonl] [--write docs/BENCHMARKS.md]
 
 Each case is generated (drawn and demonstrated by its pen, its witness re-checked for a possible case; not timed),
@@ -230,8 +231,9 @@ def summary(rows: list[Row], args, command: str) -> str:
         got = [r.found_at for r in springs if r.found_at is not None]
         matters = [r for r in springs if r.spring_matters]
         lines.append("")
-        lines.append(f"Spring machines {args.springs}: {len(springs)} (pens: virtual "
-                     f"{sum(r.pen == 'virtual' for r in springs)}, hurried {sum(r.pen == 'hurried' for r in springs)}); "
+        pens = {pen: sum(r.pen == pen for r in springs) for pen in ("virtual", "hurried")}
+        lines.append(f"Spring machines {args.springs}: {len(springs)} (pens: virtual {pens['virtual']}, hurried "
+                     f"{pens['hurried']}); "
                      f"found at seed {args.seed} within the budget of {args.budget}: {sum(r.found for r in springs)}; "
                      f"rollouts to an equivalent median {statistics.median(got) if got else '—'}, 90th pct "
                      f"{percentile(got, 0.9) if got else '—'}; wall median {statistics.median(walls):.2f} s, 90th "

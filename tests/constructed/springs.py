@@ -29,7 +29,7 @@ from functools import cache
 from scenarios.thesis import BACKGROUND, BodyX, Expected, JointX, SpringX, Step, _x_steps
 
 from constructed.demonstrate import body_id, session
-from constructed.layouts import CANVAS, CLEARANCE, RADIUS, THICKNESS, Layout, Platform, _fits, _gap, frac
+from constructed.layouts import CANVAS, CLEARANCE, RADIUS, Layout, Platform, _fits, _gap, frac
 from constructed.possible import FLIGHT_S, HURRIED_SHARE, MOST_CONTACTS, PRESS, THROW_SECONDS, _launch, _path
 from physink_tui.input.virtual_pen import Stroke
 from physink_tui.scene.components import Scene, Spring
