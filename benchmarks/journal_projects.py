@@ -17,19 +17,21 @@ JOURNALS = Path(__file__).resolve().parent.parent / "tests" / "journals"
 SUFFIX = ".physink.jsonl"
 
 
-def journal_names() -> list[str]:
-    """Every journal's name (without ``.physink.jsonl``), sorted."""
-    return sorted(p.name[: -len(SUFFIX)] for p in JOURNALS.glob(f"*{SUFFIX}"))
+def journal_names(folder: Path = JOURNALS) -> list[str]:
+    """Every journal's name in ``folder`` (without ``.physink.jsonl``), sorted."""
+    return sorted(p.name[: -len(SUFFIX)] for p in folder.glob(f"*{SUFFIX}"))
 
 
-def replayed_projects(names: Sequence[str], program: str) -> dict[str, Project]:
-    """Each named journal replayed into a project; a failed replay stops ``program`` with the replay's message."""
+def replayed_projects(names: Sequence[str], program: str, folder: Path = JOURNALS) -> dict[str, Project]:
+    """Each named journal of ``folder`` replayed into a project; a failed replay stops ``program`` with the replay's
+    message."""
     out = {}
+    journals = folder
     with tempfile.TemporaryDirectory() as tmp:
         for name in names:
             folder = Path(tmp) / name
             with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()) as err:
-                status = cli.main(["replay", str(JOURNALS / f"{name}{SUFFIX}"), "--out", str(folder)])
+                status = cli.main(["replay", str(journals / f"{name}{SUFFIX}"), "--out", str(folder)])
             if status != 0:
                 raise SystemExit(f"{program}: replaying {name} failed: {err.getvalue().strip()}")
             out[name] = load_project(folder / "project.json")
