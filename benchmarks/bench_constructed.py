@@ -30,7 +30,8 @@ of ``--workers`` single-threaded processes; every outcome (found, found at, roll
 identical to the local one (the script says how many are).
 
 ``--rows FILE`` writes one JSON object per case; ``--write FILE`` replaces what lies between
-``<!-- bench_constructed -->`` and ``<!-- /bench_constructed -->`` in FILE with the summary.
+``<!-- bench_constructed -->`` and ``<!-- /bench_constructed -->`` in FILE with the summary (``--marker NAME``:
+between ``<!-- NAME -->`` and ``<!-- /NAME -->``).
 """
 
 from __future__ import annotations
@@ -276,9 +277,9 @@ def dask_check(cases, args) -> str:
             f"serially: {same} of {len(cases)} outcomes identical (found, found at, rollouts, distance, verdict).")
 
 
-def write(path: str, text: str) -> None:
+def write(path: str, text: str, marker: str = "bench_constructed") -> None:
     doc = Path(path).read_text(encoding="utf-8")
-    begin, end = "<!-- bench_constructed -->", "<!-- /bench_constructed -->"
+    begin, end = f"<!-- {marker} -->", f"<!-- /{marker} -->"
     if begin not in doc or end not in doc:
         raise SystemExit(f"bench_constructed: {path} has no {begin} ... {end} markers")
     head, rest = doc.split(begin, 1)
@@ -303,6 +304,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--dask", type=int, default=0)
     parser.add_argument("--rows")
     parser.add_argument("--write")
+    parser.add_argument("--marker", default="bench_constructed")
     args = parser.parse_args(argv)
     args.load = os.getloadavg()[0]
     args.dask_line = ""
@@ -345,7 +347,7 @@ def main(argv: list[str] | None = None) -> int:
     text = summary(rows, args, command)
     print(text)
     if args.write:
-        write(args.write, text)
+        write(args.write, text, args.marker)
     return 0
 
 
