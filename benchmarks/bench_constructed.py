@@ -24,8 +24,8 @@ grouped by it (`BUCKETS`).
 The grid (``--grid N``): the thesis's grid (`sim/grid.py`) with ``--grid-budget`` on the first N possible cases,
 beside the default: rollouts to an equivalent, and their ratio where the grid finds one.
 
-Dask (``--dask N``): the first N possible and N impossible cases (and the first spring case, with ``--springs``)
-searched again on a `distributed.LocalCluster`
+Dask (``--dask N``): the first N possible and N impossible cases (and the first spring and impossible spring cases,
+with ``--springs`` and ``--impossible-springs``) searched again on a `distributed.LocalCluster`
 of ``--workers`` single-threaded processes; every outcome (found, found at, rollouts, distance, verdict) must be
 identical to the local one (the script says how many are).
 
@@ -341,7 +341,8 @@ def main(argv: list[str] | None = None) -> int:
     if args.dask:
         cases = ([(possible(s), "possible") for s in list(seeds(args.possible))[: args.dask]]
                  + [(impossible(s), "impossible") for s in list(seeds(args.impossible))[: args.dask]]
-                 + [(spring_case(s), "spring") for s in list(seeds(args.springs))[:1]])
+                 + [(spring_case(s), "spring") for s in list(seeds(args.springs))[:1]]
+                 + [(impossible_spring(s), "impossible-spring") for s in list(seeds(args.impossible_springs))[:1]])
         args.dask_line = dask_check(cases, args)
         print(args.dask_line)
     text = summary(rows, args, command)
