@@ -3,7 +3,7 @@ how needle-like the case is (issue 27's "efficiency, restated").
 
 Usage: .venv/bin/python benchmarks/bench_efficiency.py [--possible 5000-5059] [--springs 5000-5019]
        [--journals all] [--budget 200] [--grid-budget 3000] [--seed 0] [--workers 2] [--scan 10]
-       [--rows FILE.jsonl] [--write docs/BENCHMARKS.md]
+       [--rows FILE.jsonl] [--reuse EARLIER.jsonl] [--recheck 10] [--write docs/BENCHMARKS.md]
 
 Cases: possible machines made by construction (`constructed.possible`, ``--possible``), spring machines
 (`constructed.springs`, ``--springs``), and the thesis portfolio's journals (``--journals``: ``all`` is every
@@ -19,6 +19,11 @@ Needle-ness: the share of a coarse scan of the first start body's launch velocit
 (`bench_constructed.needle_of`: ``--scan`` x ``--scan`` throws over a fixed range, every other parameter at its seed;
 computed here, never in CI), grouped as bench_constructed groups it. Ratio: the default's rollouts to an equivalent
 over the grid's, where both find one (below 1: the default needs fewer).
+
+``--reuse FILE``: the grid's and the scan's figures of each case are taken from an earlier run's rows (their
+commit is named in the summary) instead of measured again, only the default search is run: for re-measuring the
+default after it changed, the grid and the evaluation not. ``--recheck N`` runs the grid again on the N reused cases
+whose grid needed the fewest rollouts and says how many give the same rollouts as the reused rows.
 
 ``--write FILE`` replaces what lies between ``<!-- bench_efficiency -->`` and ``<!-- /bench_efficiency -->`` in
 FILE with the summary.
@@ -67,6 +72,8 @@ class Row:
     grid_found_at: int | None
     grid_rollouts: int
     grid_wall: float
+    commit: str = ""
+    """The commit the grid and scan figures were measured on."""
 
     @property
     def ratio(self) -> float | None:
@@ -126,9 +133,12 @@ def _pct(values, q: float = 0.9) -> str:
 
 
 def summary(rows: list[Row], args, command: str) -> str:
+    reused = ", ".join(sorted({r.commit for r in rows if r.commit != args.commit}))
     lines = [f"Measured {datetime.now(UTC):%Y-%m-%d %H:%M} UTC on commit {args.commit}: `{command}`; "
              f"{os.cpu_count()} cpus, {args.workers} workers, CPython {platform.python_version()}; load average "
-             f"{args.load:.1f} at the start, {os.getloadavg()[0]:.1f} at the end (other engineers' work).", "",
+             f"{args.load:.1f} at the start, {os.getloadavg()[0]:.1f} at the end (other engineers' work).",
+             *([f"The grid's and the scan's figures are reused from a run on commit(s) {reused} (`--reuse`); "
+                f"{args.rechecked}"] if args.reuse else []), "",
              f"Rollouts (R) and wall seconds (W) to an equivalent: the default (budget {args.budget}) and the grid "
              f"(budget {args.grid_budget}), median / 90th percentile (the worst decile starts there) over the cases "
              "each finds; ratio = default / grid rollouts to an equivalent where both find one.", "",
@@ -194,6 +204,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--scan", type=int, default=10)
     parser.add_argument("--rows")
+    parser.add_argument("--reuse")
+    parser.add_argument("--recheck", type=int, default=10)
     parser.add_argument("--write")
     args = parser.parse_args(argv)
     args.load = os.getloadavg()[0]
@@ -203,13 +215,30 @@ def main(argv: list[str] | None = None) -> int:
     command = "benchmarks/bench_efficiency.py " + shlex.join(argv if argv is not None else sys.argv[1:])
     rows: list[Row] = []
     out = open(args.rows, "w", encoding="utf-8") if args.rows else None
+    earlier = {}
+    if args.reuse:
+        with open(args.reuse, encoding="utf-8") as f:
+            earlier = {r["name"]: Row(**r) for r in map(json.loads, f)}
+    recheck = sorted((r for r in earlier.values()), key=lambda r: (r.grid_rollouts, r.name))[: args.recheck]
+    same = 0
     scanner = executor(args.workers)
     try:
         for name, group, scene, timeline, canvas in cases(args):
             found_at, rollouts, wall = searched(scene, timeline, canvas, "default", args.budget, args)
-            g_at, g_rollouts, g_wall = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
-            share = needle_of(scene, timeline, canvas, scanner, args.scan)
-            row = Row(name, group, share, found_at, rollouts, wall, g_at, g_rollouts, g_wall)
+            if name in earlier:
+                e = earlier[name]
+                share, g_at, g_rollouts, g_wall, commit = (e.needle, e.grid_found_at, e.grid_rollouts, e.grid_wall,
+                                                           e.commit)
+                if e in recheck:
+                    again = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
+                    same += again[:2] == (g_at, g_rollouts)
+            else:
+                if args.reuse:
+                    raise SystemExit(f"bench_efficiency: {name} is not in {args.reuse}")
+                g_at, g_rollouts, g_wall = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
+                share = needle_of(scene, timeline, canvas, scanner, args.scan)
+                commit = args.commit
+            row = Row(name, group, share, found_at, rollouts, wall, g_at, g_rollouts, g_wall, commit)
             rows.append(row)
             print(json.dumps(dataclasses.asdict(row)), flush=True)
             if out is not None:
@@ -219,6 +248,8 @@ def main(argv: list[str] | None = None) -> int:
         scanner.close()
         if out is not None:
             out.close()
+    args.rechecked = (f"the grid run again on the {len(recheck)} of them it needed the fewest rollouts for gives the "
+                      f"same rollouts on {same}.")
     text = summary(rows, args, command)
     print(text)
     if args.write:

@@ -40,7 +40,7 @@ def test_the_summary_groups_by_needle_ness_and_lists_every_case(bench) -> None:
             bench.Row("grid-only", "thesis", 0.0, None, 200, 9.0, 80, 81, 4.0)]
 
     class Args:
-        budget, grid_budget, workers, load, commit = 200, 3000, 2, 1.0, "abc1234"
+        budget, grid_budget, workers, load, commit, reuse = 200, 3000, 2, 1.0, "abc1234", None
 
     text = bench.summary(rows, Args, "bench_efficiency.py")
     lines = text.splitlines()
@@ -52,12 +52,15 @@ def test_the_summary_groups_by_needle_ness_and_lists_every_case(bench) -> None:
             and line.split("|")[1].strip() in ("easy", "needle", "grid-only")] == ["easy", "needle", "grid-only"]
 
 
-def test_a_tiny_run_writes_between_its_markers(bench, tmp_path: Path) -> None:
-    doc = tmp_path / "B.md"
+def test_a_tiny_run_writes_between_its_markers_and_a_second_reuses_its_grid(bench, tmp_path: Path) -> None:
+    doc, rows = tmp_path / "B.md", tmp_path / "rows.jsonl"
     doc.write_text("before\n<!-- bench_efficiency -->\nold\n<!-- /bench_efficiency -->\nafter\n", encoding="utf-8")
-    assert bench.main(["--possible", "3-3", "--springs", "", "--journals", "pinball", "--grid-budget", "16",
-                       "--scan", "2", "--workers", "1", "--write", str(doc)]) == 0
+    tiny = ["--possible", "3-3", "--springs", "", "--journals", "pinball", "--grid-budget", "16", "--scan", "2",
+            "--workers", "1"]
+    assert bench.main([*tiny, "--rows", str(rows), "--write", str(doc)]) == 0
     text = doc.read_text(encoding="utf-8")
     assert text.startswith("before\n<!-- bench_efficiency -->\nMeasured ") and text.endswith(
         "<!-- /bench_efficiency -->\nafter\n")
     assert "| possible-3 |" in text and "| pinball |" in text and "old" not in text
+    assert bench.main([*tiny, "--reuse", str(rows), "--recheck", "2", "--write", str(doc)]) == 0
+    assert "gives the same rollouts on 2." in doc.read_text(encoding="utf-8")
