@@ -133,7 +133,7 @@ def _pct(values, q: float = 0.9) -> str:
 
 
 def summary(rows: list[Row], args, command: str) -> str:
-    reused = ", ".join(sorted({r.commit for r in rows if r.commit != args.commit}))
+    reused = ", ".join(sorted({r.commit for r in rows}))
     lines = [f"Measured {datetime.now(UTC):%Y-%m-%d %H:%M} UTC on commit {args.commit}: `{command}`; "
              f"{os.cpu_count()} cpus, {args.workers} workers, CPython {platform.python_version()}; load average "
              f"{args.load:.1f} at the start, {os.getloadavg()[0]:.1f} at the end (other engineers' work).",
