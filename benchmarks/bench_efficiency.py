@@ -4,6 +4,7 @@ how needle-like the case is (issue 27's "efficiency, restated").
 Usage: .venv/bin/python benchmarks/bench_efficiency.py [--possible 5000-5059] [--springs 5000-5019]
        [--journals all] [--budget 200] [--grid-budget 3000] [--seed 0] [--workers 2] [--scan 10]
        [--rows FILE.jsonl] [--reuse EARLIER.jsonl] [--recheck 10] [--write docs/BENCHMARKS.md]
+       .venv/bin/python benchmarks/bench_efficiency.py --from-rows A.jsonl,B.jsonl [--write docs/BENCHMARKS.md]
 
 Cases: possible machines made by construction (`constructed.possible`, ``--possible``), spring machines
 (`constructed.springs`, ``--springs``), and the thesis portfolio's journals (``--journals``: ``all`` is every
@@ -21,9 +22,11 @@ computed here, never in CI), grouped as bench_constructed groups it. Ratio: the 
 over the grid's, where both find one (below 1: the default needs fewer).
 
 ``--reuse FILE``: the grid's and the scan's figures of each case are taken from an earlier run's rows (their
-commit is named in the summary) instead of measured again, only the default search is run: for re-measuring the
-default after it changed, the grid and the evaluation not. ``--recheck N`` runs the grid again on the N reused cases
-whose grid needed the fewest rollouts and says how many give the same rollouts as the reused rows.
+commit is named in the summary) instead of measured again, only the default search is run (a case not in FILE is
+measured in full): for re-measuring the default after it changed, the grid and the evaluation not. ``--recheck N``
+runs the grid again on the N reused cases whose grid needed the fewest rollouts and says how many give the same
+rollouts as the reused rows. ``--from-rows`` writes the summary of rows measured earlier (runs nothing; the load
+figures are then those of the runs' logs, not in the summary).
 
 ``--write FILE`` replaces what lies between ``<!-- bench_efficiency -->`` and ``<!-- /bench_efficiency -->`` in
 FILE with the summary.
@@ -193,6 +196,20 @@ def write(path: str, text: str) -> None:
     Path(path).write_text(f"{head}{begin}\n{text}\n{end}{tail}", encoding="utf-8")
 
 
+def from_rows(args, command: str) -> int:
+    rows = []
+    for path in args.from_rows.split(","):
+        with open(path, encoding="utf-8") as f:
+            rows += [Row(**r) for r in map(json.loads, f)]
+    args.commit = ", ".join(sorted({r.commit for r in rows}))
+    args.reuse = None
+    text = summary(rows, args, command)
+    print(text)
+    if args.write:
+        write(args.write, text)
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--possible", default="5000-5059")
@@ -207,12 +224,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--reuse")
     parser.add_argument("--recheck", type=int, default=10)
     parser.add_argument("--write")
+    parser.add_argument("--from-rows")
     args = parser.parse_args(argv)
     args.load = os.getloadavg()[0]
     root = Path(__file__).resolve().parent.parent
     args.commit = subprocess.run(["git", "-C", str(root), "rev-parse", "--short", "HEAD"], capture_output=True,
                                  text=True, check=False).stdout.strip() or "unknown"
     command = "benchmarks/bench_efficiency.py " + shlex.join(argv if argv is not None else sys.argv[1:])
+    if args.from_rows:
+        return from_rows(args, command)
     rows: list[Row] = []
     out = open(args.rows, "w", encoding="utf-8") if args.rows else None
     earlier = {}
@@ -233,8 +253,6 @@ def main(argv: list[str] | None = None) -> int:
                     again = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
                     same += again[:2] == (g_at, g_rollouts)
             else:
-                if args.reuse:
-                    raise SystemExit(f"bench_efficiency: {name} is not in {args.reuse}")
                 g_at, g_rollouts, g_wall = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
                 share = needle_of(scene, timeline, canvas, scanner, args.scan)
                 commit = args.commit
