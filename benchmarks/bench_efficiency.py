@@ -137,9 +137,10 @@ def _pct(values, q: float = 0.9) -> str:
 
 def summary(rows: list[Row], args, command: str) -> str:
     reused = ", ".join(sorted({r.commit for r in rows}))
-    lines = [f"Measured {datetime.now(UTC):%Y-%m-%d %H:%M} UTC on commit {args.commit}: `{command}`; "
-             f"{os.cpu_count()} cpus, {args.workers} workers, CPython {platform.python_version()}; load average "
-             f"{args.load:.1f} at the start, {os.getloadavg()[0]:.1f} at the end (other engineers' work).",
+    load = (f"load average {args.load:.1f} at the start, {os.getloadavg()[0]:.1f} at the end (other engineers' work)"
+            if not getattr(args, "from_rows", None) else "rows of earlier runs (their load is told beside)")
+    lines = [f"Written {datetime.now(UTC):%Y-%m-%d %H:%M} UTC, commit {args.commit}: `{command}`; "
+             f"{os.cpu_count()} cpus, {args.workers} workers, CPython {platform.python_version()}; {load}.",
              *([f"The grid's and the scan's figures are reused from a run on commit(s) {reused} (`--reuse`); "
                 f"{args.rechecked}"] if args.reuse else []), "",
              f"Rollouts (R) and wall seconds (W) to an equivalent: the default (budget {args.budget}) and the grid "

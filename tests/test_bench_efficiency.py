@@ -59,7 +59,7 @@ def test_a_tiny_run_writes_between_its_markers_and_a_second_reuses_its_grid(benc
             "--workers", "1"]
     assert bench.main([*tiny, "--rows", str(rows), "--write", str(doc)]) == 0
     text = doc.read_text(encoding="utf-8")
-    assert text.startswith("before\n<!-- bench_efficiency -->\nMeasured ") and text.endswith(
+    assert text.startswith("before\n<!-- bench_efficiency -->\nWritten ") and text.endswith(
         "<!-- /bench_efficiency -->\nafter\n")
     assert "| possible-3 |" in text and "| pinball |" in text and "old" not in text
     assert bench.main([*tiny, "--reuse", str(rows), "--recheck", "2", "--write", str(doc)]) == 0
