@@ -25,8 +25,10 @@ over the grid's, where both find one (below 1: the default needs fewer).
 commit is named in the summary) instead of measured again, only the default search is run (a case not in FILE is
 measured in full): for re-measuring the default after it changed, the grid and the evaluation not. ``--recheck N``
 runs the grid again on the N reused cases whose grid needed the fewest rollouts and says how many give the same
-rollouts as the reused rows. ``--from-rows`` writes the summary of rows measured earlier (runs nothing; the load
-figures are then those of the runs' logs, not in the summary).
+rollouts as the reused rows. ``--grid-from-table FILE``: for the thesis journals (not the restored ones), the
+grid's figures are read from bench_simulate.py's table in FILE (the same grid, seed and budget; its "to an
+equivalent" and "grid: rollouts, wall" columns) instead of run again. ``--from-rows`` writes the summary of rows
+measured earlier (runs nothing; the load figures are then those of the runs' logs, not in the summary).
 
 ``--write FILE`` replaces what lies between ``<!-- bench_efficiency -->`` and ``<!-- /bench_efficiency -->`` in
 FILE with the summary.
@@ -83,6 +85,23 @@ class Row:
         if self.found_at is None or self.grid_found_at is None:
             return None
         return self.found_at / self.grid_found_at
+
+
+def simulate_table(path: str) -> dict[str, tuple[int | None, int, float]]:
+    """bench_simulate.py's grid figures per scene in ``path``: (found at, rollouts run, wall seconds)."""
+    doc = Path(path).read_text(encoding="utf-8")
+    table = doc.split("<!-- bench_simulate -->", 1)[1].split("<!-- /bench_simulate -->", 1)[0]
+    out = {}
+    for line in table.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) != 10 or not cells[3][:1].isdigit():
+            continue
+        rollouts, wall = cells[3].split(", ")
+        equivalent = cells[9]
+        found = int(equivalent.split("(")[1].split(" / ")[0]) if "(" in equivalent and "none" not in equivalent \
+            and equivalent != "—" else None
+        out[cells[0]] = (found, int(rollouts), float(wall.removesuffix(" s")))
+    return out
 
 
 def executor(workers: int) -> Executor:
@@ -226,6 +245,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--recheck", type=int, default=10)
     parser.add_argument("--write")
     parser.add_argument("--from-rows")
+    parser.add_argument("--grid-from-table")
     args = parser.parse_args(argv)
     args.load = os.getloadavg()[0]
     root = Path(__file__).resolve().parent.parent
@@ -242,6 +262,7 @@ def main(argv: list[str] | None = None) -> int:
             earlier = {r["name"]: Row(**r) for r in map(json.loads, f)}
     recheck = sorted((r for r in earlier.values()), key=lambda r: (r.grid_rollouts, r.name))[: args.recheck]
     same = 0
+    tabled = simulate_table(args.grid_from_table) if args.grid_from_table else {}
     scanner = executor(args.workers)
     try:
         for name, group, scene, timeline, canvas in cases(args):
@@ -254,7 +275,10 @@ def main(argv: list[str] | None = None) -> int:
                     again = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
                     same += again[:2] == (g_at, g_rollouts)
             else:
-                g_at, g_rollouts, g_wall = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
+                if group == "thesis" and name in tabled:
+                    g_at, g_rollouts, g_wall = tabled[name]
+                else:
+                    g_at, g_rollouts, g_wall = searched(scene, timeline, canvas, "grid", args.grid_budget, args)
                 share = needle_of(scene, timeline, canvas, scanner, args.scan)
                 commit = args.commit
             row = Row(name, group, share, found_at, rollouts, wall, g_at, g_rollouts, g_wall, commit)
