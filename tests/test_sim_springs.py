@@ -1,7 +1,7 @@
 """SIMULATE on spring machines made by construction (tests/constructed/springs.py), a sample (the table is
-benchmarks/bench_constructed.py's, ``--springs``): the generating parameters (throw, spring constant, natural
-length) reproduce the demonstration, the search adjusts springs and finds an equivalent within the default budget;
-an impossible case is refused, the verdict naming the contact the construction made impossible."""
+benchmarks/bench_constructed.py's, ``--springs``): the generating parameters (throw, spring constant, natural length)
+reproduce the demonstration, the spring is among what the search moves, and it finds an equivalent within the default
+budget; an impossible case is refused, the verdict naming the contact the construction made impossible."""
 
 from __future__ import annotations
 
@@ -42,7 +42,7 @@ def test_a_spring_case_is_witnessed_and_found(seed: int) -> None:
     assert outcome.found and outcome.rollouts <= DEFAULT_BUDGET, outcome.verdict
 
 
-def test_the_spring_matters_and_the_search_adjusts_it() -> None:
+def test_the_spring_matters_and_is_among_the_coordinates_cma_es_moves() -> None:
     case = spring_case(POSSIBLE[0])
     assert spring_matters(case), "the witness's throw with the seeded spring misses the demonstration"
     s = case.session()
