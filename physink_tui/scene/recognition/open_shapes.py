@@ -30,6 +30,11 @@ VERY_SHARP_CORNER = 100.0
 SHARP_CORNER = 62.0
 CORNER_SHARE = 0.45
 NEARLY_ROUND = 1.25
+BOWED_SIDE = 0.18
+MAIN_SIDE = 0.15
+"""A polyline of two or more corners has no main side (over `MAIN_SIDE` of the path) bowed from its chord by more
+than `BOWED_SIDE` of it, as far as an arc of 80 degrees bows (tan(20 deg) / 2): a mouse-drawn question mark's or
+brace's curl turns at cusps but is a curve between them. A single corner may join bowed arms (a hurried check)."""
 SMOOTH = 0.55
 """A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
 speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
@@ -92,7 +97,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
     sharp = max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
-    if len(straight_runs) >= 2 and sharp and (all(straight_runs) or _bent_polyline(work, th, corners, noise)):
+    if len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length) and (all(straight_runs) or _bent_polyline(work, th, corners, noise)):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
@@ -100,6 +105,14 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
             return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius), (("curve", 0.5),))
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
+
+
+def _bowed_between_corners(work: np.ndarray, corners: list[int], length: float) -> bool:
+    """Whether a stroke with two or more inner corners has a main side that bows like an arc (`BOWED_SIDE`)."""
+    if len(corners) < 4:
+        return False
+    return any(sg.chord_deviation(work[a:b + 1]) > BOWED_SIDE for a, b in itertools.pairwise(corners)
+               if sg.path_length(work[a:b + 1]) > MAIN_SIDE * length)
 
 
 def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int], noise: float) -> bool:
