@@ -30,11 +30,11 @@ VERY_SHARP_CORNER = 100.0
 SHARP_CORNER = 62.0
 CORNER_SHARE = 0.45
 NEARLY_ROUND = 1.25
-BOWED_SIDE = 0.18
+BOWED_SIDE = math.tan(math.pi / 8) / 2
 MAIN_SIDE = 0.15
 """A polyline of two or more corners has no main side (over `MAIN_SIDE` of the path) bowed from its chord by more
-than `BOWED_SIDE` of it, as far as an arc of 80 degrees bows (tan(20 deg) / 2): a mouse-drawn question mark's or
-brace's curl turns at cusps but is a curve between them. A single corner may join bowed arms (a hurried check)."""
+than `BOWED_SIDE` of it, as far as a quarter circle bows (tan(22.5 deg) / 2, 0.207): a mouse-drawn question mark's
+or brace's curl turns at cusps but is a curve between them. A single corner may join bowed arms (a hurried check)."""
 SMOOTH = 0.55
 """A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
 speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
