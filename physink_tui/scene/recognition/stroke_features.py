@@ -92,8 +92,10 @@ def heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) ->
         norms = float(np.hypot(*v) * np.hypot(*home))
         return 0.0 if norms == 0.0 else math.degrees(math.acos(max(-1.0, min(1.0, float(v @ home) / norms))))
 
-    # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side
-    return angle(work[-1] - work[corners[-2]]) <= max_deg or angle(work[corners[1]] - work[0]) >= 180.0 - max_deg
+    # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side's line
+    # (the start lies on from the end the way the first side goes, or, drawn past the start, back from it)
+    first = angle(work[corners[1]] - work[0])
+    return angle(work[-1] - work[corners[-2]]) <= max_deg or first <= max_deg or first >= 180.0 - max_deg
 
 
 def closure(work: np.ndarray, diag: float) -> float:
