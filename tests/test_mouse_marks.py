@@ -108,9 +108,8 @@ CASES = {
 """name -> (drawing, kind, floor: the share of the 40 seeds read as that kind). Measured when written (issue 25):
 braces 28 of 40 (16 before the brace-tip rule, the rest read as polylines), question marks 40, hooked boxes 40 (as
 before: the code before the hook rule reads these right too; the students' hooked boxes it read as 5-cornered
-polygons are not reproduced by this drawing),
-boxes stopped short 40 (9 before the gap along the first side closed them, the rest polylines), delete marks 40
-(none before the bow-tie rule: all were 4-cornered polygons)."""
+polygons are not reproduced by this drawing), boxes stopped short 40 (9 before the gap along the first side closed
+them, the rest polylines), delete marks 40 (none before the bow-tie rule: all were 4-cornered polygons)."""
 
 
 @pytest.mark.parametrize("name", list(CASES))
