@@ -103,7 +103,8 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-    sharp = max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
+    sharp = (max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
+             or _rounded_bracket(work, corners, straight_runs, noise))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
             and not _brace_tip(work, corners) and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
@@ -121,6 +122,12 @@ def _bowed_between_corners(work: np.ndarray, corners: list[int], length: float) 
         return False
     return any(sg.chord_deviation(work[a:b + 1]) > BOWED_SIDE for a, b in itertools.pairwise(corners)
                if sg.path_length(work[a:b + 1]) > MAIN_SIDE * length)
+
+
+def _rounded_bracket(work: np.ndarray, corners: list[int], straight_runs: list[bool], noise: float) -> bool:
+    """Three straight sides turning the same way at both corners (a square bracket, a U): its corners may be rounded
+    as far as its short arms are long (a brace's or a question mark's bends turn both ways)."""
+    return len(corners) == 4 and all(straight_runs) and len(sf.lobes(work, noise=noise)) == 1
 
 
 def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
