@@ -7,7 +7,6 @@ The lines are byte for byte what the numpy path (`decode_jsonl`) writes, ``json.
 from __future__ import annotations
 
 import operator
-import re
 from itertools import chain, compress, repeat
 from typing import TextIO
 
@@ -21,42 +20,55 @@ FLAG_TEXT = [
     for code in range(1 << len(FLAGS))
 ]
 """The five flags of a line, keyed by their bits (tip 1, range 2, eraser 4, b1 8, b2 16)."""
-_SHORT_STAMPS = re.compile(r"(?:\d{1,9}\.\d{1,6}\n)*", re.ASCII)
 LINES_AT_ONCE = 16384
 """Lines joined and written at a time."""
 
 
-def _tail(row: Row) -> str:
-    """A sample's line from just after its time (values rounded as ``json.dumps`` of DESIGN.md's dict has them)."""
-    x, y, p, tip, rng, eraser, b1, b2, tx, ty, rid = row
-    code = tip | rng << 1 | eraser << 2 | b1 << 3 | b2 << 4
-    tilt_x = "null" if tx is None else repr(round(tx, 2))
-    tilt_y = "null" if ty is None else repr(round(ty, 2))
-    return (f', "x": {round(x, 6)!r}, "y": {round(y, 6)!r}, "p": {round(p, 6)!r}, {FLAG_TEXT[code]}'
-            f'"tilt_x": {tilt_x}, "tilt_y": {tilt_y}, "report": {rid}}}\n')
+def _rounded(values: list[float], digits: int) -> list[str]:
+    """``repr(round(v, digits))`` of each value, each distinct value rounded once (none is -0.0: the scaled values
+    are 0.0 or above, and a set would take -0.0 for 0.0)."""
+    distinct = set(values)
+    text = dict(zip(distinct, map(repr, map(round, distinct, repeat(digits))), strict=True))
+    return list(map(text.__getitem__, values))
 
 
-def _tails(decoder: HidPenDecoder, events: PlainEvents) -> dict[str, str | None]:
-    """Each distinct report text's line tail (None: no sample), its counts going to ``decoder.stats``."""
-    distinct: dict[bytes, tuple[int, int]] = {}
+def _tilts(values: list[float | None]) -> list[str]:
+    return ["null" if v is None else repr(round(v, 2)) for v in values]
+
+
+def _tails(decoder: HidPenDecoder, events: PlainEvents) -> tuple[dict[str, str | None], dict[bytes, Row | str]]:
+    """Each distinct report text's line tail, what follows its time (None: no sample), and each distinct report's
+    row or reason; the counts go to ``decoder.stats``."""
+    distinct: dict[bytes, int] = {}
     for text, data in events.data.items():  # texts differing only in hex case are one report
-        count, line = events.counts[text], events.first_line[text]
-        if data in distinct:
-            count, line = count + distinct[data][0], min(line, distinct[data][1])
-        distinct[data] = (count, line)
+        distinct[data] = distinct.get(data, 0) + events.counts[text]
     rows = decode_distinct(decoder, distinct)
-    tails = {data: None if row is None else _tail(row) for data, row in rows.items()}
-    return {text: tails[data] for text, data in events.data.items()}
+    samples = [(data, row) for data, row in rows.items() if not isinstance(row, str)]
+    tails: dict[bytes, str | None] = dict.fromkeys(rows)
+    if samples:
+        datas, values = zip(*samples, strict=True)
+        x, y, p, tip, rng, eraser, b1, b2, tilt_x, tilt_y, rid = map(list, zip(*values, strict=True))
+        flags = [FLAG_TEXT[a | b << 1 | c << 2 | d << 3 | e << 4] for a, b, c, d, e in zip(tip, rng, eraser, b1, b2)]
+        tails.update(zip(datas, [
+            f', "x": {a}, "y": {b}, "p": {c}, {d}"tilt_x": {e}, "tilt_y": {f}, "report": {g}}}\n'
+            for a, b, c, d, e, f, g in zip(_rounded(x, 6), _rounded(y, 6), _rounded(p, 6), flags, _tilts(tilt_x),
+                                           _tilts(tilt_y), rid)
+        ]))
+    return {text: tails[data] for text, data in events.data.items()}, rows
 
 
 def time_texts(events: PlainEvents) -> list[str]:
     """``repr(round(t, 6))`` of each report's time (``json.dumps``' text for DESIGN.md's rounded time).
 
-    A stamp of at most 9 + 6 digits with a point, from 1e-4 s up or zero, names the double nearest it, which
-    ``round`` keeps and ``repr`` prints as the shortest decimal naming it: the stamp itself without leading and
-    trailing zeros (one digit kept each side of the point). Other stamps go through ``round`` and ``repr``."""
-    stamps, times = events.stamps, events.times
-    if not stamps or _SHORT_STAMPS.fullmatch("\n".join(stamps) + "\n") is None \
+    A stamp of 1 to 9 digits, a point and 1 to 6 digits (every hid-recorder stamp), from 1e-4 s up or zero, names
+    the double nearest it, which ``round`` keeps and ``repr`` prints as the shortest decimal naming it: the stamp
+    without leading and trailing zeros, one digit kept each side of the point. Other stamps go through ``round``
+    and ``repr``."""
+    stamps, times = events.stamps, events.times  # digits with at most one point, neither first nor last
+    if not stamps:
+        return []
+    points = list(map(str.find, stamps, repeat(".")))
+    if min(points) < 1 or max(points) > 9 or max(map(operator.sub, map(len, stamps), points)) > 7 \
             or min(filter(None, times), default=1.0) < 1e-4:
         return list(map(repr, map(round, times, repeat(6))))
     text = "\n" + "\n".join(map(str.strip, stamps, repeat("0"))) + "\n"
@@ -70,10 +82,15 @@ def write_plain(capture: PlainCapture, decoders: list[tuple[int, HidPenDecoder]]
         stats, times = decoder.stats, events.times
         stats.reports += len(times)
         stats.backwards += sum(map(operator.lt, times[1:], times))
-        tails = list(map(_tails(decoder, events).__getitem__, events.reports))
+        tail_of, rows = _tails(decoder, events)
+        tails = list(map(tail_of.__getitem__, events.reports))
         heads = time_texts(events)
         if None in tails:
             keep = list(map(operator.is_not, tails, repeat(None)))
+            first = keep.index(False)
+            reason = rows[events.data[events.reports[first]]]
+            assert isinstance(reason, str)
+            stats.first_ignored = (events.lines[first], reason)
             heads, tails = list(compress(heads, keep)), list(compress(tails, keep))
         for start in range(0, len(heads), LINES_AT_ONCE):
             stop = start + LINES_AT_ONCE

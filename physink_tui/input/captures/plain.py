@@ -37,7 +37,6 @@ class PlainEvents:
         lines: each report's 1-based capture line.
         data: each distinct text's bytes.
         counts: how many times each distinct text occurs.
-        first_line: the line each distinct text first occurs on.
     """
 
     stamps: list[str]
@@ -46,7 +45,6 @@ class PlainEvents:
     lines: list[int]
     data: dict[str, bytes]
     counts: Counter[str]
-    first_line: dict[str, int]
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,15 +74,46 @@ def report_bytes(text: str) -> bytes | None:
     return data if n or text == declared else None
 
 
+def _reports_bytes(texts: list[str]) -> dict[str, bytes] | None:
+    """`report_bytes` of each text, or None if one is not a report: texts of one declared length (most are) are
+    checked and read at once."""
+    out: dict[str, bytes] = {}
+    by_length: dict[str, list[str]] = {}
+    for text in texts:
+        by_length.setdefault(text[:text.find(" ") + 1], []).append(text)
+    for head, group in by_length.items():
+        n = int(head) if head[:-1].isascii() and head[:-1].isdigit() else 0
+        width = len(head) + 3 * n - 1
+        if n and set(map(len, group)) == {width}:
+            hexes = " ".join(map(itemgetter(slice(len(head), None)), group))  # one long run of bytes
+            if hexes[2::3] == " " * (len(group) * n - 1):
+                try:
+                    blob = bytes.fromhex(hexes)
+                except ValueError:
+                    return None
+                if len(blob) == n * len(group):  # 2 hex digits in each of the other places
+                    out.update(zip(group, [blob[k:k + n] for k in range(0, len(blob), n)], strict=True))
+                    continue
+        for text in group:
+            got = report_bytes(text)
+            if got is None:
+                return None
+            out[text] = got
+    return out
+
+
 def _times(stamps: list[str]) -> list[float] | None:
     """The stamps as floats, or None unless each is digits with an optional fraction, none is later than
     `MAX_SECONDS` and none jumps more than `GLITCH_SECONDS` ahead of the one before (the full parser decides
     whether such a jump is a glitch)."""
     text = "\n" + "\n".join(stamps) + "\n"
-    digits = text.replace(".", "").replace("\n", "")
-    if not (digits.isascii() and digits.isdigit() or not stamps) or "\n." in text or ".\n" in text:
+    try:
+        other = text.encode("ascii").translate(None, b"0123456789.\n")
+    except UnicodeEncodeError:
         return None
-    try:  # digits and points only, none first or last: `float` refuses only a second point
+    if other or "\n." in text or ".\n" in text:  # a point first or last
+        return None
+    try:  # digits and points only, none first or last: `float` refuses only an empty stamp or a second point
         times = list(map(float, stamps))
     except ValueError:
         return None
@@ -169,12 +198,8 @@ def read_plain(raw: bytes, path: str | None) -> PlainCapture | None:
         if times is None:
             return None
         counts = Counter(reports)
-        data: dict[str, bytes] = {}
-        for text in counts:
-            got_bytes = report_bytes(text)
-            if got_bytes is None:
-                return None
-            data[text] = got_bytes
-        first_line = dict(zip(reversed(reports), reversed(linenos), strict=True))  # the earliest line wins
-        events[index] = PlainEvents(stamps, times, reports, linenos, data, counts, first_line)
+        data = _reports_bytes(list(counts))
+        if data is None:
+            return None
+        events[index] = PlainEvents(stamps, times, reports, linenos, data, counts)
     return PlainCapture(path, tuple(d.build() for d in parser.devices.values()), events)

@@ -9,7 +9,9 @@ import alone costs more than a small capture's decoding: `physink decode`'s plai
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import operator
+from collections.abc import Callable, Iterable
+from itertools import compress, repeat
 
 from physink_tui.input.hid.decoder import DecodeStats, HidPenDecoder
 from physink_tui.input.hid.pen_decoder import REASON_FRAME, REASON_TOOL, REASON_TRUNCATED, TILT_LIMIT
@@ -42,10 +44,15 @@ def _bit(bit: int | None) -> Callable[[int], bool]:
     return lambda r: r >> bit & 1 == 1
 
 
-def _ignore(stats: DecodeStats, reason: str, count: int, line: int) -> None:
+def _scaled(raws: Iterable[int], lo: int, hi: int) -> list[float]:
+    """Each raw value scaled from ``lo..hi`` to 0..1, clipped."""
+    span = hi - lo
+    return [0.0 if v < 0.0 else 1.0 if v > 1.0 else v for v in [(raw - lo) / span for raw in raws]]
+
+
+def _ignore(stats: DecodeStats, reason: str, count: int, out: dict[bytes, Row | str], data: bytes) -> None:
     stats.ignored[reason] += count
-    if stats.first_ignored is None or line < stats.first_ignored[0]:
-        stats.first_ignored = (line, reason)
+    out[data] = reason
 
 
 def _range(declared: ValueField, raws: list[int]) -> tuple[int, int]:
@@ -53,11 +60,6 @@ def _range(declared: ValueField, raws: list[int]) -> tuple[int, int]:
     if not raws:
         return declared.lo, declared.hi
     return min(declared.lo, min(raws)), max(declared.hi, max(raws))
-
-
-def _scale(raw: int, lo: int, hi: int) -> float:
-    v = (raw - lo) / (hi - lo)
-    return 0.0 if v < 0.0 else 1.0 if v > 1.0 else v
 
 
 def _tilt(v: ValueField | None) -> Callable[[int], float | None]:
@@ -72,118 +74,111 @@ def _tilt(v: ValueField | None) -> Callable[[int], float | None]:
     return degrees
 
 
-def _group(lay: PenLayout, reports: list[tuple[bytes, int, int]], stats: DecodeStats) -> dict[bytes, Row | None]:
-    """The rows of one report id's distinct reports ``(bytes, count, first line)`` (None: ignored, counted)."""
-    rid, length = lay.report_id, lay.length
-    b1_of, b2_of = _bit(lay.b1), _bit(lay.b2)
-    erase_of = _bit(None if lay.eraser_is_button else lay.eraser)
-    invert_of = _bit(None if lay.eraser_is_button else lay.invert)
-    tip_of = _bit(lay.tip)
-    pressure = lay.pressure
-    pressure_of = _reader(pressure) if pressure is not None else None
-    x_of, y_of, tx_of, ty_of = _reader(lay.x), _reader(lay.y), _tilt(lay.tilt_x), _tilt(lay.tilt_y)
-    tool_of = _reader(ValueField((lay.tool,), False, 0, 1)) if lay.tool is not None else None
-    out: dict[bytes, Row | None] = {}
-    kept = []  # (bytes, count, report integer, b1, b2, eraser, erase, raw pressure)
-    for data, count, line in reports:
-        r = int.from_bytes(data[:length], "little")
-        if lay.frame_byte is not None:
-            index, mask, values = lay.frame_byte
-            if data[index] & mask in values:
-                _ignore(stats, f"{REASON_FRAME} 0x{rid:02x}", count, line)
-                out[data] = None
-                continue
-        eraser = False
-        if tool_of is not None:
-            tool = tool_of(r)
-            if lay.pen_tools and tool not in lay.pen_tools:
-                _ignore(stats, f"{REASON_TOOL} 0x{rid:02x}", count, line)
-                out[data] = None
-                continue
-            eraser = bool(lay.eraser_tools) and tool in lay.eraser_tools
-        erase = erase_of(r)
-        eraser = eraser or invert_of(r) or erase
-        kept.append((data, count, r, b1_of(r), b2_of(r), eraser, erase,
-                     pressure_of(r) if pressure_of is not None else 0))
-    if pressure is not None:
-        p_lo, p_hi = _range(pressure, [k[7] for k in kept])
-        if (p_lo, p_hi) != (pressure.lo, pressure.hi):
-            stats.widened.add(f"0x{rid:02x} pressure")
-    buttons = lay.b1 is not None or lay.b2 is not None
-    touched = []  # (bytes, count, report integer, b1, b2, eraser, p, tip)
-    for data, count, r, b1, b2, eraser, erase, rp in kept:
-        if lay.tip is not None:
-            tip = tip_of(r) or erase
-        elif pressure is not None:
-            tip = rp > pressure.lo or erase
-        else:
-            tip = erase
-        if pressure is not None:
-            p = _scale(rp, p_lo, p_hi)
-            if buttons and tip and rp <= pressure.lo and (b1 or b2):
-                tip = False
-            if not tip:
-                p = 0.0
-        else:
-            p = 1.0 if tip else 0.0
-        touched.append((data, count, r, b1, b2, eraser, p, tip))
-    in_value = not lay.in_range_inverted
-    if lay.in_range is not None:
-        ib = lay.in_range
-        if lay.learn_in_range:
-            strong = strong_set = all_kept = all_set = 0
-            for _, count, r, b1, b2, _, p, tip in touched:
-                bit = r >> ib & 1
-                all_kept += count
-                all_set += count * bit
-                if tip or p > 0.0 or b1 or b2:
-                    strong += count
-                    strong_set += count * bit
-            in_value = (strong_set * 2 >= strong if strong else all_set * 2 >= all_kept if all_kept else in_value)
-        ranges = [(r >> ib & 1 == in_value) or tip for _, _, r, _, _, _, _, tip in touched]
+def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats) -> dict[bytes, Row | str]:
+    """The rows of one report id's distinct reports ``(bytes, count)`` (a str: why it is ignored, counted)."""
+    rid = lay.report_id
+    out: dict[bytes, Row | str] = {}
+    if lay.frame_byte is not None or (lay.tool is not None and lay.pen_tools):
+        reports = _pen_reports(lay, reports, stats, out)
+    datas = [data for data, _ in reports]
+    counts = [count for _, count in reports]
+    ints = list(map(int.from_bytes, datas, repeat("little")))  # bits past the layout's length are never read
+    b1s, b2s = list(map(_bit(lay.b1), ints)), list(map(_bit(lay.b2), ints))
+    erases = list(map(_bit(None if lay.eraser_is_button else lay.eraser), ints))
+    erasers = list(map(operator.or_, map(_bit(None if lay.eraser_is_button else lay.invert), ints), erases))
+    if lay.tool is not None and lay.eraser_tools:
+        tools = map(_reader(ValueField((lay.tool,), False, 0, 1)), ints)
+        erasers = list(map(operator.or_, erasers, map(lay.eraser_tools.__contains__, tools)))
+    if lay.tip is not None:
+        tips = list(map(operator.or_, map(_bit(lay.tip), ints), erases))
+    elif lay.pressure is not None:
+        tips = list(map(operator.or_, map(lay.pressure.lo.__lt__, map(_reader(lay.pressure), ints)), erases))
     else:
-        ranges = [True] * len(touched)
-    placed = [k[2] for k, rng in zip(touched, ranges, strict=True) if rng]
-    x_lo, x_hi = _range(lay.x, [x_of(r) for r in placed])
-    y_lo, y_hi = _range(lay.y, [y_of(r) for r in placed])
+        tips = erases
+    pressure = lay.pressure
+    if pressure is None:
+        ps = [1.0 if tip else 0.0 for tip in tips]
+    else:
+        raws = list(map(_reader(pressure), ints))
+        lo, hi = _range(pressure, raws)
+        if (lo, hi) != (pressure.lo, pressure.hi):
+            stats.widened.add(f"0x{rid:02x} pressure")
+        if lay.b1 is not None or lay.b2 is not None:  # a button with the tip at zero pressure is a click
+            floor = pressure.lo
+            tips = [tip and not (rp <= floor and (b1 or b2)) for tip, rp, b1, b2 in zip(tips, raws, b1s, b2s)]
+        ps = [p if tip else 0.0 for p, tip in zip(_scaled(raws, lo, hi), tips)]
+    if lay.in_range is None:
+        ranges = [True] * len(ints)
+    else:
+        bits = list(map(_bit(lay.in_range), ints))
+        in_value = not lay.in_range_inverted
+        if lay.learn_in_range:
+            strong = list(map(any, zip(tips, map((0.0).__lt__, ps), b1s, b2s)))
+            kept, kept_set = sum(counts), sum(compress(counts, bits))
+            strong_n = sum(compress(counts, strong))
+            strong_set = sum(compress(counts, map(operator.and_, strong, bits)))
+            in_value = strong_set * 2 >= strong_n if strong_n else kept_set * 2 >= kept if kept else in_value
+        ranges = list(map(operator.or_, map(in_value.__eq__, bits), tips))
+    placed = list(compress(ints, ranges))
+    x_of, y_of = _reader(lay.x), _reader(lay.y)
+    x_lo, x_hi = _range(lay.x, list(map(x_of, placed)))
+    y_lo, y_hi = _range(lay.y, list(map(y_of, placed)))
     for name, got, declared in (("x", (x_lo, x_hi), lay.x), ("y", (y_lo, y_hi), lay.y)):
         if got != (declared.lo, declared.hi):
             stats.widened.add(f"0x{rid:02x} {name}")
-    for (data, count, r, b1, b2, eraser, p, tip), rng in zip(touched, ranges, strict=True):
-        out[data] = (_scale(x_of(r), x_lo, x_hi), _scale(y_of(r), y_lo, y_hi), p, tip, rng, eraser, b1, b2,
-                     tx_of(r), ty_of(r), rid)
-        stats.samples += count
+    xs, ys = _scaled(map(x_of, ints), x_lo, x_hi), _scaled(map(y_of, ints), y_lo, y_hi)
+    rows = zip(xs, ys, ps, tips, ranges, erasers, b1s, b2s, map(_tilt(lay.tilt_x), ints),
+               map(_tilt(lay.tilt_y), ints), repeat(rid))
+    out.update(zip(datas, rows))
+    stats.samples += sum(counts)
     return out
 
 
-def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, tuple[int, int]]) -> dict[bytes, Row | None]:
-    """Each distinct report's row (None when it is no pen sample), as `decode_batch` of all the reports gives.
+def _pen_reports(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats,
+                 out: dict[bytes, Row | str]) -> list[tuple[bytes, int]]:
+    """The reports that are the pen's: pad, strip or dial reports and other tools (mice, lenses) are counted and
+    their reasons put in ``out``."""
+    rid, pens = lay.report_id, []
+    tool_of = _reader(ValueField((lay.tool,), False, 0, 1)) if lay.tool is not None else None
+    for data, count in reports:
+        if lay.frame_byte is not None:
+            index, mask, values = lay.frame_byte
+            if data[index] & mask in values:
+                _ignore(stats, f"{REASON_FRAME} 0x{rid:02x}", count, out, data)
+                continue
+        if tool_of is not None and lay.pen_tools and tool_of(int.from_bytes(data, "little")) not in lay.pen_tools:
+            _ignore(stats, f"{REASON_TOOL} 0x{rid:02x}", count, out, data)
+            continue
+        pens.append((data, count))
+    return pens
+
+
+def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, int]) -> dict[bytes, Row | str]:
+    """Each distinct report's row, or why it is no pen sample, as `decode_batch` of all the reports gives.
 
     Args:
-        decoder: the device's decoder; its layouts are used, its stats get the counts of every report (not the
-            reports read nor the times going backwards: the caller knows those).
-        reports: each distinct report, with how many times it occurs and the capture line it first occurs on.
+        decoder: the device's decoder; its layouts are used, and its stats get the samples and the ignored reports
+            by reason (not the reports read, the first ignored one, the times going backwards: the caller knows
+            those).
+        reports: each distinct report, with how many times it occurs.
     """
     stats = decoder.stats
-    out: dict[bytes, Row | None] = {}
-    groups: dict[int, list[tuple[bytes, int, int]]] = {}
-    for data, (count, line) in reports.items():
+    out: dict[bytes, Row | str] = {}
+    groups: dict[int, list[tuple[bytes, int]]] = {}
+    for data, count in reports.items():
         if not data:
-            _ignore(stats, "empty report", count, line)
-            out[data] = None
+            _ignore(stats, "empty report", count, out, data)
             continue
         rid = data[0] if decoder.uses_ids else 0
         lay = decoder.layouts.get(rid)
         if lay is None:
             reason = (f"report 0x{rid:02x} is not a pen report" if rid in decoder.known_ids
                       else f"unknown report id 0x{rid:02x}")
-            _ignore(stats, reason, count, line)
-            out[data] = None
+            _ignore(stats, reason, count, out, data)
         elif len(data) < lay.length:
-            _ignore(stats, f"{REASON_TRUNCATED} 0x{rid:02x}", count, line)
-            out[data] = None
+            _ignore(stats, f"{REASON_TRUNCATED} 0x{rid:02x}", count, out, data)
         else:
-            groups.setdefault(rid, []).append((data, count, line))
+            groups.setdefault(rid, []).append((data, count))
     for rid, group in groups.items():
         out.update(_group(decoder.layouts[rid], group, stats))
     return out
