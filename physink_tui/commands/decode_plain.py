@@ -25,11 +25,23 @@ LINES_AT_ONCE = 16384
 
 
 def _rounded(values: list[float], digits: int) -> list[str]:
-    """``repr(round(v, digits))`` of each value, each distinct value rounded once (none is -0.0: the scaled values
-    are 0.0 or above, and a set would take -0.0 for 0.0)."""
-    distinct = set(values)
-    text = dict(zip(distinct, map(repr, map(round, distinct, repeat(digits))), strict=True))
-    return list(map(text.__getitem__, values))
+    """``repr(round(v, digits))`` of each finite value, each distinct value formatted once.
+
+    ``format(v, f".{digits}f")`` has the digits ``round`` keeps (both round the exact binary value), and for
+    1e-4 <= |v| < 1e9 (at most 15 significant digits) ``repr`` of that double is those digits without trailing
+    zeros (one kept after the point): no shorter decimal names the same double. Values outside that range go
+    through ``round`` and ``repr``. (No value is -0.0, which a set would merge with 0.0: the scaled values are
+    0.0 or above.)"""
+    distinct = list(set(values))
+    if not distinct:
+        return []
+    fixed = map(str.rstrip, map(format, distinct, repeat(f".{digits}f")), repeat("0"))
+    texts = ("\n".join(fixed) + "\n").replace(".\n", ".0\n").split("\n")
+    for k, v in enumerate(distinct):
+        if v != 0.0 and not 1.5e-4 <= abs(v) < 1e9:  # what may round below 1e-4 or has more than 15 digits
+            texts[k] = repr(round(v, digits))
+    text_of = dict(zip(distinct, texts, strict=False))  # texts has one more, empty
+    return list(map(text_of.__getitem__, values))
 
 
 def _tilts(values: list[float | None]) -> list[str]:
@@ -48,28 +60,31 @@ def _tails(decoder: HidPenDecoder, events: PlainEvents) -> tuple[dict[str, str |
     if samples:
         datas, values = zip(*samples, strict=True)
         x, y, p, tip, rng, eraser, b1, b2, tilt_x, tilt_y, rid = map(list, zip(*values, strict=True))
-        flags = [FLAG_TEXT[a | b << 1 | c << 2 | d << 3 | e << 4] for a, b, c, d, e in zip(tip, rng, eraser, b1, b2)]
+        flags = [FLAG_TEXT[a | b << 1 | c << 2 | d << 3 | e << 4]
+                 for a, b, c, d, e in zip(tip, rng, eraser, b1, b2, strict=True)]
         tails.update(zip(datas, [
             f', "x": {a}, "y": {b}, "p": {c}, {d}"tilt_x": {e}, "tilt_y": {f}, "report": {g}}}\n'
             for a, b, c, d, e, f, g in zip(_rounded(x, 6), _rounded(y, 6), _rounded(p, 6), flags, _tilts(tilt_x),
-                                           _tilts(tilt_y), rid)
-        ]))
+                                           _tilts(tilt_y), rid, strict=True)
+        ], strict=True))
     return {text: tails[data] for text, data in events.data.items()}, rows
 
 
 def time_texts(events: PlainEvents) -> list[str]:
     """``repr(round(t, 6))`` of each report's time (``json.dumps``' text for DESIGN.md's rounded time).
 
-    A stamp of 1 to 9 digits, a point and 1 to 6 digits (every hid-recorder stamp), from 1e-4 s up or zero, names
-    the double nearest it, which ``round`` keeps and ``repr`` prints as the shortest decimal naming it: the stamp
-    without leading and trailing zeros, one digit kept each side of the point. Other stamps go through ``round``
-    and ``repr``."""
+    When every stamp is 1 to 9 digits, a point and 1 to 6 digits, all of one width (hid-recorder's), a stamp from
+    1e-4 s up or zero names the double nearest it, which ``round`` keeps and ``repr`` prints as the shortest
+    decimal naming it: the stamp without leading and trailing zeros, one digit kept each side of the point. Other
+    stamps go through ``round`` and ``repr``."""
     stamps, times = events.stamps, events.times  # digits with at most one point, neither first nor last
     if not stamps:
         return []
-    points = list(map(str.find, stamps, repeat(".")))
-    if min(points) < 1 or max(points) > 9 or max(map(operator.sub, map(len, stamps), points)) > 7 \
-            or min(filter(None, times), default=1.0) < 1e-4:
+    n, width, point = len(stamps), len(stamps[0]), stamps[0].find(".")
+    text = "\n".join(stamps)
+    if not (0 < point <= 9 and width - point <= 7 and len(text) == n * (width + 1) - 1
+            and text[width::width + 1] == "\n" * (n - 1) and text[point::width + 1] == "." * n) \
+            or min(filter(None, times), default=1.0) < 1e-4:  # not all one width with the point in one place
         return list(map(repr, map(round, times, repeat(6))))
     text = "\n" + "\n".join(map(str.strip, stamps, repeat("0"))) + "\n"
     return text.replace("\n.", "\n0.").replace(".\n", ".0\n")[1:-1].split("\n")

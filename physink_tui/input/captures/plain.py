@@ -11,18 +11,15 @@ the capture with `parser` instead: what either path accepts, it reads the same (
 from __future__ import annotations
 
 import operator
-import re
 from collections import Counter
-from collections.abc import Iterator
 from dataclasses import dataclass
+from itertools import compress, count, repeat
 from operator import itemgetter
 
 from physink_tui.errors import CaptureFormatError
 from physink_tui.input.captures.capture_types import GLITCH_SECONDS, MAX_SECONDS, BadLine, CaptureDevice
 from physink_tui.input.captures.parser import CaptureParser
 
-_NOT_EVENT = re.compile(r"\n(?!E: )")
-"""The end of the line before one that does not start ``"E: "``."""
 _HEADER_KINDS = frozenset(("R:", "N:", "P:", "I:", "D:"))
 
 
@@ -138,17 +135,10 @@ def _split(run: list[str]) -> tuple[list[str], list[str]] | None:
     return [p[1] for p in parts], [p[2] for p in parts]
 
 
-def _others(text: str) -> Iterator[int]:
-    """The 0-based indexes of the lines of ``text`` (split at ``"\\n"``) that do not start ``"E: "``, and then the
-    index one past the last line."""
-    if not text.startswith("E: "):
-        yield 0
-    index, at = 0, 0
-    for m in _NOT_EVENT.finditer(text):
-        index += text.count("\n", at, m.start()) + 1
-        at = m.start() + 1
-        yield index
-    yield text.count("\n") + 1
+def _others(lines: list[str]) -> list[int]:
+    """The indexes of the lines that do not start ``"E: "``, and then ``len(lines)``."""
+    events = map(str.startswith, lines, repeat("E: "))
+    return [*compress(count(), map(operator.not_, events)), len(lines)]
 
 
 def read_plain(raw: bytes, path: str | None) -> PlainCapture | None:
@@ -162,7 +152,7 @@ def read_plain(raw: bytes, path: str | None) -> PlainCapture | None:
     into = None
     start = 0  # the first line not yet read
     try:
-        for k in _others(text):
+        for k in _others(lines):
             if k > start:  # a run of event lines, at once
                 got = _split(lines[start:k])
                 if into is None or got is None:

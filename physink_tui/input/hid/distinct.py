@@ -9,45 +9,16 @@ import alone costs more than a small capture's decoding: `physink decode`'s plai
 
 from __future__ import annotations
 
-import operator
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from itertools import compress, repeat
+from typing import Any
 
 from physink_tui.input.hid.decoder import DecodeStats, HidPenDecoder
-from physink_tui.input.hid.pen_decoder import REASON_FRAME, REASON_TOOL, REASON_TRUNCATED, TILT_LIMIT
+from physink_tui.input.hid.pen_decoder import REASON_FRAME, REASON_TOOL, REASON_TRUNCATED, TILT_LIMIT, value_expr
 from physink_tui.input.hid.pen_layout import PenLayout, ValueField
 
 Row = tuple[float, float, float, bool, bool, bool, bool, bool, float | None, float | None, int]
 """A sample without its time: x, y, p, tip, range, eraser, b1, b2, tilt_x, tilt_y (None: no tilt), report id."""
-
-
-def _reader(v: ValueField) -> Callable[[int], int]:
-    """The raw integer of a value, read from the report as one little-endian integer."""
-    if len(v.parts) == 1 and not v.signed:
-        off, mask = v.parts[0][0], (1 << v.parts[0][1]) - 1
-        return lambda r: r >> off & mask
-    width = v.width
-
-    def read(r: int) -> int:
-        out = shift = 0
-        for off, size in v.parts:
-            out |= (r >> off & (1 << size) - 1) << shift
-            shift += size
-        return out - (1 << width) if v.signed and out >> (width - 1) & 1 else out
-
-    return read
-
-
-def _bit(bit: int | None) -> Callable[[int], bool]:
-    if bit is None:
-        return lambda r: False
-    return lambda r: r >> bit & 1 == 1
-
-
-def _scaled(raws: Iterable[int], lo: int, hi: int) -> list[float]:
-    """Each raw value scaled from ``lo..hi`` to 0..1, clipped."""
-    span = hi - lo
-    return [0.0 if v < 0.0 else 1.0 if v > 1.0 else v for v in [(raw - lo) / span for raw in raws]]
 
 
 def _ignore(stats: DecodeStats, reason: str, count: int, out: dict[bytes, Row | str], data: bytes) -> None:
@@ -63,15 +34,47 @@ def _range(declared: ValueField, raws: list[int]) -> tuple[int, int]:
 
 
 def _tilt(v: ValueField | None) -> Callable[[int], float | None]:
+    """A raw tilt value to degrees (None without tilt)."""
     if v is None:
-        return lambda r: None
-    read, scale, offset = _reader(v), v.scale, v.offset
+        return lambda raw: None
+    scale, offset = v.scale, v.offset
 
-    def degrees(r: int) -> float:
-        d = read(r) * scale + offset
+    def degrees(raw: int) -> float:
+        d = raw * scale + offset
         return -TILT_LIMIT if d < -TILT_LIMIT else TILT_LIMIT if d > TILT_LIMIT else d
 
     return degrees
+
+
+def _signed(raw: int, width: int) -> int:
+    return raw - (1 << width) if raw >> (width - 1) & 1 else raw
+
+
+def raw_reader(lay: PenLayout) -> Callable[[int], tuple[int, ...]]:
+    """A function generated once for a layout (as `pen_decoder` does): a report, read as one little-endian integer,
+    to its raw values ``(x, y, pressure, tilt_x, tilt_y, tip, in_range, eraser, invert, b1, b2, tool)``, 0 where
+    the layout has none (and for the eraser and invert bits where the pen has no eraser)."""
+    def value(v: ValueField | None) -> str:
+        if v is None:
+            return "0"
+        return f"_signed({value_expr(v)}, {v.width})" if v.signed else f"({value_expr(v)})"
+
+    def bit(b: int | None) -> str:
+        return "0" if b is None else f"(v >> {b} & 1)"
+
+    no_eraser = lay.eraser_is_button
+    tool = f"(v >> {lay.tool[0]} & {(1 << lay.tool[1]) - 1:#x})" if lay.tool is not None else "0"
+    values = [value(lay.x), value(lay.y), value(lay.pressure), value(lay.tilt_x), value(lay.tilt_y), bit(lay.tip),
+              bit(lay.in_range), bit(None if no_eraser else lay.eraser), bit(None if no_eraser else lay.invert),
+              bit(lay.b1), bit(lay.b2), tool]
+    namespace: dict[str, Any] = {"_signed": _signed}
+    code = f"def raw(v):\n    return ({', '.join(values)})\n"
+    exec(compile(code, f"<raw values of pen layout 0x{lay.report_id:02x} {lay.source}>", "exec"), namespace)
+    return namespace["raw"]
+
+
+def _clip(v: float) -> float:
+    return 0.0 if v < 0.0 else 1.0 if v > 1.0 else v
 
 
 def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats) -> dict[bytes, Row | str]:
@@ -82,54 +85,58 @@ def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats)
         reports = _pen_reports(lay, reports, stats, out)
     datas = [data for data, _ in reports]
     counts = [count for _, count in reports]
-    ints = list(map(int.from_bytes, datas, repeat("little")))  # bits past the layout's length are never read
-    b1s, b2s = list(map(_bit(lay.b1), ints)), list(map(_bit(lay.b2), ints))
-    erases = list(map(_bit(None if lay.eraser_is_button else lay.eraser), ints))
-    erasers = list(map(operator.or_, map(_bit(None if lay.eraser_is_button else lay.invert), ints), erases))
-    if lay.tool is not None and lay.eraser_tools:
-        tools = map(_reader(ValueField((lay.tool,), False, 0, 1)), ints)
-        erasers = list(map(operator.or_, erasers, map(lay.eraser_tools.__contains__, tools)))
-    if lay.tip is not None:
-        tips = list(map(operator.or_, map(_bit(lay.tip), ints), erases))
-    elif lay.pressure is not None:
-        tips = list(map(operator.or_, map(lay.pressure.lo.__lt__, map(_reader(lay.pressure), ints)), erases))
-    else:
-        tips = erases
+    # bits past the layout's length are never read, so the whole report is one integer
+    values = list(map(raw_reader(lay), map(int.from_bytes, datas, repeat("little"))))
     pressure = lay.pressure
-    if pressure is None:
-        ps = [1.0 if tip else 0.0 for tip in tips]
-    else:
-        raws = list(map(_reader(pressure), ints))
-        lo, hi = _range(pressure, raws)
-        if (lo, hi) != (pressure.lo, pressure.hi):
+    floor = p_lo = p_hi = 0
+    if pressure is not None:
+        floor = pressure.lo
+        p_lo, p_hi = _range(pressure, [v[2] for v in values])
+        if (p_lo, p_hi) != (pressure.lo, pressure.hi):
             stats.widened.add(f"0x{rid:02x} pressure")
-        if lay.b1 is not None or lay.b2 is not None:  # a button with the tip at zero pressure is a click
-            floor = pressure.lo
-            tips = [tip and not (rp <= floor and (b1 or b2)) for tip, rp, b1, b2 in zip(tips, raws, b1s, b2s)]
-        ps = [p if tip else 0.0 for p, tip in zip(_scaled(raws, lo, hi), tips)]
+    has_tip, buttons = lay.tip is not None, lay.b1 is not None or lay.b2 is not None
+    eraser_tools = lay.eraser_tools if lay.tool is not None else ()
+    pen = []  # tip, p, eraser, b1, b2 of each report
+    for _, _, rp, _, _, tip_bit, _, erase, invert, b1, b2, tool in values:
+        eraser = erase == 1 or invert == 1 or tool in eraser_tools
+        if has_tip:
+            tip = tip_bit == 1 or erase == 1
+        else:
+            tip = (pressure is not None and rp > floor) or erase == 1
+        if pressure is None:
+            p = 1.0 if tip else 0.0
+        else:
+            if buttons and tip and rp <= floor and (b1 or b2):  # a button with the tip at zero pressure: a click
+                tip = False
+            p = _clip((rp - p_lo) / (p_hi - p_lo)) if tip else 0.0
+        pen.append((tip, p, eraser, b1 == 1, b2 == 1))
     if lay.in_range is None:
-        ranges = [True] * len(ints)
+        ranges = [True] * len(values)
     else:
-        bits = list(map(_bit(lay.in_range), ints))
         in_value = not lay.in_range_inverted
-        if lay.learn_in_range:
-            strong = list(map(any, zip(tips, map((0.0).__lt__, ps), b1s, b2s)))
-            kept, kept_set = sum(counts), sum(compress(counts, bits))
-            strong_n = sum(compress(counts, strong))
-            strong_set = sum(compress(counts, map(operator.and_, strong, bits)))
-            in_value = strong_set * 2 >= strong_n if strong_n else kept_set * 2 >= kept if kept else in_value
-        ranges = list(map(operator.or_, map(in_value.__eq__, bits), tips))
-    placed = list(compress(ints, ranges))
-    x_of, y_of = _reader(lay.x), _reader(lay.y)
-    x_lo, x_hi = _range(lay.x, list(map(x_of, placed)))
-    y_lo, y_hi = _range(lay.y, list(map(y_of, placed)))
+        if lay.learn_in_range:  # the polarity the touching reports show, else most reports
+            strong = strong_set = kept = kept_set = 0
+            for (tip, p, _, b1, b2), v, count in zip(pen, values, counts, strict=True):
+                kept += count
+                kept_set += count * v[6]
+                if tip or p > 0.0 or b1 or b2:
+                    strong += count
+                    strong_set += count * v[6]
+            in_value = strong_set * 2 >= strong if strong else kept_set * 2 >= kept if kept else in_value
+        ranges = [v[6] == in_value or pv[0] for v, pv in zip(values, pen, strict=True)]
+    placed = list(compress(values, ranges))
+    x_lo, x_hi = _range(lay.x, [v[0] for v in placed])
+    y_lo, y_hi = _range(lay.y, [v[1] for v in placed])
     for name, got, declared in (("x", (x_lo, x_hi), lay.x), ("y", (y_lo, y_hi), lay.y)):
         if got != (declared.lo, declared.hi):
             stats.widened.add(f"0x{rid:02x} {name}")
-    xs, ys = _scaled(map(x_of, ints), x_lo, x_hi), _scaled(map(y_of, ints), y_lo, y_hi)
-    rows = zip(xs, ys, ps, tips, ranges, erasers, b1s, b2s, map(_tilt(lay.tilt_x), ints),
-               map(_tilt(lay.tilt_y), ints), repeat(rid))
-    out.update(zip(datas, rows))
+    tilt_x, tilt_y = _tilt(lay.tilt_x), _tilt(lay.tilt_y)
+    x_span, y_span = x_hi - x_lo, y_hi - y_lo
+    out.update(zip(datas, [
+        (_clip((v[0] - x_lo) / x_span), _clip((v[1] - y_lo) / y_span), p, tip, rng, eraser, b1, b2, tilt_x(v[3]),
+         tilt_y(v[4]), rid)
+        for v, (tip, p, eraser, b1, b2), rng in zip(values, pen, ranges, strict=True)
+    ], strict=True))
     stats.samples += sum(counts)
     return out
 
@@ -139,14 +146,16 @@ def _pen_reports(lay: PenLayout, reports: list[tuple[bytes, int]], stats: Decode
     """The reports that are the pen's: pad, strip or dial reports and other tools (mice, lenses) are counted and
     their reasons put in ``out``."""
     rid, pens = lay.report_id, []
-    tool_of = _reader(ValueField((lay.tool,), False, 0, 1)) if lay.tool is not None else None
+    tool_at, tool_mask = lay.tool if lay.tool is not None else (0, 0)
+    tool_mask = (1 << tool_mask) - 1
     for data, count in reports:
         if lay.frame_byte is not None:
             index, mask, values = lay.frame_byte
             if data[index] & mask in values:
                 _ignore(stats, f"{REASON_FRAME} 0x{rid:02x}", count, out, data)
                 continue
-        if tool_of is not None and lay.pen_tools and tool_of(int.from_bytes(data, "little")) not in lay.pen_tools:
+        tool = int.from_bytes(data, "little") >> tool_at & tool_mask
+        if lay.tool is not None and lay.pen_tools and tool not in lay.pen_tools:
             _ignore(stats, f"{REASON_TOOL} 0x{rid:02x}", count, out, data)
             continue
         pens.append((data, count))
