@@ -12,7 +12,7 @@ from typing import TextIO
 
 from physink_tui.input.captures.plain import PlainCapture, PlainEvents
 from physink_tui.input.hid.decoder import HidPenDecoder
-from physink_tui.input.hid.distinct import Row, decode_distinct
+from physink_tui.input.hid.distinct import decode_distinct
 
 FLAGS = ("tip", "range", "eraser", "b1", "b2")
 FLAG_TEXT = [
@@ -48,26 +48,22 @@ def _tilts(values: list[float | None]) -> list[str]:
     return ["null" if v is None else repr(round(v, 2)) for v in values]
 
 
-def _tails(decoder: HidPenDecoder, events: PlainEvents) -> tuple[dict[str, str | None], dict[bytes, Row | str]]:
-    """Each distinct report text's line tail, what follows its time (None: no sample), and each distinct report's
-    row or reason; the counts go to ``decoder.stats``."""
+def _tails(decoder: HidPenDecoder, events: PlainEvents) -> tuple[dict[str, str | None], dict[bytes, str]]:
+    """Each distinct report text's line tail, what follows its time (None: no sample), and why each report that
+    gives no sample is ignored; the counts go to ``decoder.stats``."""
     distinct: dict[bytes, int] = {}
     for text, data in events.data.items():  # texts differing only in hex case are one report
         distinct[data] = distinct.get(data, 0) + events.counts[text]
-    rows = decode_distinct(decoder, distinct)
-    samples = [(data, row) for data, row in rows.items() if not isinstance(row, str)]
-    tails: dict[bytes, str | None] = dict.fromkeys(rows)
-    if samples:
-        datas, values = zip(*samples, strict=True)
-        x, y, p, tip, rng, eraser, b1, b2, tilt_x, tilt_y, rid = map(list, zip(*values, strict=True))
-        flags = [FLAG_TEXT[a | b << 1 | c << 2 | d << 3 | e << 4]
-                 for a, b, c, d, e in zip(tip, rng, eraser, b1, b2, strict=True)]
-        tails.update(zip(datas, [
-            f', "x": {a}, "y": {b}, "p": {c}, {d}"tilt_x": {e}, "tilt_y": {f}, "report": {g}}}\n'
-            for a, b, c, d, e, f, g in zip(_rounded(x, 6), _rounded(y, 6), _rounded(p, 6), flags, _tilts(tilt_x),
-                                           _tilts(tilt_y), rid, strict=True)
-        ], strict=True))
-    return {text: tails[data] for text, data in events.data.items()}, rows
+    s, ignored = decode_distinct(decoder, distinct)
+    flags = [FLAG_TEXT[a | b << 1 | c << 2 | d << 3 | e << 4]
+             for a, b, c, d, e in zip(s.tip, s.range, s.eraser, s.b1, s.b2, strict=True)]
+    tails: dict[bytes, str | None] = dict(zip(s.reports, [
+        f', "x": {a}, "y": {b}, "p": {c}, {d}"tilt_x": {e}, "tilt_y": {f}, "report": {g}}}\n'
+        for a, b, c, d, e, f, g in zip(_rounded(s.x, 6), _rounded(s.y, 6), _rounded(s.p, 6), flags,
+                                       _tilts(s.tilt_x), _tilts(s.tilt_y), s.report, strict=True)
+    ], strict=True))
+    tails.update(dict.fromkeys(ignored))
+    return {text: tails[data] for text, data in events.data.items()}, ignored
 
 
 def time_texts(events: PlainEvents) -> list[str]:
@@ -96,16 +92,15 @@ def write_plain(capture: PlainCapture, decoders: list[tuple[int, HidPenDecoder]]
         events = capture.events[index]
         stats, times = decoder.stats, events.times
         stats.reports += len(times)
-        stats.backwards += sum(map(operator.lt, times[1:], times))
-        tail_of, rows = _tails(decoder, events)
+        if times != sorted(times):  # (sorting sorted times is one pass)
+            stats.backwards += sum(map(operator.lt, times[1:], times))
+        tail_of, ignored = _tails(decoder, events)
         tails = list(map(tail_of.__getitem__, events.reports))
         heads = time_texts(events)
         if None in tails:
             keep = list(map(operator.is_not, tails, repeat(None)))
             first = keep.index(False)
-            reason = rows[events.data[events.reports[first]]]
-            assert isinstance(reason, str)
-            stats.first_ignored = (events.lines[first], reason)
+            stats.first_ignored = (events.lines[first], ignored[events.data[events.reports[first]]])
             heads, tails = list(compress(heads, keep)), list(compress(tails, keep))
         for start in range(0, len(heads), LINES_AT_ONCE):
             stop = start + LINES_AT_ONCE

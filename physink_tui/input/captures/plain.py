@@ -75,9 +75,13 @@ def _reports_bytes(texts: list[str]) -> dict[str, bytes] | None:
     """`report_bytes` of each text, or None if one is not a report: texts of one declared length (most are) are
     checked and read at once."""
     out: dict[str, bytes] = {}
+    first = texts[0][:texts[0].find(" ") + 1] if texts else ""
     by_length: dict[str, list[str]] = {}
-    for text in texts:
-        by_length.setdefault(text[:text.find(" ") + 1], []).append(text)
+    if first and set(map(itemgetter(slice(0, len(first))), texts)) == {first}:  # one declared length (the usual)
+        by_length[first] = texts
+    else:
+        for text in texts:
+            by_length.setdefault(text[:text.find(" ") + 1], []).append(text)
     for head, group in by_length.items():
         n = int(head) if head[:-1].isascii() and head[:-1].isdigit() else 0
         width = len(head) + 3 * n - 1

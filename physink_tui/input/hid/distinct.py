@@ -17,11 +17,30 @@ from physink_tui.input.hid.decoder import DecodeStats, HidPenDecoder
 from physink_tui.input.hid.pen_decoder import REASON_FRAME, REASON_TOOL, REASON_TRUNCATED, TILT_LIMIT, value_expr
 from physink_tui.input.hid.pen_layout import PenLayout, ValueField
 
-Row = tuple[float, float, float, bool, bool, bool, bool, bool, float | None, float | None, int]
-"""A sample without its time: x, y, p, tip, range, eraser, b1, b2, tilt_x, tilt_y (None: no tilt), report id."""
+
+class Samples:
+    """Decoded distinct reports as columns: the sample of ``reports[k]`` (its time aside) is ``x[k]``, ``y[k]``,
+    ``p[k]``, ``tip[k]``, ``range[k]``, ``eraser[k]``, ``b1[k]``, ``b2[k]``, ``tilt_x[k]``, ``tilt_y[k]`` (None: no
+    tilt) and ``report[k]`` (its id)."""
+
+    __slots__ = ("b1", "b2", "eraser", "p", "range", "report", "reports", "tilt_x", "tilt_y", "tip", "x", "y")
+
+    def __init__(self) -> None:
+        self.reports: list[bytes] = []
+        self.x: list[float] = []
+        self.y: list[float] = []
+        self.p: list[float] = []
+        self.tip: list[bool] = []
+        self.range: list[bool] = []
+        self.eraser: list[bool] = []
+        self.b1: list[bool] = []
+        self.b2: list[bool] = []
+        self.tilt_x: list[float | None] = []
+        self.tilt_y: list[float | None] = []
+        self.report: list[int] = []
 
 
-def _ignore(stats: DecodeStats, reason: str, count: int, out: dict[bytes, Row | str], data: bytes) -> None:
+def _ignore(stats: DecodeStats, reason: str, count: int, out: dict[bytes, str], data: bytes) -> None:
     stats.ignored[reason] += count
     out[data] = reason
 
@@ -77,12 +96,13 @@ def _clip(v: float) -> float:
     return 0.0 if v < 0.0 else 1.0 if v > 1.0 else v
 
 
-def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats) -> dict[bytes, Row | str]:
-    """The rows of one report id's distinct reports ``(bytes, count)`` (a str: why it is ignored, counted)."""
+def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats, samples: Samples,
+           ignored: dict[bytes, str]) -> None:
+    """One report id's distinct reports ``(bytes, count)`` decoded into ``samples``, or their reasons into
+    ``ignored``; the counts go to ``stats``."""
     rid = lay.report_id
-    out: dict[bytes, Row | str] = {}
     if lay.frame_byte is not None or (lay.tool is not None and lay.pen_tools):
-        reports = _pen_reports(lay, reports, stats, out)
+        reports = _pen_reports(lay, reports, stats, ignored)
     datas = [data for data, _ in reports]
     counts = [count for _, count in reports]
     # bits past the layout's length are never read, so the whole report is one integer
@@ -130,19 +150,25 @@ def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats)
     for name, got, declared in (("x", (x_lo, x_hi), lay.x), ("y", (y_lo, y_hi), lay.y)):
         if got != (declared.lo, declared.hi):
             stats.widened.add(f"0x{rid:02x} {name}")
-    tilt_x, tilt_y = _tilt(lay.tilt_x), _tilt(lay.tilt_y)
     x_span, y_span = x_hi - x_lo, y_hi - y_lo
-    out.update(zip(datas, [
-        (_clip((v[0] - x_lo) / x_span), _clip((v[1] - y_lo) / y_span), p, tip, rng, eraser, b1, b2, tilt_x(v[3]),
-         tilt_y(v[4]), rid)
-        for v, (tip, p, eraser, b1, b2), rng in zip(values, pen, ranges, strict=True)
-    ], strict=True))
+    samples.reports += datas
+    samples.x += [_clip((v[0] - x_lo) / x_span) for v in values]
+    samples.y += [_clip((v[1] - y_lo) / y_span) for v in values]
+    tips, ps, erasers, b1s, b2s = zip(*pen, strict=True)
+    samples.tip += tips
+    samples.p += ps
+    samples.range += ranges
+    samples.eraser += erasers
+    samples.b1 += b1s
+    samples.b2 += b2s
+    samples.tilt_x += map(_tilt(lay.tilt_x), [v[3] for v in values])
+    samples.tilt_y += map(_tilt(lay.tilt_y), [v[4] for v in values])
+    samples.report += repeat(rid, len(values))
     stats.samples += sum(counts)
-    return out
 
 
 def _pen_reports(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats,
-                 out: dict[bytes, Row | str]) -> list[tuple[bytes, int]]:
+                 out: dict[bytes, str]) -> list[tuple[bytes, int]]:
     """The reports that are the pen's: pad, strip or dial reports and other tools (mice, lenses) are counted and
     their reasons put in ``out``."""
     rid, pens = lay.report_id, []
@@ -162,8 +188,8 @@ def _pen_reports(lay: PenLayout, reports: list[tuple[bytes, int]], stats: Decode
     return pens
 
 
-def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, int]) -> dict[bytes, Row | str]:
-    """Each distinct report's row, or why it is no pen sample, as `decode_batch` of all the reports gives.
+def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, int]) -> tuple[Samples, dict[bytes, str]]:
+    """Each distinct report's sample, or why it is no pen sample, as `decode_batch` of all the reports gives.
 
     Args:
         decoder: the device's decoder; its layouts are used, and its stats get the samples and the ignored reports
@@ -172,22 +198,22 @@ def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, int]) -> dict[b
         reports: each distinct report, with how many times it occurs.
     """
     stats = decoder.stats
-    out: dict[bytes, Row | str] = {}
+    samples, ignored = Samples(), {}
     groups: dict[int, list[tuple[bytes, int]]] = {}
     for data, count in reports.items():
         if not data:
-            _ignore(stats, "empty report", count, out, data)
+            _ignore(stats, "empty report", count, ignored, data)
             continue
         rid = data[0] if decoder.uses_ids else 0
         lay = decoder.layouts.get(rid)
         if lay is None:
             reason = (f"report 0x{rid:02x} is not a pen report" if rid in decoder.known_ids
                       else f"unknown report id 0x{rid:02x}")
-            _ignore(stats, reason, count, out, data)
+            _ignore(stats, reason, count, ignored, data)
         elif len(data) < lay.length:
-            _ignore(stats, f"{REASON_TRUNCATED} 0x{rid:02x}", count, out, data)
+            _ignore(stats, f"{REASON_TRUNCATED} 0x{rid:02x}", count, ignored, data)
         else:
             groups.setdefault(rid, []).append((data, count))
     for rid, group in groups.items():
-        out.update(_group(decoder.layouts[rid], group, stats))
-    return out
+        _group(decoder.layouts[rid], group, stats, samples, ignored)
+    return samples, ignored
