@@ -97,11 +97,10 @@ def write_plain(capture: PlainCapture, decoders: list[tuple[int, HidPenDecoder]]
         tail_of, ignored = _tails(decoder, events)
         tails = list(map(tail_of.__getitem__, events.reports))
         heads = time_texts(events)
-        if None in tails:
-            keep = list(map(operator.is_not, tails, repeat(None)))
-            first = keep.index(False)
+        if None in tails:  # the reports that give no sample: their times go too
+            first = tails.index(None)
             stats.first_ignored = (events.lines[first], ignored[events.data[events.reports[first]]])
-            heads, tails = list(compress(heads, keep)), list(compress(tails, keep))
+            heads, tails = list(compress(heads, tails)), list(filter(None, tails))
         for start in range(0, len(heads), LINES_AT_ONCE):
             stop = start + LINES_AT_ONCE
             out.write("".join(chain.from_iterable(zip(repeat('{"t": '), heads[start:stop], tails[start:stop]))))

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import operator
 from collections import Counter
-from dataclasses import dataclass
 from itertools import compress, count, repeat
 from operator import itemgetter
+from typing import NamedTuple
 
 from physink_tui.errors import CaptureFormatError
 from physink_tui.input.captures.capture_types import GLITCH_SECONDS, MAX_SECONDS, BadLine, CaptureDevice
@@ -23,8 +23,7 @@ from physink_tui.input.captures.parser import CaptureParser
 _HEADER_KINDS = frozenset(("R:", "N:", "P:", "I:", "D:"))
 
 
-@dataclass(frozen=True, slots=True)
-class PlainEvents:
+class PlainEvents(NamedTuple):
     """One device's reports as the capture spells them, in file order.
 
     Attributes:
@@ -44,8 +43,7 @@ class PlainEvents:
     counts: Counter[str]
 
 
-@dataclass(frozen=True, slots=True)
-class PlainCapture:
+class PlainCapture(NamedTuple):
     """A capture read by `read_plain`: its devices, in the order the full parser gives, and their events (it has no
     bad lines: a capture with one is not plain)."""
 
