@@ -95,12 +95,13 @@ def write_plain(capture: PlainCapture, decoders: list[tuple[int, HidPenDecoder]]
         if times != sorted(times):  # (sorting sorted times is one pass)
             stats.backwards += sum(map(operator.lt, times[1:], times))
         tail_of, ignored = _tails(decoder, events)
-        tails = list(map(tail_of.__getitem__, events.reports))
+        maybe = list(map(tail_of.__getitem__, events.reports))
         heads = time_texts(events)
-        if None in tails:  # the reports that give no sample: their times go too
-            first = tails.index(None)
+        if None in maybe:  # the reports that give no sample: their times go too
+            first = maybe.index(None)
             stats.first_ignored = (events.lines[first], ignored[events.data[events.reports[first]]])
-            heads, tails = list(compress(heads, tails)), list(filter(None, tails))
+            heads = list(compress(heads, maybe))
+        tails = list(filter(None, maybe))
         for start in range(0, len(heads), LINES_AT_ONCE):
             stop = start + LINES_AT_ONCE
             out.write("".join(chain.from_iterable(zip(repeat('{"t": '), heads[start:stop], tails[start:stop]))))

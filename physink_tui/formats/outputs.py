@@ -19,7 +19,7 @@ from pathlib import Path
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.atomic_write import fsync_directory, write_text_atomic
-from physink_tui.formats.stdout_guard import reason
+from physink_tui.formats.stdout_guard import reason as reason  # (re-exported: its callers import it from here)
 
 #: Every file name a run of this program writes into an output folder (and so removes from a reused one).
 OWN_FILES = ("project.json", "timeline.json", "timeline.txt", "gestures.jsonl", "samples.jsonl", "summary.txt",

@@ -10,6 +10,7 @@ import alone costs more than a small capture's decoding: `physink decode`'s plai
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from itertools import compress, repeat
 from typing import Any
 
@@ -106,7 +107,7 @@ def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats,
     datas = [data for data, _ in reports]
     counts = [count for _, count in reports]
     # bits past the layout's length are never read, so the whole report is one integer
-    values = list(map(raw_reader(lay), map(int.from_bytes, datas, repeat("little"))))
+    values = list(map(raw_reader(lay), map(partial(int.from_bytes, byteorder="little"), datas)))
     pressure = lay.pressure
     floor = p_lo = p_hi = 0
     if pressure is not None:
@@ -198,7 +199,7 @@ def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, int]) -> tuple[
         reports: each distinct report, with how many times it occurs.
     """
     stats = decoder.stats
-    samples, ignored = Samples(), {}
+    samples, ignored = Samples(), dict[bytes, str]()
     groups: dict[int, list[tuple[bytes, int]]] = {}
     for data, count in reports.items():
         if not data:
