@@ -51,9 +51,12 @@ def _tilts(values: list[float | None]) -> list[str]:
 def _tails(decoder: HidPenDecoder, events: PlainEvents) -> tuple[dict[str, str | None], dict[bytes, str]]:
     """Each distinct report text's line tail, what follows its time (None: no sample), and why each report that
     gives no sample is ignored; the counts go to ``decoder.stats``."""
-    distinct: dict[bytes, int] = {}
-    for text, data in events.data.items():  # texts differing only in hex case are one report
-        distinct[data] = distinct.get(data, 0) + events.counts[text]
+    counts = list(map(events.counts.__getitem__, events.data))
+    distinct = dict(zip(events.data.values(), counts, strict=True))
+    if len(distinct) < len(events.data):  # texts differing only in hex case are one report
+        distinct = dict.fromkeys(distinct, 0)
+        for data, count in zip(events.data.values(), counts, strict=True):
+            distinct[data] += count
     s, ignored = decode_distinct(decoder, distinct)
     flags = [FLAG_TEXT[a | b << 1 | c << 2 | d << 3 | e << 4]
              for a, b, c, d, e in zip(s.tip, s.range, s.eraser, s.b1, s.b2, strict=True)]
@@ -63,7 +66,7 @@ def _tails(decoder: HidPenDecoder, events: PlainEvents) -> tuple[dict[str, str |
                                        _tilts(s.tilt_x), _tilts(s.tilt_y), s.report, strict=True)
     ], strict=True))
     tails.update(dict.fromkeys(ignored))
-    return {text: tails[data] for text, data in events.data.items()}, ignored
+    return dict(zip(events.data, map(tails.__getitem__, events.data.values()), strict=True)), ignored
 
 
 def time_texts(events: PlainEvents) -> list[str]:

@@ -9,9 +9,11 @@ import alone costs more than a small capture's decoding: `physink decode`'s plai
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable
 from functools import partial
 from itertools import compress, repeat
+from operator import itemgetter
 from typing import Any
 
 from physink_tui.input.hid.decoder import DecodeStats, HidPenDecoder
@@ -97,15 +99,15 @@ def _clip(v: float) -> float:
     return 0.0 if v < 0.0 else 1.0 if v > 1.0 else v
 
 
-def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats, samples: Samples,
+def _group(lay: PenLayout, datas: list[bytes], counts: list[int], stats: DecodeStats, samples: Samples,
            ignored: dict[bytes, str]) -> None:
-    """One report id's distinct reports ``(bytes, count)`` decoded into ``samples``, or their reasons into
-    ``ignored``; the counts go to ``stats``."""
+    """One report id's distinct reports (``datas``, each occurring ``counts`` times) decoded into ``samples``, or
+    their reasons into ``ignored``; the counts go to ``stats``."""
     rid = lay.report_id
     if lay.frame_byte is not None or (lay.tool is not None and lay.pen_tools):
-        reports = _pen_reports(lay, reports, stats, ignored)
-    datas = [data for data, _ in reports]
-    counts = [count for _, count in reports]
+        datas, counts = _pen_reports(lay, datas, counts, stats, ignored)
+        if not datas:
+            return
     # bits past the layout's length are never read, so the whole report is one integer
     values = list(map(raw_reader(lay), map(partial(int.from_bytes, byteorder="little"), datas)))
     pressure = lay.pressure
@@ -168,14 +170,14 @@ def _group(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats,
     stats.samples += sum(counts)
 
 
-def _pen_reports(lay: PenLayout, reports: list[tuple[bytes, int]], stats: DecodeStats,
-                 out: dict[bytes, str]) -> list[tuple[bytes, int]]:
-    """The reports that are the pen's: pad, strip or dial reports and other tools (mice, lenses) are counted and
-    their reasons put in ``out``."""
-    rid, pens = lay.report_id, []
+def _pen_reports(lay: PenLayout, datas: list[bytes], counts: list[int], stats: DecodeStats,
+                 out: dict[bytes, str]) -> tuple[list[bytes], list[int]]:
+    """The reports that are the pen's, and their counts: pad, strip or dial reports and other tools (mice,
+    lenses) are counted and their reasons put in ``out``."""
+    rid, pens, pen_counts = lay.report_id, [], []
     tool_at, tool_mask = lay.tool if lay.tool is not None else (0, 0)
     tool_mask = (1 << tool_mask) - 1
-    for data, count in reports:
+    for data, count in zip(datas, counts, strict=True):
         if lay.frame_byte is not None:
             index, mask, values = lay.frame_byte
             if data[index] & mask in values:
@@ -185,8 +187,9 @@ def _pen_reports(lay: PenLayout, reports: list[tuple[bytes, int]], stats: Decode
         if lay.tool is not None and lay.pen_tools and tool not in lay.pen_tools:
             _ignore(stats, f"{REASON_TOOL} 0x{rid:02x}", count, out, data)
             continue
-        pens.append((data, count))
-    return pens
+        pens.append(data)
+        pen_counts.append(count)
+    return pens, pen_counts
 
 
 def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, int]) -> tuple[Samples, dict[bytes, str]]:
@@ -200,21 +203,28 @@ def decode_distinct(decoder: HidPenDecoder, reports: dict[bytes, int]) -> tuple[
     """
     stats = decoder.stats
     samples, ignored = Samples(), dict[bytes, str]()
-    groups: dict[int, list[tuple[bytes, int]]] = {}
-    for data, count in reports.items():
-        if not data:
-            _ignore(stats, "empty report", count, ignored, data)
-            continue
-        rid = data[0] if decoder.uses_ids else 0
+    datas = list(reports)
+    if b"" in reports:
+        datas.remove(b"")
+        _ignore(stats, "empty report", reports[b""], ignored, b"")
+    rids = list(map(itemgetter(0), datas)) if decoder.uses_ids else [0] * len(datas)
+    for rid in dict.fromkeys(rids):  # each report id, in the order they first come
+        members = list(compress(datas, map(rid.__eq__, rids))) if len(rids) > 1 else datas
+        counts = list(map(reports.__getitem__, members))
         lay = decoder.layouts.get(rid)
         if lay is None:
             reason = (f"report 0x{rid:02x} is not a pen report" if rid in decoder.known_ids
                       else f"unknown report id 0x{rid:02x}")
-            _ignore(stats, reason, count, ignored, data)
-        elif len(data) < lay.length:
-            _ignore(stats, f"{REASON_TRUNCATED} 0x{rid:02x}", count, ignored, data)
-        else:
-            groups.setdefault(rid, []).append((data, count))
-    for rid, group in groups.items():
-        _group(decoder.layouts[rid], group, stats, samples, ignored)
+            stats.ignored[reason] += sum(counts)
+            ignored.update(dict.fromkeys(members, reason))
+            continue
+        if min(map(len, members)) < lay.length:
+            whole = list(map(lay.length.__le__, map(len, members)))
+            for data, count in zip(compress(members, map(operator.not_, whole)),
+                                   compress(counts, map(operator.not_, whole)), strict=True):
+                _ignore(stats, f"{REASON_TRUNCATED} 0x{rid:02x}", count, ignored, data)
+            members, counts = list(compress(members, whole)), list(compress(counts, whole))
+            if not members:
+                continue
+        _group(lay, members, counts, stats, samples, ignored)
     return samples, ignored
