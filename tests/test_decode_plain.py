@@ -134,3 +134,26 @@ def test_the_decode_command_does_not_import_numpy() -> None:
     assert done.returncode == 0, done.stderr
     assert done.stderr.endswith("no numpy")
     assert done.stdout.count("\n") > 1000
+
+
+def test_a_capture_past_the_plain_size_streams_through_the_numpy_path(monkeypatch, capsys) -> None:
+    """A capture larger than `PLAIN_MAX_BYTES` is read once (its first bytes are not lost) and decoded the same."""
+    from physink_tui.cli import main
+    from physink_tui.commands import decode
+
+    assert main(["decode", str(WACOM)]) == 0
+    plain = capsys.readouterr()
+    taken = []
+    real = decode.stream_decode
+
+    def counted(*args, **kwargs):  # the numpy path, noted
+        taken.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(decode, "PLAIN_MAX_BYTES", 1000)
+    monkeypatch.setattr(decode, "stream_decode", counted)
+    assert main(["decode", str(WACOM)]) == 0
+    streamed = capsys.readouterr()
+    assert taken == [1]
+    assert streamed.out == plain.out and streamed.err == plain.err
+
