@@ -136,16 +136,15 @@ class _Prefixed:
     """A binary file whose first bytes were already read: ``read`` gives those, then the rest of the file."""
 
     def __init__(self, head: bytes, rest: Readable) -> None:
-        self.head, self.rest = head, rest
+        self.head, self.at, self.rest = head, 0, rest
 
     def read(self, size: int = -1) -> bytes:
-        if not self.head:
+        if self.at >= len(self.head):
+            self.head = b""  # given out: let it go
             return self.rest.read(size)
-        if size < 0:
-            got, self.head = self.head + self.rest.read(), b""
-        else:
-            got, self.head = self.head[:size], self.head[size:]
-        return got
+        end = len(self.head) if size < 0 else self.at + size
+        got, self.at = self.head[self.at:end], min(end, len(self.head))
+        return got + self.rest.read() if size < 0 else got
 
 
 def read_either(path: str, plain: bool) -> PlainCapture | CaptureColumns:
