@@ -200,9 +200,9 @@ def clear_aimed(scene: Scene, timeline: Timeline, start: Parameters) -> list[Aim
         cells: list[tuple[float, tuple[int, int]]] = []
         for lo, hi in ((0, LOW_FLIGHTS), (LOW_FLIGHTS, len(CLEAR_FACTORS))):  # the low and the high family
             family = grid[:, lo:hi]
-            found = clear_regions(family)
-            cells += [(float(rank), (row, lo + col)) for rank, (row, col) in enumerate(found)]
-            graze = nearly_clear(family, reach) if not found else None
+            regions = clear_regions(family)
+            cells += [(float(rank), (row, lo + col)) for rank, (row, col) in enumerate(regions)]
+            graze = nearly_clear(family, reach) if not regions else None
             if graze is not None:
                 cells.append((0.5, (graze[0], lo + graze[1])))  # after every face's widest clear region
         for rank, (row, col) in cells:

@@ -1,16 +1,18 @@
-"""Whether a ballistic flight is clear of the scene (issue 27): the flight times for which a start body thrown at
-an aim point reaches it without touching anything on the way; geometry only, no stepping.
+"""Whether a ballistic flight is clear of the scene (issue 27): for aim points and flight times, how far a start
+body thrown at the point stays from everything on the way; geometry only, no stepping.
 
-A launch aimed at a point is one of a family: the same point reached in any flight time, from a lob to a
-near-straight shot. Which of them pass between the other bodies is geometry, decided here before any rollout: the
-body's centre is followed along the parabola (`SAMPLE_SPACING` apart) and its distance to every other body's outline
-(`Obstacle`: segments, thickened for open polylines and round bodies) must stay above the body's reach plus
-`MARGIN`; the target itself only counts until the centre comes within `ARRIVAL` reaches of the aim point (there the
-body is arriving). A body the start body already touches where it starts is no obstacle (it leaves it).
+A launch aimed at a point is one of a family: the same point reached in any flight time, from a near-straight shot
+to a lob. Which of them pass between the other bodies is geometry, decided here before any rollout: the body's
+centre is followed along the parabola (`SAMPLES` points) and its distance to every other body's outline
+(`Obstacle`: segments, thickened for open polylines and round bodies) less its reach is the flight's clearance
+(`clearance_grid`, every aim point by every flight time at once). The target counts until the body arrives (within
+`ARRIVAL` reaches of the aim point) — a container aimed into, only where the body's centre is outside its hull. A
+body the start body already touches where it starts is no obstacle (it leaves it).
 
-The clear flight times come in intervals; the middle of the widest (in log time) is the launch least sensitive to
-what the rollout does differently from the parabola (spin, a bounce's friction) — a needle among launch velocities,
-such as the straight shot between a platform's corner and a basket's rim, is the middle of a short interval here.
+Clear flights (clearance above `MARGIN`) come in connected regions of (aim point, flight time); the cell deepest
+inside a region is the launch least sensitive to what the rollout does differently from the parabola
+(`clear_regions`). Where none is clear, the flight that comes nearest (`nearly_clear`) is often clear in the physics
+all the same: figure 3-22's shot under a platform's corner and over a basket's rim clears both by less than a unit.
 """
 
 from __future__ import annotations
@@ -80,7 +82,7 @@ def _placed(body: Body) -> list[Point]:
     return [(px + x * c - y * s, py + x * s + y * c) for x, y in body.outline]
 
 
-def _distances(points: np.ndarray, obstacle: Obstacle) -> np.ndarray:
+def distances(points: np.ndarray, obstacle: Obstacle) -> np.ndarray:
     """Each point's distance to the obstacle's surface (negative inside its thickness)."""
     a, b = obstacle.segments[:, 0, :], obstacle.segments[:, 1, :]
     ab = b - a
@@ -88,7 +90,7 @@ def _distances(points: np.ndarray, obstacle: Obstacle) -> np.ndarray:
     ap = points[:, None, :] - a[None, :, :]
     u = np.clip((ap * ab[None, :, :]).sum(axis=2) / length2[None, :], 0.0, 1.0)
     nearest = a[None, :, :] + u[:, :, None] * ab[None, :, :]
-    return np.sqrt(((points[:, None, :] - nearest) ** 2).sum(axis=2)).min(axis=1) - obstacle.thickness
+    return np.asarray(np.sqrt(((points[:, None, :] - nearest) ** 2).sum(axis=2)).min(axis=1) - obstacle.thickness)
 
 
 def flights(origin: Point, centres: np.ndarray, factors: Sequence[float], gravity: Point = GRAVITY) -> np.ndarray:
@@ -101,7 +103,7 @@ def flights(origin: Point, centres: np.ndarray, factors: Sequence[float], gravit
     t = np.maximum(slowest[:, None] * np.asarray(factors, dtype=float)[None, :], 1e-9)  # (m, f)
     v = d[:, None, :] / t[..., None] - g[None, None, :] * t[..., None] / 2
     s = t[..., None] * np.linspace(0.0, 1.0, SAMPLES + 1)[None, None, :]  # (m, f, n)
-    return o + v[:, :, None, :] * s[..., None] + g * s[..., None] ** 2 / 2
+    return np.asarray(o + v[:, :, None, :] * s[..., None] + g * s[..., None] ** 2 / 2)
 
 
 def clearance_grid(origin: Point, centres: np.ndarray, reach: float, target: str,
@@ -120,31 +122,33 @@ def clearance_grid(origin: Point, centres: np.ndarray, reach: float, target: str
                 < ARRIVAL * reach).reshape(-1)
     least = np.full(m * f * n, np.inf)
     for o in scene_obstacles:
-        if float(_distances(start, o)[0]) < reach + MARGIN:
+        if float(distances(start, o)[0]) < reach + MARGIN:
             continue  # it starts touching it: it leaves it
-        near = _near(points, o, reach + MARGIN + NEAR)
+        near = near_bounds(points, o, reach + MARGIN + NEAR)
         if inside and o.id == target:
-            near &= ~_in_hull(points, o.segments.reshape(-1, 2))
+            near &= ~in_hull(points, o.segments.reshape(-1, 2))
         if o.id == target:
             near &= ~arriving
         if near.any():
-            least[near] = np.minimum(least[near], _distances(points[near], o))
-    return np.minimum(least.reshape(m, f, n).min(axis=2) - reach, FAR)
+            least[near] = np.minimum(least[near], distances(points[near], o))
+    return np.asarray(np.minimum(least.reshape(m, f, n).min(axis=2) - reach, FAR))
 
 
-def _near(points: np.ndarray, obstacle: Obstacle, within: float) -> np.ndarray:
+def near_bounds(points: np.ndarray, obstacle: Obstacle, within: float) -> np.ndarray:
     """Which points lie within ``within`` of the obstacle's bounds (the others are further from it than that)."""
     ends = obstacle.segments.reshape(-1, 2)
     pad = within + obstacle.thickness
     lo, hi = ends.min(axis=0) - pad, ends.max(axis=0) + pad
-    return (points[:, 0] >= lo[0]) & (points[:, 0] <= hi[0]) & (points[:, 1] >= lo[1]) & (points[:, 1] <= hi[1])
+    inside = (points[:, 0] >= lo[0]) & (points[:, 0] <= hi[0]) & (points[:, 1] >= lo[1]) & (points[:, 1] <= hi[1])
+    return np.asarray(inside)
 
 
 def clear_regions(clear: np.ndarray, threshold: float = MARGIN) -> list[tuple[int, int]]:
     """Of a clearance grid (aim rows, factor columns): in each connected region of cells clear by more than
-    ``threshold`` (4-neighbours), the cell deepest inside it (`_inside`), then furthest from everything; the
+    ``threshold`` (4-neighbours), the cell deepest inside it (`depths`), then furthest from everything; the
     largest region first."""
     ok = clear > threshold
+    depth = depths(ok)
     seen = np.zeros_like(ok)
     found: list[tuple[int, tuple[int, int]]] = []
     rows, cols = ok.shape
@@ -161,7 +165,7 @@ def clear_regions(clear: np.ndarray, threshold: float = MARGIN) -> list[tuple[in
                     if 0 <= rr < rows and 0 <= cc < cols and ok[rr, cc] and not seen[rr, cc]:
                         seen[rr, cc] = True
                         stack.append((rr, cc))
-            best = max(cells, key=lambda rc: (_inside(ok, rc), float(clear[rc]), -rc[0], -rc[1]))
+            best = max(cells, key=lambda rc: (int(depth[rc]), float(clear[rc]), -rc[0], -rc[1]))
             found.append((len(cells), best))
     found.sort(key=lambda x: (-x[0], x[1]))
     return [cell for _, cell in found]
@@ -179,18 +183,26 @@ def nearly_clear(clear: np.ndarray, reach: float) -> tuple[int, int] | None:
     return regions[0] if regions else None
 
 
-def _inside(ok: np.ndarray, cell: tuple[int, int]) -> int:
-    """How many cells a square round ``cell`` can grow before it takes in one not clear (or leaves the grid)."""
-    r, c = cell
+def depths(ok: np.ndarray) -> np.ndarray:
+    """For each cell of a mask: how many cells a square round it can grow before it takes in one not set (or
+    leaves the grid); -1 for the cells not set."""
+    depth = np.where(ok, 0, -1)
+    cur = ok.copy()
     k = 0
-    while True:
-        r0, r1, c0, c1 = r - k - 1, r + k + 2, c - k - 1, c + k + 2
-        if r0 < 0 or c0 < 0 or r1 > ok.shape[0] or c1 > ok.shape[1] or not ok[r0:r1, c0:c1].all():
-            return k
+    while cur.any():
+        grown = np.zeros((cur.shape[0] + 2, cur.shape[1] + 2), dtype=bool)
+        grown[1:-1, 1:-1] = cur
+        eroded = np.ones_like(cur)
+        for dr in (0, 1, 2):
+            for dc in (0, 1, 2):
+                eroded &= grown[dr:dr + cur.shape[0], dc:dc + cur.shape[1]]
         k += 1
+        depth[eroded] = k
+        cur = eroded
+    return depth
 
 
-def _in_hull(points: np.ndarray, outline: np.ndarray) -> np.ndarray:
+def in_hull(points: np.ndarray, outline: np.ndarray) -> np.ndarray:
     """Which points lie in the convex hull of ``outline``'s points."""
     hull = _convex_hull(outline)
     if len(hull) < 3:
