@@ -13,7 +13,9 @@ from physink_tui.scene.components import MATERIALS, Body
 from physink_tui.scene.physics.world import GRAVITY
 from physink_tui.session.session import Session
 from physink_tui.sim.aim import aim_points, aimed, clear_aimed, launch
+from physink_tui.sim.chain import chain_aimed, demonstrated_chain, rebound
 from physink_tui.sim.clearance import clearance_grid, flights, obstacles
+from physink_tui.sim.evaluate import evaluate, rollout_seconds
 from physink_tui.sim.seeding import seed
 from physink_tui.sim.where import place
 from physink_tui.timeline.qualitative import side_along
@@ -96,3 +98,33 @@ def test_a_clear_flight_passes_everything_it_is_aimed_past() -> None:
     grid = clearance_grid(ball.position, centre, ball.radius, basket, obstacles(s.scene, ball.id), [0.3, 2.5],
                           inside=True)
     assert grid[0, 0] < 0 < grid[0, 1]
+
+
+def test_a_bounce_keeps_its_normal_speed_times_the_restitution() -> None:
+    v = np.array([[300.0, 400.0]])
+    up = np.array([[0.0, -1.0]])
+    assert rebound(v, up, 1.0, 1.0).tolist() == [[300.0, -400.0]]
+    assert rebound(v, up, 0.5, 2 / 3).round(6).tolist() == [[200.0, -200.0]]
+    assert rebound(-v, up, 1.0, 1.0).tolist() == [[-300.0, -400.0]], "a body leaving the surface does not bounce"
+
+
+def test_the_later_legs_are_aimed_through_the_first_contacts_bounce() -> None:
+    # figure 3-21 in the first drawing: onto B's top, then into the basket; the first launch whose modelled
+    # bounce off B lands in the basket reproduces the whole demonstration when rolled out
+    s = first_drawing("hits_b_once")
+    names = s.scene.names()
+    found = demonstrated_chain(s.scene, s.timeline)
+    assert found is not None
+    ball, chain = found
+    assert names[ball] == "ball"
+    assert [(names[b], side) for b, side in chain] == [("platform b", "top"), ("basket", "inside")]
+    start = seed(s.scene, s.timeline, s.canvas)
+    launches = chain_aimed(s.scene, s.timeline, start)
+    assert launches and all(names[a.body] == "ball" for a in launches)
+    score = evaluate(s.scene, s.timeline, s.canvas, launches[0].parameters, rollout_seconds(s.timeline))
+    assert score.qualitative == 0 and not score.exploded
+    twice = first_drawing("hits_b_twice")
+    found = demonstrated_chain(twice.scene, twice.timeline)
+    assert found is not None
+    assert [(names[b], side) for b, side in found[1]] == [("platform b", "top"), ("platform b", "top"),
+                                                          ("basket", "inside")]

@@ -83,7 +83,8 @@ class Phase(StrEnum):
     FAMILY = "family"
     """The seed's flight-time family (`FAMILY_STEPS`)."""
     AIM = "aim"
-    """Launches aimed at the first contact's surface (`aim.aimed`), `AIM_GENERATION` at a time."""
+    """Launches aimed at the demonstrated contacts' surfaces (`chain.chain_aimed`, `aim.aimed`), `AIM_GENERATION` at a
+    time."""
     AIM_RUN = "aim run"
     """CMA-ES in `aim.AimSpace` round the best aimed candidate (at most `AIM_RUN_ROLLOUTS`)."""
     SCAN = "scan"
