@@ -123,7 +123,7 @@ def _angle(n: tuple[float, float]) -> float:
     return math.atan2(n[0], -n[1])
 
 
-def _first_target(scene: Scene, timeline: Timeline) -> tuple[Body, Body, str, tuple[float, float] | None] | None:
+def first_target(scene: Scene, timeline: Timeline) -> tuple[Body, Body, str, tuple[float, float] | None] | None:
     """The start body, the fixed body of its first demonstrated contact, that body's side and the demonstrated
     contact point; None when the demonstration does not have one start body with such a first contact."""
     movements = start_movements(scene, timeline)
@@ -144,11 +144,11 @@ def _first_target(scene: Scene, timeline: Timeline) -> tuple[Body, Body, str, tu
 def aim_points(scene: Scene, timeline: Timeline) -> tuple[str, tuple[Aim, ...]] | None:
     """The start body and its aim points on its first demonstrated contact, nearest the demonstrated contact
     point first; None when the demonstration does not have one start body with a first contact to aim at."""
-    found = _first_target(scene, timeline)
+    found = first_target(scene, timeline)
     if found is None:
         return None
     body, target, side, point = found
-    reach = _reach(body)
+    reach = reach_of(body)
     aims = [Aim(p, n, (p[0] + (reach + CLEARANCE) * n[0], p[1] + (reach + CLEARANCE) * n[1]), corner, edge, arc,
                 reach) for p, n, corner, edge, arc in _surface(target, side)]
     if not aims:
@@ -182,19 +182,19 @@ def clear_aimed(scene: Scene, timeline: Timeline, start: Parameters) -> list[Aim
     edge facing the demonstrated side, or a corner's fan) sampled `FACE_SAMPLES` times against
     `clearance.CLEAR_FACTORS` flight times; of each connected clear region of (place, flight time), the launch
     furthest from everything. The largest region of each face first, faces nearest the demonstrated point first."""
-    found = _first_target(scene, timeline)
+    found = first_target(scene, timeline)
     if found is None:
         return []
     body, target, side, point = found
-    reach = _reach(body)
-    faces = _faces(target, side)
-    if not faces:
+    reach = reach_of(body)
+    target_faces = faces(target, side)
+    if not target_faces:
         return []
     shown = point or (target.position[0], target.position[1])
     scene_obstacles = obstacles(scene, body.id)
     ranked: list[tuple[float, float, Aimed]] = []
-    for face in faces:
-        aims = [_face_aim(face, k / (FACE_SAMPLES - 1), reach) for k in range(FACE_SAMPLES)]
+    for face in target_faces:
+        aims = [face_aim(face, k / (FACE_SAMPLES - 1), reach) for k in range(FACE_SAMPLES)]
         centres = np.array([a.centre for a in aims])
         grid = clearance_grid(body.position, centres, reach, target.id, scene_obstacles, inside=side == "inside")
         cells: list[tuple[float, tuple[int, int]]] = []
@@ -219,7 +219,7 @@ Face = tuple[Point, Point, tuple[float, float] | None]
 """An edge (its ends, None) or a corner's fan (the corner twice, the normal's angles it spans)."""
 
 
-def _faces(target: Body, side: str) -> list[Face]:
+def faces(target: Body, side: str) -> list[Face]:
     """The target's edges facing ``side`` and its corners' fans (from `_surface`'s samples), each once."""
     out: list[Face] = []
     for p, n, corner, edge, arc in _surface(target, side):
@@ -234,7 +234,7 @@ def _faces(target: Body, side: str) -> list[Face]:
     return out
 
 
-def _face_aim(face: Face, u: float, reach: float) -> Aim:
+def face_aim(face: Face, u: float, reach: float) -> Aim:
     """The aim ``u`` (0-1) of the way along an edge, or round a corner's fan."""
     a, b, span = face
     if span is None:
@@ -250,7 +250,8 @@ def _pushed(p: Point, n: Point, reach: float) -> tuple[float, float]:
     return (p[0] + (reach + CLEARANCE) * n[0], p[1] + (reach + CLEARANCE) * n[1])
 
 
-def _reach(body: Body) -> float:
+def reach_of(body: Body) -> float:
+    """How far a body's surface lies from its centre at most: a circle's radius, else its bounds' half-diagonal."""
     return body.radius if body.shape == "circle" else _half_diagonal(body)
 
 

@@ -4,7 +4,7 @@ demonstrated contact on to the next ones, surface after surface; geometry only, 
 A later contact is reached from the state after the one before: where the body left the surface and how fast.
 That state is set by the first flight (where along the first surface it arrives, and in what flight time, the
 two coordinates `aim.AimSpace` searches), so the later legs are aimed through it: every place along each face of
-the first target (`aim._faces`) by every flight time (`clearance.CLEAR_FACTORS`) is followed through its bounces —
+the first target (`aim.faces`) by every flight time (`clearance.CLEAR_FACTORS`) is followed through its bounces —
 ballistic flight, the first body touched (`clearance.Obstacle`) and on which side, the rebound there
 (`rebound`: the normal speed times the contact's restitution, the larger of the two bodies', the tangential speed
 kept, or two thirds of it for a round body that grips, which starts it rolling) — and scored by how many of the
@@ -84,20 +84,20 @@ def chain_aimed(scene: Scene, timeline: Timeline, start: Parameters) -> list[aim
     """Launches at the first contact's surface whose modelled bounces make the most of the demonstrated contacts
     with fixed bodies in order (at least `MIN_CHAIN`); see the module docstring."""
     found = demonstrated_chain(scene, timeline)
-    first = aiming._first_target(scene, timeline)
+    first = aiming.first_target(scene, timeline)
     if found is None or first is None or len(found[1]) < MIN_CHAIN:
         return []
     body, target, side, _point = first
     chain = found[1]
     if chain[0] != (target.id, side):
         return []
-    reach = aiming._reach(body)
+    reach = aiming.reach_of(body)
     scene_obstacles = obstacles(scene, body.id)
     bodies = {b.id: b for b in scene.bodies()}
     friction = start.bodies[body.id].friction if body.id in start.bodies else body.material.friction
     ranked: list[tuple[int, int, aiming.Aimed]] = []
-    for face in aiming._faces(target, side):
-        aims = [aiming._face_aim(face, k / (aiming.FACE_SAMPLES - 1), reach) for k in range(aiming.FACE_SAMPLES)]
+    for face in aiming.faces(target, side):
+        aims = [aiming.face_aim(face, k / (aiming.FACE_SAMPLES - 1), reach) for k in range(aiming.FACE_SAMPLES)]
         made = _made(body, aims, chain, reach, scene_obstacles, bodies, friction)
         best = int(made.max())
         if best < MIN_CHAIN:
