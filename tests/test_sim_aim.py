@@ -6,11 +6,16 @@ import math
 from functools import cache
 from pathlib import Path
 
+import numpy as np
+
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.scene.components import MATERIALS, Body
 from physink_tui.scene.physics.world import GRAVITY
 from physink_tui.session.session import Session
-from physink_tui.sim.aim import aim_points, aimed, launch
+from physink_tui.sim.aim import aim_points, aimed, clear_aimed, launch
+from physink_tui.sim.chain import chain_aimed, demonstrated_chain, rebound
+from physink_tui.sim.clearance import clearance_grid, flights, obstacles
+from physink_tui.sim.evaluate import evaluate, rollout_seconds
 from physink_tui.sim.seeding import seed
 from physink_tui.sim.where import place
 from physink_tui.timeline.qualitative import side_along
@@ -45,7 +50,7 @@ def test_the_ball_is_aimed_along_the_top_of_platform_a_ends_and_corners_included
     demonstrated = next(ev for ev in s.timeline.events if ev.type == "contact").point
     assert math.dist(aims[0].point, demonstrated) == min(math.dist(a.point, demonstrated) for a in aims)
     start = seed(s.scene, s.timeline, s.canvas)
-    assert len(aimed(s.scene, s.timeline, start)) == 4 * len(aims)
+    assert len(aimed(s.scene, s.timeline, start)) == len(clear_aimed(s.scene, s.timeline, start)) + 4 * len(aims)
 
 
 def test_a_launch_passes_through_its_aim_point() -> None:
@@ -67,3 +72,59 @@ def test_a_place_on_a_platform_is_told_in_words() -> None:
     assert place(box, (700.0, 580.0))[1] == "25% of the way from its left end"
     turned = Body("b3", "box", box.outline, 0.0, (800.0, 600.0), math.pi / 2, MATERIALS["box"], "wall")
     assert place(turned, (780.0, 800.0))[1] == "at its right corner", "read in the body's own frame"
+
+
+def test_a_clear_flight_passes_everything_it_is_aimed_past() -> None:
+    # figure 3-22 in the first drawing: the ball under B's left corner and over the basket's rim; of the flights
+    # aimed at the basket's inside, some are low shots onto its right wall, which pass B's corner and the rim by less
+    # than a unit more than the ball's radius: the aim takes the one that comes nearest to clear
+    s = first_drawing("below_b")
+    names = s.scene.names()
+    start = seed(s.scene, s.timeline, s.canvas)
+    ball = next(b for b in s.scene.bodies() if names[b.id] == "ball")
+    shots = [a for a in clear_aimed(s.scene, s.timeline, start) if a.factor < 0.2]
+    assert shots, "a low shot is among the aimed flights"
+    platform_b = next(b for b in s.scene.bodies() if names[b.id] == "platform b")
+    c, sn = math.cos(platform_b.angle), math.sin(platform_b.angle)
+    corner = min(((platform_b.position[0] + x * c - y * sn, platform_b.position[1] + x * sn + y * c)
+                  for x, y in platform_b.outline), key=lambda p: p[0] - p[1])  # its bottom left
+    for shot in shots:
+        path = flights(ball.position, np.array([shot.aim.centre]), [shot.factor])[0, 0]
+        passing = path[np.abs(path[:, 0] - corner[0]) < 20]
+        assert len(passing) and (passing[:, 1] > corner[1]).all(), "it passes under B's corner"
+    # the grid's verdicts: a lob over everything is clear, a flight through platform B is not
+    basket = next(b.id for b in s.scene.bodies() if names[b.id] == "basket")
+    centre = np.array([[1400.0, 860.0]])
+    grid = clearance_grid(ball.position, centre, ball.radius, basket, obstacles(s.scene, ball.id), [0.3, 2.5],
+                          inside=True)
+    assert grid[0, 0] < 0 < grid[0, 1]
+
+
+def test_a_bounce_keeps_its_normal_speed_times_the_restitution() -> None:
+    v = np.array([[300.0, 400.0]])
+    up = np.array([[0.0, -1.0]])
+    assert rebound(v, up, 1.0, 1.0).tolist() == [[300.0, -400.0]]
+    assert rebound(v, up, 0.5, 2 / 3).round(6).tolist() == [[200.0, -200.0]]
+    assert rebound(-v, up, 1.0, 1.0).tolist() == [[-300.0, -400.0]], "a body leaving the surface does not bounce"
+
+
+def test_the_later_legs_are_aimed_through_the_first_contacts_bounce() -> None:
+    # figure 3-21 in the first drawing: onto B's top, then into the basket; the first launch whose modelled
+    # bounce off B lands in the basket reproduces the whole demonstration when rolled out
+    s = first_drawing("hits_b_once")
+    names = s.scene.names()
+    found = demonstrated_chain(s.scene, s.timeline)
+    assert found is not None
+    ball, chain = found
+    assert names[ball] == "ball"
+    assert [(names[b], side) for b, side in chain] == [("platform b", "top"), ("basket", "inside")]
+    start = seed(s.scene, s.timeline, s.canvas)
+    launches = chain_aimed(s.scene, s.timeline, start)
+    assert launches and all(names[a.body] == "ball" for a in launches)
+    score = evaluate(s.scene, s.timeline, s.canvas, launches[0].parameters, rollout_seconds(s.timeline))
+    assert score.qualitative == 0 and not score.exploded
+    twice = first_drawing("hits_b_twice")
+    found = demonstrated_chain(twice.scene, twice.timeline)
+    assert found is not None
+    assert [(names[b], side) for b, side in found[1]] == [("platform b", "top"), ("platform b", "top"),
+                                                          ("basket", "inside")]

@@ -30,20 +30,28 @@
   optimiser moves in
 - `grid.py`: `ThesisGrid`: every combination of the thesis's grid values (3.4.5; the steps it does not give marked)
   in odometer order, 16 at a time
-- `aim.py`: aiming at surfaces (issue 27): `aim_points` samples the fixed body of the start body's first
-  demonstrated contact along its edges facing the demonstrated side (ends included) and round its corners (a fan of
-  normals), each as where the start body's centre is when it touches; `aimed` launches at each (ballistic, 4 flight
-  times); `AimSpace` is two coordinates round one aimed candidate (place along its edge or round its corner, flight
-  time) for CMA-ES to correct it by rollouts
+- `aim.py`: aiming at surfaces (issue 27): `aim_points` samples the fixed body of the start body's first demonstrated
+  contact along its edges facing the demonstrated side (ends included) and round its corners (a fan of normals), each as
+  where the start body's centre is when it touches; `aimed` launches first along the clear flights (`clear_aimed`: each
+  face by `clearance.py`, the low and high family apart), then at each aim point (ballistic, 4 flight times); `AimSpace`
+  is two coordinates round one aimed candidate (place along its edge or round its corner, flight time) for CMA-ES to
+  correct it by rollouts
+- `clearance.py`: whether a ballistic flight is clear of the drawing (geometry, no stepping): `clearance_grid`
+  (every aim point by every flight time, how far the body stays from everything on the way; a container aimed into
+  counts only outside its hull), `clear_regions` (the deepest cell of each clear region), `nearly_clear` (the
+  flight that comes nearest when none is clear: a shot that grazes a corner by a unit is often clear in the physics)
+- `chain.py`: the later legs aimed (`chain_aimed`): each place along the first target's faces by each flight time
+  followed through modelled bounces (`rebound`) and scored by the demonstrated contacts with fixed bodies it makes
+  in order (`demonstrated_chain`); the deepest launch of each region making the most is tried first
 - `where.py`: `differences_in_place`: for a reproduced demonstration, the matched contacts whose simulated point lies
   far from the drawn one, in words ("the ball meets the platform a at its right corner, not at its middle as you
   showed"); `place(body, point)` reads a point in the body's own frame
 - `leg_search.py`: `LegByLeg`, the default: the flight-time family of the seed first (zooming 2^(k/4), 2^(j/16),
-  2^(j/64)), then the aimed candidates (`aim.py`, 16 a generation) and one CMA-ES run in `AimSpace` round the best
-  of them (at most 60 rollouts), then the best one's start velocities turned and scaled together (the grid's
-  velocity steps, 48 rollouts), then CMA-ES (pycma, seeded) on the parameters of the first leg the best so far does
-  not reproduce, against that leg's score; restarts with doubled steps when a run stalls; a leg given up past step
-  4, another round over the legs while budget is left; what it asked for last is its `Phase`
+  2^(j/64)), then the aimed candidates (`chain.py`'s, then `aim.py`'s, made only then, 16 a generation) and one CMA-ES
+  run in `AimSpace` round the best of them (at most 60 rollouts), then the best one's start velocities turned and scaled
+  together (the grid's velocity steps, 48 rollouts), then CMA-ES (pycma, seeded) on the parameters of the first leg the
+  best so far does not reproduce, against that leg's score; restarts with doubled steps when a run stalls; a leg given
+  up past step 4, another round over the legs while budget is left; what it asked for last is its `Phase`
 - `search.py`: `Search(scene, timeline, canvas, strategy=, seed=, budget=)`: `next_generation()` / `tell(scores)` /
   `done` / `best` / `found_at` / `furthest` (most leading legs reproduced, `progress`); generation 0 is the seed;
   stops at the first qualitatively equivalent candidate; deterministic for a seed and budget whatever evaluates the

@@ -24,16 +24,15 @@ import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+
+import numpy as np
 
 from physink_tui.scene.components import Body, Point, Scene
 from physink_tui.scene.physics.world import GRAVITY
+from physink_tui.sim.clearance import CLEAR_FACTORS, clear_regions, clearance_grid, nearly_clear, obstacles
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.seeding import first_contact, start_movements
 from physink_tui.timeline.events import Timeline
-
-if TYPE_CHECKING:
-    import numpy as np
 from physink_tui.timeline.qualitative import side_along
 
 EDGE_SAMPLES = 5
@@ -44,6 +43,11 @@ FLIGHT_FACTORS = (1.0, 1.5, 0.75, 2.2)
 """Flight times, as multiples of the slowest-launch flight time to the aim point, in the order tried."""
 CIRCLE_SAMPLES = 16
 """Points round a round target."""
+FACE_SAMPLES = 25
+"""Places along each face (an edge, or a corner's fan) whose flights `clear_aimed` checks."""
+LOW_FLIGHTS = sum(f < 1.0 for f in CLEAR_FACTORS)
+"""`clearance.CLEAR_FACTORS` below the slowest-launch flight (factor 1): the low family of launches through a point
+(flatter, faster); the rest are the high family (lobs). `clear_aimed` looks for clear flights in each."""
 CLEARANCE = 1.0
 """Canvas units between the start body and the surface at its aim point (it arrives just touching)."""
 
@@ -119,9 +123,9 @@ def _angle(n: tuple[float, float]) -> float:
     return math.atan2(n[0], -n[1])
 
 
-def aim_points(scene: Scene, timeline: Timeline) -> tuple[str, tuple[Aim, ...]] | None:
-    """The start body and its aim points on its first demonstrated contact, nearest the demonstrated contact
-    point first; None when the demonstration does not have one start body with a first contact to aim at."""
+def first_target(scene: Scene, timeline: Timeline) -> tuple[Body, Body, str, tuple[float, float] | None] | None:
+    """The start body, the fixed body of its first demonstrated contact, that body's side and the demonstrated
+    contact point; None when the demonstration does not have one start body with such a first contact."""
     movements = start_movements(scene, timeline)
     if len(movements) != 1:
         return None
@@ -134,18 +138,29 @@ def aim_points(scene: Scene, timeline: Timeline) -> tuple[str, tuple[Aim, ...]] 
     side = dict(contact.sides).get(target_id)
     if not isinstance(target, Body) or side is None or not scene.is_fixed(target_id):
         return None
-    reach = body.radius if body.shape == "circle" else _half_diagonal(body)
+    return body, target, side, contact.point
+
+
+def aim_points(scene: Scene, timeline: Timeline) -> tuple[str, tuple[Aim, ...]] | None:
+    """The start body and its aim points on its first demonstrated contact, nearest the demonstrated contact
+    point first; None when the demonstration does not have one start body with a first contact to aim at."""
+    found = first_target(scene, timeline)
+    if found is None:
+        return None
+    body, target, side, point = found
+    reach = reach_of(body)
     aims = [Aim(p, n, (p[0] + (reach + CLEARANCE) * n[0], p[1] + (reach + CLEARANCE) * n[1]), corner, edge, arc,
                 reach) for p, n, corner, edge, arc in _surface(target, side)]
     if not aims:
         return None
-    shown = contact.point or _centroid(aims)
+    shown = point or _centroid(aims)
     aims.sort(key=lambda a: (math.hypot(a.point[0] - shown[0], a.point[1] - shown[1]), a.normal))
     return body.id, tuple(aims)
 
 
 def aimed(scene: Scene, timeline: Timeline, start: Parameters) -> list[Aimed]:
-    """``start`` with its start body launched at each aim point for each flight factor (factors outermost),
+    """``start`` with its start body launched at aim points of its first demonstrated contact: first the clear
+    flights (`clear_aimed`), then each aim point (`aim_points`) for each of `FLIGHT_FACTORS` (factors outermost),
     each with the aim it was given; empty when `aim_points` has none."""
     found = aim_points(scene, timeline)
     if found is None:
@@ -153,13 +168,91 @@ def aimed(scene: Scene, timeline: Timeline, start: Parameters) -> list[Aimed]:
     body_id, aims = found
     body = scene.components[body_id]
     assert isinstance(body, Body)
-    out = []
+    out = clear_aimed(scene, timeline, start)
     for factor in FLIGHT_FACTORS:
         for aim in aims:
             d = (aim.centre[0] - body.position[0], aim.centre[1] - body.position[1])
             out.append(Aimed(start.with_velocities({body_id: launch(d, factor)}), aim, factor, body_id,
                              body.position))
     return out
+
+
+def clear_aimed(scene: Scene, timeline: Timeline, start: Parameters) -> list[Aimed]:
+    """Launches at the first contact's surface whose flights are clear of the scene (`clearance`): each face (an
+    edge facing the demonstrated side, or a corner's fan) sampled `FACE_SAMPLES` times against
+    `clearance.CLEAR_FACTORS` flight times; of each connected clear region of (place, flight time), the launch
+    furthest from everything. The largest region of each face first, faces nearest the demonstrated point first."""
+    found = first_target(scene, timeline)
+    if found is None:
+        return []
+    body, target, side, point = found
+    reach = reach_of(body)
+    target_faces = faces(target, side)
+    if not target_faces:
+        return []
+    shown = point or (target.position[0], target.position[1])
+    scene_obstacles = obstacles(scene, body.id)
+    ranked: list[tuple[float, float, Aimed]] = []
+    for face in target_faces:
+        aims = [face_aim(face, k / (FACE_SAMPLES - 1), reach) for k in range(FACE_SAMPLES)]
+        centres = np.array([a.centre for a in aims])
+        grid = clearance_grid(body.position, centres, reach, target.id, scene_obstacles, inside=side == "inside")
+        cells: list[tuple[float, tuple[int, int]]] = []
+        for lo, hi in ((0, LOW_FLIGHTS), (LOW_FLIGHTS, len(CLEAR_FACTORS))):  # the low and the high family
+            family = grid[:, lo:hi]
+            regions = clear_regions(family)
+            cells += [(float(rank), (row, lo + col)) for rank, (row, col) in enumerate(regions)]
+            graze = nearly_clear(family, reach) if not regions else None
+            if graze is not None:
+                cells.append((0.5, (graze[0], lo + graze[1])))  # after every face's widest clear region
+        for rank, (row, col) in cells:
+            aim, factor = aims[row], CLEAR_FACTORS[col]
+            d = (aim.centre[0] - body.position[0], aim.centre[1] - body.position[1])
+            near = math.hypot(aim.point[0] - shown[0], aim.point[1] - shown[1])
+            ranked.append((rank, near, Aimed(start.with_velocities({body.id: launch(d, factor)}), aim, factor,
+                                             body.id, body.position)))
+    ranked.sort(key=lambda r: (r[0], r[1]))
+    return [a for _, _, a in ranked]
+
+
+Face = tuple[Point, Point, tuple[float, float] | None]
+"""An edge (its ends, None) or a corner's fan (the corner twice, the normal's angles it spans)."""
+
+
+def faces(target: Body, side: str) -> list[Face]:
+    """The target's edges facing ``side`` and its corners' fans (from `_surface`'s samples), each once."""
+    out: list[Face] = []
+    for p, n, corner, edge, arc in _surface(target, side):
+        if edge is not None:
+            face: Face = (edge[0], edge[1], None)
+        elif corner and arc is not None:
+            face = (p, p, (_angle(n) + arc[0], _angle(n) + arc[1]))
+        else:
+            continue
+        if not any(f[0] == face[0] and f[1] == face[1] and (f[2] is None) == (face[2] is None) for f in out):
+            out.append(face)
+    return out
+
+
+def face_aim(face: Face, u: float, reach: float) -> Aim:
+    """The aim ``u`` (0-1) of the way along an edge, or round a corner's fan."""
+    a, b, span = face
+    if span is None:
+        n = _unit((b[1] - a[1], -(b[0] - a[0])))
+        point = (a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]))
+        return Aim(point, n, _pushed(point, n, reach), u in (0.0, 1.0), (a, b), None, reach)
+    theta = span[0] + u * (span[1] - span[0])
+    n = (math.sin(theta), -math.cos(theta))
+    return Aim(a, n, _pushed(a, n, reach), True, None, (span[0] - theta, span[1] - theta), reach)
+
+
+def _pushed(p: Point, n: Point, reach: float) -> tuple[float, float]:
+    return (p[0] + (reach + CLEARANCE) * n[0], p[1] + (reach + CLEARANCE) * n[1])
+
+
+def reach_of(body: Body) -> float:
+    """How far a body's surface lies from its centre at most: a circle's radius, else its bounds' half-diagonal."""
+    return body.radius if body.shape == "circle" else _half_diagonal(body)
 
 
 def launch(d: tuple[float, float], factor: float, gravity: tuple[float, float] = GRAVITY) -> tuple[float, float]:

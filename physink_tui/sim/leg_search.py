@@ -83,7 +83,8 @@ class Phase(StrEnum):
     FAMILY = "family"
     """The seed's flight-time family (`FAMILY_STEPS`)."""
     AIM = "aim"
-    """Launches aimed at the first contact's surface (`aim.aimed`), `AIM_GENERATION` at a time."""
+    """Launches aimed at the demonstrated contacts' surfaces (`chain.chain_aimed`, `aim.aimed`), `AIM_GENERATION` at a
+    time."""
     AIM_RUN = "aim run"
     """CMA-ES in `aim.AimSpace` round the best aimed candidate (at most `AIM_RUN_ROLLOUTS`)."""
     SCAN = "scan"
@@ -106,14 +107,17 @@ class LegByLeg:
         seed: the random seed.
         family: the seed with its start bodies' flight time scaled by a factor (`seeding.seed_family`), searched
             first; None to skip it.
-        aims: launches aimed at the first contact's surface (`aim.aimed`), tried after the family.
+        aims: launches aimed at the demonstrated contacts' surfaces (`chain.chain_aimed`, `aim.aimed`), tried after
+            the family; or a function giving them, called only when the family has not found the answer.
     """
 
     def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int,
-                 family: Callable[[float], Parameters] | None = None, aims: Sequence[Aimed] = ()) -> None:
+                 family: Callable[[float], Parameters] | None = None,
+                 aims: Sequence[Aimed] | Callable[[], Sequence[Aimed]] = ()) -> None:
         self.start = start
         self.family = family
-        self._aims = list(aims)
+        self._aims: list[Aimed] = [] if callable(aims) else list(aims)
+        self._aims_source = aims if callable(aims) else None  # made when first needed (after the family)
         self._aimed: list[Aimed] = []  # the last generation's aims
         self._best_aim: Aimed | None = None
         self._aim_run_rollouts = 0
@@ -146,6 +150,8 @@ class LegByLeg:
             self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
                              for j in FAMILY_SPAN[self._family_round] if j != 0]
             return [self.family(f) for f in self._factors]
+        if self._aims_source is not None and self._phase in (Phase.FAMILY, Phase.AIM):
+            self._aims, self._aims_source = list(self._aims_source()), None
         if self._aims and self._phase in (Phase.FAMILY, Phase.AIM):
             self._phase = Phase.AIM
             self._aimed, self._aims = self._aims[:AIM_GENERATION], self._aims[AIM_GENERATION:]

@@ -23,7 +23,8 @@ from typing import Protocol
 
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
-from physink_tui.sim.aim import aimed
+from physink_tui.sim.aim import Aimed, aimed
+from physink_tui.sim.chain import chain_aimed
 from physink_tui.sim.evaluate import Score
 from physink_tui.sim.grid import ThesisGrid
 from physink_tui.sim.leg_search import LegByLeg
@@ -98,9 +99,11 @@ class Search:
                 return seed_family(scene, timeline, canvas, (factor,))[0]
 
             seeded = start is None and bool(self.start.velocities)
-            aims = aimed(scene, timeline, self.start) if seeded else []
+            def aims() -> list[Aimed]:  # aimed only when the family has not found the answer
+                return [*chain_aimed(scene, timeline, self.start), *aimed(scene, timeline, self.start)]
+
             self._strategy = LegByLeg(self.start, legs(timeline), seed=seed, family=family if seeded else None,
-                                      aims=aims)
+                                      aims=aims if seeded else ())
 
     @property
     def by_leg(self) -> bool:

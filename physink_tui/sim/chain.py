@@ -1,0 +1,207 @@
+"""Aiming the later legs (issue 27): launches whose modelled bounces carry the start body from its first
+demonstrated contact on to the next ones, surface after surface; geometry only, no stepping.
+
+A later contact is reached from the state after the one before: where the body left the surface and how fast.
+That state is set by the first flight (where along the first surface it arrives, and in what flight time, the
+two coordinates `aim.AimSpace` searches), so the later legs are aimed through it: every place along each face of
+the first target (`aim.faces`) by every flight time (`clearance.CLEAR_FACTORS`) is followed through its bounces —
+ballistic flight, the first body touched (`clearance.Obstacle`) and on which side, the rebound there
+(`rebound`: the normal speed times the contact's restitution, the larger of the two bodies', the tangential speed
+kept, or two thirds of it for a round body that grips, which starts it rolling) — and scored by how many of the
+demonstrated contacts with fixed bodies it makes in order (`demonstrated_chain`). Of the cells that make the most
+(at least two), the deepest of each connected region (`clearance.clear_regions`) is launched, for the rollouts to
+correct: the model ignores spin and what rolling does, which the aim run in (place, flight time) then corrects.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from physink_tui.scene.components import MATERIALS, Body, Scene, material_class
+from physink_tui.scene.physics.world import GRAVITY
+from physink_tui.sim import aim as aiming
+from physink_tui.sim.clearance import (
+    ARRIVAL,
+    CLEAR_FACTORS,
+    GRAZE,
+    Obstacle,
+    clear_regions,
+    clearance_grid,
+    distances,
+    in_hull,
+    near_bounds,
+    obstacles,
+)
+from physink_tui.sim.parameters import Parameters
+from physink_tui.sim.seeding import start_movements
+from physink_tui.timeline.events import Timeline
+from physink_tui.timeline.qualitative import side_along
+
+HORIZON = 3.0
+"""Seconds each modelled flight after a bounce is followed at most."""
+SAMPLES = 150
+"""Samples along each modelled flight after a bounce."""
+GRIP = 2 / 3
+"""The tangential speed a round body keeps in a bounce on a surface that grips (a disc starting to roll)."""
+REGIONS = 2
+"""Regions of the most contacts made tried per face, the largest first."""
+MOST = 6
+"""Chained launches tried at most (those making the most contacts, the largest regions of each face first)."""
+MIN_CHAIN = 2
+"""Contacts a chain must make in order, the first included, for its launches to be tried."""
+
+
+def demonstrated_chain(scene: Scene, timeline: Timeline) -> tuple[str, tuple[tuple[str, str], ...]] | None:
+    """The one start body and the fixed bodies it touches in the demonstration, with the side of each, in time
+    order, up to its first contact with a movable body; None without one start body."""
+    movements = start_movements(scene, timeline)
+    if len(movements) != 1:
+        return None
+    body = movements[0][1]
+    chain = []
+    for ev in sorted((e for e in timeline.events if e.type == "contact"), key=lambda e: e.t0):
+        if body.id not in ev.components or len(ev.components) != 2:
+            continue
+        other = next(c for c in ev.components if c != body.id)
+        side = dict(ev.sides).get(other)
+        if not scene.is_fixed(other) or side is None:
+            break
+        chain.append((other, side))
+    return body.id, tuple(chain)
+
+
+def rebound(v: np.ndarray, n: np.ndarray, restitution: float, keep: float) -> np.ndarray:
+    """Velocities ``v`` (k, 2) after bouncing off surfaces with unit normals ``n`` (k, 2) pointing at the body."""
+    vn = (v * n).sum(axis=1, keepdims=True)
+    towards = vn < 0
+    normal, tangential = vn * n, v - vn * n
+    return np.asarray(np.where(towards, keep * tangential - restitution * normal, v))
+
+
+def chain_aimed(scene: Scene, timeline: Timeline, start: Parameters) -> list[aiming.Aimed]:
+    """Launches at the first contact's surface whose modelled bounces make the most of the demonstrated contacts
+    with fixed bodies in order (at least `MIN_CHAIN`); see the module docstring."""
+    found = demonstrated_chain(scene, timeline)
+    first = aiming.first_target(scene, timeline)
+    if found is None or first is None or len(found[1]) < MIN_CHAIN:
+        return []
+    body, target, side, _point = first
+    chain = found[1]
+    if chain[0] != (target.id, side):
+        return []
+    reach = aiming.reach_of(body)
+    scene_obstacles = obstacles(scene, body.id)
+    bodies = {b.id: b for b in scene.bodies()}
+    friction = start.bodies[body.id].friction if body.id in start.bodies else body.material.friction
+    ranked: list[tuple[int, int, aiming.Aimed]] = []
+    for face in aiming.faces(target, side):
+        aims = [aiming.face_aim(face, k / (aiming.FACE_SAMPLES - 1), reach) for k in range(aiming.FACE_SAMPLES)]
+        made = _made(body, aims, chain, reach, scene_obstacles, bodies, friction)
+        best = int(made.max())
+        if best < MIN_CHAIN:
+            continue
+        for rank, (row, col) in enumerate(clear_regions(made.astype(float), best - 0.5)[:REGIONS]):
+            aim, factor = aims[row], CLEAR_FACTORS[col]
+            d = (aim.centre[0] - body.position[0], aim.centre[1] - body.position[1])
+            ranked.append((-best, rank, aiming.Aimed(start.with_velocities({body.id: aiming.launch(d, factor)}), aim,
+                                                     factor, body.id, body.position)))
+    ranked.sort(key=lambda r: (r[0], r[1]))
+    return [a for _, _, a in ranked][:MOST]
+
+
+def _made(body: Body, aims: Sequence[aiming.Aim], chain: Sequence[tuple[str, str]], reach: float,
+          scene_obstacles: Sequence[Obstacle], bodies: dict[str, Body], friction: float) -> np.ndarray:
+    """For each aim (rows) and flight factor (columns): how many of ``chain``'s contacts the modelled flight makes
+    in order (0 when its first flight does not arrive clear)."""
+    centres = np.array([a.centre for a in aims])
+    first = clearance_grid(body.position, centres, reach, chain[0][0], scene_obstacles,
+                           inside=chain[0][1] == "inside")
+    rows, cols = first.shape
+    made = np.where(first > -GRAZE * reach, 1, 0).reshape(-1)
+    g = np.asarray(GRAVITY, dtype=float)
+    d = centres - np.asarray(body.position, dtype=float)[None, :]
+    slowest = np.sqrt(2 * np.hypot(d[:, 0], d[:, 1]) / float(np.hypot(*g)))
+    t = slowest[:, None] * np.asarray(CLEAR_FACTORS)[None, :]
+    v_in = (d[:, None, :] / t[..., None] + g * t[..., None] / 2).reshape(-1, 2)
+    position = np.repeat(centres, cols, axis=0)
+    normal = np.repeat(np.array([a.normal for a in aims]), cols, axis=0)
+    touched = chain[0][0]
+    for k in range(1, len(chain)):
+        live = made == k
+        if not live.any():
+            break
+        other = bodies[touched]
+        restitution = max(body.material.restitution, other.material.restitution)
+        grip = (friction + MATERIALS[material_class(other.shape)].friction) / 2 > 0
+        keep = GRIP if body.shape == "circle" and grip else 1.0
+        v_out = rebound(v_in[live], normal[live], restitution, keep)
+        hit, where, v_hit, n_hit = _first_touch(position[live], v_out, reach, scene_obstacles, touched)
+        want_body, want_side = chain[k]
+        ok = np.array([h == want_body and s == want_side for h, s in hit], dtype=bool)
+        index = np.flatnonzero(live)
+        made[index[ok]] = k + 1
+        position[index] = where
+        v_in[index] = v_hit
+        normal[index] = n_hit
+        touched = want_body
+    return made.reshape(rows, cols)
+
+
+def _first_touch(start: np.ndarray, v: np.ndarray, reach: float, scene_obstacles: Sequence[Obstacle],
+                 leaving: str) -> tuple[list[tuple[str | None, str | None]], np.ndarray, np.ndarray, np.ndarray]:
+    """Follow each flight from ``start`` (k, 2) at ``v`` (k, 2): the first body it touches and that body's side
+    (None, None when none in `HORIZON`), where and how fast the centre is then, and the surface's normal there."""
+    k = len(start)
+    s = np.linspace(0.0, HORIZON, SAMPLES + 1)[1:]
+    g = np.asarray(GRAVITY, dtype=float)
+    paths = start[:, None, :] + v[:, None, :] * s[None, :, None] + g * s[None, :, None] ** 2 / 2
+    points = paths.reshape(-1, 2)
+    first = np.full(k, SAMPLES, dtype=int)
+    who = np.full(k, -1, dtype=int)
+    away = np.hypot(paths[..., 0] - start[:, None, 0], paths[..., 1] - start[:, None, 1]) > ARRIVAL * reach
+    for i, o in enumerate(scene_obstacles):
+        near = near_bounds(points, o, reach)
+        if o.id == leaving:
+            near &= away.reshape(-1)
+        if not near.any():
+            continue
+        dist = np.full(len(points), np.inf)
+        dist[near] = distances(points[near], o)
+        touching = (dist < reach).reshape(k, SAMPLES)
+        hit = np.where(touching.any(axis=1), touching.argmax(axis=1), SAMPLES)
+        better = hit < first
+        first[better], who[better] = hit[better], i
+    hits: list[tuple[str | None, str | None]] = [(None, None)] * k
+    where, v_hit, normal = start.copy(), v.copy(), np.zeros_like(v)
+    for i, o in enumerate(scene_obstacles):
+        cells = np.flatnonzero(who == i)
+        if not len(cells):
+            continue
+        p = paths[cells, first[cells]]
+        n = _normals(p, o)
+        inside = in_hull(p, o.segments.reshape(-1, 2)) if _is_open(o) else np.zeros(len(cells), dtype=bool)
+        for c, nn, ins in zip(cells, n, inside, strict=True):
+            hits[c] = (o.id, "inside" if ins else side_along(float(nn[0]), float(nn[1])))
+        where[cells], v_hit[cells], normal[cells] = p, v[cells] + g * s[first[cells]][:, None], n
+    return hits, where, v_hit, normal
+
+
+def _normals(p: np.ndarray, o: Obstacle) -> np.ndarray:
+    """For each point (m, 2): the unit vector from the obstacle's nearest surface point towards it."""
+    a, b = o.segments[:, 0, :], o.segments[:, 1, :]
+    ab = b - a
+    ap = p[:, None, :] - a[None, :, :]
+    u = np.clip((ap * ab[None]).sum(axis=2) / np.maximum((ab ** 2).sum(axis=1), 1e-12)[None, :], 0.0, 1.0)
+    offset = p[:, None, :] - (a[None] + u[..., None] * ab[None])
+    length = np.hypot(offset[..., 0], offset[..., 1])
+    nearest = length.argmin(axis=1)
+    n = offset[np.arange(len(p)), nearest]
+    size = length[np.arange(len(p)), nearest][:, None]
+    return np.asarray(np.where(size > 1e-9, n / np.maximum(size, 1e-9), np.array([0.0, -1.0])))
+
+
+def _is_open(o: Obstacle) -> bool:
+    """An open outline (its last segment does not end where its first begins): a container's hollow is inside."""
+    return bool(not np.allclose(o.segments[0, 0], o.segments[-1, 1]))
