@@ -7,18 +7,19 @@ hid-tools is GPL and never a dependency: `benchmarks/hidtools_decode.py` uses it
     .venv/bin/python benchmarks/bench_decode_process.py [--runs 5] [--hidtools-python /tmp/htvenv/bin/python]
 
 Both commands run as subprocesses (interpreter start-up included) writing their JSON lines to a file in /tmp,
-alternating, on three captures: the largest shared one (48,182 reports of one layout); a mixed one made in /tmp
-from the KYE MousePen i608X v2 capture's events repeated with increasing times to 71,000 reports (two pen report
-layouts in use, reports that are not the pen's, and an x range that widens past the declared one); and a big one
-made the same way from the largest (about 41 MB; ``--big-runs 0`` leaves it out). Nothing made is committed. Peak
-RSS is the child's ``ru_maxrss``. Our package's bytecode is compiled first, as an install would have it (hid-tools'
-is, by pip).
+alternating (wall medians, and the children's CPU time medians, which a loaded machine moves less), on three
+captures: the largest shared one (48,182 reports of one layout); a mixed one made in /tmp from the KYE MousePen
+i608X v2 capture's events repeated with increasing times to 71,000 reports (two pen report layouts in use, reports
+that are not the pen's, and an x range that widens past the declared one); and a big one made the same way from the
+largest (about 41 MB; ``--big-runs 0`` leaves it out). Nothing made is committed. Peak RSS is the child's
+``ru_maxrss``. Our package's bytecode is compiled first, as an install would have it (hid-tools' is, by pip).
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -51,13 +52,16 @@ def make_big(source: Path, target: Path, megabytes: float | None = None, reports
     return target
 
 
-def run(cmd: list[str], out: Path) -> float:
-    """Wall seconds of one child process writing its output to the file ``out``."""
+def run(cmd: list[str], out: Path) -> tuple[float, float]:
+    """Wall seconds and CPU seconds (user + system) of one child process writing its output to the file ``out``."""
     with out.open("wb") as f:
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
         start = time.perf_counter()
         subprocess.run(cmd, stdout=f, stderr=subprocess.DEVNULL, check=True,
                        env={**os.environ, "PYTHONPATH": str(ROOT)})
-        return time.perf_counter() - start
+        wall = time.perf_counter() - start
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        return wall, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
 
 
 def peak_rss(cmd: list[str]) -> float:
@@ -89,18 +93,20 @@ def main() -> None:
     out = Path("/tmp/physink-bench-decoded.jsonl")
     print(f"python {sys.version.split()[0]}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} at the "
           "start; medians of alternating runs, output to a file\n")
-    print("| capture | size | reports | runs | physink decode | hid-tools script | ratio | physink peak RSS |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    print("| capture | size | reports | runs | physink decode | hid-tools script | ratio | CPU physink / hid-tools "
+          "| CPU ratio | physink peak RSS |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for path, runs in captures:
         a, b = [], []
         for _ in range(runs):
             a.append(run([*ours, str(path)], out))
             b.append(run([*theirs, str(path)], out))
         rss = peak_rss([*ours, str(path)])
-        ma, mb = statistics.median(a), statistics.median(b)
+        ma, mb = statistics.median(w for w, _ in a), statistics.median(w for w, _ in b)
+        ca, cb = statistics.median(c for _, c in a), statistics.median(c for _, c in b)
         reports = sum(1 for line in path.open(encoding="utf-8") if line.startswith("E:"))
         print(f"| {path.name} | {path.stat().st_size / 1e6:.1f} MB | {reports:,} | {runs} | {ma:.3f} s | {mb:.3f} s "
-              f"| {mb / ma:.1f}x | {rss:.0f} MB |", flush=True)
+              f"| {mb / ma:.1f}x | {ca:.3f} s / {cb:.3f} s | {cb / ca:.1f}x | {rss:.0f} MB |", flush=True)
     out.unlink(missing_ok=True)
 
 

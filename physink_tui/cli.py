@@ -21,7 +21,7 @@ from collections.abc import Callable, Sequence
 
 from physink_tui import __version__
 from physink_tui.errors import PhysinkError
-from physink_tui.formats.outputs import StdoutGuard
+from physink_tui.formats.stdout_guard import StdoutGuard
 from physink_tui.render.limits import MAX_FPS, MAX_SIDE, MIN_SIDE
 
 PROG = "physink"

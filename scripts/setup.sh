@@ -4,8 +4,11 @@
 #   - Debian packages: installs only the missing ones (dpkg says which); `apt-get update` only then.
 #   - .venv at the repo root: made if absent (or if its interpreter no longer runs).
 #   - `pip install -e '.[test,dask]'` (the test tools, and the optional Dask extra so that its executor is
-#     tested for real): only when pyproject.toml changed since the last install; a hash of it
-#     is kept in .venv/.physink-pyproject.sha256 after each successful install.
+#     tested for real): only when pyproject.toml (or the install mode below) changed since the last install; a
+#     hash of them is kept in .venv/.physink-pyproject.sha256 after each successful install. The editable
+#     install is a plain path in a .pth file (setuptools' `editable_mode=compat`), not setuptools' import hook,
+#     whose start-up (pathlib, urllib.parse, ipaddress: ~25 ms of CPU on this machine) every `physink` command
+#     paid and a pip-installed physink does not (docs/BENCHMARKS.md, `physink decode`).
 #
 # Works from any directory. Set PHYSINK_PYTHON to use another interpreter than python3 (>= 3.11).
 set -euo pipefail
@@ -77,12 +80,14 @@ if ! { [ -x "$VENV/bin/python" ] && "$VENV/bin/python" -c '' 2>/dev/null; }; the
 fi
 
 # --- the project, editable, with the test tools and the Dask extra -------------------------------------
-want=$(sha256sum "$ROOT/pyproject.toml" | cut -d' ' -f1)
+EDITABLE_MODE=compat
+want=$( (cat "$ROOT/pyproject.toml"; echo "editable_mode=$EDITABLE_MODE") | sha256sum | cut -d' ' -f1)
 have=$(cat "$STAMP" 2>/dev/null || true)
 if [ "$want" != "$have" ]; then
     log "installing physink-tui (editable, with test tools and the dask extra) into .venv"
     rm -f "$STAMP"
     PIP_NO_INPUT=1 PIP_DISABLE_PIP_VERSION_CHECK=1 \
-        "$VENV/bin/python" -m pip install --quiet --editable "$ROOT[test,dask]"
+        "$VENV/bin/python" -m pip install --quiet --editable "$ROOT[test,dask]" \
+        --config-settings editable_mode=$EDITABLE_MODE
     printf '%s\n' "$want" >"$STAMP"
 fi

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_generalisation import leave_one_source_out, scored_rows
+from bench_generalisation import held_back, leave_one_source_out, scored_rows
 from bench_recognition import ACCEPTS, LABEL_CLASS
 from label_kinds import read_table
 from stroke_sets import read_set, source_of
@@ -100,3 +100,17 @@ def test_the_table_is_the_one_the_people_tests_score_with(tmp_path) -> None:
     bad.write_text("set\tlabel\tclass\taccepts\twhy\na\tcircle\tround\tcircle\tx\nb\toval\tround\tellipse\ty\n")
     with pytest.raises(ValueError, match=r"bad.tsv:3: class 'round' accepts \['ellipse'\]"):
         read_table(bad)
+
+
+def test_the_held_back_students_are_four_fixed_by_their_names_alone() -> None:
+    """The held-back group (issue 25) depends on the students' names only, not on their strokes or their order; a
+    student outside it can leave the set without changing it; the three people of the $1 logs are never in it."""
+    names = ["Alphazerfall", "Bam33751", "Coldjack007", "DerD4n", "Ferdi-FM", "GixD42", "JonasBachmeier-UNI",
+             "LeS-crypto", "LucaEscher", "MaximilianKilger", "lvht1203", "marcel-moz", "martinarobyculasso",
+             "michaelpickl", "realdegrees", "uniUbungsAccount"]
+    rows = [{"source": "itt", "subject": n, "label": "circle"} for n in names]
+    rows += [{"source": "dollar1", "subject": s, "label": "circle"} for s in ("s02", "s03", "s04")]
+    group = held_back(rows)
+    assert group == {"itt:Ferdi-FM", "itt:marcel-moz", "itt:martinarobyculasso", "itt:michaelpickl"}
+    assert held_back(list(reversed(rows))) == group
+    assert held_back([r for r in rows if r["subject"] != "Alphazerfall"]) == group

@@ -7,4 +7,10 @@ does, `--video --frames` to draw the demonstration), `timeline`, `equiv`, `expor
 subcommand of the DESIGN.md table is built (one whose module is missing says `physink <command>: not available yet
 (… is not written yet)` on stderr and exits 2). `physink replay` of a capture runs only the input side (`PenInput`,
 no session).
+
+`physink decode` (`decode.py`) takes one of two paths, writing the same bytes: a capture of at most 8 MB whose every
+line is plain (`input/captures/plain.py` says) goes through `decode_plain.py` without numpy (each distinct report
+decoded once by `input/hid/distinct.py`, formatted once; the times from their stamps' digits), since numpy's import
+alone costs more than a small capture's decoding; any other streams through the numpy path (`input/captures/parser.py`,
+`input/hid/chunks.py`, `decode_jsonl.py`), whose memory stays flat in the capture's size.
 """

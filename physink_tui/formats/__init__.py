@@ -40,7 +40,10 @@ version; every value read is checked by the one JSON checker and named by its pl
   cause; or `staged` + `commit`, `physink simulate`'s: the new files beside the last run's, renamed over them at the
   end, so a kill leaves the last complete result), `check_outputs` (before anything is written: refuses an output that
   is an input of the run, a file that is not a regular one -- device, FIFO, symlink, folder -- or another output of the
-  run) and `StdoutGuard` (a broken pipe silences stdout, a full one is reported at the end; files are still written)
+  run)
+- `stdout_guard.py`: `StdoutGuard` (a broken pipe silences stdout, a full one is reported at the end; files are still
+  written) and `reason` (an OS error's cause in words); apart from `outputs.py` so every command's start-up imports
+  only this
 - `project/sanity.py`: `check_project`, the one check of a project's values every command makes before using it
   (`load_project`: export, simulate, the TUI's start and Load; the session's `load` command), so all accept and
   refuse the same projects: canvas sides, positions, radii, outlines the physics can build

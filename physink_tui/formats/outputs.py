@@ -5,23 +5,21 @@ made if needed, and this program's own outputs of an earlier run (only the names
 temporary files a killed run left behind are removed, so the folder holds only files of this run. Other files are
 never touched. Every `OSError` becomes a `PhysinkError` naming the path and the cause (exit status 1).
 
-`StdoutGuard` wraps ``sys.stdout`` for the CLI: a reader that goes away (``| head -1``) ends the printing quietly
-while the command carries on writing its files; any other write error (``> /dev/full``) also silences it, and the
-CLI reports it as one line naming stdout (exit status 1) once the command has written its files.
+`reason` (an OS error's cause in words) lives in `stdout_guard`, beside the CLI's ``sys.stdout`` wrapper, and is
+imported here for the callers that have always found it here.
 """
 
 from __future__ import annotations
 
-import errno
 import os
 import re
 import stat
 from collections.abc import Iterable
 from pathlib import Path
-from typing import Any, TextIO
 
 from physink_tui.errors import PhysinkError
 from physink_tui.formats.atomic_write import fsync_directory, write_text_atomic
+from physink_tui.formats.stdout_guard import reason as reason  # (re-exported: its callers import it from here)
 
 #: Every file name a run of this program writes into an output folder (and so removes from a reused one).
 OWN_FILES = ("project.json", "timeline.json", "timeline.txt", "gestures.jsonl", "samples.jsonl", "summary.txt",
@@ -108,13 +106,6 @@ def _kind(mode: int) -> str:
     return "a file that is not a regular file"
 
 
-def reason(exc: OSError) -> str:
-    """The cause of an OS error in words: its strerror, else its text."""
-    if isinstance(exc, FileExistsError | NotADirectoryError) and exc.errno in (errno.EEXIST, errno.ENOTDIR):
-        return f"{exc.strerror} (a file is in the way of a folder)"
-    return exc.strerror or str(exc)
-
-
 class OutputFolder:
     """One run's output folder: `prepare` it, then `write` each file by name."""
 
@@ -161,7 +152,7 @@ class OutputFolder:
                 except OSError:
                     pass  # another run's, still being written
         folder._staged = {}
-        import secrets  # here, not at the top: the CLI imports this module for every command (`StdoutGuard`)
+        import secrets  # here, not at the top: only a run that writes files needs it
 
         folder._token = f"{os.getpid()}-{secrets.token_hex(4)}"
         return folder
@@ -223,54 +214,6 @@ class OutputFolder:
         except OSError as exc:
             raise PhysinkError(f"{target}: cannot write: {reason(exc)}") from None
         return target
-
-
-class StdoutGuard:
-    """A stand-in for ``sys.stdout`` that never raises: a failed write silences it (`error` keeps any but EPIPE)."""
-
-    def __init__(self, stream: TextIO) -> None:
-        self.stream = stream
-        self.broken = False
-        #: the first write error other than a broken pipe, reported by the CLI when the command has finished
-        self.error: PhysinkError | None = None
-
-    def write(self, text: str) -> int:
-        if not self.broken:
-            try:
-                return self.stream.write(text)
-            except OSError as exc:
-                self._fail(exc)
-        return len(text)
-
-    def writelines(self, lines: Iterable[str]) -> None:
-        for line in lines:
-            self.write(line)
-
-    def flush(self) -> None:
-        if not self.broken:
-            try:
-                self.stream.flush()
-            except OSError as exc:
-                self._fail(exc)
-
-    def _fail(self, exc: OSError) -> None:
-        self.broken = True
-        self._silence()
-        if not isinstance(exc, BrokenPipeError):
-            self.error = PhysinkError(f"<stdout>: cannot write: {reason(exc)}")
-
-    def _silence(self) -> None:
-        """Points file descriptor 1 at /dev/null so the interpreter's last flush stays quiet."""
-        try:
-            fd = self.stream.fileno()
-        except (OSError, ValueError, AttributeError):
-            return
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, fd)
-        os.close(devnull)
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self.stream, name)
 
 
 def _made_and_listed(out: Path) -> list[str]:

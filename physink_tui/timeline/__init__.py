@@ -10,6 +10,9 @@
 - `observation.py`: `Observation`: what one physics step shows the recorder (every body's `Motion`, the
   `ContactRecord`s begun, the pairs touching, the grabbed body, the bodies playing back), built by demo mode and by
   SIMULATE's rollouts
+- `mechanisms.py`: `Mechanisms`: which movable things move as one (a body and what ropes, springs and joints tie it
+  to): a movement's chain of components, nearest first, and one key per mechanism, which the recorder keeps one open
+  movement for
 - `recorder.py`: pure `Recorder.observe(Observation)` per physics step: start on the first grab; one open movement
   per group (a body and what ropes, springs and joints tie to it: "Movement of lever [attached to rope, knife]");
   contacts cause new movements of each movable body (a resting or sliding contact is one: `touches.py`); movable

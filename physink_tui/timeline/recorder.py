@@ -35,6 +35,7 @@ from physink_tui.scene.physics.contacts import ContactRecord
 from physink_tui.timeline.begun_in_contact import drives_into, facing, parted
 from physink_tui.timeline.edits import covering, cut_from, split_at
 from physink_tui.timeline.events import Event, Timeline
+from physink_tui.timeline.mechanisms import Mechanisms
 from physink_tui.timeline.movement_record import OpenMovement, Regions
 from physink_tui.timeline.observation import Observation
 from physink_tui.timeline.qualitative import BodyOutline, contact_sides
@@ -46,7 +47,6 @@ STILL_FRAMES = 12
 """Frames below `MOVING_SPEED` after which a movement ends."""
 RECENT_SEPARATION = 1.0
 """Seconds after two bodies stop touching during which a body starting to move by itself was released by it."""
-
 
 
 @dataclass
@@ -80,16 +80,15 @@ class Recorder:
     _began_gap: dict[frozenset[str], float] = field(default_factory=dict)
     _start: str | None = None
     _grabbed: str | None = None
-    _group: dict[str, str] = field(default_factory=dict)
+    _mechanisms: Mechanisms = field(init=False, repr=False, compare=False)
+    _group: dict[str, str] = field(init=False)  # the mechanisms' keys
     _radius: dict[str, float] = field(default_factory=dict)
     _regions: Regions = field(init=False)
     _order: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
-        for body in sorted(self.movable):
-            if body not in self._group:
-                for member in self.chain(body):
-                    self._group[member] = body
+        self._mechanisms = Mechanisms(self.links, self.movable, self.outlines)
+        self._group = self._mechanisms.group
         for body, outline in self.outlines.items():
             self._radius[body] = max((math.hypot(x, y) for x, y in outline.hull), default=0.0)
         self._regions = Regions(self.outlines, self.reach, self._radius)
@@ -101,22 +100,15 @@ class Recorder:
 
     def chain(self, body: str) -> tuple[str, ...]:
         """``body`` and every movable body, rope and spring it reaches through links, nearest first."""
-        seen = [body]
-        i = 0
-        while i < len(seen):
-            for nxt in self.links.get(seen[i], ()):
-                if nxt not in seen:
-                    seen.append(nxt)
-            i += 1
-        return tuple(seen)
+        return self._mechanisms.chain(body)
 
     def group_key(self, body: str) -> str:
         """The same key for every body of one mechanism (bodies tied together move as one)."""
-        return self._group.get(body, body)
+        return self._mechanisms.key(body)
 
     def group_bodies(self, body: str) -> tuple[str, ...]:
         """The movable bodies that move with ``body`` (itself first)."""
-        return tuple(c for c in self.chain(body) if c in self.outlines)
+        return self._mechanisms.bodies(body)
 
     @property
     def moving(self) -> bool:
@@ -302,7 +294,6 @@ class Recorder:
             self._touches.recorded(pair, obs.t, again)
             return
         self._add_contact(obs, a, b, contact.point, contact.normal)
-
 
     def _add_contact(self, obs: Observation, a: str, b: str, point: tuple[float, float] | None,
                      normal: tuple[float, float] | None) -> None:

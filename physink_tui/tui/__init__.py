@@ -66,6 +66,9 @@ movement and tablet report becomes a journal entry submitted to a `SessionRunner
   adopting a simulation
 - `screens/playback_keys.py`: `PlaybackKeys`, a helper `MainScreen` owns: the seeks of the arrow, home and end keys
   and of the tree and slider (`SEEK_STEP` from the last seek sent, so every press counts)
+- `screens/speech_keys.py`: `SpeechKeys`, a helper `MainScreen` owns: push-to-talk (the `v` key toggles; holding the
+  pen's barrel button listens until it is released), its starts and stops in the screen's ``speech`` workers and
+  what it is doing or heard as `SpeechStatus` messages for the status bar
 - `screens/main.py`: `MainScreen`: the layout (the scene; beside it the tree, the chosen event's full name below it — a
   deep event's name is cut in the tree — and the narration log), every key binding, actions → commands; the playback
   keys (space, ←, →, home, end) are priority bindings, so they work whichever widget has focus (the tree, a button, the

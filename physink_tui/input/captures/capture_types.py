@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
-import numpy as np
+if TYPE_CHECKING:
+    import numpy as np
 
 BAD_TEXT_MAX = 80
 """`BadLine.text` keeps at most this many characters of the offending line."""
@@ -106,6 +108,8 @@ class CaptureColumns:
         """Positions of one device's reports, in file order (a slice when the capture has one device: no copies)."""
         if len(self.devices) == 1:
             return slice(0, len(self.t)) if self.devices[0].index == device_index else slice(0, 0)
+        import numpy as np  # here: the plain decode path imports these types without numpy
+
         return np.flatnonzero(self.device == device_index)
 
     def of_device(self, index: int) -> tuple[np.ndarray, np.ndarray, Callable[[int, int], list[bytes]]]:

@@ -12,9 +12,7 @@ import re
 from array import array
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import BinaryIO
-
-import numpy as np
+from typing import TYPE_CHECKING, Protocol
 
 from physink_tui.errors import CaptureFormatError
 from physink_tui.input.captures.capture_types import (
@@ -25,7 +23,9 @@ from physink_tui.input.captures.capture_types import (
     CaptureColumns,
     CaptureDevice,
 )
-from physink_tui.input.captures.events import strict_events
+
+if TYPE_CHECKING:
+    import numpy as np
 
 _TIME = re.compile(r"\d+(?:\.\d+)?\Z", re.ASCII)
 _HEX_TOKEN = re.compile(r"[0-9a-fA-F]{2}\Z")
@@ -35,6 +35,12 @@ _FAST_EVENTS = re.compile(r"^E: (\d+(?:\.\d+)?) (\d+)((?: [0-9a-fA-F]{2})*)[ \t\
 _KINDS = "#, D:, R:, N:, P:, I: or E:"
 CHUNK_BYTES = 1 << 20
 """Bytes of whole lines read and parsed at a time from a file."""
+
+
+class Readable(Protocol):
+    """What the parser reads a capture from: an open binary file, or anything with its ``read``."""
+
+    def read(self, size: int = -1, /) -> bytes: ...
 
 
 @dataclass(slots=True)
@@ -57,7 +63,7 @@ class _DeviceBuilder:
         return CaptureDevice(self.index, self.name, self.phys, *ids, self.descriptor, tuple(self.comments))
 
 
-def iter_line_chunks(f: BinaryIO, size: int = CHUNK_BYTES) -> Iterator[list[str]]:
+def iter_line_chunks(f: Readable, size: int = CHUNK_BYTES) -> Iterator[list[str]]:
     """Whole lines of a binary file, about ``size`` bytes at a time, decoded as UTF-8 (bad bytes U+FFFD)."""
     first, rest = True, b""
     while True:
@@ -129,6 +135,10 @@ class CaptureParser:
 
     def events(self, lines: list[str], first: int) -> None:
         """A run of lines starting ``"E: "``, the first being line ``first``: all at once when each is well formed."""
+        import numpy as np  # here, not at the top: `physink decode`'s plain path reads header lines without numpy
+
+        from physink_tui.input.captures.events import strict_events
+
         dev = self.current
         if dev is None or not dev.descriptor:  # no descriptor yet: line by line (each says what is missing)
             for k, raw in enumerate(lines):
@@ -285,6 +295,8 @@ class CaptureParser:
         """The rows to keep: single reports whose time jumps ahead by more than `GLITCH_SECONDS` and comes straight
         back are dropped as bad lines (one glitched stamp would otherwise hold every later report's time; time never
         goes back in the gesture engine). Only the rare rows that jump ahead are looked at one by one."""
+        import numpy as np
+
         keep = np.ones(len(t), dtype=bool)
         prev = np.full(len(t), -1, dtype=np.int64)
         for index in self.devices:  # (np.unique here would import numpy.ma: 12 ms of start-up)
@@ -323,6 +335,8 @@ class CaptureParser:
         Raises:
             CaptureFormatError: no device, or a device without its ``R:`` line.
         """
+        import numpy as np
+
         if not self.devices:
             raise self.error("no report descriptor ('R:' line) in the capture", None)
         for dev in self.devices.values():
@@ -349,7 +363,7 @@ class CaptureParser:
                               t, line, device, offsets, blob)
 
 
-def parse_capture_file(f: BinaryIO, path: str | None, chunk_bytes: int = CHUNK_BYTES) -> CaptureColumns:
+def parse_capture_file(f: Readable, path: str | None, chunk_bytes: int = CHUNK_BYTES) -> CaptureColumns:
     """Parse an open binary capture file, about ``chunk_bytes`` of lines at a time."""
     parser = CaptureParser(path)
     for lines in iter_line_chunks(f, chunk_bytes):

@@ -42,6 +42,10 @@ In `input/hid/`:
 - `batch.py`: `decode_batch`: the same layouts over a whole capture with numpy (byte matrices per report id,
   vectorised shift-and-mask); ranges and polarity taken from the whole capture, or given (`learned`) when a capture
   is decoded a chunk at a time. Agrees with the streaming decoder wherever no range widens
+- `distinct.py`: `decode_distinct`: each distinct report of a capture decoded once, in plain Python, by `batch.py`'s
+  whole-capture rules (ranges widened to every in-range value, the touching reports' in-range polarity), with how
+  often each occurs; a layout's raw values read by one function generated for it (`raw_reader`). `physink decode`'s
+  plain path: no numpy to import
 - `chunks.py`: `decode_in_chunks`: a long run of reports through `decode_batch` 65,536 at a time, sample for sample
   what one batch gives: a run longer than a chunk is first read through for what the whole run teaches (ranges; the
   in-range polarity, then the x/y ranges, when a layout learns it). `physink decode` streams with it: memory stays
@@ -56,6 +60,9 @@ Captures (`input/captures/`) and the sample:
 - `captures/parser.py`: `CaptureParser`: the line checks, fed a chunk of lines at a time (`parse_capture_file` reads
   1 MB at a time); runs of `E:` lines go to `captures/events.py` (strictly formed runs, checked and read a column at
   a time with numpy), else one regex over the run, else line by line with the error each bad line gets
+- `captures/plain.py`: `read_plain`: a capture whose every line is plain (header lines through `CaptureParser`'s
+  checks, `E:` lines each a stamp and a ``<length> <hex bytes>`` text, checked once per distinct text) read without
+  numpy, or None for anything the full parser would report or repair (a bad line, a glitched stamp, stray spaces, CR)
 - `captures/writer.py`: captures written atomically
 - `pen/sample.py`: `PenSample`, a `NamedTuple`: immutable and slotted like a frozen dataclass, but 4x cheaper to
   build (0.5 µs vs 2.0 µs measured), which matters at one sample per report

@@ -12,7 +12,6 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from functools import cache
-from importlib import resources
 
 FACTS_FILE = "device_facts.tsv"
 
@@ -60,6 +59,8 @@ def parse_facts(text: str) -> tuple[DeviceFact, ...]:
 @cache
 def all_facts() -> tuple[DeviceFact, ...]:
     """The bundled table, read once."""
+    from importlib import resources  # here: importing it (pathlib, tempfile) costs every decode's start-up
+
     return parse_facts(resources.files("physink_tui.data").joinpath(FACTS_FILE).read_text("utf-8"))
 
 

@@ -23,7 +23,7 @@ REASON_TOOL = "tool is not a pen (mouse or lens)"
 TILT_LIMIT = 90.0
 
 
-def _value_expr(v: ValueField) -> str:
+def value_expr(v: ValueField) -> str:
     """Python expression for the raw integer of a value, reading from the report integer ``v``."""
     terms, shift = [], 0
     for off, size in v.parts:
@@ -114,7 +114,7 @@ class CompiledLayout:
             if lay.eraser_tools:
                 eraser_terms.append(f"tool in {tuple(lay.eraser_tools)!r}")
         for name in ("x", "y"):
-            src += [f"    r{name} = {_value_expr(getattr(lay, name))}"]
+            src += [f"    r{name} = {value_expr(getattr(lay, name))}"]
             if getattr(lay, name).signed:
                 w = getattr(lay, name).width
                 src.append(f"    if r{name} >> {w - 1}: r{name} -= {1 << w}")
@@ -131,7 +131,7 @@ class CompiledLayout:
             eraser_terms.append("erase")
             src.append(f"    erase = {eraser_bit}")
         if lay.pressure is not None:
-            src.append(f"    rp = {_value_expr(lay.pressure)}")
+            src.append(f"    rp = {value_expr(lay.pressure)}")
             if lay.pressure.signed:
                 w = lay.pressure.width
                 src.append(f"    if rp >> {w - 1}: rp -= {1 << w}")
@@ -172,7 +172,7 @@ class CompiledLayout:
             if tv is None:
                 src.append(f"    {name} = None")
                 continue
-            src.append(f"    {name} = {_value_expr(tv)}")
+            src.append(f"    {name} = {value_expr(tv)}")
             if tv.signed:
                 src.append(f"    if {name} >> {tv.width - 1}: {name} -= {1 << tv.width}")
             src.append(f"    {name} = {name} * {tv.scale!r} + {tv.offset!r}")

@@ -22,7 +22,6 @@ from dataclasses import dataclass
 from typing import Any, Protocol, TypeGuard
 
 from physink_tui.errors import DeviceError
-from physink_tui.input.hid.hidraw import UDEV_INSTALL
 from physink_tui.input.hid.vendor_layouts import VID_HUION, VID_UCLOGIC, VID_VEIKK, VID_XPPEN, TabletParams
 
 FAMILY_VIDS = frozenset({VID_HUION, VID_UCLOGIC, VID_XPPEN, VID_VEIKK})
@@ -151,6 +150,8 @@ def _transfer_error(exc: OSError, index: int, ids: str) -> DeviceError:
     if code in (errno.EPIPE, errno.ETIMEDOUT) or type(exc).__name__ == "USBTimeoutError":
         return _NotAnswered(f"{where}: string 0x{index:02x} not answered")
     if code in (errno.EACCES, errno.EPERM):
+        from physink_tui.input.hid.hidraw import UDEV_INSTALL  # here: decoding a capture never needs the reader
+
         return DeviceError(f"no permission to talk to {where} (needed to switch it to its full pen mode); "
                            f"install the udev rule: {UDEV_INSTALL} (then replug)")
     if code == errno.EBUSY:

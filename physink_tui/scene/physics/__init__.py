@@ -15,6 +15,8 @@ the caller's.
   `World.from_state(scene, state, warm=N)` forking a world from one (N steps taken and undone give resting contacts
   their impulses, which a sleeping group keeps; with none, agreeing to the solver's warm start, not bit for bit)
 - `build.py`: the pymunk bodies, shapes and constraints of each component (`build`, `Built`)
+- `editing.py`: `Editing`, which `World` owns: every body frozen but one (`freeze_all_except`, `unfreeze`: the
+  velocities kept and given back) and the drag under way (`drag`, `release`); the world syncs the space's constraints
 - `outlines.py`: whether a body's outline can become shapes (positive area, convex pieces, distinct points), pure
   geometry; `outline_problem` says what is wrong in words, for the project check (`formats/project/sanity.py`)
 - `surfaces.py`: the contact materials (`Surfaces`): each material a surface type (`collision_type`), its shapes'

@@ -16,11 +16,11 @@ from typing import Self
 import pymunk
 
 from physink_tui.errors import SceneError
-from physink_tui.scene.components import BACKGROUND, Point, Scene
+from physink_tui.scene.components import Point, Scene
 from physink_tui.scene.physics.build import Built, build
 from physink_tui.scene.physics.contacts import ContactListener, ContactRecord, set_friction, touching_record
-from physink_tui.scene.physics.dragging import Drag, grab_body
-from physink_tui.scene.physics.sleeping import sleep_groups, tied_groups
+from physink_tui.scene.physics.editing import Editing
+from physink_tui.scene.physics.sleeping import sleep_groups
 from physink_tui.scene.physics.speed import limit_speed
 from physink_tui.scene.physics.state import REST, Motion, Pose, Velocity, WorldState
 from physink_tui.scene.physics.write_back import scene_from
@@ -77,8 +77,8 @@ class World:
         self._listener = ContactListener(built.owner, built.surfaces.bounces)
         self._frictions = 0  # how many of `Surfaces.frictions` have their pre-solve callback
         self._live: set[pymunk.Constraint] = set()
-        self._frozen: dict[pymunk.Body, tuple[tuple[float, float], float]] = {}
-        self._drag: Drag | None = None
+        self._editing = Editing(space, built, self._get, self._dynamic_bodies, self._sync_constraints, self._unlink)
+        """The frozen bodies and the drag under way (`freeze_all_except`, `drag`)."""
         self._by_z = sorted(built.z, key=built.z.__getitem__)
         self.substeps = 1
         """Sub-steps per step: a simulation without demo mode's speed limit divides a step whose fastest body would
@@ -303,29 +303,11 @@ class World:
 
         Velocities are kept and given back by `unfreeze`. Calling it again first unfreezes.
         """
-        self.unfreeze()
-        keep = self._weld_group(body_id)
-        for rope_id, links in self._built.links.items():
-            if {b for part in self._built.constraints[rope_id] for b in (part.a, part.b)} & keep:
-                keep.update(links)
-        for body in self._dynamic_bodies():
-            if body in keep:
-                continue
-            self._frozen[body] = ((body.velocity.x, body.velocity.y), body.angular_velocity)
-            body.body_type = pymunk.Body.STATIC
-            self._space.reindex_shapes_for_body(body)
-        self._sync_constraints()
+        self._editing.freeze_all_except(body_id)
 
     def unfreeze(self) -> None:
         """Undoes `freeze_all_except`: the frozen bodies move again with the velocities they had."""
-        for body, (velocity, spin) in self._frozen.items():
-            if self._drag is not None and body is self._drag.body:
-                continue  # already dynamic, and moving with the pen
-            body.body_type = pymunk.Body.DYNAMIC
-            body.velocity = velocity
-            body.angular_velocity = spin
-        self._frozen.clear()
-        self._sync_constraints()
+        self._editing.unfreeze()
 
     def drag(self, body_id: str, target_point: Point, grab_point: Point | None = None, *,
              rotate: bool = True) -> None:
@@ -335,34 +317,13 @@ class World:
         same body only move the target. A kinematic control body at the target holds the grabbed point through a
         pivot joint of limited force, so the body follows the pen but is stopped by what it hits. With
         ``rotate=False`` a gear of limited torque also keeps its angle. A static (fixed) body is made dynamic for
-        the drag and static again by `release`.
+        the drag and static again by `release` (`editing.Editing`).
         """
-        body = self._get(body_id)
-        if self._drag is not None and self._drag.body is not body:
-            self.release()
-        if self._drag is None:
-            fixed = body.body_type != pymunk.Body.DYNAMIC and body not in self._frozen
-            if body.body_type != pymunk.Body.DYNAMIC:  # fixed, or frozen (frozen again on release, until `unfreeze`)
-                body.body_type = pymunk.Body.DYNAMIC
-                body.velocity, body.angular_velocity = (0.0, 0.0), 0.0
-            grab = body.position if grab_point is None else grab_point
-            self._drag = grab_body(self._space, body_id, body, grab, rotate=rotate, fixed=fixed)
-            self._sync_constraints()
-        self._drag.control.position = target_point
+        self._editing.drag(body_id, target_point, grab_point, rotate=rotate)
 
     def release(self) -> None:
         """Ends the drag; a fixed or frozen body becomes static again where it now is."""
-        drag, self._drag = self._drag, None
-        if drag is None:
-            return
-        for part in drag.parts:
-            self._space.remove(part)
-            self._live.discard(part)
-        self._space.remove(drag.control)
-        if drag.fixed or drag.body in self._frozen:
-            drag.body.body_type = pymunk.Body.STATIC
-            self._space.reindex_shapes_for_body(drag.body)
-        self._sync_constraints()
+        self._editing.release()
 
     # -- back to the scene ----------------------------------------------------------------------------------------
 
@@ -384,11 +345,10 @@ class World:
         bodies = [built.bodies[i] for i in self._by_z] + [link for links in built.links.values() for link in links]
         return [b for b in bodies if b.body_type == pymunk.Body.DYNAMIC]
 
-    def _weld_group(self, body_id: str) -> set[pymunk.Body]:
-        """``body_id``'s body and every body welded to it, directly or through others (not the background)."""
-        start, background = self._get(body_id), self._built.bodies[BACKGROUND]
-        bodies = [b for b in self._built.bodies.values() if b is not background]
-        return next(set(group) for group in tied_groups(bodies, self._built.welds) if start in group)
+    def _unlink(self, part: pymunk.Constraint) -> None:
+        """A constraint out of the space for good (a released drag's joints)."""
+        self._space.remove(part)
+        self._live.discard(part)
 
     def _handle_frictions(self) -> None:
         """Registers `contacts.set_friction` for the pairs of surfaces not registered yet (pairs are only added)."""
@@ -399,8 +359,7 @@ class World:
     def _sync_constraints(self) -> None:
         """Puts in the space exactly the constraints with at least one dynamic body (static-static ones give NaNs)."""
         parts = [p for ps in self._built.constraints.values() for p in ps]
-        if self._drag is not None:
-            parts.extend(self._drag.parts)
+        parts.extend(self._editing.drag_parts)
         dynamic = pymunk.Body.DYNAMIC
         for part in parts:
             live = part.a.body_type == dynamic or part.b.body_type == dynamic

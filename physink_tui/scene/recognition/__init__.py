@@ -32,11 +32,18 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    to the ellipse drawn (`Candidate.fallback` again), and a loop about as wide as long turning smoothly all round (under
    `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
    (`recognize.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
+   A short side where the outline turns back sharply at one end and gently at the other, its neighbours' far ends
+   apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
+   winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
+   a delete mark whose ends happen to meet) is no outline: the stroke is judged open.
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
-   curve's), an arc, or a curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked
-   polyline.
+   curve's, but three straight sides turning one way, a square bracket, may round theirs,
+   `open_shapes._rounded_bracket`; with two or more corners, no main side bowed like a quarter circle,
+   `open_shapes.BOWED_SIDE`; and no brace's tip, a short pointed excursion the stroke runs on in line through,
+   `open_shapes._brace_tip`: a brace or question mark drawn with a mouse is straight runs and cusps), an arc, or a
+   curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked polyline.
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)

@@ -30,6 +30,18 @@ VERY_SHARP_CORNER = 100.0
 SHARP_CORNER = 62.0
 CORNER_SHARE = 0.45
 NEARLY_ROUND = 1.25
+BOWED_SIDE = math.tan(math.pi / 8) / 2
+MAIN_SIDE = 0.15
+"""A polyline of two or more corners has no main side (over `MAIN_SIDE` of the path) bowed from its chord by more
+than `BOWED_SIDE` of it, as far as a quarter circle bows (tan(22.5 deg) / 2, 0.207): a mouse-drawn question mark's
+or brace's curl turns at cusps but is a curve between them. A single corner may join bowed arms (a hurried check)."""
+BRACE_HEADING_DEG = 30.0
+BRACE_OFFSET = 0.2
+BRACE_TIP = 0.5
+"""A brace's tip: two sides heading the same way (within `BRACE_HEADING_DEG`), the second starting within
+`BRACE_OFFSET` of the shorter's length from the first's line, joined by two sides out and back each under
+`BRACE_TIP` of the shorter. Drawn with a mouse a brace is straight runs and cusps; such a stroke is a curve (an
+arrow's head, a zigzag, a bracket turn away at their corners)."""
 SMOOTH = 0.55
 """A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
 speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
@@ -91,8 +103,10 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-    sharp = max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
-    if len(straight_runs) >= 2 and sharp and (all(straight_runs) or _bent_polyline(work, th, corners, noise)):
+    sharp = (max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
+             or _rounded_bracket(work, corners, straight_runs, noise))
+    if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
+            and not _brace_tip(work, corners) and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
@@ -100,6 +114,37 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
             return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius), (("curve", 0.5),))
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
+
+
+def _bowed_between_corners(work: np.ndarray, corners: list[int], length: float) -> bool:
+    """Whether a stroke with two or more inner corners has a main side that bows like an arc (`BOWED_SIDE`)."""
+    if len(corners) < 4:
+        return False
+    return any(sg.chord_deviation(work[a:b + 1]) > BOWED_SIDE for a, b in itertools.pairwise(corners)
+               if sg.path_length(work[a:b + 1]) > MAIN_SIDE * length)
+
+
+def _rounded_bracket(work: np.ndarray, corners: list[int], straight_runs: list[bool], noise: float) -> bool:
+    """Three straight sides turning the same way at both corners (a square bracket, a U): its corners may be rounded
+    as far as its short arms are long (a brace's or a question mark's bends turn both ways)."""
+    return len(corners) == 4 and all(straight_runs) and len(sf.lobes(work, noise=noise)) == 1
+
+
+def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
+    """Whether the stroke runs on in line through a short pointed excursion of two sides (`BRACE_TIP`)."""
+    sides = np.diff(work[corners], axis=0)
+    lengths = np.hypot(*sides.T)
+    for i in range(len(sides) - 3):
+        j = i + 3
+        shorter = min(lengths[i], lengths[j])
+        if shorter == 0.0 or max(lengths[i + 1], lengths[i + 2]) >= BRACE_TIP * shorter:
+            continue
+        u, v = sides[i] / lengths[i], sides[j] / lengths[j]
+        rel = work[corners[j]] - work[corners[i + 1]]
+        if (float(u @ v) > math.cos(math.radians(BRACE_HEADING_DEG))
+                and abs(float(rel[0] * u[1] - rel[1] * u[0])) < BRACE_OFFSET * shorter):
+            return True
+    return False
 
 
 def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int], noise: float) -> bool:

@@ -27,6 +27,13 @@ CHAMFER_TURN_DEG = 62.0
 """A closed outline's side shorter than ``CHAMFER`` of its shorter neighbour (or ``CHAMFER_OF_LONGER`` of the
 longer), turning less than this at both ends and
 about a right angle in all, is a corner rounded or cut back by a hurried hand, not a side."""
+SPUR = 0.2
+SPUR_TURN_DEG = 130.0
+"""A closed outline's side shorter than ``SPUR`` of its longer neighbour, where the outline turns back by more than
+``SPUR_TURN_DEG`` at one end and by less than a right angle at the other, is a hook (the pen doubling back where it
+landed or lifted, then going on round), not a side: a box drawn with a hooked start is four-sided. The far ends of
+its neighbours lie farther apart than the shorter neighbour is long (a thin box's end joins two long sides that run
+side by side)."""
 BOW_SHARE = 0.06
 """Most points of a side (four in five) lie within this share of its length (plus the pen's noise) of the
 side's own line: a side bowed by more than about 15 % of its length is a curve, not a side."""
@@ -77,6 +84,10 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None
             if (short and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG
                     and 60.0 <= degrees[s - 1] + degrees[s] <= 120.0):  # together, about a right angle's turn
                 return None
+            ends = sorted((float(degrees[s - 1]), float(degrees[s])))
+            if (lengths[s] < SPUR * longer and ends[1] > SPUR_TURN_DEG and ends[0] < 90.0
+                    and float(np.hypot(*(corners[(s - 1) % m] - corners[(s + 2) % m]))) > shorter):
+                return None  # a hook: the pen doubled back and went on round (a thin box's end is no hook)
     if _bowed(pts, np.asarray(idx), lengths, noise, fit.sums):
         return None
     return Corners(tuple(hairpins), corners)

@@ -183,23 +183,31 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         if _polygon_left_open(work, diag):
             closed, loop = True, work
     if not closed:
-        # open strokes are judged by how they turn: on points a few noise widths apart, jitter makes no corners
-        coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
-        found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
-                                          weights.round_corner)
-        round_left_open = found.kind in ("circle", "ellipse")
-        share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
-        if _inside(found.geometry, *_bounds(raw, noise, diag, share)):
-            return found
-        ranked = _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
-                       weights, raw, noise, diag)
-        return _or_freeform(ranked, work, closed=False, sigma=sigma)
+        return _open_reading(raw, work, n, noise, sigma, weights, diag)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
     if _lumpy_round(loop, noise):
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
     candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
     ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop)
+    if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
+        # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
+        return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag)
     return _or_freeform(ranked, loop, closed=True, sigma=sigma)
+
+
+def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,
+                  diag: float) -> Recognition:
+    """An open stroke, judged by how it turns: on points a few noise widths apart, jitter makes no corners."""
+    coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
+    found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
+                                      weights.round_corner)
+    round_left_open = found.kind in ("circle", "ellipse")
+    share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
+    if _inside(found.geometry, *_bounds(raw, noise, diag, share)):
+        return found
+    ranked = _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
+                   weights, raw, noise, diag)
+    return _or_freeform(ranked, work, closed=False, sigma=sigma)
 
 
 FREEFORM_CONFIDENCE = 0.3

@@ -92,8 +92,10 @@ def heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) ->
         norms = float(np.hypot(*v) * np.hypot(*home))
         return 0.0 if norms == 0.0 else math.degrees(math.acos(max(-1.0, min(1.0, float(v @ home) / norms))))
 
-    # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side
-    return angle(work[-1] - work[corners[-2]]) <= max_deg or angle(work[corners[1]] - work[0]) >= 180.0 - max_deg
+    # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side's line
+    # (the start lies on from the end the way the first side goes, or, drawn past the start, back from it)
+    first = angle(work[corners[1]] - work[0])
+    return angle(work[-1] - work[corners[-2]]) <= max_deg or first <= max_deg or first >= 180.0 - max_deg
 
 
 def closure(work: np.ndarray, diag: float) -> float:
@@ -167,3 +169,40 @@ def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8) -
         arc = cum_len[min(c + r, n - 1)] - cum_len[max(c - r, 0)]
         out.append(float(arc / shorter))
     return out
+
+
+def figure_eight(vertices: np.ndarray, share: float = 0.5) -> bool:
+    """Whether a closed outline crosses over itself into lobes turning opposite ways (it winds round no net turn)
+    and those lobes cancel: its signed area is under ``share`` of its hull's. A delete mark whose ends meet is
+    such a bow tie; a triangle with a small loop at a corner winds once less but keeps most of its area."""
+    v = np.asarray(vertices, dtype=float)
+    if len(v) < 4:
+        return False
+    sides = np.roll(v, -1, axis=0) - v
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    turns = (np.roll(heading, -1) - heading + math.pi) % (2 * math.pi) - math.pi
+    if round(float(turns.sum()) / (2 * math.pi)) != 0:
+        return False
+    return abs(_signed_area(v)) < share * _hull_area(v)
+
+
+def _signed_area(v: np.ndarray) -> float:
+    x, y = v[:, 0], v[:, 1]
+    return 0.5 * float((x * np.roll(y, -1) - np.roll(x, -1) * y).sum())
+
+
+def _hull_area(v: np.ndarray) -> float:
+    """Area of the convex hull (Andrew's monotone chain)."""
+    pts = sorted(map(tuple, v.tolist()))
+
+    def half(seq: list[tuple[float, float]]) -> list[tuple[float, float]]:
+        chain: list[tuple[float, float]] = []
+        for p in seq:
+            while len(chain) >= 2 and ((chain[-1][0] - chain[-2][0]) * (p[1] - chain[-2][1])
+                                       - (chain[-1][1] - chain[-2][1]) * (p[0] - chain[-2][0])) <= 0:
+                chain.pop()
+            chain.append(p)
+        return chain
+
+    hull = half(pts)[:-1] + half(pts[::-1])[:-1]
+    return abs(_signed_area(np.array(hull))) if len(hull) >= 3 else 0.0

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, ClassVar, Protocol, cast
 
-from textual import events, work
+from textual import events
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
@@ -30,12 +30,12 @@ from physink_tui.tui.config import Config
 from physink_tui.tui.drawing_help import vocabulary_lines
 from physink_tui.tui.graphics import DEFAULT_CELL
 from physink_tui.tui.live import LiveSession
-from physink_tui.tui.push_to_talk import PushToTalk, barrel_held
 from physink_tui.tui.screens.background import BackgroundWork, SearchFinished, SearchProgressed
 from physink_tui.tui.screens.modals import HelpScreen, PromptModal, TextScreen
 from physink_tui.tui.screens.playback_keys import SEEK_STEP, PlaybackKeys
 from physink_tui.tui.screens.project_files import ProjectFiles
 from physink_tui.tui.screens.settings import SettingsScreen
+from physink_tui.tui.screens.speech_keys import SpeechKeys, SpeechStatus
 from physink_tui.tui.tablet import TabletWatch
 from physink_tui.tui.widgets.bars import NarrationBar, StatusBar
 from physink_tui.tui.widgets.controls import Controls
@@ -52,13 +52,6 @@ MIN_WIDTH, MIN_HEIGHT = 60, 16
 @dataclass
 class DeviceStatus(Message):
     """What the tablet watcher found (posted from its thread)."""
-
-    text: str
-
-
-@dataclass
-class SpeechStatus(Message):
-    """What push-to-talk is doing or heard (posted from its threads)."""
 
     text: str
 
@@ -123,8 +116,6 @@ class MainScreen(Screen[None]):
         self.view: SessionView | None = None
         self.tablet: TabletWatch | None = None
         self._simulate_after = False  # SIMULATE once the replay is done
-        self.talk: PushToTalk | None = None
-        self._barrel = False
         self.scene_view: SceneView | None = None
         """The scene view, once composed (the app tells it when Textual painted over its Sixel picture)."""
         self.background = BackgroundWork(self, self)
@@ -133,6 +124,8 @@ class MainScreen(Screen[None]):
         """Save, Load and adopting a simulation."""
         self.playback = PlaybackKeys(self._latest, self.command)
         """Where the playback keys and the seek messages send the clock."""
+        self.speech = SpeechKeys(self)
+        """Push-to-talk: the key, the barrel button."""
 
     @property
     def panel_app(self) -> PanelApp:
@@ -159,9 +152,7 @@ class MainScreen(Screen[None]):
 
     def attach(self, live: LiveSession, journal: Path | None) -> None:
         self.live = live
-        self.talk = PushToTalk(live.runner, lambda text: self.post_message(SpeechStatus(text)),
-                               stream=getattr(getattr(self.app, "options", None), "microphone", None))
-        live.on_stop(self.talk.stop)
+        self.speech.attach(live, getattr(getattr(self.app, "options", None), "microphone", None))
         self.query_one(StatusBar).set(journal=f"journal {journal.name}" if journal else "not journaling")
 
     def watch_tablet(self, device: str | None, serial: str | None) -> None:
@@ -206,9 +197,7 @@ class MainScreen(Screen[None]):
         status = self.query_one(StatusBar)
         pen = next((f"pen {state} {p:.2f}" for state, p in view.pens.values() if state != "out of range"), None)
         status.set(pen=pen or "pen out of range")
-        if barrel_held(view.pens) != self._barrel and self.talk is not None:
-            self._barrel = self.talk.button_pressed = not self._barrel  # holding the barrel button: push-to-talk
-            self._follow_button(self._labels(view))
+        self.speech.follow(view)  # holding the barrel button: push-to-talk
         self.background.simulated(view, status)
         status.show(view)
 
@@ -249,25 +238,7 @@ class MainScreen(Screen[None]):
         self.query_one(StatusBar).set(speech=message.text)
 
     def action_listen(self) -> None:
-        if self.talk is None:
-            return
-        self.query_one(StatusBar).set(speech="speech: stopping…" if self.talk.listening else "speech: starting…")
-        self._toggle_talk(self._labels(self.view))
-
-    @staticmethod
-    def _labels(view: SessionView | None) -> list[str]:
-        """The labels speech listens for: the components' in ``view``."""
-        return [] if view is None else list(view.scene.labels().values())
-
-    @work(thread=True, group="speech")
-    def _toggle_talk(self, labels: list[str]) -> None:
-        assert self.talk is not None
-        self.talk.toggle(labels)
-
-    @work(thread=True, group="speech")
-    def _follow_button(self, labels: list[str]) -> None:
-        assert self.talk is not None
-        self.talk.follow_button(labels)
+        self.speech.toggle(self.view, self.query_one(StatusBar))
 
     def on_scene_view_pen(self, message: SceneView.Pen) -> None:
         if self.live is not None:
