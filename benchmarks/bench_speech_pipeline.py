@@ -176,7 +176,8 @@ def measure(texts: tuple[str, ...], rows: list[tuple[str, Callable[[np.ndarray],
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--all-commands", action="store_true", help="also the 44 commands (three setups)")
-    parser.add_argument("--rows", help="only the rows whose names contain one of these comma-separated words")
+    parser.add_argument("--rows", help="only the rows whose names contain one of these comma-separated words (on the "
+                        "44 commands with --all-commands)")
     args = parser.parse_args(argv)
     if shutil.which("espeak-ng") is None:
         print("bench_speech_pipeline: espeak-ng is not installed (scripts/setup.sh installs it)", file=sys.stderr)
@@ -191,8 +192,10 @@ def main(argv: list[str] | None = None) -> int:
              ("pipeline as shipped", pipeline(True), {})]
     if args.rows:
         rows = [r for r in rows if any(w in r[0] for w in args.rows.split(","))]
+        measure(sentences.COMMANDS if args.all_commands else labels, rows, say)
+        return 0
     measure(labels, rows, say)
-    if args.all_commands and not args.rows:
+    if args.all_commands:
         say("")
         measure(sentences.COMMANDS, [rows[0], rows[-2], rows[-1]], say)
     return 0
