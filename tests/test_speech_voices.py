@@ -9,9 +9,11 @@ from __future__ import annotations
 
 from functools import cache
 
+import numpy as np
 import pytest
-from speechgen import corpus, sentences, voices
+from speechgen import conditions, corpus, sentences, voices
 
+from physink_tui.input.speech.audio import RATE, to_int16
 from physink_tui.input.speech.backends import make_recogniser
 from physink_tui.input.speech.listener import Listener, Utterance
 
@@ -85,3 +87,15 @@ def test_commands_in_voices_never_calibrated_on_are_heard(family: str) -> None:
     right = [item.text for item, u in commands if u.command and meaning(u.command.as_json()) == meaning(item.command)]
     assert len(commands) == 8
     assert len(right) >= HEARD_AT_LEAST[family], [(i.text, i.voice, u.text, u.rejected) for i, u in commands]
+
+
+@pytest.mark.slow
+def test_a_command_padded_with_digital_silence_is_heard() -> None:
+    """A file whose speech is padded with exact zeros (a synthesiser's or an editor's output) is heard like one over a
+    quiet room: the recogniser fills digital silence with a room's noise floor (one bit of dither was not enough)."""
+    if not voices.available("espeak-ng"):
+        pytest.fail("espeak-ng cannot synthesise here: run scripts/setup.sh")
+    speech = conditions.trimmed(voices.synthesise("label platform", voices.Voice("espeak-ng", "en-us+adam", 175, 50)))
+    edge = np.zeros(round(0.3 * RATE))
+    u = Listener(make_recogniser(), sentences.LABELS).hear(to_int16(np.concatenate([edge, speech, edge])))
+    assert u.command is not None and u.command.as_json() == {"kind": "label", "label": "platform"}, u.rejected

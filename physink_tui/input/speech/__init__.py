@@ -32,16 +32,16 @@ One utterance goes one way whatever brought it: `physink listen FILE.wav` and th
   times, acoustic score and posterior, and the best rival sentence with the margin to it; `threshold`,
   `min_confidence`, `min_margin`), `backends.make_recogniser(vosk_model=None)`
   importing the backend lazily (its own module, so the backends importing the contract make no cycle)
-- `pocketsphinx_backend.py`: the default: pocketsphinx 5 and its bundled en-us model. Two decoders share the
-  grammar: the *screen* also has a loop of single phones at weight 0.01 (speech outside the grammar takes the loop:
-  rejected), the *words* decoder gives the best sentence with lattice posteriors (the loop makes lattices huge, so
-  it is not in this one). British variants (non-rhotic, broad A) are added to every grammar word; a word the
-  dictionary lacks gets `letter_to_sound.pronounce`'s guess. Each decode resets the front end (noise estimate,
-  cepstral mean) and gives it the whole utterance at once, so the model's batch cepstral mean comes from this audio
-  alone (one pass; seeded one-bit dither): a result depends on its audio only (tests and replays agree). A
+- `pocketsphinx_backend.py`: the default: pocketsphinx 5 and its bundled en-us model. Two decoders share the grammar:
+  the *screen* also has a loop of single phones at weight 0.01 (speech outside the grammar takes the loop: rejected),
+  the *words* decoder gives the best sentence with lattice posteriors (the loop makes lattices huge, so it is not in
+  this one). British variants (non-rhotic, broad A) are added to every grammar word; a word the dictionary lacks gets
+  `letter_to_sound.pronounce`'s guess. Each decode resets the front end (noise estimate, cepstral mean) and gives it the
+  whole utterance at once, so the model's batch cepstral mean comes from this audio alone (one pass; seeded one-bit
+  dither, and a quiet room's floor in digital silence): a result depends on its audio only (tests and replays agree). A
   command whose words score well enough is aligned by the screen decoder once alone and once against its rivals
-  (`rivals.py`): `Decoded.margin` is the difference per frame of the words that differ, plus `PREFERENCE` a frame
-  for each name the user gave against a default one
+  (`rivals.py`): `Decoded.margin` is the difference per frame of the words that differ, plus `PREFERENCE` a frame for
+  each name the user gave against a default one
 - `vosk_backend.py`: `--vosk-model DIR`: a `KaldiRecognizer` in grammar mode given the grammar's speakable words
   (and `[unk]` when the model has it); the listener's parser enforces the sentence shape; `parse_result` reads
   vosk's JSON
@@ -65,9 +65,10 @@ One utterance goes one way whatever brought it: `physink listen FILE.wav` and th
 The thresholds (`pocketsphinx_backend.THRESHOLD`, `MIN_CONFIDENCE`, `MIN_MARGIN`) are calibrated by
 `benchmarks/bench_speech_corpus.py` on a corpus of four synthesisers (espeak-ng, flite, festival, SVOX Pico; made by
 `scripts/make_speech_corpus.py` from `tests/speechgen/`, cached outside the repository), each family scored with
-thresholds chosen on the other three, and shipped among those that keep issue 16's fixtures (`tests/speech/`, made
-by `scripts/make_speech_fixtures.py`) at their test's floor; `GARBAGE_WEIGHT` 0.01 and `vosk_backend.THRESHOLD` 0.65
-are issue 16's. `benchmarks/bench_speech.py` measures the fixtures' accuracy and real-time factors
+thresholds chosen on the other three, and shipped among those that keep issue 16's fixtures (`tests/speech/`, made by
+`scripts/make_speech_fixtures.py`) at their test's floor; `GARBAGE_WEIGHT` 0.01 and `vosk_backend.THRESHOLD` 0.65 are
+issue 16's. `benchmarks/bench_speech_pipeline.py` compares a plain pocketsphinx decoder with this pipeline one
+difference at a time. `benchmarks/bench_speech.py` measures the fixtures' accuracy and real-time factors
 (docs/BENCHMARKS.md); `tests/test_speech_voices.py` hears a sample of every family, made at test time.
 
 The journal's `t` never decreases, so a live `say` is stamped with the time the utterance began only where no later
