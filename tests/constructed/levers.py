@@ -18,8 +18,8 @@ from functools import cache
 from scenarios.thesis import BACKGROUND, BodyX, Expected, JointX, Step, pin
 
 from constructed.demonstrate import body_id, session
-from constructed.layouts import CANVAS, RADIUS, THICKNESS, Layout, Platform, frac, random_layout
-from constructed.possible import FLIGHT_S, MOST_CONTACTS, PRESS, THROW_SECONDS, _launch, _path
+from constructed.layouts import RADIUS, THICKNESS, Layout, Platform, frac, random_layout
+from constructed.possible import FLIGHT_S, PRESS, THROW_SECONDS, _launch, ball_contacts, into_basket
 from physink_tui.session.session import Session
 from physink_tui.sim.evaluate import evaluate, rollout_seconds
 from physink_tui.sim.parameters import Parameters
@@ -125,23 +125,10 @@ def _throw(drawn: Session, v):
     if result.stopped_because == Stop.EXPLODED or result.flagged:
         return None
     events = result.timeline.events
-    contacts = sorted((ev for ev in events if ev.type == "contact" and ball in ev.components), key=lambda e: e.t0)
+    contacts = ball_contacts(events, ball)
     if not contacts or bar not in contacts[0].components:
         return None
     if not any(ev.type == "movement" and ev.components and ev.components[0] == bar for ev in events):
         return None
-    into = next((c for c in contacts if basket in c.components), None)
-    if into is None or dict(into.sides).get(basket) != "inside":
-        return None
-    before = [c for c in contacts if c.t0 < into.t0]
-    if len(before) > MOST_CONTACTS or any(c.point is None for c in before):
-        return None
-    frames = sorted((q.t, q.x, q.y) for ev in events if ev.type == "movement" and ev.components
-                    and ev.components[0] == ball for q in ev.trajectory)
-    path = _path(frames, before, into.t0, PRESS["virtual"])
-    if path is None:
-        return None
-    path.append((frames[-1][1], max(q[2] for q in frames) + PRESS["virtual"]))
-    if not all(RADIUS < x < CANVAS[0] - RADIUS and RADIUS < y < CANVAS[1] - RADIUS / 2 for x, y in path):
-        return None
-    return tuple(path)
+    found = into_basket(events, ball, basket, PRESS["virtual"])
+    return None if found is None else found[0]

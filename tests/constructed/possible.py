@@ -123,8 +123,27 @@ def _throw(drawn: Session, v: tuple[float, float], pen: str, least: int):
     result = rollout(scene, drawn.canvas, parameters, max_seconds=THROW_SECONDS)
     if result.stopped_because == Stop.EXPLODED or result.flagged:
         return None
-    events = result.timeline.events
-    contacts = sorted((ev for ev in events if ev.type == "contact" and ball in ev.components), key=lambda e: e.t0)
+    found = into_basket(result.timeline.events, ball, basket, PRESS[pen], least)
+    if found is None:
+        return None
+    path, before, end = found
+    if not _inside(drawn, basket, end[0], end[1]):
+        return None
+    touched = tuple(names[next(c for c in ev.components if c != ball)] for ev in before)
+    return path, touched
+
+
+def ball_contacts(events, ball: str) -> list[Event]:
+    """The ball's contacts among a rollout's ``events``, in order."""
+    return sorted((ev for ev in events if ev.type == "contact" and ball in ev.components), key=lambda e: e.t0)
+
+
+def into_basket(events, ball: str, basket: str, press: float, least: int = 0):
+    """The demonstration path of a throw whose rollout made ``events``, when the ball lands inside the basket after
+    ``least`` to `MOST_CONTACTS` contacts (each with a point), all on the canvas: the path (ending pressed on the
+    lowest point the ball reached, below where it came to rest), those contacts and where the ball ended; else
+    None."""
+    contacts = ball_contacts(events, ball)
     into = next((c for c in contacts if basket in c.components), None)
     if into is None or dict(into.sides).get(basket) != "inside":
         return None
@@ -133,18 +152,14 @@ def _throw(drawn: Session, v: tuple[float, float], pen: str, least: int):
         return None
     frames = sorted((q.t, q.x, q.y) for ev in events if ev.type == "movement" and ev.components
                     and ev.components[0] == ball for q in ev.trajectory)
-    path = _path(frames, before, into.t0, PRESS[pen])
+    path = _path(frames, before, into.t0, press)
     if path is None:
         return None
     end = frames[-1]
-    if not (_inside(drawn, basket, end[1], end[2])):
-        return None
-    layout_floor = max(q[2] for q in frames)
-    path.append((end[1], layout_floor + PRESS[pen]))
+    path.append((end[1], max(q[2] for q in frames) + press))
     if not all(RADIUS < x < CANVAS[0] - RADIUS and RADIUS < y < CANVAS[1] - RADIUS / 2 for x, y in path):
         return None
-    touched = tuple(names[next(c for c in ev.components if c != ball)] for ev in before)
-    return tuple(path), touched
+    return tuple(path), before, (end[1], end[2])
 
 
 def _aimed(rng: random.Random, layout: Layout) -> tuple[float, float]:

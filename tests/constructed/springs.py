@@ -35,7 +35,7 @@ from scenarios.thesis import BACKGROUND, BodyX, Expected, JointX, SpringX, Step,
 
 from constructed.demonstrate import body_id, session
 from constructed.layouts import CANVAS, CLEARANCE, RADIUS, Layout, Platform, _fits, _gap, frac
-from constructed.possible import FLIGHT_S, HURRIED_SHARE, MOST_CONTACTS, PRESS, THROW_SECONDS, _launch, _path
+from constructed.possible import FLIGHT_S, HURRIED_SHARE, PRESS, THROW_SECONDS, _launch, ball_contacts, into_basket
 from physink_tui.input.virtual_pen import Stroke
 from physink_tui.scene.components import Scene, Spring
 from physink_tui.session.session import Session
@@ -244,26 +244,13 @@ def _throw(drawn: Session, v, k: float, rest: float, press: float):
                                                       for f in result.flagged):
         return None
     events = result.timeline.events
-    contacts = sorted((ev for ev in events if ev.type == "contact" and ball in ev.components), key=lambda e: e.t0)
+    contacts = ball_contacts(events, ball)
     if not contacts or tramp not in contacts[0].components or dict(contacts[0].sides).get(tramp) != "top":
         return None
     if not any(ev.type == "movement" and ev.components and ev.components[0] == tramp for ev in events):
         return None
-    into = next((c for c in contacts if basket in c.components), None)
-    if into is None or dict(into.sides).get(basket) != "inside":
-        return None
-    before = [c for c in contacts if c.t0 < into.t0]
-    if len(before) > MOST_CONTACTS or any(c.point is None for c in before):
-        return None
-    frames = sorted((q.t, q.x, q.y) for ev in events if ev.type == "movement" and ev.components
-                    and ev.components[0] == ball for q in ev.trajectory)
-    path = _path(frames, before, into.t0, press)
-    if path is None:
-        return None
-    path.append((frames[-1][1], max(q[2] for q in frames) + press))
-    if not all(RADIUS < x < CANVAS[0] - RADIUS and RADIUS < y < CANVAS[1] - RADIUS / 2 for x, y in path):
-        return None
-    return tuple(path)
+    found = into_basket(events, ball, basket, press)
+    return None if found is None else found[0]
 
 
 # -- impossible -------------------------------------------------------------------------------------------------
@@ -363,9 +350,7 @@ def _demonstrated(case: ImpossibleSpring) -> bool:
 
 
 def _ball_contacts(s: Session) -> list[Event]:
-    ball = body_id(s.scene, "ball")
-    return sorted((ev for ev in s.timeline.events if ev.type == "contact" and ball in ev.components),
-                  key=lambda e: e.t0)
+    return ball_contacts(s.timeline.events, body_id(s.scene, "ball"))
 
 
 def _other(s: Session, contact: Event) -> str:
