@@ -23,6 +23,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from shapely.geometry import MultiPoint, Polygon
 
 from physink_tui.scene.components import Body, Point, Scene
 from physink_tui.scene.physics.build import POLYLINE_RADIUS
@@ -204,28 +205,11 @@ def depths(ok: np.ndarray) -> np.ndarray:
 
 def in_hull(points: np.ndarray, outline: np.ndarray) -> np.ndarray:
     """Which points lie in the convex hull of ``outline``'s points."""
-    hull = _convex_hull(outline)
-    if len(hull) < 3:
+    hull = MultiPoint(outline).convex_hull
+    if not isinstance(hull, Polygon):
         return np.zeros(len(points), dtype=bool)
-    a, b = hull, np.roll(hull, -1, axis=0)
+    a = np.asarray(hull.exterior.coords)[:-1]
+    b = np.roll(a, -1, axis=0)
     cross = ((b[None, :, 0] - a[None, :, 0]) * (points[:, None, 1] - a[None, :, 1])
              - (b[None, :, 1] - a[None, :, 1]) * (points[:, None, 0] - a[None, :, 0]))
     return np.asarray((cross >= 0).all(axis=1) | (cross <= 0).all(axis=1))
-
-
-def _convex_hull(points: np.ndarray) -> np.ndarray:
-    """The convex hull of ``points`` (monotone chain), counter-clockwise in the maths sense."""
-    pts = sorted({(float(x), float(y)) for x, y in points})
-    if len(pts) < 3:
-        return np.array(pts)
-
-    def half(seq: list[tuple[float, float]]) -> list[tuple[float, float]]:
-        out: list[tuple[float, float]] = []
-        for p in seq:
-            while len(out) >= 2 and ((out[-1][0] - out[-2][0]) * (p[1] - out[-2][1])
-                                     - (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])) <= 0:
-                out.pop()
-            out.append(p)
-        return out
-
-    return np.array(half(pts)[:-1] + half(pts[::-1])[:-1])

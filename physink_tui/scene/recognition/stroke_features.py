@@ -7,6 +7,7 @@ import itertools
 import math
 
 import numpy as np
+from shapely.geometry import MultiPoint
 
 from physink_tui.scene.recognition import stroke_geometry as sg
 
@@ -192,17 +193,5 @@ def _signed_area(v: np.ndarray) -> float:
 
 
 def _hull_area(v: np.ndarray) -> float:
-    """Area of the convex hull (Andrew's monotone chain)."""
-    pts = sorted(map(tuple, v.tolist()))
-
-    def half(seq: list[tuple[float, float]]) -> list[tuple[float, float]]:
-        chain: list[tuple[float, float]] = []
-        for p in seq:
-            while len(chain) >= 2 and ((chain[-1][0] - chain[-2][0]) * (p[1] - chain[-2][1])
-                                       - (chain[-1][1] - chain[-2][1]) * (p[0] - chain[-2][0])) <= 0:
-                chain.pop()
-            chain.append(p)
-        return chain
-
-    hull = half(pts)[:-1] + half(pts[::-1])[:-1]
-    return abs(_signed_area(np.array(hull))) if len(hull) >= 3 else 0.0
+    """Area of the convex hull (0 for fewer than three points or points in a line)."""
+    return float(MultiPoint(v).convex_hull.area)
