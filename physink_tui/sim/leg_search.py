@@ -38,7 +38,7 @@ from physink_tui.sim.aim import Aimed, AimSpace
 from physink_tui.sim.coordinates import Normalisation, coordinates
 from physink_tui.sim.evaluate import Score
 from physink_tui.sim.legs import Leg
-from physink_tui.sim.parameters import Parameters
+from physink_tui.sim.parameters import Parameters, SpringParameters
 
 CMA_SIGMA = 0.5
 """CMA-ES's initial step size in the normalised coordinates (half a step of each parameter's scale); doubled at
@@ -60,6 +60,14 @@ SCAN_ANGLES = tuple(range(-45, 46, 15))
 SCAN_SPEEDS = (0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0)
 """After the family, the best one's start velocities turned by -45°…45° in 15° steps and scaled x0.5…x2 in
 x0.25 steps, all start bodies alike (the thesis grid's velocity steps: 48 rollouts), the best of which leads."""
+SPRING_K = (2.0, 4.0, 8.0)
+SPRING_REST = (1.0, 1.25, 1.5)
+"""After the scan, the best so far with its springs' constants scaled by `SPRING_K` and natural lengths by
+`SPRING_REST`, all springs alike (9 rollouts, only in scenes with springs): a spring drawn at its natural length
+under a body struck hard lets it strike the body it is fixed to (the trampoline its base), which the demonstration
+seldom shows and which CMA-ES, moving the throw and the spring together from the seeded k = 20, rarely undoes.
+(Measured on the spring machines' tuning range 0-15, seed 0, budget 200, once spring-borne bodies collide: see
+docs/BENCHMARKS.md.)"""
 AIM_GENERATION = 16
 """Aimed candidates (`aim.aimed`) handed out per generation, so that a search reproducing the demonstration stops
 within 16 rollouts of the candidate that does."""
@@ -89,6 +97,8 @@ class Phase(StrEnum):
     """CMA-ES in `aim.AimSpace` round the best aimed candidate (at most `AIM_RUN_ROLLOUTS`)."""
     SCAN = "scan"
     """The best so far with its start velocities turned and scaled (`SCAN_ANGLES`, `SCAN_SPEEDS`)."""
+    SPRINGS = "springs"
+    """The best so far with stiffer and longer springs (`SPRING_K`, `SPRING_REST`)."""
     RUN = "run"
     """CMA-ES (or the one-coordinate sampler) on a leg."""
 
@@ -167,6 +177,9 @@ class LegByLeg:
                                                                        and self.centre.velocities):
             self._phase = Phase.SCAN
             return _turned_and_scaled(self.centre)
+        if self._phase is Phase.SCAN and self.centre.springs:
+            self._phase = Phase.SPRINGS
+            return _stiffened(self.centre)
         self._phase = Phase.RUN
         while not self.finished:
             if self._run is None and not self._begin():
@@ -179,7 +192,7 @@ class LegByLeg:
         if self.centre_score is None:  # the start, alone (generation 0 of the search)
             self.centre_score = scores[0]
             return
-        if self._phase in (Phase.FAMILY, Phase.SCAN, Phase.AIM):  # the candidate furthest along the legs leads
+        if self._phase in (Phase.FAMILY, Phase.SCAN, Phase.SPRINGS, Phase.AIM):  # the one furthest along leads
             if self._phase is Phase.FAMILY:
                 self._family_round += 1
             for k, (p, s) in enumerate(zip(generation, scores, strict=True)):
@@ -283,6 +296,13 @@ def _turned_and_scaled(p: Parameters) -> list[Parameters]:
             out.append(p.with_velocities({b: (factor * (vx * c - vy * s), factor * (vx * s + vy * c))
                                           for b, (vx, vy) in p.velocities.items()}))
     return out
+
+
+def _stiffened(p: Parameters) -> list[Parameters]:
+    """``p`` with every spring's constant scaled by `SPRING_K` and natural length by `SPRING_REST`, all alike."""
+    return [Parameters(p.bodies, {sid: SpringParameters(sp.k * k, sp.rest_length * rest)
+                                  for sid, sp in p.springs.items()}, p.velocities)
+            for k in SPRING_K for rest in SPRING_REST]
 
 
 class _Run:

@@ -45,6 +45,11 @@ GROOVE_REACH = 10_000.0
 invert, and stretch as far as any canvas needs."""
 AXES = {"horizontal": (1.0, 0.0), "vertical": (0.0, 1.0)}
 """A spring's axis name -> the unit direction it may stretch along."""
+SPRING_OVERLAP = 1.0
+"""Canvas units by which a spring's two bodies may overlap where built and still collide with each other. Bodies
+on a spring are two rigid bodies (thesis 3.2.3 builds the spring as a force, not a joint): a trampoline struck hard
+stops on its base rather than sinking into it. Only bodies drawn into each other (a spring anchored inside the body
+it holds) pass through each other, as a joint's bodies do, since colliding would push them apart at the start."""
 
 
 
@@ -249,9 +254,21 @@ def _add_spring(built: Built, spring: Spring) -> None:
                            fixed.world_to_local((far[0] + ox, far[1] + oy)), free.center_of_gravity),
         pymunk.GearJoint(fixed, free, free.angle - fixed.angle, 1.0),
     )
+    apart = _apart(built.space, built.shapes.get(spring.a, ()), built.shapes.get(spring.b, ()))
     for part in parts:
-        part.collide_bodies = False
+        part.collide_bodies = apart
     built.constraints[spring.id] = parts
+
+
+def _apart(space: pymunk.Space, shapes_a: tuple[pymunk.Shape, ...], shapes_b: tuple[pymunk.Shape, ...]) -> bool:
+    """Whether no shape of one body overlaps one of the other's by more than `SPRING_OVERLAP` where built."""
+    others = set(shapes_b)
+    for shape in shapes_a:
+        shape.cache_bb()
+        for hit in space.shape_query(shape):
+            if hit.shape in others and any(p.distance < -SPRING_OVERLAP for p in hit.contact_point_set.points):
+                return False
+    return True
 
 
 def _reduced_mass(a: pymunk.Body, b: pymunk.Body) -> float:
