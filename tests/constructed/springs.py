@@ -12,16 +12,18 @@ ball pressed `possible.PRESS` into each surface it touched; the demonstration pu
 spring as the throw did. The witness is the generating parameters (throw, constant, natural length), re-checked
 against the demonstration (qualitative distance 0), else the next layout is drawn.
 
-Impossible (`impossible_spring`): the ball, starting low on the left, touches the top of the base under the
-trampoline and then, with nothing between, the trampoline's top, before it drops into the basket. The base lies
-under the trampoline's span more than a ball's radius in from either end (`BASE_SHARE` of its length, at least 220
-long), and the trampoline moves only up and down (its spring's groove), so the argument of `impossible.py` holds:
-from under the trampoline the ball must cross the trampoline's height at least a radius beyond one of its ends, and
-there nothing pushes it back inward (the trampoline's corner or end only outwards, the base is out of reach,
-gravity has no sideways part), while a free flight keeps its horizontal speed. The other order (the trampoline's
-top, then the base's) is not impossible here: a spring's two bodies do not collide (`scene/physics/build.py`), so a
-trampoline struck hard sinks into its base and the ball on it reaches the base's top (held-back case 5001 of the
-first construction was reproduced so).
+Impossible (`impossible_spring`): the ball touches the top of the base under the trampoline and then, with nothing
+between, the trampoline's top (`UNDER_FIRST`: the ball starts low on the left), or the trampoline's top and then the
+base's (`OVER_FIRST`: it starts top left), before it drops into the basket; the order is drawn from its own seeded
+generator, so the cases of one order are the same whether or not the other is made. The base lies under the
+trampoline's span more than a ball's radius in from either end (`BASE_SHARE` of its length, at least 220 long), the
+trampoline moves only up and down (its spring's groove) and cannot pass through its base (a spring's two bodies
+collide, `scene/physics/build.py`), so the argument of `impossible.py` holds: between the two faces the ball must
+cross the trampoline's height at least a radius beyond one of its ends, and there nothing pushes it back inward
+(the trampoline's corner or end only outwards, the base is out of reach, gravity has no sideways part), while a free
+flight keeps its horizontal speed. (While a spring's bodies did not collide, the order `OVER_FIRST` was possible: a
+trampoline struck hard sank into its base and the ball on it reached the base's top; held-back case 5001 of the first
+construction was reproduced so.)
 """
 
 from __future__ import annotations
@@ -255,6 +257,7 @@ def _throw(drawn: Session, v, k: float, rest: float, press: float):
 
 # -- impossible -------------------------------------------------------------------------------------------------
 
+OVER_FIRST = "the trampoline's top, then the base's top"
 UNDER_FIRST = "the base's top, then the trampoline's top"
 ROUND = 2.0 * RADIUS
 """How far beyond the trampoline's end (past touching it) the pen takes the ball round it."""
@@ -262,8 +265,8 @@ ROUND = 2.0 * RADIUS
 
 @dataclass(frozen=True, slots=True)
 class ImpossibleSpring:
-    """An impossible spring case: the ball touches the base's top and then the trampoline's top, one right after
-    the other (`order`), then drops into the basket."""
+    """An impossible spring case: the ball touches the base's top and the trampoline's top, one right after the
+    other in `order`, then drops into the basket."""
 
     seed: int
     pen: str
@@ -278,13 +281,13 @@ class ImpossibleSpring:
     @property
     def reason(self) -> str:
         return (f"the ball touches {self.order} with nothing between: the base lies under the trampoline, which "
-                "moves only up and down on its spring, and a free flight keeps the ball's horizontal speed, so it "
-                "cannot come out round the trampoline's end from below it onto its top")
+                "moves only up and down on its spring and cannot pass through the base, and a free flight keeps the "
+                "ball's horizontal speed, so it cannot come round the trampoline's end from one face to the other")
 
     @property
     def second(self) -> str:
         """The body of the contact the construction made impossible."""
-        return TRAMPOLINE
+        return "base" if self.order == OVER_FIRST else TRAMPOLINE
 
     def session(self) -> Session:
         return _session(self)
@@ -299,14 +302,15 @@ def impossible_spring(seed: int) -> ImpossibleSpring:
     """The impossible spring case of ``seed`` (see the module docstring)."""
     rng = random.Random(f"impossible-spring:{seed}")
     pen = "hurried" if rng.random() < HURRIED_SHARE else "virtual"
-    order = UNDER_FIRST
+    order = OVER_FIRST if random.Random(f"impossible-spring-order:{seed}").random() < 0.5 else UNDER_FIRST
     for _ in range(LAYOUT_TRIES):
         layout = random_spring_layout(rng)
         layout = replace(layout, platforms=(layout.trampoline,))  # nothing else near the trampoline
         _, base_top, _, _ = layout.base()
-        layout = replace(layout, ball=(rng.uniform(110, 260), base_top - RADIUS - rng.uniform(30.0, 60.0)))
-        if layout.ball[0] + RADIUS + CLEARANCE > layout.trampoline.left:
-            continue
+        if order == UNDER_FIRST:
+            layout = replace(layout, ball=(rng.uniform(110, 260), base_top - RADIUS - rng.uniform(30.0, 60.0)))
+            if layout.ball[0] + RADIUS + CLEARANCE > layout.trampoline.left:
+                continue
         path = _impossible_path(rng, layout, order, PRESS[pen])
         if not all(RADIUS < px < CANVAS[0] - RADIUS and RADIUS < py < CANVAS[1] - RADIUS / 2 for px, py in path):
             continue
@@ -317,9 +321,10 @@ def impossible_spring(seed: int) -> ImpossibleSpring:
 
 
 def _impossible_path(rng: random.Random, layout: SpringLayout, order: str, press: float):
-    """In from the left under the trampoline, down onto the base (left or right of the spring) and up; out round
-    the trampoline's right end, over it, down onto its top and up; round the right end again and into the
-    basket."""
+    """`UNDER_FIRST`: in from the left under the trampoline, down onto the base (left or right of the spring) and
+    up; out round the trampoline's right end, over it, down onto its top and up; round the right end again and into
+    the basket. `OVER_FIRST`: down onto the trampoline's top and up; round its right end and in under it, down onto
+    the base and up; out round the right end again and into the basket."""
     t = layout.trampoline
     x0, base_top, x1, _ = layout.base()
     over = t.top - RADIUS - ROUND
@@ -332,8 +337,10 @@ def _impossible_path(rng: random.Random, layout: SpringLayout, order: str, press
         rng.uniform(x1 - RADIUS * 0.8, x1 - RADIUS * 0.3)
     top = ((on_t, over), (on_t, on_top), (on_t, over))
     base = ((on_b, low), (on_b, on_base), (on_b, low))
-    del order  # one order: see the module docstring
-    middle = (*base, (end, low), (end, over), *top, (end, over))
+    if order == OVER_FIRST:
+        middle = (*top, (end, over), (end, low), *base, (end, low))
+    else:
+        middle = (*base, (end, low), (end, over), *top, (end, over))
     b = layout.basket
     drop_x = b.x + b.width / 2
     return (layout.ball, *middle, (drop_x, min(middle[-1][1], b.rim) - RADIUS - 40),
@@ -346,7 +353,8 @@ def _demonstrated(case: ImpossibleSpring) -> bool:
         return False
     names = s.scene.names()
     got = [(names[_other(s, c)], dict(c.sides).get(_other(s, c))) for c in _ball_contacts(s)]
-    return got == [("base", "top"), (TRAMPOLINE, "top"), ("basket", "inside")]
+    pair = [("base", "top"), (TRAMPOLINE, "top")]
+    return got == [*(pair if case.order == UNDER_FIRST else pair[::-1]), ("basket", "inside")]
 
 
 def _ball_contacts(s: Session) -> list[Event]:
