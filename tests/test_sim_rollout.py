@@ -207,6 +207,17 @@ def test_a_body_falling_onto_a_spring_is_still_flagged() -> None:
     assert [flag for flag in result.flagged if flag.startswith("the crate would not stay where it is drawn")]
 
 
+def test_a_trampoline_struck_hard_stops_on_its_base() -> None:
+    """A spring's two bodies are two rigid bodies: the ball thrown down hard onto a soft trampoline drives it onto
+    its base, which stops it (before, they passed through each other and the trampoline sank into the base)."""
+    scene, params = trampoline(k=4.0)
+    result = rollout(scene, CANVAS, params.with_velocities({"b1": (0.0, 2500.0)}), max_seconds=1.5)
+    events = result.timeline.events
+    assert any(ev.type == "contact" and set(ev.components) == {"b2", "b3"} for ev in events)
+    lowest = max(p.y for ev in events if ev.type == "movement" and ev.components[0] == "b3" for p in ev.trajectory)
+    assert lowest + 15.0 <= 730.0 + 5.0, "the trampoline's bottom stays on the base's top (within the solver's slop)"
+
+
 def test_a_ball_drawn_above_its_shelf_comes_flush() -> None:
     """The golf ball drawn 5 units above its shelf rests on it, unflagged, instead of bouncing for ever."""
     s = demonstrated("golf_ball_helper")

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 from constructed.judge import judge
-from constructed.springs import TRAMPOLINE, UNDER_FIRST, impossible_spring, spring_case, spring_matters
+from constructed.springs import OVER_FIRST, TRAMPOLINE, UNDER_FIRST, impossible_spring, spring_case, spring_matters
 
 from physink_tui.scene.components import Spring
 from physink_tui.sim.coordinates import Coordinate, coordinates
@@ -22,8 +22,9 @@ from physink_tui.timeline.events import event_label
 POSSIBLE = (1, 7)
 """From the tuning range (0-999): the virtual pen, a throw that the seeded spring does not carry into the basket (1);
 the hurried hand (7)."""
-IMPOSSIBLE = (0, 1)
-"""From the tuning range: the base's top, then the trampoline's top (the virtual pen)."""
+IMPOSSIBLE = ((0, OVER_FIRST), (5, UNDER_FIRST))
+"""From the tuning range, the virtual pen: the trampoline's top, then the base's (possible while a spring's two bodies
+did not collide: the trampoline sank into its base); the base's top, then the trampoline's."""
 
 
 @pytest.mark.parametrize("seed", POSSIBLE)
@@ -56,10 +57,10 @@ def test_the_spring_matters_and_is_among_the_coordinates_cma_es_moves() -> None:
         "CMA-ES on the trampoline's leg moves its spring's constant and natural length"
 
 
-@pytest.mark.parametrize("seed", IMPOSSIBLE)
-def test_an_impossible_spring_case_is_refused_naming_the_impossible_contact(seed: int) -> None:
+@pytest.mark.parametrize(("seed", "order"), IMPOSSIBLE)
+def test_an_impossible_spring_case_is_refused_naming_the_impossible_contact(seed: int, order: str) -> None:
     case = impossible_spring(seed)
-    assert case.order == UNDER_FIRST
+    assert case.order == order
     s = case.session()
     names = s.scene.names()
     event = case.impossible_event()
