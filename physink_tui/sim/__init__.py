@@ -41,15 +41,18 @@
   counts only outside its hull), `clear_regions` (the deepest cell of each clear region), `nearly_clear` (the
   flight that comes nearest when none is clear: a shot that grazes a corner by a unit is often clear in the physics)
 - `chain.py`: the later legs aimed (`chain_aimed`): each place along the first target's faces by each flight time
-  followed through modelled bounces (`rebound`) and scored by the demonstrated contacts with fixed bodies it makes
-  in order (`demonstrated_chain`); the deepest launch of each region making the most is tried first
+  followed through modelled bounces (`rebound`, calibrated against the physics world by benchmarks/bench_bounce.py: a
+  loss to gravity while pressed, Coulomb friction, a disc starting to roll) and scored by the demonstrated contacts
+  with fixed bodies it makes in order (`demonstrated_chain`); the deepest launch of each region making the most is
+  tried first
 - `where.py`: `differences_in_place`: for a reproduced demonstration, the matched contacts whose simulated point lies
   far from the drawn one, in words ("the ball meets the platform a at its right corner, not at its middle as you
   showed"); `place(body, point)` reads a point in the body's own frame
 - `leg_search.py`: `LegByLeg`, the default: the flight-time family of the seed first (zooming 2^(k/4), 2^(j/16),
   2^(j/64)), then the aimed candidates (`chain.py`'s, then `aim.py`'s, made only then, 16 a generation) and one CMA-ES
   run in `AimSpace` round the best of them (at most 60 rollouts), then the best one's start velocities turned and scaled
-  together (the grid's velocity steps, 48 rollouts), then CMA-ES (pycma, seeded) on the parameters of the first leg the
+  together (the grid's velocity steps, 48 rollouts), in scenes with springs the best one with its springs stiffer and
+  longer (9 rollouts), then CMA-ES (pycma, seeded) on the parameters of the first leg the
   best so far does not reproduce, against that leg's score; restarts with doubled steps when a run stalls; a leg given
   up past step 4, another round over the legs while budget is left; what it asked for last is its `Phase`
 - `search.py`: `Search(scene, timeline, canvas, strategy=, seed=, budget=)`: `next_generation()` / `tell(scores)` /

@@ -48,7 +48,8 @@ the caller's.
 `build.py` mirrors a Scene into one pymunk Space (fixed dt 1/120 s, gravity 900 canvas units/s², i.e. 1 m = 100
 units): boxes and ellipses as convex polys, freeform polygons triangulated with shapely's constrained Delaunay
 triangulation, polylines as thin segments, pivot and weld joints, springs as a damped spring plus a groove and gear
-(one axis only; `Spring.k` in the thesis's N/m, scaled by `SPRING_UNITS` = 1e4), ropes as 8-40 light links with a
+(one axis only; `Spring.k` in the thesis's N/m, scaled by `SPRING_UNITS` = 1e4; its two bodies collide unless drawn
+into each other, `SPRING_OVERLAP`), ropes as 8-40 light links with a
 maximum-distance joint between their ends. Bodies welded to the background are static; `World` adds only constraints
 with at least one dynamic end. Contact materials follow DESIGN.md (max restitution, mean friction) without a Python
 callback on every contact: shapes carry elasticity 0.0 (so every contact after its first step is inelastic, as the
