@@ -12,7 +12,7 @@ from physink_tui.sim.coordinates import coordinates
 from physink_tui.sim.evaluate import Score
 from physink_tui.sim.leg_search import FAMILY_ROUNDS, LegByLeg
 from physink_tui.sim.legs import legs
-from physink_tui.sim.parameters import BodyParameters, Parameters
+from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters
 from physink_tui.timeline.equivalence import compare, compare_prefixes, prepare
 from physink_tui.timeline.events import Timeline
 from tests.sim_scenes import demonstration
@@ -126,3 +126,31 @@ def test_after_the_family_the_start_velocities_are_turned_and_scaled_together() 
     best = scan[17]
     strategy.told(scan, [Score(0.5 if p is best else 1.0, 1.0) for p in scan])
     assert strategy.centre is best
+
+
+def test_after_the_scan_a_scene_with_springs_tries_them_stiffer_and_longer() -> None:
+    """A spring drawn at its natural length under a body struck hard lets it strike what the spring is fixed to (the
+    trampoline its base); after the scan the best is tried with its springs stiffer and longer, and the best of those
+    leads (tests/test_sim_springs.py's spring-1 needs it)."""
+    start = Parameters({"b1": BodyParameters(1.0, 1.0)}, {"s1": SpringParameters(20.0, 150.0)}, {"b1": (100.0, 0.0)})
+    strategy = LegByLeg(start, (), seed=0)
+    strategy.told([start], [Score(1.0, 100.0)])
+    scan = strategy.generation(None)
+    strategy.told(scan, [Score(1.0, 100.0) for _ in scan])
+    stiffer = strategy.generation(None)
+    assert {(p.springs["s1"].k, p.springs["s1"].rest_length) for p in stiffer} == \
+        {(20.0 * k, 150.0 * r) for k in (2.0, 4.0, 8.0) for r in (1.0, 1.25, 1.5)}
+    assert all(p.velocities == start.velocities and p.bodies == start.bodies for p in stiffer)
+    best = stiffer[4]
+    strategy.told(stiffer, [Score(0.5 if p is best else 1.0, 1.0) for p in stiffer])
+    assert strategy.centre is best
+
+
+def test_a_scene_without_springs_goes_from_the_scan_to_the_legs() -> None:
+    start = Parameters({"b1": BodyParameters(1.0, 1.0)}, {}, {"b1": (100.0, 0.0)})
+    strategy = LegByLeg(start, (), seed=0)
+    strategy.told([start], [Score(1.0, 100.0)])
+    scan = strategy.generation(None)
+    strategy.told(scan, [Score(1.0, 100.0) for _ in scan])
+    strategy.generation(None)
+    assert strategy.phase == "run"
