@@ -248,7 +248,7 @@ def summary(rows: list[Row], args, command: str) -> str:
         lines.append("")
         lines.append(f"Impossible spring cases {args.impossible_springs}: {len(imp_springs)}; refused "
                      f"{sum(not r.found for r in imp_springs)}; the verdict naming the constructed impossibility "
-                     f"(the trampoline's top, touched after the base's) {sum(bool(r.named) for r in imp_springs)}; "
+                     f"(the second of the two faces) {sum(bool(r.named) for r in imp_springs)}; "
                      f"wall median {statistics.median([r.wall for r in imp_springs]):.2f} s, 90th pct "
                      f"{percentile([r.wall for r in imp_springs], 0.9):.2f} s.")
         other = [r for r in imp_springs if not r.named]
