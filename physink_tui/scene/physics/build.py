@@ -47,9 +47,10 @@ AXES = {"horizontal": (1.0, 0.0), "vertical": (0.0, 1.0)}
 """A spring's axis name -> the unit direction it may stretch along."""
 SPRING_OVERLAP = 1.0
 """Canvas units by which a spring's two bodies may overlap where built and still collide with each other. Bodies
-on a spring are two rigid bodies (thesis 3.2.3: a Hooke's-law force, and a prismatic joint that keeps it on one
-axis): a trampoline struck hard stops on its base rather than sinking into it. Only bodies drawn into each other (a spring anchored inside the body
-it holds) pass through each other, as a joint's bodies do, since colliding would push them apart at the start."""
+on a spring are two rigid bodies (thesis 3.2.3: a Hooke's-law force, and a prismatic joint that keeps it on one axis): a
+trampoline struck hard stops on its base rather than sinking into it. Only bodies drawn into each other (a spring
+anchored inside the body it holds) pass through each other, as a joint's bodies do, since colliding would push them
+apart at the start."""
 
 
 
