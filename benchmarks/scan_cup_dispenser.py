@@ -24,11 +24,15 @@ legs of `sim.legs`). Three phases, all seeded (the rows depend only on the argum
   cup-peg contact, take the peg as far left as possible after it.
 
 Per candidate the row holds the parameters, the qualitative distance, the leading legs reproduced, and what decides
-the demonstration's end: the peg's horizontal travel after its contact with the cup. The demonstrated "end of
-contact between peg and platform" caused by the peg's movement needs the peg 37.8 units (half its size,
-`timeline.touches.LEAVE_FRACTION`) clear of the platform's left side, so at least that far left of where it began
-(flush against it); the summary gives the farthest left any rollout with the demonstrated contacts up to the cup's
-took the peg after that contact, before any other contact (a body falling on the peg is another event).
+the demonstration's end: how far left of where it started (flush against the platform's left side) the peg goes
+after its contact with the cup, before any other contact (``peg_left``; a body falling on the peg is another event).
+The demonstrated ending needs the peg back past its start (``peg_left`` > 0: its right end left of the platform's
+side, which it then meets), and the end of the peg's contact with the platform recorded as caused by the peg's
+movement: the recorder (`timeline.recorder`, a resting body starting to move within a second of parting from
+another) records it when the platform, at rest against the peg, starts moving once the peg has left it.
+
+``--why ROWS.jsonl[,MORE.jsonl]``: runs nothing new but the candidates of earlier rows that reproduce the first six
+legs (up to the cup-peg contact), and counts how their end of the peg's contact with the platform comes about.
 """
 
 from __future__ import annotations
@@ -38,8 +42,10 @@ import json
 import math
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -65,11 +71,13 @@ JOURNALS = ROOT / "tests" / "journals"
 FULL = JOURNALS / "restored" / "cup_dispenser_full.physink.jsonl"
 SHORT = JOURNALS / "cup_dispenser.physink.jsonl"
 BALL, PLATFORM, CUP, PEG = "b2", "b4", "b5", "b7"
-LEAVE = 37.8
-"""Canvas units the peg must get clear of the platform for their contact to end (half the peg's size)."""
 VX, VY = (-300.0, 1500.0), (-1000.0, 1200.0)
 SCALE = 16.0
 REST = (0.25, 2.5)
+
+
+Row = dict[str, Any]
+"""One candidate's row (written as a JSON line)."""
 
 
 def load(path: Path) -> Session:
@@ -85,10 +93,10 @@ class Job:
     peg_x: float
 
 
-def _row(job: Job, p: Parameters) -> dict[str, object]:
+def _row(job: Job, p: Parameters) -> Row:
     problem = job.problem
     names = problem.scene.names()
-    row: dict[str, object] = {"params": encode(p)}
+    row: Row = {"params": encode(p)}
     try:
         result = simulate(problem, p)
     except SimulationError as exc:  # out-of-range parameters: the search's exploded score too
@@ -117,11 +125,11 @@ def _row(job: Job, p: Parameters) -> dict[str, object]:
             "legs": lead, "of": len(prefixes), "cup_peg": bool(cup_peg), "peg_left": peg_left}
 
 
-def evaluate_row(p: Parameters) -> dict[str, object]:
+def evaluate_row(p: Parameters) -> Row:
     return _row(shared("scan_cup"), p)
 
 
-def encode(p: Parameters) -> dict[str, object]:
+def encode(p: Parameters) -> Row:
     return {"bodies": {k: [v.mass, v.friction] for k, v in sorted(p.bodies.items())},
             "springs": {k: [v.k, v.rest_length] for k, v in sorted(p.springs.items())},
             "velocities": {k: list(v) for k, v in sorted(p.velocities.items())}}
@@ -159,6 +167,30 @@ def sample(rng: np.random.Generator, base: Parameters, launch: tuple[float, floa
     return Parameters(bodies, springs, {BALL: v})
 
 
+def why(paths: list[Path]) -> None:
+    """``--why``: how the candidates reproducing the first six legs end the peg's contact with the platform."""
+    from collections import Counter
+
+    session = load(FULL)
+    problem = make_problem(session.scene, session.timeline, session.canvas)
+    rows = [json.loads(line) for path in paths for line in path.open()]
+    chosen = [r for r in rows if int(r.get("legs") or 0) >= 6]
+    ends: Counter[str] = Counter()
+    for r in chosen:
+        timeline = simulate(problem, decode(r["params"])).timeline
+        knocks = [ev.t0 for ev in timeline.events if ev.type == "contact" and set(ev.components) == {CUP, PEG}]
+        parted = [ev for ev in timeline.events if ev.type == "end_contact" and set(ev.components) == {PLATFORM, PEG}
+                  and knocks and ev.t0 > knocks[0]]
+        if not parted:
+            ends["no end of the peg's contact with the platform after the cup-peg contact"] += 1
+        else:
+            movers = sorted(timeline.event(c).components[0] for c in parted[0].causes)
+            ends[f"the end of the peg's contact with the platform caused by the movement of {', '.join(movers)}"] += 1
+    print(f"{len(chosen)} of {len(rows)} rows reproduce the first six legs:")
+    for what, n in ends.most_common():
+        print(f"  {n}: {what}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--random", type=int, default=12000)
@@ -170,7 +202,11 @@ def main() -> None:
     ap.add_argument("--rows", type=Path, default=None)
     ap.add_argument("--start-rows", type=Path, default=None,
                     help="rows of an earlier run, among which the CMA-ES runs choose their starts (not run again)")
+    ap.add_argument("--why", default=None, help="ROWS.jsonl[,MORE.jsonl]: explain earlier rows (runs nothing else)")
     args = ap.parse_args()
+    if args.why:
+        why([Path(p) for p in args.why.split(",")])
+        return
     started = time.time()
 
     session = load(FULL)
@@ -190,10 +226,10 @@ def main() -> None:
           flush=True)
 
     rng = np.random.default_rng(args.seed)
-    rows: list[dict[str, object]] = []
+    rows: list[Row] = []
     out = args.rows.open("w") if args.rows else None
 
-    def run(phase: str, candidates: list[Parameters], executor: ProcessExecutor) -> list[dict[str, object]]:
+    def run(phase: str, candidates: list[Parameters], executor: ProcessExecutor) -> list[Row]:
         got = []
         for i in range(0, len(candidates), 256):
             for r in executor.map(evaluate_row, candidates[i:i + 256]):
@@ -226,31 +262,33 @@ def main() -> None:
     summary(rows, time.time() - started)
 
 
-def search_objective(r: dict[str, object]) -> float:
+def search_objective(r: Row) -> float:
     """The search's own objective, without the miss term (1000 x qualitative + quantitative)."""
-    q = float(r["qualitative"])  # type: ignore[arg-type]
-    return math.inf if not math.isfinite(q) else 1000.0 * q + float(r.get("quantitative") or 0.0)  # type: ignore[arg-type]
+    q = float(r["qualitative"])
+    return math.inf if not math.isfinite(q) else 1000.0 * q + float(r.get("quantitative") or 0.0)
 
 
-def push_objective(r: dict[str, object]) -> float:
+def push_objective(r: Row) -> float:
     """Lower is better: among candidates reproducing the demonstration up to the cup-peg contact (6 legs), the peg
     taken farthest left after it; the others by how many legs they lack."""
-    if not math.isfinite(float(r["qualitative"])):  # type: ignore[arg-type]
+    if not math.isfinite(float(r["qualitative"])):
         return 1e9
-    lead = int(r["legs"])  # type: ignore[call-overload]
+    lead = int(r["legs"])
     if lead >= 6 and r.get("peg_left") is not None:
-        return -float(r["peg_left"])  # type: ignore[arg-type]
+        return -float(r["peg_left"])
     return 1000.0 * (6 - min(lead, 6)) + search_objective(r) / 1000.0
 
 
-def cma_runs(rows, runs, evals, base, executor, run, seed_, phase, objective) -> None:  # type: ignore[no-untyped-def]
+def cma_runs(rows: list[Row], runs: int, evals: int, base: Parameters, executor: ProcessExecutor,
+             run: Callable[[str, list[Parameters], ProcessExecutor], list[Row]], seed_: int, phase: str,
+             objective: Callable[[Row], float]) -> None:
     """CMA-ES on ``objective`` from the best distinct candidates so far by it (module docstring)."""
     import cma
 
     ranked = sorted((r for r in rows if math.isfinite(float(r["qualitative"]))), key=objective)
     starts: list[Parameters] = []
     for r in ranked:
-        p = decode(r["params"])  # type: ignore[arg-type]
+        p = decode(r["params"])
         if all(abs(p.velocities[BALL][0] - s.velocities[BALL][0]) > 1 for s in starts):
             starts.append(p)
         if len(starts) == runs:
@@ -267,32 +305,32 @@ def cma_runs(rows, runs, evals, base, executor, run, seed_, phase, objective) ->
             es.tell(zs, [min(objective(r), 1e9) for r in got])
 
 
-def report(phase: str, got: list[dict[str, object]]) -> None:
-    done = [r for r in got if math.isfinite(float(r["qualitative"]))]  # type: ignore[arg-type]
-    best = min((float(r["qualitative"]) for r in done), default=math.inf)  # type: ignore[arg-type]
+def report(phase: str, got: list[Row]) -> None:
+    done = [r for r in got if math.isfinite(float(r["qualitative"]))]
+    best = min((float(r["qualitative"]) for r in done), default=math.inf)
     print(f"{phase}: {len(got)} rollouts, best qualitative {best}", flush=True)
 
 
-def summary(rows: list[dict[str, object]], wall: float) -> None:
+def summary(rows: list[Row], wall: float) -> None:
     rows = [r for r in rows if not r.get("earlier")]
-    finite = [r for r in rows if math.isfinite(float(r["qualitative"]))]  # type: ignore[arg-type]
-    equivalent = [r for r in finite if float(r["qualitative"]) == 0]  # type: ignore[arg-type]
+    finite = [r for r in rows if math.isfinite(float(r["qualitative"]))]
+    equivalent = [r for r in finite if float(r["qualitative"]) == 0]
     print(f"\n{len(rows)} rollouts in {wall:.0f} s; exploded or out of range {len(rows) - len(finite)}; "
           f"equivalent {len(equivalent)}")
-    of = max((int(r["of"]) for r in finite), default=0)  # type: ignore[call-overload]
+    of = max((int(r["of"]) for r in finite), default=0)
     for phase in sorted({str(r["phase"]) for r in rows}):
         these = [r for r in finite if r["phase"] == phase]
-        counts = [sum(1 for r in these if int(r["legs"]) >= k) for k in range(of + 1)]  # type: ignore[call-overload]
-        best = min((float(r["qualitative"]) for r in these), default=math.inf)  # type: ignore[arg-type]
+        counts = [sum(1 for r in these if int(r["legs"]) >= k) for k in range(of + 1)]
+        best = min((float(r["qualitative"]) for r in these), default=math.inf)
         print(f"{phase}: {len(these)} rollouts; best qualitative {best}; leading legs reproduced >= k, k=0..{of}: "
               f"{counts}")
     cup = [r for r in finite if r.get("peg_left") is not None]
-    lead6 = [r for r in cup if int(r["legs"]) >= 6]  # type: ignore[call-overload]
+    lead6 = [r for r in cup if int(r["legs"]) >= 6]
     for name, rs in (("with a cup-peg contact", cup), ("reproducing the demonstration up to the cup-peg contact",
                                                        lead6)):
-        far = max((float(r["peg_left"]) for r in rs), default=math.nan)  # type: ignore[arg-type]
-        print(f"{name}: {len(rs)} rollouts; the peg's farthest travel left of its start after that contact "
-              f"{far:.1f} units (needed: {LEAVE})")
+        far = max((float(r["peg_left"]) for r in rs), default=math.nan)
+        print(f"{name}: {len(rs)} rollouts; the peg's farthest travel left of its start after that contact, before "
+              f"any other contact: {far:.1f} units (needed: > 0)")
     if equivalent:
         print("witness:", json.dumps(equivalent[0]["params"]))
 

@@ -4,8 +4,8 @@ by the default search within the default budget at seeds 0-2; where the answer b
 show, the verdict says so. bouncing_first_below_b (figure 3-22) is a needle: a near-straight shot under B's left
 corner, over the basket's rim, onto the basket's right wall (a witness below); the search finds it by aiming at the
 flights that clear the drawing (sim/clearance.py). The cup dispenser's full demonstration is neither found nor
-proven impossible: a scan of 50,000 parameter sets found no equivalent (docs/BENCHMARKS.md), and the argument that
-its let-go peg can never come back past where it started fails, as a rollout below shows."""
+proven impossible: an offline scan of 44,875 parameter sets found no equivalent (docs/BENCHMARKS.md), and the argument
+that its let-go peg can never come back past where it started fails, as a rollout below shows."""
 
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParamet
 from physink_tui.sim.seeding import seed
 from physink_tui.sim_run.executors import SerialExecutor
 from physink_tui.timeline.qualitative import outline_of
-from physink_tui.timeline.touches import LEAVE_FRACTION, body_size
+from physink_tui.timeline.touches import body_size
 
 RESTORED = Path(__file__).parent / "journals" / "restored"
 FOUND = ("hits_a", "hits_b_once", "hits_b_twice", "hits_b_bottom", "above_b", "below_b", "a_then_b_bottom",
@@ -42,7 +42,8 @@ CUP_KNOCKS_PEG_BACK = Parameters(
     {"b2": (705.4674351569338, 741.750343536818)})
 """Ball (b2), platform (b4), cup (b5) and peg (b7), platform spring (s1) and peg spring (s2) of the cup dispenser, as
 benchmarks/scan_cup_dispenser.py's random phase drew them: the cup, bouncing on the platform, comes down moving left
-and knocks the peg 60 units left of where it started (not an equivalent: the cup touches the platform again first)."""
+and knocks the peg 60 units left of where it started (not an equivalent: the cup touches the platform again before
+it meets the peg)."""
 
 
 @cache
@@ -75,19 +76,21 @@ def test_the_ball_can_pass_under_b_into_the_basket_in_the_first_drawing() -> Non
 
 
 def test_the_cup_can_knock_the_peg_back_past_where_it_started() -> None:
-    # The full demonstration ends with the let-go peg back left of the platform, clear of it, and knocking its side.
-    # The peg starts at rest pressed against the platform, so its spring alone cannot take it back past that start
-    # (dd04c71's argument); but the cup can, and far enough to end the peg's contact with the platform: so the
-    # refusal of that ending is not proven by the spring (docs/BENCHMARKS.md, issue 27).
+    # The full demonstration ends with the let-go peg back left of the platform, meeting its left side. The peg
+    # starts at rest pressed against that side, so its spring alone cannot take it back past that start (dd04c71's
+    # argument); but the cup can, clear of the platform: so the spring does not prove that ending impossible
+    # (docs/BENCHMARKS.md, issue 27).
     journal = read_journal(RESTORED / "cup_dispenser_full.physink.jsonl")
     s = Session.from_header(journal.header).run(journal.entries)
     by_label = {b.label: b for b in s.scene.bodies()}
-    cup, peg = by_label["cup"].id, by_label["peg"].id
+    cup, peg, platform = by_label["cup"], by_label["peg"], by_label["platform"]
     events = simulate(make_problem(s.scene, s.timeline, s.canvas), CUP_KNOCKS_PEG_BACK).timeline.events
-    knock = next(ev for ev in events if ev.type == "contact" and set(ev.components) == {cup, peg})
-    assert dict(knock.sides) == {cup: "left", peg: "right"}, "the cup's left side meets the peg's right end"
+    knock = next(ev for ev in events if ev.type == "contact" and set(ev.components) == {cup.id, peg.id})
+    assert dict(knock.sides) == {cup.id: "left", peg.id: "right"}, "the cup's left side meets the peg's right end"
     until = min(ev.t0 for ev in events if ev.type == "contact" and ev.t0 > knock.t0)
-    xs = [q.x for ev in events if ev.type == "movement" and ev.components[:1] == (peg,)
+    xs = [q.x for ev in events if ev.type == "movement" and ev.components[:1] == (peg.id,)
           for q in ev.trajectory if knock.t0 <= q.t <= until]
-    clear = LEAVE_FRACTION * body_size(outline_of(by_label["peg"]))
-    assert by_label["peg"].position[0] - min(xs) > clear, "the peg goes back further than it must to leave the platform"
+    peg_right_end = min(xs) + max(x for x, _ in outline_of(peg).hull)
+    platform_left_side = platform.position[0] + min(x for x, _ in outline_of(platform).hull)
+    assert peg_right_end < platform_left_side - 0.5 * body_size(outline_of(peg)), \
+        "before anything else touches, the cup has knocked the peg back clear of the platform, to its left"
