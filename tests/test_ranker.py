@@ -40,12 +40,12 @@ def test_the_shipped_model_loads_from_package_data() -> None:
 def test_a_model_that_does_not_fit_this_code_is_named(change) -> None:
     doc = json.loads(_model_text())
     change(doc)
-    with pytest.raises(ValueError, match="my-model.json"):
+    with pytest.raises(ValueError, match=r"my-model\.json"):
         ranker.parse_model(json.dumps(doc), "my-model.json")
 
 
 def test_not_json_is_named() -> None:
-    with pytest.raises(ValueError, match="broken.json: not a ranker model"):
+    with pytest.raises(ValueError, match=r"broken\.json: not a ranker model"):
         ranker.parse_model("{", "broken.json")
 
 

@@ -93,7 +93,10 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
                ) -> tuple[np.ndarray, np.ndarray, list[float] | None, float] | None:
     """The stroke without repeated points (its times kept in step), its diagonal, and the stroke moved to unit
     diagonal round its centroid, resampled and smoothed (None when it has no extent)."""
-    pts = np.asarray([p[:2] for p in points], dtype=float)
+    try:
+        pts = np.asarray(points, dtype=float)[:, :2]
+    except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
+        pts = np.asarray([p[:2] for p in points], dtype=float)
     if len(pts) < 2 or not np.isfinite(pts).all():
         return None
     keep = np.ones(len(pts), dtype=bool)
@@ -120,27 +123,35 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
     th = sg.turning(work)
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
-    bows = [min(sg.chord_deviation(r), 1.0) for r in runs] or [0.0]
+    deviation = [sg.chord_deviation(r) for r in runs]
+    chords = [float(np.hypot(*(r[-1] - r[0]))) for r in runs]
+    straights = [c > 0 and d * c < max(open_shapes.STRAIGHT * c, 1.5 * noise)  # as `open_shapes.straight`
+                 for c, d in zip(chords, deviation, strict=True)]
+    bows = [min(d, 1.0) for d in deviation] or [0.0]
     roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners)] or [0.0]
     coarse = sg.coarse_turning(work, noise)
     turns = sf.corner_turns(th, corners)
+    lobes = sf.lobes(work, noise=noise)
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)
+    bowed_between = len(corners) >= 4 and any(  # as `open_shapes._bowed_between_corners`
+        d > open_shapes.BOWED_SIDE for r, d in zip(runs, deviation, strict=True)
+        if sg.path_length(r) > open_shapes.MAIN_SIDE * length)
     out[:] = [
         sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(th.sum())) / (2 * math.pi),
         float(np.abs(th).sum()) / (2 * math.pi), (len(corners) - 2) / 8.0, sf.turn_concentration(coarse),
-        max(roundness), float(np.mean(roundness)), float(np.mean([sg.chord_deviation(r) < 0.12 for r in runs]))
-        if runs else 0.0, max(bows), float(np.mean(bows)), max(turns) / 180.0, min(turns) / 180.0,
-        len(sf.lobes(work, noise=noise)) / 4.0, min(ellipse[4], 1.0) if ellipse is not None else 1.0,
-        min(circle_err, 1.0), ellipse[2] / max(ellipse[1], 1e-12) if ellipse is not None else 0.0,
-        min(line_err, 1.0), sf.corner_share(th, corners) if len(corners) > 2 else 0.0,
+        max(roundness), float(np.mean(roundness)), float(np.mean([d < 0.12 for d in deviation])) if runs else 0.0,
+        max(bows), float(np.mean(bows)), max(turns) / 180.0, min(turns) / 180.0, len(lobes) / 4.0,
+        min(ellipse[4], 1.0) if ellipse is not None else 1.0, min(circle_err, 1.0),
+        ellipse[2] / max(ellipse[1], 1e-12) if ellipse is not None else 0.0, min(line_err, 1.0),
+        sf.corner_share(th, corners) if len(corners) > 2 else 0.0,
         abs(float(coarse.sum())) / max(float(np.abs(coarse).sum()), 1e-12), max(sf.bends(th, corners)) / 180.0,
         math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
-        float(bool(runs) and all(open_shapes.straight(r, noise) for r in runs)),
+        float(bool(runs) and all(straights)),
         float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
-        float(open_shapes._brace_tip(work, corners)), float(open_shapes._bowed_between_corners(work, corners, length)),
-        float(open_shapes._rounded_bracket(work, corners, [open_shapes.straight(r, noise) for r in runs], noise)),
+        float(open_shapes._brace_tip(work, corners)), float(bowed_between),
+        float(len(corners) == 4 and all(straights) and len(lobes) == 1),  # as `open_shapes._rounded_bracket`
         0.0, 0.0]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
