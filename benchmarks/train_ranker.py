@@ -10,8 +10,9 @@ chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the so
 folds: each of the 15 sources not held back is scored by a model (and margin) fitted on the other 14 only. The
 held-back students (`bench_generalisation.held_back`) are not read unless ``--heldback`` or ``--write`` is given, and
 then only scored per source and per class, by a model fitted on the 15. ``--write`` fits on every source given
-(held-back included, the margin chosen by leave-one-source-out over all of them) and writes the model as JSON. Features
-are kept in ~/.cache/physink/ under a key of the rows and the recognition package's source.
+(held-back included, the margin chosen by leave-one-source-out over all of them) and writes the model as the Python
+data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
+~/.cache/physink/ under a key of the rows and the recognition package's source.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # a shared machine; and the same sums in the same order
 import hashlib
 import json
+import pprint
 from collections import Counter
 from pathlib import Path
 
@@ -174,6 +176,15 @@ def report(title: str, d: dict, rows: list[Row], sources: np.ndarray, folds: dic
           "% right (strokes).\n")
 
 
+def model_module_text(doc: dict) -> str:
+    """The fitted model as the Python module the recogniser imports (`ranker_model`): a literal, so that reading
+    the shipped weights is an import, not file I/O in the core."""
+    return ('"""The learned ranker\'s fitted weights (issue 25), written by `benchmarks/train_ranker.py --write`; '
+            'data only, not\nedited by hand: `ranker.shipped_model` checks them against the features the code '
+            'computes."""\n\n'
+            f"MODEL = {pprint.pformat(doc, width=116, compact=True, sort_dicts=False)}\n")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("sets", type=Path, nargs="+")
@@ -214,10 +225,10 @@ def main() -> None:
                f"{m15['margin']:g})", d, rows, sources, held)
     if args.write:
         m = fitted(np.arange(len(rows)), lams[0])
-        args.write.write_text(json.dumps({
+        args.write.write_text(model_module_text({
             "features": list(ranker.FEATURES), "kinds": list(ranker.KINDS), "lam": m["lam"], "margin": m["margin"],
             "theta": [round(float(v), 9) for v in m["theta"]], "mean": [round(float(v), 9) for v in m["mean"]],
-            "std": [round(float(v), 9) for v in m["std"]]}, indent=1) + "\n")
+            "std": [round(float(v), 9) for v in m["std"]]}))
         print(f"wrote {args.write} (margin {m['margin']:g})")
 
 

@@ -46,7 +46,7 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked polyline.
 5. A polyline or a curve so read is re-ranked by a learned model (`ranker`, issue 25): a conditional logit over the
    two kinds on the stroke's geometric features (and the rules' own tests), fitted offline on people's strokes by
-   `benchmarks/train_ranker.py`, shipped as package data (`physink_tui/data/ranker.json`); it overrules the rules
+   `benchmarks/train_ranker.py`, shipped in the package as the data module `ranker_model`; it overrules the rules
    only when it gives the other kind a chance over its margin. Other kinds are left to the rules.
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,

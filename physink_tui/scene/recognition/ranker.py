@@ -6,8 +6,8 @@ sharpness and roundness, how straight the sides are, fit errors of a line, circl
 corners where times exist, and the open-stroke rules' own tests as 0/1 features) and, when the rules read an open stroke
 as a polyline or a curve (`KINDS`), scores each as ``w_kind . phi + a * [the rules' answer]``: the model's kind replaces
 the rules' only when the model gives it a chance over its margin (`Model.margin`). The weights are fitted offline
-(`benchmarks/train_ranker.py`) and shipped as package data (`MODEL_FILE`); this module computes features and scores,
-deterministically.
+(`benchmarks/train_ranker.py`) and shipped in the package as a data module (`ranker_model`, imported: no file is read);
+this module computes features and scores, deterministically.
 """
 
 from __future__ import annotations
@@ -18,11 +18,10 @@ import json
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from importlib import resources
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes
+from physink_tui.scene.recognition import open_shapes, ranker_model
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
@@ -48,16 +47,14 @@ def family(kind: str | None) -> tuple[str, ...]:
     return KINDS if kind in KINDS else ()
 
 
-MODEL_FILE = "ranker.json"
-"""The shipped model, package data of `physink_tui.data` (fitted on every source by `benchmarks/train_ranker.py`)."""
+MODEL_MODULE = "physink_tui/scene/recognition/ranker_model.py"
+"""Where the shipped model lives (fitted on every source by `benchmarks/train_ranker.py --write`)."""
 
 
 @functools.cache
 def shipped_model() -> Model:
-    """The shipped model, read once from the package's data (a resource of the program, like its tables; not the
-    user's files)."""
-    text = resources.files("physink_tui.data").joinpath(MODEL_FILE).read_text("utf-8")
-    return parse_model(text, f"physink_tui/data/{MODEL_FILE}")
+    """The shipped model, checked once against this code's features."""
+    return model_from(ranker_model.MODEL, MODEL_MODULE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -72,9 +69,19 @@ class Model:
 
 
 def parse_model(text: str, where: str = "ranker model") -> Model:
-    """A `Model` from its JSON text; a clear error naming ``where`` and the field when it does not fit this code."""
+    """A `Model` from its JSON text (a model fitted elsewhere, for experiments); errors as `model_from`."""
     try:
         doc = json.loads(text)
+    except ValueError as exc:
+        raise ValueError(f"{where}: not a ranker model ({exc})") from None
+    return model_from(doc, where)
+
+
+def model_from(doc: object, where: str = "ranker model") -> Model:
+    """A `Model` from its fields; a clear error naming ``where`` and the field when it does not fit this code."""
+    if not isinstance(doc, dict):
+        raise ValueError(f"{where}: not a ranker model (a {type(doc).__name__}, not a mapping)")
+    try:
         names, kinds = tuple(doc["features"]), tuple(doc["kinds"])
         theta, mean, std = (np.asarray(doc[k], dtype=float) for k in ("theta", "mean", "std"))
         margin = float(doc["margin"])
