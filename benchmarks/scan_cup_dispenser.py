@@ -1,7 +1,7 @@
 """Scan: is there any simulation of the cup dispenser's full demonstration (issue 27)? Offline, not in CI.
 
 Usage: nice -n 10 .venv/bin/python benchmarks/scan_cup_dispenser.py [--random 12000] [--around 12000]
-       [--cma 6x800] [--push 6x800] [--workers 2] [--seed 0] [--rows FILE.jsonl]
+       [--cma 6x800] [--push 6x800] [--end 0x0] [--workers 2] [--seed 0] [--rows FILE.jsonl]
        [--start-rows EARLIER.jsonl]
 
 The journal is tests/journals/restored/cup_dispenser_full.physink.jsonl (the demonstration before dd04c71: the
@@ -22,6 +22,9 @@ legs of `sim.legs`). Three phases, all seeded (the rows depend only on the argum
   (`sim.coordinates.Normalisation`), each from one of the best distinct candidates so far.
 - ``push``: the same, on what decides the end (below): among candidates reproducing the demonstration up to the
   cup-peg contact, take the peg as far left as possible after it.
+- ``end`` (``--end``, none by default): the same on the search's score of the seventh leg (up to the peg's end of
+  contact with the platform), from candidates reproducing six legs whose peg went back past its start (those of
+  ``--start-rows`` too; the farthest first).
 
 Per candidate the row holds the parameters, the qualitative distance, the leading legs reproduced, and what decides
 the demonstration's end: how far left of where it started (flush against the platform's left side) the peg goes
@@ -122,7 +125,8 @@ def _row(job: Job, p: Parameters) -> Row:
         if xs:
             peg_left = job.peg_x - min(xs)
     return {**row, "qualitative": whole.qualitative_distance, "quantitative": whole.quantitative_distance,
-            "legs": lead, "of": len(prefixes), "cup_peg": bool(cup_peg), "peg_left": peg_left}
+            "legs": lead, "of": len(prefixes), "cup_peg": bool(cup_peg), "peg_left": peg_left,
+            "by_leg": [[d.qualitative_distance, d.quantitative_distance] for d in prefixes]}
 
 
 def evaluate_row(p: Parameters) -> Row:
@@ -197,6 +201,7 @@ def main() -> None:
     ap.add_argument("--around", type=int, default=12000)
     ap.add_argument("--cma", default="6x800", help="RUNSxEVALS")
     ap.add_argument("--push", default="6x800", help="RUNSxEVALS")
+    ap.add_argument("--end", default="0x0", help="RUNSxEVALS")
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--rows", type=Path, default=None)
@@ -257,6 +262,10 @@ def main() -> None:
         cma_runs(rows, runs, evals, base, executor, run, args.seed, "cma", search_objective)
         runs, evals = (int(x) for x in args.push.split("x"))
         cma_runs(rows, runs, evals, base, executor, run, args.seed, "push", push_objective)
+        runs, evals = (int(x) for x in args.end.split("x"))
+        cma_runs([r for r in rows if r.get("legs", 0) >= 6 and (r.get("peg_left") or -1e9) > 0] or rows, runs, evals,
+                 base, executor, run, args.seed, "end", lambda r: end_objective(r) if "by_leg" in r else
+                 -float(r.get("peg_left") or -1e9))
     if out is not None:
         out.close()
     summary(rows, time.time() - started)
@@ -277,6 +286,19 @@ def push_objective(r: Row) -> float:
     if lead >= 6 and r.get("peg_left") is not None:
         return -float(r["peg_left"])
     return 1000.0 * (6 - min(lead, 6)) + search_objective(r) / 1000.0
+
+
+def end_objective(r: Row) -> float:
+    """Lower is better: the search's score of the demonstration up to the peg's end of contact with the platform
+    (the seventh leg: 1000 x qualitative + quantitative), for candidates reproducing the first six legs; the others
+    by how many they lack."""
+    if not math.isfinite(float(r["qualitative"])) or "by_leg" not in r:
+        return 1e9
+    lead = int(r["legs"])
+    if lead >= 6:
+        q, d = r["by_leg"][6]
+        return 1000.0 * float(q) + float(d)
+    return 1e6 * (6 - lead) + search_objective(r)
 
 
 def cma_runs(rows: list[Row], runs: int, evals: int, base: Parameters, executor: ProcessExecutor,

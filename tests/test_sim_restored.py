@@ -4,7 +4,7 @@ by the default search within the default budget at seeds 0-2; where the answer b
 show, the verdict says so. bouncing_first_below_b (figure 3-22) is a needle: a near-straight shot under B's left
 corner, over the basket's rim, onto the basket's right wall (a witness below); the search finds it by aiming at the
 flights that clear the drawing (sim/clearance.py). The cup dispenser's full demonstration is neither found nor
-proven impossible: an offline scan of 44,875 parameter sets found no equivalent (docs/BENCHMARKS.md), and the argument
+proven impossible: an offline scan of 49,099 parameter sets found no equivalent (docs/BENCHMARKS.md), and the argument
 that its let-go peg can never come back past where it started fails, as a rollout below shows."""
 
 from __future__ import annotations
