@@ -11,11 +11,11 @@ import pytest
 from physink_tui.errors import SimulationError
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Scene, Spring, material_class
-from physink_tui.scene.physics.build import body_area
+from physink_tui.scene.physics.build import SPRING_UNITS, body_area
 from physink_tui.scene.physics.world import GRAVITY, World
 from physink_tui.session.replay_driver import replay
 from physink_tui.session.session import Session
-from physink_tui.sim.parameters import BodyParameters, Parameters, apply
+from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters, apply
 from physink_tui.sim.rollout import Stop, rollout, rollout_from, settled_state
 from physink_tui.sim.seeding import first_contact, seed, start_movements
 
@@ -165,6 +165,46 @@ def test_a_held_body_stays_put_until_touched_then_falls() -> None:
     assert crate[0].trajectory[-1].y > 400  # and then it falls
     alone = rollout(scene, CANVAS, params.with_velocities({"b1": (-300.0, 0.0)}), max_seconds=3.0)
     assert not [ev for ev in alone.timeline.events if "b3" in ev.components]  # never touched: never moves
+
+
+def trampoline(*, crate: bool = False, k: float = 20.0) -> tuple[Scene, Parameters]:
+    """The ball (b1) left of a trampoline (b3: a box on a vertical spring, drawn at its natural length, from a
+    welded base b2 under it); with ``crate``, a crate (b4) drawn 100 units above the trampoline."""
+    scene = dropped_ball(platform=False)
+    scene = scene.add(Body("b2", "box", square(200, 60), 0.0, (800.0, 760.0), 0.0, MATERIALS["box"], "base"))
+    scene = scene.add(Joint("j1", "weld", "b2", BACKGROUND, (800.0, 760.0)))
+    scene = scene.add(Body("b3", "box", square(300, 30), 0.0, (800.0, 560.0), 0.0, MATERIALS["box"], "trampoline"))
+    scene = scene.add(Spring("s1", "b2", "b3", (800.0, 730.0), (800.0, 575.0), "vertical", 155.0, k))
+    bodies = {"b1": BodyParameters(math.pi * 25.0**2, 1.0), "b3": BodyParameters(300.0 * 30.0, 1.0)}
+    if crate:
+        scene = scene.add(Body("b4", "box", square(60, 60), 0.0, (800.0, 415.0), 0.0, MATERIALS["box"], "crate"))
+        bodies["b4"] = BodyParameters(3600.0, 1.0)
+    return scene, Parameters(bodies, {"s1": SpringParameters(k, 155.0)}, {"b1": (0.0, 0.0)})
+
+
+@pytest.mark.parametrize("k", [4.0, 20.0, 80.0])
+def test_a_spring_taking_its_load_is_held_but_not_flagged(k: float) -> None:
+    """A spring is drawn at its natural length (thesis 4.2), so the trampoline on it sinks under gravity while the
+    scene settles: held where drawn like any body that would not stay, but that is the spring taking its load, not a
+    flaw of the drawing, and the rollout says nothing of it (it said "the trampoline would not stay where it is
+    drawn" on every spring machine)."""
+    scene, params = trampoline(k=k)
+    settled = settled_state(scene, CANVAS, params)
+    sag = 300.0 * 30.0 * GRAVITY[1] / (k * SPRING_UNITS)
+    if sag > 10.0:  # the flush distance: a stiff spring's sag is a body coming flush
+        assert dict(settled.held).keys() == {"b3"} and settled.sagged == ("b3",)
+    assert settled.state.bodies["b3"][:2] == pytest.approx((800.0, 560.0), abs=1e-6)
+    result = rollout(scene, CANVAS, params, max_seconds=0.5)
+    assert not [flag for flag in result.flagged if "would not stay" in flag], result.flagged
+
+
+def test_a_body_falling_onto_a_spring_is_still_flagged() -> None:
+    """A crate drawn in mid-air above the trampoline falls further than any spring's sag: that is the drawing's."""
+    scene, params = trampoline(crate=True)
+    settled = settled_state(scene, CANVAS, params)
+    assert {"b3", "b4"} <= dict(settled.held).keys() and "b4" not in settled.sagged
+    result = rollout(scene, CANVAS, params, max_seconds=0.5)
+    assert [flag for flag in result.flagged if flag.startswith("the crate would not stay where it is drawn")]
 
 
 def test_a_ball_drawn_above_its_shelf_comes_flush() -> None:

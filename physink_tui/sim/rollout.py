@@ -36,8 +36,9 @@ import math
 from dataclasses import dataclass
 from enum import StrEnum
 
-from physink_tui.scene.components import Body, Scene
+from physink_tui.scene.components import Body, Scene, Spring
 from physink_tui.scene.interpretation.body_shapes import body_geometry
+from physink_tui.scene.physics.build import AXES, SPRING_UNITS
 from physink_tui.scene.physics.contacts import ContactRecord
 from physink_tui.scene.physics.speed import MIN_SPEED_LIMIT, SPEED_LIMIT
 from physink_tui.scene.physics.state import REST, Motion, WorldState
@@ -67,6 +68,11 @@ FLUSH_DISTANCE = 10.0
 further was not drawn at rest under gravity (the egg cracker's knife and egg): it is held where it was drawn until
 something touches it, and the rollout flags it."""
 SETTLE_ROUNDS = 4
+SAG_MARGIN = 1.5
+"""How many times its static sag a spring may let what it carries down while settling and still count as only
+taking its load (`Settled.sagged`; the damped settling stops at rest, short of or at the static sag)."""
+AXIS_SLACK = 1.0
+"""Canvas units a spring-borne body may move across its spring's axis while settling (its groove allows none)."""
 """Settling rounds at most (each holds the bodies that the last one found moving too far)."""
 MAX_SUBSTEPS = 8
 """Most sub-steps of one step (`World.substeps`): a body up to 8 times faster than could cross the thinnest body in
@@ -122,10 +128,14 @@ class Settled:
         state: the world after settling (held bodies where they were drawn).
         held: the bodies that would not stay where they were drawn (they moved more than `FLUSH_DISTANCE` while
             settling), with how far they went: held there until something touches them.
+        sagged: those of ``held`` that only went down on a spring carrying them (`_sagged`): a spring is drawn at
+            its natural length (thesis 4.2), so under gravity it takes its load so; held like the others, but no
+            flaw of the drawing, so a rollout does not flag them.
     """
 
     state: WorldState
     held: tuple[tuple[str, float], ...] = ()
+    sagged: tuple[str, ...] = ()
 
 
 def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Parameters) -> Settled:
@@ -139,6 +149,7 @@ def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Paramet
     applied = apply(scene, parameters)
     drawn = {b.id: b.position for b in applied.bodies()}
     held: dict[str, float] = {}
+    sagged: set[str] = set()
     for _ in range(SETTLE_ROUNDS):
         world = _settle(applied, canvas, set(parameters.start_bodies) | set(held))
         state = world.state()
@@ -147,7 +158,8 @@ def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Paramet
         if not moved:
             break
         held.update(moved)
-    return Settled(state, tuple(sorted(held.items())))
+        sagged |= _sagged(applied, world, drawn, state, set(moved))
+    return Settled(state, tuple(sorted(held.items())), tuple(sorted(sagged)))
 
 
 def _settle(scene: Scene, canvas: tuple[float, float], held: set[str]) -> World:
@@ -176,6 +188,28 @@ def _settle(scene: Scene, canvas: tuple[float, float], held: set[str]) -> World:
 
 def _moved(drawn: dict[str, tuple[float, float]], state: WorldState) -> dict[str, float]:
     return {b: math.hypot(m.x - drawn[b][0], m.y - drawn[b][1]) for b, m in state.bodies.items() if b in drawn}
+
+
+def _sagged(scene: Scene, world: World, drawn: dict[str, tuple[float, float]], state: WorldState,
+            moved: set[str]) -> set[str]:
+    """The bodies of ``moved`` that a spring from a fixed body carries and that moved only along its axis, by no
+    more than `SAG_MARGIN` times its static sag (weight along the axis / stiffness) under them and the bodies that
+    moved with them (by the same vector within `FLUSH_DISTANCE`: the cup on the cup dispenser's platform), plus
+    `FLUSH_DISTANCE`; those riders too."""
+    shift = {b: (state.bodies[b].x - drawn[b][0], state.bodies[b].y - drawn[b][1]) for b in moved}
+    out: set[str] = set()
+    parts = world.pymunk_parts
+    for spring in (c for c in scene.components.values() if isinstance(c, Spring)):
+        ends = [b for b in (spring.a, spring.b) if b in shift]
+        if len(ends) != 1 or not any(scene.is_fixed(b) for b in (spring.a, spring.b) if b != ends[0]):
+            continue
+        (dx, dy), (ux, uy) = shift[ends[0]], AXES[spring.axis]
+        riders = [b for b in shift if math.dist(shift[b], (dx, dy)) <= FLUSH_DISTANCE]
+        load = sum(parts.bodies[b].mass for b in riders)
+        sag = abs(load * (GRAVITY[0] * ux + GRAVITY[1] * uy)) / (spring.k * SPRING_UNITS)
+        if abs(dx * uy - dy * ux) <= AXIS_SLACK and abs(dx * ux + dy * uy) <= SAG_MARGIN * sag + FLUSH_DISTANCE:
+            out.update(riders)
+    return out
 
 
 def rollout(scene: Scene, canvas: tuple[float, float], parameters: Parameters, *,
@@ -212,7 +246,8 @@ def rollout_from(scene: Scene, settled: Settled, canvas: tuple[float, float], pa
     bounds = _bounds(canvas)
     names = applied.names()
     flagged = {(body, "settle"): f"the {names.get(body, body)} would not stay where it is drawn (it moved {d:.0f} "
-                                 "units under gravity): held there until touched" for body, d in settled.held}
+                                 "units under gravity): held there until touched"
+               for body, d in settled.held if body not in settled.sagged}
     max_steps = int(max_seconds / world.dt + 1e-9)
     stopped, still, steps = Stop.MAX_SECONDS, 0, 0
     while steps < max_steps:
