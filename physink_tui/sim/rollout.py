@@ -158,7 +158,7 @@ def settled_state(scene: Scene, canvas: tuple[float, float], parameters: Paramet
         if not moved:
             break
         held.update(moved)
-        sagged |= _sagged(applied, world, drawn, state, set(moved))
+        sagged |= _sagged(scene, applied, world, drawn, state, set(moved))
     return Settled(state, tuple(sorted(held.items())), tuple(sorted(sagged)))
 
 
@@ -190,12 +190,13 @@ def _moved(drawn: dict[str, tuple[float, float]], state: WorldState) -> dict[str
     return {b: math.hypot(m.x - drawn[b][0], m.y - drawn[b][1]) for b, m in state.bodies.items() if b in drawn}
 
 
-def _sagged(scene: Scene, world: World, drawn: dict[str, tuple[float, float]], state: WorldState,
-            moved: set[str]) -> set[str]:
-    """The bodies of ``moved`` that a spring from a fixed body carries and that moved only along its axis, by no
-    more than `SAG_MARGIN` times its static sag (weight along the axis / stiffness) under them and the bodies that
-    moved with them (by the same vector within `FLUSH_DISTANCE`: the cup on the cup dispenser's platform), plus
-    `FLUSH_DISTANCE`; those riders too."""
+def _sagged(drawn_scene: Scene, scene: Scene, world: World, drawn: dict[str, tuple[float, float]],
+            state: WorldState, moved: set[str]) -> set[str]:
+    """The bodies of ``moved`` that a spring from a fixed body carries (in ``scene``, the parameters applied to
+    ``drawn_scene``) and that moved only along its axis, by no more than its natural length differs from the sketched
+    one (the search moves it) plus `SAG_MARGIN` times its static sag (weight along the axis / stiffness) under them
+    and the bodies that moved with them (by the same vector within `FLUSH_DISTANCE`: the cup on the cup dispenser's
+    platform), plus `FLUSH_DISTANCE`; those riders too."""
     shift = {b: (state.bodies[b].x - drawn[b][0], state.bodies[b].y - drawn[b][1]) for b in moved}
     out: set[str] = set()
     parts = world.pymunk_parts
@@ -207,7 +208,10 @@ def _sagged(scene: Scene, world: World, drawn: dict[str, tuple[float, float]], s
         riders = [b for b in shift if math.dist(shift[b], (dx, dy)) <= FLUSH_DISTANCE]
         load = sum(parts.bodies[b].mass for b in riders)
         sag = abs(load * (GRAVITY[0] * ux + GRAVITY[1] * uy)) / (spring.k * SPRING_UNITS)
-        if abs(dx * uy - dy * ux) <= AXIS_SLACK and abs(dx * ux + dy * uy) <= SAG_MARGIN * sag + FLUSH_DISTANCE:
+        sketched = drawn_scene.components[spring.id]
+        assert isinstance(sketched, Spring)
+        reach = abs(spring.rest_length - sketched.rest_length) + SAG_MARGIN * sag + FLUSH_DISTANCE
+        if abs(dx * uy - dy * ux) <= AXIS_SLACK and abs(dx * ux + dy * uy) <= reach:
             out.update(riders)
     return out
 
