@@ -3,11 +3,13 @@ machine as first drawn, before it was redrawn until the search solved it (0909bb
 by the default search within the default budget at seeds 0-2; where the answer bounces off a corner the pen did not
 show, the verdict says so. bouncing_first_below_b (figure 3-22) is a needle: a near-straight shot under B's left
 corner, over the basket's rim, onto the basket's right wall (a witness below); the search finds it by aiming at the
-flights that clear the drawing (sim/clearance.py). The cup dispenser's full demonstration is not found:
-docs/BENCHMARKS.md."""
+flights that clear the drawing (sim/clearance.py). The cup dispenser's full demonstration is neither found nor
+proven impossible: an offline scan of 49,099 parameter sets found no equivalent (docs/BENCHMARKS.md), and the argument
+that its let-go peg can never come back past where it started fails, as a rollout below shows."""
 
 from __future__ import annotations
 
+import math
 from functools import cache
 from pathlib import Path
 
@@ -17,9 +19,12 @@ from constructed.judge import judge
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.session.session import Session
 from physink_tui.sim.defaults import DEFAULT_BUDGET
-from physink_tui.sim.evaluate import evaluate, rollout_seconds
+from physink_tui.sim.evaluate import evaluate, evaluate_problem, make_problem, rollout_seconds, simulate
+from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters
 from physink_tui.sim.seeding import seed
 from physink_tui.sim_run.executors import SerialExecutor
+from physink_tui.timeline.qualitative import outline_of
+from physink_tui.timeline.touches import body_size
 
 RESTORED = Path(__file__).parent / "journals" / "restored"
 FOUND = ("hits_a", "hits_b_once", "hits_b_twice", "hits_b_bottom", "above_b", "below_b", "a_then_b_bottom",
@@ -27,6 +32,31 @@ FOUND = ("hits_a", "hits_b_once", "hits_b_twice", "hits_b_bottom", "above_b", "b
 BELOW_B_WITNESS = (6703.223646775224, 3364.0441051379617)
 """A throw of the ball reproducing figure 3-22 in the first drawing (7,500 units/s at 26.65 degrees below the
 horizontal), found by a dense scan of its launch velocity (issue 27)."""
+
+CUP_KNOCKS_PEG_BACK = Parameters(
+    {"b2": BodyParameters(24964.038008837575, 0.015941315230757036),
+     "b4": BodyParameters(17230.718254028026, 0.7653800786016616),
+     "b5": BodyParameters(20846.018631676456, 0.6470743191474719),
+     "b7": BodyParameters(70228.097714526, 0.4695819224220963)},
+    {"s1": SpringParameters(70.57006967590442, 268.3811249215217),
+     "s2": SpringParameters(1.501872505165427, 482.7099832628313)},
+    {"b2": (705.4674351569338, 741.750343536818)})
+"""Ball (b2), platform (b4), cup (b5) and peg (b7), platform spring (s1) and peg spring (s2) of the cup dispenser, as
+benchmarks/scan_cup_dispenser.py's random phase drew them: the cup, bouncing on the platform, comes down moving left
+and knocks the peg 60 units left of where it started (not an equivalent: the cup touches the platform again before
+it meets the peg)."""
+SIX_LEGS_THEN_KNOCKED_BACK = Parameters(
+    {"b2": BodyParameters(3955.603076942576, 0.7957646395469017),
+     "b4": BodyParameters(10395.670489020133, 0.7496293263682217),
+     "b5": BodyParameters(15030.392536883413, 0.6978807187748485),
+     "b7": BodyParameters(81697.14095645142, 1.0)},
+    {"s1": SpringParameters(72.61349306642958, 232.37197017853606),
+     "s2": SpringParameters(1.9222536604479405, 333.22320246978154)},
+    {"b2": (701.6449072784233, 380.2371849980815)})
+"""The same, found by the scan's CMA-ES runs that push the peg left: the demonstration reproduced up to the cup's
+contact with the peg, after which the peg goes 52 units left of its start; but the platform never comes to rest
+against the peg (it sinks away below it, moving to the end), so no end of their contact is recorded and the rest of
+the demonstration is missing (qualitative 6.0)."""
 
 
 @cache
@@ -56,3 +86,28 @@ def test_the_ball_can_pass_under_b_into_the_basket_in_the_first_drawing() -> Non
     score = evaluate(s.scene, s.timeline, s.canvas, start.with_velocities({ball: BELOW_B_WITNESS}),
                      rollout_seconds(s.timeline))
     assert score.qualitative == 0 and not score.exploded, "the witness reproduces the demonstration"
+
+
+@pytest.mark.parametrize("parameters", (CUP_KNOCKS_PEG_BACK, SIX_LEGS_THEN_KNOCKED_BACK), ids=("drawn", "six_legs"))
+def test_the_cup_can_knock_the_peg_back_past_where_it_started(parameters: Parameters) -> None:
+    # The full demonstration ends with the let-go peg back left of the platform, meeting its left side. The peg
+    # starts at rest pressed against that side, so its spring alone cannot take it back past that start (dd04c71's
+    # argument); but the cup can, clear of the platform: so the spring does not prove that ending impossible
+    # (docs/BENCHMARKS.md, issue 27).
+    journal = read_journal(RESTORED / "cup_dispenser_full.physink.jsonl")
+    s = Session.from_header(journal.header).run(journal.entries)
+    by_label = {b.label: b for b in s.scene.bodies()}
+    cup, peg, platform = by_label["cup"], by_label["peg"], by_label["platform"]
+    problem = make_problem(s.scene, s.timeline, s.canvas, by_leg=True)
+    if parameters is SIX_LEGS_THEN_KNOCKED_BACK:  # the search's own legs: up to "Contact between cup and peg"
+        assert [leg.qualitative for leg in evaluate_problem(problem, parameters).legs[:6]] == [0.0] * 6
+    events = simulate(problem, parameters).timeline.events
+    knock = next(ev for ev in events if ev.type == "contact" and set(ev.components) == {cup.id, peg.id})
+    assert dict(knock.sides) == {cup.id: "left", peg.id: "right"}, "the cup's left side meets the peg's right end"
+    until = min((ev.t0 for ev in events if ev.type == "contact" and ev.t0 > knock.t0), default=math.inf)
+    xs = [q.x for ev in events if ev.type == "movement" and ev.components[:1] == (peg.id,)
+          for q in ev.trajectory if knock.t0 <= q.t <= until]
+    peg_right_end = min(xs) + max(x for x, _ in outline_of(peg).hull)
+    platform_left_side = platform.position[0] + min(x for x, _ in outline_of(platform).hull)
+    assert peg_right_end < platform_left_side - 0.5 * body_size(outline_of(peg)), \
+        "before anything else touches, the cup has knocked the peg back clear of the platform, to its left"

@@ -199,14 +199,13 @@ def _sagged(drawn_scene: Scene, scene: Scene, world: World, drawn: dict[str, tup
     platform), plus `FLUSH_DISTANCE`; those riders too."""
     shift = {b: (state.bodies[b].x - drawn[b][0], state.bodies[b].y - drawn[b][1]) for b in moved}
     out: set[str] = set()
-    parts = world.pymunk_parts
     for spring in (c for c in scene.components.values() if isinstance(c, Spring)):
         ends = [b for b in (spring.a, spring.b) if b in shift]
         if len(ends) != 1 or not any(scene.is_fixed(b) for b in (spring.a, spring.b) if b != ends[0]):
             continue
         (dx, dy), (ux, uy) = shift[ends[0]], AXES[spring.axis]
         riders = [b for b in shift if math.dist(shift[b], (dx, dy)) <= FLUSH_DISTANCE]
-        load = sum(parts.bodies[b].mass for b in riders)
+        load = sum(world.mass(b) for b in riders)
         sag = abs(load * (GRAVITY[0] * ux + GRAVITY[1] * uy)) / (spring.k * SPRING_UNITS)
         sketched = drawn_scene.components[spring.id]
         assert isinstance(sketched, Spring)

@@ -176,6 +176,10 @@ class World:
         """Whether a body sleeps (`hold_until_touched`): gravity does not move it until something wakes it."""
         return bool(self._get(body_id).is_sleeping)
 
+    def mass(self, body_id: str) -> float:
+        """A body's mass as built (the parameters applied)."""
+        return float(self._get(body_id).mass)
+
     def half_size(self, body_id: str) -> float:
         """Half the smaller side of the smallest bounding box of a body's shapes (canvas units): how far the body
         reaches from its middle at its thinnest; infinite for a body without shapes (the background)."""

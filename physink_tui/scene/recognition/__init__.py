@@ -44,6 +44,10 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    `open_shapes.BOWED_SIDE`; and no brace's tip, a short pointed excursion the stroke runs on in line through,
    `open_shapes._brace_tip`: a brace or question mark drawn with a mouse is straight runs and cusps), an arc, or a
    curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked polyline.
+5. A polyline or a curve so read is re-ranked by a learned model (`ranker`, issue 25): a conditional logit over the
+   two kinds on the stroke's geometric features (and the rules' own tests), fitted offline on people's strokes by
+   `benchmarks/train_ranker.py`, shipped in the package as the data module `ranker_model`; it overrules the rules
+   only when it gives the other kind a chance over its margin. Other kinds are left to the rules.
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
@@ -59,6 +63,7 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
+- `ranker.py`: the learned ranker's features, its model (read once from the package's data) and its choice
 - `shape_fits.py`: total-least-squares line, Kasa circle, Fitzgibbon direct ellipse, cubic Bézier fits
 - `beautify.py`: the clean geometry of each kind, points on it (`shape_points`, for the bounds check), mapping back
   to the stroke's units

@@ -24,7 +24,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes
+from physink_tui.scene.recognition import open_shapes, ranker
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
@@ -68,13 +68,14 @@ def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | 
 
 
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
-                     noise: float = PEN_NOISE, weights: Weights | None = None) -> Recognition:
+                     noise: float = PEN_NOISE, weights: Weights | None = None, learned: bool = True) -> Recognition:
     """Recognise one stroke given as (x, y) points (extra columns such as t are ignored).
 
     ``noise`` is the pen's jitter in the points' units (pass it scaled with the coordinates: a canvas in
     fractions of its size has a noise of about 1 / its width in pixels); a stroke that is visibly shakier is
-    judged with its own, measured jitter (`stroke_geometry.jitter`). ``times`` are accepted for symmetry
-    with pen input; the judgement is geometric. ``weights`` override the ranking's (for evaluation).
+    judged with its own, measured jitter (`stroke_geometry.jitter`). ``times`` (one a point, seconds), where
+    given, tell the learned ranker how the pen slowed at corners. ``weights`` override the ranking's and
+    ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
     """
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
         pts, reason = _clean(points)
@@ -101,7 +102,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale)
     if result.geometry is None:
         return result
-    return replace(result, geometry=scale_geometry(result.geometry, origin, scale))
+    result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
+    if not learned or not ranker.family(result.kind):
+        return result
+    with np.errstate(all="ignore"):
+        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model())
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:

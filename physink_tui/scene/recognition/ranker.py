@@ -1,0 +1,259 @@
+"""A learned ranker over the kinds a stroke may be read as: geometric features and a conditional-logit score; numpy.
+
+Issue 25's "design that can generalise": the rules (`recognize`, `open_shapes`) read a stroke as one kind; this module
+describes the stroke by features a reader of sketches would name (closure, ink over extent, turning, corner count,
+sharpness and roundness, how straight the sides are, fit errors of a line, circle and ellipse, how the pen slowed at
+corners where times exist, and the open-stroke rules' own tests as 0/1 features) and, when the rules read an open stroke
+as a polyline or a curve (`KINDS`), scores each as ``w_kind . phi + a * [the rules' answer]``: the model's kind replaces
+the rules' only when the model gives it a chance over its margin (`Model.margin`). The weights are fitted offline
+(`benchmarks/train_ranker.py`) and shipped in the package as a data module (`ranker_model`, imported: no file is read);
+this module computes features and scores, deterministically.
+"""
+
+from __future__ import annotations
+
+import functools
+import itertools
+import json
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from physink_tui.scene.recognition import open_shapes, ranker_model
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
+from physink_tui.scene.recognition.primitives import Geometry, Polyline, Recognition
+from physink_tui.scene.recognition.shape_fits import fit_circle, fit_ellipse, fit_line
+
+KINDS = ("polyline", "curve")
+"""The kinds re-ranked: an open stroke of straight sides or of bends, the people's sets' most telling disagreement
+(braces and question marks drawn with a mouse are straight runs and cusps; checks drawn fast have bowed arms). An
+arc, a box, a polygon or a round shape is left to the rules: the sets label no arc, and label trapezoids and
+parallelograms "rectangle", against the outline kept as drawn (issue 25), so a model fitted on them would learn
+to turn every arc into a curve and every trapezoid into a box."""
+FEATURES = ("closure", "ink", "net_turn", "abs_turn", "corners", "concentration", "max_roundness",
+            "mean_roundness", "straight_share", "max_bow", "mean_bow", "max_corner_turn", "min_corner_turn",
+            "lobes", "ellipse_error", "circle_error", "aspect", "line_error", "corner_share", "one_way",
+            "max_bend", "sparse", "one_corner", "two_corners", "all_straight", "bent_polyline", "brace_tip",
+            "bowed_between", "rounded_bracket", "has_times", "corner_slowdown")
+WORK_POINTS = 64
+
+
+def family(kind: str | None) -> tuple[str, ...]:
+    """The kinds a stroke read as ``kind`` may be re-ranked among (none but for `KINDS`)."""
+    return KINDS if kind in KINDS else ()
+
+
+MODEL_MODULE = "physink_tui/scene/recognition/ranker_model.py"
+"""Where the shipped model lives (fitted on every source by `benchmarks/train_ranker.py --write`)."""
+
+
+@functools.cache
+def shipped_model() -> Model:
+    """The shipped model, checked once against this code's features."""
+    return model_from(ranker_model.MODEL, MODEL_MODULE)
+
+
+@dataclass(frozen=True, slots=True)
+class Model:
+    """Fitted weights (`benchmarks/train_ranker.py`): ``theta`` over `design`'s columns, the features' training
+    ``mean`` and ``std``, and the ``margin`` the model's chance must pass to overrule the rules."""
+
+    theta: np.ndarray
+    mean: np.ndarray
+    std: np.ndarray
+    margin: float
+
+
+def parse_model(text: str, where: str = "ranker model") -> Model:
+    """A `Model` from its JSON text (a model fitted elsewhere, for experiments); errors as `model_from`."""
+    try:
+        doc = json.loads(text)
+    except ValueError as exc:
+        raise ValueError(f"{where}: not a ranker model ({exc})") from None
+    return model_from(doc, where)
+
+
+def model_from(doc: object, where: str = "ranker model") -> Model:
+    """A `Model` from its fields; a clear error naming ``where`` and the field when it does not fit this code."""
+    if not isinstance(doc, dict):
+        raise ValueError(f"{where}: not a ranker model (a {type(doc).__name__}, not a mapping)")
+    try:
+        names, kinds = tuple(doc["features"]), tuple(doc["kinds"])
+        theta, mean, std = (np.asarray(doc[k], dtype=float) for k in ("theta", "mean", "std"))
+        margin = float(doc["margin"])
+    except (ValueError, KeyError, TypeError) as exc:
+        raise ValueError(f"{where}: not a ranker model ({exc})") from None
+    if names != FEATURES or kinds != KINDS:
+        raise ValueError(f"{where}: features {names} / kinds {kinds} are not this code's {FEATURES} / {KINDS}")
+    if theta.shape != (len(KINDS) * (len(FEATURES) + 1) + 1,) or mean.shape != std.shape != (len(FEATURES),):
+        raise ValueError(f"{where}: theta has {theta.size} weights, mean {mean.size}, std {std.size}")
+    if not (np.isfinite(theta).all() and np.isfinite(mean).all() and (std > 0).all() and 0 <= margin < 1):
+        raise ValueError(f"{where}: weights must be finite, std positive and the margin in [0, 1)")
+    return Model(theta, mean, std, margin)
+
+
+def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
+               ) -> tuple[np.ndarray, np.ndarray, list[float] | None, float] | None:
+    """The stroke without repeated points (its times kept in step), its diagonal, and the stroke moved to unit
+    diagonal round its centroid, resampled and smoothed (None when it has no extent)."""
+    try:
+        pts = np.asarray(points, dtype=float)[:, :2]
+    except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
+        pts = np.asarray([p[:2] for p in points], dtype=float)
+    if len(pts) < 2 or not np.isfinite(pts).all():
+        return None
+    keep = np.ones(len(pts), dtype=bool)
+    keep[1:] = np.any(np.diff(pts, axis=0) != 0.0, axis=1)
+    raw = pts[keep]
+    kept_times = [t for t, k in zip(times, keep, strict=True) if k] if times is not None and len(
+        times) == len(pts) else None
+    diag = sg.bbox_diagonal(raw) if len(raw) >= 2 else 0.0
+    if diag == 0.0:
+        return None
+    work = sg.smooth(sg.resample((raw - raw.mean(axis=0)) / diag, WORK_POINTS))
+    return raw, work, kept_times, diag
+
+
+def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
+    """The stroke's features (`FEATURES`), size-free; ``noise`` is the pen's jitter in the points' units."""
+    out = np.zeros(len(FEATURES))
+    found = _unit_work(points, times)
+    if found is None:
+        return out
+    raw, work, times, diag = found
+    noise = max(noise, sg.jitter(raw)) / diag
+    length = sg.path_length(work)
+    th = sg.turning(work)
+    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+    deviation = [sg.chord_deviation(r) for r in runs]
+    chords = [float(np.hypot(*(r[-1] - r[0]))) for r in runs]
+    straights = [c > 0 and d * c < max(open_shapes.STRAIGHT * c, 1.5 * noise)  # as `open_shapes.straight`
+                 for c, d in zip(chords, deviation, strict=True)]
+    bows = [min(d, 1.0) for d in deviation] or [0.0]
+    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners)] or [0.0]
+    coarse = sg.coarse_turning(work, noise)
+    turns = sf.corner_turns(th, corners)
+    lobes = sf.lobes(work, noise=noise)
+    ellipse = fit_ellipse(work)
+    _, _, circle_err = fit_circle(work)
+    _, _, line_err = fit_line(work)
+    bowed_between = len(corners) >= 4 and any(  # as `open_shapes._bowed_between_corners`
+        d > open_shapes.BOWED_SIDE for r, d in zip(runs, deviation, strict=True)
+        if sg.path_length(r) > open_shapes.MAIN_SIDE * length)
+    out[:] = [
+        sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(th.sum())) / (2 * math.pi),
+        float(np.abs(th).sum()) / (2 * math.pi), (len(corners) - 2) / 8.0, sf.turn_concentration(coarse),
+        max(roundness), float(np.mean(roundness)), float(np.mean([d < 0.12 for d in deviation])) if runs else 0.0,
+        max(bows), float(np.mean(bows)), max(turns) / 180.0, min(turns) / 180.0, len(lobes) / 4.0,
+        min(ellipse[4], 1.0) if ellipse is not None else 1.0, min(circle_err, 1.0),
+        ellipse[2] / max(ellipse[1], 1e-12) if ellipse is not None else 0.0, min(line_err, 1.0),
+        sf.corner_share(th, corners) if len(corners) > 2 else 0.0,
+        abs(float(coarse.sum())) / max(float(np.abs(coarse).sum()), 1e-12), max(sf.bends(th, corners)) / 180.0,
+        math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
+        float(bool(runs) and all(straights)),
+        float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
+        float(open_shapes._brace_tip(work, corners)), float(bowed_between),
+        float(len(corners) == 4 and all(straights) and len(lobes) == 1),  # as `open_shapes._rounded_bracket`
+        0.0, 0.0]
+    slow = corner_slowdown(raw, times, corners, len(work))
+    if slow is not None:
+        out[-2:] = [1.0, slow]
+    return np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
+
+
+def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: list[int], n: int) -> float | None:
+    """The pen's median speed within 5 % of the path round the inner corners over its median speed over the
+    whole stroke (a drawn corner slows the pen; a curve's bend less so), or None without usable times."""
+    if times is None or len(times) != len(raw) or len(corners) < 3:
+        return None
+    t = np.asarray(times, dtype=float)
+    seg = np.hypot(*np.diff(raw, axis=0).T)
+    dt = np.diff(t)
+    ok = dt > 0
+    if ok.sum() < 8 or not np.isfinite(t).all():
+        return None
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    mid = (s[:-1] + s[1:])[ok] / 2 / max(s[-1], 1e-12)
+    speed = seg[ok] / dt[ok]
+    overall = float(np.median(speed))
+    if overall <= 0:
+        return None
+    near = np.zeros(len(mid), dtype=bool)
+    for c in corners[1:-1]:
+        near |= np.abs(mid - c / (n - 1)) < 0.05
+    if not near.any():
+        return None
+    return min(float(np.median(speed[near])) / overall, 3.0)
+
+
+def design(kinds: Sequence[str], phi: np.ndarray, rules_kind: str) -> np.ndarray:
+    """One row per candidate kind: the kind's own copy of ``[phi, 1]`` (zeros elsewhere), then whether it is the
+    rules' answer."""
+    width = len(FEATURES) + 1
+    x = np.zeros((len(kinds), len(KINDS) * width + 1))
+    for i, k in enumerate(kinds):
+        j = KINDS.index(k) * width
+        x[i, j:j + width - 1] = phi
+        x[i, j + width - 1] = 1.0
+        x[i, -1] = float(k == rules_kind)
+    return x
+
+
+def offered(kinds: Sequence[str], phi: np.ndarray) -> list[bool]:
+    """Which kinds `geometry` can draw for a stroke with features ``phi``: a polyline needs an inner corner."""
+    inner = round(float(phi[FEATURES.index("corners")]) * 8)
+    return [k != "polyline" or inner >= 1 for k in kinds]
+
+
+def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
+    """The kind of ``rules_kind``'s family the model scores best, when its chance under the model is over the
+    model's margin, else the rules' answer; and that kind's chance."""
+    kinds = family(rules_kind)
+    if not kinds:
+        return rules_kind, 1.0
+    scores = design(kinds, (phi - model.mean) / model.std, rules_kind) @ model.theta
+    scores = np.where(offered(kinds, phi), scores, -np.inf)
+    chance = np.exp(scores - scores.max())
+    chance /= chance.sum()
+    best = int(np.argmax(scores))  # the first of equals: the family's order
+    if kinds[best] == rules_kind or chance[best] > model.margin:
+        return kinds[best], float(chance[best])
+    return rules_kind, float(chance[kinds.index(rules_kind)])
+
+
+def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,
+           model: Model) -> Recognition:
+    """``found`` (the rules' reading of the stroke), or the kind the model prefers with its geometry drawn from
+    the stroke, the rules' kind then the first alternative."""
+    if found.kind is None or not family(found.kind):
+        return found
+    kind, chance = choose(found.kind, features(points, times, noise), model)
+    if kind == found.kind:
+        return found
+    unit = _unit_work(points, times)
+    shape = geometry(kind, unit[1]) if unit is not None else None
+    if unit is None or shape is None:
+        return found
+    raw, _, _, diag = unit
+    return Recognition(kind, round(chance, 4), scale_geometry(shape, raw.mean(axis=0), diag),
+                       ((found.kind, round(1.0 - chance, 4)),))
+
+
+def geometry(kind: str, work: np.ndarray) -> Geometry | None:
+    """The clean shape of ``kind`` drawn from ``work`` (the stroke at unit size, resampled), as `open_shapes` draws
+    it: a polyline through the stroke's corners, or a curve of cubic pieces."""
+    corners = sf.drop_end_stubs(work, sg.find_corners(work), sg.path_length(work))
+    if kind == "polyline" and len(corners) >= 3:
+        return Polyline(tuple(_pt(work[c]) for c in corners))
+    if kind == "curve":
+        return curve_geometry(work, corners)
+    return None
+
+
+def _pt(p: np.ndarray) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
