@@ -53,6 +53,7 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
 - `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above, closure, scoring
   and ranking (`Weights`, `DEFAULT_WEIGHTS`)
+- `coils.py`: strokes that wind or scrub rather than outline: a spring drawn as one coil (a helix), a scribble
 - `candidates.py`: the competing interpretations of a closed stroke with their fit error and complexity: polygonal
   ones (built only when the ranking reaches them), a circle or ellipse; a box placed where its four sides were drawn
 - `polygon_fit.py`: best k-gon / k-segment chain for every k: candidate vertices, per-run line costs from prefix

@@ -131,9 +131,7 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     deviation = [sg.chord_deviation(r) for r in runs]
-    chords = [float(np.hypot(*(r[-1] - r[0]))) for r in runs]
-    straights = [c > 0 and d * c < max(open_shapes.STRAIGHT * c, 1.5 * noise)  # as `open_shapes.straight`
-                 for c, d in zip(chords, deviation, strict=True)]
+    straights = [open_shapes.straight(r, noise) for r in runs]
     bows = [min(d, 1.0) for d in deviation] or [0.0]
     roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners)] or [0.0]
     coarse = sg.coarse_turning(work, noise)
@@ -142,9 +140,6 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)
-    bowed_between = len(corners) >= 4 and any(  # as `open_shapes._bowed_between_corners`
-        d > open_shapes.BOWED_SIDE for r, d in zip(runs, deviation, strict=True)
-        if sg.path_length(r) > open_shapes.MAIN_SIDE * length)
     out[:] = [
         sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(th.sum())) / (2 * math.pi),
         float(np.abs(th).sum()) / (2 * math.pi), (len(corners) - 2) / 8.0, sf.turn_concentration(coarse),
@@ -157,8 +152,8 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
         math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
         float(bool(runs) and all(straights)),
         float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
-        float(open_shapes._brace_tip(work, corners)), float(bowed_between),
-        float(len(corners) == 4 and all(straights) and len(lobes) == 1),  # as `open_shapes._rounded_bracket`
+        float(open_shapes._brace_tip(work, corners)), float(open_shapes._bowed_between_corners(work, corners, length)),
+        float(open_shapes._rounded_bracket(work, corners, straights, noise)),
         0.0, 0.0]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:

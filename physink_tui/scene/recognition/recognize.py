@@ -27,8 +27,9 @@ import numpy as np
 from physink_tui.scene.recognition import open_shapes, ranker
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import helix_geometry, scale_geometry, shape_points, x_symbol
+from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
+from physink_tui.scene.recognition.coils import helix_or_scribble
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
 from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
@@ -103,9 +104,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     if result.geometry is None:
         return result
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
-    if not learned or not ranker.family(result.kind):
+    if not learned:
         return result
-    with np.errstate(all="ignore"):
+    with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
         return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model())
 
 
@@ -154,9 +155,6 @@ DEFAULT_WEIGHTS = Weights()
 EFFECTIVE_SAMPLES = 64
 """How many independent samples a stroke's fit error is taken to rest on, whatever its point count."""
 MAX_JUDGED_POINTS = 600
-COIL_SHARPNESS = 0.7
-"""A spring's loops may be pointed (a hurried hand), but not turn as sharply as a star's corners (about 0.9 of
-their turning in the sharpest fifth)."""
 OPEN_SPACING = 3.0
 """Open strokes are judged on points at least this many noise widths apart."""
 BOUNDS_MARGIN = 0.05
@@ -177,7 +175,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     n = int(min(max(64, length / spacing), MAX_JUDGED_POINTS))
     # a shaky pen's points are smoothed where they were sampled first, then along the resampled path
     work = sg.smooth(sg.resample(sg.smooth(raw) if shaky else raw, n))
-    special = _helix_or_scribble(work, n, diag, sg.path_length(work))
+    special = helix_or_scribble(work, n, diag, sg.path_length(work))
     if special is not None:
         return special
     work = sg.resample(sg.remove_small_loops(work), n)  # loops at corners are flourishes, not coils
@@ -383,20 +381,3 @@ def _inside(g: Geometry | None, lo: np.ndarray, hi: np.ndarray) -> bool:
         return False
     pts = np.asarray(shape_points(g), dtype=float)
     return bool(np.isfinite(pts).all() and (pts >= lo).all() and (pts <= hi).all())
-
-
-def _helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float) -> Recognition | None:
-    """A spring (loops advancing along an axis, turning smoothly) or a scribble back and forth, else None."""
-    th = sg.turning(work)
-    total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    if abs(total_turn) > 3.5 * math.pi:
-        coil = sg.resample(sg.remove_hooks(work), n)
-        coil_turn = sg.turning(coil)
-        if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < COIL_SHARPNESS:  # a star winds twice too
-            helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
-            if helix is not None:
-                return Recognition("helix", 0.9, helix, (("curve", 0.1),))
-    reversals = int(np.count_nonzero(np.abs(th) > math.radians(150)))
-    if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):
-        return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
-    return None

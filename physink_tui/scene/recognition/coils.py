@@ -1,0 +1,34 @@
+"""Strokes that wind or scrub rather than outline: a spring drawn as one coil (a helix) or a scribble back and
+forth (no shape); what they are not is left to `recognize`."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.beautify import helix_geometry
+from physink_tui.scene.recognition.primitives import Recognition
+
+COIL_SHARPNESS = 0.7
+"""A spring's loops may be pointed (a hurried hand), but not turn as sharply as a star's corners (about 0.9 of
+their turning in the sharpest fifth)."""
+
+
+def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float) -> Recognition | None:
+    """A spring (loops advancing along an axis, turning smoothly) or a scribble back and forth, else None."""
+    th = sg.turning(work)
+    total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
+    if abs(total_turn) > 3.5 * math.pi:
+        coil = sg.resample(sg.remove_hooks(work), n)
+        coil_turn = sg.turning(coil)
+        if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < COIL_SHARPNESS:  # a star winds twice too
+            helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
+            if helix is not None:
+                return Recognition("helix", 0.9, helix, (("curve", 0.1),))
+    reversals = int(np.count_nonzero(np.abs(th) > math.radians(150)))
+    if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):
+        return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
+    return None
