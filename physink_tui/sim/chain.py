@@ -36,6 +36,7 @@ from physink_tui.sim.clearance import (
     near_bounds,
     obstacles,
 )
+from physink_tui.sim.legs import Leg
 from physink_tui.sim.parameters import Parameters
 from physink_tui.sim.seeding import start_movements
 from physink_tui.timeline.events import Timeline
@@ -78,6 +79,24 @@ def demonstrated_chain(scene: Scene, timeline: Timeline) -> tuple[str, tuple[tup
             break
         chain.append((other, side))
     return body.id, tuple(chain)
+
+
+def aimed_legs(scene: Scene, timeline: Timeline, legs_: Sequence[Leg]) -> int:
+    """How many leading legs the aims (`chain_aimed`, `aim.aimed`) and the velocity scan address: those up to the
+    one start body's first demonstrated contact with a movable body, or its last with a fixed one when it meets no
+    movable body; 0 without one start body or without a contact of it."""
+    movements = start_movements(scene, timeline)
+    if len(movements) != 1:
+        return 0
+    body = movements[0][1].id
+    last = None
+    for ev in sorted((e for e in timeline.events if e.type == "contact"), key=lambda e: e.t0):
+        if body not in ev.components or len(ev.components) != 2:
+            continue
+        last = ev.id
+        if not scene.is_fixed(next(c for c in ev.components if c != body)):
+            break
+    return next((k + 1 for k, leg in enumerate(legs_) if last is not None and last in leg.events), 0)
 
 
 def rebound_factors(restitution: float, friction: float, angle: float, *, loss: float = 0.0,

@@ -158,14 +158,25 @@ def evaluate_problem(problem: Problem, parameters: Parameters) -> Score:
     demonstrated, by_leg = _demonstration(problem)
     simulated = prepare(result.timeline, problem.scene.names())
     whole, prefixes = compare_prefixes(demonstrated, simulated, by_leg, simulation=True)
-    scores = tuple(Score(d.qualitative_distance, d.quantitative_distance, False, _miss(problem, result, d.only_a))
-                   for d in prefixes)
+    sides = side_misses(problem.scene, problem.timeline, result.timeline, whole.matches)
+    scores = tuple(Score(d.qualitative_distance, d.quantitative_distance, False,
+                         _miss(problem, result, d.only_a) + sum(m for e, m in sides.items() if e in leg))
+                   for d, leg in zip(prefixes, by_leg, strict=True))
     return Score(whole.qualitative_distance, whole.quantitative_distance, False,
-                 _miss(problem, result, whole.only_a), scores)
+                 _miss(problem, result, whole.only_a) + sum(sides.values()), scores)
 
 
 def _miss(problem: Problem, result: RolloutResult, only_demonstrated: Sequence[str]) -> float:
     return miss_distance(problem.timeline, result.timeline, only_demonstrated) if only_demonstrated else 0.0
+
+
+def _frames(timeline: Timeline, body: str) -> tuple[np.ndarray, np.ndarray]:
+    """A body's recorded frames (its own movements' and those it is carried along in), by time: times, centres."""
+    frames = sorted((q.t, q.x, q.y) for ev in timeline.events if ev.type == "movement"
+                    for track in ([ev.trajectory] if ev.components and ev.components[0] == body else [])
+                    + [f for b, f in ev.tracks if b == body] for q in track)
+    a = np.asarray(frames, dtype=float).reshape(-1, 3)
+    return a[:, 0], a[:, 1:]
 
 
 def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated: Sequence[str]) -> float:
@@ -188,6 +199,39 @@ def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated
         xy = np.asarray(points)
         total += float(np.sqrt(((xy - np.asarray(ev.point)) ** 2).sum(axis=1)).min())
     return total
+
+
+def side_misses(scene: Scene, demonstrated: Timeline, simulated: Timeline,
+                matches: Sequence[tuple[str, str]]) -> dict[str, float]:
+    """For each matched contact between two bodies whose sides differ (the cup meets the peg's top, not its side;
+    none where one lands inside the other): how far, in canvas units, the second body's centre lay from the first's
+    at the simulated contact from where it lay at the demonstrated one, by demonstrated event id. A contact on the
+    wrong side scores no `miss_distance` (it is matched), so without this a search sees no way towards the right
+    side; the two bodies' placement at contact is the way (the cup lower beside the peg)."""
+    out: dict[str, float] = {}
+    for a_id, b_id in matches:
+        ea, eb = demonstrated.event(a_id), simulated.event(b_id)
+        if ea.type != "contact" or len(ea.components) != 2 or set(ea.components) != set(eb.components):
+            continue
+        sa, sb = dict(ea.sides), dict(eb.sides)
+        if sa == sb or "inside" in (*sa.values(), *sb.values()):
+            continue
+        first, second = ea.components
+        offsets = [np.subtract(_centre(scene, tl, second, ev.t0), _centre(scene, tl, first, ev.t0))
+                   for tl, ev in ((demonstrated, ea), (simulated, eb))]
+        out[a_id] = float(np.hypot(*(offsets[0] - offsets[1])))
+    return out
+
+
+def _centre(scene: Scene, timeline: Timeline, body: str, t: float) -> tuple[float, float]:
+    """Where ``body``'s centre is at ``t`` in ``timeline``: its recorded frame nearest in time (a movement's own or
+    a body carried along by it), else where it is drawn."""
+    times, centres = _frames(timeline, body)
+    if not len(times):
+        component = scene.components.get(body)
+        return getattr(component, "position", (0.0, 0.0))
+    k = int(np.abs(times - t).argmin())
+    return (float(centres[k, 0]), float(centres[k, 1]))
 
 
 def mover(timeline: Timeline, contact: Event) -> str:

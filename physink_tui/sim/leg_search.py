@@ -123,9 +123,10 @@ class LegByLeg:
 
     def __init__(self, start: Parameters, legs: Sequence[Leg], *, seed: int,
                  family: Callable[[float], Parameters] | None = None,
-                 aims: Sequence[Aimed] | Callable[[], Sequence[Aimed]] = ()) -> None:
+                 aims: Sequence[Aimed] | Callable[[], Sequence[Aimed]] = (), aimed_legs: int = 0) -> None:
         self.start = start
         self.family = family
+        self.aimed_legs = aimed_legs
         self._aims: list[Aimed] = [] if callable(aims) else list(aims)
         self._aims_source = aims if callable(aims) else None  # made when first needed (after the family)
         self._aimed: list[Aimed] = []  # the last generation's aims
@@ -160,6 +161,9 @@ class LegByLeg:
             self._factors = [self._family_best * FAMILY_STEPS[self._family_round] ** j
                              for j in FAMILY_SPAN[self._family_round] if j != 0]
             return [self.family(f) for f in self._factors]
+        if self._phase is Phase.FAMILY and self._delivered():
+            self._aims, self._aims_source = [], None  # the family already carries the start body where aims would
+            self._phase = Phase.SCAN  # nor is its throw to be turned: on to the springs, then the legs
         if self._aims_source is not None and self._phase in (Phase.FAMILY, Phase.AIM):
             self._aims, self._aims_source = list(self._aims_source()), None
         if self._aims and self._phase in (Phase.FAMILY, Phase.AIM):
@@ -238,6 +242,18 @@ class LegByLeg:
         solved = next((k for k in range(len(self.legs)) if leg_score(s, k).qualitative > 0), len(self.legs))
         return (-solved, leg_score(s, solved).objective if solved < len(self.legs) else 0.0, s.objective)
 
+    def _components(self, leg: Leg) -> frozenset[str]:
+        """What a run on ``leg`` adjusts: at first, after a reproduced leg, the components the leg's own events name
+        (`Leg.own`); on a restart, every component up to its end (`Leg.components`)."""
+        if self.restarts == 0 and self.leg > 0 and leg.own and coordinates(self.centre, ("vx", "vy"), leg.own):
+            return leg.own
+        return leg.components
+
+    def _delivered(self) -> bool:
+        """Whether the centre reproduces every leg the aims and the scan address (`aimed_legs`)."""
+        assert self.centre_score is not None
+        return 0 < self.aimed_legs <= -self._progress(self.centre_score)[0]
+
     def _key(self, s: Score) -> tuple[float, float]:
         return (leg_score(s, self.leg).objective, s.objective)
 
@@ -274,7 +290,7 @@ class LegByLeg:
                 self._runs_this_round = 0
             return False
         leg = self.legs[self.leg]
-        coords = coordinates(self.centre, ("vx", "vy"), None if leg is None else leg.components)
+        coords = coordinates(self.centre, ("vx", "vy"), None if leg is None else self._components(leg))
         if not coords:
             self._given_up = self.leg
             return False

@@ -31,6 +31,8 @@ class Leg:
     events: frozenset[str]
     components: frozenset[str]
     last: str
+    own: frozenset[str] = frozenset()
+    """The component ids the leg's own events name (not those of earlier legs): what the leg brings in."""
 
 
 def legs(timeline: Timeline) -> tuple[Leg, ...]:
@@ -40,14 +42,17 @@ def legs(timeline: Timeline) -> tuple[Leg, ...]:
     events = timeline.events
     out: list[Leg] = []
     taken: list[int] = []
+    since = 0
     for position, i in enumerate(order):
         taken.append(i)
         ends_leg = events[i].type in ("contact", "end_contact") or position == len(order) - 1
         if ends_leg:
-            out.append(_leg(timeline, taken, events[i].id))
+            out.append(_leg(timeline, taken, since, events[i].id))
+            since = len(taken)
     return tuple(out)
 
 
-def _leg(timeline: Timeline, taken: list[int], last: str) -> Leg:
+def _leg(timeline: Timeline, taken: list[int], since: int, last: str) -> Leg:
     events = [timeline.events[i] for i in taken]
-    return Leg(frozenset(ev.id for ev in events), frozenset(c for ev in events for c in ev.components), last)
+    return Leg(frozenset(ev.id for ev in events), frozenset(c for ev in events for c in ev.components), last,
+               frozenset(c for ev in events[since:] for c in ev.components))

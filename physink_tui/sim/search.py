@@ -24,7 +24,7 @@ from typing import Protocol
 from physink_tui.errors import SimulationError
 from physink_tui.scene.components import Scene
 from physink_tui.sim.aim import Aimed, aimed
-from physink_tui.sim.chain import chain_aimed
+from physink_tui.sim.chain import aimed_legs, chain_aimed
 from physink_tui.sim.evaluate import Score
 from physink_tui.sim.grid import ThesisGrid
 from physink_tui.sim.leg_search import LegByLeg
@@ -102,8 +102,9 @@ class Search:
             def aims() -> list[Aimed]:  # aimed only when the family has not found the answer
                 return [*chain_aimed(scene, timeline, self.start), *aimed(scene, timeline, self.start)]
 
-            self._strategy = LegByLeg(self.start, legs(timeline), seed=seed, family=family if seeded else None,
-                                      aims=aims if seeded else ())
+            legs_ = legs(timeline)
+            self._strategy = LegByLeg(self.start, legs_, seed=seed, family=family if seeded else None,
+                                      aims=aims if seeded else (), aimed_legs=aimed_legs(scene, timeline, legs_))
 
     @property
     def by_leg(self) -> bool:
