@@ -22,9 +22,11 @@
   contacts it lacks, measured on each contact's mover, `legs`: the same per leg; `objective` = 1000 x qualitative +
   quantitative + 4 x miss, inf when exploded), `Problem` (scene, demonstrated timeline, canvas, rollout length,
   `by_leg`, cache key), `evaluate` / `evaluate_problem`: rollout + `compare_prefixes` against the demonstration
-  (prepared once per process; settled states cached by `structure()`)
+  (prepared once per process; settled states cached by `structure()`); a matched contact met on another side than
+  demonstrated adds to `miss` how far the two bodies lay from their demonstrated placement (`side_misses`: the cup
+  on the peg's top, not beside it)
 - `legs.py`: `legs(timeline)`: the demonstration cut after each contact and end-contact in comparison order; each
-  leg's event ids and the components they name
+  leg's event ids, the components they name, and those its own events name (`Leg.own`)
 - `coordinates.py`: the searched numbers of a `Parameters` as `Coordinate`s (mass, friction, k, rest length;
   velocity as angle/speed or vx/vy), `get_value`/`set_value`, and `Normalisation` to the unscaled vector an
   optimiser moves in
@@ -44,17 +46,19 @@
   followed through modelled bounces (`rebound`, calibrated against the physics world by benchmarks/bench_bounce.py: a
   loss to gravity while pressed, Coulomb friction, a disc starting to roll) and scored by the demonstrated contacts
   with fixed bodies it makes in order (`demonstrated_chain`); the deepest launch of each region making the most is
-  tried first
+  tried first; `aimed_legs`: the leading legs the aims address (up to the start body meeting a movable body)
 - `where.py`: `differences_in_place`: for a reproduced demonstration, the matched contacts whose simulated point lies
   far from the drawn one, in words ("the ball meets the platform a at its right corner, not at its middle as you
   showed"); `place(body, point)` reads a point in the body's own frame
 - `leg_search.py`: `LegByLeg`, the default: the flight-time family of the seed first (zooming 2^(k/4), 2^(j/16),
   2^(j/64)), then the aimed candidates (`chain.py`'s, then `aim.py`'s, made only then, 16 a generation) and one CMA-ES
   run in `AimSpace` round the best of them (at most 60 rollouts), then the best one's start velocities turned and scaled
-  together (the grid's velocity steps, 48 rollouts), in scenes with springs the best one with its springs stiffer and
-  longer (9 rollouts), then CMA-ES (pycma, seeded) on the parameters of the first leg the
-  best so far does not reproduce, against that leg's score; restarts with doubled steps when a run stalls; a leg given
-  up past step 4, another round over the legs while budget is left; what it asked for last is its `Phase`
+  together (the grid's velocity steps, 48 rollouts) — the aims and the scan skipped when the family's best already
+  reproduces the legs they address (`chain.aimed_legs`) —, in scenes with springs the best one with its springs stiffer
+  and longer (9 rollouts), then CMA-ES (pycma, seeded) on the parameters of the first leg the best so far does not
+  reproduce (a later leg's first run: those its own events name), against that leg's score; restarts with doubled steps
+  when a run stalls; a leg given up past step 4, another round over the legs while budget is left; what it asked for
+  last is its `Phase`
 - `search.py`: `Search(scene, timeline, canvas, strategy=, seed=, budget=)`: `next_generation()` / `tell(scores)` /
   `done` / `best` / `found_at` / `furthest` (most leading legs reproduced, `progress`); generation 0 is the seed;
   stops at the first qualitatively equivalent candidate; deterministic for a seed and budget whatever evaluates the

@@ -3,20 +3,25 @@ parameters; it runs nothing itself.
 
 Before the legs: the seed's flight-time family (`FAMILY_STEPS`: every start body still reaching its first
 demonstrated contact, faster or slower), then the best of it with its start velocities turned and scaled together
-(`SCAN_ANGLES`, `SCAN_SPEEDS`); each time the candidate furthest along the legs becomes the centre.
+(`SCAN_ANGLES`, `SCAN_SPEEDS`); each time the candidate furthest along the legs becomes the centre. When the family's
+best already reproduces every leg the aims address (`aimed_legs`: up to the start body meeting a movable body, the
+ball landing on the cup), the aims and the scan are skipped: they move only the throw, which then already does what
+they aim at, and their rollouts (70 on the cup dispenser) go to the legs.
 
-The demonstration is cut into legs (`legs.legs`: each ends with a contact). The search always works on the first
-leg the best parameters so far do not reproduce: it optimises only the parameters the demonstration up to the end
-of that leg can depend on (`Leg.components`: the start bodies' initial velocities, the masses and frictions of the
-bodies in it, its springs), from those best parameters, against that leg's score (`Score.legs[k]`: the qualitative
-distance of the demonstration up to there, weighted above the quantitative and the miss distance). The parameters
-of earlier legs stay free, at the point earlier stages found, so a later leg may still move them a little; the
-prefix score keeps the earlier legs reproduced. As soon as a candidate reproduces the leg, the search moves on from
-it to the next leg it does not reproduce (one candidate may solve several legs). A run that stalls (its best not
-better for `STALL_GENERATIONS` generations, or CMA-ES stops) restarts from the best with a step size twice as large
-(as IPOP-CMA-ES does); past `MAX_SIGMA` the leg is given up and the next one taken, the unsolved leg's mismatch
-still counted in every later prefix. When every leg has been tried and some given up, another round starts from the
-best so far (fresh random numbers, the given-up legs tried again), until the budget is spent.
+The demonstration is cut into legs (`legs.legs`: each ends with a contact). The search always works on the first leg the
+best parameters so far do not reproduce: it optimises only the parameters the demonstration up to the end of that leg
+can depend on (`Leg.components`: the start bodies' initial velocities, the masses and frictions of the bodies in it, its
+springs), from those best parameters, against that leg's score (`Score.legs[k]`: the qualitative distance of the
+demonstration up to there, weighted above the quantitative and the miss distance). The parameters of earlier legs stay
+free, at the point earlier stages found, so a later leg may still move them a little; the prefix score keeps the earlier
+legs reproduced. A later leg's first run adjusts only the components its own events name (`Leg.own`: the platform, cup,
+peg and springs of the cup meeting the peg, not the ball's throw that set them moving), fewer coordinates for CMA-ES; a
+restart adjusts every component up to the leg's end. As soon as a candidate reproduces the leg, the search moves on from
+it to the next leg it does not reproduce (one candidate may solve several legs). A run that stalls (its best not better
+for `STALL_GENERATIONS` generations, or CMA-ES stops) restarts from the best with a step size twice as large (as
+IPOP-CMA-ES does); past `MAX_SIGMA` the leg is given up and the next one taken, the unsolved leg's mismatch still
+counted in every later prefix. When every leg has been tried and some given up, another round starts from the best so
+far (fresh random numbers, the given-up legs tried again), until the budget is spent.
 
 CMA-ES is pycma's ``CMAEvolutionStrategy`` (ask/tell) in `coordinates.Normalisation`'s unscaled coordinates, its
 random numbers drawn from a generator seeded with (seed, round, leg, restart), so a search is the same for the same seed
