@@ -14,7 +14,7 @@ import pytest
 from physink_tui.cli import main
 from physink_tui.formats.project.codec import Project
 from physink_tui.formats.project.files import load_project
-from physink_tui.scene.components import MATERIALS, Body, Scene
+from physink_tui.scene.components import BACKGROUND, MATERIALS, Body, Joint, Scene
 from physink_tui.sim.chain import aimed_legs
 from physink_tui.sim.evaluate import Score, side_misses
 from physink_tui.sim.leg_search import FAMILY_ROUNDS, LegByLeg
@@ -58,7 +58,7 @@ def test_a_contact_on_the_wrong_side_is_scored_by_the_bodies_placement() -> None
     assert set(misses) == {"e7"} and math.isclose(misses["e7"], 60.0)
 
 
-def test_a_body_that_never_moved_is_placed_where_it_is_drawn() -> None:
+def test_a_body_that_never_moved_is_placed_where_it_is_drawn_and_a_fixed_one_is_left_out() -> None:
     demonstrated = Timeline((Event("e1", "start"),
                              Event("e2", "movement", ("b1",), ("e1",), 0.0, 1.0,
                                    trajectory=frames(0.0, 1.0, 0, 100, 0, 100)),
@@ -73,6 +73,8 @@ def test_a_body_that_never_moved_is_placed_where_it_is_drawn() -> None:
     wall = Scene().add(Body("b2", "circle", (), 10.0, (120.0, 30.0), 0.0, MATERIALS["round"]))
     misses = side_misses(wall, demonstrated, simulated, [("e1", "e1"), ("e2", "e2"), ("e3", "e3")])
     assert misses == {"e3": pytest.approx(math.hypot(10.0, 20.0))}  # the ball 10 right, 20 lower; the wall still
+    welded = wall.add(Joint("j1", "weld", "b2", BACKGROUND, (120.0, 30.0)))
+    assert side_misses(welded, demonstrated, simulated, [("e3", "e3")]) == {}  # a fixed body's side: the throw's
 
 
 def test_a_later_leg_brings_in_its_own_components(cup_dispenser: Project) -> None:

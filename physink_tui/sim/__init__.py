@@ -18,13 +18,13 @@
   `exploded` (`RolloutResult.stopped_because` is a `Stop`); held bodies and bodies beyond demo mode's speed limit
   are flagged; a body that came flush onto another while settling touches it the step it is first set moving);
   `rollout` is the two in a row, so a fork and a full rollout agree bit for bit
-- `evaluate.py`: `Score` (qualitative, quantitative, `miss`: how close the simulation came to the demonstrated
-  contacts it lacks, measured on each contact's mover, `legs`: the same per leg; `objective` = 1000 x qualitative +
-  quantitative + 4 x miss, inf when exploded), `Problem` (scene, demonstrated timeline, canvas, rollout length,
-  `by_leg`, cache key), `evaluate` / `evaluate_problem`: rollout + `compare_prefixes` against the demonstration
-  (prepared once per process; settled states cached by `structure()`); a matched contact met on another side than
-  demonstrated adds to `miss` how far the two bodies lay from their demonstrated placement (`side_misses`: the cup
-  on the peg's top, not beside it)
+- `evaluate.py`: `Score` (qualitative, quantitative, `miss`: how close the simulation came to the demonstrated contacts
+  it lacks, measured on each contact's mover, `legs`: the same per leg; `objective` = 1000 x qualitative + quantitative
+  + 4 x miss, inf when exploded), `Problem` (scene, demonstrated timeline, canvas, rollout length, `by_leg`, cache key),
+  `evaluate` / `evaluate_problem`: rollout + `compare_prefixes` against the demonstration (prepared once per process;
+  settled states cached by `structure()`); a matched contact of two movable bodies met on another side than demonstrated
+  adds to `miss` how far the two bodies lay from their demonstrated placement (`side_misses`: the cup on the peg's top,
+  not beside it)
 - `legs.py`: `legs(timeline)`: the demonstration cut after each contact and end-contact in comparison order; each
   leg's event ids, the components they name, and those its own events name (`Leg.own`)
 - `coordinates.py`: the searched numbers of a `Parameters` as `Coordinate`s (mass, friction, k, rest length;

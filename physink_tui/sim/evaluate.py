@@ -203,15 +203,19 @@ def miss_distance(demonstrated: Timeline, simulated: Timeline, only_demonstrated
 
 def side_misses(scene: Scene, demonstrated: Timeline, simulated: Timeline,
                 matches: Sequence[tuple[str, str]]) -> dict[str, float]:
-    """For each matched contact between two bodies whose sides differ (the cup meets the peg's top, not its side;
-    none where one lands inside the other): how far, in canvas units, the second body's centre lay from the first's
-    at the simulated contact from where it lay at the demonstrated one, by demonstrated event id. A contact on the
-    wrong side scores no `miss_distance` (it is matched), so without this a search sees no way towards the right
-    side; the two bodies' placement at contact is the way (the cup lower beside the peg)."""
+    """For each matched contact between two movable bodies whose sides differ (the cup meets the peg's top, not its
+    side; none where one lands inside the other): how far, in canvas units, the second body's centre lay from the
+    first's at the simulated contact from where it lay at the demonstrated one, by demonstrated event id. A contact on
+    the wrong side scores no `miss_distance` (it is matched), so without this a search sees no way towards the right
+    side; the two bodies' placement at contact is the way (the cup lower beside the peg). A contact with a fixed body
+    is left out: there the start body's throw decides the side, which the aims and the velocity scan look after, and
+    the term changed which throws the search followed (measured: one held-back ball-and-platforms case lost)."""
     out: dict[str, float] = {}
     for a_id, b_id in matches:
         ea, eb = demonstrated.event(a_id), simulated.event(b_id)
         if ea.type != "contact" or len(ea.components) != 2 or set(ea.components) != set(eb.components):
+            continue
+        if any(scene.is_fixed(c) for c in ea.components):
             continue
         sa, sb = dict(ea.sides), dict(eb.sides)
         if sa == sb or "inside" in (*sa.values(), *sb.values()):
