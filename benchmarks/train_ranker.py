@@ -7,11 +7,12 @@ For every scored stroke (`bench_generalisation.scored_rows`) the rules give a ki
 (`ranker.features`). The weights are fitted by conditional-logit maximum likelihood (Newton steps on the likelihood's
 Fisher matrix, L2 penalty `LAMBDA`, fixed beforehand, not tuned). The model's kind replaces the rules' only when its
 chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources the model is fitted on. Design
-folds: each of the 15 sources not held back is scored by a model (and margin) fitted on the other 14 only. The
-held-back students (`bench_generalisation.held_back`) are not read unless ``--heldback`` or ``--write`` is given, and
-then only scored per source and per class, by a model fitted on the 15. ``--write`` fits on every source given
-(held-back included, the margin chosen by leave-one-source-out over all of them) and writes the model as the Python
-data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
+folds: each source not held back is scored by a model (and margin) fitted on the other design sources only. The first
+held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given; the
+second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``; each group is then
+scored per source and per class, apart, by a model fitted on the design sources. ``--write`` fits on every source
+given but the second held-back group (the margin chosen by leave-one-source-out over them) and writes the model as the
+Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
 ~/.cache/physink/ under a key of the rows and the recognition package's source.
 """
 
@@ -28,7 +29,7 @@ from collections import Counter
 from pathlib import Path
 
 import numpy as np
-from bench_generalisation import held_back, scored_rows
+from bench_generalisation import held_back, held_back_new, scored_rows
 from bench_recognition import machine, table
 from stroke_sets import Row, read_set, source_of
 
@@ -188,7 +189,7 @@ def model_module_text(doc: dict) -> str:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("sets", type=Path, nargs="+")
-    ap.add_argument("--heldback", action="store_true", help="score the held-back students (once, at the end)")
+    ap.add_argument("--heldback", action="store_true", help="score both held-back groups (once, at the end)")
     ap.add_argument("--lam", default=str(LAMBDA), help="L2 penalty; a comma list reports the design folds with each "
                     "(sensitivity), the first is used for the rest")
     ap.add_argument("--no-gate", action="store_true", help="overrule the rules at any margin (0.5)")
@@ -198,9 +199,13 @@ def main() -> None:
     for path in args.sets:
         rows += read_set(path)
     rows, _ = scored_rows(rows)
-    group = held_back(rows)
+    first, new = held_back(rows), held_back_new(rows)
+    if not args.heldback:  # the second group is never read without --heldback, not even to write a model
+        rows = [r for r in rows if source_of(r, "person") not in new]
+        new = set()
     if not (args.heldback or args.write):
-        rows = [r for r in rows if source_of(r, "person") not in group]
+        rows = [r for r in rows if source_of(r, "person") not in first]
+    group = first | new
     sources = np.array([source_of(r, "person") for r in rows])
     d = describe(rows)
     design_idx = np.flatnonzero(~np.isin(sources, sorted(group)))
@@ -219,12 +224,17 @@ def main() -> None:
         report(f"Design sources, each scored by a model fitted without it (lam {lam:g}; margins "
                + ", ".join(f"{v:g}" for v in margins.values()) + ")", d, rows, sources, folds)
     if args.heldback or args.write:
-        m15 = fitted(design_idx, lams[0])
-        held = {s: answers(d, np.flatnonzero(sources == s), m15, rows) for s in sorted(group)}
-        report(f"Held-back students, scored by a model fitted on the 15 (lam {m15['lam']:g}, margin "
-               f"{m15['margin']:g})", d, rows, sources, held)
+        m_design = fitted(design_idx, lams[0])
+        n_design = len(set(sources[design_idx]))
+        for title, members in (("Held-back students (the first group)", first), ("Held-back sources found after the "
+                               "first 19 (the second group)", new)):
+            if members:
+                held = {s: answers(d, np.flatnonzero(sources == s), m_design, rows) for s in sorted(members)}
+                report(f"{title}, scored by a model fitted on the {n_design} design sources (lam "
+                       f"{m_design['lam']:g}, margin {m_design['margin']:g})", d, rows, sources, held)
     if args.write:
-        m = fitted(np.arange(len(rows)), lams[0])
+        keep = np.flatnonzero(~np.isin(sources, sorted(new)))  # the second group is never fitted on
+        m = fitted(keep, lams[0])
         args.write.write_text(model_module_text({
             "features": list(ranker.FEATURES), "kinds": list(ranker.KINDS), "lam": m["lam"], "margin": m["margin"],
             "theta": [round(float(v), 9) for v in m["theta"]], "mean": [round(float(v), 9) for v in m["mean"]],
