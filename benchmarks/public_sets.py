@@ -25,9 +25,11 @@ from __future__ import annotations
 import argparse
 import json
 import re
+import struct
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from collections.abc import Iterator
 from pathlib import Path
 from typing import NamedTuple
 
@@ -36,6 +38,7 @@ from student_sets import _git, git_dir, reserved_points, times_ms
 
 CACHE = Path.home() / ".cache" / "physink"
 ONE, PER_FOLDER = "one", "per-folder"
+XML, ACCORD, JAVA = "xml", "accord", "java"
 
 
 class Entry(NamedTuple):
@@ -50,6 +53,9 @@ class Entry(NamedTuple):
     person: str = ""
     only: tuple[str, ...] = ()
     """`PER_FOLDER`: the subfolders read (all when empty)."""
+    form: str = XML
+    """`XML`: a gesture a file ($1 or $N form); `ACCORD`: a file a label of ``<Sequence>`` samples (the Accord.NET
+    gesture sample's form); `JAVA`: a folder a label of Java-serialised samples."""
 
 
 MAX_COPIES = 5
@@ -78,6 +84,11 @@ ENTRIES: tuple[Entry, ...] = (
                              ("TouchScreen_without_stylus", "finger on a touch screen"))),
     Entry("mmg", "pixelfac/hcira-project-23", "80d4cc73e4b3aff82fc72040e61e6d61ebab9e2f", "src/mmg", None,
           PER_FOLDER),
+    *(Entry("ahmadosama", "AhmadOsama4/Mouse-Gesture-Recognition-Using-HMM",
+            "4285ca64256da189a171135fd84598f4da4badd6", folder, "mouse", ONE, "AhmadOsama4", form=ACCORD)
+      for folder in ("TrainingData", "TestData")),
+    Entry("gtiwari", "gtiwari333/mouse-gesture-recognition-java-hidden-markov-model",
+          "06d93512747fca7352b4d7e1c5417f999767ad8f", "trainData", "mouse", ONE, "gtiwari333", form=JAVA),
 )
 """Every set of the second search (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and how."""
 
@@ -119,10 +130,10 @@ def strokes_of(where: str, data: bytes) -> tuple[list[list[list[float | None]]],
     return out, root
 
 
-def _files(gdir: Path, commit: str, folder: str) -> list[str]:
-    """The XML files directly in ``folder`` at ``commit`` (not in its subfolders), sorted."""
+def _files(gdir: Path, commit: str, folder: str, ext: str = ".xml") -> list[str]:
+    """The files ending in ``ext`` directly in ``folder`` at ``commit`` (not in its subfolders), sorted."""
     listing = _git(gdir, "ls-tree", "--name-only", commit, "--", folder.rstrip("/") + "/").decode().splitlines()
-    return sorted(n for n in listing if n.endswith(".xml"))
+    return sorted(n for n in listing if n.endswith(ext))
 
 
 def _subfolders(gdir: Path, commit: str, folder: str) -> list[str]:
@@ -130,51 +141,98 @@ def _subfolders(gdir: Path, commit: str, folder: str) -> list[str]:
     return sorted(listing.splitlines())
 
 
-def entry_rows(entry: Entry, mirrors: Path | None, known: set, seen: dict, skipped: list[str]) -> list[dict]:
-    """The rows of one entry. ``known``: the $1 development people's strokes (refused); ``seen``: stroke -> source
-    of every stroke gathered so far (a stroke seen under another source is refused)."""
-    gdir = git_dir(entry.repo, mirrors)
-    owner = entry.repo.split("/")[0]
+def java_stroke(where: str, data: bytes) -> list[list[float | None]]:
+    """The stroke of one Java-serialised ``RawFeature`` (a ``double[]`` of times in ms, a ``java.awt.Point[]``)."""
+    try:
+        i = data.index(b"ur\x00\x02[D")
+        i = data.index(b"xp", i) + 2
+        n = int.from_bytes(data[i:i + 4], "big")
+        times = struct.unpack(f">{n}d", data[i + 4:i + 4 + 8 * n])
+        j = data.index(b"xp", data.index(b"ur\x00\x11[Ljava.awt.Point;", i)) + 2
+        m, j = int.from_bytes(data[j:j + 4], "big"), j + 4
+        xy = []
+        for _ in range(m):
+            if data[j:j + 2] == b"sr":  # the first Point: its class description, ended by TC_ENDBLOCKDATA, TC_NULL
+                j = data.index(b"yxp", j) + 3
+            elif data[j:j + 3] == b"sq\x00":  # a Point by reference to that description
+                j += 6
+            else:
+                raise ValueError(f"byte {j}: not a java.awt.Point")
+            xy.append(struct.unpack(">ii", data[j:j + 8]))
+            j += 8
+    except (ValueError, struct.error) as exc:
+        raise ValueError(f"{where}: not a serialised RawFeature ({exc})") from None
+    if m != n:
+        raise ValueError(f"{where}: {n} times for {m} points")
+    ts = times_ms(list(times))
+    return [[float(x), float(y), t] for (x, y), t in zip(xy, ts, strict=True)]
+
+
+def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, str, list, str]]:
+    """(where, person, device, label, pen-downs, date) of every gesture ``entry`` names, in order."""
+    owner, c = entry.repo.split("/")[0], entry.commit
+    at = f"{entry.repo}@{c[:7]}:"
+    if entry.form == ACCORD:  # a file per label holding every sample: <Sequence> of <Point><X/><Y/></Point>
+        for name in _files(gdir, c, entry.folder):
+            try:
+                root = ET.fromstring(_git(gdir, "show", f"{c}:{name}"))
+            except ET.ParseError as exc:
+                raise ValueError(f"{at}{name}: {exc}") from None
+            for k, seq in enumerate(root.iter("Sequence"), 1):
+                pts = [[float(p.findtext("X", "nan")), float(p.findtext("Y", "nan")), None] for p in seq.iter("Point")]
+                yield f"{at}{name}#{k}", entry.person, entry.device, Path(name).stem, [pts], ""
+        return
+    if entry.form == JAVA:  # a folder per label, a serialised RawFeature per sample
+        for sub in _subfolders(gdir, c, entry.folder):
+            for name in _files(gdir, c, sub, ".TRAINDATA"):
+                stroke = java_stroke(at + name, _git(gdir, "show", f"{c}:{name}"))
+                yield at + name, entry.person, entry.device, Path(sub).name, [stroke], ""
+        return
     if entry.layout == ONE:
         people = [(entry.person, entry.folder)]
     else:
-        subs = _subfolders(gdir, entry.commit, entry.folder)
+        subs = _subfolders(gdir, c, entry.folder)
         people = [(f"{owner}/{Path(s).name}", s) for s in subs if not entry.only or Path(s).name in entry.only]
-    out: list[dict] = []
-    copies: dict[str, int] = {}
     for person, folder in people:
-        for name in _files(gdir, entry.commit, folder):
-            where = f"{entry.repo}@{entry.commit[:7]}:{name}"
-            strokes, root = strokes_of(where, _git(gdir, "show", f"{entry.commit}:{name}"))
-            year = re.search(r"(19|20)\d\d", root.get("Date", ""))
-            if year and int(year.group(0)) < 2010:
-                raise ValueError(f"{where}: dated {root.get('Date')!r}, as the original $1 logs: reserved")
+        for name in _files(gdir, c, folder):
+            strokes, root = strokes_of(at + name, _git(gdir, "show", f"{c}:{name}"))
             if entry.set_name == "mmg":
                 label = root.get("Name", "").split("~")[0].replace("-", "_").replace(" ", "_")
-                subject, device = f"{root.get('Subject')}", root.get("InputType")
+                yield at + name, f"{root.get('Subject')}", root.get("InputType"), label, strokes, root.get("Date", "")
             else:
-                label, subject, device = dollar_label(name), person, entry.device
-            source = f"{entry.set_name}:{subject}"
-            keys = [tuple((p[0], p[1]) for p in stroke[:12]) for stroke in strokes]
-            if any(key in known for key in keys):
-                raise ValueError(f"{where}: its points are a stroke of the $1 logs: reserved")
-            if sum(len(s) for s in strokes) < 2:
-                skipped.append(f"{where} (fewer than two points)")
-                continue
-            first = next((seen[k] for k, s in zip(keys, strokes, strict=True) if len(s) >= 8 and seen.get(k, source)
-                          != source), None)
-            if first is not None:
-                copies[source] = copies.get(source, 0) + 1
-                if copies[source] > MAX_COPIES:
-                    raise ValueError(f"{where}: more than {MAX_COPIES} gestures of {source} are strokes of {first}: "
-                                     "a copy of another source")
-                skipped.append(f"{where} (a stroke of {first} again)")
-                continue
-            for k, s in zip(keys, strokes, strict=True):
-                if len(s) >= 8:
-                    seen.setdefault(k, source)
-            out.append({"source": entry.set_name, "subject": subject, "device": device, "label": label,
-                        "file": where, "strokes": strokes})
+                yield at + name, person, entry.device, dollar_label(name), strokes, root.get("Date", "")
+
+
+def entry_rows(entry: Entry, mirrors: Path | None, known: set, seen: dict, skipped: list[str]) -> list[dict]:
+    """The rows of one entry. ``known``: the $1 development people's strokes (refused); ``seen``: stroke -> source
+    of every stroke gathered so far (a stroke seen under another source is refused)."""
+    out: list[dict] = []
+    copies: dict[str, int] = {}
+    for where, subject, device, label, strokes, date in _gestures(entry, git_dir(entry.repo, mirrors)):
+        year = re.search(r"(19|20)\d\d", date)
+        if year and int(year.group(0)) < 2010:
+            raise ValueError(f"{where}: dated {date!r}, as the original $1 logs: reserved")
+        source = f"{entry.set_name}:{subject}"
+        keys = [tuple((p[0], p[1]) for p in stroke[:12]) for stroke in strokes]
+        if any(key in known for key in keys):
+            raise ValueError(f"{where}: its points are a stroke of the $1 logs: reserved")
+        if sum(len(s) for s in strokes) < 2:
+            skipped.append(f"{where} (fewer than two points)")
+            continue
+        first = next((seen[k] for k, s in zip(keys, strokes, strict=True) if len(s) >= 8 and seen.get(k, source)
+                      != source), None)
+        if first is not None:
+            copies[source] = copies.get(source, 0) + 1
+            if copies[source] > MAX_COPIES:
+                raise ValueError(f"{where}: more than {MAX_COPIES} gestures of {source} are strokes of {first}: "
+                                 "a copy of another source")
+            skipped.append(f"{where} (a stroke of {first} again)")
+            continue
+        for k, s in zip(keys, strokes, strict=True):
+            if len(s) >= 8:
+                seen.setdefault(k, source)
+        out.append({"source": entry.set_name, "subject": subject, "device": device, "label": label, "file": where,
+                    "strokes": strokes})
     return out
 
 

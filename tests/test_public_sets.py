@@ -6,6 +6,7 @@ repository)."""
 from __future__ import annotations
 
 import math
+import struct
 import subprocess
 import sys
 from pathlib import Path
@@ -14,7 +15,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_generalisation import scored_rows
-from public_sets import ONE, PER_FOLDER, Entry, dollar_label, entry_rows
+from public_sets import ACCORD, ONE, PER_FOLDER, Entry, dollar_label, entry_rows, java_stroke
 
 REPO = "someone/hcira-project"
 
@@ -103,3 +104,37 @@ def test_the_mmg_set_keeps_its_people_devices_and_strokes(tmp_path) -> None:
     (row,) = entry_rows(Entry("mmg", REPO, head, "mmg", None, PER_FOLDER), mirrors, set(), {}, [])
     assert (row["source"], row["subject"], row["device"], row["label"], len(row["strokes"])) == (
         "mmg", "7", "finger", "line", 1)
+
+
+def _java_raw_feature(points: list[tuple[int, int]], t0: float = 1308480555195.0) -> bytes:
+    """A ``RawFeature`` serialised as Java writes one: a class description, a double[] of times, a Point[]."""
+    uid = bytes(range(8))
+    out = b"\xac\xed\x00\x05sr\x00\x22com.gt.gesture.features.RawFeature" + uid + b"\x02\x00\x02[\x00\x07curTimet" \
+          b"\x00\x02[D[\x00\x09drawPointt\x00\x11[Ljava/awt/Point;xp"
+    out += b"ur\x00\x02[D" + uid + b"\x02\x00\x00xp" + len(points).to_bytes(4, "big")
+    out += b"".join(struct.pack(">d", t0 + 16.0 * k) for k in range(len(points)))
+    out += b"ur\x00\x11[Ljava.awt.Point;" + uid + b"\x02\x00\x00xp" + len(points).to_bytes(4, "big")
+    for k, (x, y) in enumerate(points):
+        out += (b"sr\x00\x0ejava.awt.Point" + uid + b"\x02\x00\x02I\x00\x01xI\x00\x01yxp") if k == 0 else \
+            b"sq\x00~\x00\x08"
+        out += struct.pack(">ii", x, y)
+    return out
+
+
+def test_java_serialised_strokes_keep_their_points_and_clock() -> None:
+    stroke = java_stroke("a.TRAINDATA", _java_raw_feature([(10, 20), (30, 20), (50, 21)]))
+    assert stroke == [[10.0, 20.0, 0.0], [30.0, 20.0, 16.0], [50.0, 21.0, 32.0]]
+    with pytest.raises(ValueError, match=r"b\.TRAINDATA: not a serialised RawFeature"):
+        java_stroke("b.TRAINDATA", b"\xac\xed\x00\x05 something else")
+
+
+def test_a_file_of_samples_per_label_is_one_gesture_a_sample(tmp_path) -> None:
+    seq = "".join("<Sequence><Classes><string>Circle</string></Classes><Points>" + "".join(
+        f"<Point><X>{200 + r * math.cos(2 * math.pi * k / 30):.0f}</X><Y>{200 + r * math.sin(2 * math.pi * k / 30):.0f}"
+        "</Y></Point>" for k in range(31)) + "</Points></Sequence>" for r in (40, 60))
+    mirrors, head = _commit(tmp_path, {"TrainingData/Circle.xml": f"<ArrayOfSequence>{seq}</ArrayOfSequence>"})
+    rows = entry_rows(Entry("ahmadosama", REPO, head, "TrainingData", "mouse", ONE, "someone", form=ACCORD), mirrors,
+                      set(), {}, [])
+    assert [(r["subject"], r["label"], len(r["strokes"][0])) for r in rows] == [("someone", "Circle", 31)] * 2
+    kept, _ = scored_rows(rows)
+    assert all(sorted(r["accepts"]) == ["circle", "ellipse"] for r in kept)
