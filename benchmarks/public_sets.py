@@ -77,6 +77,8 @@ ENTRIES: tuple[Entry, ...] = (
           HCIRA_MOUSE, PER_FOLDER),
     Entry("hcira", "hat359/HCIRA", "69a6542ac5f0fac384587158b5ecf4c05c59194e", "xml_collected_logs",
           "mouse or touch screen", PER_FOLDER),
+    Entry("hcira", "jonathanzhang53/gesture-recognizer", "8f3085122e4a72bce618afc9d97faf31ee81fc7c", "user_gestures",
+          HCIRA_MOUSE, PER_FOLDER),
     Entry("hcira", "klarubbio/hcira_p1", "e8eb332ae77da0ddd630fa2c87d3423bd2f732ef", "xml", HCIRA_MOUSE, PER_FOLDER),
     *(Entry("hcira", "shriyansnidhish/Dollar-one-recognizer", "35d6736f40cc036b53ce50172c58a2c86ee3495d",
             f"Part-2/Dataset/{folder}", device, PER_FOLDER)
