@@ -1,6 +1,7 @@
 """Trains and measures the learned ranker (`recognition.ranker`) leave one source out, beside today's rules.
 
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--heldback] [--write PATH] [--lam L] [--no-gate]
+       [--inner K]
 
 For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve
 (`ranker.KINDS`) the ranker scores both by ``w_kind . phi + a * [the rules' answer]`` over standardised features
@@ -132,18 +133,29 @@ def model(d: dict, idx: np.ndarray, lam: float) -> dict:
     return {"theta": fit(x, mask, d["right"][use], lam), "mean": mean, "std": std, "lam": lam, "margin": 0.5}
 
 
-def gated_model(d: dict, idx: np.ndarray, sources: np.ndarray, rows: list[Row], lam: float) -> dict:
+def gated_model(d: dict, idx: np.ndarray, sources: np.ndarray, rows: list[Row], lam: float,
+                inner: int | None = None) -> dict:
     """A model fitted on ``idx`` whose margin (`MARGINS`: how sure it must be to overrule the rules) is chosen by
-    leave-one-source-out within ``idx`` only (most right answers pooled; ties to the larger margin)."""
+    leave-one-source-out within ``idx`` only (most right answers pooled; ties to the larger margin), or, with
+    ``inner`` K, by K folds of whole sources (`inner_folds`) when the sources are many."""
     got = Counter()
-    for s in sorted(set(sources[idx])):
-        inner = model(d, idx[sources[idx] != s], lam)
-        mine = idx[sources[idx] == s]
+    for held in inner_folds(sorted(set(sources[idx])), inner):
+        out = np.isin(sources[idx], held)
+        fold = model(d, idx[~out], lam)
         for margin in MARGINS:
-            got[margin] += int(answers(d, mine, inner, rows, margin).sum())
+            got[margin] += int(answers(d, idx[out], fold, rows, margin).sum())
     m = model(d, idx, lam)
     m["margin"] = max(MARGINS, key=lambda v: (got[v], v))
     return m
+
+
+def inner_folds(names: list[str], k: int | None) -> list[list[str]]:
+    """The sources held out together when a margin is chosen: one at a time (``k`` None), or ``k`` groups dealt in
+    the order of their names' sha256 (fixed by the names alone)."""
+    if k is None or k >= len(names):
+        return [[n] for n in names]
+    order = sorted(names, key=lambda n: hashlib.sha256(n.encode()).hexdigest())
+    return [order[i::k] for i in range(k)]
 
 
 def answers(d: dict, idx: np.ndarray, m: dict, rows: list[Row], margin: float | None = None) -> np.ndarray:
@@ -193,6 +205,8 @@ def main() -> None:
     ap.add_argument("--lam", default=str(LAMBDA), help="L2 penalty; a comma list reports the design folds with each "
                     "(sensitivity), the first is used for the rest")
     ap.add_argument("--no-gate", action="store_true", help="overrule the rules at any margin (0.5)")
+    ap.add_argument("--inner", type=int, help="choose the margin by this many folds of whole sources instead of "
+                    "leave-one-source-out (many sources: the fits grow with their square)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     args = ap.parse_args()
     rows: list[Row] = []
@@ -212,7 +226,7 @@ def main() -> None:
     lams = [float(v) for v in args.lam.split(",")]
 
     def fitted(idx: np.ndarray, lam: float) -> dict:
-        return model(d, idx, lam) if args.no_gate else gated_model(d, idx, sources, rows, lam)
+        return model(d, idx, lam) if args.no_gate else gated_model(d, idx, sources, rows, lam, args.inner)
 
     print(f"## Learned ranker ({machine()})\n")
     for lam in lams:
