@@ -20,15 +20,17 @@ platform, knocking its side), read from every step of the rollout (a spy on `Rec
   its spring's) while moving left in the 0.6 s after the contact over the energy its spring held at the start (the peg
   starts at rest against the platform, so only the cup can give it the G > 1 that takes it back past its start, and
   its spring's damping takes about half of it per swing);
-- seven legs or more: 100 x the whole's qualitative distance + 3 x how far right of 760 the peg's right end is when
-  the end-contact is recorded (the demonstrated ending needs the peg off the platform's left end) + 300 per flag.
+- seven legs or more: 100 x the whole's qualitative distance + 300 per flag when the peg's right end is left of the
+  platform's side as the end-contact is recorded (the demonstrated parting, which the knock on that side needs);
+  otherwise (the platform, pinned under the peg, parted from it for a step: a jitter) as six legs, the seventh leg's
+  distance counted as 1.
 
-Each step: 12 children of the 6 best (70 %) or the 12 best, every coordinate moved with probability 1/2 by a normal
-step of 0.02-0.2 in the search's normalised coordinates (`sim.coordinates.Normalisation`); ``--frictionless``
-keeps those bodies' frictions at 0 (a pair's friction is the mean of the two, so peg and platform at 0 slide freely).
-The start: the ``--start`` candidates of ``--from`` reproducing six legs or more (unflagged; with ``--kmax``, the peg
-spring's k below it), most legs first. Rows hold the parameters, the costs' parts and the legs; a candidate at
-qualitative 0 is printed as a witness.
+Each step: 12 children of the 6 best (70 %) or the 12 best, every coordinate moved with probability 1/2 by a normal step
+of 0.02-0.2 in the search's normalised coordinates (`sim.coordinates.Normalisation`); ``--frictionless`` keeps those
+bodies' frictions at 0 (a pair's friction is the mean of the two, so peg and platform at 0 slide freely). The start: the
+``--start`` candidates of ``--from`` reproducing six legs or more (unflagged; with ``--kmax``, the peg spring's k below
+it), most legs first, then (rows of an earlier climb) lowest cost first. Rows hold the parameters, the costs' parts and
+the legs; a candidate at qualitative 0 is printed as a witness.
 """
 
 from __future__ import annotations
@@ -110,13 +112,15 @@ def score(p: Parameters) -> Row:
                 + prefixes[lead].quantitative_distance}
     events = result.timeline.events
     knock = min(e.t0 for e in events if e.type == "contact" and set(e.components) == {CUP, PEG})
+    seventh = prefixes[6].qualitative_distance
     if lead >= 7:
         parted = min(e.t0 for e in events if e.type == "end_contact" and set(e.components) == {PLATFORM, PEG}
                      and e.t0 > knock)
         at = min(steps, key=lambda s: abs(s[0] - parted))
-        right_end = at[1][PEG][0] + geo.peg_half
-        return {**row, "R20": right_end, "cost": 100 * whole.qualitative_distance
-                + 3 * max(0.0, right_end - (geo.platform_left - 8)) + 300 * flags}
+        row["R20"] = at[1][PEG][0] + geo.peg_half
+        if row["R20"] < geo.platform_left:  # the peg slid off the platform's left end: the demonstrated parting
+            return {**row, "cost": 100 * whole.qualitative_distance + 300 * flags}
+        seventh = 1.0  # the platform jittering under the peg: scored as six legs
     after = [s for s in steps if knock <= s[0] <= knock + 2.5]
     farthest = min(s[1][PEG][0] for s in after) + geo.peg_half
     near = next((s for s in after if s[1][PEG][0] + geo.peg_half < geo.platform_left + 8),
@@ -135,7 +139,7 @@ def score(p: Parameters) -> Row:
 
     start = 0.5 * k * (rest - geo.spring_drawn) ** 2
     gain = max((held(s) for s in after if s[0] <= knock + 0.6 and s[1][PEG][3] < 0), default=0.0) / max(start, 1e-9)
-    cost = (1000 * prefixes[6].qualitative_distance + 100 * whole.qualitative_distance
+    cost = (1000 * seventh + 100 * whole.qualitative_distance
             + 3 * max(0.0, farthest - (geo.platform_left - 1)) + 2 * max(0.0, gap - 0.5)
             + max(0.0, platform_speed - 4) + (0.3 * max(0.0, cup_speed - 4) if cup_on else 0.0) + 300 * flags)
     if energy:
@@ -171,7 +175,7 @@ def main() -> None:
     earlier = [json.loads(line) for path in args.sources.split(",") for line in Path(path).open()]
     earlier = [r for r in earlier if int(r.get("lead") or r.get("legs") or 0) >= 6 and not r.get("flags")
                and r["params"]["springs"]["s2"][0] < args.kmax]
-    earlier.sort(key=lambda r: -int(r.get("lead") or r.get("legs") or 0))
+    earlier.sort(key=lambda r: (-int(r.get("lead") or r.get("legs") or 0), float(r.get("cost", 0.0))))
     rng = random.Random(args.seed)
     archive: list[Row] = []
     with args.rows.open("w") as out, ProcessExecutor(args.workers) as executor:

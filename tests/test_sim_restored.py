@@ -4,8 +4,10 @@ by the default search within the default budget at seeds 0-2; where the answer b
 show, the verdict says so. bouncing_first_below_b (figure 3-22) is a needle: a near-straight shot under B's left
 corner, over the basket's rim, onto the basket's right wall (a witness below); the search finds it by aiming at the
 flights that clear the drawing (sim/clearance.py). The cup dispenser's full demonstration is neither found nor
-proven impossible: an offline scan of 49,099 parameter sets found no equivalent (docs/BENCHMARKS.md), and the argument
-that its let-go peg can never come back past where it started fails, as a rollout below shows."""
+proven impossible (docs/BENCHMARKS.md): its demonstrated end of the peg's contact with the platform is what demo mode's
+physics did, recorded by the rule rollouts are recorded by; the argument that the let-go peg can never come back past
+where it started fails (a rollout below); simulations reproduce the demonstration up to that end-contact, but none
+found by the scans and climbs also has the peg back off the platform's left end to knock its side."""
 
 from __future__ import annotations
 
