@@ -3,11 +3,11 @@ machine as first drawn, before it was redrawn until the search solved it (0909bb
 by the default search within the default budget at seeds 0-2; where the answer bounces off a corner the pen did not
 show, the verdict says so. bouncing_first_below_b (figure 3-22) is a needle: a near-straight shot under B's left
 corner, over the basket's rim, onto the basket's right wall (a witness below); the search finds it by aiming at the
-flights that clear the drawing (sim/clearance.py). The cup dispenser's full demonstration is neither found nor
-proven impossible (docs/BENCHMARKS.md): its demonstrated end of the peg's contact with the platform is what demo mode's
-physics did, recorded by the rule rollouts are recorded by; the argument that the let-go peg can never come back past
-where it started fails (a rollout below); simulations reproduce the demonstration up to that end-contact, but none
-found by the scans and climbs also has the peg back off the platform's left end to knock its side."""
+flights that clear the drawing (sim/clearance.py). The cup dispenser's full demonstration is possible: a witness
+below, found offline by a hill-climb (docs/BENCHMARKS.md); its demonstrated end of the peg's contact with the platform
+is what demo mode's physics did, recorded by the rule rollouts are recorded by. The default search does not find it
+within its budget (a needle: the cup must knock the let-go peg back past its start while the platform rests pressed
+under it)."""
 
 from __future__ import annotations
 
@@ -21,7 +21,13 @@ from constructed.judge import judge
 from physink_tui.formats.journal.reader import read_journal
 from physink_tui.session.session import Session
 from physink_tui.sim.defaults import DEFAULT_BUDGET
-from physink_tui.sim.evaluate import evaluate, evaluate_problem, make_problem, rollout_seconds, simulate
+from physink_tui.sim.evaluate import (
+    evaluate,
+    evaluate_problem,
+    make_problem,
+    rollout_seconds,
+    simulate,
+)
 from physink_tui.sim.parameters import BodyParameters, Parameters, SpringParameters
 from physink_tui.sim.seeding import seed
 from physink_tui.sim_run.executors import SerialExecutor
@@ -75,6 +81,22 @@ peg's movement, by the search's own legs; but the platform, pinned under the peg
 the peg is still on its top: the peg, back off the cup at rest, turns round 41 units short of the platform's side (its
 spring's rest position 780 units less about the 87 units it started from: the cup gave it nothing), so the next
 contact is the platform's top against the peg's bottom, not its side against the peg's end (qualitative 1.0)."""
+
+CUP_WITNESS = Parameters(
+    {"b2": BodyParameters(2894.8259046551475, 0.9716071853291559),
+     "b4": BodyParameters(18105.178107569514, 0.0),
+     "b5": BodyParameters(9319.759469990478, 0.848535106304767),
+     "b7": BodyParameters(10981.973014119765, 0.0)},
+    {"s1": SpringParameters(80.83663056804608, 263.0),
+     "s2": SpringParameters(2.0897417523760735, 320.49143227714376)},
+    {"b2": (697.5218235297893, 420.6126118318152)})
+"""A simulation equivalent to the cup dispenser's full demonstration (issue 27), found by
+benchmarks/climb_cup_dispenser.py (docs/BENCHMARKS.md): ball, platform, cup and peg masses 0.76, 1.41, 1.17 and 2.47
+times the seed's, the platform and the peg frictionless, the platform spring 4 times as stiff at its drawn length, the
+peg spring a tenth as stiff and 1.33 times as long. The ball bounces twice on the cup; the second bounce sends the
+cup left into the peg coming over the platform; the cup, bouncing, knocks the peg again and it goes back past its
+start while the platform comes to rest pressed up under it; the peg slides off the platform's left end, the platform
+rises, and the peg, pulled back by its weak spring, knocks the platform's left side."""
 
 
 @cache
@@ -203,3 +225,29 @@ def test_a_simulation_reproduces_the_pegs_end_of_contact_but_not_yet_the_knock_o
     assert peg_at.x + max(x for x, _ in outline_of(peg).hull) > platform_left_side + 30, "the peg is still on top"
     again = next(ev for ev in events if ev.type == "contact" and ev.t0 > parted.t0)
     assert dict(again.sides) == {platform.id: "top", peg.id: "bottom"}
+
+
+def test_the_full_demonstration_has_a_witness() -> None:
+    # The witness, re-checked by a real rollout: every demonstrated event, with the same causes and sides, the
+    # recoil included; no body flagged (none faster than demo mode allows). So the full demonstration is possible,
+    # and the default search's refusal of it (docs/BENCHMARKS.md) is a miss, not a proof.
+    s = cup_dispenser_full()
+    by_label = {b.label: b for b in s.scene.bodies()}
+    cup, peg, platform = by_label["cup"], by_label["peg"], by_label["platform"]
+    score = evaluate(s.scene, s.timeline, s.canvas, CUP_WITNESS, rollout_seconds(s.timeline))
+    assert score.qualitative == 0 and not score.exploded, "the witness reproduces the full demonstration"
+    problem = make_problem(s.scene, s.timeline, s.canvas)
+    result = simulate(problem, CUP_WITNESS)
+    assert result.flagged == ()
+    events = result.timeline.events
+    knock = next(ev for ev in events if ev.type == "contact" and set(ev.components) == {cup.id, peg.id})
+    parted = next(ev for ev in events if ev.type == "end_contact" and ev.t0 > knock.t0)
+    side = next(ev for ev in events if ev.type == "contact" and ev.t0 > parted.t0)
+    (cause,) = parted.causes
+    assert set(parted.components) == {peg.id, platform.id}
+    assert next(ev for ev in events if ev.id == cause).components[0] == peg.id
+    peg_at = next(q for ev in events if ev.type == "movement" and ev.components[:1] == (peg.id,)
+                  for q in ev.trajectory if q.t == parted.t0)
+    platform_left_side = platform.position[0] + min(x for x, _ in outline_of(platform).hull)
+    assert peg_at.x + max(x for x, _ in outline_of(peg).hull) < platform_left_side, "the peg slid off its left end"
+    assert dict(side.sides) == {platform.id: "left", peg.id: "right"}
