@@ -92,11 +92,11 @@ CUP_WITNESS = Parameters(
     {"b2": (697.5218235297893, 420.6126118318152)})
 """A simulation equivalent to the cup dispenser's full demonstration (issue 27), found by
 benchmarks/climb_cup_dispenser.py (docs/BENCHMARKS.md): ball, platform, cup and peg masses 0.76, 1.41, 1.17 and 2.47
-times the seed's, the platform and the peg frictionless, the platform spring 4 times as stiff at its drawn length, the
-peg spring a tenth as stiff and 1.33 times as long. The ball bounces twice on the cup; the second bounce sends the
-cup left into the peg coming over the platform; the cup, bouncing, knocks the peg again and it goes back past its
-start while the platform comes to rest pressed up under it; the peg slides off the platform's left end, the platform
-rises, and the peg, pulled back by its weak spring, knocks the platform's left side."""
+times the seed's, the platform and the peg frictionless, the platform spring 4 times as stiff at about its drawn length,
+the peg spring a tenth as stiff and 1.33 times as long. The ball bounces twice on the cup; the second bounce sends the
+cup left into the peg coming over the platform; the cup, bouncing, knocks the peg again and it goes back past its start
+while the platform comes to rest pressed up under it; the peg slides off the platform's left end, the platform rises,
+and the peg, pulled back by its weak spring, knocks the platform's left side."""
 
 
 @cache
