@@ -9,7 +9,8 @@ resampled to `POINTS` points, turned so that its first point lies at angle 0 fro
 and centred, minimised over a further turn of up to 45 degrees (golden-section search to 2 degrees). Here it is
 also minimised over drawing the reference backwards (the recogniser does not care which end a stroke starts from).
 Only strokes of *other* sources are compared (a person's own strokes would vouch for the person's labels). The
-held-back students (`bench_generalisation.held_back`) are neither scored nor used as references. Without
+held-back sources (both groups: `bench_generalisation.held_back`, `held_back_new`) are neither scored nor used as
+references. Without
 ``--files`` every stroke the rules-and-ranker recogniser (`recognize_stroke`) reads wrong is listed; a stroke is
 *contradicted* when its nearest other-source stroke carries another label, and that label's class accepts the kind
 the recogniser gave (the geometry agrees with a reading the label table calls wrong).
@@ -25,7 +26,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
-from bench_generalisation import held_back, scored_rows
+from bench_generalisation import held_back, held_back_new, scored_rows
 from bench_recognition import table
 from stroke_sets import Row, read_set, source_of
 
@@ -194,7 +195,7 @@ def main() -> None:
     for path in args.sets:
         rows += read_set(path)
     rows, _ = scored_rows(rows)
-    group = held_back(rows)
+    group = held_back(rows) | held_back_new(rows)
     rows = [r for r in rows if source_of(r, "person") not in group]  # never read, never a reference
     if args.invariants:
         print(invariant_table(rows) + "\n")

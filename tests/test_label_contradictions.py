@@ -21,7 +21,7 @@ import pytest
 from shared_data import shared_path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_generalisation import held_back, scored_rows
+from bench_generalisation import held_back, held_back_new, scored_rows
 from label_contradictions import crosses_itself, distances, template, zigzag
 from stroke_sets import read_set, source_of
 
@@ -38,7 +38,7 @@ def _students() -> list[dict]:
     if not STUDENTS.exists():
         pytest.skip(f"{STUDENTS} not found: `benchmarks/student_sets.py` writes it (the sets carry no licence)")
     rows, _ = scored_rows(read_set(STUDENTS))
-    group = held_back(rows)
+    group = held_back(rows) | held_back_new(rows)
     return _people() + [r for r in rows if source_of(r, "person") not in group]
 
 
