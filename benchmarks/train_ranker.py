@@ -87,7 +87,7 @@ def tensors(d: dict, idx: np.ndarray, mean: np.ndarray, std: np.ndarray) -> tupl
     mask = np.zeros((len(idx), WIDTH), dtype=bool)
     for j, i in enumerate(idx):
         kinds = ranker.family(d["rules"][i])
-        x[j, :len(kinds)] = ranker.design(kinds, (d["phi"][i] - mean) / std, d["rules"][i])
+        x[j, :len(kinds)] = ranker.design(kinds, (d["phi"][i, :len(ranker.FEATURES)] - mean) / std, d["rules"][i])
         mask[j, :len(kinds)] = True
     return x, mask
 
@@ -127,8 +127,9 @@ def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: i
 def model(d: dict, idx: np.ndarray, lam: float) -> dict:
     """A model fitted on the strokes ``idx`` whose family holds a right kind."""
     use = idx[d["right"][idx].any(axis=1)]
-    mean = d["phi"][use].mean(axis=0)
-    std = np.where(d["phi"][use].std(axis=0) > 1e-9, d["phi"][use].std(axis=0), 1.0)
+    phi = d["phi"][use, :len(ranker.FEATURES)]  # the guards' measures (`ranker.GUARDS`) are not weighed
+    mean = phi.mean(axis=0)
+    std = np.where(phi.std(axis=0) > 1e-9, phi.std(axis=0), 1.0)
     x, mask = tensors(d, use, mean, std)
     return {"theta": fit(x, mask, d["right"][use], lam), "mean": mean, "std": std, "lam": lam, "margin": 0.5}
 
