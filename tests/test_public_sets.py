@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import math
 import struct
-import subprocess
 import sys
 from pathlib import Path
 
@@ -15,6 +14,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_generalisation import scored_rows
+from mirror_repo import commit_mirror
 from public_sets import ACCORD, ONE, PER_FOLDER, Entry, dollar_label, entry_rows, java_stroke
 
 REPO = "someone/hcira-project"
@@ -29,21 +29,7 @@ def _circle_xml(name: str, r: float = 60.0, date: str = "Friday, April 14, 2023"
 
 
 def _commit(tmp_path: Path, files: dict[str, str]) -> tuple[Path, str]:
-    """A git repository laid out as the fetch tool leaves one (``<owner>+<name>/repo``), and its commit."""
-    work = tmp_path / "work"
-    for name, text in files.items():
-        (work / name).parent.mkdir(parents=True, exist_ok=True)
-        (work / name).write_text(text, encoding="utf-8")
-    git = ["git", "-C", str(work), "-c", "user.name=t", "-c", "user.email=t@t"]
-    subprocess.run([*git[:3], "init", "-q"], check=True)
-    subprocess.run([*git, "add", "-A"], check=True)
-    subprocess.run([*git, "commit", "-qm", "gestures"], check=True)
-    mirror = tmp_path / "mirrors" / REPO.replace("/", "+")
-    mirror.mkdir(parents=True)
-    (work / ".git").rename(mirror / "repo")
-    head = subprocess.run(["git", "--git-dir", str(mirror / "repo"), "rev-parse", "HEAD"], check=True,
-                          capture_output=True, text=True).stdout.strip()
-    return tmp_path / "mirrors", head
+    return commit_mirror(tmp_path, REPO, files)
 
 
 def test_the_courses_spellings_become_the_dollar_sets_labels() -> None:
