@@ -88,6 +88,8 @@ def git_dir(repo: str, mirrors: Path | None) -> Path:
     """The repository's git directory: the fetched mirror, else a bare clone in the cache (made on first use)."""
     if mirrors is not None:
         mirror = mirrors / repo.replace("/", "+") / "repo"
+        if (mirror / ".git").is_dir():  # a snapshot with a work tree
+            return mirror / ".git"
         if mirror.is_dir():
             return mirror
     clone = CACHE / (repo.replace("/", "+") + ".git")

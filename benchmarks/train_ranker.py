@@ -1,17 +1,19 @@
 """Trains and measures the learned ranker (`recognition.ranker`) leave one source out, beside today's rules.
 
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--heldback] [--write PATH] [--lam L] [--no-gate]
+       [--inner K]
 
 For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve
 (`ranker.KINDS`) the ranker scores both by ``w_kind . phi + a * [the rules' answer]`` over standardised features
 (`ranker.features`). The weights are fitted by conditional-logit maximum likelihood (Newton steps on the likelihood's
 Fisher matrix, L2 penalty `LAMBDA`, fixed beforehand, not tuned). The model's kind replaces the rules' only when its
 chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources the model is fitted on. Design
-folds: each of the 15 sources not held back is scored by a model (and margin) fitted on the other 14 only. The
-held-back students (`bench_generalisation.held_back`) are not read unless ``--heldback`` or ``--write`` is given, and
-then only scored per source and per class, by a model fitted on the 15. ``--write`` fits on every source given
-(held-back included, the margin chosen by leave-one-source-out over all of them) and writes the model as the Python
-data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
+folds: each source not held back is scored by a model (and margin) fitted on the other design sources only. The first
+held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given; the
+second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``; each group is then
+scored per source and per class, apart, by a model fitted on the design sources. ``--write`` fits on every source
+given but the second held-back group (the margin chosen by leave-one-source-out over them) and writes the model as the
+Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
 ~/.cache/physink/ under a key of the rows and the recognition package's source.
 """
 
@@ -28,7 +30,7 @@ from collections import Counter
 from pathlib import Path
 
 import numpy as np
-from bench_generalisation import held_back, scored_rows
+from bench_generalisation import held_back, held_back_new, scored_rows
 from bench_recognition import machine, table
 from stroke_sets import Row, read_set, source_of
 
@@ -85,7 +87,7 @@ def tensors(d: dict, idx: np.ndarray, mean: np.ndarray, std: np.ndarray) -> tupl
     mask = np.zeros((len(idx), WIDTH), dtype=bool)
     for j, i in enumerate(idx):
         kinds = ranker.family(d["rules"][i])
-        x[j, :len(kinds)] = ranker.design(kinds, (d["phi"][i] - mean) / std, d["rules"][i])
+        x[j, :len(kinds)] = ranker.design(kinds, (d["phi"][i, :len(ranker.FEATURES)] - mean) / std, d["rules"][i])
         mask[j, :len(kinds)] = True
     return x, mask
 
@@ -125,24 +127,36 @@ def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: i
 def model(d: dict, idx: np.ndarray, lam: float) -> dict:
     """A model fitted on the strokes ``idx`` whose family holds a right kind."""
     use = idx[d["right"][idx].any(axis=1)]
-    mean = d["phi"][use].mean(axis=0)
-    std = np.where(d["phi"][use].std(axis=0) > 1e-9, d["phi"][use].std(axis=0), 1.0)
+    phi = d["phi"][use, :len(ranker.FEATURES)]  # the guards' measures (`ranker.GUARDS`) are not weighed
+    mean = phi.mean(axis=0)
+    std = np.where(phi.std(axis=0) > 1e-9, phi.std(axis=0), 1.0)
     x, mask = tensors(d, use, mean, std)
     return {"theta": fit(x, mask, d["right"][use], lam), "mean": mean, "std": std, "lam": lam, "margin": 0.5}
 
 
-def gated_model(d: dict, idx: np.ndarray, sources: np.ndarray, rows: list[Row], lam: float) -> dict:
+def gated_model(d: dict, idx: np.ndarray, sources: np.ndarray, rows: list[Row], lam: float,
+                inner: int | None = None) -> dict:
     """A model fitted on ``idx`` whose margin (`MARGINS`: how sure it must be to overrule the rules) is chosen by
-    leave-one-source-out within ``idx`` only (most right answers pooled; ties to the larger margin)."""
+    leave-one-source-out within ``idx`` only (most right answers pooled; ties to the larger margin), or, with
+    ``inner`` K, by K folds of whole sources (`inner_folds`) when the sources are many."""
     got = Counter()
-    for s in sorted(set(sources[idx])):
-        inner = model(d, idx[sources[idx] != s], lam)
-        mine = idx[sources[idx] == s]
+    for held in inner_folds(sorted(set(sources[idx])), inner):
+        out = np.isin(sources[idx], held)
+        fold = model(d, idx[~out], lam)
         for margin in MARGINS:
-            got[margin] += int(answers(d, mine, inner, rows, margin).sum())
+            got[margin] += int(answers(d, idx[out], fold, rows, margin).sum())
     m = model(d, idx, lam)
     m["margin"] = max(MARGINS, key=lambda v: (got[v], v))
     return m
+
+
+def inner_folds(names: list[str], k: int | None) -> list[list[str]]:
+    """The sources held out together when a margin is chosen: one at a time (``k`` None), or ``k`` groups dealt in
+    the order of their names' sha256 (fixed by the names alone)."""
+    if k is None or k >= len(names):
+        return [[n] for n in names]
+    order = sorted(names, key=lambda n: hashlib.sha256(n.encode()).hexdigest())
+    return [order[i::k] for i in range(k)]
 
 
 def answers(d: dict, idx: np.ndarray, m: dict, rows: list[Row], margin: float | None = None) -> np.ndarray:
@@ -188,26 +202,32 @@ def model_module_text(doc: dict) -> str:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("sets", type=Path, nargs="+")
-    ap.add_argument("--heldback", action="store_true", help="score the held-back students (once, at the end)")
+    ap.add_argument("--heldback", action="store_true", help="score both held-back groups (once, at the end)")
     ap.add_argument("--lam", default=str(LAMBDA), help="L2 penalty; a comma list reports the design folds with each "
                     "(sensitivity), the first is used for the rest")
     ap.add_argument("--no-gate", action="store_true", help="overrule the rules at any margin (0.5)")
+    ap.add_argument("--inner", type=int, help="choose the margin by this many folds of whole sources instead of "
+                    "leave-one-source-out (many sources: the fits grow with their square)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     args = ap.parse_args()
     rows: list[Row] = []
     for path in args.sets:
         rows += read_set(path)
     rows, _ = scored_rows(rows)
-    group = held_back(rows)
+    first, new = held_back(rows), held_back_new(rows)
+    if not args.heldback:  # the second group is never read without --heldback, not even to write a model
+        rows = [r for r in rows if source_of(r, "person") not in new]
+        new = set()
     if not (args.heldback or args.write):
-        rows = [r for r in rows if source_of(r, "person") not in group]
+        rows = [r for r in rows if source_of(r, "person") not in first]
+    group = first | new
     sources = np.array([source_of(r, "person") for r in rows])
     d = describe(rows)
     design_idx = np.flatnonzero(~np.isin(sources, sorted(group)))
     lams = [float(v) for v in args.lam.split(",")]
 
     def fitted(idx: np.ndarray, lam: float) -> dict:
-        return model(d, idx, lam) if args.no_gate else gated_model(d, idx, sources, rows, lam)
+        return model(d, idx, lam) if args.no_gate else gated_model(d, idx, sources, rows, lam, args.inner)
 
     print(f"## Learned ranker ({machine()})\n")
     for lam in lams:
@@ -219,12 +239,17 @@ def main() -> None:
         report(f"Design sources, each scored by a model fitted without it (lam {lam:g}; margins "
                + ", ".join(f"{v:g}" for v in margins.values()) + ")", d, rows, sources, folds)
     if args.heldback or args.write:
-        m15 = fitted(design_idx, lams[0])
-        held = {s: answers(d, np.flatnonzero(sources == s), m15, rows) for s in sorted(group)}
-        report(f"Held-back students, scored by a model fitted on the 15 (lam {m15['lam']:g}, margin "
-               f"{m15['margin']:g})", d, rows, sources, held)
+        m_design = fitted(design_idx, lams[0])
+        n_design = len(set(sources[design_idx]))
+        for title, members in (("Held-back students (the first group)", first), ("Held-back sources found after the "
+                               "first 19 (the second group)", new)):
+            if members:
+                held = {s: answers(d, np.flatnonzero(sources == s), m_design, rows) for s in sorted(members)}
+                report(f"{title}, scored by a model fitted on the {n_design} design sources (lam "
+                       f"{m_design['lam']:g}, margin {m_design['margin']:g})", d, rows, sources, held)
     if args.write:
-        m = fitted(np.arange(len(rows)), lams[0])
+        keep = np.flatnonzero(~np.isin(sources, sorted(new)))  # the second group is never fitted on
+        m = fitted(keep, lams[0])
         args.write.write_text(model_module_text({
             "features": list(ranker.FEATURES), "kinds": list(ranker.KINDS), "lam": m["lam"], "margin": m["margin"],
             "theta": [round(float(v), 9) for v in m["theta"]], "mean": [round(float(v), 9) for v in m["mean"]],

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_generalisation import held_back, leave_one_source_out, scored_rows
+from bench_generalisation import FIRST_STUDENTS, group_of, held_back, held_back_new, leave_one_source_out, scored_rows
 from bench_recognition import ACCEPTS, LABEL_CLASS
 from label_kinds import read_table
 from stroke_sets import read_set, source_of
@@ -114,3 +114,21 @@ def test_the_held_back_students_are_four_fixed_by_their_names_alone() -> None:
     assert group == {"itt:Ferdi-FM", "itt:marcel-moz", "itt:martinarobyculasso", "itt:michaelpickl"}
     assert held_back(list(reversed(rows))) == group
     assert held_back([r for r in rows if r["subject"] != "Alphazerfall"]) == group
+
+
+def test_sources_found_later_are_held_back_by_their_name_alone_apart_from_the_first_group() -> None:
+    """The second held-back group (issue 25, the second search): a source found after the first 19 is held back
+    when the sha256 of the seed and its name is even; the first 19 are never in it, and adding sources changes
+    neither group."""
+    first = [{"source": "itt", "subject": n, "label": "circle"} for n in FIRST_STUDENTS]
+    first += [{"source": "dollar1", "subject": s, "label": "circle"} for s in ("s02", "s03", "s04")]
+    later = [{"source": "itt", "subject": f"student{k}", "label": "circle"} for k in range(40)]
+    later += [{"source": "someset", "subject": f"p{k}", "label": "circle"} for k in range(40)]
+    assert held_back_new(first) == set()
+    group = held_back_new(first + later)
+    assert 20 <= len(group) <= 60 and group == held_back_new(list(reversed(later)))
+    assert all(s.startswith(("itt:student", "someset:p")) for s in group)
+    assert held_back(first + later) == held_back(first)  # the first group is drawn among the first 16 only
+    assert {group_of(s, held_back(first)) for s in ("itt:Ferdi-FM", "itt:DerD4n", "dollar1:s03")} == {
+        "first held back", "first design"}
+    assert {group_of(s, set()) for s in group} == {"new held back"}

@@ -257,3 +257,24 @@ def test_grabbed_near_an_edge_a_body_turns_as_it_is_dragged() -> None:
     entries.append(PenEntry(t + 1.6, 0.68, 0.775, 0.0, False, True, False, False, False))
     session = run(entries)
     assert abs(session.scene.components["b1"].angle) > 0.2
+
+
+def test_sketching_gives_the_recogniser_the_pens_times_from_the_journal(monkeypatch) -> None:
+    """The learned ranker reads how the pen slowed at corners (issue 25); in a session the times are the journal's,
+    so a replay decides the same."""
+    from physink_tui.session.modes import sketch
+
+    seen: list[tuple[int, list[float] | None]] = []
+    real = sketch.recognize_stroke
+
+    def spy(points, times=None, **kw):
+        seen.append((len(points), None if times is None else list(times)))
+        return real(points, times, **kw)
+
+    monkeypatch.setattr(sketch, "recognize_stroke", spy)
+    points = box_points(0.2, 0.2, 0.5, 0.6)
+    session = run(pen_stroke(1.0, points, dt=0.02))
+    assert [b.shape for b in session.scene.bodies()] == ["box"]
+    (n, times), = seen
+    assert times is not None and len(times) == n
+    assert times[0] >= 1.0 and times == sorted(times) and times[-1] - times[0] > 0.9 * 0.02 * (len(points) - 1)

@@ -5,7 +5,6 @@ the reserved $1 logs refused by name (all made here in miniature, in a local git
 from __future__ import annotations
 
 import math
-import subprocess
 import sys
 from pathlib import Path
 
@@ -14,6 +13,7 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 import student_sets
 from bench_generalisation import scored_rows
+from mirror_repo import commit_mirror
 from student_sets import label_of, times_ms
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -29,21 +29,7 @@ def _circle_xml(name: str, date: str = "Tuesday, June 16, 2026", seconds: bool =
 
 
 def _commit(tmp_path: Path, files: dict[str, str]) -> tuple[Path, str]:
-    """A git repository laid out as the fetch tool leaves one (``<owner>+<name>/repo``), and its commit."""
-    work = tmp_path / "work"
-    for name, text in files.items():
-        (work / name).parent.mkdir(parents=True, exist_ok=True)
-        (work / name).write_text(text, encoding="utf-8")
-    git = ["git", "-C", str(work), "-c", "user.name=t", "-c", "user.email=t@t"]
-    subprocess.run([*git[:3], "init", "-q"], check=True)
-    subprocess.run([*git, "add", "-A"], check=True)
-    subprocess.run([*git, "commit", "-qm", "gestures"], check=True)
-    mirrors = tmp_path / "mirrors"
-    (mirrors / REPO.replace("/", "+")).mkdir(parents=True)
-    (work / ".git").rename(mirrors / REPO.replace("/", "+") / "repo")
-    head = subprocess.run(["git", "--git-dir", str(mirrors / REPO.replace("/", "+") / "repo"), "rev-parse", "HEAD"],
-                          check=True, capture_output=True, text=True).stdout.strip()
-    return mirrors, head
+    return commit_mirror(tmp_path, REPO, files)
 
 
 def test_students_spellings_become_the_tables_labels() -> None:

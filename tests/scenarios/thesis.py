@@ -394,9 +394,10 @@ CUP_SETTLE_S = 0.2
 Demo mode's peg-spring has its drawn natural length, so the let-go peg, dragged 200 units right, springs back past
 the platform's left end and knocks the platform's side: a recoil the pen's drag paid for. The machine the thesis
 simulates has a longer natural length (4.3), so its peg, which starts at rest against the platform, cannot come back
-past where it started by its spring alone (it gives back no more than it held); the cup can knock it back that far
-(tests/test_sim_restored.py), so whether a simulation reproduces that recoil is not proven either way: the full
-demonstration is kept as tests/journals/restored/cup_dispenser_full (issue 27, docs/BENCHMARKS.md)."""
+past where it started by its spring alone (it gives back no more than it held); but the cup can knock it back that far,
+and a simulation reproduces the whole recoil (a witness in tests/test_sim_restored.py, issue 27): the full
+demonstration is kept as tests/journals/restored/cup_dispenser_full, which the default search does not solve within
+its budget (docs/BENCHMARKS.md)."""
 
 
 def pinball() -> Scenario:

@@ -47,7 +47,8 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
 5. A polyline or a curve so read is re-ranked by a learned model (`ranker`, issue 25): a conditional logit over the
    two kinds on the stroke's geometric features (and the rules' own tests), fitted offline on people's strokes by
    `benchmarks/train_ranker.py`, shipped in the package as the data module `ranker_model`; it overrules the rules
-   only when it gives the other kind a chance over its margin. Other kinds are left to the rules.
+   only when it gives the other kind a chance over its margin. Other kinds are left to the rules, and so is the
+   rules' hurried check (one really sharp, off-centre corner in at most three lobes: `ranker.checked_point`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)

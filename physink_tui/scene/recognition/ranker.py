@@ -39,7 +39,11 @@ FEATURES = ("closure", "ink", "net_turn", "abs_turn", "corners", "concentration"
             "lobes", "ellipse_error", "circle_error", "aspect", "line_error", "corner_share", "one_way",
             "max_bend", "sparse", "one_corner", "two_corners", "all_straight", "bent_polyline", "brace_tip",
             "bowed_between", "rounded_bracket", "has_times", "corner_slowdown")
+GUARDS = ("point_balance",)
+"""Measures `features` returns after `FEATURES` that the model does not weigh: the rules' guards (`checked_point`)."""
 WORK_POINTS = 64
+CHECK_ARMS = 2 / 3
+"""A check's short arm is at most this share of its long arm (`checked_point`)."""
 
 
 def family(kind: str | None) -> tuple[str, ...]:
@@ -119,8 +123,9 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
 
 
 def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
-    """The stroke's features (`FEATURES`), size-free; ``noise`` is the pen's jitter in the points' units."""
-    out = np.zeros(len(FEATURES))
+    """The stroke's features (`FEATURES`, then `GUARDS`), size-free; ``noise`` is the pen's jitter in the points'
+    units."""
+    out = np.zeros(len(FEATURES) + len(GUARDS))
     found = _unit_work(points, times)
     if found is None:
         return out
@@ -153,12 +158,22 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
         float(bool(runs) and all(straights)),
         float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
         float(open_shapes._brace_tip(work, corners)), float(open_shapes._bowed_between_corners(work, corners, length)),
-        float(open_shapes._rounded_bracket(work, corners, straights, noise)),
-        0.0, 0.0]
+        float(open_shapes._rounded_bracket(work, corners, straights, noise)), 0.0, 0.0,
+        point_balance(work, corners, turns)]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
-        out[-2:] = [1.0, slow]
+        out[len(FEATURES) - 2:len(FEATURES)] = [1.0, slow]
     return np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
+
+
+def point_balance(work: np.ndarray, corners: list[int], turns: list[float]) -> float:
+    """The path on the shorter side of the sharpest inner corner over the path on its longer side: a check's point
+    is off-centre (a short and a long arm), a v's point or a brace's tip in the middle; 0 without an inner corner."""
+    if len(corners) < 3:
+        return 0.0
+    c = corners[1 + int(np.argmax(turns))]
+    before, after = sg.path_length(work[:c + 1]), sg.path_length(work[c:])
+    return min(before, after) / max(before, after, 1e-12)
 
 
 def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: list[int], n: int) -> float | None:
@@ -187,8 +202,8 @@ def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: lis
 
 
 def design(kinds: Sequence[str], phi: np.ndarray, rules_kind: str) -> np.ndarray:
-    """One row per candidate kind: the kind's own copy of ``[phi, 1]`` (zeros elsewhere), then whether it is the
-    rules' answer."""
+    """One row per candidate kind: the kind's own copy of ``[phi, 1]`` (``phi``: the standardised `FEATURES`; zeros
+    elsewhere), then whether it is the rules' answer."""
     width = len(FEATURES) + 1
     x = np.zeros((len(kinds), len(KINDS) * width + 1))
     for i, k in enumerate(kinds):
@@ -207,11 +222,12 @@ def offered(kinds: Sequence[str], phi: np.ndarray) -> list[bool]:
 
 def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
     """The kind of ``rules_kind``'s family the model scores best, when its chance under the model is over the
-    model's margin, else the rules' answer; and that kind's chance."""
+    model's margin, else the rules' answer; and that kind's chance. A polyline the rules read as a hurried check
+    (`checked_point`) is not asked of the model."""
     kinds = family(rules_kind)
-    if not kinds:
+    if not kinds or (rules_kind == "polyline" and checked_point(phi)):
         return rules_kind, 1.0
-    scores = design(kinds, (phi - model.mean) / model.std, rules_kind) @ model.theta
+    scores = design(kinds, (phi[:len(FEATURES)] - model.mean) / model.std, rules_kind) @ model.theta
     scores = np.where(offered(kinds, phi), scores, -np.inf)
     chance = np.exp(scores - scores.max())
     chance /= chance.sum()
@@ -219,6 +235,17 @@ def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
     if kinds[best] == rules_kind or chance[best] > model.margin:
         return kinds[best], float(chance[best])
     return rules_kind, float(chance[kinds.index(rules_kind)])
+
+
+def checked_point(phi: np.ndarray) -> bool:
+    """Whether the stroke turns at one really sharp corner (`open_shapes.VERY_SHARP_CORNER`) in at most three lobes:
+    the rules' hurried check, whose arms may bow. The rules read it as a polyline on purpose; a model fitted on
+    people who draw checks with straight arms reads bowed arms as a curve's, so it is not asked."""
+    corners = round(float(phi[FEATURES.index("corners")]) * 8)
+    turn = float(phi[FEATURES.index("max_corner_turn")]) * 180.0
+    lobes = round(float(phi[FEATURES.index("lobes")]) * 4)
+    balance = float(phi[len(FEATURES) + GUARDS.index("point_balance")])
+    return corners == 1 and turn >= open_shapes.VERY_SHARP_CORNER and lobes <= 3 and balance <= CHECK_ARMS
 
 
 def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,

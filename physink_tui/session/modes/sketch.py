@@ -154,7 +154,7 @@ class SketchMode:
                 self._apply(pair, [list(pending.points), points], "X-symbol", t)
                 return
             self._apply(pending.recognition, [list(pending.points)], pending.recognition.kind or "stroke", t)
-        recognition = recognize_stroke(points, noise=self._pen_noise())
+        recognition = recognize_stroke(points, [p.t for p in stroke.points], noise=self._pen_noise())
         limit = self._x_arm_limit(points)
         if limit > 0.0:  # whatever the recogniser named it: a bowed or hooked half-X is seldom a clean line
             self.pending = PendingStroke(t, tuple(points), recognition, limit)

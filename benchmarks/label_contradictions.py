@@ -1,0 +1,233 @@
+"""Strokes whose label contradicts their geometry (issue 25): for each stroke the recogniser reads wrong, the nearest
+strokes of the other sources by the $1 recogniser's distance, and whether the stroke is nearer to strokes of
+another label than to any stroke of its own.
+
+Usage: .venv/bin/python benchmarks/label_contradictions.py SET [SET ...] [--files FILE ...]
+
+The $1 distance (Wobbrock, Wilson and Li 2007) is the mean distance between two strokes' points after each is
+resampled to `POINTS` points, turned so that its first point lies at angle 0 from its centroid, scaled to a square
+and centred, minimised over a further turn of up to 45 degrees (golden-section search to 2 degrees). Here it is
+also minimised over drawing the reference backwards (the recogniser does not care which end a stroke starts from).
+Only strokes of *other* sources are compared (a person's own strokes would vouch for the person's labels). The
+held-back sources (both groups: `bench_generalisation.held_back`, `held_back_new`) are neither scored nor used as
+references. Without
+``--files`` every stroke the rules-and-ranker recogniser (`recognize_stroke`) reads wrong is listed; a stroke is
+*contradicted* when its nearest other-source stroke carries another label, and that label's class accepts the kind
+the recogniser gave (the geometry agrees with a reading the label table calls wrong).
+"""
+
+from __future__ import annotations
+
+import argparse
+import itertools
+import math
+from collections import Counter
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+from bench_generalisation import held_back, held_back_new, scored_rows
+from bench_recognition import table
+from stroke_sets import Row, read_set, source_of
+
+from physink_tui.scene.recognition import open_shapes, ranker
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.recognize import recognize_stroke
+
+POINTS = 64
+SQUARE = 250.0
+HALF_TURN = math.radians(45.0)
+PRECISION = math.radians(2.0)
+PHI = 0.5 * (math.sqrt(5.0) - 1.0)
+
+
+def zigzag(points: Sequence[Sequence[float]]) -> bool:
+    """A zigzag by the recogniser's own geometry: three or more inner corners (`stroke_geometry.find_corners`,
+    end stubs dropped), each turning more than 90 degrees and each the other way from the one before, joined by
+    straight sides (`open_shapes.straight`)."""
+    found = ranker._unit_work(points, None)
+    if found is None:
+        return False
+    work = found[1]
+    th = sg.turning(work)
+    corners = sf.drop_end_stubs(work, sg.find_corners(work), sg.path_length(work))
+    if len(corners) < 5 or not all(open_shapes.straight(work[a:b + 1], 0.0) for a, b in itertools.pairwise(corners)):
+        return False
+    n = len(th) + 2
+    turns = [math.degrees(float(th[max(c - 3, 1) - 1:min(c + 3, n - 2)].sum())) for c in corners[1:-1]]
+    return all(abs(t) > 90.0 for t in turns) and all(a * b < 0 for a, b in itertools.pairwise(turns))
+
+
+def crosses_itself(points: Sequence[Sequence[float]]) -> bool:
+    """Whether the stroke, resampled to `POINTS` points, crosses itself (two sides not next to each other meet)."""
+    p = template(points)
+    a, d = p[:-1], np.diff(p, axis=0)
+    for i in range(len(a) - 2):
+        r = a[i + 2:] - a[i]
+        den = d[i, 0] * d[i + 2:, 1] - d[i, 1] * d[i + 2:, 0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = (r[:, 0] * d[i + 2:, 1] - r[:, 1] * d[i + 2:, 0]) / den
+            u = (r[:, 0] * d[i, 1] - r[:, 1] * d[i, 0]) / den
+        if bool(np.any((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1))):
+            return True
+    return False
+
+
+INVARIANTS = {"a zigzag": zigzag, "crosses itself": crosses_itself}
+"""Geometric facts that tell kinds apart whatever a person calls them, counted per source and label (`--invariants`)."""
+
+
+def template(points: Sequence[Sequence[float]]) -> np.ndarray:
+    """The stroke as the $1 recogniser compares it: `POINTS` points equally spaced along it, turned so that its
+    first point lies at angle 0 from the centroid, scaled to a `SQUARE` and centred on the origin."""
+    pts = np.asarray([p[:2] for p in points], dtype=float)
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    at = np.concatenate([[0.0], np.cumsum(seg)])
+    if at[-1] == 0.0:
+        return np.zeros((POINTS, 2))
+    s = np.linspace(0.0, at[-1], POINTS)
+    res = np.column_stack([np.interp(s, at, pts[:, 0]), np.interp(s, at, pts[:, 1])])
+    centre = res.mean(axis=0)
+    a = -math.atan2(res[0, 1] - centre[1], res[0, 0] - centre[0])
+    rot = (res - centre) @ np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
+    size = np.maximum(rot.max(axis=0) - rot.min(axis=0), 1e-9)
+    scaled = rot * (SQUARE / size)
+    return scaled - scaled.mean(axis=0)
+
+
+def _at_angle(query: np.ndarray, refs: np.ndarray, angles: np.ndarray) -> np.ndarray:
+    c, s = np.cos(angles)[:, None], np.sin(angles)[:, None]
+    x = query[None, :, 0] * c - query[None, :, 1] * s
+    y = query[None, :, 0] * s + query[None, :, 1] * c
+    return np.hypot(x - refs[:, :, 0], y - refs[:, :, 1]).mean(axis=1)
+
+
+def distances(query: np.ndarray, refs: np.ndarray) -> np.ndarray:
+    """The $1 distance from ``query`` to each of ``refs`` (templates), each at its best turn within 45 degrees."""
+    lo, hi = np.full(len(refs), -HALF_TURN), np.full(len(refs), HALF_TURN)
+    x1, x2 = PHI * lo + (1 - PHI) * hi, (1 - PHI) * lo + PHI * hi
+    f1, f2 = _at_angle(query, refs, x1), _at_angle(query, refs, x2)
+    while float((hi - lo).max()) > PRECISION:
+        left = f1 < f2  # the least lies left of x2: drop (x2, hi]; else drop [lo, x1)
+        hi, lo = np.where(left, x2, hi), np.where(left, lo, x1)
+        keep_x, keep_f = np.where(left, x1, x2), np.where(left, f1, f2)
+        new_x = np.where(left, PHI * lo + (1 - PHI) * hi, (1 - PHI) * lo + PHI * hi)
+        new_f = _at_angle(query, refs, new_x)
+        x1, f1 = np.where(left, new_x, keep_x), np.where(left, new_f, keep_f)
+        x2, f2 = np.where(left, keep_x, new_x), np.where(left, keep_f, new_f)
+    return np.minimum(f1, f2)
+
+
+def nearest(rows: list[Row], i: int, refs: np.ndarray, sources: np.ndarray, k: int = 5,
+            ) -> list[tuple[float, str, str]]:
+    """The ``k`` strokes of other sources nearest to stroke ``i`` (distance, label, file), either way round."""
+    other = np.flatnonzero(sources != sources[i])
+    query = template(rows[i]["strokes"][0])
+    d = np.minimum(distances(query, refs[other, 0]), distances(query, refs[other, 1]))
+    order = np.argsort(d, kind="stable")[:k]
+    return [(float(d[j]), rows[other[j]]["label"], rows[other[j]]["file"]) for j in order]
+
+
+def references(rows: list[Row]) -> np.ndarray:
+    """Each stroke's template drawn forwards and backwards: shape (strokes, 2, `POINTS`, 2)."""
+    return np.array([[template(r["strokes"][0]), template(r["strokes"][0][::-1])] for r in rows])
+
+
+def evidence(rows: list[Row], picked: list[int]) -> list[dict]:
+    """For each stroke of ``picked``: its nearest other-source strokes, the nearest of its own label, and its
+    recognised kind."""
+    refs = references(rows)
+    sources = np.array([source_of(r, "person") for r in rows])
+    labels = np.array([r["label"] for r in rows])
+    out = []
+    for i in picked:
+        near = nearest(rows, i, refs, sources)
+        query = template(rows[i]["strokes"][0])
+        own = np.flatnonzero((sources != sources[i]) & (labels == rows[i]["label"]))
+        d_own = float(np.minimum(distances(query, refs[own, 0]), distances(query, refs[own, 1])).min()) \
+            if len(own) else math.inf
+        stroke = rows[i]["strokes"][0]
+        times = [p[2] / 1000 for p in stroke] if all(len(p) > 2 and p[2] is not None for p in stroke) else None
+        kind = recognize_stroke([p[:2] for p in stroke], times).kind
+        out.append({"row": rows[i], "source": str(sources[i]), "kind": kind, "near": near, "own": d_own})
+    return out
+
+
+def invariant_table(rows: list[Row]) -> str:
+    """Per label, how many strokes have each invariant: for each source, and for all sources."""
+    sources = sorted({source_of(r, "person") for r in rows})
+    count: Counter = Counter()
+    for r in rows:
+        for name, test in INVARIANTS.items():
+            if test(r["strokes"][0]):
+                count[name, r["label"], source_of(r, "person")] += 1
+    strokes = Counter((r["label"], source_of(r, "person")) for r in rows)
+    lines = []
+    for label in sorted({r["label"] for r in rows}):
+        for name in INVARIANTS:
+            cells = [f"{count[name, label, s]}/{strokes[label, s]}" if strokes[label, s] else "" for s in sources]
+            total = sum(count[name, label, s] for s in sources)
+            lines.append([label, name, f"{total}/{sum(strokes[label, s] for s in sources)}", *cells])
+    return table(["label", "invariant", "all", *sources], lines)
+
+
+def verdict(e: dict) -> str:
+    """"another label, all 5" when none of the stroke's 5 nearest other-source strokes has its label and its own
+    label's nearest is farther than all 5; "another label" when the nearest has another label and is nearer than
+    its own label's nearest; else "own label"."""
+    (d1, label1, _), *_ = e["near"]
+    own = e["row"]["label"]
+    if all(lab != own for _, lab, _ in e["near"]) and e["own"] > e["near"][-1][0]:
+        return "another label, all 5"
+    return "another label" if label1 != own and d1 < e["own"] else "own label"
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("sets", type=Path, nargs="+")
+    ap.add_argument("--files", nargs="*", help="score these strokes (file names as the sets give them)")
+    ap.add_argument("--invariants", action="store_true", help="count each of `INVARIANTS` per source and label")
+    ap.add_argument("--control", type=int, default=0, metavar="N",
+                    help="also score every Nth stroke read right, as a control of how often a right one is flagged")
+    args = ap.parse_args()
+    rows: list[Row] = []
+    for path in args.sets:
+        rows += read_set(path)
+    rows, _ = scored_rows(rows)
+    group = held_back(rows) | held_back_new(rows)
+    rows = [r for r in rows if source_of(r, "person") not in group]  # never read, never a reference
+    if args.invariants:
+        print(invariant_table(rows) + "\n")
+    if args.files:
+        picked = [i for i, r in enumerate(rows) if r["file"] in set(args.files)]
+    else:
+        picked = []
+        for i, r in enumerate(rows):
+            stroke = r["strokes"][0]
+            times = [p[2] / 1000 for p in stroke] if all(len(p) > 2 and p[2] is not None for p in stroke) else None
+            if recognize_stroke([p[:2] for p in stroke], times).kind not in r["accepts"]:
+                picked.append(i)
+    found = evidence(rows, picked)
+    lines, flags = [], Counter()
+    for e in found:
+        labels5 = ", ".join(f"{lab} {d:.0f}" for d, lab, _ in e["near"])
+        flagged = verdict(e)
+        flags.update([flagged])
+        lines.append([e["source"], e["row"]["file"].rsplit("/", 1)[-1], e["row"]["label"], e["kind"] or "-",
+                      labels5, f"{e['own']:.0f}", flagged])
+    print(table(["source", "stroke", "label", "read as", "5 nearest of other sources ($1 distance)",
+                 "nearest of its own label", "verdict"], lines))
+    print(f"\nOf {len(found)} strokes read wrong: {flags['another label'] + flags['another label, all 5']} nearer to "
+          f"another label's strokes than to any of their own ({flags['another label, all 5']} with none of their 5 "
+          "nearest of their label).")
+    if args.control:
+        right = [i for i in range(len(rows)) if i not in set(picked)][::args.control]
+        control = Counter(verdict(e) for e in evidence(rows, right))
+        print(f"Control, every {args.control}th stroke read right ({len(right)}): "
+              f"{control['another label'] + control['another label, all 5']} nearer to another label "
+              f"({control['another label, all 5']} with none of their 5 nearest of their label).")
+
+
+if __name__ == "__main__":
+    main()

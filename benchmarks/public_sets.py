@@ -1,0 +1,280 @@
+"""Gathers every public stroke set the benchmarks score into JSON Lines under ``~/.cache/physink/``, each read from a
+public repository at the commit measured: one command regenerates them all.
+
+Usage: .venv/bin/python benchmarks/public_sets.py [--mirrors DIR] [--out DIR]
+
+Writes ``DIR/student-sets/itt.jsonl`` (the first 16 students, `student_sets.REPOS`) and, from `ENTRIES` (issue 25's
+second search, `benchmarks/SOURCES.md`), ``DIR/public-sets/<set>.jsonl`` (``itt-more.jsonl`` for the ITT
+students): more students of the ITT course (set
+``itt``), the people whom students of a course on input recognition (University of Florida, CIS6930 "Human-Centered
+Input Recognition Algorithms", set ``hcira``) recorded drawing the $1 gestures, and the Mixed Multistroke Gestures
+set (Anthony & Wobbrock 2012, set ``mmg``: 20 people, stylus or finger on a Tablet PC) as a student's repository
+holds it. None carries a licence that allows copying it, so nothing is committed; a repository is read from
+``DIR/<owner>+<name>/repo`` (as the fetch tool leaves them) or cloned bare into the cache (`student_sets.git_dir`).
+
+Each entry names the folder holding one person's recordings (``ONE``) or a folder of per-person subfolders
+(``PER_FOLDER``, the person being ``owner/subfolder``); only files directly in those folders are read, never deeper
+(several repositories keep the reserved $1 logs in subfolders beside their own). As in `student_sets`, a file dated
+before 2010 or whose points equal a stroke of the $1 logs' development people stops the script with its name; so
+does a label the spellings do not know, or a source of which more than `MAX_COPIES` gestures repeat strokes gathered
+for another source (fewer are skipped and named: a file copied by hand).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import struct
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+from pathlib import Path
+from typing import NamedTuple
+
+import student_sets
+from student_sets import _git, git_dir, reserved_points, times_ms
+
+CACHE = Path.home() / ".cache" / "physink"
+ONE, PER_FOLDER = "one", "per-folder"
+XML, ACCORD, JAVA = "xml", "accord", "java"
+
+
+class Entry(NamedTuple):
+    set_name: str
+    repo: str
+    commit: str
+    folder: str
+    device: str | None
+    """None: the file says (MMG's InputType)."""
+    layout: str
+    """`ONE` (the folder is one person, named by `person`) or `PER_FOLDER` (each subfolder is one person)."""
+    person: str = ""
+    only: tuple[str, ...] = ()
+    """`PER_FOLDER`: the subfolders read (all when empty)."""
+    form: str = XML
+    """`XML`: a gesture a file ($1 or $N form); `ACCORD`: a file a label of ``<Sequence>`` samples (the Accord.NET
+    gesture sample's form); `JAVA`: a folder a label of Java-serialised samples."""
+
+
+MAX_COPIES = 5
+"""A gesture file whose stroke was gathered already under another source is skipped (a file copied by hand); more
+than this many in one source stop the script: the source is a copy."""
+HCIRA_MOUSE = "mouse"
+ENTRIES: tuple[Entry, ...] = (
+    Entry("itt", "ITT-24/assignment-6-gesture-recognition-EmmaSophieReichert",
+          "32d2840d2a55803e49d522f51e260a494c71589e", "dataset/my-dataset", "mouse", ONE, "EmmaSophieReichert"),
+    Entry("itt", "ITT23/assignment-06-gesture-recognition-sina-sch", "8c0dbdb9e1c804a414cfff602c336af6f431ee4e",
+          "dataset", "mouse", ONE, "sina-sch"),
+    Entry("hcira", "Nikhil-Kumar-Singh0612/HCIRA", "767a65a6bc2a688c16ff41b43fa916f3794ff65f",
+          "$1 Recognizer/data_set", HCIRA_MOUSE, PER_FOLDER),
+    Entry("hcira", "pixelfac/hcira-project-23", "80d4cc73e4b3aff82fc72040e61e6d61ebab9e2f", "src/dataset",
+          HCIRA_MOUSE, PER_FOLDER),
+    Entry("hcira", "sinarest1608/HCIRA-HK", "d91ccc6dc416467ccde769a36e91d84624afa9c2", "Project1/usersamples",
+          HCIRA_MOUSE, PER_FOLDER, only=tuple(f"Subject{k}" for k in range(1, 7))),
+    Entry("hcira", "jd4386/HCIRA-Project", "ff559d7cba27a72d5019ed7169ad10e3e8b26d42", "Part 4/custom_xml_logs",
+          HCIRA_MOUSE, PER_FOLDER),
+    Entry("hcira", "hat359/HCIRA", "69a6542ac5f0fac384587158b5ecf4c05c59194e", "xml_collected_logs",
+          "mouse or touch screen", PER_FOLDER),
+    Entry("hcira", "jonathanzhang53/gesture-recognizer", "8f3085122e4a72bce618afc9d97faf31ee81fc7c", "user_gestures",
+          HCIRA_MOUSE, PER_FOLDER),
+    Entry("hcira", "klarubbio/hcira_p1", "e8eb332ae77da0ddd630fa2c87d3423bd2f732ef", "xml", HCIRA_MOUSE, PER_FOLDER),
+    *(Entry("hcira", "shriyansnidhish/Dollar-one-recognizer", "35d6736f40cc036b53ce50172c58a2c86ee3495d",
+            f"Part-2/Dataset/{folder}", device, PER_FOLDER)
+      for folder, device in (("MousePad", "touchpad"), ("TouchScreen_with_stylus", "stylus on a touch screen"),
+                             ("TouchScreen_without_stylus", "finger on a touch screen"))),
+    Entry("mmg", "pixelfac/hcira-project-23", "80d4cc73e4b3aff82fc72040e61e6d61ebab9e2f", "src/mmg", None,
+          PER_FOLDER),
+    *(Entry("ahmadosama", "AhmadOsama4/Mouse-Gesture-Recognition-Using-HMM",
+            "4285ca64256da189a171135fd84598f4da4badd6", folder, "mouse", ONE, "AhmadOsama4", form=ACCORD)
+      for folder in ("TrainingData", "TestData")),
+    Entry("gtiwari", "gtiwari333/mouse-gesture-recognition-java-hidden-markov-model",
+          "06d93512747fca7352b4d7e1c5417f999767ad8f", "trainData", "mouse", ONE, "gtiwari333", form=JAVA),
+)
+"""Every set of the second search (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and how."""
+
+SPELLINGS = {**student_sets.LABEL_SPELLINGS, "pig_tail": "pigtail", "zig_zag": "zigzag",
+             "left_square_bracket": "left_sq_bracket", "right_square_bracket": "right_sq_bracket"}
+DOLLAR_LABELS = frozenset({"arrow", "caret", "check", "circle", "delete_mark", "left_curly_brace", "left_sq_bracket",
+                           "pigtail", "question_mark", "rectangle", "right_curly_brace", "right_sq_bracket", "star",
+                           "triangle", "v", "x", "zigzag"})
+
+
+def dollar_label(file_name: str) -> str:
+    """``User07-left square bracket-3.xml`` -> ``left_sq_bracket``: the file's label in the $1 set's spelling.
+
+    Raises:
+        ValueError: a label none of the $1 set's (nor the zigzag) once spellings are unified.
+    """
+    stem = re.sub(r"^user\d+-", "", Path(file_name).stem.lower())
+    stem = re.sub(r"[-_~ ]?\d+$", "", stem)
+    label = re.sub(r"[- ]+", "_", stem)
+    label = SPELLINGS.get(label, label)
+    if label not in DOLLAR_LABELS:
+        raise ValueError(f"{file_name}: label {label!r} is not one of the $1 set's")
+    return label
+
+
+def strokes_of(where: str, data: bytes) -> tuple[list[list[list[float | None]]], ET.Element]:
+    """The pen-downs of one XML gesture file (``<Stroke>`` elements, else all its points as one), points [x, y, t]
+    with t in ms from the stroke's first point where the file's clock can time it, and the root element."""
+    try:
+        root = ET.fromstring(data)
+    except ET.ParseError as exc:
+        raise ValueError(f"{where}: {exc}") from None
+    pen_downs = root.findall("Stroke") or [root]
+    out = []
+    for pen in pen_downs:
+        pts = list(pen.iter("Point"))
+        ts = times_ms([float(p.get("T", "nan")) if p.get("T") is not None else None for p in pts])
+        out.append([[float(p.get("X", "nan")), float(p.get("Y", "nan")), t] for p, t in zip(pts, ts, strict=True)])
+    return out, root
+
+
+def _files(gdir: Path, commit: str, folder: str, ext: str = ".xml") -> list[str]:
+    """The files ending in ``ext`` directly in ``folder`` at ``commit`` (not in its subfolders), sorted."""
+    listing = _git(gdir, "ls-tree", "--name-only", commit, "--", folder.rstrip("/") + "/").decode().splitlines()
+    return sorted(n for n in listing if n.endswith(ext))
+
+
+def _subfolders(gdir: Path, commit: str, folder: str) -> list[str]:
+    listing = _git(gdir, "ls-tree", "-d", "--name-only", commit, "--", folder.rstrip("/") + "/").decode()
+    return sorted(listing.splitlines())
+
+
+def java_stroke(where: str, data: bytes) -> list[list[float | None]]:
+    """The stroke of one Java-serialised ``RawFeature`` (a ``double[]`` of times in ms, a ``java.awt.Point[]``)."""
+    try:
+        i = data.index(b"ur\x00\x02[D")
+        i = data.index(b"xp", i) + 2
+        n = int.from_bytes(data[i:i + 4], "big")
+        times = struct.unpack(f">{n}d", data[i + 4:i + 4 + 8 * n])
+        j = data.index(b"xp", data.index(b"ur\x00\x11[Ljava.awt.Point;", i)) + 2
+        m, j = int.from_bytes(data[j:j + 4], "big"), j + 4
+        xy = []
+        for _ in range(m):
+            if data[j:j + 2] == b"sr":  # the first Point: its class description, ended by TC_ENDBLOCKDATA, TC_NULL
+                j = data.index(b"yxp", j) + 3
+            elif data[j:j + 3] == b"sq\x00":  # a Point by reference to that description
+                j += 6
+            else:
+                raise ValueError(f"byte {j}: not a java.awt.Point")
+            xy.append(struct.unpack(">ii", data[j:j + 8]))
+            j += 8
+    except (ValueError, struct.error) as exc:
+        raise ValueError(f"{where}: not a serialised RawFeature ({exc})") from None
+    if m != n:
+        raise ValueError(f"{where}: {n} times for {m} points")
+    ts = times_ms(list(times))
+    return [[float(x), float(y), t] for (x, y), t in zip(xy, ts, strict=True)]
+
+
+def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, str, list, str]]:
+    """(where, person, device, label, pen-downs, date) of every gesture ``entry`` names, in order."""
+    owner, c = entry.repo.split("/")[0], entry.commit
+    at = f"{entry.repo}@{c[:7]}:"
+    if entry.form == ACCORD:  # a file per label holding every sample: <Sequence> of <Point><X/><Y/></Point>
+        for name in _files(gdir, c, entry.folder):
+            try:
+                root = ET.fromstring(_git(gdir, "show", f"{c}:{name}"))
+            except ET.ParseError as exc:
+                raise ValueError(f"{at}{name}: {exc}") from None
+            for k, seq in enumerate(root.iter("Sequence"), 1):
+                pts = [[float(p.findtext("X", "nan")), float(p.findtext("Y", "nan")), None] for p in seq.iter("Point")]
+                yield f"{at}{name}#{k}", entry.person, entry.device, Path(name).stem, [pts], ""
+        return
+    if entry.form == JAVA:  # a folder per label, a serialised RawFeature per sample
+        for sub in _subfolders(gdir, c, entry.folder):
+            for name in _files(gdir, c, sub, ".TRAINDATA"):
+                stroke = java_stroke(at + name, _git(gdir, "show", f"{c}:{name}"))
+                yield at + name, entry.person, entry.device, Path(sub).name, [stroke], ""
+        return
+    if entry.layout == ONE:
+        people = [(entry.person, entry.folder)]
+    else:
+        subs = _subfolders(gdir, c, entry.folder)
+        people = [(f"{owner}/{Path(s).name}", s) for s in subs if not entry.only or Path(s).name in entry.only]
+    for person, folder in people:
+        for name in _files(gdir, c, folder):
+            strokes, root = strokes_of(at + name, _git(gdir, "show", f"{c}:{name}"))
+            if entry.set_name == "mmg":
+                label = root.get("Name", "").split("~")[0].replace("-", "_").replace(" ", "_")
+                yield at + name, f"{root.get('Subject')}", root.get("InputType"), label, strokes, root.get("Date", "")
+            else:
+                yield at + name, person, entry.device, dollar_label(name), strokes, root.get("Date", "")
+
+
+def entry_rows(entry: Entry, mirrors: Path | None, known: set, seen: dict, skipped: list[str]) -> list[dict]:
+    """The rows of one entry. ``known``: the $1 development people's strokes (refused); ``seen``: stroke -> source
+    of every stroke gathered so far (a stroke seen under another source is refused)."""
+    out: list[dict] = []
+    copies: dict[str, int] = {}
+    for where, subject, device, label, strokes, date in _gestures(entry, git_dir(entry.repo, mirrors)):
+        year = re.search(r"(19|20)\d\d", date)
+        if year and int(year.group(0)) < 2010:
+            raise ValueError(f"{where}: dated {date!r}, as the original $1 logs: reserved")
+        source = f"{entry.set_name}:{subject}"
+        keys = [tuple((p[0], p[1]) for p in stroke[:12]) for stroke in strokes]
+        if any(key in known for key in keys):
+            raise ValueError(f"{where}: its points are a stroke of the $1 logs: reserved")
+        if sum(len(s) for s in strokes) < 2:
+            skipped.append(f"{where} (fewer than two points)")
+            continue
+        first = next((seen[k] for k, s in zip(keys, strokes, strict=True) if len(s) >= 8 and seen.get(k, source)
+                      != source), None)
+        if first is not None:
+            copies[source] = copies.get(source, 0) + 1
+            if copies[source] > MAX_COPIES:
+                raise ValueError(f"{where}: more than {MAX_COPIES} gestures of {source} are strokes of {first}: "
+                                 "a copy of another source")
+            skipped.append(f"{where} (a stroke of {first} again)")
+            continue
+        for k, s in zip(keys, strokes, strict=True):
+            if len(s) >= 8:
+                seen.setdefault(k, source)
+        out.append({"source": entry.set_name, "subject": subject, "device": device, "label": label, "file": where,
+                    "strokes": strokes})
+    return out
+
+
+def gather(mirrors: Path | None, first: list[dict], skipped: list[str]) -> dict[str, list[dict]]:
+    """set name -> rows, for every entry of `ENTRIES` in order (the strokes of ``first``, the first 16 students,
+    count as seen)."""
+    known = reserved_points()
+    seen: dict = {}
+    for row in first:
+        for stroke in row["strokes"]:
+            seen.setdefault(tuple((p[0], p[1]) for p in stroke[:12]), f"itt:{row['subject']}")
+    sets: dict[str, list[dict]] = {}
+    for entry in ENTRIES:
+        sets.setdefault(entry.set_name, []).extend(entry_rows(entry, mirrors, known, seen, skipped))
+    return sets
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--mirrors", type=Path, default=Path("/work/.mirror"),
+                    help="folder of fetched repositories (<owner>+<name>/repo); cloned from GitHub when absent")
+    ap.add_argument("--out", type=Path, default=CACHE)
+    args = ap.parse_args()
+    skipped: list[str] = []
+    try:
+        first = student_sets.rows(args.mirrors, skipped)
+        sets = gather(args.mirrors, first, skipped)
+    except (ValueError, subprocess.CalledProcessError) as exc:
+        raise SystemExit(f"public_sets: {exc}") from None
+    outputs = {args.out / "student-sets" / "itt.jsonl": first}
+    outputs.update({args.out / "public-sets" / f"{'itt-more' if name == 'itt' else name}.jsonl": rows
+                    for name, rows in sets.items()})
+    for path, rows in outputs.items():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text("".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows), encoding="utf-8")
+        people = {r["subject"] for r in rows}
+        print(f"{len(rows)} gestures of {len(people)} people -> {path}")
+    for where in sorted(set(skipped)):
+        print(f"skipped: {where}")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
