@@ -201,9 +201,22 @@ def test_a_killed_simulate_leaves_the_previous_complete_result(tmp_path, sig) ->
     while not _children(child.pid):  # its worker processes: the search has begun
         assert child.poll() is None and time.monotonic() < deadline, "the search never started"
         time.sleep(0.01)
+    workers = _children(child.pid)
     child.send_signal(sig)
     child.wait(timeout=GUARD)
     assert {p.name: p.read_bytes() for p in out.iterdir() if not p.name.startswith(".")} == before
+    while running := [pid for pid in workers if _alive(pid)]:  # no worker is left behind, waiting forever
+        assert time.monotonic() < deadline + GUARD, f"workers {running} outlived the killed simulate"
+        time.sleep(0.05)
+
+
+def _alive(pid: int) -> bool:
+    """Whether ``pid`` is a process that has not exited (a zombie has; an orphan's parent reaps it, or not)."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except (FileNotFoundError, ProcessLookupError):
+        return False
+    return stat.rsplit(")", 1)[1].split()[0] != "Z"
 
 
 def _server(answer: bytes | None) -> Iterator[int]:

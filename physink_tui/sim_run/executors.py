@@ -11,7 +11,10 @@ An executor that can send a value to its workers once rather than with every ite
 from __future__ import annotations
 
 import multiprocessing
+import os
 import signal
+import threading
+import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from typing import Any, Protocol, runtime_checkable
@@ -86,13 +89,27 @@ def _context() -> multiprocessing.context.BaseContext:
     return multiprocessing.get_context("fork" if FORK else "spawn")
 
 
-def _ignore_interrupts() -> None:
-    """In a worker: Ctrl-C is the parent's to handle (it writes the best so far), not a traceback per worker."""
+ORPHAN_POLL_S = 0.5
+"""How often a worker looks whether the process that started it is still there."""
+
+
+def _exit_when_orphaned(parent: int) -> None:
+    while os.getppid() == parent:
+        time.sleep(ORPHAN_POLL_S)
+    os._exit(1)  # no cleanup to run: a worker holds nothing of the user's
+
+
+def _start_worker() -> None:
+    """In a worker: Ctrl-C is the parent's to handle (it writes the best so far), not a traceback per worker; and a
+    worker whose parent was killed (SIGKILL, SIGTERM) exits instead of waiting forever on a queue whose writing end
+    it holds itself (forked workers inherit it, so it never reads end-of-file)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    threading.Thread(target=_exit_when_orphaned, args=(os.getppid(),), name="orphan-watch", daemon=True).start()
 
 
 class ProcessExecutor:
-    """``workers`` local processes (started on first use; they ignore Ctrl-C, which the parent handles)."""
+    """``workers`` local processes (started on first use; they ignore Ctrl-C, which the parent handles, and exit when
+    the parent is gone)."""
 
     def __init__(self, workers: int) -> None:
         if workers < 1:
@@ -106,7 +123,7 @@ class ProcessExecutor:
             self.close()
         if self._pool is None:
             self._version = _shared_version
-            self._pool = ProcessPoolExecutor(self.workers, mp_context=_context(), initializer=_ignore_interrupts)
+            self._pool = ProcessPoolExecutor(self.workers, mp_context=_context(), initializer=_start_worker)
         return list(self._pool.map(fn, items))
 
     def close(self, *, cancel: bool = False) -> None:
