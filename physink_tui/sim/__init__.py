@@ -56,9 +56,9 @@
   together (the grid's velocity steps, 48 rollouts) — the aims and the scan skipped when the family's best already
   reproduces the legs they address (`chain.aimed_legs`) —, in scenes with springs the best one with its springs stiffer
   and longer (9 rollouts), then CMA-ES (pycma, seeded) on the parameters of the first leg the best so far does not
-  reproduce (a later leg's first run: those its own events name), against that leg's score; restarts with doubled steps
-  when a run stalls; a leg given up past step 4, another round over the legs while budget is left; what it asked for
-  last is its `Phase`
+  reproduce (a later leg's first run, on machines with springs: those its own events name), against that leg's score;
+  restarts with doubled steps when a run stalls; a leg given up past step 4, another round over the legs while budget is
+  left; what it asked for last is its `Phase`
 - `search.py`: `Search(scene, timeline, canvas, strategy=, seed=, budget=)`: `next_generation()` / `tell(scores)` /
   `done` / `best` / `found_at` / `furthest` (most leading legs reproduced, `progress`); generation 0 is the seed;
   stops at the first qualitatively equivalent candidate; deterministic for a seed and budget whatever evaluates the

@@ -250,7 +250,7 @@ class LegByLeg:
     def _components(self, leg: Leg) -> frozenset[str]:
         """What a run on ``leg`` adjusts: at first, after a reproduced leg, the components the leg's own events name
         (`Leg.own`) when the machine has springs; on a restart, or without springs, every component up to its end
-        (`Leg.components`). On the egg cracker (no springs) the narrowed run crept for ~100 rollouts before a restart."""
+        (`Leg.components`). On the egg cracker (no springs) the narrowed run crept ~100 rollouts before a restart."""
         if (self.restarts == 0 and self.leg > 0 and leg.own and self.centre.springs
                 and coordinates(self.centre, ("vx", "vy"), leg.own)):
             return leg.own
