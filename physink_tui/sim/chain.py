@@ -8,7 +8,7 @@ is set by the first flight (where along the first surface it arrives, and in wha
 first body touched (`clearance.Obstacle`) and on which side, the rebound there (the plain bounce: the normal speed times
 the contact's restitution, the larger of the two bodies', the tangential speed kept, or two thirds of it for a round
 body that grips, which starts it rolling; `rebound` calibrated against the physics world by benchmarks/bench_bounce.py
-is there too, unused: `CALIBRATED`) — and scored by how many of the demonstrated contacts with fixed bodies it makes in
+is there too, for the benchmark) — and scored by how many of the demonstrated contacts with fixed bodies it makes in
 order (`demonstrated_chain`). Of the cells that make the most (at least two), the deepest of each connected region
 (`clearance.clear_regions`) is launched, for the rollouts to correct: the model ignores spin and what rolling does,
 which the aim run in (place, flight time) then corrects.
@@ -49,22 +49,16 @@ SAMPLES = 150
 GRIP = 2 / 3
 """The tangential speed a round body keeps in a bounce on a surface that grips (a disc starting to roll)."""
 PLAIN_GRIP = 1.0e9
-"""The friction `rebound` is given for the plain bounce on a surface that grips (`CALIBRATED`): enough to hold any
-round body to `GRIP`."""
+"""The friction `rebound` is given for the plain bounce on a surface that grips: enough to hold any round body to
+`GRIP`. The aims bounce this way; `rebound` with `BOUNCE_LOSS` and the mean friction (calibrated against the world by
+benchmarks/bench_bounce.py) was tried and dropped: within 0.2 degrees of the world on boxes, but it lost a held-back
+constructed case and found none more (docs/BENCHMARKS.md)."""
 BOUNCE_LOSS = {"box": 22.5, "freeform": 35.5}
 """Normal speed (units/s) a bounce on a level top loses in this world beyond the restitution, by the surface's
 material class, measured (benchmarks/bench_bounce.py, 10-80 degrees, 300-3200 units/s: 21-22.6 on a box, about
 three steps of gravity, 33-36 on a freeform polygon, constant in speed and angle); none on an underside (measured 0),
 so it is scaled by the share of gravity pressing the body into the surface. Beside it the ratio out / in is the
 restitution (1.0 for a box): the bounce modelled with restitution 1.0 alone came out 7 % too fast at 300 units/s."""
-CALIBRATED = False
-"""Whether the chained aims bounce through `rebound` calibrated against the world (`BOUNCE_LOSS`, Coulomb friction),
-else through the plain bounce: the restitution alone, a round body on a surface that grips keeping `GRIP` of its
-tangential speed, any other all of it. Measured (docs/BENCHMARKS.md, third and fourth passes): the calibrated bounce
-comes out within 0.2 degrees of the world on boxes (90th percentile; the plain one 4.5) and finds figure 2-15's two
-first-drawing journals sooner (30 rollouts against 83-131, found either way), but loses a held-back constructed case
-(possible-7014, 196 -> 195 of 200), needs more rollouts on five more and on the redrawn hits_b_once (30 -> 53), and
-finds no case the plain bounce does not: so the plain bounce aims."""
 REGIONS = 2
 """Regions of the most contacts made tried per face, the largest first."""
 MOST = 6
@@ -195,12 +189,8 @@ def _made(body: Body, aims: Sequence[aiming.Aim], chain: Sequence[tuple[str, str
         surface = material_class(other.shape)
         mean = (friction + MATERIALS[surface].friction) / 2
         rolls = body.shape == "circle"
-        if CALIBRATED:
-            v_out = rebound(v_in[live], normal[live], restitution, mean, rolls=rolls,
-                            loss=BOUNCE_LOSS.get(surface, BOUNCE_LOSS["box"]))
-        else:  # the plain bounce: friction without bound holds a round body to GRIP, none lets it keep everything
-            v_out = rebound(v_in[live], normal[live], restitution, PLAIN_GRIP if rolls and mean > 0 else 0.0,
-                            rolls=rolls)
+        # the plain bounce: friction without bound holds a round body to GRIP, none lets it keep everything
+        v_out = rebound(v_in[live], normal[live], restitution, PLAIN_GRIP if rolls and mean > 0 else 0.0, rolls=rolls)
         hit, where, v_hit, n_hit = _first_touch(position[live], v_out, reach, scene_obstacles, touched)
         want_body, want_side = chain[k]
         ok = np.array([h == want_body and s == want_side for h, s in hit], dtype=bool)
