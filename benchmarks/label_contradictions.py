@@ -14,6 +14,11 @@ references. Without
 ``--files`` every stroke the rules-and-ranker recogniser (`recognize_stroke`) reads wrong is listed; a stroke is
 *contradicted* when its nearest other-source stroke carries another label, and that label's class accepts the kind
 the recogniser gave (the geometry agrees with a reading the label table calls wrong).
+
+`CONTRADICTIONS` are the contradictions proved from geometry alone (two attempts joined after a pause, a question mark
+drawn as a zigzag, an open mark that loops, an x that does not cross itself), each with its threshold chosen on the
+sources it does not convict (`tests/test_label_contradictions.py`); `bench_generalisation.py --contradictions` counts
+the strokes they convict per source, beside the raw figure.
 """
 
 from __future__ import annotations
