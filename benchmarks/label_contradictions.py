@@ -16,9 +16,9 @@ references. Without
 the recogniser gave (the geometry agrees with a reading the label table calls wrong).
 
 `CONTRADICTIONS` are the contradictions proved from geometry alone (two attempts joined after a pause, a question mark
-drawn as a zigzag, an open mark that loops, an x that does not cross itself), each with its threshold chosen on the
-sources it does not convict (`tests/test_label_contradictions.py`); `bench_generalisation.py --contradictions` counts
-the strokes they convict per source, beside the raw figure.
+drawn as a zigzag, an open mark that loops, an x that does not cross itself, a curly brace without a point), each
+with its threshold chosen on the sources it does not convict (`tests/test_label_contradictions.py`);
+`bench_generalisation.py --contradictions` counts the strokes they convict per source, beside the raw figure.
 """
 
 from __future__ import annotations
@@ -125,6 +125,32 @@ def joined_after_a_pause(stroke: Sequence[Sequence[float | None]]) -> bool:
     return bool(np.any((steps >= JUMP * diag) & (np.diff(t) >= PAUSE_MS))) if diag > 0 else False
 
 
+BRACES = frozenset({"left_curly_brace", "right_curly_brace"})
+POINT_TURN = 20.0
+"""A curly brace turns at its point, in the middle of its path: every other design source's brace turns at least 34
+degrees within some `SPAN` of its path in its middle 40 % (`middle_turn`); one that turns less than this has no point
+(a square bracket or an arc drawn under the label)."""
+SPAN = 0.04
+
+
+def middle_turn(points: Sequence[Sequence[float]]) -> float:
+    """The most the stroke turns (degrees, between the chords before and after a point) within `SPAN` of its path
+    either side, over the middle 40 % of its path (resampled to 128 points: a mouse's stair-steps average out)."""
+    n = 128
+    pts = np.asarray([q[:2] for q in points], dtype=float)
+    at = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    if at[-1] == 0.0:
+        return 0.0
+    s = np.linspace(0.0, at[-1], n)
+    p = np.column_stack([np.interp(s, at, pts[:, 0]), np.interp(s, at, pts[:, 1])])
+    k = max(2, round(SPAN * (n - 1)))
+    before, after = p[k:n - k] - p[:n - 2 * k], p[2 * k:] - p[k:n - k]
+    turn = np.degrees(np.abs(np.arctan2(before[:, 0] * after[:, 1] - before[:, 1] * after[:, 0],
+                                        (before * after).sum(axis=1))))
+    where = np.arange(k, n - k) / (n - 1)
+    return float(turn[(where >= 0.3) & (where <= 0.7)].max())
+
+
 def _loops(points: Sequence[Sequence[float]]) -> bool:
     return loop_share(points) >= LOOP
 
@@ -134,6 +160,7 @@ CONTRADICTIONS: tuple[tuple[str, frozenset[str] | None, Callable[[Sequence[Seque
     ("a question mark drawn as a zigzag", frozenset({"question_mark"}), zigzag),
     ("an open mark that loops", OPEN_MARKS, _loops),
     ("an x that does not cross itself", frozenset({"x"}), lambda p: not crosses_itself(p)),
+    ("a curly brace without a point", BRACES, lambda p: middle_turn(p) < POINT_TURN),
 )
 """The contradictions between a stroke's label and its geometry that the tests prove (name, the labels it applies to
 or None for every label, the test on the stroke's points [x, y, t]). Each convicts (nearly) no stroke of its labels

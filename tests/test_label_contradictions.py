@@ -27,14 +27,17 @@ from shared_data import shared_path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_generalisation import held_back, held_back_new, scored_rows
 from label_contradictions import (
+    BRACES,
     CONTRADICTIONS,
     LOOP,
     OPEN_MARKS,
+    POINT_TURN,
     contradiction,
     crosses_itself,
     distances,
     joined_after_a_pause,
     loop_share,
+    middle_turn,
     template,
     zigzag,
 )
@@ -197,6 +200,20 @@ def test_an_x_that_does_not_cross_itself_is_one_of_the_other_sources_500() -> No
     assert len(xs) >= 490 and sorted(flat) == ["dollar1:s03", "hcira:pixelfac/user06"]
 
 
+def test_a_curly_brace_without_a_point_is_klarubbio_s04s_square_bracket() -> None:
+    """A brace turns at its point, half way along; klarubbio/s04 labelled left curly brace a square bracket (the two
+    labels swapped: its left square brackets are braces). No other design source's brace turns less than 34
+    degrees in its middle (`POINT_TURN` 20 was set on them)."""
+    rows = _design()
+    braces = [r for r in rows if r["label"] in BRACES]
+    flat = [(source_of(r, "person"), r["label"]) for r in braces if middle_turn(r["strokes"][0]) < POINT_TURN]
+    assert len(braces) >= 1000 and flat == [("hcira:klarubbio/s04", "left_curly_brace")]
+    others = [middle_turn(r["strokes"][0]) for r in braces if source_of(r, "person") != "hcira:klarubbio/s04"]
+    assert min(others) > 30.0
+    assert middle_turn(_stroke([(0, 0), (40, 0), (40, 200), (0, 200)])) < POINT_TURN  # a square bracket
+    assert middle_turn(_stroke([(40, 0), (20, 20), (20, 80), (0, 100), (20, 120), (20, 180), (40, 200)])) > 3 * POINT_TURN
+
+
 def test_the_contradictions_leave_the_strokes_scored_and_the_table_unbent() -> None:
     """Each convicted stroke keeps its label's kinds (it is scored as wrong when read as its geometry), and the
     contradictions convict no more than the named sources' strokes and the 3 others above."""
@@ -208,7 +225,8 @@ def test_the_contradictions_leave_the_strokes_scored_and_the_table_unbent() -> N
             convicted.setdefault(found, []).append(source_of(r, "person"))
     assert set(convicted) <= {name for name, _, _ in CONTRADICTIONS}
     assert sorted(set(convicted["a question mark drawn as a zigzag"])) == ["itt:lvht1203"]
-    named = {"itt:lvht1203", "itt:Coldjack007", "hcira:jonathanzhang53/s02", "hcira:pixelfac/user06"}
+    named = {"itt:lvht1203", "itt:Coldjack007", "hcira:jonathanzhang53/s02", "hcira:pixelfac/user06",
+             "hcira:klarubbio/s04"}
     stray = [s for found in convicted.values() for s in found
              if s not in named and not s.startswith("hcira:shriyansnidhish/")]
     assert sorted(stray) == ["dollar1:s03", "hcira:jd4386/User04", "hcira:sinarest1608/Subject2"]
