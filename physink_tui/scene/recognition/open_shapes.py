@@ -42,6 +42,10 @@ BRACE_TIP = 0.5
 `BRACE_OFFSET` of the shorter's length from the first's line, joined by two sides out and back each under
 `BRACE_TIP` of the shorter. Drawn with a mouse a brace is straight runs and cusps; such a stroke is a curve (an
 arrow's head, a zigzag, a bracket turn away at their corners)."""
+SHORT_BEND = 0.25
+"""A one-corner stroke turning one way bends within this share of its path (`_short_bend`): a tick's short first arm
+makes its corner look round against that arm (ahmadosama's ticks, klarubbio/s06's checks, 0.10-0.29 of the path);
+a question mark's curl read as one corner bends over 0.44 of it."""
 SMOOTH = 0.55
 """A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
 speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
@@ -90,7 +94,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     length = sg.path_length(work)
     th = sg.turning(work)
     total_turn = float(th.sum())
-    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    corners = sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), length)
     straight_runs = [straight(work[a:b + 1], noise) or sg.path_length(work[a:b + 1]) < 0.06 * length
                      for a, b in itertools.pairwise(corners)]
     coarse = sg.coarse_turning(work, noise)
@@ -103,8 +107,9 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-    sharp = (max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
-             or _rounded_bracket(work, corners, straight_runs, noise))
+    roundness = sf.corner_roundness(work, corners)
+    sharp = (max(roundness, default=0.0) <= round_corner or _rounded_bracket(work, corners, straight_runs, noise)
+             or _short_bend(work, corners, roundness, noise))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
             and not _brace_tip(work, corners) and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
@@ -130,14 +135,23 @@ def _rounded_bracket(work: np.ndarray, corners: list[int], straight_runs: list[b
     return len(corners) == 4 and all(straight_runs) and len(sf.lobes(work, noise=noise)) == 1
 
 
+def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], noise: float) -> bool:
+    """Two straight sides turning one way at one corner (a tick, a check, a v) whose bend takes under `SHORT_BEND`
+    of the stroke: rounded against a short arm as a question mark's curl is, but short against the whole stroke."""
+    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) != 1:
+        return False
+    length = sg.path_length(work)
+    shorter = min(sg.path_length(work[: corners[1] + 1]), sg.path_length(work[corners[1]:]))
+    return roundness[0] * shorter < SHORT_BEND * length
+
+
 def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
     """Whether the stroke runs on in line through a short pointed excursion of two sides (`BRACE_TIP`)."""
     sides = np.diff(work[corners], axis=0)
     lengths = np.hypot(*sides.T)
-    for i in range(len(sides) - 3):
-        j = i + 3
+    for i, j in ((i, i + k) for k in (3, 4) for i in range(len(sides) - k)):
         shorter = min(lengths[i], lengths[j])
-        if shorter == 0.0 or max(lengths[i + 1], lengths[i + 2]) >= BRACE_TIP * shorter:
+        if shorter == 0.0 or max(lengths[i + 1:j]) >= BRACE_TIP * shorter:
             continue
         u, v = sides[i] / lengths[i], sides[j] / lengths[j]
         rel = work[corners[j]] - work[corners[i + 1]]
