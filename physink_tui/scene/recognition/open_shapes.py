@@ -42,6 +42,9 @@ BRACE_TIP = 0.5
 `BRACE_OFFSET` of the shorter's length from the first's line, joined by two sides out and back each under
 `BRACE_TIP` of the shorter. Drawn with a mouse a brace is straight runs and cusps; such a stroke is a curve (an
 arrow's head, a zigzag, a bracket turn away at their corners)."""
+ARMS_IN_LINE = 45.0
+"""A one-corner stroke turning both ways whose arms' chords turn less than this (degrees) is a brace: its tip sticks
+out of a stroke that runs on in line (`_tip_in_line`)."""
 SHORT_BEND = 0.25
 """A one-corner stroke turning one way bends within this share of its path (`_short_bend`): a tick's short first arm
 makes its corner look round against that arm (ahmadosama's ticks, klarubbio/s06's checks, 0.10-0.29 of the path);
@@ -111,7 +114,8 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     sharp = (max(roundness, default=0.0) <= round_corner or _rounded_bracket(work, corners, straight_runs, noise)
              or _short_bend(work, corners, roundness, noise))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
-            and not _brace_tip(work, corners) and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
+            and not _brace_tip(work, corners) and not _tip_in_line(work, corners, noise)
+            and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
@@ -143,6 +147,17 @@ def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], no
     length = sg.path_length(work)
     shorter = min(sg.path_length(work[: corners[1] + 1]), sg.path_length(work[corners[1]:]))
     return roundness[0] * shorter < SHORT_BEND * length
+
+
+def _tip_in_line(work: np.ndarray, corners: list[int], noise: float) -> bool:
+    """Whether the stroke's one corner joins arms running on nearly in line (their chords within `ARMS_IN_LINE`
+    degrees) in a stroke that turns both ways: a brace's tip between curled ends, not a v's, check's or tick's point
+    (their arms meet at 55 degrees or more; s04's bowed checks are the closest)."""
+    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) < 2:
+        return False
+    u, v = work[corners[1]] - work[0], work[-1] - work[corners[1]]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    return norms > 0 and float(u @ v) > math.cos(math.radians(ARMS_IN_LINE)) * norms
 
 
 def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
