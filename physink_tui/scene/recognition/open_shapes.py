@@ -39,9 +39,9 @@ BRACE_HEADING_DEG = 30.0
 BRACE_OFFSET = 0.2
 BRACE_TIP = 0.5
 """A brace's tip: two sides heading the same way (within `BRACE_HEADING_DEG`), the second starting within
-`BRACE_OFFSET` of the shorter's length from the first's line, joined by two sides out and back each under
-`BRACE_TIP` of the shorter. Drawn with a mouse a brace is straight runs and cusps; such a stroke is a curve (an
-arrow's head, a zigzag, a bracket turn away at their corners)."""
+`BRACE_OFFSET` of the shorter's length from the first's line, joined by one to three sides (out and back, or a jog where
+the tip's point was not found as a corner) each under `BRACE_TIP` of the shorter. Drawn with a mouse a brace is straight
+runs and cusps; such a stroke is a curve (an arrow's head, a zigzag, a bracket turn away at their corners)."""
 ARMS_IN_LINE = 45.0
 """A one-corner stroke turning both ways whose arms' chords turn less than this (degrees) is a brace: its tip sticks
 out of a stroke that runs on in line (`_tip_in_line`)."""
@@ -161,10 +161,10 @@ def _tip_in_line(work: np.ndarray, corners: list[int], noise: float) -> bool:
 
 
 def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
-    """Whether the stroke runs on in line through a short pointed excursion of two sides (`BRACE_TIP`)."""
+    """Whether the stroke runs on in line through a short pointed excursion of one to three sides (`BRACE_TIP`)."""
     sides = np.diff(work[corners], axis=0)
     lengths = np.hypot(*sides.T)
-    for i, j in ((i, i + k) for k in (3, 4) for i in range(len(sides) - k)):
+    for i, j in ((i, i + k) for k in (2, 3, 4) for i in range(len(sides) - k)):
         shorter = min(lengths[i], lengths[j])
         if shorter == 0.0 or max(lengths[i + 1:j]) >= BRACE_TIP * shorter:
             continue
