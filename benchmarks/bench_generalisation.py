@@ -2,7 +2,7 @@
 label, with the label -> kind table fixed before scoring (benchmarks/label_kinds.tsv).
 
 Usage: .venv/bin/python benchmarks/bench_generalisation.py SET [SET ...] [--by person|device|set] [--quick]
-       [--defaults] [--heldback]
+       [--defaults] [--heldback] [--rules]
 
 Each SET is a .jsonl file or a folder in a form `stroke_sets` reads (the $1 logs, the MMG set, the Drawn Shapes set);
 the sets stay where they are. A source is a person of a set (``--by person``, the default; a set that names no person is
@@ -99,12 +99,14 @@ def group_of(source: str, first_group: set[str]) -> str:
     return "new held back" if is_held_back_new(source) else "new design"
 
 
-def right_answers(rows: list[Row], weights: Weights) -> np.ndarray:
+def right_answers(rows: list[Row], weights: Weights, learned: bool = True) -> np.ndarray:
+    """Which rows are read right, with the learned ranker (the shipped recogniser) or by the rules alone."""
     out = np.zeros(len(rows), dtype=bool)
     for i, row in enumerate(rows):
         stroke = row["strokes"][0]
         times = [p[2] / 1000 for p in stroke] if all(len(p) > 2 and p[2] is not None for p in stroke) else None
-        out[i] = recognize_stroke([p[:2] for p in stroke], times, weights=weights).kind in row["accepts"]
+        out[i] = recognize_stroke([p[:2] for p in stroke], times, weights=weights,
+                                  learned=learned).kind in row["accepts"]
     return out
 
 
@@ -113,12 +115,12 @@ def closeness(w: Weights) -> float:
              + abs(min(w.round_corner, 9.0) - DEFAULT_WEIGHTS.round_corner))
 
 
-def leave_one_source_out(rows: list[Row], by: str, grid: list[Weights]) -> None:
+def leave_one_source_out(rows: list[Row], by: str, grid: list[Weights], learned: bool = True) -> None:
     sources = np.array([source_of(r, by) for r in rows])
     names = sorted(set(sources))
     if len(names) < 2:
         raise SystemExit(f"only one source ({names}): leave-one-source-out needs two or more")
-    right = {w: right_answers(rows, w) for w in grid}
+    right = {w: right_answers(rows, w, learned) for w in grid}
     labels = sorted({r["label"] for r in rows})
     label_of = np.array([r["label"] for r in rows])
     table_rows, misses, pooled = [], [], Counter()
@@ -183,6 +185,7 @@ def main() -> None:
     ap.add_argument("--defaults", action="store_true", help="the shipped weights only (one pass): a held-out figure "
                     "for sources found after they were set, as the second held-back group")
     ap.add_argument("--heldback", action="store_true", help="score the second held-back group too (once, at the end)")
+    ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
     args = ap.parse_args()
     rows: list[Row] = []
     for path in args.sets:
@@ -206,7 +209,8 @@ def main() -> None:
             by_set[why] += n
         print("Not scored: " + "; ".join(f"{n} ({why})" for why, n in sorted(by_set.items())) + ".")
     print()
-    leave_one_source_out(kept, args.by, [DEFAULT_WEIGHTS] if args.defaults else QUICK_GRID if args.quick else GRID)
+    leave_one_source_out(kept, args.by, [DEFAULT_WEIGHTS] if args.defaults else QUICK_GRID if args.quick else GRID,
+                         learned=not args.rules)
 
 
 if __name__ == "__main__":
