@@ -140,8 +140,8 @@ def _rounded_bracket(work: np.ndarray, corners: list[int], straight_runs: list[b
 
 
 def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], noise: float) -> bool:
-    """Two straight sides turning one way at one corner (a tick, a check, a v) whose bend takes under `SHORT_BEND`
-    of the stroke: rounded against a short arm as a question mark's curl is, but short against the whole stroke."""
+    """Whether the stroke turns one way at its one corner (a tick, a check, a v) within `SHORT_BEND` of its path: the
+    bend may be as long as a short arm, as a question mark's curl is, but is short against the whole stroke."""
     if len(corners) != 3 or len(sf.lobes(work, noise=noise)) != 1:
         return False
     length = sg.path_length(work)
