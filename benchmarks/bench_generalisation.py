@@ -2,7 +2,7 @@
 label, with the label -> kind table fixed before scoring (benchmarks/label_kinds.tsv).
 
 Usage: .venv/bin/python benchmarks/bench_generalisation.py SET [SET ...] [--by person|device|set] [--quick]
-       [--defaults] [--heldback] [--contradictions]
+       [--defaults] [--heldback] [--contradictions] [--rules]
 
 Each SET is a .jsonl file or a folder in a form `stroke_sets` reads (the $1 logs, the MMG set, the Drawn Shapes set);
 the sets stay where they are. A source is a person of a set (``--by person``, the default; a set that names no person is
@@ -102,12 +102,14 @@ def group_of(source: str, first_group: set[str]) -> str:
     return "new held back" if is_held_back_new(source) else "new design"
 
 
-def right_answers(rows: list[Row], weights: Weights) -> np.ndarray:
+def right_answers(rows: list[Row], weights: Weights, learned: bool = True) -> np.ndarray:
+    """Which rows are read right, with the learned ranker (the shipped recogniser) or by the rules alone."""
     out = np.zeros(len(rows), dtype=bool)
     for i, row in enumerate(rows):
         stroke = row["strokes"][0]
         times = [p[2] / 1000 for p in stroke] if all(len(p) > 2 and p[2] is not None for p in stroke) else None
-        out[i] = recognize_stroke([p[:2] for p in stroke], times, weights=weights).kind in row["accepts"]
+        out[i] = recognize_stroke([p[:2] for p in stroke], times, weights=weights,
+                                  learned=learned).kind in row["accepts"]
     return out
 
 
@@ -117,14 +119,15 @@ def closeness(w: Weights) -> float:
 
 
 def leave_one_source_out(rows: list[Row], by: str, grid: list[Weights], contradicted: np.ndarray | None = None,
-                         ) -> None:
+                         learned: bool = True) -> None:
     """Prints the table and the targets; ``contradicted`` (a flag a row) adds the strokes whose label contradicts
-    their geometry per source and the targets re-stated without them, apart from the raw figures."""
+    their geometry per source and the targets re-stated without them, apart from the raw figures; ``learned`` False
+    scores the rules alone, without the learned ranker."""
     sources = np.array([source_of(r, by) for r in rows])
     names = sorted(set(sources))
     if len(names) < 2:
         raise SystemExit(f"only one source ({names}): leave-one-source-out needs two or more")
-    right = {w: right_answers(rows, w) for w in grid}
+    right = {w: right_answers(rows, w, learned) for w in grid}
     labels = sorted({r["label"] for r in rows})
     label_of = np.array([r["label"] for r in rows])
     table_rows, misses, pooled, agreeing = [], [], Counter(), []
@@ -219,6 +222,7 @@ def main() -> None:
     ap.add_argument("--heldback", action="store_true", help="score the second held-back group too (once, at the end)")
     ap.add_argument("--contradictions", action="store_true", help="also count the strokes whose label the committed "
                     "contradiction tests convict, and re-state the targets without them (beside the raw figure)")
+    ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
     args = ap.parse_args()
     rows: list[Row] = []
     for path in args.sets:
@@ -248,7 +252,7 @@ def main() -> None:
 
         contradicted = np.array([contradiction(r) is not None for r in kept])
     leave_one_source_out(kept, args.by, [DEFAULT_WEIGHTS] if args.defaults else QUICK_GRID if args.quick else GRID,
-                         contradicted)
+                         contradicted, learned=not args.rules)
 
 
 if __name__ == "__main__":
