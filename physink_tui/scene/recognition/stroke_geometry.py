@@ -183,7 +183,7 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     """Cut a short sharply bent tail at either end (the pen landing or lifting), PaleoSketch style.
 
     A tail counts as a hook when it is at most ``max_fraction`` of the path and the path turns by
-    at least ``min_turn_deg`` where it joins the rest.
+    at least ``min_turn_deg`` where it joins the rest, unless it is a short straight arm (`ARM_SHARE`).
     """
     n = len(pts)
     if n < 12 or float(np.hypot(*(pts[-1] - pts[0]))) < 0.05 * bbox_diagonal(pts):
@@ -197,9 +197,40 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     idx = _hook_end(th[::-1][:k], min_turn_deg)
     if idx is not None and abs(float(np.sum(th[::-1][idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
         end = n - idx - 1
+    length = path_length(pts)
+    if start > 0 and _arm(pts[:start + 1], pts[start:], length):
+        start = 0
+    if end < n and _arm(pts[end - 1:][::-1], pts[:end][::-1], length):
+        end = n
     if end - start < n // 2:
         return pts
     return pts[start:end]
+
+
+ARM_SHARE = 0.06
+ARM_STRAIGHT = 0.2
+ARM_ANGLE_DEG = (45.0, 135.0)
+"""An end piece `remove_hooks` would cut is a mark's short arm, kept, when it is straight (strays from its chord by
+less than `ARM_STRAIGHT` of it, a quarter circle's bow), at least `ARM_SHARE` of the path, leaves the rest at an angle
+within `ARM_ANGLE_DEG` (a hook doubles back along the stroke or curls; an arm stands off it), and the rest is one run
+with no corner: a tick or check drawn with a short first arm is two straight arms, not a line with a landing hook
+(a mouse lands without one). The landing hooks of the design sources' lines double back (under 40 degrees) or are
+under 5 % of the path; a brace's curl leaves a rest with its tip, a corner."""
+
+
+def _arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
+    """Whether ``piece`` (from the stroke's end to where it joins ``rest``, which runs on from the join) is an arm."""
+    if len(piece) < 2 or length == 0.0 or path_length(piece) < ARM_SHARE * length:
+        return False
+    if len(piece) > 2 and chord_deviation(piece) >= ARM_STRAIGHT:
+        return False
+    ahead = resample(rest, 50)
+    u, v = piece[0] - piece[-1], ahead[10] - ahead[0]  # the arm and the first fifth of the rest, from the join
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return False
+    angle = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
+    return ARM_ANGLE_DEG[0] <= angle <= ARM_ANGLE_DEG[1] and len(find_corners(rest)) == 2
 
 
 def _hook_end(th_head: np.ndarray, min_turn_deg: float) -> int | None:
