@@ -97,7 +97,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     length = sg.path_length(work)
     th = sg.turning(work)
     total_turn = float(th.sum())
-    corners = sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), length)
+    corners = _kept_arm(work, sg.find_corners(work, every_dip=True), length)
     straight_runs = [straight(work[a:b + 1], noise) or sg.path_length(work[a:b + 1]) < 0.06 * length
                      for a, b in itertools.pairwise(corners)]
     coarse = sg.coarse_turning(work, noise)
@@ -123,6 +123,18 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
             return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius), (("curve", 0.5),))
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
+
+
+def _kept_arm(work: np.ndarray, found: list[int], length: float) -> list[int]:
+    """The corners without those cutting a tiny piece off an end (`stroke_features.drop_end_stubs`), unless the
+    stroke's one corner cuts off a short straight arm (`stroke_geometry.end_arm`: a tick's first arm)."""
+    corners = sf.drop_end_stubs(work, found, length)
+    if len(corners) == 2 and len(found) == 3:
+        c = found[1]
+        piece, rest = (work[:c + 1], work[c:]) if 2 * c < len(work) else (work[c:][::-1], work[:c + 1][::-1])
+        if sg.end_arm(piece, rest, length):
+            return found
+    return corners
 
 
 def _bowed_between_corners(work: np.ndarray, corners: list[int], length: float) -> bool:

@@ -198,9 +198,9 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     if idx is not None and abs(float(np.sum(th[::-1][idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
         end = n - idx - 1
     length = path_length(pts)
-    if start > 0 and _arm(pts[:start + 1], pts[start:], length):
+    if start > 0 and end_arm(pts[:start + 1], pts[start:], length):
         start = 0
-    if end < n and _arm(pts[end - 1:][::-1], pts[:end][::-1], length):
+    if end < n and end_arm(pts[end - 1:][::-1], pts[:end][::-1], length):
         end = n
     if end - start < n // 2:
         return pts
@@ -218,7 +218,7 @@ with no corner: a tick or check drawn with a short first arm is two straight arm
 under 5 % of the path; a brace's curl leaves a rest with its tip, a corner."""
 
 
-def _arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
+def end_arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
     """Whether ``piece`` (from the stroke's end to where it joins ``rest``, which runs on from the join) is an arm."""
     if len(piece) < 2 or length == 0.0 or path_length(piece) < ARM_SHARE * length:
         return False
