@@ -49,6 +49,10 @@ SHORT_BEND = 0.25
 """A one-corner stroke turning one way bends within this share of its path (`_short_bend`): a tick's short first arm
 makes its corner look round against that arm (ahmadosama's ticks, klarubbio/s06's checks, 0.10-0.29 of the path);
 a question mark's curl read as one corner bends over 0.44 of it."""
+TICK_POINT = 0.04
+TICK_POINT_TURN = 20.0
+"""A tick's long arm, in its middle three fifths, turns less than `TICK_POINT_TURN` degrees within any `TICK_POINT`
+of the stroke's path: no brace's tip (the label contradictions' test of a brace's point, the same numbers)."""
 SMOOTH = 0.55
 """A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
 speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
@@ -115,7 +119,8 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
              or _short_bend(work, corners, roundness, noise))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, noise)
-            and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
+            and (all(straight_runs) or _bent_polyline(work, th, corners, noise)
+                 or _tick_into_bend(work, corners, straight_runs, roundness, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
@@ -159,6 +164,36 @@ def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], no
     length = sg.path_length(work)
     shorter = min(sg.path_length(work[: corners[1] + 1]), sg.path_length(work[corners[1]:]))
     return roundness[0] * shorter < SHORT_BEND * length
+
+
+def _tick_into_bend(work: np.ndarray, corners: list[int], straight_runs: list[bool], roundness: list[float],
+                    noise: float) -> bool:
+    """Whether a one-corner stroke turning one way is a tick whose short arm bows into its corner: the long arm is
+    straight with no point in its middle (`TICK_POINT_TURN`: a brace whose tip was not found as a corner has a straight
+    spine by `straight`), the short one bows less than a quarter circle (`BOWED_SIDE`) and the bend is short
+    (`_short_bend`)."""
+    if len(corners) != 3 or not _short_bend(work, corners, roundness, noise):
+        return False
+    first, second = work[:corners[1] + 1], work[corners[1]:]
+    if sg.path_length(first) < sg.path_length(second):
+        short, long, long_straight = first, second, straight_runs[1]
+    else:
+        short, long, long_straight = second, first, straight_runs[0]
+    middle = long[len(long) // 5: len(long) - len(long) // 5]
+    return (long_straight and sg.chord_deviation(short) < BOWED_SIDE
+            and _sharpest_turn(middle, TICK_POINT * sg.path_length(work)) < TICK_POINT_TURN)
+
+
+def _sharpest_turn(run: np.ndarray, span: float) -> float:
+    """The most the run turns (degrees, net) within any stretch of ``span`` along it (points equally spaced)."""
+    if len(run) < 3:
+        return 0.0
+    step = sg.path_length(run) / (len(run) - 1)
+    w = max(1, round(span / step)) if step > 0 else 1
+    done = np.concatenate([[0.0], np.cumsum(np.degrees(sg.turning(run)))])
+    if w >= len(done):
+        return abs(float(done[-1]))
+    return float(np.abs(done[w:] - done[:-w]).max())
 
 
 def _tip_in_line(work: np.ndarray, corners: list[int], noise: float) -> bool:
