@@ -47,7 +47,9 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked polyline. Corners are found
    at every sharp dip of a run of short straws (an arrow's head, a zig-zag's small teeth: `stroke_geometry.
    find_corners(every_dip=True)`), and a one-corner stroke turning one way whose bend is short against the whole
-   stroke is sharp however short its arm (a tick, `open_shapes._short_bend`).
+   stroke is sharp however short its arm (a tick, `open_shapes._short_bend`), its short arm may bow into the corner
+   (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
+   not a hook cut where the pen landed (`stroke_geometry.end_arm`).
 5. A polyline or a curve so read is re-ranked by a learned model (`ranker`, issue 25): a conditional logit over the
    two kinds on the stroke's geometric features (and the rules' own tests), fitted offline on people's strokes by
    `benchmarks/train_ranker.py`, shipped in the package as the data module `ranker_model`; it overrules the rules
