@@ -114,13 +114,18 @@ def _point(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: float = PEN_NOISE) -> Recognition:
-    """One stroke, or two consecutive strokes that may be an X-symbol (thesis 3.2.1)."""
+def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: float = PEN_NOISE,
+                      times: Sequence[Sequence[float] | None] | None = None) -> Recognition:
+    """One stroke, or two consecutive strokes that may be an X-symbol (thesis 3.2.1); ``times``, where given, holds
+    each stroke's point times in seconds or None (`recognize_stroke`)."""
+    at = list(times) if times is not None else [None] * len(strokes)
+    if len(at) != len(strokes):
+        raise ValueError(f"recognize_strokes: {len(strokes)} strokes but {len(at)} lists of times")
     if len(strokes) == 1:
-        return recognize_stroke(strokes[0], noise=noise)
+        return recognize_stroke(strokes[0], at[0], noise=noise)
     if len(strokes) != 2:
         return Recognition(None, 0.0, None, (), f"expected one stroke or two (an X), got {len(strokes)}")
-    first, second = recognize_stroke(strokes[0], noise=noise), recognize_stroke(strokes[1], noise=noise)
+    first, second = (recognize_stroke(points, when, noise=noise) for points, when in zip(strokes, at, strict=True))
     if (first.kind == "line" and second.kind == "line" and isinstance(first.geometry, Line)
             and isinstance(second.geometry, Line)):
         x = x_symbol(first.geometry, second.geometry)
