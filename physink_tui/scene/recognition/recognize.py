@@ -30,6 +30,7 @@ from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import helix_or_scribble
+from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, overlap
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
 from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
@@ -192,10 +193,26 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
     candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
     ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop)
+    ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
         return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag)
     return _or_freeform(ranked, loop, closed=True, sigma=sigma)
+
+
+def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray, noise: float, diag: float,
+                  loop: np.ndarray) -> Recognition:
+    """A polygon of five sides or more that its best four sides cover nearly as drawn (`polygon_checks.BOX_OVERLAP`),
+    when those four make a box: a box with a hook, a bowed side or a cut corner, read as the box."""
+    if not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 5:
+        return ranked
+    lo, hi = _bounds(raw, noise, diag)
+    for box in (c for p in polygons if p.params == 8 for c in p.build() if c.kind == "box"):
+        if (_inside(box.geometry, lo, hi) and _keeps_the_outline(box, loop)
+                and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
+                and overlap(box.fallback.geometry.points, ranked.geometry.points) >= BOX_OVERLAP):
+            return Recognition("box", ranked.confidence, box.geometry, (("polygon", 1.0 - ranked.confidence),))
+    return ranked
 
 
 def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,
@@ -369,7 +386,28 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
         loop = work[: n // 2 + int(d_tail.argmin()) + 1]  # drawn past the start
     elif float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1:
         loop = work[int(d_head.argmin()):]  # started before where it ends
+    else:
+        loop = _ends_crossing(work, gap)
     return True, (loop if len(loop) >= 8 else work)
+
+
+def _ends_crossing(work: np.ndarray, gap: float) -> np.ndarray:
+    """The loop between where the stroke's first and last `END_SHARE` come closest, when that is much closer than
+    its ends are: a hook where the pen landed and an overshoot where it lifted, both cut off (neither end alone
+    comes near the other's path)."""
+    n = len(work)
+    k = max(2, int(END_SHARE * n))
+    head, tail = work[:k], work[n - k:]
+    d = np.hypot(*(head[:, None, :] - tail[None, :, :]).transpose(2, 0, 1))
+    i, j = np.unravel_index(int(np.argmin(d)), d.shape)
+    if float(d[i, j]) < 0.5 * gap:
+        return work[int(i): n - k + int(j) + 1]
+    return work
+
+
+END_SHARE = 1 / 6
+"""A hook or an overshoot at a closed stroke's end is at most this share of its points (a side of a box is a
+quarter; a star's first and last sides cross no other side within it)."""
 
 
 CLOSED_GAP = 0.2
