@@ -51,11 +51,7 @@ def overlap(a: Sequence[tuple[float, float]], b: Sequence[tuple[float, float]]) 
     """Intersection over union of two closed outlines given by their vertices (0 when either has no area)."""
     pa, pb = shapely.make_valid(shapely.Polygon(a)), shapely.make_valid(shapely.Polygon(b))
     union = float(shapely.union(pa, pb).area)
-    v = float(shapely.intersection(pa, pb).area) / union if union > 0 else 0.0
-    import os
-    with open("/tmp/closed/ovl_log.txt", "a") as fh:
-        fh.write(f"{os.environ.get('PYTEST_CURRENT_TEST', '-')}\t{v:.4f}\n")
-    return v
+    return float(shapely.intersection(pa, pb).area) / union if union > 0 else 0.0
 
 
 @dataclass(frozen=True, slots=True)
