@@ -41,7 +41,7 @@ BOW_SHARE = 0.06
 side's own line: a side bowed by more than about 15 % of its length is a curve, not a side."""
 
 
-BOX_OVERLAP = 0.94
+BOX_OVERLAP = 0.92
 """A polygon of five sides or more is a four-sided one drawn by a hurried hand when its best four sides overlap it by
 this much (intersection over union): a hook, a bowed side or a cut corner changes a quad's area by a few per cent.
 Above the 0.90 an outline must keep (issue 25): a notched slab, a T, an L or a golf tee keeps its corners."""

@@ -381,21 +381,30 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
     d_head = np.hypot(*(head - work[-1]).T)
     if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit:
         return False, work
-    loop = work
-    if float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < len(tail) - 2:
-        loop = work[: n // 2 + int(d_tail.argmin()) + 1]  # drawn past the start
-    elif float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1:
-        loop = work[int(d_head.argmin()):]  # started before where it ends
-    else:
-        loop = _ends_crossing(work, gap)
-    return True, (loop if len(loop) >= 8 else work)
+    loop = _cut_ends(work, gap, d_tail, d_head)
+    if len(loop) < 8:
+        return True, work
+    if sg.bbox_diagonal(loop) < SMALL_LOOP * diag:
+        return False, work  # a loop on a long shaft or between long tails: an arrow's closed head, an x drawn round
+    return True, loop
 
 
-def _ends_crossing(work: np.ndarray, gap: float) -> np.ndarray:
-    """The loop between where the stroke's first and last `END_SHARE` come closest, when that is much closer than
-    its ends are: a hook where the pen landed and an overshoot where it lifted, both cut off (neither end alone
-    comes near the other's path)."""
+SMALL_LOOP = 0.5
+"""A loop cut from a stroke's ends (a hook, an overshoot, a lead-in cut off) is the shape drawn only when it is at
+least this share of the whole stroke's size; smaller, it is part of an open mark: an arrow whose head closes on its
+shaft, an x drawn as a loop with crossing tails."""
+
+
+def _cut_ends(work: np.ndarray, gap: float, d_tail: np.ndarray, d_head: np.ndarray) -> np.ndarray:
+    """The stroke once round: an overshoot past the start, or a start before the end, cut at the closest approach;
+    else cut where the first and last `END_SHARE` come closest, when that is much closer than the ends are: a
+    hook where the pen landed and an overshoot where it lifted (neither end alone comes near the other's path)."""
     n = len(work)
+    tail_n = len(d_tail)
+    if float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < tail_n - 2:
+        return work[: n - tail_n + int(d_tail.argmin()) + 1]  # drawn past the start
+    if float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1:
+        return work[int(d_head.argmin()):]  # started before where it ends
     k = max(2, int(END_SHARE * n))
     head, tail = work[:k], work[n - k:]
     d = np.hypot(*(head[:, None, :] - tail[None, :, :]).transpose(2, 0, 1))
