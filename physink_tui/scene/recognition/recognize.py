@@ -189,10 +189,12 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if not closed:
         return _open_reading(raw, work, n, noise, sigma, weights, diag)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    if _lumpy_round(loop, noise):
+    lumpy = _lumpy_round(loop, noise)
+    if lumpy:
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
     candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
-    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop)
+    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
+                   round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
@@ -292,15 +294,18 @@ def _score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> fl
 
 
 def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
-          noise: float, diag: float, fitted: np.ndarray | None = None) -> Recognition:
+          noise: float, diag: float, fitted: np.ndarray | None = None, round_share: float = BOUNDS_MARGIN,
+          ) -> Recognition:
     """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
     as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
-    once what is left could not change the answer or its alternatives."""
+    once what is left could not change the answer or its alternatives. A circle or an ellipse may reach
+    ``round_share`` of the diagonal past the bounds (a lumpy loop's flat stretch: `LUMPY_SIDES`)."""
     heap: list[tuple[float, int, Candidate | Pending]] = []
     for c in candidates:
         if math.isfinite(c.rss):
             heapq.heappush(heap, (_score(c, n, sigma, weights), len(heap), c))
     lo, hi = _bounds(raw, noise, diag)
+    round_lo, round_hi = _bounds(raw, noise, diag, round_share)
     kept: list[tuple[float, Candidate]] = []
     seq = len(heap)
     while heap:
@@ -311,7 +316,8 @@ def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weigh
             for built in c.build():
                 seq += 1
                 heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
-        elif not _inside(c.geometry, lo, hi):
+        elif not (_inside(c.geometry, round_lo, round_hi) if c.kind in ("circle", "ellipse")
+                  else _inside(c.geometry, lo, hi)):
             if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
                 seq += 1
                 heapq.heappush(heap, (score, seq, c.fallback))
