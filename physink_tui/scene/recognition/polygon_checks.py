@@ -47,7 +47,27 @@ this much (intersection over union): a hook, a bowed side or a cut corner change
 Above the 0.90 an outline must keep (issue 25): a notched slab, a T, an L or a golf tee keeps its corners."""
 
 
-def overlap(a: Sequence[tuple[float, float]], b: Sequence[tuple[float, float]]) -> float:
+def crossings(vertices: Sequence[tuple[float, float]] | np.ndarray) -> int:
+    """How many times a closed outline's sides cross one another (a star drawn in one stroke: five times; a box
+    whose hook's spike crosses a side: once)."""
+    a = np.asarray(vertices, dtype=float)
+    b = np.roll(a, -1, axis=0)
+    m = len(a)
+    i, j = np.triu_indices(m, 2)
+    keep = ~((i == 0) & (j == m - 1))  # the last side meets the first at a vertex
+    i, j = i[keep], j[keep]
+
+    def side(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> np.ndarray:
+        u, w = q - p, r - p
+        turn: np.ndarray = np.sign(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
+        return turn
+
+    apart_j = side(a[i], b[i], a[j]) * side(a[i], b[i], b[j]) < 0
+    apart_i = side(a[j], b[j], a[i]) * side(a[j], b[j], b[i]) < 0
+    return int(np.count_nonzero(apart_i & apart_j))
+
+
+def overlap(a: Sequence[tuple[float, float]] | np.ndarray, b: Sequence[tuple[float, float]] | np.ndarray) -> float:
     """Intersection over union of two closed outlines given by their vertices (0 when either has no area)."""
     pa, pb = shapely.make_valid(shapely.Polygon(a)), shapely.make_valid(shapely.Polygon(b))
     union = float(shapely.union(pa, pb).area)

@@ -31,7 +31,7 @@ from physink_tui.scene.recognition.beautify import scale_geometry, shape_points,
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import helix_or_scribble
 from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
-from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, overlap
+from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
 from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
@@ -209,11 +209,15 @@ def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray,
     when those four make a box: a box with a hook, a bowed side or a cut corner, read as the box."""
     if not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 5:
         return ranked
-    lo, hi = _bounds(raw, noise, diag)
-    for box in (c for p in polygons if p.params == 8 for c in p.build() if c.kind == "box"):
+    drawn = ranked.geometry.points
+    if crossings(drawn) > 1:
+        return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
+    quads = [p for p in polygons if p.params == 8 and any(overlap(f.vertices, drawn) >= BOX_OVERLAP for f in p.fits)]
+    lo, hi = _bounds(raw, noise, diag)  # built only where a four-sided fit covers it (judging corners costs more)
+    for box in (c for p in quads for c in p.build() if c.kind == "box"):
         if (_inside(box.geometry, lo, hi) and _keeps_the_outline(box, loop)
                 and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
-                and overlap(box.fallback.geometry.points, ranked.geometry.points) >= BOX_OVERLAP):
+                and overlap(box.fallback.geometry.points, drawn) >= BOX_OVERLAP):
             return Recognition("box", ranked.confidence, box.geometry, (("polygon", 1.0 - ranked.confidence),))
     return ranked
 
