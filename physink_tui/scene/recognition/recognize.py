@@ -303,8 +303,8 @@ def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weigh
           ) -> Recognition:
     """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
     as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
-    once what is left could not change the answer or its alternatives. A circle or an ellipse may reach
-    ``round_share`` of the diagonal past the bounds (a lumpy loop's flat stretch: `LUMPY_SIDES`)."""
+    once what is left could not change the answer or its alternatives. An ellipse may reach ``round_share`` of
+    the diagonal past the bounds (a lumpy loop's flat stretch: `LUMPY_SIDES`; a circle rounded off from it may not)."""
     heap: list[tuple[float, int, Candidate | Pending]] = []
     for c in candidates:
         if math.isfinite(c.rss):
@@ -321,8 +321,7 @@ def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weigh
             for built in c.build():
                 seq += 1
                 heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
-        elif not (_inside(c.geometry, round_lo, round_hi) if c.kind in ("circle", "ellipse")
-                  else _inside(c.geometry, lo, hi)):
+        elif not (_inside(c.geometry, round_lo, round_hi) if c.kind == "ellipse" else _inside(c.geometry, lo, hi)):
             if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
                 seq += 1
                 heapq.heappush(heap, (score, seq, c.fallback))
