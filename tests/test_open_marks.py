@@ -110,3 +110,15 @@ def test_a_question_mark_whose_one_corner_joins_arms_in_line_is_a_curve() -> Non
     for learned in (False, True):
         kind = recognize_stroke(points, times, learned=learned).kind
         assert kind in ACCEPTS[LABEL_CLASS[row["label"]]] and kind == "curve"
+
+
+def test_a_square_bracket_whose_short_arms_looked_like_hooks_keeps_them() -> None:
+    """sinarest1608/Subject3's left bracket: both short arms (8-9 % of the path each) were cut as pen-landing hooks
+    and the spine left was read as a curve; arms at both ends of a straight run with no point are kept
+    (`stroke_geometry.remove_hooks`). By the rules alone: the shipped ranker, fitted before the rule, still reads it
+    as a curve (the lead's refit takes the rule's answer among its inputs)."""
+    row = _rows("public-sets/hcira.jsonl").get(
+        "sinarest1608/HCIRA-HK@d91ccc6:Project1/usersamples/Subject3/left_sq_bracket10.xml")
+    assert row is not None
+    points, times = _stroke(row)
+    assert recognize_stroke(points, times, learned=False).kind == "polyline"

@@ -49,10 +49,6 @@ SHORT_BEND = 0.25
 """A one-corner stroke turning one way bends within this share of its path (`_short_bend`): a tick's short first arm
 makes its corner look round against that arm (ahmadosama's ticks, klarubbio/s06's checks, 0.10-0.29 of the path);
 a question mark's curl read as one corner bends over 0.44 of it."""
-TICK_POINT = 0.04
-TICK_POINT_TURN = 20.0
-"""A tick's long arm, in its middle three fifths, turns less than `TICK_POINT_TURN` degrees within any `TICK_POINT`
-of the stroke's path: no brace's tip (the label contradictions' test of a brace's point, the same numbers)."""
 SMOOTH = 0.55
 """A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
 speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
@@ -169,9 +165,9 @@ def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], no
 def _tick_into_bend(work: np.ndarray, corners: list[int], straight_runs: list[bool], roundness: list[float],
                     noise: float) -> bool:
     """Whether a one-corner stroke turning one way is a tick whose short arm bows into its corner: the long arm is
-    straight with no point in its middle (`TICK_POINT_TURN`: a brace whose tip was not found as a corner has a straight
-    spine by `straight`), the short one bows less than a quarter circle (`BOWED_SIDE`) and the bend is short
-    (`_short_bend`)."""
+    straight with no point in its middle (`stroke_geometry.POINT_TURN_DEG`: a brace whose tip was not found as a
+    corner has a spine `straight` calls straight), the short one bows less than a quarter circle (`BOWED_SIDE`) and
+    the bend is short (`_short_bend`)."""
     if len(corners) != 3 or not _short_bend(work, corners, roundness, noise):
         return False
     first, second = work[:corners[1] + 1], work[corners[1]:]
@@ -181,19 +177,7 @@ def _tick_into_bend(work: np.ndarray, corners: list[int], straight_runs: list[bo
         short, long, long_straight = second, first, straight_runs[0]
     middle = long[len(long) // 5: len(long) - len(long) // 5]
     return (long_straight and sg.chord_deviation(short) < BOWED_SIDE
-            and _sharpest_turn(middle, TICK_POINT * sg.path_length(work)) < TICK_POINT_TURN)
-
-
-def _sharpest_turn(run: np.ndarray, span: float) -> float:
-    """The most the run turns (degrees, net) within any stretch of ``span`` along it (points equally spaced)."""
-    if len(run) < 3:
-        return 0.0
-    step = sg.path_length(run) / (len(run) - 1)
-    w = max(1, round(span / step)) if step > 0 else 1
-    done = np.concatenate([[0.0], np.cumsum(np.degrees(sg.turning(run)))])
-    if w >= len(done):
-        return abs(float(done[-1]))
-    return float(np.abs(done[w:] - done[:-w]).max())
+            and sg.sharpest_turn(middle, sg.POINT_SPAN * sg.path_length(work)) < sg.POINT_TURN_DEG)
 
 
 def _tip_in_line(work: np.ndarray, corners: list[int], noise: float) -> bool:

@@ -183,7 +183,8 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     """Cut a short sharply bent tail at either end (the pen landing or lifting), PaleoSketch style.
 
     A tail counts as a hook when it is at most ``max_fraction`` of the path and the path turns by
-    at least ``min_turn_deg`` where it joins the rest, unless it is a short straight arm (`ARM_SHARE`).
+    at least ``min_turn_deg`` where it joins the rest, unless it is a short straight arm (`end_arm`): at one end, of
+    a stroke with no other corner (a tick); at both ends, of a straight run with no point (a square bracket).
     """
     n = len(pts)
     if n < 12 or float(np.hypot(*(pts[-1] - pts[0]))) < 0.05 * bbox_diagonal(pts):
@@ -198,6 +199,12 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     if idx is not None and abs(float(np.sum(th[::-1][idx + 1:idx + 1 + k]))) < min_turn_deg / 2:
         end = n - idx - 1
     length = path_length(pts)
+    if start > 0 and end < n:  # arms at both ends stand off one straight run with no point (a square bracket)
+        spine = pts[start:end]
+        middle = spine[len(spine) // 5: len(spine) - len(spine) // 5]
+        if (sharpest_turn(middle, POINT_SPAN * length) < POINT_TURN_DEG and end_arm(pts[:start + 1], spine, length)
+                and end_arm(pts[end - 1:][::-1], spine[::-1], length)):
+            start, end = 0, n
     if start > 0 and end_arm(pts[:start + 1], pts[start:], length):
         start = 0
     if end < n and end_arm(pts[end - 1:][::-1], pts[:end][::-1], length):
@@ -216,6 +223,24 @@ within `ARM_ANGLE_DEG` (a hook doubles back along the stroke or curls; an arm st
 with no corner: a tick or check drawn with a short first arm is two straight arms, not a line with a landing hook
 (a mouse lands without one). The landing hooks of the design sources' lines double back (under 40 degrees) or are
 under 5 % of the path; a brace's curl leaves a rest with its tip, a corner."""
+
+
+POINT_SPAN = 0.04
+POINT_TURN_DEG = 20.0
+"""A run has no point (a brace's tip) when, in its middle three fifths, it turns less than `POINT_TURN_DEG` degrees
+within any `POINT_SPAN` of the stroke's path (the label contradictions' brace-point test, the same numbers)."""
+
+
+def sharpest_turn(run: np.ndarray, span: float) -> float:
+    """The most the run turns (degrees, net) within any stretch of ``span`` along it (points equally spaced)."""
+    if len(run) < 3:
+        return 0.0
+    step = path_length(run) / (len(run) - 1)
+    w = max(1, round(span / step)) if step > 0 else 1
+    done = np.concatenate([[0.0], np.cumsum(np.degrees(turning(run)))])
+    if w >= len(done):
+        return abs(float(done[-1]))
+    return float(np.abs(done[w:] - done[:-w]).max())
 
 
 def end_arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
