@@ -38,12 +38,13 @@ FEATURES = ("closure", "ink", "net_turn", "abs_turn", "corners", "concentration"
             "mean_roundness", "straight_share", "max_bow", "mean_bow", "max_corner_turn", "min_corner_turn",
             "lobes", "ellipse_error", "circle_error", "aspect", "line_error", "corner_share", "one_way",
             "max_bend", "sparse", "one_corner", "two_corners", "all_straight", "bent_polyline", "brace_tip",
-            "bowed_between", "rounded_bracket", "has_times", "corner_slowdown")
-GUARDS = ("point_balance",)
-"""Measures `features` returns after `FEATURES` that the model does not weigh: the rules' guards (`checked_point`)."""
+            "bowed_between", "rounded_bracket", "has_times", "corner_slowdown", "point_balance")
 WORK_POINTS = 64
 CHECK_ARMS = 2 / 3
 """A check's short arm is at most this share of its long arm (`checked_point`)."""
+CHECK_POINT_SHARE = 1 / 3
+"""A check whose hump starts at a second, weaker corner turns at least this share of all its turning at its point
+(`checked_point`); a brace's tip or a question mark's bend less (0.22-0.32 of those the model rightly re-reads)."""
 
 
 def family(kind: str | None) -> tuple[str, ...]:
@@ -123,9 +124,8 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
 
 
 def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
-    """The stroke's features (`FEATURES`, then `GUARDS`), size-free; ``noise`` is the pen's jitter in the points'
-    units."""
-    out = np.zeros(len(FEATURES) + len(GUARDS))
+    """The stroke's features (`FEATURES`), size-free; ``noise`` is the pen's jitter in the points' units."""
+    out = np.zeros(len(FEATURES))
     found = _unit_work(points, times)
     if found is None:
         return out
@@ -162,7 +162,8 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
         point_balance(work, corners, turns)]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
-        out[len(FEATURES) - 2:len(FEATURES)] = [1.0, slow]
+        at = FEATURES.index("has_times")
+        out[at:at + 2] = [1.0, slow]
     return np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
 
 
@@ -238,14 +239,19 @@ def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
 
 
 def checked_point(phi: np.ndarray) -> bool:
-    """Whether the stroke turns at one really sharp corner (`open_shapes.VERY_SHARP_CORNER`) in at most three lobes:
-    the rules' hurried check, whose arms may bow. The rules read it as a polyline on purpose; a model fitted on
-    people who draw checks with straight arms reads bowed arms as a curve's, so it is not asked."""
+    """Whether the stroke turns at one really sharp corner (`open_shapes.VERY_SHARP_CORNER`), off-centre (a short arm
+    and a long one, `CHECK_ARMS`), in at most three lobes: the rules' hurried check, whose arms may bow; also when a
+    second, weaker corner marks where a bowed arm's hump starts, so long as the point holds `CHECK_POINT_SHARE` of
+    all the stroke's turning. The rules read it as a polyline on purpose; a model fitted on people who draw checks
+    with straight arms reads bowed arms as a curve's, so it is not asked."""
     corners = round(float(phi[FEATURES.index("corners")]) * 8)
     turn = float(phi[FEATURES.index("max_corner_turn")]) * 180.0
     lobes = round(float(phi[FEATURES.index("lobes")]) * 4)
-    balance = float(phi[len(FEATURES) + GUARDS.index("point_balance")])
-    return corners == 1 and turn >= open_shapes.VERY_SHARP_CORNER and lobes <= 3 and balance <= CHECK_ARMS
+    balance = float(phi[FEATURES.index("point_balance")])
+    if turn < open_shapes.VERY_SHARP_CORNER or lobes > 3 or balance > CHECK_ARMS:
+        return False
+    whole = float(phi[FEATURES.index("abs_turn")]) * 360.0
+    return corners == 1 or (corners == 2 and turn >= CHECK_POINT_SHARE * whole)
 
 
 def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,
