@@ -3,18 +3,18 @@
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--heldback] [--write PATH] [--lam L] [--no-gate]
        [--inner K] [--weigh W]
 
-For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve
-(`ranker.KINDS`) the ranker scores both by ``w_kind . phi + a * [the rules' answer]`` over standardised features
-(`ranker.features`). The weights are fitted by conditional-logit maximum likelihood (Newton steps on the likelihood's
-Fisher matrix, L2 penalty `LAMBDA`, fixed beforehand, not tuned). The model's kind replaces the rules' only when its
-chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources the model is fitted on. Design
-folds: each source not held back is scored by a model (and margin) fitted on the other design sources only. The first
-held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given; the
-second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``; each group is then
-scored per source and per class, apart, by a model fitted on the design sources. ``--write`` fits on every source
-given but the second held-back group (the margin chosen by leave-one-source-out over them) and writes the model as the
-Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
-~/.cache/physink/ under a key of the rows and the recognition package's source.
+For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve, or
+a polygon left open (`ranker.family`), the ranker scores the family's kinds by ``w_kind . phi + a * [the rules'
+answer]`` over standardised features (`ranker.features`). The weights are fitted by conditional-logit maximum likelihood
+(Newton steps on the likelihood's Fisher matrix, L2 penalty `LAMBDA`, fixed beforehand, not tuned). The model's kind
+replaces the rules' only when its chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources
+the model is fitted on. Design folds: each source not held back is scored by a model (and margin) fitted on the other
+design sources only. The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or
+``--write`` is given; the second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``;
+each group is then scored per source and per class, apart, by a model fitted on the design sources. ``--write`` fits on
+every source given but the second held-back group (the margin chosen by leave-one-source-out over them) and writes the
+model as the Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features
+are kept in ~/.cache/physink/ under a key of the rows and the recognition package's source.
 """
 
 from __future__ import annotations
@@ -84,8 +84,8 @@ def _describe(rows: list[Row]) -> dict:
         kind = recognize_stroke([p[:2] for p in stroke], times, learned=False).kind
         rules.append(kind)
         phi.append(ranker.features(stroke, times))
-        right.append(np.array([k in row["accepts"] for k in ranker.family(kind)] + [False] * (WIDTH - len(
-            ranker.family(kind))), dtype=bool))
+        kinds = ranker.family(kind, phi[-1])
+        right.append(np.array([k in row["accepts"] for k in kinds] + [False] * (WIDTH - len(kinds)), dtype=bool))
     return {"rules": rules, "phi": np.array(phi), "right": np.array(right),
             "rules_right": np.array([k in r["accepts"] for k, r in zip(rules, rows, strict=True)])}
 
@@ -95,7 +95,7 @@ def tensors(d: dict, idx: np.ndarray, mean: np.ndarray, std: np.ndarray) -> tupl
     x = np.zeros((len(idx), WIDTH, p))
     mask = np.zeros((len(idx), WIDTH), dtype=bool)
     for j, i in enumerate(idx):
-        kinds = ranker.family(d["rules"][i])
+        kinds = ranker.family(d["rules"][i], d["phi"][i])
         x[j, :len(kinds)] = ranker.design(kinds, (d["phi"][i, :len(ranker.FEATURES)] - mean) / std, d["rules"][i])
         mask[j, :len(kinds)] = True
     return x, mask

@@ -28,12 +28,16 @@ from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometr
 from physink_tui.scene.recognition.primitives import Geometry, Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_circle, fit_ellipse, fit_line
 
-KINDS = ("polyline", "curve")
-"""The kinds re-ranked: an open stroke of straight sides or of bends, the people's sets' most telling disagreement
-(braces and question marks drawn with a mouse are straight runs and cusps; checks drawn fast have bowed arms). An
-arc, a box, a polygon or a round shape is left to the rules: the sets label no arc, and label trapezoids and
-parallelograms "rectangle", against the outline kept as drawn (issue 25), so a model fitted on them would learn
-to turn every arc into a curve and every trapezoid into a box."""
+KINDS = ("polyline", "curve", "polygon")
+"""The kinds re-ranked (`family`): an open stroke of straight sides or of bends, the people's sets' most telling
+disagreement (braces and question marks drawn with a mouse are straight runs and cusps; checks drawn fast have bowed
+arms); and a polygon whose ends stay apart (`OPEN_GAP`: a caret, a v, an arrow or a brace the rules closed), which
+may be re-read as either, never as a box. An arc, a box, a closed polygon or a round shape is left to the rules: the
+sets label no arc, and label trapezoids and parallelograms "rectangle", against the outline kept as drawn (issue
+25), so a model fitted on them would learn to turn every arc into a curve and every trapezoid into a box."""
+OPEN_GAP = 0.2
+"""A polygon whose ends are at least this share of its size apart (`stroke_features.closure`; the rules' own closing
+gap, `recognize.CLOSED_GAP`) may be an open mark: the model is asked."""
 FEATURES = ("closure", "ink", "net_turn", "abs_turn", "corners", "concentration", "max_roundness",
             "mean_roundness", "straight_share", "max_bow", "mean_bow", "max_corner_turn", "min_corner_turn",
             "lobes", "ellipse_error", "circle_error", "aspect", "line_error", "corner_share", "one_way",
@@ -47,9 +51,19 @@ CHECK_POINT_SHARE = 1 / 3
 (`checked_point`); a brace's tip or a question mark's bend less (0.22-0.32 of those the model rightly re-reads)."""
 
 
-def family(kind: str | None) -> tuple[str, ...]:
-    """The kinds a stroke read as ``kind`` may be re-ranked among (none but for `KINDS`)."""
-    return KINDS if kind in KINDS else ()
+def family(kind: str | None, phi: np.ndarray) -> tuple[str, ...]:
+    """The kinds a stroke read as ``kind``, with features ``phi``, may be re-ranked among (`KINDS`), the rules' first
+    for a polygon; none for other kinds."""
+    if kind in ("polyline", "curve"):
+        return ("polyline", "curve")
+    if kind == "polygon" and open_polygon(float(phi[FEATURES.index("closure")])):
+        return ("polygon", "polyline", "curve")
+    return ()
+
+
+def open_polygon(closure: float) -> bool:
+    """Whether a polygon whose ends are ``closure`` (`stroke_features.closure`) apart is open enough to ask."""
+    return closure >= OPEN_GAP
 
 
 MODEL_MODULE = "physink_tui/scene/recognition/ranker_model.py"
@@ -225,7 +239,7 @@ def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
     """The kind of ``rules_kind``'s family the model scores best, when its chance under the model is over the
     model's margin, else the rules' answer; and that kind's chance. A polyline the rules read as a hurried check
     (`checked_point`) is not asked of the model."""
-    kinds = family(rules_kind)
+    kinds = family(rules_kind, phi)
     if not kinds or (rules_kind == "polyline" and checked_point(phi)):
         return rules_kind, 1.0
     scores = design(kinds, (phi[:len(FEATURES)] - model.mean) / model.std, rules_kind) @ model.theta
@@ -258,8 +272,12 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
            model: Model) -> Recognition:
     """``found`` (the rules' reading of the stroke), or the kind the model prefers with its geometry drawn from
     the stroke, the rules' kind then the first alternative."""
-    if found.kind is None or not family(found.kind):
+    if found.kind not in KINDS:
         return found
+    if found.kind == "polygon":  # most polygons are closed: asked only when open, measured before the features
+        unit = _unit_work(points, times)
+        if unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1]))):
+            return found
     kind, chance = choose(found.kind, features(points, times, noise), model)
     if kind == found.kind:
         return found
