@@ -74,20 +74,30 @@ def _right(row: dict, kind: str | None) -> bool:
     return kind in ACCEPTS[LABEL_CLASS[row["label"]]]
 
 
+RANKER_GAINS = {"s02/medium/question_mark04.xml", "s03/fast/right_curly_brace06.xml",
+                "s04/slow/right_curly_brace03.xml"}
+"""The people's strokes the shipped ranker was first shown to read right where the rules misread them."""
+
+
 def test_the_ranker_reads_right_what_the_rules_misread() -> None:
     """People's strokes (times kept) that the rules alone read wrong and the recogniser, with its learned ranker,
-    reads right: on the shipped model (fitted on these people among others) at least three, and none the other way
-    round. Without the ranker the two readings are the same and this fails."""
-    fixed, broken = [], []
+    reads right: on the shipped model (fitted on these people among others) every one of `RANKER_GAINS` is read right,
+    at least two of them only with the ranker's help (s02's question mark, whose one corner joins arms running on
+    in line, the rules read right themselves since issue 25's fourth pass), and none the other way round. Without
+    the ranker the two readings are the same and this fails."""
+    fixed, broken, right = [], [], set()
     for row in people_rows():
         points, times = _stroke(row)
         rules, learned = recognize_stroke(points, times, learned=False), recognize_stroke(points, times)
+        if _right(row, learned.kind):
+            right.add(row["file"])
         if _right(row, learned.kind) and not _right(row, rules.kind):
             fixed.append(row["file"])
             assert learned.geometry is not None and learned.alternatives[0][0] == rules.kind
         elif _right(row, rules.kind) and not _right(row, learned.kind):
             broken.append(row["file"])
-    assert len(fixed) >= 3, fixed
+    assert RANKER_GAINS <= right, RANKER_GAINS - right
+    assert len(fixed) >= 2, fixed
     assert not broken, broken
 
 

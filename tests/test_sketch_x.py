@@ -127,3 +127,29 @@ def test_a_hand_drawn_ball_two_platforms_and_basket_get_both_platforms_welded(se
     welds = [(c.a, c.b) for c in session.scene.components.values() if isinstance(c, Joint) and c.kind == "weld"]
     assert welds == [("b1", BACKGROUND), ("b2", BACKGROUND)]
     assert [b.shape for b in session.scene.bodies()] == ["polyline", "polyline", "circle", "polyline"]
+
+
+def test_both_arms_of_an_x_reach_the_recogniser_with_the_pens_times(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The X pairing reads each arm with the journal's times, as a lone stroke is read (so the learned ranker sees
+    the pen slow at corners in both paths, and a replay decides the same)."""
+    import physink_tui.scene.interpretation.x_pairing as x_pairing
+
+    seen: list[tuple[int, tuple[float, ...] | None]] = []
+    real = x_pairing.recognize_stroke
+
+    def spy(points, times=None, **kw):  # type: ignore[no-untyped-def]
+        seen.append((len(points), None if times is None else tuple(times)))
+        return real(points, times, **kw)
+
+    monkeypatch.setattr(x_pairing, "recognize_stroke", spy)
+    session = on_thin_platform()
+    first, second = hand_x("times", PLATFORM, 40.0)
+    one, two = canvas_stroke(1.0, first), canvas_stroke(2.0, second)
+    for entry in one + two:
+        session.handle(entry)
+    assert [c.kind for c in session.scene.components.values() if isinstance(c, Joint)] == ["weld"]
+    assert len(seen) == 2 and all(times is not None and len(times) == n for n, times in seen), seen
+    (_, a), (_, b) = seen
+    assert a is not None and b is not None
+    assert one[0].t <= a[0] and a[-1] <= one[-1].t < two[0].t <= b[0] and b[-1] <= two[-1].t
+    assert list(a) == sorted(a) and list(b) == sorted(b)

@@ -19,8 +19,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from physink_tui.scene.recognition.beautify import x_symbol
 from physink_tui.scene.recognition.primitives import Line, Recognition, XSymbol
-from physink_tui.scene.recognition.recognize import recognize_strokes
+from physink_tui.scene.recognition.recognize import recognize_stroke
 
 CORE = (0.2, 0.8)
 """The part of a stroke (shares of its path length) that must be straight: its ends may hook."""
@@ -84,13 +85,15 @@ def x_arm(points: Sequence[Sequence[float]], max_length: float = math.inf) -> Li
 
 
 def pair_x(first: Sequence[Sequence[float]], second: Sequence[Sequence[float]],
-           max_length: float = math.inf, noise: float = 1.0) -> Recognition | None:
+           max_length: float = math.inf, noise: float = 1.0,
+           times: tuple[Sequence[float] | None, Sequence[float] | None] = (None, None)) -> Recognition | None:
     """The X two consecutive strokes make, or None.
 
     The recogniser's own answer is taken when it finds an X; otherwise two arms (`x_arm`) that cross away from
     their ends at `MIN_ANGLE` degrees or more, neither more than `LENGTH_RATIO` times the other, make one. The first
     arm must be at most ``max_length`` long; the second at most `LENGTH_RATIO` times the first. ``noise`` is the
-    pen's jitter in the strokes' units (`recognize.recognize_stroke`).
+    pen's jitter in the strokes' units and ``times`` each stroke's point times in seconds, or None
+    (`recognize.recognize_stroke`: the pen's times, as sketch mode gives it for a lone stroke).
     """
     a = x_arm(first, max_length)
     if a is None:
@@ -98,14 +101,25 @@ def pair_x(first: Sequence[Sequence[float]], second: Sequence[Sequence[float]],
     b = x_arm(second, LENGTH_RATIO * math.dist(a.start, a.end))
     if b is None:
         return None
-    recognised = recognize_strokes([first, second], noise=noise)
-    if recognised.kind == "x":
+    recognised = _recognised_x(first, second, noise, times)
+    if recognised is not None:
         return recognised
     crossing = _crossing(a, b)
     if crossing is None:
         return None
     centre, confidence = crossing
     return Recognition("x", confidence, XSymbol(centre, a, b), (("line", 0.5),))
+
+
+def _recognised_x(first: Sequence[Sequence[float]], second: Sequence[Sequence[float]], noise: float,
+                  times: tuple[Sequence[float] | None, Sequence[float] | None]) -> Recognition | None:
+    """The recogniser's X (`recognize.recognize_strokes`' rule: two lines that make an X, `beautify.x_symbol`), each
+    stroke read with its own times; None when the recogniser finds no X."""
+    one, two = (recognize_stroke(points, at, noise=noise) for points, at in zip((first, second), times, strict=True))
+    if not (isinstance(one.geometry, Line) and isinstance(two.geometry, Line) and one.kind == two.kind == "line"):
+        return None
+    found = x_symbol(one.geometry, two.geometry)
+    return None if found is None else Recognition("x", found[1], found[0], (("line", 0.5),))
 
 
 def _crossing(a: Line, b: Line) -> tuple[tuple[float, float], float] | None:

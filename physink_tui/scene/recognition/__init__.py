@@ -42,8 +42,12 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    curve's, but three straight sides turning one way, a square bracket, may round theirs,
    `open_shapes._rounded_bracket`; with two or more corners, no main side bowed like a quarter circle,
    `open_shapes.BOWED_SIDE`; and no brace's tip, a short pointed excursion the stroke runs on in line through,
-   `open_shapes._brace_tip`: a brace or question mark drawn with a mouse is straight runs and cusps), an arc, or a
-   curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked polyline.
+   `open_shapes._brace_tip`: a brace or question mark drawn with a mouse is straight runs and cusps; nor one corner
+   between arms running on in line in a stroke turning both ways, `open_shapes._tip_in_line`), an arc, or a
+   curve of cubic pieces. A result outside the stroke's bounds falls back to the ranked polyline. Corners are found
+   at every sharp dip of a run of short straws (an arrow's head, a zig-zag's small teeth: `stroke_geometry.
+   find_corners(every_dip=True)`), and a one-corner stroke turning one way whose bend is short against the whole
+   stroke is sharp however short its arm (a tick, `open_shapes._short_bend`).
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),

@@ -39,9 +39,16 @@ BRACE_HEADING_DEG = 30.0
 BRACE_OFFSET = 0.2
 BRACE_TIP = 0.5
 """A brace's tip: two sides heading the same way (within `BRACE_HEADING_DEG`), the second starting within
-`BRACE_OFFSET` of the shorter's length from the first's line, joined by two sides out and back each under
-`BRACE_TIP` of the shorter. Drawn with a mouse a brace is straight runs and cusps; such a stroke is a curve (an
-arrow's head, a zigzag, a bracket turn away at their corners)."""
+`BRACE_OFFSET` of the shorter's length from the first's line, joined by one to three sides (out and back, or a jog where
+the tip's point was not found as a corner) each under `BRACE_TIP` of the shorter. Drawn with a mouse a brace is straight
+runs and cusps; such a stroke is a curve (an arrow's head, a zigzag, a bracket turn away at their corners)."""
+ARMS_IN_LINE = 45.0
+"""A one-corner stroke turning both ways whose arms' chords turn less than this (degrees) is a brace: its tip sticks
+out of a stroke that runs on in line (`_tip_in_line`)."""
+SHORT_BEND = 0.25
+"""A one-corner stroke turning one way bends within this share of its path (`_short_bend`): a tick's short first arm
+makes its corner look round against that arm (ahmadosama's ticks, klarubbio/s06's checks, 0.10-0.29 of the path);
+a question mark's curl read as one corner bends over 0.44 of it."""
 SMOOTH = 0.55
 """A path doing less than this share of its turning in its sharpest fifth turns smoothly: it has no corners to
 speak of (boxes ~0.9, stars and triangles over 0.6, circles ~0.3; `stroke_features.turn_concentration`)."""
@@ -90,7 +97,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     length = sg.path_length(work)
     th = sg.turning(work)
     total_turn = float(th.sum())
-    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    corners = sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), length)
     straight_runs = [straight(work[a:b + 1], noise) or sg.path_length(work[a:b + 1]) < 0.06 * length
                      for a, b in itertools.pairwise(corners)]
     coarse = sg.coarse_turning(work, noise)
@@ -103,10 +110,12 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-    sharp = (max(sf.corner_roundness(work, corners), default=0.0) <= round_corner
-             or _rounded_bracket(work, corners, straight_runs, noise))
+    roundness = sf.corner_roundness(work, corners)
+    sharp = (max(roundness, default=0.0) <= round_corner or _rounded_bracket(work, corners, straight_runs, noise)
+             or _short_bend(work, corners, roundness, noise))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
-            and not _brace_tip(work, corners) and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
+            and not _brace_tip(work, corners) and not _tip_in_line(work, corners, noise)
+            and (all(straight_runs) or _bent_polyline(work, th, corners, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
@@ -130,14 +139,34 @@ def _rounded_bracket(work: np.ndarray, corners: list[int], straight_runs: list[b
     return len(corners) == 4 and all(straight_runs) and len(sf.lobes(work, noise=noise)) == 1
 
 
+def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], noise: float) -> bool:
+    """Whether the stroke turns one way at its one corner (a tick, a check, a v) within `SHORT_BEND` of its path: the
+    bend may be as long as a short arm, as a question mark's curl is, but is short against the whole stroke."""
+    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) != 1:
+        return False
+    length = sg.path_length(work)
+    shorter = min(sg.path_length(work[: corners[1] + 1]), sg.path_length(work[corners[1]:]))
+    return roundness[0] * shorter < SHORT_BEND * length
+
+
+def _tip_in_line(work: np.ndarray, corners: list[int], noise: float) -> bool:
+    """Whether the stroke's one corner joins arms running on nearly in line (their chords within `ARMS_IN_LINE`
+    degrees) in a stroke that turns both ways: a brace's tip between curled ends, not a v's, check's or tick's point
+    (their arms meet at 55 degrees or more; s04's bowed checks are the closest)."""
+    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) < 2:
+        return False
+    u, v = work[corners[1]] - work[0], work[-1] - work[corners[1]]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    return norms > 0 and float(u @ v) > math.cos(math.radians(ARMS_IN_LINE)) * norms
+
+
 def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
-    """Whether the stroke runs on in line through a short pointed excursion of two sides (`BRACE_TIP`)."""
+    """Whether the stroke runs on in line through a short pointed excursion of one to three sides (`BRACE_TIP`)."""
     sides = np.diff(work[corners], axis=0)
     lengths = np.hypot(*sides.T)
-    for i in range(len(sides) - 3):
-        j = i + 3
+    for i, j in ((i, i + k) for k in (2, 3, 4) for i in range(len(sides) - k)):
         shorter = min(lengths[i], lengths[j])
-        if shorter == 0.0 or max(lengths[i + 1], lengths[i + 2]) >= BRACE_TIP * shorter:
+        if shorter == 0.0 or max(lengths[i + 1:j]) >= BRACE_TIP * shorter:
             continue
         u, v = sides[i] / lengths[i], sides[j] / lengths[j]
         rel = work[corners[j]] - work[corners[i + 1]]

@@ -94,12 +94,17 @@ def chord_deviation(pts: np.ndarray) -> float:
     return float(dev.max()) / chord
 
 
-def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3) -> list[int]:
+def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *, every_dip: bool = False,
+                 ) -> list[int]:
     """Corner indices of a resampled stroke (equal spacing), endpoints included.
 
     A candidate is a local minimum of the straw ``|p[i+w] - p[i-w]|`` below 95 % of the median
-    straw (ShortStraw). It is kept only if the path turns by at least ``min_turn_deg`` across it
-    (so gentle curves make no corners), and corners closer than ``window`` points merge.
+    straw (ShortStraw): the lowest of each run of short straws, and with ``every_dip`` each other dip in the run at
+    least ``window`` points from a lower one that turns the path by `DIP_TURN_DEG` (an arrow's head or a zig-zag's
+    small teeth, whose sides are shorter than the straw, make one run of short straws with a dip at each sharp corner;
+    a brace's tip, one run too, turns less where it leaves and rejoins the stroke). It is kept only if the path turns
+    by at least ``min_turn_deg`` across it (so gentle curves make no corners), and corners closer than ``window``
+    points merge.
     """
     n = len(pts)
     w = window
@@ -108,7 +113,7 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3) -
     straws = np.full(n, np.inf)
     straws[w:n - w] = np.hypot(*(pts[2 * w:] - pts[:n - 2 * w]).T)
     threshold = float(np.median(straws[w:n - w])) * 0.95
-    candidates = []
+    candidates: list[tuple[int, float]] = []  # a corner's index and the least it must turn (degrees)
     i = w
     while i < n - w:
         if straws[i] < threshold:
@@ -118,22 +123,41 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3) -
                 if straws[j] < straws[best]:
                     best = j
                 j += 1
-            candidates.append(best)
+            candidates.append((best, min_turn_deg))
+            if every_dip:
+                candidates += [(d, max(min_turn_deg, DIP_TURN_DEG)) for d in _dips(straws, i, j, w) if d != best]
             i = j
         else:
             i += 1
     th = turning(pts)  # th[k] is the turn at vertex k + 1
     corners = [0]
     reach = max(w, 2)
-    for c in candidates:
+    for c, least in sorted(candidates):
         lo, hi = max(c - reach, 1), min(c + reach, n - 2)
         turn = abs(float(np.sum(th[lo - 1:hi])))
-        if math.degrees(turn) >= min_turn_deg and c - corners[-1] >= w:
+        if math.degrees(turn) >= least and c - corners[-1] >= w:
             corners.append(c)
     if n - 1 - corners[-1] < w and len(corners) > 1:
         corners.pop()
     corners.append(n - 1)
     return _merge_collinear(pts, corners)
+
+
+DIP_TURN_DEG = 90.0
+"""How far the path must turn at a dip in a run of short straws that is not the run's lowest to be a corner too."""
+
+
+def _dips(straws: np.ndarray, lo: int, hi: int, w: int) -> list[int]:
+    """The local minima of ``straws[lo:hi]`` (a run of short straws), lowest first kept, none within ``w`` points of a
+    lower one kept before it; in path order."""
+    run = straws[lo:hi]
+    dips = [lo + k for k in range(len(run))
+            if (k == 0 or run[k] <= run[k - 1]) and (k == len(run) - 1 or run[k] <= run[k + 1])]
+    kept: list[int] = []
+    for d in sorted(dips, key=lambda d: (straws[d], d)):
+        if all(abs(d - k) >= w for k in kept):
+            kept.append(d)
+    return sorted(kept)
 
 
 def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) -> list[int]:

@@ -46,12 +46,13 @@ Points = list[tuple[float, float]]
 @dataclass(frozen=True, slots=True)
 class PendingStroke:
     """A possible half-X waiting for the next stroke: when it ended, its points (canvas units), what it is alone,
-    and how long (canvas units) an arm may be in an X it starts."""
+    how long (canvas units) an arm may be in an X it starts, and its points' times (the journal's, seconds)."""
 
     t: float
     points: tuple[tuple[float, float], ...]
     recognition: Recognition
     arm_limit: float = math.inf
+    times: tuple[float, ...] | None = None
 
 
 class SketchMode:
@@ -143,21 +144,22 @@ class SketchMode:
         if stroke.dwell_t is not None:
             return  # a drag after a dwell adjusted; it draws nothing
         points = [self._to_canvas(p.x, p.y) for p in stroke.points]
+        times = tuple(p.t for p in stroke.points)
         if stroke.eraser:
             self.flush(t)
             self._erase(points, t)
             return
         if self.pending is not None:
             pending, self.pending = self.pending, None
-            pair = pair_x(list(pending.points), points, pending.arm_limit, self._pen_noise())
+            pair = pair_x(list(pending.points), points, pending.arm_limit, self._pen_noise(), (pending.times, times))
             if pair is not None:
                 self._apply(pair, [list(pending.points), points], "X-symbol", t)
                 return
             self._apply(pending.recognition, [list(pending.points)], pending.recognition.kind or "stroke", t)
-        recognition = recognize_stroke(points, [p.t for p in stroke.points], noise=self._pen_noise())
+        recognition = recognize_stroke(points, times, noise=self._pen_noise())
         limit = self._x_arm_limit(points)
         if limit > 0.0:  # whatever the recogniser named it: a bowed or hooked half-X is seldom a clean line
-            self.pending = PendingStroke(t, tuple(points), recognition, limit)
+            self.pending = PendingStroke(t, tuple(points), recognition, limit, times)
             return
         self._apply(recognition, [points], recognition.kind or "stroke", t)
 
