@@ -292,3 +292,23 @@ def test_timeline_names_a_file_of_the_wrong_kind(tmp_path, capsys, source: Path 
     path.write_bytes(b"" if source is None else source.read_bytes())
     assert main(["timeline", str(path)]) == 1
     one_line_error(capsys.readouterr().err, str(path), fragment, "takes a timeline JSON file or a project")
+
+
+def test_recognize_reads_a_stroke_with_its_times_when_every_point_has_one(tmp_path, monkeypatch) -> None:
+    """`physink recognize` gives the recogniser the pen's times where every point of a stroke carries one (as sketch
+    mode does, so the learned ranker sees the pen slow at corners), and none where a point lacks its time."""
+    import physink_tui.scene.recognition.recognize as recognize
+
+    seen: list[list[float] | None] = []
+    real = recognize.recognize_stroke
+
+    def spy(points, times=None, **kw):  # type: ignore[no-untyped-def]
+        seen.append(None if times is None else list(times))
+        return real(points, times, **kw)
+
+    monkeypatch.setattr(recognize, "recognize_stroke", spy)
+    strokes = tmp_path / "s.jsonl"
+    strokes.write_text('{"strokes": [[[0, 0, 0.0], [10, 0, 0.01], [20, 0, 0.02], [30, 0, 0.03]]]}\n'
+                       '{"strokes": [[[0, 0, 0.0], [10, 0], [20, 0, 0.02], [30, 0, 0.03]]]}\n')
+    assert main(["recognize", str(strokes)]) == 0
+    assert seen == [[0.0, 0.01, 0.02, 0.03], None]

@@ -132,16 +132,16 @@ def test_a_hand_drawn_ball_two_platforms_and_basket_get_both_platforms_welded(se
 def test_both_arms_of_an_x_reach_the_recogniser_with_the_pens_times(monkeypatch: pytest.MonkeyPatch) -> None:
     """The X pairing reads each arm with the journal's times, as a lone stroke is read (so the learned ranker sees
     the pen slow at corners in both paths, and a replay decides the same)."""
-    import physink_tui.scene.interpretation.x_pairing as x_pairing
+    import physink_tui.scene.recognition.recognize as recognize
 
     seen: list[tuple[int, tuple[float, ...] | None]] = []
-    real = x_pairing.recognize_stroke
+    real = recognize.recognize_stroke
 
     def spy(points, times=None, **kw):  # type: ignore[no-untyped-def]
         seen.append((len(points), None if times is None else tuple(times)))
         return real(points, times, **kw)
 
-    monkeypatch.setattr(x_pairing, "recognize_stroke", spy)
+    monkeypatch.setattr(recognize, "recognize_stroke", spy)  # what `recognize_strokes` reads an X's arms with
     session = on_thin_platform()
     first, second = hand_x("times", PLATFORM, 40.0)
     one, two = canvas_stroke(1.0, first), canvas_stroke(2.0, second)

@@ -1,7 +1,8 @@
 """`physink recognize STROKES.jsonl`: one recognition per input line, as JSON Lines; the only place
 that turns primitives into JSON.
 
-Input lines are ``{"strokes": [[[x, y, t?], ...], ...]}`` (one stroke, or two for an X-symbol);
+Input lines are ``{"strokes": [[[x, y, t?], ...], ...]}`` (one stroke, or two for an X-symbol; a stroke whose every
+point carries ``t``, the pen's time, is read with its times, as sketch mode reads a stroke);
 output lines are ``{"kind", "confidence", "geometry", "alternatives"}`` plus ``"reason"`` when
 nothing was recognised. A malformed input line stops with its line number.
 """
@@ -116,7 +117,8 @@ def run(args: argparse.Namespace) -> int:
                 continue
             strokes = parse_line(text, path, lineno)
             points = [[p[:2] for p in s] for s in strokes]
-            result = (recognize_strokes(points, noise=noise) if points
+            times = [[p[2] for p in s] if s and all(len(p) > 2 for p in s) else None for s in strokes]
+            result = (recognize_strokes(points, noise=noise, times=times) if points
                       else Recognition(None, 0.0, None, (), "no strokes"))
             print(recognition_json(result))
     return 0

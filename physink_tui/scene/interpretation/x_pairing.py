@@ -19,9 +19,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from physink_tui.scene.recognition.beautify import x_symbol
 from physink_tui.scene.recognition.primitives import Line, Recognition, XSymbol
-from physink_tui.scene.recognition.recognize import recognize_stroke
+from physink_tui.scene.recognition.recognize import recognize_strokes
 
 CORE = (0.2, 0.8)
 """The part of a stroke (shares of its path length) that must be straight: its ends may hook."""
@@ -113,13 +112,10 @@ def pair_x(first: Sequence[Sequence[float]], second: Sequence[Sequence[float]],
 
 def _recognised_x(first: Sequence[Sequence[float]], second: Sequence[Sequence[float]], noise: float,
                   times: tuple[Sequence[float] | None, Sequence[float] | None]) -> Recognition | None:
-    """The recogniser's X (`recognize.recognize_strokes`' rule: two lines that make an X, `beautify.x_symbol`), each
-    stroke read with its own times; None when the recogniser finds no X."""
-    one, two = (recognize_stroke(points, at, noise=noise) for points, at in zip((first, second), times, strict=True))
-    if not (isinstance(one.geometry, Line) and isinstance(two.geometry, Line) and one.kind == two.kind == "line"):
-        return None
-    found = x_symbol(one.geometry, two.geometry)
-    return None if found is None else Recognition("x", found[1], found[0], (("line", 0.5),))
+    """The recogniser's X (`recognize.recognize_strokes`), each stroke read with its own times; None when the
+    recogniser finds no X."""
+    found = recognize_strokes((first, second), noise=noise, times=times)
+    return found if found.kind == "x" else None
 
 
 def _crossing(a: Line, b: Line) -> tuple[tuple[float, float], float] | None:

@@ -10,7 +10,10 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a stroke under three noise widths
    across is a dot (no kind).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
-   drawn past its start and comes back to it (cut there), or it goes round the same sides twice.
+   drawn past its start and comes back to it (cut there), or it goes round the same sides twice. Where neither end
+   comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook
+   and an overshoot both cut off); a loop so cut that is under half the stroke's size is an open mark's (an arrow's
+   head closed on its shaft, an x drawn as a loop between crossing tails), and the stroke is judged open.
 3. Closed strokes are **ranked**: `polygon_fit` finds, for every number of sides k = 3..10, the best k-gon by
    dynamic programming over candidate vertices (a short Douglas-Peucker pass for the big corners plus local peaks
    for small features such as a thin wall's end); each side is scored by its own total-least-squares line, and a
@@ -35,7 +38,10 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    A short side where the outline turns back sharply at one end and gently at the other, its neighbours' far ends
    apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
    winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
-   a delete mark whose ends happen to meet) is no outline: the stroke is judged open.
+   a delete mark whose ends happen to meet) is no outline: the stroke is judged open. A winning polygon of five
+   sides or more that its best four sides overlap by IoU >= 0.92 (`polygon_checks.BOX_OVERLAP`), when those four
+   make a box, is the box (a hook, a bowed side or a cut corner; a notch, T or L keeps its corners); a lumpy round
+   loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may.
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
@@ -65,7 +71,9 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
   ones (built only when the ranking reaches them), a circle or ellipse; a box placed where its four sides were drawn
 - `polygon_fit.py`: best k-gon / k-segment chain for every k: candidate vertices, per-run line costs from prefix
   sums, dynamic programming, vertices where sides meet
-- `polygon_checks.py`: whether a fit's vertices are real corners; flat ends for hairpins
+- `polygon_checks.py`: whether a fit's vertices are real corners; flat ends for hairpins; how much two outlines
+  overlap
+- `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter

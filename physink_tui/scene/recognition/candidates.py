@@ -60,18 +60,20 @@ class Pending:
         rss: their fit error, as `Candidate.rss`.
         params: the least complexity any of them has.
         build: makes them (possibly none, when the fit's corners are not real ones).
+        fits: the polygonal fits they would be built from, least error first (none for other kinds).
     """
 
     rss: float
     params: int
     build: Callable[[], list[Candidate]]
+    fits: tuple[PolygonFit, ...] = ()
 
 
 def polygonal(work: np.ndarray, *, closed: bool, tolerance: float, noise: float) -> list[Pending]:
     """Lines, polylines, boxes and polygons: the best chain of sides for each number of sides, to be built."""
     fits = best_polygons(work, closed=closed, max_sides=MAX_SIDES, tolerance=tolerance)
     return [Pending(tried[0].rss, 2 * k if closed else 2 * (k + 1),
-                    functools.partial(_build_polygonal, k, tried, closed, noise))
+                    functools.partial(_build_polygonal, k, tried, closed, noise), tuple(tried))
             for k, tried in sorted(fits.items())]
 
 

@@ -9,9 +9,11 @@ these a fit passes; `split_hairpins` turns each doubled-back vertex into that fl
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, run_lines
 
@@ -37,6 +39,39 @@ side by side)."""
 BOW_SHARE = 0.06
 """Most points of a side (four in five) lie within this share of its length (plus the pen's noise) of the
 side's own line: a side bowed by more than about 15 % of its length is a curve, not a side."""
+
+
+BOX_OVERLAP = 0.92
+"""A polygon of five sides or more is a four-sided one drawn by a hurried hand when its best four sides overlap it by
+this much (intersection over union): a hook, a bowed side or a cut corner changes a quad's area by a few per cent.
+Above the 0.90 an outline must keep (issue 25): a notched slab, a T, an L or a golf tee keeps its corners."""
+
+
+def crossings(vertices: Sequence[tuple[float, float]] | np.ndarray) -> int:
+    """How many times a closed outline's sides cross one another (a star drawn in one stroke: five times; a box
+    whose hook's spike crosses a side: once)."""
+    a = np.asarray(vertices, dtype=float)
+    b = np.roll(a, -1, axis=0)
+    m = len(a)
+    i, j = np.triu_indices(m, 2)
+    keep = ~((i == 0) & (j == m - 1))  # the last side meets the first at a vertex
+    i, j = i[keep], j[keep]
+
+    def side(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> np.ndarray:
+        u, w = q - p, r - p
+        turn: np.ndarray = np.sign(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
+        return turn
+
+    apart_j = side(a[i], b[i], a[j]) * side(a[i], b[i], b[j]) < 0
+    apart_i = side(a[j], b[j], a[i]) * side(a[j], b[j], b[i]) < 0
+    return int(np.count_nonzero(apart_i & apart_j))
+
+
+def overlap(a: Sequence[tuple[float, float]] | np.ndarray, b: Sequence[tuple[float, float]] | np.ndarray) -> float:
+    """Intersection over union of two closed outlines given by their vertices (0 when either has no area)."""
+    pa, pb = shapely.make_valid(shapely.Polygon(a)), shapely.make_valid(shapely.Polygon(b))
+    union = float(shapely.union(pa, pb).area)
+    return float(shapely.intersection(pa, pb).area) / union if union > 0 else 0.0
 
 
 @dataclass(frozen=True, slots=True)

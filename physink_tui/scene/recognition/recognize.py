@@ -30,6 +30,8 @@ from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import helix_or_scribble
+from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
+from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
 from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
@@ -114,13 +116,18 @@ def _point(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: float = PEN_NOISE) -> Recognition:
-    """One stroke, or two consecutive strokes that may be an X-symbol (thesis 3.2.1)."""
+def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: float = PEN_NOISE,
+                      times: Sequence[Sequence[float] | None] | None = None) -> Recognition:
+    """One stroke, or two consecutive strokes that may be an X-symbol (thesis 3.2.1); ``times``, where given, holds
+    each stroke's point times in seconds or None (`recognize_stroke`)."""
+    at = list(times) if times is not None else [None] * len(strokes)
+    if len(at) != len(strokes):
+        raise ValueError(f"recognize_strokes: {len(strokes)} strokes but {len(at)} lists of times")
     if len(strokes) == 1:
-        return recognize_stroke(strokes[0], noise=noise)
+        return recognize_stroke(strokes[0], at[0], noise=noise)
     if len(strokes) != 2:
         return Recognition(None, 0.0, None, (), f"expected one stroke or two (an X), got {len(strokes)}")
-    first, second = recognize_stroke(strokes[0], noise=noise), recognize_stroke(strokes[1], noise=noise)
+    first, second = (recognize_stroke(points, when, noise=noise) for points, when in zip(strokes, at, strict=True))
     if (first.kind == "line" and second.kind == "line" and isinstance(first.geometry, Line)
             and isinstance(second.geometry, Line)):
         x = x_symbol(first.geometry, second.geometry)
@@ -188,14 +195,36 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if not closed:
         return _open_reading(raw, work, n, noise, sigma, weights, diag)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    if _lumpy_round(loop, noise):
+    lumpy = _lumpy_round(loop, noise)
+    if lumpy:
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
     candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
-    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop)
+    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
+                   round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
+    ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
         return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag)
     return _or_freeform(ranked, loop, closed=True, sigma=sigma)
+
+
+def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray, noise: float, diag: float,
+                  loop: np.ndarray) -> Recognition:
+    """A polygon of five sides or more that its best four sides cover nearly as drawn (`polygon_checks.BOX_OVERLAP`),
+    when those four make a box: a box with a hook, a bowed side or a cut corner, read as the box."""
+    if not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 5:
+        return ranked
+    drawn = ranked.geometry.points
+    if crossings(drawn) > 1:
+        return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
+    quads = [p for p in polygons if p.params == 8 and any(overlap(f.vertices, drawn) >= BOX_OVERLAP for f in p.fits)]
+    lo, hi = _bounds(raw, noise, diag)  # built only where a four-sided fit covers it (judging corners costs more)
+    for box in (c for p in quads for c in p.build() if c.kind == "box"):
+        if (_inside(box.geometry, lo, hi) and _keeps_the_outline(box, loop)
+                and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
+                and overlap(box.fallback.geometry.points, drawn) >= BOX_OVERLAP):
+            return Recognition("box", ranked.confidence, box.geometry, (("polygon", 1.0 - ranked.confidence),))
+    return ranked
 
 
 def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,
@@ -275,15 +304,18 @@ def _score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> fl
 
 
 def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
-          noise: float, diag: float, fitted: np.ndarray | None = None) -> Recognition:
+          noise: float, diag: float, fitted: np.ndarray | None = None, round_share: float = BOUNDS_MARGIN,
+          ) -> Recognition:
     """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
     as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
-    once what is left could not change the answer or its alternatives."""
+    once what is left could not change the answer or its alternatives. An ellipse may reach ``round_share`` of
+    the diagonal past the bounds (a lumpy loop's flat stretch: `LUMPY_SIDES`; a circle rounded off from it may not)."""
     heap: list[tuple[float, int, Candidate | Pending]] = []
     for c in candidates:
         if math.isfinite(c.rss):
             heapq.heappush(heap, (_score(c, n, sigma, weights), len(heap), c))
     lo, hi = _bounds(raw, noise, diag)
+    round_lo, round_hi = _bounds(raw, noise, diag, round_share)
     kept: list[tuple[float, Candidate]] = []
     seq = len(heap)
     while heap:
@@ -294,7 +326,7 @@ def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weigh
             for built in c.build():
                 seq += 1
                 heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
-        elif not _inside(c.geometry, lo, hi):
+        elif not (_inside(c.geometry, round_lo, round_hi) if c.kind == "ellipse" else _inside(c.geometry, lo, hi)):
             if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
                 seq += 1
                 heapq.heappush(heap, (score, seq, c.fallback))
@@ -364,12 +396,12 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
     d_head = np.hypot(*(head - work[-1]).T)
     if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit:
         return False, work
-    loop = work
-    if float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < len(tail) - 2:
-        loop = work[: n // 2 + int(d_tail.argmin()) + 1]  # drawn past the start
-    elif float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1:
-        loop = work[int(d_head.argmin()):]  # started before where it ends
-    return True, (loop if len(loop) >= 8 else work)
+    loop = cut_ends(work, gap, d_tail, d_head)
+    if len(loop) < 8:
+        return True, work
+    if sg.bbox_diagonal(loop) < SMALL_LOOP * diag:
+        return False, work  # a loop on a long shaft or between long tails: an arrow's closed head, an x drawn round
+    return True, loop
 
 
 CLOSED_GAP = 0.2
