@@ -274,10 +274,8 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     the stroke, the rules' kind then the first alternative."""
     if found.kind not in KINDS:
         return found
-    if found.kind == "polygon":  # most polygons are closed: asked only when open, measured before the features
-        unit = _unit_work(points, times)
-        if unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1]))):
-            return found
+    if found.kind == "polygon" and not _open_before_features(points, times):
+        return found
     kind, chance = choose(found.kind, features(points, times, noise), model)
     if kind == found.kind:
         return found
@@ -288,6 +286,22 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     raw, _, _, diag = unit
     return Recognition(kind, round(chance, 4), scale_geometry(shape, raw.mean(axis=0), diag),
                        ((found.kind, round(1.0 - chance, 4)),))
+
+
+def _open_before_features(points: Sequence[Sequence[float]], times: Sequence[float] | None) -> bool:
+    """Whether a polygon is open enough to ask (`open_polygon`), measured before its features: most polygons are
+    closed. A stroke whose ends are under half `OPEN_GAP` of its size apart is closed without more work: resampling
+    and smoothing keep its ends and only shrink its size, so its closure could reach `OPEN_GAP` only were its size
+    halved by smoothing."""
+    try:
+        pts = np.asarray(points, dtype=float)[:, :2]
+    except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
+        pts = np.asarray([p[:2] for p in points], dtype=float)
+    size = sg.bbox_diagonal(pts) if len(pts) >= 2 and np.isfinite(pts).all() else 0.0
+    if size == 0.0 or float(np.hypot(*(pts[-1] - pts[0]))) < 0.5 * OPEN_GAP * size:
+        return False
+    unit = _unit_work(points, times)
+    return unit is not None and open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))
 
 
 def geometry(kind: str, work: np.ndarray) -> Geometry | None:
