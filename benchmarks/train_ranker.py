@@ -1,20 +1,20 @@
 """Trains and measures the learned ranker (`recognition.ranker`) leave one source out, beside today's rules.
 
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--heldback] [--write PATH] [--lam L] [--no-gate]
-       [--inner K]
+       [--inner K] [--weigh W]
 
-For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve
-(`ranker.KINDS`) the ranker scores both by ``w_kind . phi + a * [the rules' answer]`` over standardised features
-(`ranker.features`). The weights are fitted by conditional-logit maximum likelihood (Newton steps on the likelihood's
-Fisher matrix, L2 penalty `LAMBDA`, fixed beforehand, not tuned). The model's kind replaces the rules' only when its
-chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources the model is fitted on. Design
-folds: each source not held back is scored by a model (and margin) fitted on the other design sources only. The first
-held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given; the
-second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``; each group is then
-scored per source and per class, apart, by a model fitted on the design sources. ``--write`` fits on every source
-given but the second held-back group (the margin chosen by leave-one-source-out over them) and writes the model as the
-Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
-~/.cache/physink/ under a key of the rows and the recognition package's source.
+For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve, or
+a polygon left open (`ranker.family`), the ranker scores the family's kinds by ``w_kind . phi + a * [the rules'
+answer]`` over standardised features (`ranker.features`). The weights are fitted by conditional-logit maximum likelihood
+(Newton steps on the likelihood's Fisher matrix, L2 penalty `LAMBDA`, fixed beforehand, not tuned). The model's kind
+replaces the rules' only when its chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources
+the model is fitted on. Design folds: each source not held back is scored by a model (and margin) fitted on the other
+design sources only. The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or
+``--write`` is given; the second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``;
+each group is then scored per source and per class, apart, by a model fitted on the design sources. ``--write`` fits on
+every source given but the second held-back group (the margin chosen by leave-one-source-out over them) and writes the
+model as the Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features
+are kept in ~/.cache/physink/ under a key of the rows and the recognition package's source.
 """
 
 from __future__ import annotations
@@ -49,6 +49,15 @@ def stroke_times(stroke: list) -> list[float] | None:
     return None
 
 
+def device_of(row: Row) -> str:
+    """The kind of pen a row was drawn with, for ``--weigh device``: a stylus (the $1 people of ../shared, the MMG
+    set's stylus people), touch (a finger, a touch screen or a touchpad) or a mouse (the rest)."""
+    device = str(row.get("device") or "")
+    if row["source"] == "dollar1" or device == "stylus" or device.startswith("stylus on"):
+        return "stylus"
+    return "touch" if device in ("finger", "touchpad") or device.startswith("finger on") else "mouse"
+
+
 def describe(rows: list[Row]) -> dict:
     """Per stroke: the rules' kind (without the learned ranker), the features, which family kinds are right;
     kept in ~/.cache/physink/ under a key of the rows and the recognition package's source."""
@@ -75,8 +84,8 @@ def _describe(rows: list[Row]) -> dict:
         kind = recognize_stroke([p[:2] for p in stroke], times, learned=False).kind
         rules.append(kind)
         phi.append(ranker.features(stroke, times))
-        right.append(np.array([k in row["accepts"] for k in ranker.family(kind)] + [False] * (WIDTH - len(
-            ranker.family(kind))), dtype=bool))
+        kinds = ranker.family(kind, phi[-1])
+        right.append(np.array([k in row["accepts"] for k in kinds] + [False] * (WIDTH - len(kinds)), dtype=bool))
     return {"rules": rules, "phi": np.array(phi), "right": np.array(right),
             "rules_right": np.array([k in r["accepts"] for k, r in zip(rules, rows, strict=True)])}
 
@@ -86,16 +95,19 @@ def tensors(d: dict, idx: np.ndarray, mean: np.ndarray, std: np.ndarray) -> tupl
     x = np.zeros((len(idx), WIDTH, p))
     mask = np.zeros((len(idx), WIDTH), dtype=bool)
     for j, i in enumerate(idx):
-        kinds = ranker.family(d["rules"][i])
+        kinds = ranker.family(d["rules"][i], d["phi"][i])
         x[j, :len(kinds)] = ranker.design(kinds, (d["phi"][i, :len(ranker.FEATURES)] - mean) / std, d["rules"][i])
         mask[j, :len(kinds)] = True
     return x, mask
 
 
-def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: int = 40) -> np.ndarray:
-    """Conditional-logit weights maximising the mean log chance of a right kind, minus ``lam / 2 |theta|^2``."""
+def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: int = 40,
+        weight: np.ndarray | None = None) -> np.ndarray:
+    """Conditional-logit weights maximising the mean log chance of a right kind (weighted by ``weight`` when given),
+    minus ``lam / 2 |theta|^2``."""
     theta = np.zeros(x.shape[2])
     theta[-1] = 1.0
+    w = np.full(len(x), 1.0 / len(x)) if weight is None else weight / weight.sum()
 
     def loss(t: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
         s = np.where(mask, (x.reshape(-1, x.shape[2]) @ t).reshape(mask.shape), -np.inf)
@@ -103,17 +115,17 @@ def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: i
         e = np.exp(s)
         p = e / e.sum(axis=1, keepdims=True)
         pr = np.where(right, p, 0.0).sum(axis=1)
-        nll = -float(np.log(np.maximum(pr, 1e-300)).mean()) + 0.5 * lam * float(t @ t)
+        nll = -float(w @ np.log(np.maximum(pr, 1e-300))) + 0.5 * lam * float(t @ t)
         return nll, p, pr
 
     for _ in range(steps):
         nll, p, pr = loss(theta)
         q = np.where(right, p, 0.0) / np.maximum(pr, 1e-300)[:, None]
         ex = (p[:, :, None] * x).sum(axis=1)
-        grad = (ex - (q[:, :, None] * x).sum(axis=1)).mean(axis=0) + lam * theta
-        centred = (x - ex[:, None, :]) * np.sqrt(p)[:, :, None]
+        grad = w @ (ex - (q[:, :, None] * x).sum(axis=1)) + lam * theta
+        centred = (x - ex[:, None, :]) * np.sqrt(p * w[:, None])[:, :, None]
         flat = centred.reshape(-1, x.shape[2])
-        hess = flat.T @ flat / len(x) + lam * np.eye(len(theta))
+        hess = flat.T @ flat + lam * np.eye(len(theta))
         step = np.linalg.solve(hess, grad)
         rate = 1.0
         while rate > 1e-4 and loss(theta - rate * step)[0] > nll:
@@ -124,28 +136,37 @@ def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: i
     return theta
 
 
-def model(d: dict, idx: np.ndarray, lam: float) -> dict:
-    """A model fitted on the strokes ``idx`` whose family holds a right kind."""
+def model(d: dict, idx: np.ndarray, lam: float, groups: np.ndarray | None = None) -> dict:
+    """A model fitted on the strokes ``idx`` whose family holds a right kind; each stroke weighs the same, or, given
+    ``groups`` (one name a stroke), each group does."""
     use = idx[d["right"][idx].any(axis=1)]
-    phi = d["phi"][use, :len(ranker.FEATURES)]  # the guards' measures (`ranker.GUARDS`) are not weighed
+    phi = d["phi"][use, :len(ranker.FEATURES)]
     mean = phi.mean(axis=0)
     std = np.where(phi.std(axis=0) > 1e-9, phi.std(axis=0), 1.0)
     x, mask = tensors(d, use, mean, std)
-    return {"theta": fit(x, mask, d["right"][use], lam), "mean": mean, "std": std, "lam": lam, "margin": 0.5}
+    weight = None if groups is None else group_weights(groups[use])
+    return {"theta": fit(x, mask, d["right"][use], lam, weight=weight), "mean": mean, "std": std, "lam": lam,
+            "margin": 0.5}
+
+
+def group_weights(groups: np.ndarray) -> np.ndarray:
+    """Each stroke's weight in the likelihood when every group (a source, or a device) weighs the same."""
+    count = Counter(groups.tolist())
+    return np.array([1.0 / count[g] for g in groups.tolist()])
 
 
 def gated_model(d: dict, idx: np.ndarray, sources: np.ndarray, rows: list[Row], lam: float,
-                inner: int | None = None) -> dict:
+                inner: int | None = None, groups: np.ndarray | None = None) -> dict:
     """A model fitted on ``idx`` whose margin (`MARGINS`: how sure it must be to overrule the rules) is chosen by
     leave-one-source-out within ``idx`` only (most right answers pooled; ties to the larger margin), or, with
     ``inner`` K, by K folds of whole sources (`inner_folds`) when the sources are many."""
     got = Counter()
     for held in inner_folds(sorted(set(sources[idx])), inner):
         out = np.isin(sources[idx], held)
-        fold = model(d, idx[~out], lam)
+        fold = model(d, idx[~out], lam, groups)
         for margin in MARGINS:
             got[margin] += int(answers(d, idx[out], fold, rows, margin).sum())
-    m = model(d, idx, lam)
+    m = model(d, idx, lam, groups)
     m["margin"] = max(MARGINS, key=lambda v: (got[v], v))
     return m
 
@@ -208,6 +229,8 @@ def main() -> None:
     ap.add_argument("--no-gate", action="store_true", help="overrule the rules at any margin (0.5)")
     ap.add_argument("--inner", type=int, help="choose the margin by this many folds of whole sources instead of "
                     "leave-one-source-out (many sources: the fits grow with their square)")
+    ap.add_argument("--weigh", choices=("stroke", "source", "device"), default="stroke", help="what weighs the same "
+                    "in the likelihood: every stroke (the shipped recipe), every source or every device (`device_of`)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     args = ap.parse_args()
     rows: list[Row] = []
@@ -223,11 +246,13 @@ def main() -> None:
     group = first | new
     sources = np.array([source_of(r, "person") for r in rows])
     d = describe(rows)
+    groups = {"stroke": None, "source": sources, "device": np.array([device_of(r) for r in rows])}[args.weigh]
     design_idx = np.flatnonzero(~np.isin(sources, sorted(group)))
     lams = [float(v) for v in args.lam.split(",")]
 
     def fitted(idx: np.ndarray, lam: float) -> dict:
-        return model(d, idx, lam) if args.no_gate else gated_model(d, idx, sources, rows, lam, args.inner)
+        return (model(d, idx, lam, groups) if args.no_gate
+                else gated_model(d, idx, sources, rows, lam, args.inner, groups))
 
     print(f"## Learned ranker ({machine()})\n")
     for lam in lams:

@@ -56,11 +56,13 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    stroke is sharp however short its arm (a tick, `open_shapes._short_bend`), its short arm may bow into the corner
    (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
    not a hook cut where the pen landed (`stroke_geometry.end_arm`).
-5. A polyline or a curve so read is re-ranked by a learned model (`ranker`, issue 25): a conditional logit over the
-   two kinds on the stroke's geometric features (and the rules' own tests), fitted offline on people's strokes by
-   `benchmarks/train_ranker.py`, shipped in the package as the data module `ranker_model`; it overrules the rules
-   only when it gives the other kind a chance over its margin. Other kinds are left to the rules, and so is the
-   rules' hurried check (one really sharp, off-centre corner in at most three lobes: `ranker.checked_point`).
+5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
+   a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
+   logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
+   fitted offline on people's strokes by `benchmarks/train_ranker.py`, shipped in the package as the data module
+   `ranker_model`; it overrules the rules only when it gives another kind a chance over its margin. Other kinds are
+   left to the rules, and so is the rules' hurried check (one really sharp, off-centre corner in at most three
+   lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)

@@ -28,27 +28,42 @@ from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometr
 from physink_tui.scene.recognition.primitives import Geometry, Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_circle, fit_ellipse, fit_line
 
-KINDS = ("polyline", "curve")
-"""The kinds re-ranked: an open stroke of straight sides or of bends, the people's sets' most telling disagreement
-(braces and question marks drawn with a mouse are straight runs and cusps; checks drawn fast have bowed arms). An
-arc, a box, a polygon or a round shape is left to the rules: the sets label no arc, and label trapezoids and
-parallelograms "rectangle", against the outline kept as drawn (issue 25), so a model fitted on them would learn
-to turn every arc into a curve and every trapezoid into a box."""
+KINDS = ("polyline", "curve", "polygon")
+"""The kinds re-ranked (`family`): an open stroke of straight sides or of bends, the people's sets' most telling
+disagreement (braces and question marks drawn with a mouse are straight runs and cusps; checks drawn fast have bowed
+arms); and a polygon whose ends stay apart (`OPEN_GAP`: a caret, a v, an arrow or a brace the rules closed), which
+may be re-read as either, never as a box. An arc, a box, a closed polygon or a round shape is left to the rules: the
+sets label no arc, and label trapezoids and parallelograms "rectangle", against the outline kept as drawn (issue
+25), so a model fitted on them would learn to turn every arc into a curve and every trapezoid into a box."""
+OPEN_GAP = 0.2
+"""A polygon whose ends are at least this share of its size apart (`stroke_features.closure`; the rules' own closing
+gap, `recognize.CLOSED_GAP`) may be an open mark: the model is asked."""
 FEATURES = ("closure", "ink", "net_turn", "abs_turn", "corners", "concentration", "max_roundness",
             "mean_roundness", "straight_share", "max_bow", "mean_bow", "max_corner_turn", "min_corner_turn",
             "lobes", "ellipse_error", "circle_error", "aspect", "line_error", "corner_share", "one_way",
             "max_bend", "sparse", "one_corner", "two_corners", "all_straight", "bent_polyline", "brace_tip",
-            "bowed_between", "rounded_bracket", "has_times", "corner_slowdown")
-GUARDS = ("point_balance",)
-"""Measures `features` returns after `FEATURES` that the model does not weigh: the rules' guards (`checked_point`)."""
+            "bowed_between", "rounded_bracket", "has_times", "corner_slowdown", "point_balance")
 WORK_POINTS = 64
 CHECK_ARMS = 2 / 3
 """A check's short arm is at most this share of its long arm (`checked_point`)."""
+CHECK_POINT_SHARE = 1 / 3
+"""A check whose hump starts at a second, weaker corner turns at least this share of all its turning at its point
+(`checked_point`); a brace's tip or a question mark's bend less (0.22-0.32 of those the model rightly re-reads)."""
 
 
-def family(kind: str | None) -> tuple[str, ...]:
-    """The kinds a stroke read as ``kind`` may be re-ranked among (none but for `KINDS`)."""
-    return KINDS if kind in KINDS else ()
+def family(kind: str | None, phi: np.ndarray) -> tuple[str, ...]:
+    """The kinds a stroke read as ``kind``, with features ``phi``, may be re-ranked among (`KINDS`), the rules' first
+    for a polygon; none for other kinds."""
+    if kind in ("polyline", "curve"):
+        return ("polyline", "curve")
+    if kind == "polygon" and open_polygon(float(phi[FEATURES.index("closure")])):
+        return ("polygon", "polyline", "curve")
+    return ()
+
+
+def open_polygon(closure: float) -> bool:
+    """Whether a polygon whose ends are ``closure`` (`stroke_features.closure`) apart is open enough to ask."""
+    return closure >= OPEN_GAP
 
 
 MODEL_MODULE = "physink_tui/scene/recognition/ranker_model.py"
@@ -123,9 +138,8 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
 
 
 def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
-    """The stroke's features (`FEATURES`, then `GUARDS`), size-free; ``noise`` is the pen's jitter in the points'
-    units."""
-    out = np.zeros(len(FEATURES) + len(GUARDS))
+    """The stroke's features (`FEATURES`), size-free; ``noise`` is the pen's jitter in the points' units."""
+    out = np.zeros(len(FEATURES))
     found = _unit_work(points, times)
     if found is None:
         return out
@@ -162,7 +176,8 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
         point_balance(work, corners, turns)]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
-        out[len(FEATURES) - 2:len(FEATURES)] = [1.0, slow]
+        at = FEATURES.index("has_times")
+        out[at:at + 2] = [1.0, slow]
     return np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
 
 
@@ -224,7 +239,7 @@ def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
     """The kind of ``rules_kind``'s family the model scores best, when its chance under the model is over the
     model's margin, else the rules' answer; and that kind's chance. A polyline the rules read as a hurried check
     (`checked_point`) is not asked of the model."""
-    kinds = family(rules_kind)
+    kinds = family(rules_kind, phi)
     if not kinds or (rules_kind == "polyline" and checked_point(phi)):
         return rules_kind, 1.0
     scores = design(kinds, (phi[:len(FEATURES)] - model.mean) / model.std, rules_kind) @ model.theta
@@ -238,21 +253,28 @@ def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
 
 
 def checked_point(phi: np.ndarray) -> bool:
-    """Whether the stroke turns at one really sharp corner (`open_shapes.VERY_SHARP_CORNER`) in at most three lobes:
-    the rules' hurried check, whose arms may bow. The rules read it as a polyline on purpose; a model fitted on
-    people who draw checks with straight arms reads bowed arms as a curve's, so it is not asked."""
+    """Whether the stroke turns at one really sharp corner (`open_shapes.VERY_SHARP_CORNER`), off-centre (a short arm
+    and a long one, `CHECK_ARMS`), in at most three lobes: the rules' hurried check, whose arms may bow; also when a
+    second, weaker corner marks where a bowed arm's hump starts, so long as the point holds `CHECK_POINT_SHARE` of
+    all the stroke's turning. The rules read it as a polyline on purpose; a model fitted on people who draw checks
+    with straight arms reads bowed arms as a curve's, so it is not asked."""
     corners = round(float(phi[FEATURES.index("corners")]) * 8)
     turn = float(phi[FEATURES.index("max_corner_turn")]) * 180.0
     lobes = round(float(phi[FEATURES.index("lobes")]) * 4)
-    balance = float(phi[len(FEATURES) + GUARDS.index("point_balance")])
-    return corners == 1 and turn >= open_shapes.VERY_SHARP_CORNER and lobes <= 3 and balance <= CHECK_ARMS
+    balance = float(phi[FEATURES.index("point_balance")])
+    if turn < open_shapes.VERY_SHARP_CORNER or lobes > 3 or balance > CHECK_ARMS:
+        return False
+    whole = float(phi[FEATURES.index("abs_turn")]) * 360.0
+    return corners == 1 or (corners == 2 and turn >= CHECK_POINT_SHARE * whole)
 
 
 def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,
            model: Model) -> Recognition:
     """``found`` (the rules' reading of the stroke), or the kind the model prefers with its geometry drawn from
     the stroke, the rules' kind then the first alternative."""
-    if found.kind is None or not family(found.kind):
+    if found.kind not in KINDS:
+        return found
+    if found.kind == "polygon" and not _open_before_features(points, times):
         return found
     kind, chance = choose(found.kind, features(points, times, noise), model)
     if kind == found.kind:
@@ -264,6 +286,22 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     raw, _, _, diag = unit
     return Recognition(kind, round(chance, 4), scale_geometry(shape, raw.mean(axis=0), diag),
                        ((found.kind, round(1.0 - chance, 4)),))
+
+
+def _open_before_features(points: Sequence[Sequence[float]], times: Sequence[float] | None) -> bool:
+    """Whether a polygon is open enough to ask (`open_polygon`), measured before its features: most polygons are
+    closed. A stroke whose ends are under half `OPEN_GAP` of its size apart is closed without more work: resampling
+    and smoothing keep its ends and only shrink its size, so its closure could reach `OPEN_GAP` only were its size
+    halved by smoothing."""
+    try:
+        pts = np.asarray(points, dtype=float)[:, :2]
+    except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
+        pts = np.asarray([p[:2] for p in points], dtype=float)
+    size = sg.bbox_diagonal(pts) if len(pts) >= 2 and np.isfinite(pts).all() else 0.0
+    if size == 0.0 or float(np.hypot(*(pts[-1] - pts[0]))) < 0.5 * OPEN_GAP * size:
+        return False
+    unit = _unit_work(points, times)
+    return unit is not None and open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))
 
 
 def geometry(kind: str, work: np.ndarray) -> Geometry | None:
