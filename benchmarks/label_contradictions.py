@@ -27,7 +27,7 @@ import argparse
 import itertools
 import math
 from collections import Counter
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
@@ -64,9 +64,8 @@ def zigzag(points: Sequence[Sequence[float]]) -> bool:
     return all(abs(t) > 90.0 for t in turns) and all(a * b < 0 for a, b in itertools.pairwise(turns))
 
 
-def crosses_itself(points: Sequence[Sequence[float]]) -> bool:
-    """Whether the stroke, resampled to `POINTS` points, crosses itself (two sides not next to each other meet)."""
-    p = template(points)
+def _crossings(p: np.ndarray) -> Iterator[tuple[int, np.ndarray]]:
+    """For each side ``i`` of the polyline ``p``, the later sides (counted from ``i + 2``) that cross it."""
     a, d = p[:-1], np.diff(p, axis=0)
     for i in range(len(a) - 2):
         r = a[i + 2:] - a[i]
@@ -74,26 +73,18 @@ def crosses_itself(points: Sequence[Sequence[float]]) -> bool:
         with np.errstate(divide="ignore", invalid="ignore"):
             t = (r[:, 0] * d[i + 2:, 1] - r[:, 1] * d[i + 2:, 0]) / den
             u = (r[:, 0] * d[i, 1] - r[:, 1] * d[i, 0]) / den
-        if bool(np.any((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1))):
-            return True
-    return False
+        yield i, np.flatnonzero((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1))
+
+
+def crosses_itself(points: Sequence[Sequence[float]]) -> bool:
+    """Whether the stroke, resampled to `POINTS` points, crosses itself (two sides not next to each other meet)."""
+    return any(len(hits) for _, hits in _crossings(template(points)))
 
 
 def loop_share(points: Sequence[Sequence[float]]) -> float:
     """The largest share of the stroke's path (resampled to `POINTS` points) that runs between two of its sides
     crossing: 0 for a stroke that does not cross itself; a pigtail's loop, a star's, or a hook's small curl."""
-    p = template(points)
-    a, d = p[:-1], np.diff(p, axis=0)
-    best = 0
-    for i in range(len(a) - 2):
-        r = a[i + 2:] - a[i]
-        den = d[i, 0] * d[i + 2:, 1] - d[i, 1] * d[i + 2:, 0]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = (r[:, 0] * d[i + 2:, 1] - r[:, 1] * d[i + 2:, 0]) / den
-            u = (r[:, 0] * d[i, 1] - r[:, 1] * d[i, 0]) / den
-        hits = np.flatnonzero((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1))
-        if len(hits):
-            best = max(best, 2 + int(hits[-1]))
+    best = max((2 + int(hits[-1]) for _, hits in _crossings(template(points)) if len(hits)), default=0)
     return best / (POINTS - 1)
 
 
