@@ -109,6 +109,13 @@ def _curve_loving_model() -> ranker.Model:
     return ranker.Model(theta, shipped.mean, shipped.std, shipped.margin)
 
 
+def _named_strokes(files: set[str]) -> list[tuple[str, tuple[list[list[float]], list[float] | None]]]:
+    """The people's strokes of these files (every one must be found), with their points and times."""
+    rows = {r["file"]: r for r in people_rows() if r["file"] in files}
+    assert set(rows) == files
+    return [(name, _stroke(row)) for name, row in rows.items()]
+
+
 def test_a_check_with_bowed_arms_is_not_asked_of_the_model() -> None:
     """The rules' hurried check (one really sharp corner, a short arm and a long one, arms that may bow) stays a
     polyline even under a model that reads everything as a curve: a model fitted on people who draw checks with
@@ -116,10 +123,7 @@ def test_a_check_with_bowed_arms_is_not_asked_of_the_model() -> None:
     A brace whose tip is its one sharp corner, in the middle, is still the model's to re-read."""
     model, files = _curve_loving_model(), {"s04/fast/check04.xml", "s04/medium/check03.xml",
                                            "s04/slow/right_curly_brace03.xml"}
-    rows = {r["file"]: r for r in people_rows() if r["file"] in files}
-    assert set(rows) == files
-    for name, row in rows.items():
-        points, times = _stroke(row)
+    for name, (points, times) in _named_strokes(files):
         assert recognize_stroke(points, times, learned=False).kind == "polyline"
         phi = ranker.features(points, times)
         expect = "curve" if "brace" in name else "polyline"
@@ -133,10 +137,7 @@ def test_a_check_whose_hump_starts_at_a_second_corner_is_not_asked_of_the_model(
     (s02's, which a model rightly re-read as a curve when the rules read it as a polyline) is still the model's."""
     model, files = _curve_loving_model(), {"s04/fast/check06.xml", "s04/medium/check10.xml",
                                            "s02/medium/question_mark04.xml"}
-    rows = {r["file"]: r for r in people_rows() if r["file"] in files}
-    assert set(rows) == files
-    for name, row in rows.items():
-        points, times = _stroke(row)
+    for name, (points, times) in _named_strokes(files):
         phi = ranker.features(points, times)
         assert round(float(phi[ranker.FEATURES.index("corners")]) * 8) == 2, name
         if "question" in name:

@@ -66,8 +66,9 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
-- `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above, closure, scoring
-  and ranking (`Weights`, `DEFAULT_WEIGHTS`)
+- `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above, closure
+- `ranking.py`: the candidates scored (fit error against complexity, `Weights`, `DEFAULT_WEIGHTS`) and ranked: the
+  best whose shape stays within the stroke's bounds and follows its outline, with the alternatives
 - `coils.py`: strokes that wind or scrub rather than outline: a spring drawn as one coil (a helix), a scribble
 - `candidates.py`: the competing interpretations of a closed stroke with their fit error and complexity: polygonal
   ones (built only when the ranking reaches them), a circle or ellipse; a box placed where its four sides were drawn

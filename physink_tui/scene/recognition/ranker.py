@@ -139,8 +139,12 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
 
 def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
     """The stroke's features (`FEATURES`), size-free; ``noise`` is the pen's jitter in the points' units."""
+    return _features(_unit_work(points, times), noise)
+
+
+def _features(found: tuple[np.ndarray, np.ndarray, list[float] | None, float] | None, noise: float) -> np.ndarray:
+    """`features` of a stroke already prepared by `_unit_work`."""
     out = np.zeros(len(FEATURES))
-    found = _unit_work(points, times)
     if found is None:
         return out
     raw, work, times, diag = found
@@ -274,12 +278,14 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     the stroke, the rules' kind then the first alternative."""
     if found.kind not in KINDS:
         return found
-    if found.kind == "polygon" and not _open_before_features(points, times):
-        return found
-    kind, chance = choose(found.kind, features(points, times, noise), model)
-    if kind == found.kind:
+    if found.kind == "polygon" and not _ends_apart(points):
         return found
     unit = _unit_work(points, times)
+    if found.kind == "polygon" and (unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
+        return found
+    kind, chance = choose(found.kind, _features(unit, noise), model)
+    if kind == found.kind:
+        return found
     shape = geometry(kind, unit[1]) if unit is not None else None
     if unit is None or shape is None:
         return found
@@ -288,20 +294,17 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
                        ((found.kind, round(1.0 - chance, 4)),))
 
 
-def _open_before_features(points: Sequence[Sequence[float]], times: Sequence[float] | None) -> bool:
-    """Whether a polygon is open enough to ask (`open_polygon`), measured before its features: most polygons are
-    closed. A stroke whose ends are under half `OPEN_GAP` of its size apart is closed without more work: resampling
-    and smoothing keep its ends and only shrink its size, so its closure could reach `OPEN_GAP` only were its size
-    halved by smoothing."""
+def _ends_apart(points: Sequence[Sequence[float]]) -> bool:
+    """Whether a polygon's ends may be far enough apart to ask (`open_polygon`), judged before any other work: most
+    polygons are closed. A stroke whose ends are under half `OPEN_GAP` of its size apart is closed: resampling and
+    smoothing keep its ends and only shrink its size, so its closure could reach `OPEN_GAP` only were its size halved
+    by smoothing."""
     try:
         pts = np.asarray(points, dtype=float)[:, :2]
     except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
         pts = np.asarray([p[:2] for p in points], dtype=float)
     size = sg.bbox_diagonal(pts) if len(pts) >= 2 and np.isfinite(pts).all() else 0.0
-    if size == 0.0 or float(np.hypot(*(pts[-1] - pts[0]))) < 0.5 * OPEN_GAP * size:
-        return False
-    unit = _unit_work(points, times)
-    return unit is not None and open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))
+    return size > 0.0 and float(np.hypot(*(pts[-1] - pts[0]))) >= 0.5 * OPEN_GAP * size
 
 
 def geometry(kind: str, work: np.ndarray) -> Geometry | None:

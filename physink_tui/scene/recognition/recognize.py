@@ -6,7 +6,7 @@ a circle or an ellipse, an arc, a curve of cubic pieces) is fitted to the same p
 its fit error and its complexity, BIC-style: ``N log(mse + sigma^2) + complexity * params * log N``. The floor
 ``sigma`` is the larger of the pen's own noise, in absolute units (a pixel or two whatever the shape's size),
 and the hand's inaccuracy relative to the shape's size. The best-scored candidate whose shape stays within the
-stroke's bounds wins; the others become the alternatives. Springs and scribbles are told apart first.
+stroke's bounds wins; the others become the alternatives (`ranking`). Springs and scribbles are told apart first.
 
 >>> import math
 >>> circle = [(10 * math.cos(a / 20), 10 * math.sin(a / 20)) for a in range(126)]
@@ -16,24 +16,32 @@ stroke's bounds wins; the others become the alternatives. Springs and scribbles 
 
 from __future__ import annotations
 
-import heapq
 import itertools
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
 from physink_tui.scene.recognition import open_shapes, ranker
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
+from physink_tui.scene.recognition.beautify import scale_geometry, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import helix_or_scribble
 from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
-from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
+from physink_tui.scene.recognition.primitives import Line, Polygon, Polyline, Recognition
+from physink_tui.scene.recognition.ranking import (
+    BOUNDS_MARGIN,
+    DEFAULT_WEIGHTS,
+    Weights,
+    bounds,
+    inside,
+    keeps_the_outline,
+    rank,
+)
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
 
 TOO_SHORT = "too short to recognise"
@@ -139,33 +147,9 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: fl
     return Recognition(None, 0.0, None, (), "only two crossing short lines make a two-stroke symbol (an X)")
 
 
-@dataclass(frozen=True, slots=True)
-class Weights:
-    """The ranking's numbers: what a unit of complexity costs against fit error, and the noise floor.
-
-    Attributes:
-        complexity: score added per parameter of a shape, times log of the effective sample count (BIC's 0.5
-            is the textbook value; larger prefers simpler shapes).
-        relative_noise: hand inaccuracy as a share of the stroke's size; the error floor is the larger of
-            this and the pen's absolute noise.
-        round_corner: see below.
-    """
-
-    complexity: float = 2.5
-    relative_noise: float = 0.003
-    round_corner: float = 0.8
-    """A polyline's corners do most of their turning within this share of their shorter side (a bend rounder
-    than that is a curve's: a brace, a question mark)."""
-
-
-DEFAULT_WEIGHTS = Weights()
-EFFECTIVE_SAMPLES = 64
-"""How many independent samples a stroke's fit error is taken to rest on, whatever its point count."""
 MAX_JUDGED_POINTS = 600
 OPEN_SPACING = 3.0
 """Open strokes are judged on points at least this many noise widths apart."""
-BOUNDS_MARGIN = 0.05
-"""A beautified shape must stay within the stroke's bounding box grown by this share of its diagonal."""
 OPEN_ROUND_MARGIN = 0.2
 """The same for a circle or ellipse completed from a stroke that stopped short of its start (a quarter turn
 short pokes out by about 15 % of the stroke's diagonal)."""
@@ -199,7 +183,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if lumpy:
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
     candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
-    ranked = _rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
+    ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
@@ -218,9 +202,9 @@ def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray,
     if crossings(drawn) > 1:
         return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
     quads = [p for p in polygons if p.params == 8 and any(overlap(f.vertices, drawn) >= BOX_OVERLAP for f in p.fits)]
-    lo, hi = _bounds(raw, noise, diag)  # built only where a four-sided fit covers it (judging corners costs more)
+    lo, hi = bounds(raw, noise, diag)  # built only where a four-sided fit covers it (judging corners costs more)
     for box in (c for p in quads for c in p.build() if c.kind == "box"):
-        if (_inside(box.geometry, lo, hi) and _keeps_the_outline(box, loop)
+        if (inside(box.geometry, lo, hi) and keeps_the_outline(box, loop)
                 and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
                 and overlap(box.fallback.geometry.points, drawn) >= BOX_OVERLAP):
             return Recognition("box", ranked.confidence, box.geometry, (("polygon", 1.0 - ranked.confidence),))
@@ -235,9 +219,9 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
                                       weights.round_corner)
     round_left_open = found.kind in ("circle", "ellipse")
     share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
-    if _inside(found.geometry, *_bounds(raw, noise, diag, share)):
+    if inside(found.geometry, *bounds(raw, noise, diag, share)):
         return found
-    ranked = _rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
+    ranked = rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
                    weights, raw, noise, diag)
     return _or_freeform(ranked, work, closed=False, sigma=sigma)
 
@@ -291,88 +275,6 @@ def _polygon_left_open(work: np.ndarray, diag: float) -> bool:
             and sf.heading_home(work, corners))
 
 
-def _bounds(raw: np.ndarray, noise: float, diag: float, share: float = BOUNDS_MARGIN,
-            ) -> tuple[np.ndarray, np.ndarray]:
-    margin = share * diag + noise
-    return raw.min(axis=0) - margin, raw.max(axis=0) + margin
-
-
-def _score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> float:
-    mse = c.rss / n
-    return (EFFECTIVE_SAMPLES * math.log(mse + sigma * sigma)
-            + weights.complexity * c.params * math.log(EFFECTIVE_SAMPLES))
-
-
-def _rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
-          noise: float, diag: float, fitted: np.ndarray | None = None, round_share: float = BOUNDS_MARGIN,
-          ) -> Recognition:
-    """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
-    as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
-    once what is left could not change the answer or its alternatives. An ellipse may reach ``round_share`` of
-    the diagonal past the bounds (a lumpy loop's flat stretch: `LUMPY_SIDES`; a circle rounded off from it may not)."""
-    heap: list[tuple[float, int, Candidate | Pending]] = []
-    for c in candidates:
-        if math.isfinite(c.rss):
-            heapq.heappush(heap, (_score(c, n, sigma, weights), len(heap), c))
-    lo, hi = _bounds(raw, noise, diag)
-    round_lo, round_hi = _bounds(raw, noise, diag, round_share)
-    kept: list[tuple[float, Candidate]] = []
-    seq = len(heap)
-    while heap:
-        score, _, c = heapq.heappop(heap)
-        if kept and (score - kept[0][0] > SEARCH_SPAN or len({k.kind for _, k in kept}) > 3):
-            break
-        if isinstance(c, Pending):
-            for built in c.build():
-                seq += 1
-                heapq.heappush(heap, (_score(built, n, sigma, weights), seq, built))
-        elif not (_inside(c.geometry, round_lo, round_hi) if c.kind == "ellipse" else _inside(c.geometry, lo, hi)):
-            if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
-                seq += 1
-                heapq.heappush(heap, (score, seq, c.fallback))
-        elif _keeps_the_outline(c, raw if fitted is None else fitted):
-            kept.append((score, c))
-    if not kept:
-        return Recognition(None, 0.0, None, (), "no shape fits the stroke")
-    best_score = kept[0][0]
-    weight: dict[str, float] = {}
-    for s, c in kept:
-        weight.setdefault(c.kind, math.exp(-(s - best_score) / CONFIDENCE_SCALE))
-    total = sum(weight.values())
-    best = kept[0][1]
-    alternatives = tuple((k, round(w / total, 4)) for k, w in weight.items() if k != best.kind)
-    return Recognition(best.kind, round(weight[best.kind] / total, 4), best.geometry, alternatives[:3])
-
-
-OUTLINE_FAR = 0.08
-OUTLINE_LEFT_OUT = 0.1
-"""A box leaves out part of what was drawn when more than `OUTLINE_LEFT_OUT` of the closed loop's points lie farther
-than `OUTLINE_FAR` of the loop's diagonal from the box's sides: the wide top of a golf tee drawn on its narrow stem is
-not a box the size of the stem (people's and hurried boxes, thin ones included, leave out under 2 % of their
-points; such a tee's wings are a quarter of its points)."""
-
-
-def _keeps_the_outline(c: Candidate, drawn: np.ndarray) -> bool:
-    """Whether a box candidate follows the whole outline it was fitted to (``drawn``: the closed loop, without a
-    tail drawn on past it); other kinds are not judged here."""
-    if c.kind != "box":
-        return True
-    diag = float(np.hypot(*(drawn.max(axis=0) - drawn.min(axis=0))))
-    corners = np.asarray(shape_points(c.geometry), dtype=float)
-    a, b = corners, np.roll(corners, -1, axis=0)
-    ab = b - a
-    rel = drawn[:, None, :] - a[None, :, :]  # each point against each side
-    u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
-    gap = np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)).min(axis=1)
-    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(drawn)
-
-
-SEARCH_SPAN = 3 * 6.0
-"""Candidates scored this much worse than the best are not built (their share of confidence is under e^-3)."""
-CONFIDENCE_SCALE = 6.0
-"""Score difference that divides a kind's weight by e when confidences are shared out."""
-
-
 def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -> tuple[bool, np.ndarray]:
     """Whether the stroke closes (judged on the raw ends: a gap, or drawn past its start), and the stroke once
     round: an overshoot past the start, or a start before the end, cut at the closest approach."""
@@ -406,10 +308,3 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
 
 CLOSED_GAP = 0.2
 """A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
-
-
-def _inside(g: Geometry | None, lo: np.ndarray, hi: np.ndarray) -> bool:
-    if g is None:
-        return False
-    pts = np.asarray(shape_points(g), dtype=float)
-    return bool(np.isfinite(pts).all() and (pts >= lo).all() and (pts <= hi).all())

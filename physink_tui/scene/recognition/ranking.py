@@ -1,0 +1,131 @@
+"""Ranks a stroke's candidate shapes: each scored by fit error against complexity (BIC-style), the best whose shape
+stays within the stroke's bounds and follows its outline wins, the best of each other kind become alternatives;
+`recognize` decides which candidates compete and on what points.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from physink_tui.scene.recognition.beautify import shape_points
+from physink_tui.scene.recognition.candidates import Candidate, Pending
+from physink_tui.scene.recognition.primitives import Geometry, Recognition
+
+
+@dataclass(frozen=True, slots=True)
+class Weights:
+    """The ranking's numbers: what a unit of complexity costs against fit error, and the noise floor.
+
+    Attributes:
+        complexity: score added per parameter of a shape, times log of the effective sample count (BIC's 0.5
+            is the textbook value; larger prefers simpler shapes).
+        relative_noise: hand inaccuracy as a share of the stroke's size; the error floor is the larger of
+            this and the pen's absolute noise.
+        round_corner: see below.
+    """
+
+    complexity: float = 2.5
+    relative_noise: float = 0.003
+    round_corner: float = 0.8
+    """A polyline's corners do most of their turning within this share of their shorter side (a bend rounder
+    than that is a curve's: a brace, a question mark)."""
+
+
+DEFAULT_WEIGHTS = Weights()
+EFFECTIVE_SAMPLES = 64
+"""How many independent samples a stroke's fit error is taken to rest on, whatever its point count."""
+BOUNDS_MARGIN = 0.05
+"""A beautified shape must stay within the stroke's bounding box grown by this share of its diagonal."""
+
+def bounds(raw: np.ndarray, noise: float, diag: float, share: float = BOUNDS_MARGIN,
+            ) -> tuple[np.ndarray, np.ndarray]:
+    margin = share * diag + noise
+    return raw.min(axis=0) - margin, raw.max(axis=0) + margin
+
+
+def bic_score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> float:
+    mse = c.rss / n
+    return (EFFECTIVE_SAMPLES * math.log(mse + sigma * sigma)
+            + weights.complexity * c.params * math.log(EFFECTIVE_SAMPLES))
+
+
+def rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weights: Weights, raw: np.ndarray,
+          noise: float, diag: float, fitted: np.ndarray | None = None, round_share: float = BOUNDS_MARGIN,
+          ) -> Recognition:
+    """The best-scored candidate whose shape stays within the stroke's bounds, and the best of each other kind
+    as alternatives. Pending candidates are built only when the ranking reaches them, and the search stops
+    once what is left could not change the answer or its alternatives. An ellipse may reach ``round_share`` of
+    the diagonal past the bounds (a lumpy loop's flat stretch: `LUMPY_SIDES`; a circle rounded off from it may not)."""
+    heap: list[tuple[float, int, Candidate | Pending]] = []
+    for c in candidates:
+        if math.isfinite(c.rss):
+            heapq.heappush(heap, (bic_score(c, n, sigma, weights), len(heap), c))
+    lo, hi = bounds(raw, noise, diag)
+    round_lo, round_hi = bounds(raw, noise, diag, round_share)
+    kept: list[tuple[float, Candidate]] = []
+    seq = len(heap)
+    while heap:
+        score, _, c = heapq.heappop(heap)
+        if kept and (score - kept[0][0] > SEARCH_SPAN or len({k.kind for _, k in kept}) > 3):
+            break
+        if isinstance(c, Pending):
+            for built in c.build():
+                seq += 1
+                heapq.heappush(heap, (bic_score(built, n, sigma, weights), seq, built))
+        elif not (inside(c.geometry, round_lo, round_hi) if c.kind == "ellipse" else inside(c.geometry, lo, hi)):
+            if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
+                seq += 1
+                heapq.heappush(heap, (score, seq, c.fallback))
+        elif keeps_the_outline(c, raw if fitted is None else fitted):
+            kept.append((score, c))
+    if not kept:
+        return Recognition(None, 0.0, None, (), "no shape fits the stroke")
+    best_score = kept[0][0]
+    weight: dict[str, float] = {}
+    for s, c in kept:
+        weight.setdefault(c.kind, math.exp(-(s - best_score) / CONFIDENCE_SCALE))
+    total = sum(weight.values())
+    best = kept[0][1]
+    alternatives = tuple((k, round(w / total, 4)) for k, w in weight.items() if k != best.kind)
+    return Recognition(best.kind, round(weight[best.kind] / total, 4), best.geometry, alternatives[:3])
+
+
+OUTLINE_FAR = 0.08
+OUTLINE_LEFT_OUT = 0.1
+"""A box leaves out part of what was drawn when more than `OUTLINE_LEFT_OUT` of the closed loop's points lie farther
+than `OUTLINE_FAR` of the loop's diagonal from the box's sides: the wide top of a golf tee drawn on its narrow stem is
+not a box the size of the stem (people's and hurried boxes, thin ones included, leave out under 2 % of their
+points; such a tee's wings are a quarter of its points)."""
+
+
+def keeps_the_outline(c: Candidate, drawn: np.ndarray) -> bool:
+    """Whether a box candidate follows the whole outline it was fitted to (``drawn``: the closed loop, without a
+    tail drawn on past it); other kinds are not judged here."""
+    if c.kind != "box":
+        return True
+    diag = float(np.hypot(*(drawn.max(axis=0) - drawn.min(axis=0))))
+    corners = np.asarray(shape_points(c.geometry), dtype=float)
+    a, b = corners, np.roll(corners, -1, axis=0)
+    ab = b - a
+    rel = drawn[:, None, :] - a[None, :, :]  # each point against each side
+    u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
+    gap = np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)).min(axis=1)
+    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(drawn)
+
+
+SEARCH_SPAN = 3 * 6.0
+"""Candidates scored this much worse than the best are not built (their share of confidence is under e^-3)."""
+CONFIDENCE_SCALE = 6.0
+"""Score difference that divides a kind's weight by e when confidences are shared out."""
+
+
+def inside(g: Geometry | None, lo: np.ndarray, hi: np.ndarray) -> bool:
+    if g is None:
+        return False
+    pts = np.asarray(shape_points(g), dtype=float)
+    return bool(np.isfinite(pts).all() and (pts >= lo).all() and (pts <= hi).all())
