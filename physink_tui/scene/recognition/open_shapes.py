@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition import bracket_marks
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -115,9 +116,13 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
              or _short_bend(work, corners, roundness, noise))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, noise)
+            and not bracket_marks.looped_point(work, corners, noise)
             and (all(straight_runs) or _bent_polyline(work, th, corners, noise)
                  or _tick_into_bend(work, corners, straight_runs, roundness, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
+    bracket = bracket_marks.rounded_bracket_corners(work, corners, noise)
+    if bracket is not None:  # one corner rounded off: a square bracket still
+        return Recognition("polyline", 0.75, Polyline(tuple(_pt(work[c]) for c in bracket)), (("curve", 0.4),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
         one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends

@@ -1,0 +1,69 @@
+"""Open marks the general open-stroke rules misjudge: a square bracket with one corner rounded off, a curly brace with
+a loop at its point; judged on the open-stroke rules' own corners (`open_shapes.classify_open`), no I/O."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+
+HALF_TURN_SLACK = 35.0
+"""A square bracket's arms run back the way they came: the whole stroke turns by half a turn, give or take this
+(degrees) for arms a hand slants (pixelfac/user01's and klarubbio/s06's rounded brackets turn 165-207 degrees; a
+question mark read with one corner, s02's, turns 135)."""
+BRACKET_STRAIGHT = 0.12
+"""The spine and the arm at the sharp corner stray from their chords by less than this share of the chord, as a
+polyline's sides (`open_shapes.STRAIGHT`): the rounded corner is the only bend, not a curl or an arc."""
+ROUND_ARM = 0.1
+"""The arm beyond the rounded corner is at least this share of the path (an arm, not a hook)."""
+
+
+def rounded_bracket_corners(work: np.ndarray, corners: list[int], noise: float) -> list[int] | None:
+    """The four corners of a square bracket of which the finder found only the sharp corner, or None.
+
+    A hand drawing a bracket quickly often rounds one corner off (over a fifth of the stroke) and keeps the other
+    sharp: the finder then finds one corner, and the stroke reads as a curve. What a reader sees is a stroke turning
+    one way by about half a turn (`HALF_TURN_SLACK`) whose piece on one side of the sharp corner is a straight arm and
+    whose other piece is a straight spine running into a round bend and a last arm (`ROUND_ARM`); the round corner is
+    taken where that piece strays farthest from its chord. A question mark or a pigtail turns more or less than half
+    a turn, or has no straight spine; an arc has no sharp corner (or a spine bowed like an arc)."""
+    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) != 1:
+        return None
+    total = abs(math.degrees(float(sg.turning(work).sum())))
+    if abs(total - 180.0) > HALF_TURN_SLACK:
+        return None
+    c, last = corners[1], len(work) - 1
+    length = sg.path_length(work)
+    first_longer = sg.path_length(work[:c + 1]) >= sg.path_length(work[c:])
+    arm, rest = (work[c:], work[:c + 1]) if first_longer else (work[:c + 1], work[c:])
+    a, b = rest[0], rest[-1]
+    chord = float(np.hypot(*(b - a)))
+    if chord == 0.0:
+        return None
+    dist = np.abs((rest[:, 0] - a[0]) * (b - a)[1] - (rest[:, 1] - a[1]) * (b - a)[0]) / chord
+    k = int(np.argmax(dist))
+    if k == 0 or k == len(rest) - 1:
+        return None
+    # from the sharp corner: the spine, then the round bend and the last arm
+    spine, round_arm = (rest[k:], rest[:k + 1]) if first_longer else (rest[:k + 1], rest[k:])
+    if not (sg.chord_deviation(arm) < BRACKET_STRAIGHT and sg.chord_deviation(spine) < BRACKET_STRAIGHT
+            and sg.path_length(round_arm) >= ROUND_ARM * length):
+        return None
+    bend = k if first_longer else c + k
+    return sorted({0, bend, c, last})
+
+
+LOOPED_POINT = 180.0
+"""A corner turning more than this (degrees) goes round a loop: a v's, a check's or a caret's point turns back at most
+half a turn (jd4386/User04's and User05's braces drawn with a small loop at the point turn 222-269 there)."""
+
+
+def looped_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
+    """Whether the stroke's one corner is a small loop at the point of a stroke turning both ways: a curly brace whose
+    point was drawn as a loop (two arms meeting at a corner that turns past half a turn), not a v or a check."""
+    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) < 2:
+        return False
+    return sf.corner_turns(sg.turning(work), corners)[0] > LOOPED_POINT
