@@ -67,3 +67,48 @@ def looped_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
     if len(corners) != 3 or len(sf.lobes(work, noise=noise)) < 2:
         return False
     return sf.corner_turns(sg.turning(work), corners)[0] > LOOPED_POINT
+
+
+BRACE_DEPTH = 0.35
+"""A curly brace's point sticks out from the line joining its ends by less than this share of that line: its arms run
+on nearly in line (a v's or caret's point sticks out 0.5 and more; the braces read as polylines 0.13-0.35)."""
+ONE_SIDE = 0.03
+"""A brace lies on one side of the line joining its ends (its curls and its point on the same side: 0-0.02 of the
+line on the other side); a zig-zag's teeth cross it (0.04 and more)."""
+POINT_AT = (0.42, 0.7)
+"""Where along the path (shares of it) a brace's point lies: about halfway (0.45-0.7, curls of unequal size); a check's
+or tick's corner, drawn short arm first, lies a third of the way along or less (0.20-0.41 on the design sources)."""
+POINT_NEAR = 0.05
+"""The point farthest from the line is a corner when a found corner lies within this share of the path of it."""
+NO_RETURN = 0.1
+"""A brace runs along the line joining its ends, turning back along it by less than this share of it (0-0.06); an
+arrow's barbs run back along its shaft."""
+
+
+def brace_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
+    """Whether the stroke is a curly brace whose curls or point the finder took for corners between straight sides:
+    the point farthest from the line joining its ends is a corner about halfway along (`POINT_AT`, `POINT_NEAR`),
+    sticking out less than `BRACE_DEPTH` of that line, with the whole stroke on that side of it (`ONE_SIDE`) and
+    running along it (`NO_RETURN`), and the stroke turns both ways (a v, a caret or a tick turns one way)."""
+    if len(corners) < 3:
+        return False
+    start, end = work[0], work[-1]
+    chord = float(np.hypot(*(end - start)))
+    if chord == 0.0:
+        return False
+    rel = work - start
+    side = (rel[:, 0] * (end - start)[1] - rel[:, 1] * (end - start)[0]) / chord
+    k = int(np.argmax(np.abs(side)))
+    depth = float(side[k])
+    if abs(depth) >= BRACE_DEPTH * chord or float(np.max(-np.sign(depth) * side)) > ONE_SIDE * chord:
+        return False
+    along = rel @ (end - start) / chord
+    if float(np.max(np.maximum.accumulate(along) - along)) >= NO_RETURN * chord:
+        return False
+    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    length = float(cum[-1])
+    if not POINT_AT[0] <= cum[k] / length <= POINT_AT[1]:
+        return False
+    if min(abs(float(cum[c] - cum[k])) for c in corners[1:-1]) >= POINT_NEAR * length:
+        return False
+    return len(sf.lobes(work, noise=noise)) >= 2

@@ -117,6 +117,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, noise)
             and not bracket_marks.looped_point(work, corners, noise)
+            and not bracket_marks.brace_point(work, corners, noise)
             and (all(straight_runs) or _bent_polyline(work, th, corners, noise)
                  or _tick_into_bend(work, corners, straight_runs, roundness, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
