@@ -30,10 +30,10 @@ def rounded_bracket_corners(work: np.ndarray, corners: list[int], noise: float) 
     whose other piece is a straight spine running into a round bend and a last arm (`ROUND_ARM`); the round corner is
     taken where that piece strays farthest from its chord. A question mark or a pigtail turns more or less than half
     a turn, or has no straight spine; an arc has no sharp corner (or a spine bowed like an arc)."""
-    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) != 1:
+    if len(corners) != 3:
         return None
     total = abs(math.degrees(float(sg.turning(work).sum())))
-    if abs(total - 180.0) > HALF_TURN_SLACK:
+    if abs(total - 180.0) > HALF_TURN_SLACK or len(sf.lobes(work, noise=noise)) != 1:
         return None
     c, last = corners[1], len(work) - 1
     length = sg.path_length(work)
@@ -64,9 +64,9 @@ half a turn (jd4386/User04's and User05's braces drawn with a small loop at the 
 def looped_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
     """Whether the stroke's one corner is a small loop at the point of a stroke turning both ways: a curly brace whose
     point was drawn as a loop (two arms meeting at a corner that turns past half a turn), not a v or a check."""
-    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) < 2:
+    if len(corners) != 3 or sf.corner_turns(sg.turning(work), corners)[0] <= LOOPED_POINT:
         return False
-    return sf.corner_turns(sg.turning(work), corners)[0] > LOOPED_POINT
+    return len(sf.lobes(work, noise=noise)) >= 2
 
 
 BRACE_DEPTH = 0.35
