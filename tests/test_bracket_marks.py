@@ -130,6 +130,7 @@ PEOPLE = {
     # braces whose curls or point were taken for corners between straight sides (`bracket_marks.brace_point`)
     ("public-sets/hcira.jsonl", JD + "User04/right_curly_brace01.xml"): "curve",
     ("public-sets/hcira.jsonl", "hat359/HCIRA@69a6542:xml_collected_logs/user1/left_curly_brace02.xml"): "curve",
+    ("public-sets/hcira.jsonl", "hat359/HCIRA@69a6542:xml_collected_logs/user1/right_curly_brace06.xml"): "curve",
     ("public-sets/hcira.jsonl", PIXELFAC + "right curly brace10.xml"): "curve",
     ("student-sets/itt.jsonl", "ITT-26/assignment-06-gesture-recognition-GixD42@78545e5:datasets/mylogs/"
                                "left_curly_brace07.xml"): "curve",

@@ -79,7 +79,9 @@ POINT_AT = (0.42, 0.7)
 """Where along the path (shares of it) a brace's point lies: about halfway (0.45-0.7, curls of unequal size); a check's
 or tick's corner, drawn short arm first, lies a third of the way along or less (0.20-0.41 on the design sources)."""
 POINT_NEAR = 0.05
-"""The point farthest from the line is a corner when a found corner lies within this share of the path of it."""
+"""The point farthest from the line is a brace's point when a found corner lies within this share of the path of it,
+or the path within it turns sharply (`stroke_geometry.POINT_TURN_DEG` within `POINT_SPAN`: hat359/user1's right brace
+02, whose small tip the finder missed)."""
 NO_RETURN = 0.1
 """A brace runs along the line joining its ends, turning back along it by less than this share of it (0-0.06); an
 arrow's barbs run back along its shaft."""
@@ -109,6 +111,8 @@ def brace_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
     length = float(cum[-1])
     if not POINT_AT[0] <= cum[k] / length <= POINT_AT[1]:
         return False
-    if min(abs(float(cum[c] - cum[k])) for c in corners[1:-1]) >= POINT_NEAR * length:
-        return False
+    near = np.abs(cum - cum[k]) < POINT_NEAR * length
+    if (min(abs(float(cum[c] - cum[k])) for c in corners[1:-1]) >= POINT_NEAR * length
+            and sg.sharpest_turn(work[near], sg.POINT_SPAN * length) < sg.POINT_TURN_DEG):
+        return False  # no corner there, nor a point the finder missed (the label tests' brace point)
     return len(sf.lobes(work, noise=noise)) >= 2
