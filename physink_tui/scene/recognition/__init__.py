@@ -55,7 +55,11 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    find_corners(every_dip=True)`), and a one-corner stroke turning one way whose bend is short against the whole
    stroke is sharp however short its arm (a tick, `open_shapes._short_bend`), its short arm may bow into the corner
    (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
-   not a hook cut where the pen landed (`stroke_geometry.end_arm`).
+   not a hook cut where the pen landed (`stroke_geometry.end_arm`). Marks these rules misjudge (`bracket_marks`): a
+   square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight spine) is a
+   polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point were taken
+   for corners between straight sides (its farthest point from its ends' line a shallow point about halfway along,
+   the stroke on one side of that line), is not a polyline.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -78,6 +82,8 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
   overlap
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
+- `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
+  which the open-stroke rules misjudge
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
