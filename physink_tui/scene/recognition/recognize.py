@@ -267,13 +267,29 @@ def _polygon_left_open(work: np.ndarray, diag: float) -> bool:
     length = sg.path_length(work)
     if length < 1.75 * diag or sf.closure(work, diag) >= 0.42:
         return False
-    th = sg.turning(work)
-    if abs(float(th.sum())) < 1.25 * math.pi:
+    turned = abs(float(sg.turning(work).sum()))
+    if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
         return False
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+    if turned < LEFT_OPEN_TURN and abs(_sides_turning(work[corners])) < LEFT_OPEN_TURN:
+        return False
     return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs)
             and sf.heading_home(work, corners))
+
+
+LEFT_OPEN_TURN = 1.25 * math.pi
+"""A polygon left open has turned at least this far round (a triangle short of its last side: about 1.33 pi)."""
+LEFT_OPEN_WOBBLE = 0.5 * math.pi
+"""How much of that turning a hurried hand's hook or wobble at an end may undo on the path itself; then the turning is
+taken from corner to corner, along the sides' chords (the corners the hand meant), not from every wiggle."""
+
+
+def _sides_turning(corners: np.ndarray) -> float:
+    """The signed turning of the chain of sides through ``corners`` (radians)."""
+    sides = np.diff(corners, axis=0)
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    return float(((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi).sum())
 
 
 def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -> tuple[bool, np.ndarray]:
