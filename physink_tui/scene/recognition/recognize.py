@@ -274,10 +274,13 @@ def _polygon_left_open(work: np.ndarray, diag: float) -> bool:
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     if turned < LEFT_OPEN_TURN and abs(_sides_turning(work[corners])) < LEFT_OPEN_TURN:
         return False
-    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs)
-            and sf.heading_home(work, corners))
+    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
+            and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW and sf.heading_home(work, corners))
 
 
+LAST_SIDE_BOW = 0.2
+"""The last side of a polygon left open may bow this much (of its chord): the hand swings home as it lifts, while the
+sides before it are drawn straight (`open_shapes.STRAIGHT`)."""
 LEFT_OPEN_TURN = 1.25 * math.pi
 """A polygon left open has turned at least this far round (a triangle short of its last side: about 1.33 pi)."""
 LEFT_OPEN_WOBBLE = 0.5 * math.pi
