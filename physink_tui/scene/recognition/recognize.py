@@ -275,7 +275,24 @@ def _polygon_left_open(work: np.ndarray, diag: float) -> bool:
     if turned < LEFT_OPEN_TURN and abs(_sides_turning(work[corners])) < LEFT_OPEN_TURN:
         return False
     return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
-            and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW and sf.heading_home(work, corners))
+            and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
+            and (sf.heading_home(work, corners) or _star_run_past_its_start(work, corners)))
+
+
+STAR_CROSSINGS = 3
+"""A star drawn in one stroke crosses its own sides five times (a pentagram); an open mark whose last stroke runs
+back across its first (the $1 delete mark, an alpha) crosses once. From this many crossings on, a stroke whose last
+side runs on past its start is a star whose last stroke overshot, not an open mark."""
+
+
+def _star_run_past_its_start(work: np.ndarray, corners: list[int]) -> bool:
+    """The last side ran on past the start (the start lies behind the end, within `stroke_features.heading_home`'s
+    50 degrees of the side's line) and the sides cross one another like a star's."""
+    last, home = work[-1] - work[corners[-2]], work[0] - work[-1]
+    norms = float(np.hypot(*last) * np.hypot(*home))
+    if norms == 0.0 or float(last @ home) / norms > -math.cos(math.radians(50.0)):
+        return False
+    return crossings(work[corners]) >= STAR_CROSSINGS
 
 
 LAST_SIDE_BOW = 0.2
