@@ -165,6 +165,7 @@ PEOPLE = [  # (cache file, the stroke's file in its set, what it is read as): ea
     ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/rectangle10.xml", "box"),
     ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/triangle03.xml", "polygon"),  # last side bowed
     ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/triangle10.xml", "polygon"),  # a hook at the end
+    ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/star04.xml", "polygon"),  # run on past its start
 ]
 
 
