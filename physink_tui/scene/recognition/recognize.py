@@ -203,7 +203,8 @@ def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray,
     if crossings(drawn) > 1:
         return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
     quads = [p for p in polygons if p.params == 8 and any(overlap(f.vertices, drawn) >= BOX_OVERLAP for f in p.fits)]
-    lo, hi = bounds(raw, noise, diag, BOX_MARGIN)  # built only where a four-sided fit covers it (judging corners costs more)
+    # built only where a four-sided fit covers it (judging corners costs more)
+    lo, hi = bounds(raw, noise, diag, BOX_MARGIN)
     for box in (c for p in quads for c in p.build() if c.kind == "box"):
         if (inside(box.geometry, lo, hi) and keeps_the_outline(box, loop)
                 and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
