@@ -13,7 +13,16 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_generalisation import FIRST_STUDENTS, group_of, held_back, held_back_new, leave_one_source_out, scored_rows
+from bench_generalisation import (
+    FIRST_STUDENTS,
+    THIRD_SETS,
+    group_of,
+    held_back,
+    held_back_new,
+    is_held_back_new,
+    leave_one_source_out,
+    scored_rows,
+)
 from bench_recognition import ACCEPTS, LABEL_CLASS
 from label_kinds import read_table
 from stroke_sets import read_set, source_of
@@ -156,3 +165,32 @@ def test_strokes_whose_label_contradicts_their_geometry_are_counted_beside_the_r
     assert "Not the headline: on the strokes whose label agrees with their geometry (5/5 = 100.00 % pooled; 1 " \
            "strokes whose label the contradiction tests convict" in out
     assert out.rstrip().endswith("left out), the same targets: met")
+
+
+def test_the_third_search_sets_are_left_out_of_every_run_but_their_own_and_never_fitted_on() -> None:
+    """The third held-back group (issue 25's third search) is held back whole by its sets' names: the default run,
+    `--heldback` and the ranker's training (even when writing the shipped model) never see it; `--third` scores it
+    alone. Its sources are in neither earlier group."""
+    from train_ranker import rows_read
+
+    def row(set_name: str, person: str) -> dict:
+        return {"source": set_name, "subject": person, "label": "circle", "file": f"{set_name}-{person}",
+                "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(_circle())]]}
+
+    assert THIRD_SETS and not THIRD_SETS & {"dollar1", "itt", "hcira", "mmg", "ahmadosama", "gtiwari", "bouchal"}
+    earlier = [row("dollar1", "s02"), row("itt", "Ferdi-FM"), row("itt", "DerD4n")]
+    earlier += [row("hcira", f"team/user{k}") for k in range(12)]
+    third = [row(name, f"team/user{k}") for name in sorted(THIRD_SETS) for k in range(12)]
+    kept, left = scored_rows(earlier + third)
+    assert {r["source"] for r in kept}.isdisjoint(THIRD_SETS) and len(kept) == len(earlier)
+    assert sum(n for why, n in left.items() if "third held-back group" in why) == len(third)
+    only, left_third = scored_rows(earlier + third, third=True)
+    assert {r["source"] for r in only} == set(THIRD_SETS) and len(only) == len(third)
+    assert sum(left_third.values()) == len(earlier)
+    for heldback, write in ((False, False), (True, False), (False, True), (True, True)):
+        read, first, new = rows_read(earlier + third, heldback, write)
+        assert read and {r["source"] for r in read}.isdisjoint(THIRD_SETS)
+        assert not any(s.split(":")[0] in THIRD_SETS for s in first | new)
+    sources = {source_of(r, "person") for r in third}
+    assert not any(is_held_back_new(s) for s in sources)
+    assert {group_of(s, set()) for s in sources} == {"third held back"}
