@@ -9,7 +9,10 @@ students): more students of the ITT course (set
 ``itt``), the people whom students of a course on input recognition (University of Florida, CIS6930 "Human-Centered
 Input Recognition Algorithms", set ``hcira``) recorded drawing the $1 gestures, and the Mixed Multistroke Gestures
 set (Anthony & Wobbrock 2012, set ``mmg``: 20 people, stylus or finger on a Tablet PC) as a student's repository
-holds it. None carries a licence that allows copying it, so nothing is committed; a repository is read from
+holds it; and the sets of the third search (`THIRD_ENTRIES`, set ``hcira3``: more HCIRA teams' people, on a
+trackpad, a mouse, a stylus on an iPad and a finger on a touch screen), which are the third held-back group
+(`bench_generalisation.THIRD_SETS`: scored only by ``bench_generalisation.py --third``, by the lead, once). None
+carries a licence that allows copying it, so nothing is committed; a repository is read from
 ``DIR/<owner>+<name>/repo`` (as the fetch tool leaves them) or cloned bare into the cache (`student_sets.git_dir`).
 
 Each entry names the folder holding one person's recordings (``ONE``) or a folder of per-person subfolders
@@ -56,12 +59,27 @@ class Entry(NamedTuple):
     form: str = XML
     """`XML`: a gesture a file ($1 or $N form); `ACCORD`: a file a label of ``<Sequence>`` samples (the Accord.NET
     gesture sample's form); `JAVA`: a folder a label of Java-serialised samples."""
+    rename: tuple[str, str] = ("", "")
+    """`PER_FOLDER`: (a prefix put before, a suffix taken off) each subfolder's name to name its person, so that one
+    person's folders on several devices are one source (``user01mouse`` -> ``user01``) and two studies of one team
+    are not (``user1`` -> ``trackpad-user1``)."""
 
 
 MAX_COPIES = 5
 """A gesture file whose stroke was gathered already under another source is skipped (a file copied by hand); more
 than this many in one source stop the script: the source is a copy."""
 HCIRA_MOUSE = "mouse"
+SUBHASH = ("subhash-vadlamani/UniStrokeGestureRecognizer", "c098c374c9d7dfc121e3e33731d8b7fc531f2bd7")
+THIRD_ENTRIES: tuple[Entry, ...] = (
+    Entry("hcira3", *SUBHASH, "Part_4/part4_dataset/user_logs", "trackpad", PER_FOLDER, rename=("trackpad-", "")),
+    *(Entry("hcira3", *SUBHASH, f"project2_sourcecode/user_logs_{folder}", device, PER_FOLDER, rename=("", suffix))
+      for folder, device, suffix in (("mouse", "mouse", "mouse"), ("stylus", "stylus on an iPad", ""),
+                                     ("touchscreen", "finger on a laptop's touch screen", ""))),
+    Entry("hcira3", "prapti21/One-dollar-recognizer", "cb84e15958fe4a23ef11b3e2979edc44ee781890", "xml_input",
+          "mouse (Java Swing; the pointer is not stated)", PER_FOLDER),
+)
+"""The sets of the third search (issue 25, `bench_generalisation.THIRD_SETS`: the third held-back group, never
+designed on; `benchmarks/SOURCES.md`, "The third search")."""
 ENTRIES: tuple[Entry, ...] = (
     Entry("itt", "ITT-24/assignment-6-gesture-recognition-EmmaSophieReichert",
           "32d2840d2a55803e49d522f51e260a494c71589e", "dataset/my-dataset", "mouse", ONE, "EmmaSophieReichert"),
@@ -91,11 +109,15 @@ ENTRIES: tuple[Entry, ...] = (
       for folder in ("TrainingData", "TestData")),
     Entry("gtiwari", "gtiwari333/mouse-gesture-recognition-java-hidden-markov-model",
           "06d93512747fca7352b4d7e1c5417f999767ad8f", "trainData", "mouse", ONE, "gtiwari333", form=JAVA),
+    *THIRD_ENTRIES,
 )
-"""Every set of the second search (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and how."""
+"""Every set of the second and third searches (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and
+how."""
 
 SPELLINGS = {**student_sets.LABEL_SPELLINGS, "pig_tail": "pigtail", "zig_zag": "zigzag",
-             "left_square_bracket": "left_sq_bracket", "right_square_bracket": "right_sq_bracket"}
+             "left_square_bracket": "left_sq_bracket", "right_square_bracket": "right_sq_bracket",
+             "left_curly_braces": "left_curly_brace", "right_curly_braces": "right_curly_brace",
+             "left_square_braces": "left_sq_bracket", "right_square_braces": "right_sq_bracket"}
 DOLLAR_LABELS = frozenset({"arrow", "caret", "check", "circle", "delete_mark", "left_curly_brace", "left_sq_bracket",
                            "pigtail", "question_mark", "rectangle", "right_curly_brace", "right_sq_bracket", "star",
                            "triangle", "v", "x", "zigzag"})
@@ -194,7 +216,9 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
         people = [(entry.person, entry.folder)]
     else:
         subs = _subfolders(gdir, c, entry.folder)
-        people = [(f"{owner}/{Path(s).name}", s) for s in subs if not entry.only or Path(s).name in entry.only]
+        prefix, suffix = entry.rename
+        people = [(f"{owner}/{prefix}{Path(s).name.removesuffix(suffix)}", s) for s in subs
+                  if not entry.only or Path(s).name in entry.only]
     for person, folder in people:
         for name in _files(gdir, c, folder):
             strokes, root = strokes_of(at + name, _git(gdir, "show", f"{c}:{name}"))
