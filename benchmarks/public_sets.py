@@ -75,8 +75,6 @@ THIRD_ENTRIES: tuple[Entry, ...] = (
     *(Entry("hcira3", *SUBHASH, f"project2_sourcecode/user_logs_{folder}", device, PER_FOLDER, rename=("", suffix))
       for folder, device, suffix in (("mouse", "mouse", "mouse"), ("stylus", "stylus on an iPad", ""),
                                      ("touchscreen", "finger on a laptop's touch screen", ""))),
-    Entry("hcira3", "prapti21/One-dollar-recognizer", "cb84e15958fe4a23ef11b3e2979edc44ee781890", "xml_input",
-          "mouse (Java Swing; the pointer is not stated)", PER_FOLDER),
 )
 """The sets of the third search (issue 25, `bench_generalisation.THIRD_SETS`: the third held-back group, never
 designed on; `benchmarks/SOURCES.md`, "The third search")."""
