@@ -194,3 +194,39 @@ def test_the_third_search_sets_are_left_out_of_every_run_but_their_own_and_never
     sources = {source_of(r, "person") for r in third}
     assert not any(is_held_back_new(s) for s in sources)
     assert {group_of(s, set()) for s in sources} == {"third held back"}
+
+
+def test_the_third_search_sets_are_read_by_person_across_devices_and_held_back(tmp_path) -> None:
+    """The third search's form (a team's $1-form XML files, a folder a person and device, e.g.
+    ``user_logs_mouse/user01mouse/zig_zag01.xml``), made here in miniature: one person's folders on two devices are
+    one source, another study of the same team is another source, its spellings become the $1 set's labels, and
+    every row is of a `THIRD_SETS` set, so the default run leaves it out."""
+    from mirror_repo import commit_mirror
+    from public_sets import PER_FOLDER, THIRD_ENTRIES, Entry, entry_rows
+
+    def gesture(name: str, points) -> str:
+        return (f'<?xml version="1.0"?><Gesture Name="{name}" Subject="1" Date="Saturday, February 25, 2023">'
+                f"{_points_xml(points)}</Gesture>")
+
+    mirrors, head = commit_mirror(tmp_path, "team/recogniser", {
+        "p2/user_logs_mouse/user01mouse/zig_zag01.xml": gesture("zig_zag01", [(0, 0), (20, 30), (40, 0), (60, 30)]),
+        "p2/user_logs_stylus/user01/left_square_bracket01.xml": gesture("left_square_bracket01",
+                                                                         [(40, 0), (0, 0), (0, 80), (40, 80)]),
+        "p1/user_logs/user1/delete01.xml": gesture("delete01", [(0, 0), (50, 50), (0, 50), (50, 0)]),
+        "p1/user_logs/user1/xml_logs/s05/circle01.xml": gesture("circle01", _circle()),  # deeper: never read
+    })
+    repo = "team/recogniser"
+    entries = [Entry("hcira3", repo, head, "p2/user_logs_mouse", "mouse", PER_FOLDER, rename=("", "mouse")),
+               Entry("hcira3", repo, head, "p2/user_logs_stylus", "stylus", PER_FOLDER),
+               Entry("hcira3", repo, head, "p1/user_logs", "trackpad", PER_FOLDER, rename=("trackpad-", ""))]
+    rows = [r for e in entries for r in entry_rows(e, mirrors, set(), {}, [])]
+    assert [(r["subject"], r["device"], r["label"]) for r in rows] == [
+        ("team/user01", "mouse", "zigzag"), ("team/user01", "stylus", "left_sq_bracket"),
+        ("team/trackpad-user1", "trackpad", "delete_mark")]
+    assert rows[0]["strokes"] == [[[0.0, 0.0, 0.0], [20.0, 30.0, 10.0], [40.0, 0.0, 20.0], [60.0, 30.0, 30.0]]]
+    assert {source_of(r, "person") for r in rows} == {"hcira3:team/user01", "hcira3:team/trackpad-user1"}
+    kept, _ = scored_rows(rows)
+    assert kept == []
+    third, _ = scored_rows(rows, third=True)
+    assert [sorted(r["accepts"]) for r in third] == [["polyline"], ["polyline"], ["polyline"]]
+    assert {e.set_name for e in THIRD_ENTRIES} <= THIRD_SETS
