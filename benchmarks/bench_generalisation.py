@@ -54,7 +54,7 @@ HELD_BACK_SEED_NEW = "physink-heldback-2:"
 `HELD_BACK_SEED_NEW` + its source name (``set:person``, or the set where it names none) is even. Fixed before any
 stroke of theirs was looked at; their strokes are never listed, drawn or looked at one by one; they are left out of
 every run unless asked for (``--heldback``), then scored pooled and per source, once."""
-THIRD_SETS = frozenset({"hcira3"})
+THIRD_SETS = frozenset({"hcira3", "fc"})
 """The sets found by the third search for public sets (issue 25, 2026-12-03 from 22:30 UTC; `benchmarks/SOURCES.md`,
 "The third search"): the third held-back group, held back whole, by set name, fixed before any stroke of theirs was
 read. `scored_rows` leaves them out of every run (so `train_ranker.py` never fits on them, `label_contradictions` never
