@@ -41,7 +41,8 @@ from student_sets import _git, git_dir, reserved_points, times_ms
 
 CACHE = Path.home() / ".cache" / "physink"
 ONE, PER_FOLDER = "one", "per-folder"
-XML, ACCORD, JAVA = "xml", "accord", "java"
+XML, ACCORD, JAVA, INKML = "xml", "accord", "java", "inkml"
+INK = "{http://www.w3.org/2003/InkML}"
 
 
 class Entry(NamedTuple):
@@ -58,7 +59,8 @@ class Entry(NamedTuple):
     """`PER_FOLDER`: the subfolders read (all when empty)."""
     form: str = XML
     """`XML`: a gesture a file ($1 or $N form); `ACCORD`: a file a label of ``<Sequence>`` samples (the Accord.NET
-    gesture sample's form); `JAVA`: a folder a label of Java-serialised samples."""
+    gesture sample's form); `JAVA`: a folder a label of Java-serialised samples; `INKML`: a diagram a file, its
+    symbols trace groups labelled by their ``truth`` annotation, its writer named in the file (the FC database)."""
     rename: tuple[str, str] = ("", "")
     """`PER_FOLDER`: (a prefix put before, a suffix taken off) each subfolder's name to name its person, so that one
     person's folders on several devices are one source (``user01mouse`` -> ``user01``) and two studies of one team
@@ -75,6 +77,8 @@ THIRD_ENTRIES: tuple[Entry, ...] = (
     *(Entry("hcira3", *SUBHASH, f"project2_sourcecode/user_logs_{folder}", device, PER_FOLDER, rename=("", suffix))
       for folder, device, suffix in (("mouse", "mouse", "mouse"), ("stylus", "stylus on an iPad", ""),
                                      ("touchscreen", "finger on a laptop's touch screen", ""))),
+    Entry("fc", "zevisert/FCinkML1.7-renders", "ec845d2f0c140b2df296c5932339c881a2bfb1b7", "sources",
+          "pen (the FC database's acquisition device)", ONE, form=INKML),
 )
 """The sets of the third search (issue 25, `bench_generalisation.THIRD_SETS`: the third held-back group, never
 designed on; `benchmarks/SOURCES.md`, "The third search")."""
@@ -190,6 +194,37 @@ def java_stroke(where: str, data: bytes) -> list[list[float | None]]:
     return [[float(x), float(y), t] for (x, y), t in zip(xy, ts, strict=True)]
 
 
+def inkml_symbols(where: str, data: bytes) -> list[tuple[str, str, list[list[list[float | None]]]]]:
+    """(writer, label, pen-downs) of every symbol of an InkML diagram: each innermost ``traceGroup`` with a ``truth``
+    annotation, its strokes the traces it refers to, in order (points [x, y, None]: the files keep no times).
+
+    Raises:
+        ValueError: the file does not parse, names no writer, or a group refers to a trace it does not hold.
+    """
+    try:
+        root = ET.fromstring(data)
+    except ET.ParseError as exc:
+        raise ValueError(f"{where}: {exc}") from None
+    writer = next((a.text or "" for a in root.findall(f"{INK}annotation") if a.get("type") == "writer"), "").strip()
+    if not writer:
+        raise ValueError(f"{where}: no <annotation type=\"writer\">")
+    traces = {t.get("id"): [[float(v) for v in pt.split()[:2]] + [None] for pt in (t.text or "").split(",")
+                            if pt.strip()] for t in root.iter(f"{INK}trace")}
+    out = []
+    for group in root.iter(f"{INK}traceGroup"):
+        if group.find(f"{INK}traceGroup") is not None:
+            continue
+        label = next((a.text or "" for a in group.findall(f"{INK}annotation") if a.get("type") == "truth"), "").strip()
+        refs = [v.get("traceDataRef") for v in group.findall(f"{INK}traceView")]
+        if not label or not refs:
+            continue
+        missing = [r for r in refs if r not in traces]
+        if missing:
+            raise ValueError(f"{where}: trace group {label!r} refers to traces {missing} the file does not hold")
+        out.append((writer, label, [traces[r] for r in refs]))
+    return out
+
+
 def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, str, list, str]]:
     """(where, person, device, label, pen-downs, date) of every gesture ``entry`` names, in order."""
     owner, c = entry.repo.split("/")[0], entry.commit
@@ -203,6 +238,12 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
             for k, seq in enumerate(root.iter("Sequence"), 1):
                 pts = [[float(p.findtext("X", "nan")), float(p.findtext("Y", "nan")), None] for p in seq.iter("Point")]
                 yield f"{at}{name}#{k}", entry.person, entry.device, Path(name).stem, [pts], ""
+        return
+    if entry.form == INKML:  # a diagram per file: every labelled trace group is one symbol of the file's writer
+        for name in _files(gdir, c, entry.folder, ".inkml"):
+            for k, (writer, label, strokes) in enumerate(inkml_symbols(at + name, _git(gdir, "show", f"{c}:{name}")),
+                                                        1):
+                yield f"{at}{name}#{k}", writer, entry.device, label, strokes, ""
         return
     if entry.form == JAVA:  # a folder per label, a serialised RawFeature per sample
         for sub in _subfolders(gdir, c, entry.folder):
