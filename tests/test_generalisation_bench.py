@@ -233,3 +233,36 @@ def test_the_third_search_sets_are_read_by_person_across_devices_and_held_back(t
     third, _ = scored_rows(rows, third=True)
     assert [sorted(r["accepts"]) for r in third] == [["polyline"], ["polyline"], ["polyline"]]
     assert {e.set_name for e in THIRD_ENTRIES} <= THIRD_SETS
+
+
+def test_an_inkml_diagram_gives_one_row_a_symbol_of_its_writer(tmp_path) -> None:
+    """The FC flowchart database's form (InkML: traces of "x y" pairs, symbols as trace groups with a truth label,
+    the writer in an annotation), made here in miniature: a one-stroke box is one scored row, a two-stroke arrow is
+    counted as drawn in two strokes, and both belong to the third held-back group."""
+    from mirror_repo import commit_mirror
+    from public_sets import INKML, ONE, Entry, entry_rows, inkml_symbols
+
+    def trace(k: int, points) -> str:
+        return f'<trace id="{k}">' + ", ".join(f"{x:g} {y:g}" for x, y in points) + "</trace>"
+
+    box = _square(60)
+    ink = ('<ink xmlns="http://www.w3.org/2003/InkML"><annotation type="writer">writer7</annotation>'
+           + trace(0, box) + trace(1, [(0, 100), (80, 100)]) + trace(2, [(70, 95), (80, 100), (70, 105)])
+           + '<traceGroup><annotation type="truth">From ITF</annotation>'
+           '<traceGroup><annotation type="truth">process</annotation><traceView traceDataRef="0"/></traceGroup>'
+           '<traceGroup><annotation type="truth">arrow</annotation><traceView traceDataRef="1"/>'
+           '<traceView traceDataRef="2"/></traceGroup></traceGroup></ink>')
+    symbols = inkml_symbols("d.inkml", ink.encode())
+    assert [(w, label, len(strokes)) for w, label, strokes in symbols] == [("writer7", "process", 1),
+                                                                          ("writer7", "arrow", 2)]
+    assert symbols[0][2][0][:2] == [[0.0, 0.0, None], [3.0, 0.0, None]]
+    with pytest.raises(ValueError, match=r"e\.inkml: trace group 'process' refers to traces \['9'\]"):
+        inkml_symbols("e.inkml", ink.replace('traceDataRef="0"', 'traceDataRef="9"').encode())
+    mirrors, head = commit_mirror(tmp_path, "someone/flowcharts", {"sources/writer7_1.inkml": ink})
+    rows = entry_rows(Entry("fc", "someone/flowcharts", head, "sources", "pen", ONE, form=INKML), mirrors, set(), {},
+                      [])
+    assert [(source_of(r, "person"), r["label"]) for r in rows] == [("fc:writer7", "process"), ("fc:writer7", "arrow")]
+    assert scored_rows(rows)[0] == []
+    third, left = scored_rows(rows, third=True)
+    assert [(r["label"], r["accepts"]) for r in third] == [("process", frozenset({"box"}))]
+    assert sum(left.values()) == 1  # the arrow: no kind stands for a flowchart's arrow
