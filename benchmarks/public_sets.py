@@ -201,6 +201,9 @@ def inkml_symbols(where: str, data: bytes) -> list[tuple[str, str, list[list[lis
     Raises:
         ValueError: the file does not parse, names no writer, or a group refers to a trace it does not hold.
     """
+    if b"<inkml:" in data and b"xmlns:inkml" not in data:  # one FC file uses the prefix without declaring it
+        data = data.replace(b'xmlns="http://www.w3.org/2003/InkML"',
+                            b'xmlns="http://www.w3.org/2003/InkML" xmlns:inkml="http://www.w3.org/2003/InkML"', 1)
     try:
         root = ET.fromstring(data)
     except ET.ParseError as exc:
