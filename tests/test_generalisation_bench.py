@@ -266,3 +266,31 @@ def test_an_inkml_diagram_gives_one_row_a_symbol_of_its_writer(tmp_path) -> None
     third, left = scored_rows(rows, third=True)
     assert [(r["label"], r["accepts"]) for r in third] == [("process", frozenset({"box"}))]
     assert sum(left.values()) == 1  # the arrow: no kind stands for a flowchart's arrow
+
+
+def test_the_third_flag_scores_the_third_group_alone_and_the_default_run_never(tmp_path, capsys, monkeypatch) -> None:
+    """`bench_generalisation.py SETS --third --defaults` (the lead's one run) scores only the third group's sources,
+    pooled apart; the same sets without it score none of them (strokes made here, not any set's)."""
+    import bench_generalisation
+
+    def row(set_name: str, person: str, label: str, points) -> dict:
+        return {"source": set_name, "subject": person, "label": label, "file": f"{set_name}-{person}-{label}",
+                "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(points)]]}
+
+    rows = [row("hcira3", f"team/user0{k}", "circle", _circle(30 + 5 * k)) for k in (1, 2)]
+    rows += [row("fc", "writer3", "process", _square(70)), row("dollar1", "s02", "circle", _circle(50)),
+             row("dollar1", "s03", "rectangle", _square(90))]
+    path = tmp_path / "sets.jsonl"
+    path.write_text("".join(json.dumps(r) + "\n" for r in rows))
+    monkeypatch.setattr(sys, "argv", ["bench_generalisation.py", str(path), "--third", "--defaults"])
+    bench_generalisation.main()
+    out = capsys.readouterr().out
+    assert "| hcira3:team/user01 | 1 |" in out and "| fc:writer3 | 1 |" in out and "dollar1:" not in out.split(
+        "### Leave one source out")[1]
+    assert "The third held-back group (`THIRD_SETS`): 3/3 = 100.00 %." in out
+    monkeypatch.setattr(sys, "argv", ["bench_generalisation.py", str(path), "--defaults"])
+    bench_generalisation.main()
+    out = capsys.readouterr().out
+    assert "| dollar1:s02 | 1 |" in out and "hcira3:" not in out.split("### Leave one source out")[1]
+    assert "fc:" not in out.split("### Leave one source out")[1] and "third held-back group" not in out.split(
+        "### Leave one source out")[1]
