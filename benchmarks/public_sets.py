@@ -77,6 +77,8 @@ THIRD_ENTRIES: tuple[Entry, ...] = (
     *(Entry("hcira3", *SUBHASH, f"project2_sourcecode/user_logs_{folder}", device, PER_FOLDER, rename=("", suffix))
       for folder, device, suffix in (("mouse", "mouse", "mouse"), ("stylus", "stylus on an iPad", ""),
                                      ("touchscreen", "finger on a laptop's touch screen", ""))),
+    Entry("hcira3", "srichaitanyanulu/Dollar1-with-Protractor-Algorithm", "d70976beca745cafbe4dec0451253316fd904e01",
+          "User Gesture Dataset", "pointer on a tkinter canvas (mouse or touch: not stated)", PER_FOLDER),
     Entry("fc", "zevisert/FCinkML1.7-renders", "ec845d2f0c140b2df296c5932339c881a2bfb1b7", "sources",
           "pen (the FC database's acquisition device)", ONE, form=INKML),
 )
@@ -119,7 +121,8 @@ how."""
 SPELLINGS = {**student_sets.LABEL_SPELLINGS, "pig_tail": "pigtail", "zig_zag": "zigzag",
              "left_square_bracket": "left_sq_bracket", "right_square_bracket": "right_sq_bracket",
              "left_curly_braces": "left_curly_brace", "right_curly_braces": "right_curly_brace",
-             "left_square_braces": "left_sq_bracket", "right_square_braces": "right_sq_bracket"}
+             "left_square_braces": "left_sq_bracket", "right_square_braces": "right_sq_bracket",
+             "left_square_brace": "left_sq_bracket", "right_square_brace": "right_sq_bracket"}
 DOLLAR_LABELS = frozenset({"arrow", "caret", "check", "circle", "delete_mark", "left_curly_brace", "left_sq_bracket",
                            "pigtail", "question_mark", "rectangle", "right_curly_brace", "right_sq_bracket", "star",
                            "triangle", "v", "x", "zigzag"})
