@@ -9,8 +9,9 @@ students): more students of the ITT course (set
 ``itt``), the people whom students of a course on input recognition (University of Florida, CIS6930 "Human-Centered
 Input Recognition Algorithms", set ``hcira``) recorded drawing the $1 gestures, and the Mixed Multistroke Gestures
 set (Anthony & Wobbrock 2012, set ``mmg``: 20 people, stylus or finger on a Tablet PC) as a student's repository
-holds it; and the sets of the third search (`THIRD_ENTRIES`, set ``hcira3``: more HCIRA teams' people, on a
-trackpad, a mouse, a stylus on an iPad and a finger on a touch screen), which are the third held-back group
+holds it; and the sets of the third search (`THIRD_ENTRIES`: set ``hcira3``, two more HCIRA teams' people, on a
+trackpad, a mouse, a stylus on an iPad and a finger on a touch screen; set ``fc``, the online handwritten flowchart
+database FC, a writer a source, read from InkML), which are the third held-back group
 (`bench_generalisation.THIRD_SETS`: scored only by ``bench_generalisation.py --third``, by the lead, once). None
 carries a licence that allows copying it, so nothing is committed; a repository is read from
 ``DIR/<owner>+<name>/repo`` (as the fetch tool leaves them) or cloned bare into the cache (`student_sets.git_dir`).
