@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition import open_marks
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -118,6 +119,10 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             and (all(straight_runs) or _bent_polyline(work, th, corners, noise)
                  or _tick_into_bend(work, corners, straight_runs, roundness, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
+    if (len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, th, corners, straight_runs, roundness)
+            and not _brace_tip(work, corners)):
+        # a zig-zag's sharp teeth between a loose lead-in and a curled tail (`open_marks.sawtooth`)
+        return Recognition("polyline", 0.8, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
         one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends

@@ -1,0 +1,69 @@
+"""Open marks of straight strokes as a hurried hand draws them: a zig-zag's teeth between a lead-in and a tail.
+
+The open-stroke rules (`open_shapes.classify_open`) ask every side of a polyline to be straight and every corner to
+be sharp; these tests say when a stroke is a polyline although one of its sides is not, because a reader sees the
+mark in the rest of it. No I/O.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_geometry as sg
+
+SAW_TEETH = 4
+"""A zig-zag has at least this many sharp corners in a row, joined by even sides: three teeth (two corners make an N,
+three a brace's tip drawn as a spike: the arm's end, the point, the next arm's start)."""
+SAW_TURN_DEG = 90.0
+"""Each of a zig-zag's corners turns the path by at least a right angle (`stroke_geometry.DIP_TURN_DEG`: the teeth's
+points; a brace's shoulders, where its tip leaves and rejoins the stroke, turn 60-85 degrees)."""
+SAW_ROUND = 0.5
+"""A zig-zag's points are sharp: each does its turning within this share of its shorter side
+(`stroke_features.corner_roundness`; a wobbly brace's bends take 0.5-0.9 of theirs)."""
+SAW_EVEN = 2.0
+"""A zig-zag is drawn with a rhythm: each side between its teeth is at most this many times as long as the one before,
+or as short (a brace's arm is many times its tip's sides)."""
+SAW_REACH = 3
+"""A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
+
+
+def signed_turns(th: np.ndarray, corners: list[int], reach: int = SAW_REACH) -> list[float]:
+    """Signed net turning (degrees) right at each inner corner (left positive), over ``reach`` points either side."""
+    n = len(th) + 2
+    out = []
+    for c in corners[1:-1]:
+        lo, hi = max(c - reach, 1), min(c + reach, n - 2)
+        out.append(math.degrees(float(th[lo - 1:hi].sum())))
+    return out
+
+
+def sawtooth(work: np.ndarray, th: np.ndarray, corners: list[int], straight_runs: list[bool],
+             roundness: list[float]) -> bool:
+    """Whether `SAW_TEETH` or more inner corners in a row each turn by `SAW_TURN_DEG` or more, each the other way
+    from the one before, joined by straight sides each within `SAW_EVEN` of the one before, every tooth point
+    `SAW_ADVANCE` on from the one two before: a zig-zag's teeth. The sides before the first tooth and after the last
+    (a lead-in drawn as the pen gathers speed, a tail that curls off as it leaves the paper) may be anything: a
+    hurried hand draws its zig-zag's teeth sharp and its ends loosely. A brace's tip (the arm's end, the point, the
+    next arm's start) also turns each way in turn between two short sides, but goes out and comes back to where it
+    left: it does not move on."""
+    return teeth_run(work, th, corners, straight_runs, roundness) >= SAW_TEETH
+
+
+def teeth_run(work: np.ndarray, th: np.ndarray, corners: list[int], straight_runs: list[bool],
+              roundness: list[float]) -> int:
+    """The longest run of a zig-zag's teeth points (`sawtooth`)."""
+    turns = signed_turns(th, corners)
+    sides = [sg.path_length(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
+    run = best = 0
+    for i, t in enumerate(turns):
+        tooth = abs(t) >= SAW_TURN_DEG and roundness[i] <= SAW_ROUND
+        # side i runs from inner corner i - 1 to inner corner i; side i - 1 is the tooth side before it
+        follows = (run > 0 and (t > 0) != (turns[i - 1] > 0) and straight_runs[i]
+                   and (run == 1 or max(sides[i], sides[i - 1]) <= SAW_EVEN * min(sides[i], sides[i - 1])))
+        run = run + 1 if tooth and follows else (1 if tooth else 0)
+        best = max(best, run)
+    return best
+
