@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Sequence
 
 import numpy as np
 
@@ -24,8 +25,9 @@ SAW_ROUND = 0.5
 """A zig-zag's points are sharp: each does its turning within this share of its shorter side
 (`stroke_features.corner_roundness`; a wobbly brace's bends take 0.5-0.9 of theirs)."""
 SAW_EVEN = 2.0
-"""A zig-zag is drawn with a rhythm: each side between its teeth is at most this many times as long as the one before,
-or as short (a brace's arm is many times its tip's sides)."""
+"""A zig-zag is drawn with a rhythm: each side between its teeth is at most this many times as long as the side drawn
+alike before it (two back: a sawtooth's drop and the next drop, its slanted rise and the next), or as short; a brace's
+arm is two to four times its tip's sides."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
@@ -42,13 +44,12 @@ def signed_turns(th: np.ndarray, corners: list[int], reach: int = SAW_REACH) -> 
 
 def sawtooth(work: np.ndarray, th: np.ndarray, corners: list[int], straight_runs: list[bool],
              roundness: list[float]) -> bool:
-    """Whether `SAW_TEETH` or more inner corners in a row each turn by `SAW_TURN_DEG` or more, each the other way
-    from the one before, joined by straight sides each within `SAW_EVEN` of the one before, every tooth point
-    `SAW_ADVANCE` on from the one two before: a zig-zag's teeth. The sides before the first tooth and after the last
-    (a lead-in drawn as the pen gathers speed, a tail that curls off as it leaves the paper) may be anything: a
-    hurried hand draws its zig-zag's teeth sharp and its ends loosely. A brace's tip (the arm's end, the point, the
-    next arm's start) also turns each way in turn between two short sides, but goes out and comes back to where it
-    left: it does not move on."""
+    """Whether `SAW_TEETH` or more inner corners in a row each turn by `SAW_TURN_DEG` or more, no rounder than
+    `SAW_ROUND`, each the other way from the one before, joined by straight sides each within `SAW_EVEN` of the one
+    drawn alike two before: a zig-zag's teeth. The sides before the first tooth and after the last (a lead-in drawn as
+    the pen gathers speed, a tail that curls off as it leaves the paper) may be anything: a hurried hand draws its
+    zig-zag's teeth sharp and its ends loosely. A brace's tip (the arm's end, the point, the next arm's start) also
+    turns each way in turn, but is three corners, and the next side is a long arm, not a tooth like the tip's."""
     return teeth_run(work, th, corners, straight_runs, roundness) >= SAW_TEETH
 
 
@@ -62,8 +63,36 @@ def teeth_run(work: np.ndarray, th: np.ndarray, corners: list[int], straight_run
         tooth = abs(t) >= SAW_TURN_DEG and roundness[i] <= SAW_ROUND
         # side i runs from inner corner i - 1 to inner corner i; side i - 1 is the tooth side before it
         follows = (run > 0 and (t > 0) != (turns[i - 1] > 0) and straight_runs[i]
-                   and (run == 1 or max(sides[i], sides[i - 1]) <= SAW_EVEN * min(sides[i], sides[i - 1])))
+                   and (run < 3 or _like(sides[i], sides[i - 2])))
         run = run + 1 if tooth and follows else (1 if tooth else 0)
         best = max(best, run)
     return best
 
+
+
+def sawtooth_vertices(points: Sequence[tuple[float, float]]) -> bool:
+    """`sawtooth` on a polyline's vertices (the rules' reading): `SAW_TEETH` or more inner vertices in a row each
+    turning by `SAW_TURN_DEG` or more, each the other way from the one before, joined by sides each within `SAW_EVEN`
+    of the one two before (the rules already judged the sides straight and the corners sharp)."""
+    if len(points) < SAW_TEETH + 2:
+        return False
+    v = np.diff(np.asarray(points, dtype=float), axis=0)
+    sides = np.hypot(v[:, 0], v[:, 1])
+    if not (sides > 0).all():
+        return False
+    turns = np.degrees(np.arctan2(v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0], (v[:-1] * v[1:]).sum(axis=1)))
+    run = 0
+    for i, t in enumerate(turns.tolist()):
+        tooth = abs(t) >= SAW_TURN_DEG
+        follows = (run > 0 and (t > 0) != (turns[i - 1] > 0)
+                   and (run < 3 or _like(sides[i], sides[i - 2])))
+        run = run + 1 if tooth and follows else (1 if tooth else 0)
+        if run >= SAW_TEETH:
+            return True
+    return False
+
+
+def _like(a: float, b: float) -> bool:
+    """Whether two sides of a zig-zag drawn alike (a drop and the next drop, a rise and the next rise) are within
+    `SAW_EVEN` of each other's length."""
+    return max(a, b) <= SAW_EVEN * min(a, b)

@@ -276,17 +276,14 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
            model: Model) -> Recognition:
     """``found`` (the rules' reading of the stroke), or the kind the model prefers with its geometry drawn from
     the stroke, the rules' kind then the first alternative."""
-    if found.kind not in KINDS:
+    if found.kind not in KINDS or zigzag_teeth(found):
         return found
     if found.kind == "polygon" and not _ends_apart(points):
         return found
     unit = _unit_work(points, times)
     if found.kind == "polygon" and (unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
         return found
-    phi = _features(unit, noise)
-    if found.kind == "polyline" and unit is not None and zigzag_teeth(unit, phi, noise):
-        return found
-    kind, chance = choose(found.kind, phi, model)
+    kind, chance = choose(found.kind, _features(unit, noise), model)
     if kind == found.kind:
         return found
     shape = geometry(kind, unit[1]) if unit is not None else None
@@ -297,20 +294,12 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
                        ((found.kind, round(1.0 - chance, 4)),))
 
 
-def zigzag_teeth(unit: tuple[np.ndarray, np.ndarray, list[float] | None, float], phi: np.ndarray,
-                 noise: float) -> bool:
-    """Whether the rules' polyline has a zig-zag's teeth (`open_marks.sawtooth`, on the corners the open-stroke rules
-    find: every sharp dip of a run of short straws): not asked of the model, whose features (fitted on few zig-zags)
-    take a curled tail's bow for a curve's. Only strokes turning both ways three times or more are measured."""
-    if round(float(phi[FEATURES.index("lobes")]) * 4) < open_marks.SAW_TEETH:
-        return False
-    raw, work, _, diag = unit
-    noise = max(noise, sg.jitter(raw)) / diag  # as `_features` judges straightness
-    length = sg.path_length(work)
-    corners = sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), length)
-    runs = [open_shapes.straight(work[a:b + 1], noise) for a, b in itertools.pairwise(corners)]
-    return len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, sg.turning(work), corners, runs,
-                                                                           sf.corner_roundness(work, corners))
+def zigzag_teeth(found: Recognition) -> bool:
+    """Whether the rules' polyline has a zig-zag's teeth (`open_marks.sawtooth_vertices`, on the corners the rules
+    found, which see small teeth the model's 64 points smooth away): not asked of the model, whose features (fitted
+    on few zig-zags) take a curled tail's bow for a curve's."""
+    return (found.kind == "polyline" and isinstance(found.geometry, Polyline)
+            and open_marks.sawtooth_vertices(found.geometry.points))
 
 
 def _ends_apart(points: Sequence[Sequence[float]]) -> bool:

@@ -1,0 +1,79 @@
+"""Zig-zags as a hurried hand draws them (issue 25, fifth pass): small sharp teeth between a long lead-in and a tail
+that curls off as the pen leaves the paper are a polyline (`open_marks.sawtooth`), by the rules and with the learned
+ranker, drawn by either pen model; and a curly brace drawn with a mouse stays a curve.
+
+The strokes are drawn here by the repo's pen models (`tests/penmodels`: the hurried hand; the virtual pen of
+`physink_tui.input.virtual_pen`, a careful hand on a UC-Logic tablet's reports), so nothing skips. People's zig-zags of
+the public sets that the rule reads right are in `test_open_marks.py` (they skip without the cached sets).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+
+import pytest
+from penmodels.hurried import HurriedPen, touching
+from penmodels.shapes import CANVAS
+from scenarios.thesis import DEVICE
+from test_mouse_marks import mouse_brace
+
+from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
+from physink_tui.scene.recognition.recognize import recognize_stroke
+
+Point = tuple[float, float]
+SEEDS = range(20)
+
+
+def sawtooth_with_a_tail(seed: int) -> list[Point]:
+    """A long lead-in rising to the first tooth, three to five small sawtooth teeth (a steep drop, a slanted rise),
+    then a tail curling off along a quarter circle: klarubbio/s06's zig-zags, in canvas pixels."""
+    rng = random.Random(seed)
+    size = rng.uniform(40.0, 70.0)  # the tooth's width
+    height = rng.uniform(0.6, 1.0) * size
+    angle = rng.uniform(-0.3, 0.3)
+    c, s = math.cos(angle), math.sin(angle)
+    keys: list[Point] = [(-2.2 * size, 1.1 * height), (0.0, 0.0)]  # the lead-in
+    x = 0.0
+    for _ in range(rng.randint(3, 5)):
+        keys.append((x + rng.uniform(0.0, 0.1) * size, height))  # the drop
+        x += size
+        keys.append((x, rng.uniform(0.0, 0.15) * height))  # the slanted rise
+    keys.append((x + 0.05 * size, height))
+    r = rng.uniform(0.8, 1.4) * size  # the tail: a quarter circle turning off flat
+    for k in range(1, 13):
+        a = math.pi / 2 * k / 12
+        keys.append((x + 0.05 * size + r * math.sin(a), height + r * (1 - math.cos(a)) * 0.35))
+    return [(600 + px * c - py * s, 450 + px * s + py * c) for px, py in keys]
+
+
+def hurried(keys: list[Point], seed: int) -> list[tuple[float, float, float]]:
+    """The hurried hand along ``keys``: hooks where it lands and lifts, tremor, speed slowing into corners."""
+    return touching(HurriedPen(random.Random(seed)).play(keys, 0.0))
+
+
+def careful(keys: list[Point], seed: int) -> list[tuple[float, float, float]]:
+    """The virtual pen along ``keys``: its samples where the tip touches, in canvas pixels (a steady hand at an even
+    pace with its landing and lifting ramps; `VirtualPen.samples`, the states behind its reports)."""
+    w, h = CANVAS
+    pen = VirtualPen(REFERENCE_DEVICES[DEVICE], seed=seed)
+    samples = pen.samples([Stroke(tuple((x / w, y / h) for x, y in keys))])
+    return [(s.state.x * w, s.state.y * h, s.t) for s in samples if s.phase == "touch"]
+
+
+def _read(stroke: list[tuple[float, float, float]], learned: bool) -> str | None:
+    return recognize_stroke([p[:2] for p in stroke], [p[2] for p in stroke], learned=learned).kind
+
+
+@pytest.mark.parametrize("pen", [hurried, careful], ids=["hurried", "careful"])
+@pytest.mark.parametrize("learned", [False, True], ids=["rules", "shipped"])
+def test_a_sawtooth_zigzag_with_a_curled_tail_is_a_polyline(pen, learned: bool) -> None:
+    read = {seed: _read(pen(sawtooth_with_a_tail(seed), seed), learned) for seed in SEEDS}
+    assert all(kind == "polyline" for kind in read.values()), {s: k for s, k in read.items() if k != "polyline"}
+
+
+def test_a_mouse_drawn_brace_is_no_zigzag() -> None:
+    """A brace's curls, tip and arms also turn each way in turn; its tip is three corners and its arms are long, so
+    the zig-zag rule leaves it a curve (`test_mouse_marks` holds the floor for the whole reading)."""
+    read = [recognize_stroke(mouse_brace(seed), learned=False).kind for seed in range(40)]
+    assert sum(k == "curve" for k in read) >= 37, read
