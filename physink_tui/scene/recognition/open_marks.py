@@ -24,10 +24,11 @@ points; a brace's shoulders, where its tip leaves and rejoins the stroke, turn 6
 SAW_ROUND = 0.5
 """A zig-zag's points are sharp: each does its turning within this share of its shorter side
 (`stroke_features.corner_roundness`; a wobbly brace's bends take 0.5-0.9 of theirs)."""
-SAW_EVEN = 2.0
+SAW_EVEN = 1.5
 """A zig-zag is drawn with a rhythm: each side between its teeth is at most this many times as long as the side drawn
 alike before it (two back: a sawtooth's drop and the next drop, its slanted rise and the next), or as short; a brace's
-arm is two to four times its tip's sides."""
+arm is two to four times its tip's sides. At 2 people's uneven sawtooth teeth pass too (5 more zig-zags), and so do
+the braces one person draws as sharp teeth (2 lost): issue 25, fifth pass, in docs/BENCHMARKS.md."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
