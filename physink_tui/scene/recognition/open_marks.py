@@ -70,7 +70,6 @@ def teeth_run(work: np.ndarray, th: np.ndarray, corners: list[int], straight_run
     return best
 
 
-
 def sawtooth_vertices(points: Sequence[tuple[float, float]]) -> bool:
     """`sawtooth` on a polyline's vertices (the rules' reading): `SAW_TEETH` or more inner vertices in a row each
     turning by `SAW_TURN_DEG` or more, each the other way from the one before, joined by sides each within `SAW_EVEN`
