@@ -78,9 +78,14 @@ ZIGZAGS = {
     # them as curves (`ranker.zigzag_teeth`)
     ("public-sets/hcira.jsonl", "pixelfac/hcira-project-23@80d4cc7:src/dataset/user06/zig-zag7.xml"): "polyline",
     ("public-sets/hcira.jsonl", "pixelfac/hcira-project-23@80d4cc7:src/dataset/user06/zig-zag10.xml"): "polyline",
+    # lines begun by sliding back along themselves (`open_marks.retraced_ends`)
+    ("public-sets/mmg.jsonl", "pixelfac/hcira-project-23@80d4cc7:src/mmg/10-stylus-FAST/10-stylus-fast-line-01.xml"):
+        "line",
+    ("public-sets/mmg.jsonl", "pixelfac/hcira-project-23@80d4cc7:src/mmg/10-stylus-FAST/10-stylus-fast-line-03.xml"):
+        "line",
 }
 """(cached set, file) -> the kind a reader names: zig-zags misread as curves by the recogniser (the rules read them
-right) at main f2aa8a5 (issue 25, fifth pass)."""
+right) and lines misread by both at main f2aa8a5 (issue 25, fifth pass)."""
 
 
 @cache

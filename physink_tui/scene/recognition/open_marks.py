@@ -96,3 +96,37 @@ def _like(a: float, b: float) -> bool:
     """Whether two sides of a zig-zag drawn alike (a drop and the next drop, a rise and the next rise) are within
     `SAW_EVEN` of each other's length."""
     return max(a, b) <= SAW_EVEN * min(a, b)
+
+
+RETRACE_SHARE = 0.2
+"""A line may begin (or end) by running back along itself for up to this share of its path: the pen landing and
+sliding backwards before it sets off (mmg:10's fast stylus lines), not a mark of its own."""
+RETRACE_OFF = 0.03
+"""Such a lead-in stays within this share of the line's length (plus the pen's noise) of the line: it doubles back along
+it, where a tick's short arm stands off it."""
+
+
+def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
+    """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`), or None when
+    neither end does: between its points farthest back and farthest on along its start-to-end direction."""
+    chord = raw[-1] - raw[0]
+    norm = float(np.hypot(*chord))
+    if norm == 0.0:
+        return None
+    along = (raw - raw[0]) @ (chord / norm)
+    lo, hi = int(np.argmin(along)), int(np.argmax(along))
+    if (lo == 0 and hi == len(raw) - 1) or lo >= hi:
+        return None
+    length = sg.path_length(raw)
+    kept = raw[lo:hi + 1]
+    cut = sg.path_length(raw[:lo + 1]) + sg.path_length(raw[hi:])
+    if cut > RETRACE_SHARE * length or len(kept) < 2:
+        return None
+    a, b = kept[0], kept[-1]
+    span = float(np.hypot(*(b - a)))
+    if span == 0.0:
+        return None
+    unit = (b - a) / span
+    ends = np.concatenate([raw[:lo + 1], raw[hi:]])
+    off = np.abs((ends[:, 0] - a[0]) * unit[1] - (ends[:, 1] - a[1]) * unit[0])
+    return kept if float(off.max()) <= RETRACE_OFF * span + noise else None

@@ -61,7 +61,17 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
 
 def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
-    short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
+    short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
+    without a lead-in or tail that runs back along it (`open_marks.retraced_ends`)."""
+    found = _line(raw, noise, diag)
+    if found is None:
+        kept = open_marks.retraced_ends(raw, noise)
+        if kept is not None:
+            found = _line(kept, noise, sg.bbox_diagonal(kept))
+    return found
+
+
+def _line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
         return None  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
