@@ -106,6 +106,11 @@ RETRACE_OFF = 0.03
 it, where a tick's short arm stands off it."""
 
 
+RETRACE_NEAR = 0.15
+"""Only a stroke whose every point lies within this share of its start-to-end distance of that chord (plus the noise)
+is looked at: a line's points never stand further off (a cheap test, made first)."""
+
+
 def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`), or None when
     neither end does: between its points farthest back and farthest on along its start-to-end direction."""
@@ -113,7 +118,10 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     norm = float(np.hypot(*chord))
     if norm == 0.0:
         return None
-    along = (raw - raw[0]) @ (chord / norm)
+    rel = raw - raw[0]
+    if float(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]).max()) > RETRACE_NEAR * norm * norm + noise * norm:
+        return None  # no line: some point stands far off the chord (checked first: most strokes are no line)
+    along = rel @ (chord / norm)
     lo, hi = int(np.argmin(along)), int(np.argmax(along))
     if (lo == 0 and hi == len(raw) - 1) or lo >= hi:
         return None
