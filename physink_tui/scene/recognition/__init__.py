@@ -57,7 +57,8 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
    not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row turning each
    way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the stroke does
-   before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`).
+   before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended by running
+   back along itself is judged without that piece (`open_marks.retraced_ends`).
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -81,7 +82,8 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
   overlap
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
-- `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail
+- `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line
+  begun by sliding back along itself
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced

@@ -1,8 +1,8 @@
-"""Open marks of straight strokes as a hurried hand draws them: a zig-zag's teeth between a lead-in and a tail.
+"""Open marks drawn loosely by a hurried hand: zig-zag teeth between a lead-in and a tail, lines begun backwards.
 
-The open-stroke rules (`open_shapes.classify_open`) ask every side of a polyline to be straight and every corner to
-be sharp; these tests say when a stroke is a polyline although one of its sides is not, because a reader sees the
-mark in the rest of it. No I/O.
+The open-stroke rules (`open_shapes`) ask every side of a polyline to be straight and every corner sharp, and a line
+to end where its extent ends; these tests say when a reader still sees the mark: a zig-zag's teeth whatever its ends
+do (`sawtooth`), a line without the piece its pen ran back along (`retraced_ends`). No I/O.
 """
 
 from __future__ import annotations
