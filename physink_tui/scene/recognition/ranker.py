@@ -18,6 +18,7 @@ import json
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -115,10 +116,38 @@ def model_from(doc: object, where: str = "ranker model") -> Model:
     return Model(theta, mean, std, margin)
 
 
-def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
-               ) -> tuple[np.ndarray, np.ndarray, list[float] | None, float] | None:
-    """The stroke without repeated points (its times kept in step), its diagonal, and the stroke moved to unit
-    diagonal round its centroid, resampled and smoothed (None when it has no extent)."""
+class Drawn(NamedTuple):
+    """What recognition already knows of the stroke it hands the ranker (`recognize.recognize_stroke`), so the ranker
+    does not convert, clean and measure it again: the points without repeats, which of the given points they are,
+    their centroid, their diagonal (`stroke_geometry.bbox_diagonal`) and their jitter (`stroke_geometry.jitter`)."""
+
+    raw: np.ndarray
+    keep: np.ndarray
+    centre: np.ndarray
+    diag: float
+    jitter: float
+
+
+class Unit(NamedTuple):
+    """A stroke prepared once for the features (`_unit_work`): without repeated points (its times kept in step), its
+    diagonal, the stroke moved to unit diagonal round its centroid, resampled and smoothed (``work``), and its jitter
+    where already measured."""
+
+    raw: np.ndarray
+    work: np.ndarray
+    times: list[float] | None
+    diag: float
+    jitter: float | None = None
+
+
+def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None, drawn: Drawn | None = None,
+               ) -> Unit | None:
+    """The stroke prepared for the features (`Unit`; None when it has no extent), from ``drawn`` where given."""
+    if drawn is not None:
+        kept_times = (list(itertools.compress(times, drawn.keep.tolist()))
+                      if times is not None and len(times) == len(drawn.keep) else None)
+        work = sg.smooth(sg.resample((drawn.raw - drawn.centre) / drawn.diag, WORK_POINTS))
+        return Unit(drawn.raw, work, kept_times, drawn.diag, drawn.jitter)
     try:
         pts = np.asarray(points, dtype=float)[:, :2]
     except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
@@ -128,13 +157,13 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
     keep = np.ones(len(pts), dtype=bool)
     keep[1:] = np.any(np.diff(pts, axis=0) != 0.0, axis=1)
     raw = pts[keep]
-    kept_times = [t for t, k in zip(times, keep, strict=True) if k] if times is not None and len(
+    kept_times = list(itertools.compress(times, keep.tolist())) if times is not None and len(
         times) == len(pts) else None
     diag = sg.bbox_diagonal(raw) if len(raw) >= 2 else 0.0
     if diag == 0.0:
         return None
     work = sg.smooth(sg.resample((raw - raw.mean(axis=0)) / diag, WORK_POINTS))
-    return raw, work, kept_times, diag
+    return Unit(raw, work, kept_times, diag)
 
 
 def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
@@ -142,13 +171,13 @@ def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
     return _features(_unit_work(points, times), noise)
 
 
-def _features(found: tuple[np.ndarray, np.ndarray, list[float] | None, float] | None, noise: float) -> np.ndarray:
+def _features(found: Unit | None, noise: float) -> np.ndarray:
     """`features` of a stroke already prepared by `_unit_work`."""
     out = np.zeros(len(FEATURES))
     if found is None:
         return out
-    raw, work, times, diag = found
-    noise = max(noise, sg.jitter(raw)) / diag
+    raw, work, times, diag, jitter = found
+    noise = max(noise, sg.jitter(raw) if jitter is None else jitter) / diag
     length = sg.path_length(work)
     th = sg.turning(work)
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
@@ -156,22 +185,24 @@ def _features(found: tuple[np.ndarray, np.ndarray, list[float] | None, float] | 
     deviation = [sg.chord_deviation(r) for r in runs]
     straights = [open_shapes.straight(r, noise) for r in runs]
     bows = [min(d, 1.0) for d in deviation] or [0.0]
-    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners)] or [0.0]
+    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners, th=th)] or [0.0]
     coarse = sg.coarse_turning(work, noise)
     turns = sf.corner_turns(th, corners)
-    lobes = sf.lobes(work, noise=noise)
+    lobes = sf.turn_lobes(coarse)
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)
+    abs_th = np.abs(th)
+    coarse_sum, coarse_abs = float(coarse.sum()), float(np.abs(coarse).sum())
     out[:] = [
         sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(th.sum())) / (2 * math.pi),
-        float(np.abs(th).sum()) / (2 * math.pi), (len(corners) - 2) / 8.0, sf.turn_concentration(coarse),
+        float(abs_th.sum()) / (2 * math.pi), (len(corners) - 2) / 8.0, sf.turn_concentration(coarse),
         max(roundness), float(np.mean(roundness)), float(np.mean([d < 0.12 for d in deviation])) if runs else 0.0,
         max(bows), float(np.mean(bows)), max(turns) / 180.0, min(turns) / 180.0, len(lobes) / 4.0,
         min(ellipse[4], 1.0) if ellipse is not None else 1.0, min(circle_err, 1.0),
         ellipse[2] / max(ellipse[1], 1e-12) if ellipse is not None else 0.0, min(line_err, 1.0),
         sf.corner_share(th, corners) if len(corners) > 2 else 0.0,
-        abs(float(coarse.sum())) / max(float(np.abs(coarse).sum()), 1e-12), max(sf.bends(th, corners)) / 180.0,
+        abs(coarse_sum) / max(coarse_abs, 1e-12), max(sf.bends(th, corners)) / 180.0,
         math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
         float(bool(runs) and all(straights)),
         float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
@@ -273,14 +304,15 @@ def checked_point(phi: np.ndarray) -> bool:
 
 
 def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,
-           model: Model) -> Recognition:
+           model: Model, drawn: Drawn | None = None) -> Recognition:
     """``found`` (the rules' reading of the stroke), or the kind the model prefers with its geometry drawn from
-    the stroke, the rules' kind then the first alternative."""
+    the stroke, the rules' kind then the first alternative; ``drawn``, where given, is what recognition already
+    measured of ``points`` (`Drawn`)."""
     if found.kind not in KINDS:
         return found
-    if found.kind == "polygon" and not _ends_apart(points):
+    if found.kind == "polygon" and not _ends_apart(points, drawn):
         return found
-    unit = _unit_work(points, times)
+    unit = _unit_work(points, times, drawn)
     if found.kind == "polygon" and (unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
         return found
     kind, chance = choose(found.kind, _features(unit, noise), model)
@@ -289,21 +321,24 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     shape = geometry(kind, unit[1]) if unit is not None else None
     if unit is None or shape is None:
         return found
-    raw, _, _, diag = unit
+    raw, _, _, diag, _ = unit
     return Recognition(kind, round(chance, 4), scale_geometry(shape, raw.mean(axis=0), diag),
                        ((found.kind, round(1.0 - chance, 4)),))
 
 
-def _ends_apart(points: Sequence[Sequence[float]]) -> bool:
+def _ends_apart(points: Sequence[Sequence[float]], drawn: Drawn | None = None) -> bool:
     """Whether a polygon's ends may be far enough apart to ask (`open_polygon`), judged before any other work: most
     polygons are closed. A stroke whose ends are under half `OPEN_GAP` of its size apart is closed: resampling and
     smoothing keep its ends and only shrink its size, so its closure could reach `OPEN_GAP` only were its size halved
-    by smoothing."""
-    try:
-        pts = np.asarray(points, dtype=float)[:, :2]
-    except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
-        pts = np.asarray([p[:2] for p in points], dtype=float)
-    size = sg.bbox_diagonal(pts) if len(pts) >= 2 and np.isfinite(pts).all() else 0.0
+    by smoothing. (``drawn``'s points without repeats have the same ends and extent as ``points``.)"""
+    if drawn is not None:
+        pts, size = drawn.raw, drawn.diag
+    else:
+        try:
+            pts = np.asarray(points, dtype=float)[:, :2]
+        except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
+            pts = np.asarray([p[:2] for p in points], dtype=float)
+        size = sg.bbox_diagonal(pts) if len(pts) >= 2 and np.isfinite(pts).all() else 0.0
     return size > 0.0 and float(np.hypot(*(pts[-1] - pts[0]))) >= 0.5 * OPEN_GAP * size
 
 

@@ -54,28 +54,35 @@ PEN_NOISE = 1.0
 """The pen's jitter in the stroke's units when the caller does not say: a pixel of a canvas in pixels."""
 
 
-def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | None]:
+def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.ndarray | None, str | None]:
+    """The stroke's points without repeats, and which of the given points they are (None where a long stroke was
+    thinned first), or why it cannot be recognised."""
     try:
         pts = np.asarray(points, dtype=float)
     except (TypeError, ValueError):
-        return None, "points must be pairs of numbers"
+        return None, None, "points must be pairs of numbers"
     if pts.ndim != 2 or pts.shape[0] == 0 or pts.shape[1] < 2:
-        return None, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
+        return None, None, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
     pts = pts[:, :2]
     bad = ~np.isfinite(pts).all(axis=1)
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
-        return None, f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, {float(pts[i, 1])!r})"
+        return None, None, (f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, "
+                            f"{float(pts[i, 1])!r})")
     if float(np.abs(pts).max()) > MAX_COORDINATE:
-        return None, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
+        return None, None, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
+    keep: np.ndarray | None = None
     if len(pts) > sg.MAX_WORKING_POINTS:
-        pts = sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS)
-    pts = sg.drop_duplicates(pts)
+        pts = sg.drop_duplicates(sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS))
+    else:  # as `stroke_geometry.drop_duplicates`, the kept points' positions remembered for the ranker
+        keep = np.ones(len(pts), dtype=bool)
+        keep[1:] = ((pts[1:] - pts[:-1]) != 0.0).any(axis=1)
+        pts = pts[keep]
     if len(pts) < 2:
-        return None, f"{TOO_SHORT}: a single point"
+        return None, None, f"{TOO_SHORT}: a single point"
     if sg.bbox_diagonal(pts) == 0.0:
-        return None, f"{TOO_SHORT}: no extent"
-    return pts, None
+        return None, None, f"{TOO_SHORT}: no extent"
+    return pts, keep, None
 
 
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
@@ -89,7 +96,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
     """
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
-        pts, reason = _clean(points)
+        pts, keep, reason = _clean(points)
     if pts is None:
         return Recognition(None, 0.0, None, (), reason)
     if len(pts) == 2:
@@ -116,8 +123,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
     if not learned:
         return result
+    drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
-        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model())
+        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn)
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:

@@ -26,9 +26,13 @@ def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[f
     """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke (coarser
     when the pen's ``noise`` is large), ignoring runs under ``min_deg``: a brace has five such lobes, a check
     mark one or two."""
-    coarse = np.degrees(sg.coarse_turning(work, noise))
+    return turn_lobes(sg.coarse_turning(work, noise), min_deg)
+
+
+def turn_lobes(coarse: np.ndarray, min_deg: float = 35.0) -> list[float]:
+    """`lobes` of a stroke whose coarse turning (`stroke_geometry.coarse_turning`, radians) is already known."""
     runs: list[float] = []
-    for v in coarse.tolist():
+    for v in np.degrees(coarse).tolist():
         if runs and (v >= 0) == (runs[-1] >= 0):
             runs[-1] += v
         else:
@@ -145,12 +149,14 @@ def turn_concentration(th: np.ndarray) -> float:
     return float(np.sort(a)[-k:].sum()) / total
 
 
-def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8) -> list[float]:
+def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8, *, th: np.ndarray | None = None,
+                     ) -> list[float]:
     """How round each inner corner is: the length of path, centred on the corner, over which the stroke does
     ``share`` of the turning it does between the midpoints of its neighbouring sides, over the shorter of those
     two sides. A drawn corner turns within a tenth or two of its sides; a brace's or a question mark's bend
-    takes as long as a side."""
-    th = sg.turning(work)  # th[k] is the turn at point k + 1
+    takes as long as a side. ``th``: `stroke_geometry.turning` of ``work`` where already known."""
+    if th is None:
+        th = sg.turning(work)  # th[k] is the turn at point k + 1
     cum_turn = np.concatenate([[0.0], np.cumsum(th)])  # cum_turn[k]: turning done before point k + 1
     seg = np.hypot(*np.diff(work, axis=0).T)
     cum_len = np.concatenate([[0.0], np.cumsum(seg)])

@@ -26,20 +26,37 @@ def drop_duplicates(pts: np.ndarray) -> np.ndarray:
 
 
 def path_length(pts: np.ndarray) -> float:
-    return float(np.sum(np.hypot(*np.diff(pts, axis=0).T))) if len(pts) > 1 else 0.0
+    if len(pts) < 2:
+        return 0.0
+    d = pts[1:] - pts[:-1]  # as np.diff, without its per-call overhead (this is called thousands of times a stroke)
+    return float(np.hypot(d[:, 0], d[:, 1]).sum())
 
 
 def resample(pts: np.ndarray, n: int) -> np.ndarray:
     """``n`` points equally spaced along the path (first and last kept)."""
-    seg = np.hypot(*np.diff(pts, axis=0).T)
-    cum = np.concatenate([[0.0], np.cumsum(seg)])
+    d = pts[1:] - pts[:-1]
+    cum = np.empty(len(pts))
+    cum[0] = 0.0
+    np.cumsum(np.hypot(d[:, 0], d[:, 1]), out=cum[1:])
     total = cum[-1]
     if total == 0.0 or n < 2:
         return np.repeat(pts[:1], max(n, 1), axis=0)
-    targets = np.linspace(0.0, total, n)
-    x = np.interp(targets, cum, pts[:, 0])
-    y = np.interp(targets, cum, pts[:, 1])
-    return np.column_stack([x, y])
+    targets = spaced(float(total), n)
+    out = np.empty((n, 2))
+    out[:, 0] = np.interp(targets, cum, pts[:, 0])
+    out[:, 1] = np.interp(targets, cum, pts[:, 1])
+    return out
+
+
+def spaced(total: float, n: int) -> np.ndarray:
+    """``np.linspace(0.0, total, n)`` to the last bit (n >= 2), without its per-call overhead."""
+    step = total / (n - 1)
+    if step == 0.0:
+        return np.linspace(0.0, total, n)
+    out = np.arange(n, dtype=float)
+    out *= step
+    out[-1] = total
+    return out
 
 
 def smooth(pts: np.ndarray, passes: int = 2) -> np.ndarray:
@@ -56,9 +73,9 @@ def smooth(pts: np.ndarray, passes: int = 2) -> np.ndarray:
 
 def turning(pts: np.ndarray) -> np.ndarray:
     """Signed turning angle at each interior vertex (radians, wrapped to -pi..pi)."""
-    d = np.diff(pts, axis=0)
+    d = pts[1:] - pts[:-1]
     heading = np.arctan2(d[:, 1], d[:, 0])
-    dth = np.diff(heading)
+    dth = heading[1:] - heading[:-1]
     return (dth + np.pi) % (2 * np.pi) - np.pi
 
 
