@@ -213,7 +213,9 @@ def _features(found: Unit | None, noise: float) -> np.ndarray:
     if slow is not None:
         at = FEATURES.index("has_times")
         out[at:at + 2] = [1.0, slow]
-    return np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
+    if not np.isfinite(out).all():  # as np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0), only where needed
+        out = np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
+    return out
 
 
 def point_balance(work: np.ndarray, corners: list[int], turns: list[float]) -> float:
@@ -232,15 +234,18 @@ def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: lis
     if times is None or len(times) != len(raw) or len(corners) < 3:
         return None
     t = np.asarray(times, dtype=float)
-    seg = np.hypot(*np.diff(raw, axis=0).T)
-    dt = np.diff(t)
+    d = raw[1:] - raw[:-1]
+    seg = np.hypot(d[:, 0], d[:, 1])
+    dt = t[1:] - t[:-1]
     ok = dt > 0
-    if ok.sum() < 8 or not np.isfinite(t).all():
+    if np.count_nonzero(ok) < 8 or not np.isfinite(t).all():
         return None
-    s = np.concatenate([[0.0], np.cumsum(seg)])
+    s = np.empty(len(raw))
+    s[0] = 0.0
+    np.cumsum(seg, out=s[1:])
     mid = (s[:-1] + s[1:])[ok] / 2 / max(s[-1], 1e-12)
     speed = seg[ok] / dt[ok]
-    overall = float(np.median(speed))
+    overall = sg.median(speed)
     if overall <= 0:
         return None
     near = np.zeros(len(mid), dtype=bool)
@@ -248,7 +253,7 @@ def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: lis
         near |= np.abs(mid - c / (n - 1)) < 0.05
     if not near.any():
         return None
-    return min(float(np.median(speed[near])) / overall, 3.0)
+    return min(sg.median(speed[near]) / overall, 3.0)
 
 
 def design(kinds: Sequence[str], phi: np.ndarray, rules_kind: str) -> np.ndarray:

@@ -42,7 +42,7 @@ from physink_tui.scene.recognition.ranking import (
     keeps_the_outline,
     rank,
 )
-from physink_tui.scene.recognition.shape_fits import fit_ellipse
+from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
@@ -187,10 +187,11 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if not closed:
         return _open_reading(raw, work, n, noise, sigma, weights, diag)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    lumpy = _lumpy_round(loop, noise)
+    ellipse = fit_ellipse(loop)
+    lumpy = _lumpy_round(loop, noise, ellipse)
     if lumpy:
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
-    candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
+    candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop, ellipse)]
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
@@ -259,10 +260,10 @@ def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: f
     return Recognition("line", FREEFORM_CONFIDENCE, Line(points[0], points[-1]), ())
 
 
-def _lumpy_round(loop: np.ndarray, noise: float) -> bool:
-    """A closed loop about as wide as it is long (its ellipse no flatter than `LUMPY_ASPECT`) that turns smoothly all
-    round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides are not lumps)."""
-    ellipse = fit_ellipse(loop)
+def _lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None) -> bool:
+    """A closed loop about as wide as it is long (its ellipse, `fit_ellipse` of it, no flatter than `LUMPY_ASPECT`)
+    that turns smoothly all round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides
+    are not lumps)."""
     if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
         return False
     return sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH

@@ -129,15 +129,16 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *
         return [0, n - 1]
     straws = np.full(n, np.inf)
     straws[w:n - w] = np.hypot(*(pts[2 * w:] - pts[:n - 2 * w]).T)
-    threshold = float(np.median(straws[w:n - w])) * 0.95
+    threshold = median(straws[w:n - w]) * 0.95
+    short = straws.tolist()  # the same numbers as Python floats: the walk below compares them one at a time
     candidates: list[tuple[int, float]] = []  # a corner's index and the least it must turn (degrees)
     i = w
     while i < n - w:
-        if straws[i] < threshold:
+        if short[i] < threshold:
             j = i
             best = i
-            while j < n - w and straws[j] < threshold:
-                if straws[j] < straws[best]:
+            while j < n - w and short[j] < threshold:
+                if short[j] < short[best]:
                     best = j
                 j += 1
             candidates.append((best, min_turn_deg))
@@ -151,8 +152,10 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *
     reach = max(w, 2)
     for c, least in sorted(candidates):
         lo, hi = max(c - reach, 1), min(c + reach, n - 2)
-        turn = abs(float(np.sum(th[lo - 1:hi])))
-        if math.degrees(turn) >= least and c - corners[-1] >= w:
+        if c - corners[-1] < w:
+            continue  # too close to the last corner kept, however far it turns
+        turn = abs(float(th[lo - 1:hi].sum()))
+        if math.degrees(turn) >= least:
             corners.append(c)
     if n - 1 - corners[-1] < w and len(corners) > 1:
         corners.pop()
@@ -341,13 +344,26 @@ def jitter(pts: np.ndarray) -> float:
         return 0.0
     d2 = pts[:-2] - 2 * pts[1:-1] + pts[2:]
     t = pts[2:] - pts[:-2]
-    norm = np.hypot(*t.T)
+    norm = np.hypot(t[:, 0], t[:, 1])
     ok = norm > 0
-    if ok.sum() < 3:
+    if np.count_nonzero(ok) < 3:
         return 0.0
-    normal = np.column_stack([-t[ok, 1], t[ok, 0]]) / norm[ok, None]
-    bend = (d2[ok] * normal).sum(axis=1)  # white noise: successive bends anticorrelated, var 6 s^2 each
-    return float(1.4826 * np.median(np.abs(np.diff(bend))) / math.sqrt(20))
+    t, d2, norm = t[ok], d2[ok], norm[ok]
+    # the bend across the path, d2 . (-t_y, t_x) / |t| (white noise: successive bends anticorrelated, var 6 s^2 each)
+    bend = d2[:, 0] * (-t[:, 1] / norm) + d2[:, 1] * (t[:, 0] / norm)
+    return float(1.4826 * median(np.abs(bend[1:] - bend[:-1])) / math.sqrt(20))
+
+
+def median(values: np.ndarray) -> float:
+    """``np.median`` of a 1-D array, to the last bit, without its per-call overhead (NaN when any value is)."""
+    n = len(values)
+    if n == 0 or np.isnan(values).any():
+        return float(np.median(values))
+    h = n // 2
+    if n % 2:
+        return float(np.partition(values, h)[h])
+    part = np.partition(values, (h - 1, h))
+    return float((part[h - 1] + part[h]) / 2)
 
 
 def coarse_turning(pts: np.ndarray, noise: float, most: int = 40) -> np.ndarray:
