@@ -19,9 +19,9 @@ EllipseFit = tuple[np.ndarray, float, float, float, float]
 def fit_line(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
     """Total least squares line: ``(point, unit direction, max distance / length)``."""
     c = pts.mean(axis=0)
-    _, _, vt = np.linalg.svd(pts - c, full_matrices=False)
-    d = vt[0]
     rel = pts - c
+    _, _, vt = np.linalg.svd(rel, full_matrices=False)
+    d = vt[0]
     along = rel @ d
     length = float(along.max() - along.min()) or 1e-12
     dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])

@@ -8,6 +8,7 @@ must turn the path by a real angle, and near-collinear corners are merged).
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -101,13 +102,12 @@ def thickness(pts: np.ndarray) -> float:
 
 def chord_deviation(pts: np.ndarray) -> float:
     """Largest distance of a run of points from the chord between its ends, over the chord length."""
-    a, b = pts[0], pts[-1]
-    chord = float(np.hypot(*(b - a)))
+    rel = pts - pts[0]
+    d = rel[-1]  # the chord
+    chord = float(np.hypot(d[0], d[1]))
     if chord == 0.0:
         return math.inf
-    ab = (b - a) / chord
-    rel = pts - a
-    dev = np.abs(rel[:, 0] * ab[1] - rel[:, 1] * ab[0])
+    dev = np.abs(rel[:, 0] * (d[1] / chord) - rel[:, 1] * (d[0] / chord))
     return float(dev.max()) / chord
 
 
@@ -295,19 +295,11 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
     n = len(pts)
     if n < 8:
         return pts
-    diag = bbox_diagonal(pts)
     span = max(3, int(max_fraction * n))
-    i_idx, j_idx = [], []
-    for gap in range(2, span + 1):
-        i = np.arange(0, n - 1 - gap)
-        i_idx.append(i)
-        j_idx.append(i + gap)
-    if not i_idx:
-        return pts
-    i = np.concatenate(i_idx)
-    j = np.concatenate(j_idx)
-    p, r = pts[i], pts[i + 1] - pts[i]
-    q, s = pts[j], pts[j + 1] - pts[j]
+    i, j = _pairs(n, span)
+    step = pts[1:] - pts[:-1]
+    p, r = pts[i], step[i]
+    q, s = pts[j], step[j]
     denom = r[:, 0] * s[:, 1] - r[:, 1] * s[:, 0]
     qp = q - p
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -316,6 +308,7 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
     hit = (denom != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)
     if not hit.any():
         return pts
+    diag = bbox_diagonal(pts)
     keep = np.ones(n, dtype=bool)
     out = pts.copy()
     for k in np.flatnonzero(hit)[np.argsort(i[hit], kind="stable")]:
@@ -328,6 +321,17 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
         out[a + 1] = p[k] + t[k] * r[k]  # the crossing point replaces the loop
         keep[a + 2:b + 1] = False
     return out[keep]
+
+
+@functools.lru_cache(maxsize=64)
+def _pairs(n: int, span: int) -> tuple[np.ndarray, np.ndarray]:
+    """The segments (i, j) of an ``n``-point path that `remove_small_loops` tests for crossing: j - i from 2 to
+    ``span``, by gap then by i (the same for every stroke of that many points: made once, read only)."""
+    i = np.concatenate([np.arange(0, n - 1 - gap) for gap in range(2, span + 1)])
+    j = np.concatenate([np.arange(gap, n - 1) for gap in range(2, span + 1)])
+    i.flags.writeable = False
+    j.flags.writeable = False
+    return i, j
 
 
 def jitter(pts: np.ndarray) -> float:
