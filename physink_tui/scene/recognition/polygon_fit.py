@@ -18,6 +18,7 @@ else the join point itself, so nearly parallel sides never meet far away. Which 
 from __future__ import annotations
 
 import heapq
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -130,19 +131,20 @@ def _segmentations(cost: np.ndarray, max_segments: int) -> list[tuple[float, lis
     c = cost.shape[0]
     best = np.full(c, np.inf)
     best[0] = 0.0
-    back: list[np.ndarray] = []
+    back: list[list[int]] = []
     out: list[tuple[float, list[int]] | None] = []
+    columns = np.arange(c)
     for _ in range(max_segments):
         total = best[:, None] + cost  # total[a, b]: reach a in k-1 chords, then chord a -> b
         arg = np.argmin(total, axis=0)
-        best = total[arg, np.arange(c)]
-        back.append(arg)
-        if not np.isfinite(best[-1]):
+        best = total[arg, columns]
+        back.append(arg.tolist())
+        if not math.isfinite(best[-1]):
             out.append(None)
             continue
         path = [c - 1]
         for step in reversed(back):
-            path.append(int(step[path[-1]]))
+            path.append(step[path[-1]])
         path.reverse()
         out.append((float(best[-1]), path))
     return out
