@@ -1,4 +1,4 @@
-"""Benchmark: whether this tree reads strokes exactly as another revision does (a speed change must not change a reading).
+"""Benchmark: whether this tree reads strokes exactly as another revision does: a speed change must change no reading.
 
 Usage: .venv/bin/python benchmarks/compare_readings.py SET [SET ...] [--baseline main] [--tolerance 0]
 

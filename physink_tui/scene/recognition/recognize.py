@@ -54,23 +54,23 @@ PEN_NOISE = 1.0
 """The pen's jitter in the stroke's units when the caller does not say: a pixel of a canvas in pixels."""
 
 
-def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.ndarray | None, str | None]:
-    """The stroke's points without repeats, and which of the given points they are (None where a long stroke was
-    thinned first), or why it cannot be recognised."""
+def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.ndarray | None, float, str | None]:
+    """The stroke's points without repeats, which of the given points they are (None where a long stroke was
+    thinned first) and their diagonal (`stroke_geometry.bbox_diagonal`), or why it cannot be recognised."""
     try:
         pts = np.asarray(points, dtype=float)
     except (TypeError, ValueError):
-        return None, None, "points must be pairs of numbers"
+        return None, None, 0.0, "points must be pairs of numbers"
     if pts.ndim != 2 or pts.shape[0] == 0 or pts.shape[1] < 2:
-        return None, None, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
+        return None, None, 0.0, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
     pts = pts[:, :2]
     bad = ~np.isfinite(pts).all(axis=1)
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
-        return None, None, (f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, "
-                            f"{float(pts[i, 1])!r})")
+        return None, None, 0.0, (f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, "
+                                 f"{float(pts[i, 1])!r})")
     if float(np.abs(pts).max()) > MAX_COORDINATE:
-        return None, None, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
+        return None, None, 0.0, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
     keep: np.ndarray | None = None
     if len(pts) > sg.MAX_WORKING_POINTS:
         pts = sg.drop_duplicates(sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS))
@@ -79,10 +79,11 @@ def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.nda
         keep[1:] = ((pts[1:] - pts[:-1]) != 0.0).any(axis=1)
         pts = pts[keep]
     if len(pts) < 2:
-        return None, None, f"{TOO_SHORT}: a single point"
-    if sg.bbox_diagonal(pts) == 0.0:
-        return None, None, f"{TOO_SHORT}: no extent"
-    return pts, keep, None
+        return None, None, 0.0, f"{TOO_SHORT}: a single point"
+    size = sg.bbox_diagonal(pts)
+    if size == 0.0:
+        return None, None, 0.0, f"{TOO_SHORT}: no extent"
+    return pts, keep, size, None
 
 
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
@@ -96,7 +97,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
     """
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
-        pts, keep, reason = _clean(points)
+        pts, keep, size, reason = _clean(points)
     if pts is None:
         return Recognition(None, 0.0, None, (), reason)
     if len(pts) == 2:
@@ -111,7 +112,6 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     measured = sg.jitter(pts)
     noise = max(given, measured)  # the pen may be worse than said
     shaky = measured > SHAKY * given
-    size = sg.bbox_diagonal(pts)
     if size < MIN_SIZE * noise:
         return Recognition(None, 0.0, None, (), f"{TOO_SHORT}: {size:.3g} units across, within the pen's noise "
                                                 f"({noise:.3g} units)")

@@ -76,7 +76,7 @@ def turning(pts: np.ndarray) -> np.ndarray:
     """Signed turning angle at each interior vertex (radians, wrapped to -pi..pi)."""
     d = pts[1:] - pts[:-1]
     heading = np.arctan2(d[:, 1], d[:, 0])
-    dth = heading[1:] - heading[:-1]
+    dth: np.ndarray = heading[1:] - heading[:-1]
     return (dth + np.pi) % (2 * np.pi) - np.pi
 
 
@@ -182,6 +182,10 @@ def _dips(straws: np.ndarray, lo: int, hi: int, w: int) -> list[int]:
 
 def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) -> list[int]:
     """Drop corners whose neighbours are almost in line with them (path length vs chord)."""
+    if len(corners) <= 2:
+        return corners
+    d = pts[1:] - pts[:-1]
+    seg = np.hypot(d[:, 0], d[:, 1])  # a run's `path_length` is the sum of its stretch of these, summed alike
     changed = True
     while changed and len(corners) > 2:
         changed = False
@@ -189,7 +193,7 @@ def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) 
         for k in range(1, len(corners) - 1):
             a, b = corners[k - 1], corners[k + 1]
             chord = float(np.hypot(*(pts[b] - pts[a])))
-            run = path_length(pts[a:b + 1])
+            run = float(seg[a:b].sum())
             straightness = chord / run if run else 1.0
             if straightness > ratio and straightness > best:
                 best, best_k = straightness, k
