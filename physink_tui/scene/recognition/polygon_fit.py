@@ -90,13 +90,14 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
     def push(a: int, b: int) -> None:
         if b - a < 2:
             return
-        d = pts[b] - pts[a]
-        rel = pts[a + 1:b] - pts[a]
-        norm = float(np.hypot(*d))
-        dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]) / norm if norm > 0 else np.hypot(*rel.T)
-        k = int(np.argmax(dist))
-        if dist[k] > tolerance:
-            heapq.heappush(heap, (-float(dist[k]), a + 1 + k, a, b))
+        rel = pts[a + 1:b + 1] - pts[a]
+        d, rel = rel[-1], rel[:-1]  # the chord, and the points between its ends
+        norm = float(np.hypot(d[0], d[1]))
+        dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]) / norm if norm > 0 else np.hypot(rel[:, 0], rel[:, 1])
+        k = int(dist.argmax())
+        far = float(dist[k])
+        if far > tolerance:
+            heapq.heappush(heap, (-far, a + 1 + k, a, b))
 
     push(0, n - 1)
     while heap and len(chosen) < limit:
