@@ -168,11 +168,19 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
 
 def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
     """The stroke's features (`FEATURES`), size-free; ``noise`` is the pen's jitter in the points' units."""
-    return _features(_unit_work(points, times), noise)
+    phi = _features(_unit_work(points, times), noise)
+    assert phi is not None  # only a polyline's features stop early
+    return phi
 
 
-def _features(found: Unit | None, noise: float) -> np.ndarray:
-    """`features` of a stroke already prepared by `_unit_work`."""
+CHECK_FEATURES = tuple(FEATURES.index(f) for f in ("corners", "abs_turn", "max_corner_turn", "lobes", "point_balance"))
+"""The features `checked_point` reads."""
+
+
+def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np.ndarray | None:
+    """`features` of a stroke already prepared by `_unit_work`. With ``polyline`` (the rules read one), None as soon
+    as the features `checked_point` reads show a hurried check, which `choose` does not ask the model about: the others
+    (fits, corner shapes, the rules' tests) are not computed."""
     out = np.zeros(len(FEATURES))
     if found is None:
         return out
@@ -181,24 +189,30 @@ def _features(found: Unit | None, noise: float) -> np.ndarray:
     length = sg.path_length(work)
     th = sg.turning(work)
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    abs_th = np.abs(th)
+    coarse = sg.coarse_turning(work, noise)
+    turns = sf.corner_turns(th, corners)
+    lobes = sf.turn_lobes(coarse)
+    checks = ((len(corners) - 2) / 8.0, float(abs_th.sum()) / (2 * math.pi), max(turns) / 180.0, len(lobes) / 4.0,
+              point_balance(work, corners, turns))  # `CHECK_FEATURES`, in that order
+    if polyline:
+        out[list(CHECK_FEATURES)] = checks
+        if checked_point(np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
+            return None
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     deviation = [sg.chord_deviation(r) for r in runs]
     straights = [open_shapes.straight(r, noise) for r in runs]
     bows = [min(d, 1.0) for d in deviation] or [0.0]
     roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners, th=th)] or [0.0]
-    coarse = sg.coarse_turning(work, noise)
-    turns = sf.corner_turns(th, corners)
-    lobes = sf.turn_lobes(coarse)
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)
-    abs_th = np.abs(th)
     coarse_sum, coarse_abs = float(coarse.sum()), float(np.abs(coarse).sum())
     out[:] = [
         sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(th.sum())) / (2 * math.pi),
-        float(abs_th.sum()) / (2 * math.pi), (len(corners) - 2) / 8.0, sf.turn_concentration(coarse),
+        checks[1], checks[0], sf.turn_concentration(coarse),
         max(roundness), float(np.mean(roundness)), float(np.mean([d < 0.12 for d in deviation])) if runs else 0.0,
-        max(bows), float(np.mean(bows)), max(turns) / 180.0, min(turns) / 180.0, len(lobes) / 4.0,
+        max(bows), float(np.mean(bows)), checks[2], min(turns) / 180.0, checks[3],
         min(ellipse[4], 1.0) if ellipse is not None else 1.0, min(circle_err, 1.0),
         ellipse[2] / max(ellipse[1], 1e-12) if ellipse is not None else 0.0, min(line_err, 1.0),
         sf.corner_share(th, corners) if len(corners) > 2 else 0.0,
@@ -207,8 +221,7 @@ def _features(found: Unit | None, noise: float) -> np.ndarray:
         float(bool(runs) and all(straights)),
         float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
         float(open_shapes._brace_tip(work, corners)), float(open_shapes._bowed_between_corners(work, corners, length)),
-        float(open_shapes._rounded_bracket(work, corners, straights, noise)), 0.0, 0.0,
-        point_balance(work, corners, turns)]
+        float(open_shapes._rounded_bracket(work, corners, straights, noise)), 0.0, 0.0, checks[4]]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
         at = FEATURES.index("has_times")
@@ -320,7 +333,10 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     unit = _unit_work(points, times, drawn)
     if found.kind == "polygon" and (unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
         return found
-    kind, chance = choose(found.kind, _features(unit, noise), model)
+    phi = _features(unit, noise, polyline=found.kind == "polyline")
+    if phi is None:
+        return found  # a hurried check: the model is not asked (`choose`)
+    kind, chance = choose(found.kind, phi, model)
     if kind == found.kind:
         return found
     shape = geometry(kind, unit[1]) if unit is not None else None
