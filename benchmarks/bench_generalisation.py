@@ -2,7 +2,7 @@
 label, with the label -> kind table fixed before scoring (benchmarks/label_kinds.tsv).
 
 Usage: .venv/bin/python benchmarks/bench_generalisation.py SET [SET ...] [--by person|device|set] [--quick]
-       [--defaults] [--heldback] [--contradictions] [--rules]
+       [--defaults] [--heldback] [--third] [--contradictions] [--rules]
 
 Each SET is a .jsonl file or a folder in a form `stroke_sets` reads (the $1 logs, the MMG set, the Drawn Shapes set);
 the sets stay where they are. A source is a person of a set (``--by person``, the default; a set that names no person is
@@ -12,11 +12,12 @@ other source only, then the held-out source is scored with them: that is the hel
 scored beside it, but they were chosen looking at the three people of ../shared/data, so for those three the defaults
 column is not a held-out figure. Only single-stroke samples of labels the table maps are scored; the rest are counted.
 Sources found after the first 19 whose name draws them into the second held-back group (`is_held_back_new`) are left out
-unless ``--heldback`` is given. Prints Markdown, and the issue 25 targets met or not (every source >= 98.6 %, every
-label with >= 50 strokes in a source >= 97 % there). With ``--contradictions`` it also prints, beside the raw figure
-(which stays the headline: no stroke is dropped from it), how many strokes of each source the committed contradiction
-tests (`label_contradictions.CONTRADICTIONS`) convict of a label their geometry contradicts, and the targets
-re-stated on the strokes whose label agrees with their geometry.
+unless ``--heldback`` is given. The sets of the third search (`THIRD_SETS`: the third held-back group) are left out of
+every run but ``--third``, which scores them alone (`scored_rows`). Prints Markdown, and the issue 25 targets met or not
+(every source >= 98.6 %, every label with >= 50 strokes in a source >= 97 % there). With ``--contradictions`` it also
+prints, beside the raw figure (which stays the headline: no stroke is dropped from it), how many strokes of each source
+the committed contradiction tests (`label_contradictions.CONTRADICTIONS`) convict of a label their geometry contradicts,
+and the targets re-stated on the strokes whose label agrees with their geometry.
 """
 
 from __future__ import annotations
@@ -53,16 +54,31 @@ HELD_BACK_SEED_NEW = "physink-heldback-2:"
 `HELD_BACK_SEED_NEW` + its source name (``set:person``, or the set where it names none) is even. Fixed before any
 stroke of theirs was looked at; their strokes are never listed, drawn or looked at one by one; they are left out of
 every run unless asked for (``--heldback``), then scored pooled and per source, once."""
+THIRD_SETS = frozenset({"hcira3", "fc"})
+"""The sets found by the third search for public sets (issue 25, 2026-12-03 from 22:30 UTC; `benchmarks/SOURCES.md`,
+"The third search"): the third held-back group, held back whole, by set name, fixed before any stroke of theirs was
+read. `scored_rows` leaves them out of every run (so `train_ranker.py` never fits on them, `label_contradictions` never
+reads them) unless asked for their group alone (``--third``): the lead scores them once, at the end of a session."""
 SOURCE_FLOOR = 98.6
 LABEL_FLOOR = 97.0
 LABEL_MIN_STROKES = 50
 
 
-def scored_rows(rows: list[Row]) -> tuple[list[Row], Counter]:
-    """The rows scored (one stroke, a mapped label) and, for the rest, why not (counted)."""
+def in_third_group(row: Row) -> bool:
+    """Whether a row is of a set found by the third search (`THIRD_SETS`), by its set's name alone."""
+    return row["source"] in THIRD_SETS
+
+
+def scored_rows(rows: list[Row], third: bool = False) -> tuple[list[Row], Counter]:
+    """The rows scored (one stroke, a mapped label) and, for the rest, why not (counted). The third held-back group
+    (`THIRD_SETS`) is left out, counted, unless ``third``: then it alone is scored and every other row left out."""
     labels = read_table()
     kept, left = [], Counter()
     for row in rows:
+        if in_third_group(row) != third:
+            left["of the third held-back group (`THIRD_SETS`; --third scores it alone)" if not third
+                 else "not of the third held-back group (--third scores it alone)"] += 1
+            continue
         cls = labels.label_class(row["source"], row["label"])
         if cls is None:
             raise SystemExit(f"{row.get('file')}: label {row['label']!r} of set {row['source']!r} is not in "
@@ -85,6 +101,8 @@ def held_back(rows: list[Row]) -> set[str]:
 
 def is_held_back_new(source: str) -> bool:
     """Whether a source found after `FIRST_SOURCES` is held back (`HELD_BACK_SEED_NEW`); by its name alone."""
+    if source.split(":", 1)[0] in THIRD_SETS:  # the third search's sets are a group of their own
+        return False
     return source not in FIRST_SOURCES and int(hashlib.sha256((HELD_BACK_SEED_NEW + source).encode()).hexdigest(),
                                                 16) % 2 == 0
 
@@ -95,8 +113,10 @@ def held_back_new(rows: list[Row]) -> set[str]:
 
 
 def group_of(source: str, first_group: set[str]) -> str:
-    """Which group a person's source is pooled in: the first 19's design part or held-back part, or the sources
-    found later, design or held back."""
+    """Which group a person's source is pooled in: the first 19's design part or held-back part, the sources found
+    by the second search, design or held back, or the third held-back group."""
+    if source.split(":", 1)[0] in THIRD_SETS:
+        return "third held back"
     if source in FIRST_SOURCES:
         return "first held back" if source in first_group else "first design"
     return "new held back" if is_held_back_new(source) else "new design"
@@ -175,6 +195,8 @@ def leave_one_source_out(rows: list[Row], by: str, grid: list[Weights], contradi
         print(f"Sources found after the first 19: design {_share(pooled, 'new design')}"
               + (f"; held back ({', '.join(sorted(held_back_new(rows)))}): {_share(pooled, 'new held back')}"
                  if pooled["new held back"] else "") + ".\n")
+    if by == "person" and pooled["third held back"]:
+        print(f"The third held-back group (`THIRD_SETS`): {_share(pooled, 'third held back')}.\n")
     print("Issue 25 targets (every source >= 98.6 %; every label with >= 50 strokes in a source >= 97 %): "
           + ("met" if not misses else "not met: " + "; ".join(misses)) + "\n")
     if contradicted is not None:
@@ -220,6 +242,8 @@ def main() -> None:
     ap.add_argument("--defaults", action="store_true", help="the shipped weights only (one pass): a held-out figure "
                     "for sources found after they were set, as the second held-back group")
     ap.add_argument("--heldback", action="store_true", help="score the second held-back group too (once, at the end)")
+    ap.add_argument("--third", action="store_true", help="score the third held-back group alone (`THIRD_SETS`; once, "
+                    "by the lead, at the end of a session)")
     ap.add_argument("--contradictions", action="store_true", help="also count the strokes whose label the committed "
                     "contradiction tests convict, and re-state the targets without them (beside the raw figure)")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
@@ -230,7 +254,7 @@ def main() -> None:
             rows += read_set(path)
         except (OSError, ValueError) as exc:
             raise SystemExit(f"bench_generalisation: {exc}") from None
-    kept, left = scored_rows(rows)
+    kept, left = scored_rows(rows, third=args.third)
     if not args.heldback:
         hidden = held_back_new(kept)
         n = len(kept)

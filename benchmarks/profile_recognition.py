@@ -5,7 +5,7 @@ Usage: .venv/bin/python benchmarks/profile_recognition.py SET [SET ...] [--top 2
 
 Each single-stroke sample is resampled to 200 points with its times (`bench_recognition.resample`, as
 `bench_side_by_side` times it; ``--as-drawn`` keeps the points as recorded) and recognised once under cProfile. The
-second held-back group (`bench_generalisation.is_held_back_new`) is left out. Prints the total and the top entries.
+second and third held-back groups are left out (`compare_readings.strokes`). Prints the total and the top entries.
 """
 
 from __future__ import annotations

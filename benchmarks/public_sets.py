@@ -9,7 +9,11 @@ students): more students of the ITT course (set
 ``itt``), the people whom students of a course on input recognition (University of Florida, CIS6930 "Human-Centered
 Input Recognition Algorithms", set ``hcira``) recorded drawing the $1 gestures, and the Mixed Multistroke Gestures
 set (Anthony & Wobbrock 2012, set ``mmg``: 20 people, stylus or finger on a Tablet PC) as a student's repository
-holds it. None carries a licence that allows copying it, so nothing is committed; a repository is read from
+holds it; and the sets of the third search (`THIRD_ENTRIES`: set ``hcira3``, two more HCIRA teams' people, on a
+trackpad, a mouse, a stylus on an iPad and a finger on a touch screen; set ``fc``, the online handwritten flowchart
+database FC, a writer a source, read from InkML), which are the third held-back group
+(`bench_generalisation.THIRD_SETS`: scored only by ``bench_generalisation.py --third``, by the lead, once). None
+carries a licence that allows copying it, so nothing is committed; a repository is read from
 ``DIR/<owner>+<name>/repo`` (as the fetch tool leaves them) or cloned bare into the cache (`student_sets.git_dir`).
 
 Each entry names the folder holding one person's recordings (``ONE``) or a folder of per-person subfolders
@@ -38,7 +42,8 @@ from student_sets import _git, git_dir, reserved_points, times_ms
 
 CACHE = Path.home() / ".cache" / "physink"
 ONE, PER_FOLDER = "one", "per-folder"
-XML, ACCORD, JAVA = "xml", "accord", "java"
+XML, ACCORD, JAVA, INKML = "xml", "accord", "java", "inkml"
+INK = "{http://www.w3.org/2003/InkML}"
 
 
 class Entry(NamedTuple):
@@ -55,13 +60,31 @@ class Entry(NamedTuple):
     """`PER_FOLDER`: the subfolders read (all when empty)."""
     form: str = XML
     """`XML`: a gesture a file ($1 or $N form); `ACCORD`: a file a label of ``<Sequence>`` samples (the Accord.NET
-    gesture sample's form); `JAVA`: a folder a label of Java-serialised samples."""
+    gesture sample's form); `JAVA`: a folder a label of Java-serialised samples; `INKML`: a diagram a file, its
+    symbols trace groups labelled by their ``truth`` annotation, its writer named in the file (the FC database)."""
+    rename: tuple[str, str] = ("", "")
+    """`PER_FOLDER`: (a prefix put before, a suffix taken off) each subfolder's name to name its person, so that one
+    person's folders on several devices are one source (``user01mouse`` -> ``user01``) and two studies of one team
+    are not (``user1`` -> ``trackpad-user1``)."""
 
 
 MAX_COPIES = 5
 """A gesture file whose stroke was gathered already under another source is skipped (a file copied by hand); more
 than this many in one source stop the script: the source is a copy."""
 HCIRA_MOUSE = "mouse"
+SUBHASH = ("subhash-vadlamani/UniStrokeGestureRecognizer", "c098c374c9d7dfc121e3e33731d8b7fc531f2bd7")
+THIRD_ENTRIES: tuple[Entry, ...] = (
+    Entry("hcira3", *SUBHASH, "Part_4/part4_dataset/user_logs", "trackpad", PER_FOLDER, rename=("trackpad-", "")),
+    *(Entry("hcira3", *SUBHASH, f"project2_sourcecode/user_logs_{folder}", device, PER_FOLDER, rename=("", suffix))
+      for folder, device, suffix in (("mouse", "mouse", "mouse"), ("stylus", "stylus on an iPad", ""),
+                                     ("touchscreen", "finger on a laptop's touch screen", ""))),
+    Entry("hcira3", "srichaitanyanulu/Dollar1-with-Protractor-Algorithm", "d70976beca745cafbe4dec0451253316fd904e01",
+          "User Gesture Dataset", "pointer on a tkinter canvas (mouse or touch: not stated)", PER_FOLDER),
+    Entry("fc", "zevisert/FCinkML1.7-renders", "ec845d2f0c140b2df296c5932339c881a2bfb1b7", "sources",
+          "pen (the FC database's acquisition device)", ONE, form=INKML),
+)
+"""The sets of the third search (issue 25, `bench_generalisation.THIRD_SETS`: the third held-back group, never
+designed on; `benchmarks/SOURCES.md`, "The third search")."""
 ENTRIES: tuple[Entry, ...] = (
     Entry("itt", "ITT-24/assignment-6-gesture-recognition-EmmaSophieReichert",
           "32d2840d2a55803e49d522f51e260a494c71589e", "dataset/my-dataset", "mouse", ONE, "EmmaSophieReichert"),
@@ -91,11 +114,16 @@ ENTRIES: tuple[Entry, ...] = (
       for folder in ("TrainingData", "TestData")),
     Entry("gtiwari", "gtiwari333/mouse-gesture-recognition-java-hidden-markov-model",
           "06d93512747fca7352b4d7e1c5417f999767ad8f", "trainData", "mouse", ONE, "gtiwari333", form=JAVA),
+    *THIRD_ENTRIES,
 )
-"""Every set of the second search (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and how."""
+"""Every set of the second and third searches (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and
+how."""
 
 SPELLINGS = {**student_sets.LABEL_SPELLINGS, "pig_tail": "pigtail", "zig_zag": "zigzag",
-             "left_square_bracket": "left_sq_bracket", "right_square_bracket": "right_sq_bracket"}
+             "left_square_bracket": "left_sq_bracket", "right_square_bracket": "right_sq_bracket",
+             "left_curly_braces": "left_curly_brace", "right_curly_braces": "right_curly_brace",
+             "left_square_braces": "left_sq_bracket", "right_square_braces": "right_sq_bracket",
+             "left_square_brace": "left_sq_bracket", "right_square_brace": "right_sq_bracket"}
 DOLLAR_LABELS = frozenset({"arrow", "caret", "check", "circle", "delete_mark", "left_curly_brace", "left_sq_bracket",
                            "pigtail", "question_mark", "rectangle", "right_curly_brace", "right_sq_bracket", "star",
                            "triangle", "v", "x", "zigzag"})
@@ -170,6 +198,40 @@ def java_stroke(where: str, data: bytes) -> list[list[float | None]]:
     return [[float(x), float(y), t] for (x, y), t in zip(xy, ts, strict=True)]
 
 
+def inkml_symbols(where: str, data: bytes) -> list[tuple[str, str, list[list[list[float | None]]]]]:
+    """(writer, label, pen-downs) of every symbol of an InkML diagram: each innermost ``traceGroup`` with a ``truth``
+    annotation, its strokes the traces it refers to, in order (points [x, y, None]: the files keep no times).
+
+    Raises:
+        ValueError: the file does not parse, names no writer, or a group refers to a trace it does not hold.
+    """
+    if b"<inkml:" in data and b"xmlns:inkml" not in data:  # one FC file uses the prefix without declaring it
+        data = data.replace(b'xmlns="http://www.w3.org/2003/InkML"',
+                            b'xmlns="http://www.w3.org/2003/InkML" xmlns:inkml="http://www.w3.org/2003/InkML"', 1)
+    try:
+        root = ET.fromstring(data)
+    except ET.ParseError as exc:
+        raise ValueError(f"{where}: {exc}") from None
+    writer = next((a.text or "" for a in root.findall(f"{INK}annotation") if a.get("type") == "writer"), "").strip()
+    if not writer:
+        raise ValueError(f"{where}: no <annotation type=\"writer\">")
+    traces = {t.get("id"): [[float(v) for v in pt.split()[:2]] + [None] for pt in (t.text or "").split(",")
+                            if pt.strip()] for t in root.iter(f"{INK}trace")}
+    out = []
+    for group in root.iter(f"{INK}traceGroup"):
+        if group.find(f"{INK}traceGroup") is not None:
+            continue
+        label = next((a.text or "" for a in group.findall(f"{INK}annotation") if a.get("type") == "truth"), "").strip()
+        refs = [v.get("traceDataRef") for v in group.findall(f"{INK}traceView")]
+        if not label or not refs:
+            continue
+        missing = [r for r in refs if r not in traces]
+        if missing:
+            raise ValueError(f"{where}: trace group {label!r} refers to traces {missing} the file does not hold")
+        out.append((writer, label, [traces[r] for r in refs]))
+    return out
+
+
 def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, str, list, str]]:
     """(where, person, device, label, pen-downs, date) of every gesture ``entry`` names, in order."""
     owner, c = entry.repo.split("/")[0], entry.commit
@@ -184,6 +246,12 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
                 pts = [[float(p.findtext("X", "nan")), float(p.findtext("Y", "nan")), None] for p in seq.iter("Point")]
                 yield f"{at}{name}#{k}", entry.person, entry.device, Path(name).stem, [pts], ""
         return
+    if entry.form == INKML:  # a diagram per file: every labelled trace group is one symbol of the file's writer
+        for name in _files(gdir, c, entry.folder, ".inkml"):
+            for k, (writer, label, strokes) in enumerate(inkml_symbols(at + name, _git(gdir, "show", f"{c}:{name}")),
+                                                        1):
+                yield f"{at}{name}#{k}", writer, entry.device, label, strokes, ""
+        return
     if entry.form == JAVA:  # a folder per label, a serialised RawFeature per sample
         for sub in _subfolders(gdir, c, entry.folder):
             for name in _files(gdir, c, sub, ".TRAINDATA"):
@@ -194,7 +262,9 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
         people = [(entry.person, entry.folder)]
     else:
         subs = _subfolders(gdir, c, entry.folder)
-        people = [(f"{owner}/{Path(s).name}", s) for s in subs if not entry.only or Path(s).name in entry.only]
+        prefix, suffix = entry.rename
+        people = [(f"{owner}/{prefix}{Path(s).name.removesuffix(suffix)}", s) for s in subs
+                  if not entry.only or Path(s).name in entry.only]
     for person, folder in people:
         for name in _files(gdir, c, folder):
             strokes, root = strokes_of(at + name, _git(gdir, "show", f"{c}:{name}"))

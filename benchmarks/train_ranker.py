@@ -11,10 +11,11 @@ replaces the rules' only when its chance is over a margin (`MARGINS`) chosen by 
 the model is fitted on. Design folds: each source not held back is scored by a model (and margin) fitted on the other
 design sources only. The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or
 ``--write`` is given; the second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``;
-each group is then scored per source and per class, apart, by a model fitted on the design sources. ``--write`` fits on
-every source given but the second held-back group (the margin chosen by leave-one-source-out over them) and writes the
-model as the Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features
-are kept in ~/.cache/physink/ under a key of the rows and the recognition package's source.
+the third (the sets of the third search, `bench_generalisation.THIRD_SETS`) never: it is neither fitted on nor scored
+here; each group is then scored per source and per class, apart, by a model fitted on the design sources. ``--write``
+fits on every source given but the second held-back group (the margin chosen by leave-one-source-out over them) and
+writes the model as the Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py).
+Features are kept in ~/.cache/physink/ under a key of the rows and the recognition package's source.
 """
 
 from __future__ import annotations
@@ -220,6 +221,20 @@ def model_module_text(doc: dict) -> str:
             f"MODEL = {pprint.pformat(doc, width=116, compact=True, sort_dicts=False)}\n")
 
 
+def rows_read(rows: list[Row], heldback: bool, write: bool) -> tuple[list[Row], set[str], set[str]]:
+    """The scored rows the ranker may read, and the first and second held-back groups among them. The third
+    held-back group (`bench_generalisation.THIRD_SETS`) is never read, not even with ``heldback`` or ``write``
+    (`scored_rows` leaves it out); the second only with ``heldback``; the first only with ``heldback`` or ``write``."""
+    rows, _ = scored_rows(rows)
+    first, new = held_back(rows), held_back_new(rows)
+    if not heldback:  # the second group is never read without --heldback, not even to write a model
+        rows = [r for r in rows if source_of(r, "person") not in new]
+        new = set()
+    if not (heldback or write):
+        rows = [r for r in rows if source_of(r, "person") not in first]
+    return rows, first, new
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("sets", type=Path, nargs="+")
@@ -236,13 +251,7 @@ def main() -> None:
     rows: list[Row] = []
     for path in args.sets:
         rows += read_set(path)
-    rows, _ = scored_rows(rows)
-    first, new = held_back(rows), held_back_new(rows)
-    if not args.heldback:  # the second group is never read without --heldback, not even to write a model
-        rows = [r for r in rows if source_of(r, "person") not in new]
-        new = set()
-    if not (args.heldback or args.write):
-        rows = [r for r in rows if source_of(r, "person") not in first]
+    rows, first, new = rows_read(rows, args.heldback, bool(args.write))
     group = first | new
     sources = np.array([source_of(r, "person") for r in rows])
     d = describe(rows)

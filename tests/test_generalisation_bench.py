@@ -13,7 +13,16 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_generalisation import FIRST_STUDENTS, group_of, held_back, held_back_new, leave_one_source_out, scored_rows
+from bench_generalisation import (
+    FIRST_STUDENTS,
+    THIRD_SETS,
+    group_of,
+    held_back,
+    held_back_new,
+    is_held_back_new,
+    leave_one_source_out,
+    scored_rows,
+)
 from bench_recognition import ACCEPTS, LABEL_CLASS
 from label_kinds import read_table
 from stroke_sets import read_set, source_of
@@ -156,3 +165,132 @@ def test_strokes_whose_label_contradicts_their_geometry_are_counted_beside_the_r
     assert "Not the headline: on the strokes whose label agrees with their geometry (5/5 = 100.00 % pooled; 1 " \
            "strokes whose label the contradiction tests convict" in out
     assert out.rstrip().endswith("left out), the same targets: met")
+
+
+def test_the_third_search_sets_are_left_out_of_every_run_but_their_own_and_never_fitted_on() -> None:
+    """The third held-back group (issue 25's third search) is held back whole by its sets' names: the default run,
+    `--heldback` and the ranker's training (even when writing the shipped model) never see it; `--third` scores it
+    alone. Its sources are in neither earlier group."""
+    from train_ranker import rows_read
+
+    table = read_table()
+
+    def row(set_name: str, person: str) -> dict:
+        label = next(lab for lab, cls in sorted(table.of_set(set_name).items()) if cls != "-")
+        return {"source": set_name, "subject": person, "label": label, "file": f"{set_name}-{person}",
+                "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(_circle())]]}
+
+    assert THIRD_SETS and not THIRD_SETS & {"dollar1", "itt", "hcira", "mmg", "ahmadosama", "gtiwari", "bouchal"}
+    earlier = [row("dollar1", "s02"), row("itt", "Ferdi-FM"), row("itt", "DerD4n")]
+    earlier += [row("hcira", f"team/user{k}") for k in range(12)]
+    third = [row(name, f"team/user{k}") for name in sorted(THIRD_SETS) for k in range(12)]
+    kept, left = scored_rows(earlier + third)
+    assert {r["source"] for r in kept}.isdisjoint(THIRD_SETS) and len(kept) == len(earlier)
+    assert sum(n for why, n in left.items() if "third held-back group" in why) == len(third)
+    only, left_third = scored_rows(earlier + third, third=True)
+    assert {r["source"] for r in only} == set(THIRD_SETS) and len(only) == len(third)
+    assert sum(left_third.values()) == len(earlier)
+    for heldback, write in ((False, False), (True, False), (False, True), (True, True)):
+        read, first, new = rows_read(earlier + third, heldback, write)
+        assert read and {r["source"] for r in read}.isdisjoint(THIRD_SETS)
+        assert not any(s.split(":")[0] in THIRD_SETS for s in first | new)
+    sources = {source_of(r, "person") for r in third}
+    assert not any(is_held_back_new(s) for s in sources)
+    assert {group_of(s, set()) for s in sources} == {"third held back"}
+
+
+def test_the_third_search_sets_are_read_by_person_across_devices_and_held_back(tmp_path) -> None:
+    """The third search's form (a team's $1-form XML files, a folder a person and device, e.g.
+    ``user_logs_mouse/user01mouse/zig_zag01.xml``), made here in miniature: one person's folders on two devices are
+    one source, another study of the same team is another source, its spellings become the $1 set's labels, and
+    every row is of a `THIRD_SETS` set, so the default run leaves it out."""
+    from mirror_repo import commit_mirror
+    from public_sets import PER_FOLDER, THIRD_ENTRIES, Entry, entry_rows
+
+    def gesture(name: str, points) -> str:
+        return (f'<?xml version="1.0"?><Gesture Name="{name}" Subject="1" Date="Saturday, February 25, 2023">'
+                f"{_points_xml(points)}</Gesture>")
+
+    mirrors, head = commit_mirror(tmp_path, "team/recogniser", {
+        "p2/user_logs_mouse/user01mouse/zig_zag01.xml": gesture("zig_zag01", [(0, 0), (20, 30), (40, 0), (60, 30)]),
+        "p2/user_logs_stylus/user01/left_square_bracket01.xml": gesture("left_square_bracket01",
+                                                                         [(40, 0), (0, 0), (0, 80), (40, 80)]),
+        "p1/user_logs/user1/delete01.xml": gesture("delete01", [(0, 0), (50, 50), (0, 50), (50, 0)]),
+        "p1/user_logs/user1/xml_logs/s05/circle01.xml": gesture("circle01", _circle()),  # deeper: never read
+    })
+    repo = "team/recogniser"
+    entries = [Entry("hcira3", repo, head, "p2/user_logs_mouse", "mouse", PER_FOLDER, rename=("", "mouse")),
+               Entry("hcira3", repo, head, "p2/user_logs_stylus", "stylus", PER_FOLDER),
+               Entry("hcira3", repo, head, "p1/user_logs", "trackpad", PER_FOLDER, rename=("trackpad-", ""))]
+    rows = [r for e in entries for r in entry_rows(e, mirrors, set(), {}, [])]
+    assert [(r["subject"], r["device"], r["label"]) for r in rows] == [
+        ("team/user01", "mouse", "zigzag"), ("team/user01", "stylus", "left_sq_bracket"),
+        ("team/trackpad-user1", "trackpad", "delete_mark")]
+    assert rows[0]["strokes"] == [[[0.0, 0.0, 0.0], [20.0, 30.0, 10.0], [40.0, 0.0, 20.0], [60.0, 30.0, 30.0]]]
+    assert {source_of(r, "person") for r in rows} == {"hcira3:team/user01", "hcira3:team/trackpad-user1"}
+    kept, _ = scored_rows(rows)
+    assert kept == []
+    third, _ = scored_rows(rows, third=True)
+    assert [sorted(r["accepts"]) for r in third] == [["polyline"], ["polyline"], ["polyline"]]
+    assert {e.set_name for e in THIRD_ENTRIES} <= THIRD_SETS
+
+
+def test_an_inkml_diagram_gives_one_row_a_symbol_of_its_writer(tmp_path) -> None:
+    """The FC flowchart database's form (InkML: traces of "x y" pairs, symbols as trace groups with a truth label,
+    the writer in an annotation), made here in miniature: a one-stroke box is one scored row, a two-stroke arrow is
+    counted as drawn in two strokes, and both belong to the third held-back group."""
+    from mirror_repo import commit_mirror
+    from public_sets import INKML, ONE, Entry, entry_rows, inkml_symbols
+
+    def trace(k: int, points) -> str:
+        return f'<trace id="{k}">' + ", ".join(f"{x:g} {y:g}" for x, y in points) + "</trace>"
+
+    box = _square(60)
+    ink = ('<ink xmlns="http://www.w3.org/2003/InkML"><annotation type="writer">writer7</annotation>'
+           + trace(0, box) + trace(1, [(0, 100), (80, 100)]) + trace(2, [(70, 95), (80, 100), (70, 105)])
+           + '<traceGroup><annotation type="truth">From ITF</annotation>'
+           '<traceGroup><annotation type="truth">process</annotation><traceView traceDataRef="0"/></traceGroup>'
+           '<traceGroup><annotation type="truth">arrow</annotation><traceView traceDataRef="1"/>'
+           '<traceView traceDataRef="2"/></traceGroup></traceGroup></ink>')
+    symbols = inkml_symbols("d.inkml", ink.encode())
+    assert [(w, label, len(strokes)) for w, label, strokes in symbols] == [("writer7", "process", 1),
+                                                                          ("writer7", "arrow", 2)]
+    assert symbols[0][2][0][:2] == [[0.0, 0.0, None], [3.0, 0.0, None]]
+    with pytest.raises(ValueError, match=r"e\.inkml: trace group 'process' refers to traces \['9'\]"):
+        inkml_symbols("e.inkml", ink.replace('traceDataRef="0"', 'traceDataRef="9"').encode())
+    mirrors, head = commit_mirror(tmp_path, "someone/flowcharts", {"sources/writer7_1.inkml": ink})
+    rows = entry_rows(Entry("fc", "someone/flowcharts", head, "sources", "pen", ONE, form=INKML), mirrors, set(), {},
+                      [])
+    assert [(source_of(r, "person"), r["label"]) for r in rows] == [("fc:writer7", "process"), ("fc:writer7", "arrow")]
+    assert scored_rows(rows)[0] == []
+    third, left = scored_rows(rows, third=True)
+    assert [(r["label"], r["accepts"]) for r in third] == [("process", frozenset({"box"}))]
+    assert sum(left.values()) == 1  # the arrow: no kind stands for a flowchart's arrow
+
+
+def test_the_third_flag_scores_the_third_group_alone_and_the_default_run_never(tmp_path, capsys, monkeypatch) -> None:
+    """`bench_generalisation.py SETS --third --defaults` (the lead's one run) scores only the third group's sources,
+    pooled apart; the same sets without it score none of them (strokes made here, not any set's)."""
+    import bench_generalisation
+
+    def row(set_name: str, person: str, label: str, points) -> dict:
+        return {"source": set_name, "subject": person, "label": label, "file": f"{set_name}-{person}-{label}",
+                "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(points)]]}
+
+    rows = [row("hcira3", f"team/user0{k}", "circle", _circle(30 + 5 * k)) for k in (1, 2)]
+    rows += [row("fc", "writer3", "process", _square(70)), row("dollar1", "s02", "circle", _circle(50)),
+             row("dollar1", "s03", "rectangle", _square(90))]
+    path = tmp_path / "sets.jsonl"
+    path.write_text("".join(json.dumps(r) + "\n" for r in rows))
+    monkeypatch.setattr(sys, "argv", ["bench_generalisation.py", str(path), "--third", "--defaults"])
+    bench_generalisation.main()
+    out = capsys.readouterr().out
+    assert "| hcira3:team/user01 | 1 |" in out and "| fc:writer3 | 1 |" in out and "dollar1:" not in out.split(
+        "### Leave one source out")[1]
+    assert "The third held-back group (`THIRD_SETS`): 3/3 = 100.00 %." in out
+    monkeypatch.setattr(sys, "argv", ["bench_generalisation.py", str(path), "--defaults"])
+    bench_generalisation.main()
+    out = capsys.readouterr().out
+    assert "| dollar1:s02 | 1 |" in out and "hcira3:" not in out.split("### Leave one source out")[1]
+    assert "fc:" not in out.split("### Leave one source out")[1] and "third held-back group" not in out.split(
+        "### Leave one source out")[1]

@@ -41,7 +41,11 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    a delete mark whose ends happen to meet) is no outline: the stroke is judged open. A winning polygon of five
    sides or more that its best four sides overlap by IoU >= 0.92 (`polygon_checks.BOX_OVERLAP`), when those four
    make a box, is the box (a hook, a bowed side or a cut corner; a notch, T or L keeps its corners); a lumpy round
-   loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may.
+   loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may; a box may
+   reach 10 % (`ranking.BOX_MARGIN`: a box whose upright sides lean, squared, pokes out). A polygon left open (its
+   last side heading home, or a star's run on past its start, `recognize.STAR_CROSSINGS`) is judged by its sides'
+   turning where an end hook undoes the path's (`recognize.LEFT_OPEN_WOBBLE`), and its last side may bow
+   (`recognize.LAST_SIDE_BOW`).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a

@@ -41,6 +41,11 @@ EFFECTIVE_SAMPLES = 64
 """How many independent samples a stroke's fit error is taken to rest on, whatever its point count."""
 BOUNDS_MARGIN = 0.05
 """A beautified shape must stay within the stroke's bounding box grown by this share of its diagonal."""
+BOX_MARGIN = 0.1
+"""A box may reach this share of the diagonal past the stroke's bounds: squaring a quad whose corners are within the
+box's tolerance (`beautify.box_geometry`, 24 degrees) moves its corners out, and a hurried hand slants a box's
+upright sides by up to 20 degrees (a parallelogram sheared so, squared, pokes out by 6-9 % of its diagonal, whatever
+its aspect; at `BOUNDS_MARGIN` a box sheared by more than about 11 degrees fell back to the quad drawn)."""
 
 def bounds(raw: np.ndarray, noise: float, diag: float, share: float = BOUNDS_MARGIN,
             ) -> tuple[np.ndarray, np.ndarray]:
@@ -67,6 +72,7 @@ def rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weight
             heapq.heappush(heap, (bic_score(c, n, sigma, weights), len(heap), c))
     lo, hi = bounds(raw, noise, diag)
     round_lo, round_hi = bounds(raw, noise, diag, round_share)
+    box_lo, box_hi = bounds(raw, noise, diag, BOX_MARGIN)
     kept: list[tuple[float, Candidate]] = []
     seq = len(heap)
     while heap:
@@ -77,7 +83,8 @@ def rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weight
             for built in c.build():
                 seq += 1
                 heapq.heappush(heap, (bic_score(built, n, sigma, weights), seq, built))
-        elif not (inside(c.geometry, round_lo, round_hi) if c.kind == "ellipse" else inside(c.geometry, lo, hi)):
+        elif not inside(c.geometry, *((round_lo, round_hi) if c.kind == "ellipse" else
+                                      (box_lo, box_hi) if c.kind == "box" else (lo, hi))):
             if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
                 seq += 1
                 heapq.heappush(heap, (score, seq, c.fallback))

@@ -35,6 +35,7 @@ from physink_tui.scene.recognition.polygon_fit import candidate_vertices
 from physink_tui.scene.recognition.primitives import Line, Polygon, Polyline, Recognition
 from physink_tui.scene.recognition.ranking import (
     BOUNDS_MARGIN,
+    BOX_MARGIN,
     DEFAULT_WEIGHTS,
     Weights,
     bounds,
@@ -211,7 +212,8 @@ def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray,
     if crossings(drawn) > 1:
         return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
     quads = [p for p in polygons if p.params == 8 and any(overlap(f.vertices, drawn) >= BOX_OVERLAP for f in p.fits)]
-    lo, hi = bounds(raw, noise, diag)  # built only where a four-sided fit covers it (judging corners costs more)
+    # built only where a four-sided fit covers it (judging corners costs more)
+    lo, hi = bounds(raw, noise, diag, BOX_MARGIN)
     for box in (c for p in quads for c in p.build() if c.kind == "box"):
         if (inside(box.geometry, lo, hi) and keeps_the_outline(box, loop)
                 and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
@@ -275,13 +277,49 @@ def _polygon_left_open(work: np.ndarray, diag: float) -> bool:
     length = sg.path_length(work)
     if length < 1.75 * diag or sf.closure(work, diag) >= 0.42:
         return False
-    th = sg.turning(work)
-    if abs(float(th.sum())) < 1.25 * math.pi:
+    turned = abs(float(sg.turning(work).sum()))
+    if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
         return False
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
-    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs)
-            and sf.heading_home(work, corners))
+    if turned < LEFT_OPEN_TURN and abs(_sides_turning(work[corners])) < LEFT_OPEN_TURN:
+        return False
+    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
+            and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
+            and (sf.heading_home(work, corners) or _star_run_past_its_start(work, corners)))
+
+
+STAR_CROSSINGS = 3
+"""A star drawn in one stroke crosses its own sides five times (a pentagram); an open mark whose last stroke runs
+back across its first (the $1 delete mark, an alpha) crosses once. From this many crossings on, a stroke whose last
+side runs on past its start is a star whose last stroke overshot, not an open mark."""
+
+
+def _star_run_past_its_start(work: np.ndarray, corners: list[int]) -> bool:
+    """The last side ran on past the start (the start lies behind the end, within `stroke_features.heading_home`'s
+    50 degrees of the side's line) and the sides cross one another like a star's."""
+    last, home = work[-1] - work[corners[-2]], work[0] - work[-1]
+    norms = float(np.hypot(*last) * np.hypot(*home))
+    if norms == 0.0 or float(last @ home) / norms > -math.cos(math.radians(50.0)):
+        return False
+    return crossings(work[corners]) >= STAR_CROSSINGS
+
+
+LAST_SIDE_BOW = 0.2
+"""The last side of a polygon left open may bow this much (of its chord): the hand swings home as it lifts, while the
+sides before it are drawn straight (`open_shapes.STRAIGHT`)."""
+LEFT_OPEN_TURN = 1.25 * math.pi
+"""A polygon left open has turned at least this far round (a triangle short of its last side: about 1.33 pi)."""
+LEFT_OPEN_WOBBLE = 0.5 * math.pi
+"""How much of that turning a hurried hand's hook or wobble at an end may undo on the path itself; then the turning is
+taken from corner to corner, along the sides' chords (the corners the hand meant), not from every wiggle."""
+
+
+def _sides_turning(corners: np.ndarray) -> float:
+    """The signed turning of the chain of sides through ``corners`` (radians)."""
+    sides = np.diff(corners, axis=0)
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    return float(((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi).sum())
 
 
 def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -> tuple[bool, np.ndarray]:
