@@ -92,7 +92,8 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
-- `ranker.py`: the learned ranker's features, its model (read once from the package's data) and its choice
+- `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;
+  a hurried check's stop once `checked_point` can tell), its model (read once from the package's data), its choice
 - `shape_fits.py`: total-least-squares line, Kasa circle, Fitzgibbon direct ellipse, cubic Bézier fits
 - `beautify.py`: the clean geometry of each kind, points on it (`shape_points`, for the bounds check), mapping back
   to the stroke's units
@@ -100,5 +101,6 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
 Test-side generators live under `tests/`: `strokegen/` (seeded strokes per kind, thin boxes and U containers) and
 `penmodels/` (a second, hurried pen model that draws the thesis scenes, written apart from the virtual pen).
 `benchmarks/bench_recognition.py` and `bench_recognition_robust.py` (leave one person out, stress variants, thin
-boxes, containers) measure what the tests only floor.
+boxes, containers) measure what the tests only floor; `compare_readings.py` shows that a change (a speed-up) reads
+every design stroke exactly as another revision does, and `profile_recognition.py` where recognition's time goes.
 """
