@@ -59,18 +59,22 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    find_corners(every_dip=True)`), and a one-corner stroke turning one way whose bend is short against the whole
    stroke is sharp however short its arm (a tick, `open_shapes._short_bend`), its short arm may bow into the corner
    (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
-   not a hook cut where the pen landed (`stroke_geometry.end_arm`). Marks these rules misjudge (`bracket_marks`): a
-   square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight spine) is a
-   polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point were taken
-   for corners between straight sides (its farthest point from its ends' line a shallow point about halfway along,
-   the stroke on one side of that line), is not a polyline.
+   not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row turning each
+   way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the stroke does
+   before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended by running
+   back along itself is judged without that piece (`open_marks.retraced_ends`). Marks these rules misjudge
+   (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
+   spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
+   were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
+   halfway along, the stroke on one side of that line), is not a polyline.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
    fitted offline on people's strokes by `benchmarks/train_ranker.py`, shipped in the package as the data module
    `ranker_model`; it overrules the rules only when it gives another kind a chance over its margin. Other kinds are
    left to the rules, and so is the rules' hurried check (one really sharp, off-centre corner in at most three
-   lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`).
+   lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`), and the rules'
+   zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
@@ -86,13 +90,16 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
   overlap
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
+- `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line
+  begun by sliding back along itself
 - `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
   which the open-stroke rules misjudge
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
-- `ranker.py`: the learned ranker's features, its model (read once from the package's data) and its choice
+- `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;
+  a hurried check's stop once `checked_point` can tell), its model (read once from the package's data), its choice
 - `shape_fits.py`: total-least-squares line, Kasa circle, Fitzgibbon direct ellipse, cubic Bézier fits
 - `beautify.py`: the clean geometry of each kind, points on it (`shape_points`, for the bounds check), mapping back
   to the stroke's units
@@ -100,5 +107,6 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
 Test-side generators live under `tests/`: `strokegen/` (seeded strokes per kind, thin boxes and U containers) and
 `penmodels/` (a second, hurried pen model that draws the thesis scenes, written apart from the virtual pen).
 `benchmarks/bench_recognition.py` and `bench_recognition_robust.py` (leave one person out, stress variants, thin
-boxes, containers) measure what the tests only floor.
+boxes, containers) measure what the tests only floor; `compare_readings.py` shows that a change (a speed-up) reads
+every design stroke exactly as another revision does, and `profile_recognition.py` where recognition's time goes.
 """

@@ -21,7 +21,7 @@ from physink_tui.scene.recognition.beautify import box_geometry, round_geometry
 from physink_tui.scene.recognition.polygon_checks import corners_of, split_hairpins
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, best_polygons
 from physink_tui.scene.recognition.primitives import Box, Geometry, Line, Polygon, Polyline
-from physink_tui.scene.recognition.shape_fits import fit_ellipse
+from physink_tui.scene.recognition.shape_fits import EllipseFit
 
 MAX_SIDES = 10
 """The most sides a polygon or polyline candidate may have."""
@@ -140,9 +140,8 @@ def ellipse_distances(pts: np.ndarray, centre: np.ndarray, rx: float, ry: float,
         return np.where(r > 0, np.abs(dist - dist / np.where(r > 0, r, 1.0)), min(rx, ry))
 
 
-def round_shape(work: np.ndarray) -> Candidate | None:
-    """A circle or an ellipse through the stroke (closed, or most of the way round)."""
-    ellipse = fit_ellipse(work)
+def round_shape(work: np.ndarray, ellipse: EllipseFit | None) -> Candidate | None:
+    """A circle or an ellipse through the stroke (closed, or most of the way round), from its `fit_ellipse`."""
     if ellipse is None:
         return None
     centre, rx, ry, angle, _ = ellipse

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import bracket_marks
+from physink_tui.scene.recognition import bracket_marks, open_marks
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -61,7 +61,17 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
 
 def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
-    short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored."""
+    short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
+    without a lead-in or tail that runs back along it (`open_marks.retraced_ends`)."""
+    found = _line(raw, noise, diag)
+    if found is None:
+        kept = open_marks.retraced_ends(raw, noise)
+        if kept is not None:
+            found = _line(kept, noise, sg.bbox_diagonal(kept))
+    return found
+
+
+def _line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
         return None  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
@@ -121,6 +131,10 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             and (all(straight_runs) or _bent_polyline(work, th, corners, noise)
                  or _tick_into_bend(work, corners, straight_runs, roundness, noise))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
+    if (len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, th, corners, straight_runs, roundness)
+            and not _brace_tip(work, corners)):
+        # a zig-zag's sharp teeth between a loose lead-in and a curled tail (`open_marks.sawtooth`)
+        return Recognition("polyline", 0.8, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     bracket = bracket_marks.rounded_bracket_corners(work, corners, noise)
     if bracket is not None:  # one corner rounded off: a square bracket still
         return Recognition("polyline", 0.75, Polyline(tuple(_pt(work[c]) for c in bracket)), (("curve", 0.4),))

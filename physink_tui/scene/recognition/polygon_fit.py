@@ -18,6 +18,7 @@ else the join point itself, so nearly parallel sides never meet far away. Which 
 from __future__ import annotations
 
 import heapq
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -89,13 +90,14 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
     def push(a: int, b: int) -> None:
         if b - a < 2:
             return
-        d = pts[b] - pts[a]
-        rel = pts[a + 1:b] - pts[a]
-        norm = float(np.hypot(*d))
-        dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]) / norm if norm > 0 else np.hypot(*rel.T)
-        k = int(np.argmax(dist))
-        if dist[k] > tolerance:
-            heapq.heappush(heap, (-float(dist[k]), a + 1 + k, a, b))
+        rel = pts[a + 1:b + 1] - pts[a]
+        d, rel = rel[-1], rel[:-1]  # the chord, and the points between its ends
+        norm = float(np.hypot(d[0], d[1]))
+        dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]) / norm if norm > 0 else np.hypot(rel[:, 0], rel[:, 1])
+        k = int(dist.argmax())
+        far = float(dist[k])
+        if far > tolerance:
+            heapq.heappush(heap, (-far, a + 1 + k, a, b))
 
     push(0, n - 1)
     while heap and len(chosen) < limit:
@@ -130,19 +132,20 @@ def _segmentations(cost: np.ndarray, max_segments: int) -> list[tuple[float, lis
     c = cost.shape[0]
     best = np.full(c, np.inf)
     best[0] = 0.0
-    back: list[np.ndarray] = []
+    back: list[list[int]] = []
     out: list[tuple[float, list[int]] | None] = []
+    columns = np.arange(c)
     for _ in range(max_segments):
         total = best[:, None] + cost  # total[a, b]: reach a in k-1 chords, then chord a -> b
         arg = np.argmin(total, axis=0)
-        best = total[arg, np.arange(c)]
-        back.append(arg)
-        if not np.isfinite(best[-1]):
+        best = total[arg, columns]
+        back.append(arg.tolist())
+        if not math.isfinite(best[-1]):
             out.append(None)
             continue
         path = [c - 1]
         for step in reversed(back):
-            path.append(int(step[path[-1]]))
+            path.append(step[path[-1]])
         path.reverse()
         out.append((float(best[-1]), path))
     return out

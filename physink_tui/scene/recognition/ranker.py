@@ -18,10 +18,11 @@ import json
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes, ranker_model
+from physink_tui.scene.recognition import open_marks, open_shapes, ranker_model
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
@@ -115,10 +116,38 @@ def model_from(doc: object, where: str = "ranker model") -> Model:
     return Model(theta, mean, std, margin)
 
 
-def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
-               ) -> tuple[np.ndarray, np.ndarray, list[float] | None, float] | None:
-    """The stroke without repeated points (its times kept in step), its diagonal, and the stroke moved to unit
-    diagonal round its centroid, resampled and smoothed (None when it has no extent)."""
+class Drawn(NamedTuple):
+    """What recognition already knows of the stroke it hands the ranker (`recognize.recognize_stroke`), so the ranker
+    does not convert, clean and measure it again: the points without repeats, which of the given points they are,
+    their centroid, their diagonal (`stroke_geometry.bbox_diagonal`) and their jitter (`stroke_geometry.jitter`)."""
+
+    raw: np.ndarray
+    keep: np.ndarray
+    centre: np.ndarray
+    diag: float
+    jitter: float
+
+
+class Unit(NamedTuple):
+    """A stroke prepared once for the features (`_unit_work`): without repeated points (its times kept in step), its
+    diagonal, the stroke moved to unit diagonal round its centroid, resampled and smoothed (``work``), and its jitter
+    where already measured."""
+
+    raw: np.ndarray
+    work: np.ndarray
+    times: list[float] | None
+    diag: float
+    jitter: float | None = None
+
+
+def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None, drawn: Drawn | None = None,
+               ) -> Unit | None:
+    """The stroke prepared for the features (`Unit`; None when it has no extent), from ``drawn`` where given."""
+    if drawn is not None:
+        kept_times = (list(itertools.compress(times, drawn.keep.tolist()))
+                      if times is not None and len(times) == len(drawn.keep) else None)
+        work = sg.smooth(sg.resample((drawn.raw - drawn.centre) / drawn.diag, WORK_POINTS))
+        return Unit(drawn.raw, work, kept_times, drawn.diag, drawn.jitter)
     try:
         pts = np.asarray(points, dtype=float)[:, :2]
     except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
@@ -128,61 +157,78 @@ def _unit_work(points: Sequence[Sequence[float]], times: Sequence[float] | None,
     keep = np.ones(len(pts), dtype=bool)
     keep[1:] = np.any(np.diff(pts, axis=0) != 0.0, axis=1)
     raw = pts[keep]
-    kept_times = [t for t, k in zip(times, keep, strict=True) if k] if times is not None and len(
+    kept_times = list(itertools.compress(times, keep.tolist())) if times is not None and len(
         times) == len(pts) else None
     diag = sg.bbox_diagonal(raw) if len(raw) >= 2 else 0.0
     if diag == 0.0:
         return None
     work = sg.smooth(sg.resample((raw - raw.mean(axis=0)) / diag, WORK_POINTS))
-    return raw, work, kept_times, diag
+    return Unit(raw, work, kept_times, diag)
 
 
 def features(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float = 1.0) -> np.ndarray:
     """The stroke's features (`FEATURES`), size-free; ``noise`` is the pen's jitter in the points' units."""
-    return _features(_unit_work(points, times), noise)
+    phi = _features(_unit_work(points, times), noise)
+    assert phi is not None  # only a polyline's features stop early
+    return phi
 
 
-def _features(found: tuple[np.ndarray, np.ndarray, list[float] | None, float] | None, noise: float) -> np.ndarray:
-    """`features` of a stroke already prepared by `_unit_work`."""
+CHECK_FEATURES = tuple(FEATURES.index(f) for f in ("corners", "abs_turn", "max_corner_turn", "lobes", "point_balance"))
+"""The features `checked_point` reads."""
+
+
+def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np.ndarray | None:
+    """`features` of a stroke already prepared by `_unit_work`. With ``polyline`` (the rules read one), None as soon
+    as the features `checked_point` reads show a hurried check, which `choose` does not ask the model about: the others
+    (fits, corner shapes, the rules' tests) are not computed."""
     out = np.zeros(len(FEATURES))
     if found is None:
         return out
-    raw, work, times, diag = found
-    noise = max(noise, sg.jitter(raw)) / diag
+    raw, work, times, diag, jitter = found
+    noise = max(noise, sg.jitter(raw) if jitter is None else jitter) / diag
     length = sg.path_length(work)
     th = sg.turning(work)
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    abs_th = np.abs(th)
+    coarse = sg.coarse_turning(work, noise)
+    turns = sf.corner_turns(th, corners)
+    lobes = sf.turn_lobes(coarse)
+    checks = ((len(corners) - 2) / 8.0, float(abs_th.sum()) / (2 * math.pi), max(turns) / 180.0, len(lobes) / 4.0,
+              point_balance(work, corners, turns))  # `CHECK_FEATURES`, in that order
+    if polyline:
+        out[list(CHECK_FEATURES)] = checks
+        if checked_point(np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
+            return None
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     deviation = [sg.chord_deviation(r) for r in runs]
     straights = [open_shapes.straight(r, noise) for r in runs]
     bows = [min(d, 1.0) for d in deviation] or [0.0]
-    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners)] or [0.0]
-    coarse = sg.coarse_turning(work, noise)
-    turns = sf.corner_turns(th, corners)
-    lobes = sf.lobes(work, noise=noise)
+    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners, th=th)] or [0.0]
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)
+    coarse_sum, coarse_abs = float(coarse.sum()), float(np.abs(coarse).sum())
     out[:] = [
         sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(th.sum())) / (2 * math.pi),
-        float(np.abs(th).sum()) / (2 * math.pi), (len(corners) - 2) / 8.0, sf.turn_concentration(coarse),
+        checks[1], checks[0], sf.turn_concentration(coarse),
         max(roundness), float(np.mean(roundness)), float(np.mean([d < 0.12 for d in deviation])) if runs else 0.0,
-        max(bows), float(np.mean(bows)), max(turns) / 180.0, min(turns) / 180.0, len(lobes) / 4.0,
+        max(bows), float(np.mean(bows)), checks[2], min(turns) / 180.0, checks[3],
         min(ellipse[4], 1.0) if ellipse is not None else 1.0, min(circle_err, 1.0),
         ellipse[2] / max(ellipse[1], 1e-12) if ellipse is not None else 0.0, min(line_err, 1.0),
         sf.corner_share(th, corners) if len(corners) > 2 else 0.0,
-        abs(float(coarse.sum())) / max(float(np.abs(coarse).sum()), 1e-12), max(sf.bends(th, corners)) / 180.0,
+        abs(coarse_sum) / max(coarse_abs, 1e-12), max(sf.bends(th, corners)) / 180.0,
         math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
         float(bool(runs) and all(straights)),
         float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
         float(open_shapes._brace_tip(work, corners)), float(open_shapes._bowed_between_corners(work, corners, length)),
-        float(open_shapes._rounded_bracket(work, corners, straights, noise)), 0.0, 0.0,
-        point_balance(work, corners, turns)]
+        float(open_shapes._rounded_bracket(work, corners, straights, noise)), 0.0, 0.0, checks[4]]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
         at = FEATURES.index("has_times")
         out[at:at + 2] = [1.0, slow]
-    return np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
+    if not np.isfinite(out).all():  # as np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0), only where needed
+        out = np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
+    return out
 
 
 def point_balance(work: np.ndarray, corners: list[int], turns: list[float]) -> float:
@@ -201,15 +247,18 @@ def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: lis
     if times is None or len(times) != len(raw) or len(corners) < 3:
         return None
     t = np.asarray(times, dtype=float)
-    seg = np.hypot(*np.diff(raw, axis=0).T)
-    dt = np.diff(t)
+    d = raw[1:] - raw[:-1]
+    seg = np.hypot(d[:, 0], d[:, 1])
+    dt = t[1:] - t[:-1]
     ok = dt > 0
-    if ok.sum() < 8 or not np.isfinite(t).all():
+    if np.count_nonzero(ok) < 8 or not np.isfinite(t).all():
         return None
-    s = np.concatenate([[0.0], np.cumsum(seg)])
+    s = np.empty(len(raw))
+    s[0] = 0.0
+    np.cumsum(seg, out=s[1:])
     mid = (s[:-1] + s[1:])[ok] / 2 / max(s[-1], 1e-12)
     speed = seg[ok] / dt[ok]
-    overall = float(np.median(speed))
+    overall = sg.median(speed)
     if overall <= 0:
         return None
     near = np.zeros(len(mid), dtype=bool)
@@ -217,7 +266,7 @@ def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: lis
         near |= np.abs(mid - c / (n - 1)) < 0.05
     if not near.any():
         return None
-    return min(float(np.median(speed[near])) / overall, 3.0)
+    return min(sg.median(speed[near]) / overall, 3.0)
 
 
 def design(kinds: Sequence[str], phi: np.ndarray, rules_kind: str) -> np.ndarray:
@@ -273,37 +322,52 @@ def checked_point(phi: np.ndarray) -> bool:
 
 
 def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,
-           model: Model) -> Recognition:
+           model: Model, drawn: Drawn | None = None) -> Recognition:
     """``found`` (the rules' reading of the stroke), or the kind the model prefers with its geometry drawn from
-    the stroke, the rules' kind then the first alternative."""
-    if found.kind not in KINDS:
+    the stroke, the rules' kind then the first alternative; ``drawn``, where given, is what recognition already
+    measured of ``points`` (`Drawn`)."""
+    if found.kind not in KINDS or zigzag_teeth(found):
         return found
-    if found.kind == "polygon" and not _ends_apart(points):
+    if found.kind == "polygon" and not _ends_apart(points, drawn):
         return found
-    unit = _unit_work(points, times)
+    unit = _unit_work(points, times, drawn)
     if found.kind == "polygon" and (unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
         return found
-    kind, chance = choose(found.kind, _features(unit, noise), model)
+    phi = _features(unit, noise, polyline=found.kind == "polyline")
+    if phi is None:
+        return found  # a hurried check: the model is not asked (`choose`)
+    kind, chance = choose(found.kind, phi, model)
     if kind == found.kind:
         return found
     shape = geometry(kind, unit[1]) if unit is not None else None
     if unit is None or shape is None:
         return found
-    raw, _, _, diag = unit
+    raw, _, _, diag, _ = unit
     return Recognition(kind, round(chance, 4), scale_geometry(shape, raw.mean(axis=0), diag),
                        ((found.kind, round(1.0 - chance, 4)),))
 
 
-def _ends_apart(points: Sequence[Sequence[float]]) -> bool:
+def zigzag_teeth(found: Recognition) -> bool:
+    """Whether the rules' polyline has a zig-zag's teeth (`open_marks.sawtooth_vertices`, on the corners the rules
+    found, which see small teeth the model's 64 points smooth away): not asked of the model, whose features (fitted
+    on few zig-zags) take a curled tail's bow for a curve's."""
+    return (found.kind == "polyline" and isinstance(found.geometry, Polyline)
+            and open_marks.sawtooth_vertices(found.geometry.points))
+
+
+def _ends_apart(points: Sequence[Sequence[float]], drawn: Drawn | None = None) -> bool:
     """Whether a polygon's ends may be far enough apart to ask (`open_polygon`), judged before any other work: most
     polygons are closed. A stroke whose ends are under half `OPEN_GAP` of its size apart is closed: resampling and
     smoothing keep its ends and only shrink its size, so its closure could reach `OPEN_GAP` only were its size halved
-    by smoothing."""
-    try:
-        pts = np.asarray(points, dtype=float)[:, :2]
-    except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
-        pts = np.asarray([p[:2] for p in points], dtype=float)
-    size = sg.bbox_diagonal(pts) if len(pts) >= 2 and np.isfinite(pts).all() else 0.0
+    by smoothing. (``drawn``'s points without repeats have the same ends and extent as ``points``.)"""
+    if drawn is not None:
+        pts, size = drawn.raw, drawn.diag
+    else:
+        try:
+            pts = np.asarray(points, dtype=float)[:, :2]
+        except (ValueError, IndexError):  # rows of different lengths (x, y and sometimes t)
+            pts = np.asarray([p[:2] for p in points], dtype=float)
+        size = sg.bbox_diagonal(pts) if len(pts) >= 2 and np.isfinite(pts).all() else 0.0
     return size > 0.0 and float(np.hypot(*(pts[-1] - pts[0]))) >= 0.5 * OPEN_GAP * size
 
 

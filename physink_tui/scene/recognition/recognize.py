@@ -43,7 +43,7 @@ from physink_tui.scene.recognition.ranking import (
     keeps_the_outline,
     rank,
 )
-from physink_tui.scene.recognition.shape_fits import fit_ellipse
+from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
@@ -55,28 +55,36 @@ PEN_NOISE = 1.0
 """The pen's jitter in the stroke's units when the caller does not say: a pixel of a canvas in pixels."""
 
 
-def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, str | None]:
+def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.ndarray | None, float, str | None]:
+    """The stroke's points without repeats, which of the given points they are (None where a long stroke was
+    thinned first) and their diagonal (`stroke_geometry.bbox_diagonal`), or why it cannot be recognised."""
     try:
         pts = np.asarray(points, dtype=float)
     except (TypeError, ValueError):
-        return None, "points must be pairs of numbers"
+        return None, None, 0.0, "points must be pairs of numbers"
     if pts.ndim != 2 or pts.shape[0] == 0 or pts.shape[1] < 2:
-        return None, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
+        return None, None, 0.0, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
     pts = pts[:, :2]
     bad = ~np.isfinite(pts).all(axis=1)
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
-        return None, f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, {float(pts[i, 1])!r})"
+        return None, None, 0.0, (f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, "
+                                 f"{float(pts[i, 1])!r})")
     if float(np.abs(pts).max()) > MAX_COORDINATE:
-        return None, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
+        return None, None, 0.0, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
+    keep: np.ndarray | None = None
     if len(pts) > sg.MAX_WORKING_POINTS:
-        pts = sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS)
-    pts = sg.drop_duplicates(pts)
+        pts = sg.drop_duplicates(sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS))
+    else:  # as `stroke_geometry.drop_duplicates`, the kept points' positions remembered for the ranker
+        keep = np.ones(len(pts), dtype=bool)
+        keep[1:] = ((pts[1:] - pts[:-1]) != 0.0).any(axis=1)
+        pts = pts[keep]
     if len(pts) < 2:
-        return None, f"{TOO_SHORT}: a single point"
-    if sg.bbox_diagonal(pts) == 0.0:
-        return None, f"{TOO_SHORT}: no extent"
-    return pts, None
+        return None, None, 0.0, f"{TOO_SHORT}: a single point"
+    size = sg.bbox_diagonal(pts)
+    if size == 0.0:
+        return None, None, 0.0, f"{TOO_SHORT}: no extent"
+    return pts, keep, size, None
 
 
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
@@ -90,7 +98,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
     """
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
-        pts, reason = _clean(points)
+        pts, keep, size, reason = _clean(points)
     if pts is None:
         return Recognition(None, 0.0, None, (), reason)
     if len(pts) == 2:
@@ -105,7 +113,6 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     measured = sg.jitter(pts)
     noise = max(given, measured)  # the pen may be worse than said
     shaky = measured > SHAKY * given
-    size = sg.bbox_diagonal(pts)
     if size < MIN_SIZE * noise:
         return Recognition(None, 0.0, None, (), f"{TOO_SHORT}: {size:.3g} units across, within the pen's noise "
                                                 f"({noise:.3g} units)")
@@ -117,8 +124,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
     if not learned:
         return result
+    drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
-        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model())
+        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn)
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:
@@ -180,10 +188,11 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if not closed:
         return _open_reading(raw, work, n, noise, sigma, weights, diag)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    lumpy = _lumpy_round(loop, noise)
+    ellipse = fit_ellipse(loop)
+    lumpy = _lumpy_round(loop, noise, ellipse)
     if lumpy:
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
-    candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop)]
+    candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop, ellipse)]
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
@@ -253,10 +262,10 @@ def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: f
     return Recognition("line", FREEFORM_CONFIDENCE, Line(points[0], points[-1]), ())
 
 
-def _lumpy_round(loop: np.ndarray, noise: float) -> bool:
-    """A closed loop about as wide as it is long (its ellipse no flatter than `LUMPY_ASPECT`) that turns smoothly all
-    round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides are not lumps)."""
-    ellipse = fit_ellipse(loop)
+def _lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None) -> bool:
+    """A closed loop about as wide as it is long (its ellipse, `fit_ellipse` of it, no flatter than `LUMPY_ASPECT`)
+    that turns smoothly all round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides
+    are not lumps)."""
     if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
         return False
     return sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH

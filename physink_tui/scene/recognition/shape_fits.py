@@ -19,9 +19,9 @@ EllipseFit = tuple[np.ndarray, float, float, float, float]
 def fit_line(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
     """Total least squares line: ``(point, unit direction, max distance / length)``."""
     c = pts.mean(axis=0)
-    _, _, vt = np.linalg.svd(pts - c, full_matrices=False)
-    d = vt[0]
     rel = pts - c
+    _, _, vt = np.linalg.svd(rel, full_matrices=False)
+    d = vt[0]
     along = rel @ d
     length = float(along.max() - along.min()) or 1e-12
     dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])
@@ -119,10 +119,11 @@ def fit_cubic(pts: np.ndarray) -> tuple[np.ndarray, float]:
     u = np.concatenate([[0.0], np.cumsum(seg)])
     u = u / u[-1] if u[-1] else np.linspace(0, 1, n)
     b0, b1, b2, b3 = (1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3
-    rhs = pts - np.outer(b0, p0) - np.outer(b3, p3)
+    start, end = b0[:, None] * p0, b3[:, None] * p3  # np.outer(b0, p0), np.outer(b3, p3): made once, used twice
+    rhs = pts - start - end
     a = np.column_stack([b1, b2])
     sol, *_ = np.linalg.lstsq(a, rhs, rcond=None)
     ctrl = np.array([p0, sol[0], sol[1], p3])
-    fitted = np.outer(b0, p0) + np.outer(b1, sol[0]) + np.outer(b2, sol[1]) + np.outer(b3, p3)
+    fitted = start + b1[:, None] * sol[0] + b2[:, None] * sol[1] + end
     chord = float(np.hypot(*(p3 - p0))) or float(seg.sum()) or 1.0
     return ctrl, float(np.hypot(*(fitted - pts).T).max()) / chord

@@ -26,9 +26,13 @@ def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[f
     """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke (coarser
     when the pen's ``noise`` is large), ignoring runs under ``min_deg``: a brace has five such lobes, a check
     mark one or two."""
-    coarse = np.degrees(sg.coarse_turning(work, noise))
+    return turn_lobes(sg.coarse_turning(work, noise), min_deg)
+
+
+def turn_lobes(coarse: np.ndarray, min_deg: float = 35.0) -> list[float]:
+    """`lobes` of a stroke whose coarse turning (`stroke_geometry.coarse_turning`, radians) is already known."""
     runs: list[float] = []
-    for v in coarse.tolist():
+    for v in np.degrees(coarse).tolist():
         if runs and (v >= 0) == (runs[-1] >= 0):
             runs[-1] += v
         else:
@@ -145,30 +149,35 @@ def turn_concentration(th: np.ndarray) -> float:
     return float(np.sort(a)[-k:].sum()) / total
 
 
-def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8) -> list[float]:
+def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8, *, th: np.ndarray | None = None,
+                     ) -> list[float]:
     """How round each inner corner is: the length of path, centred on the corner, over which the stroke does
     ``share`` of the turning it does between the midpoints of its neighbouring sides, over the shorter of those
     two sides. A drawn corner turns within a tenth or two of its sides; a brace's or a question mark's bend
-    takes as long as a side."""
-    th = sg.turning(work)  # th[k] is the turn at point k + 1
-    cum_turn = np.concatenate([[0.0], np.cumsum(th)])  # cum_turn[k]: turning done before point k + 1
-    seg = np.hypot(*np.diff(work, axis=0).T)
-    cum_len = np.concatenate([[0.0], np.cumsum(seg)])
+    takes as long as a side. ``th``: `stroke_geometry.turning` of ``work`` where already known."""
+    if th is None:
+        th = sg.turning(work)  # th[k] is the turn at point k + 1
+    # as plain floats (the same numbers): each corner's walk below looks at a few of them one at a time
+    cum_turn = [0.0, *np.cumsum(th).tolist()]  # cum_turn[k]: turning done before point k + 1
+    d = work[1:] - work[:-1]
+    cum_len = [0.0, *np.cumsum(np.hypot(d[:, 0], d[:, 1])).tolist()]
     n = len(work)
     out = []
     for a, c, b in zip(corners, corners[1:], corners[2:], strict=False):
         lo, hi = (a + c) // 2, (c + b) // 2
-        total = abs(float(cum_turn[max(hi - 1, 0)] - cum_turn[max(lo - 1, 0)]))
+        total = abs(cum_turn[max(hi - 1, 0)] - cum_turn[max(lo - 1, 0)])
         shorter = min(cum_len[c] - cum_len[a], cum_len[b] - cum_len[c])
         if total == 0.0 or shorter <= 0.0:
             out.append(0.0)
             continue
-        reach = np.arange(0, max(hi - lo, 1))
-        left, right = np.maximum(c - 1 - reach, 0), np.minimum(c + reach, n - 2)
-        held = np.abs(cum_turn[right] - cum_turn[left]) >= share * total
-        r = int(reach[np.argmax(held)]) if held.any() else int(reach[-1])
+        need = share * total
+        r = max(hi - lo, 1) - 1  # the widest reach, unless the turning is held within a shorter one
+        for k in range(r + 1):
+            if abs(cum_turn[min(c + k, n - 2)] - cum_turn[max(c - 1 - k, 0)]) >= need:
+                r = k
+                break
         arc = cum_len[min(c + r, n - 1)] - cum_len[max(c - r, 0)]
-        out.append(float(arc / shorter))
+        out.append(arc / shorter)
     return out
 
 

@@ -8,6 +8,7 @@ must turn the path by a real angle, and near-collinear corners are merged).
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -26,20 +27,37 @@ def drop_duplicates(pts: np.ndarray) -> np.ndarray:
 
 
 def path_length(pts: np.ndarray) -> float:
-    return float(np.sum(np.hypot(*np.diff(pts, axis=0).T))) if len(pts) > 1 else 0.0
+    if len(pts) < 2:
+        return 0.0
+    d = pts[1:] - pts[:-1]  # as np.diff, without its per-call overhead (this is called thousands of times a stroke)
+    return float(np.hypot(d[:, 0], d[:, 1]).sum())
 
 
 def resample(pts: np.ndarray, n: int) -> np.ndarray:
     """``n`` points equally spaced along the path (first and last kept)."""
-    seg = np.hypot(*np.diff(pts, axis=0).T)
-    cum = np.concatenate([[0.0], np.cumsum(seg)])
+    d = pts[1:] - pts[:-1]
+    cum = np.empty(len(pts))
+    cum[0] = 0.0
+    np.cumsum(np.hypot(d[:, 0], d[:, 1]), out=cum[1:])
     total = cum[-1]
     if total == 0.0 or n < 2:
         return np.repeat(pts[:1], max(n, 1), axis=0)
-    targets = np.linspace(0.0, total, n)
-    x = np.interp(targets, cum, pts[:, 0])
-    y = np.interp(targets, cum, pts[:, 1])
-    return np.column_stack([x, y])
+    targets = spaced(float(total), n)
+    out = np.empty((n, 2))
+    out[:, 0] = np.interp(targets, cum, pts[:, 0])
+    out[:, 1] = np.interp(targets, cum, pts[:, 1])
+    return out
+
+
+def spaced(total: float, n: int) -> np.ndarray:
+    """``np.linspace(0.0, total, n)`` to the last bit (n >= 2), without its per-call overhead."""
+    step = total / (n - 1)
+    if step == 0.0:
+        return np.linspace(0.0, total, n)
+    out = np.arange(n, dtype=float)
+    out *= step
+    out[-1] = total
+    return out
 
 
 def smooth(pts: np.ndarray, passes: int = 2) -> np.ndarray:
@@ -56,9 +74,9 @@ def smooth(pts: np.ndarray, passes: int = 2) -> np.ndarray:
 
 def turning(pts: np.ndarray) -> np.ndarray:
     """Signed turning angle at each interior vertex (radians, wrapped to -pi..pi)."""
-    d = np.diff(pts, axis=0)
+    d = pts[1:] - pts[:-1]
     heading = np.arctan2(d[:, 1], d[:, 0])
-    dth = np.diff(heading)
+    dth: np.ndarray = heading[1:] - heading[:-1]
     return (dth + np.pi) % (2 * np.pi) - np.pi
 
 
@@ -84,13 +102,12 @@ def thickness(pts: np.ndarray) -> float:
 
 def chord_deviation(pts: np.ndarray) -> float:
     """Largest distance of a run of points from the chord between its ends, over the chord length."""
-    a, b = pts[0], pts[-1]
-    chord = float(np.hypot(*(b - a)))
+    rel = pts - pts[0]
+    d = rel[-1]  # the chord
+    chord = float(np.hypot(d[0], d[1]))
     if chord == 0.0:
         return math.inf
-    ab = (b - a) / chord
-    rel = pts - a
-    dev = np.abs(rel[:, 0] * ab[1] - rel[:, 1] * ab[0])
+    dev = np.abs(rel[:, 0] * (d[1] / chord) - rel[:, 1] * (d[0] / chord))
     return float(dev.max()) / chord
 
 
@@ -112,15 +129,16 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *
         return [0, n - 1]
     straws = np.full(n, np.inf)
     straws[w:n - w] = np.hypot(*(pts[2 * w:] - pts[:n - 2 * w]).T)
-    threshold = float(np.median(straws[w:n - w])) * 0.95
+    threshold = median(straws[w:n - w]) * 0.95
+    short = straws.tolist()  # the same numbers as Python floats: the walk below compares them one at a time
     candidates: list[tuple[int, float]] = []  # a corner's index and the least it must turn (degrees)
     i = w
     while i < n - w:
-        if straws[i] < threshold:
+        if short[i] < threshold:
             j = i
             best = i
-            while j < n - w and straws[j] < threshold:
-                if straws[j] < straws[best]:
+            while j < n - w and short[j] < threshold:
+                if short[j] < short[best]:
                     best = j
                 j += 1
             candidates.append((best, min_turn_deg))
@@ -134,8 +152,10 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *
     reach = max(w, 2)
     for c, least in sorted(candidates):
         lo, hi = max(c - reach, 1), min(c + reach, n - 2)
-        turn = abs(float(np.sum(th[lo - 1:hi])))
-        if math.degrees(turn) >= least and c - corners[-1] >= w:
+        if c - corners[-1] < w:
+            continue  # too close to the last corner kept, however far it turns
+        turn = abs(float(th[lo - 1:hi].sum()))
+        if math.degrees(turn) >= least:
             corners.append(c)
     if n - 1 - corners[-1] < w and len(corners) > 1:
         corners.pop()
@@ -162,6 +182,10 @@ def _dips(straws: np.ndarray, lo: int, hi: int, w: int) -> list[int]:
 
 def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) -> list[int]:
     """Drop corners whose neighbours are almost in line with them (path length vs chord)."""
+    if len(corners) <= 2:
+        return corners
+    d = pts[1:] - pts[:-1]
+    seg = np.hypot(d[:, 0], d[:, 1])  # a run's `path_length` is the sum of its stretch of these, summed alike
     changed = True
     while changed and len(corners) > 2:
         changed = False
@@ -169,7 +193,7 @@ def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) 
         for k in range(1, len(corners) - 1):
             a, b = corners[k - 1], corners[k + 1]
             chord = float(np.hypot(*(pts[b] - pts[a])))
-            run = path_length(pts[a:b + 1])
+            run = float(seg[a:b].sum())
             straightness = chord / run if run else 1.0
             if straightness > ratio and straightness > best:
                 best, best_k = straightness, k
@@ -275,19 +299,11 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
     n = len(pts)
     if n < 8:
         return pts
-    diag = bbox_diagonal(pts)
     span = max(3, int(max_fraction * n))
-    i_idx, j_idx = [], []
-    for gap in range(2, span + 1):
-        i = np.arange(0, n - 1 - gap)
-        i_idx.append(i)
-        j_idx.append(i + gap)
-    if not i_idx:
-        return pts
-    i = np.concatenate(i_idx)
-    j = np.concatenate(j_idx)
-    p, r = pts[i], pts[i + 1] - pts[i]
-    q, s = pts[j], pts[j + 1] - pts[j]
+    i, j = _pairs(n, span)
+    step = pts[1:] - pts[:-1]
+    p, r = pts[i], step[i]
+    q, s = pts[j], step[j]
     denom = r[:, 0] * s[:, 1] - r[:, 1] * s[:, 0]
     qp = q - p
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -296,6 +312,7 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
     hit = (denom != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)
     if not hit.any():
         return pts
+    diag = bbox_diagonal(pts)
     keep = np.ones(n, dtype=bool)
     out = pts.copy()
     for k in np.flatnonzero(hit)[np.argsort(i[hit], kind="stable")]:
@@ -308,6 +325,17 @@ def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: fl
         out[a + 1] = p[k] + t[k] * r[k]  # the crossing point replaces the loop
         keep[a + 2:b + 1] = False
     return out[keep]
+
+
+@functools.lru_cache(maxsize=64)
+def _pairs(n: int, span: int) -> tuple[np.ndarray, np.ndarray]:
+    """The segments (i, j) of an ``n``-point path that `remove_small_loops` tests for crossing: j - i from 2 to
+    ``span``, by gap then by i (the same for every stroke of that many points: made once, read only)."""
+    i = np.concatenate([np.arange(0, n - 1 - gap) for gap in range(2, span + 1)])
+    j = np.concatenate([np.arange(gap, n - 1) for gap in range(2, span + 1)])
+    i.flags.writeable = False
+    j.flags.writeable = False
+    return i, j
 
 
 def jitter(pts: np.ndarray) -> float:
@@ -324,13 +352,26 @@ def jitter(pts: np.ndarray) -> float:
         return 0.0
     d2 = pts[:-2] - 2 * pts[1:-1] + pts[2:]
     t = pts[2:] - pts[:-2]
-    norm = np.hypot(*t.T)
+    norm = np.hypot(t[:, 0], t[:, 1])
     ok = norm > 0
-    if ok.sum() < 3:
+    if np.count_nonzero(ok) < 3:
         return 0.0
-    normal = np.column_stack([-t[ok, 1], t[ok, 0]]) / norm[ok, None]
-    bend = (d2[ok] * normal).sum(axis=1)  # white noise: successive bends anticorrelated, var 6 s^2 each
-    return float(1.4826 * np.median(np.abs(np.diff(bend))) / math.sqrt(20))
+    t, d2, norm = t[ok], d2[ok], norm[ok]
+    # the bend across the path, d2 . (-t_y, t_x) / |t| (white noise: successive bends anticorrelated, var 6 s^2 each)
+    bend = d2[:, 0] * (-t[:, 1] / norm) + d2[:, 1] * (t[:, 0] / norm)
+    return float(1.4826 * median(np.abs(bend[1:] - bend[:-1])) / math.sqrt(20))
+
+
+def median(values: np.ndarray) -> float:
+    """``np.median`` of a 1-D array, to the last bit, without its per-call overhead (NaN when any value is)."""
+    n = len(values)
+    if n == 0 or np.isnan(values).any():
+        return float(np.median(values))
+    h = n // 2
+    if n % 2:
+        return float(np.partition(values, h)[h])
+    part = np.partition(values, (h - 1, h))
+    return float((part[h - 1] + part[h]) / 2)
 
 
 def coarse_turning(pts: np.ndarray, noise: float, most: int = 40) -> np.ndarray:

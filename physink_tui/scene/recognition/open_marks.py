@@ -1,0 +1,140 @@
+"""Open marks drawn loosely by a hurried hand: zig-zag teeth between a lead-in and a tail, lines begun backwards.
+
+The open-stroke rules (`open_shapes`) ask every side of a polyline to be straight and every corner sharp, and a line
+to end where its extent ends; these tests say when a reader still sees the mark: a zig-zag's teeth whatever its ends
+do (`sawtooth`), a line without the piece its pen ran back along (`retraced_ends`). No I/O.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_geometry as sg
+
+SAW_TEETH = 4
+"""A zig-zag has at least this many sharp corners in a row, joined by even sides: three teeth (two corners make an N,
+three a brace's tip drawn as a spike: the arm's end, the point, the next arm's start)."""
+SAW_TURN_DEG = 90.0
+"""Each of a zig-zag's corners turns the path by at least a right angle (`stroke_geometry.DIP_TURN_DEG`: the teeth's
+points; a brace's shoulders, where its tip leaves and rejoins the stroke, turn 60-85 degrees)."""
+SAW_ROUND = 0.5
+"""A zig-zag's points are sharp: each does its turning within this share of its shorter side
+(`stroke_features.corner_roundness`; a wobbly brace's bends take 0.5-0.9 of theirs)."""
+SAW_EVEN = 1.5
+"""A zig-zag is drawn with a rhythm: each side between its teeth is at most this many times as long as the side drawn
+alike before it (two back: a sawtooth's drop and the next drop, its slanted rise and the next), or as short; a brace's
+arm is two to four times its tip's sides. At 2 people's uneven sawtooth teeth pass too (5 more zig-zags), and so do
+the braces one person draws as sharp teeth (2 lost): issue 25, fifth pass, in docs/BENCHMARKS.md."""
+SAW_REACH = 3
+"""A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
+
+
+def signed_turns(th: np.ndarray, corners: list[int], reach: int = SAW_REACH) -> list[float]:
+    """Signed net turning (degrees) right at each inner corner (left positive), over ``reach`` points either side."""
+    n = len(th) + 2
+    out = []
+    for c in corners[1:-1]:
+        lo, hi = max(c - reach, 1), min(c + reach, n - 2)
+        out.append(math.degrees(float(th[lo - 1:hi].sum())))
+    return out
+
+
+def sawtooth(work: np.ndarray, th: np.ndarray, corners: list[int], straight_runs: list[bool],
+             roundness: list[float]) -> bool:
+    """Whether `SAW_TEETH` or more inner corners in a row each turn by `SAW_TURN_DEG` or more, no rounder than
+    `SAW_ROUND`, each the other way from the one before, joined by straight sides each within `SAW_EVEN` of the one
+    drawn alike two before: a zig-zag's teeth. The sides before the first tooth and after the last (a lead-in drawn as
+    the pen gathers speed, a tail that curls off as it leaves the paper) may be anything: a hurried hand draws its
+    zig-zag's teeth sharp and its ends loosely. A brace's tip (the arm's end, the point, the next arm's start) also
+    turns each way in turn, but is three corners, and the next side is a long arm, not a tooth like the tip's."""
+    return teeth_run(work, th, corners, straight_runs, roundness) >= SAW_TEETH
+
+
+def teeth_run(work: np.ndarray, th: np.ndarray, corners: list[int], straight_runs: list[bool],
+              roundness: list[float]) -> int:
+    """The longest run of a zig-zag's teeth points (`sawtooth`)."""
+    turns = signed_turns(th, corners)
+    sides = [sg.path_length(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
+    run = best = 0
+    for i, t in enumerate(turns):
+        tooth = abs(t) >= SAW_TURN_DEG and roundness[i] <= SAW_ROUND
+        # side i runs from inner corner i - 1 to inner corner i; side i - 1 is the tooth side before it
+        follows = (run > 0 and (t > 0) != (turns[i - 1] > 0) and straight_runs[i]
+                   and (run < 3 or _like(sides[i], sides[i - 2])))
+        run = run + 1 if tooth and follows else (1 if tooth else 0)
+        best = max(best, run)
+    return best
+
+
+def sawtooth_vertices(points: Sequence[tuple[float, float]]) -> bool:
+    """`sawtooth` on a polyline's vertices (the rules' reading): `SAW_TEETH` or more inner vertices in a row each
+    turning by `SAW_TURN_DEG` or more, each the other way from the one before, joined by sides each within `SAW_EVEN`
+    of the one two before (the rules already judged the sides straight and the corners sharp)."""
+    if len(points) < SAW_TEETH + 2:
+        return False
+    v = np.diff(np.asarray(points, dtype=float), axis=0)
+    sides = np.hypot(v[:, 0], v[:, 1])
+    if not (sides > 0).all():
+        return False
+    turns = np.degrees(np.arctan2(v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0], (v[:-1] * v[1:]).sum(axis=1)))
+    run = 0
+    for i, t in enumerate(turns.tolist()):
+        tooth = abs(t) >= SAW_TURN_DEG
+        follows = (run > 0 and (t > 0) != (turns[i - 1] > 0)
+                   and (run < 3 or _like(sides[i], sides[i - 2])))
+        run = run + 1 if tooth and follows else (1 if tooth else 0)
+        if run >= SAW_TEETH:
+            return True
+    return False
+
+
+def _like(a: float, b: float) -> bool:
+    """Whether two sides of a zig-zag drawn alike (a drop and the next drop, a rise and the next rise) are within
+    `SAW_EVEN` of each other's length."""
+    return max(a, b) <= SAW_EVEN * min(a, b)
+
+
+RETRACE_SHARE = 0.2
+"""A line may begin (or end) by running back along itself for up to this share of its path: the pen landing and
+sliding backwards before it sets off (mmg:10's fast stylus lines), not a mark of its own."""
+RETRACE_OFF = 0.03
+"""Such a lead-in stays within this share of the line's length (plus the pen's noise) of the line: it doubles back along
+it, where a tick's short arm stands off it."""
+
+
+RETRACE_NEAR = 0.15
+"""Only a stroke whose every point lies within this share of its start-to-end distance of that chord (plus the noise)
+is looked at: a line's points never stand further off (a cheap test, made first)."""
+
+
+def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
+    """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`), or None when
+    neither end does: between its points farthest back and farthest on along its start-to-end direction."""
+    chord = raw[-1] - raw[0]
+    norm = float(np.hypot(*chord))
+    if norm == 0.0:
+        return None
+    rel = raw - raw[0]
+    if float(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]).max()) > RETRACE_NEAR * norm * norm + noise * norm:
+        return None  # no line: some point stands far off the chord (checked first: most strokes are no line)
+    along = rel @ (chord / norm)
+    lo, hi = int(np.argmin(along)), int(np.argmax(along))
+    if (lo == 0 and hi == len(raw) - 1) or lo >= hi:
+        return None
+    length = sg.path_length(raw)
+    kept = raw[lo:hi + 1]
+    cut = sg.path_length(raw[:lo + 1]) + sg.path_length(raw[hi:])
+    if cut > RETRACE_SHARE * length or len(kept) < 2:
+        return None
+    a, b = kept[0], kept[-1]
+    span = float(np.hypot(*(b - a)))
+    if span == 0.0:
+        return None
+    unit = (b - a) / span
+    ends = np.concatenate([raw[:lo + 1], raw[hi:]])
+    off = np.abs((ends[:, 0] - a[0]) * unit[1] - (ends[:, 1] - a[1]) * unit[0])
+    return kept if float(off.max()) <= RETRACE_OFF * span + noise else None
