@@ -10,15 +10,13 @@ so. Only design sources are named (never `bench_generalisation.is_held_back_new`
 
 from __future__ import annotations
 
-import json
 import math
 import random
 from collections import Counter
-from functools import cache
-from pathlib import Path
 
 import pytest
 from penmodels.hurried import HurriedPen, touching
+from test_open_marks import cached_rows
 
 from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -114,7 +112,6 @@ def test_a_brace_with_straight_arms_is_never_a_polyline(pen: str, learned: bool)
     assert read["polyline"] == 0 and read["curve"] >= 39, read
 
 
-CACHE = Path.home() / ".cache" / "physink"
 PIXELFAC = "pixelfac/hcira-project-23@80d4cc7:src/dataset/user01/"
 JD = "jd4386/HCIRA-Project@ff559d7:Part 4/custom_xml_logs/"
 PEOPLE = {
@@ -139,20 +136,12 @@ PEOPLE = {
 f2aa8a5."""
 
 
-@cache
-def _rows(name: str) -> dict[str, dict]:
-    path = CACHE / name
-    if not path.is_file():
-        pytest.skip(f"{path} not found: the public sets are not committed (no licence lets the project hold them); "
-                    f"`python benchmarks/public_sets.py` and `benchmarks/student_sets.py` write them there")
-    rows = (json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip())
-    return {r["file"]: r for r in rows}
 
 
 @pytest.mark.parametrize(("name", "file"), list(PEOPLE), ids=[f.rsplit("/", 2)[-2] + "/" + f.rsplit("/", 1)[-1]
                                                              for _, f in PEOPLE])
 def test_a_persons_bracket_or_brace_is_read_as_what_it_is(name: str, file: str) -> None:
-    row = _rows(name).get(file)
+    row = cached_rows(name).get(file)
     assert row is not None, f"{file} is not in {name}"
     stroke = row["strokes"][0]
     times = [p[2] / 1000 for p in stroke] if all(len(p) > 2 and p[2] is not None for p in stroke) else None

@@ -12,15 +12,13 @@ never read)."""
 
 from __future__ import annotations
 
-import json
 import math
 import random
-from functools import cache
-from pathlib import Path
 
 import pytest
 from penmodels.hurried import HurriedPen, touching
 from penmodels.shapes import Outline
+from test_open_marks import cached_rows
 from test_outlines_kept import drawn
 from xerase_drawings import replayed_project
 
@@ -131,7 +129,6 @@ def test_a_triangle_lifted_short_of_its_start_is_a_polygon(ending: str) -> None:
     assert all(kind == "polygon" for kind in read.values()), {s: k for s, k in read.items() if k != "polygon"}
 
 
-CACHE = Path.home() / ".cache" / "physink"
 ROUND = ("circle", "ellipse")  # as `benchmarks/label_kinds.tsv` counts a drawn circle
 PEOPLE = [  # (cache file, the stroke's file in its set, what it is read as): each was misread before this pass
     ("student-sets/itt.jsonl", "ITT-25/assignment-06-gesture-recognition-Coldjack007@1fa71eb:datasets/rectangle3.xml",
@@ -169,14 +166,8 @@ PEOPLE = [  # (cache file, the stroke's file in its set, what it is read as): ea
 ]
 
 
-@cache
 def _strokes(name: str) -> dict[str, list[list[float | None]]]:
-    path = CACHE / name
-    if not path.exists():
-        pytest.skip(f"{path} not found: `benchmarks/public_sets.py` and `benchmarks/student_sets.py` write the "
-                    "caches (the sets carry no licence, so they are never committed)")
-    rows = (json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip())
-    return {r["file"]: r["strokes"][0] for r in rows if len(r["strokes"]) == 1}
+    return {f: r["strokes"][0] for f, r in cached_rows(name).items() if len(r["strokes"]) == 1}
 
 
 @pytest.mark.parametrize(("name", "file", "kind"), PEOPLE, ids=[p[1].rsplit(":", 1)[-1] for p in PEOPLE])

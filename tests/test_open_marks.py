@@ -89,7 +89,8 @@ right) and lines misread by both at main f2aa8a5 (issue 25, fifth pass)."""
 
 
 @cache
-def _rows(name: str) -> dict[str, dict]:
+def cached_rows(name: str) -> dict[str, dict]:
+    """The rows of a cached public set (`~/.cache/physink/<name>`) by their file; skips when it is absent."""
     path = CACHE / name
     if not path.is_file():
         pytest.skip(f"{path} not found: the public sets are not committed (no licence lets the project hold them); "
@@ -107,7 +108,7 @@ def _stroke(row: dict) -> tuple[list[list[float]], list[float] | None]:
 @pytest.mark.parametrize(("name", "file"), list(MARKS) + list(TICKS) + list(ZIGZAGS),
                          ids=["/".join(f.split(":", 1)[1].split("/")[-2:]) for _, f in [*MARKS, *TICKS, *ZIGZAGS]])
 def test_a_persons_open_mark_is_read_as_what_it_is(name: str, file: str) -> None:
-    row = _rows(name).get(file)
+    row = cached_rows(name).get(file)
     assert row is not None, f"{file} is not in {name}"
     kind = MARKS.get((name, file)) or TICKS.get((name, file)) or ZIGZAGS[(name, file)]
     assert kind in read_table().accepts(row["source"], row["label"])
@@ -131,7 +132,7 @@ def test_a_square_bracket_whose_short_arms_looked_like_hooks_keeps_them() -> Non
     and the spine left was read as a curve; arms at both ends of a straight run with no point are kept
     (`stroke_geometry.remove_hooks`). By the rules alone: the shipped ranker, fitted before the rule, still reads it
     as a curve (the lead's refit takes the rule's answer among its inputs)."""
-    row = _rows("public-sets/hcira.jsonl").get(
+    row = cached_rows("public-sets/hcira.jsonl").get(
         "sinarest1608/HCIRA-HK@d91ccc6:Project1/usersamples/Subject3/left_sq_bracket10.xml")
     assert row is not None
     points, times = _stroke(row)

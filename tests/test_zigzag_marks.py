@@ -71,12 +71,17 @@ def _read(stroke: list[tuple[float, float, float]], learned: bool) -> str | None
     return recognize_stroke([p[:2] for p in stroke], [p[2] for p in stroke], learned=learned).kind
 
 
+def _assert_share(shape, pen, learned: bool, kind: str, floor: float) -> None:
+    """At least ``floor`` of the seeds' ``shape``, drawn by ``pen``, read as ``kind``; the others named if not."""
+    read = {seed: _read(pen(shape(seed), seed), learned) for seed in SEEDS}
+    right = sum(k == kind for k in read.values())
+    assert right >= floor * len(SEEDS), {s: k for s, k in read.items() if k != kind}
+
+
 @pytest.mark.parametrize("pen", [hurried, careful], ids=["hurried", "careful"])
 @pytest.mark.parametrize("learned", [False, True], ids=["rules", "shipped"])
 def test_a_sawtooth_zigzag_with_a_curled_tail_is_a_polyline(pen, learned: bool) -> None:
-    read = {seed: _read(pen(sawtooth_with_a_tail(seed), seed), learned) for seed in SEEDS}
-    right = sum(kind == "polyline" for kind in read.values())
-    assert right >= FLOORS[(pen.__name__, learned)] * len(SEEDS), {s: k for s, k in read.items() if k != "polyline"}
+    _assert_share(sawtooth_with_a_tail, pen, learned, "polyline", FLOORS[(pen.__name__, learned)])
 
 
 def test_a_mouse_drawn_brace_is_no_zigzag() -> None:
@@ -107,9 +112,7 @@ pass): hurried 39 of 40 (rules and shipped), careful 40; at main f2aa8a5 1 and 0
 @pytest.mark.parametrize("pen", [hurried, careful], ids=["hurried", "careful"])
 @pytest.mark.parametrize("learned", [False, True], ids=["rules", "shipped"])
 def test_a_line_begun_by_sliding_back_along_itself_is_a_line(pen, learned: bool) -> None:
-    read = {seed: _read(pen(line_with_a_retraced_start(seed), seed), learned) for seed in SEEDS}
-    right = sum(kind == "line" for kind in read.values())
-    assert right >= LINE_FLOORS[(pen.__name__, learned)] * len(SEEDS), {s: k for s, k in read.items() if k != "line"}
+    _assert_share(line_with_a_retraced_start, pen, learned, "line", LINE_FLOORS[(pen.__name__, learned)])
 
 
 def test_a_ticks_short_arm_is_not_taken_for_a_retraced_start() -> None:
