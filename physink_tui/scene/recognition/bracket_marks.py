@@ -21,8 +21,10 @@ ROUND_ARM = 0.1
 """The arm beyond the rounded corner is at least this share of the path (an arm, not a hook)."""
 
 
-def rounded_bracket_corners(work: np.ndarray, corners: list[int], noise: float) -> list[int] | None:
-    """The four corners of a square bracket of which the finder found only the sharp corner, or None.
+def rounded_bracket_corners(work: np.ndarray, th: np.ndarray, corners: list[int], lobes: list[float],
+                            ) -> list[int] | None:
+    """The four corners of a square bracket of which the finder found only the sharp corner, or None. ``th``: the
+    stroke's `stroke_geometry.turning`; ``lobes``: its `stroke_features.lobes` (as in the functions below).
 
     A hand drawing a bracket quickly often rounds one corner off (over a fifth of the stroke) and keeps the other
     sharp: the finder then finds one corner, and the stroke reads as a curve. What a reader sees is a stroke turning
@@ -32,8 +34,8 @@ def rounded_bracket_corners(work: np.ndarray, corners: list[int], noise: float) 
     a turn, or has no straight spine; an arc has no sharp corner (or a spine bowed like an arc)."""
     if len(corners) != 3:
         return None
-    total = abs(math.degrees(float(sg.turning(work).sum())))
-    if abs(total - 180.0) > HALF_TURN_SLACK or len(sf.lobes(work, noise=noise)) != 1:
+    total = abs(math.degrees(float(th.sum())))
+    if abs(total - 180.0) > HALF_TURN_SLACK or len(lobes) != 1:
         return None
     c, last = corners[1], len(work) - 1
     length = sg.path_length(work)
@@ -61,12 +63,12 @@ LOOPED_POINT = 180.0
 half a turn (jd4386/User04's and User05's braces drawn with a small loop at the point turn 222-269 there)."""
 
 
-def looped_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
+def looped_point(th: np.ndarray, corners: list[int], lobes: list[float]) -> bool:
     """Whether the stroke's one corner is a small loop at the point of a stroke turning both ways: a curly brace whose
     point was drawn as a loop (two arms meeting at a corner that turns past half a turn), not a v or a check."""
-    if len(corners) != 3 or sf.corner_turns(sg.turning(work), corners)[0] <= LOOPED_POINT:
+    if len(corners) != 3 or sf.corner_turns(th, corners)[0] <= LOOPED_POINT:
         return False
-    return len(sf.lobes(work, noise=noise)) >= 2
+    return len(lobes) >= 2
 
 
 BRACE_DEPTH = 0.35
@@ -90,7 +92,7 @@ NO_RETURN = 0.1
 arrow's barbs run back along its shaft."""
 
 
-def brace_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
+def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> bool:
     """Whether the stroke is a curly brace whose curls or point the finder took for corners between straight sides:
     the point farthest from the line joining its ends is a corner about halfway along (`POINT_AT`, `POINT_NEAR`),
     sticking out less than `BRACE_DEPTH` of that line, with the whole stroke on that side of it (`ONE_SIDE`) and
@@ -118,4 +120,4 @@ def brace_point(work: np.ndarray, corners: list[int], noise: float) -> bool:
     if (min(abs(float(cum[c] - cum[k])) for c in corners[1:-1]) >= POINT_NEAR * length
             and sg.sharpest_turn(work[near], sg.POINT_SPAN * length) < sg.POINT_TURN_DEG):
         return False  # no corner there, nor a point the finder missed (the label tests' brace point)
-    return len(sf.lobes(work, noise=noise)) >= 2
+    return len(lobes) >= 2

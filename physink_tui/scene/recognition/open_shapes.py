@@ -112,6 +112,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     straight_runs = [straight(work[a:b + 1], noise) or sg.path_length(work[a:b + 1]) < 0.06 * length
                      for a, b in itertools.pairwise(corners)]
     coarse = sg.coarse_turning(work, noise)
+    lobes = sf.turn_lobes(coarse)  # `stroke_features.lobes`, once for every rule below
     concentration = sf.turn_concentration(coarse)
     smooth = concentration < SMOOTH  # a polyline turning the same way at sharp corners is not round
     if (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
@@ -122,20 +123,20 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
     roundness = sf.corner_roundness(work, corners)
-    sharp = (max(roundness, default=0.0) <= round_corner or _rounded_bracket(work, corners, straight_runs, noise)
-             or _short_bend(work, corners, roundness, noise))
+    sharp = (max(roundness, default=0.0) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
+             or _short_bend(work, corners, roundness, lobes))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
-            and not _brace_tip(work, corners) and not _tip_in_line(work, corners, noise)
-            and not bracket_marks.looped_point(work, corners, noise)
-            and not bracket_marks.brace_point(work, corners, noise)
-            and (all(straight_runs) or _bent_polyline(work, th, corners, noise)
-                 or _tick_into_bend(work, corners, straight_runs, roundness, noise))):
+            and not _brace_tip(work, corners) and not _tip_in_line(work, corners, lobes)
+            and not bracket_marks.looped_point(th, corners, lobes)
+            and not bracket_marks.brace_point(work, corners, lobes)
+            and (all(straight_runs) or _bent_polyline(work, th, corners, lobes)
+                 or _tick_into_bend(work, corners, straight_runs, roundness, lobes))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if (len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, th, corners, straight_runs, roundness)
             and not _brace_tip(work, corners)):
         # a zig-zag's sharp teeth between a loose lead-in and a curled tail (`open_marks.sawtooth`)
         return Recognition("polyline", 0.8, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
-    bracket = bracket_marks.rounded_bracket_corners(work, corners, noise)
+    bracket = bracket_marks.rounded_bracket_corners(work, th, corners, lobes)
     if bracket is not None:  # one corner rounded off: a square bracket still
         return Recognition("polyline", 0.75, Polyline(tuple(_pt(work[c]) for c in bracket)), (("curve", 0.4),))
     if len(corners) <= 3 or concentration < 0.5:
@@ -166,16 +167,17 @@ def _bowed_between_corners(work: np.ndarray, corners: list[int], length: float) 
                if sg.path_length(work[a:b + 1]) > MAIN_SIDE * length)
 
 
-def _rounded_bracket(work: np.ndarray, corners: list[int], straight_runs: list[bool], noise: float) -> bool:
+def _rounded_bracket(corners: list[int], straight_runs: list[bool], lobes: list[float]) -> bool:
     """Three straight sides turning the same way at both corners (a square bracket, a U): its corners may be rounded
-    as far as its short arms are long (a brace's or a question mark's bends turn both ways)."""
-    return len(corners) == 4 and all(straight_runs) and len(sf.lobes(work, noise=noise)) == 1
+    as far as its short arms are long (a brace's or a question mark's bends turn both ways). ``lobes``: the stroke's
+    `stroke_features.lobes`, as in the functions below."""
+    return len(corners) == 4 and all(straight_runs) and len(lobes) == 1
 
 
-def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], noise: float) -> bool:
+def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], lobes: list[float]) -> bool:
     """Whether the stroke turns one way at its one corner (a tick, a check, a v) within `SHORT_BEND` of its path: the
     bend may be as long as a short arm, as a question mark's curl is, but is short against the whole stroke."""
-    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) != 1:
+    if len(corners) != 3 or len(lobes) != 1:
         return False
     length = sg.path_length(work)
     shorter = min(sg.path_length(work[: corners[1] + 1]), sg.path_length(work[corners[1]:]))
@@ -183,12 +185,12 @@ def _short_bend(work: np.ndarray, corners: list[int], roundness: list[float], no
 
 
 def _tick_into_bend(work: np.ndarray, corners: list[int], straight_runs: list[bool], roundness: list[float],
-                    noise: float) -> bool:
+                    lobes: list[float]) -> bool:
     """Whether a one-corner stroke turning one way is a tick whose short arm bows into its corner: the long arm is
     straight with no point in its middle (`stroke_geometry.POINT_TURN_DEG`: a brace whose tip was not found as a
     corner has a spine `straight` calls straight), the short one bows less than a quarter circle (`BOWED_SIDE`) and
     the bend is short (`_short_bend`)."""
-    if len(corners) != 3 or not _short_bend(work, corners, roundness, noise):
+    if len(corners) != 3 or not _short_bend(work, corners, roundness, lobes):
         return False
     first, second = work[:corners[1] + 1], work[corners[1]:]
     if sg.path_length(first) < sg.path_length(second):
@@ -200,11 +202,11 @@ def _tick_into_bend(work: np.ndarray, corners: list[int], straight_runs: list[bo
             and sg.sharpest_turn(middle, sg.POINT_SPAN * sg.path_length(work)) < sg.POINT_TURN_DEG)
 
 
-def _tip_in_line(work: np.ndarray, corners: list[int], noise: float) -> bool:
+def _tip_in_line(work: np.ndarray, corners: list[int], lobes: list[float]) -> bool:
     """Whether the stroke's one corner joins arms running on nearly in line (their chords within `ARMS_IN_LINE`
     degrees) in a stroke that turns both ways: a brace's tip between curled ends, not a v's, check's or tick's point
     (their arms meet at 55 degrees or more; s04's bowed checks are the closest)."""
-    if len(corners) != 3 or len(sf.lobes(work, noise=noise)) < 2:
+    if len(corners) != 3 or len(lobes) < 2:
         return False
     u, v = work[corners[1]] - work[0], work[-1] - work[corners[1]]
     norms = float(np.hypot(*u) * np.hypot(*v))
@@ -227,13 +229,12 @@ def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
     return False
 
 
-def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int], noise: float) -> bool:
+def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int], lobes: list[float]) -> bool:
     """A polyline drawn with bowed or curled sides (a check mark's arms): it turns at a really sharp
     corner, in at most three lobes none of which curls right round (a pigtail's loop), or mostly at
     sharp corners with nearly straight sides (an arrow whose head doubles back). A question mark's
     bend, where a corner finder may cut its curl, turns less than 90 degrees."""
     turns = sf.corner_turns(th, corners)
-    lobes = sf.lobes(work, noise=noise)
     few_lobes = len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0
     if few_lobes and max(turns) >= VERY_SHARP_CORNER:
         return True

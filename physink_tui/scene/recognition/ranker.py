@@ -219,9 +219,9 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
         abs(coarse_sum) / max(coarse_abs, 1e-12), max(sf.bends(th, corners)) / 180.0,
         math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
         float(bool(runs) and all(straights)),
-        float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, noise)),
+        float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, lobes)),
         float(open_shapes._brace_tip(work, corners)), float(open_shapes._bowed_between_corners(work, corners, length)),
-        float(open_shapes._rounded_bracket(work, corners, straights, noise)), 0.0, 0.0, checks[4]]
+        float(open_shapes._rounded_bracket(corners, straights, lobes)), 0.0, 0.0, checks[4]]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
         at = FEATURES.index("has_times")
