@@ -122,7 +122,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
-    roundness = sf.corner_roundness(work, corners)
+    roundness = sf.corner_roundness(work, corners, th=th)
     sharp = (max(roundness, default=0.0) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
              or _short_bend(work, corners, roundness, lobes))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)

@@ -180,7 +180,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         return special
     work = sg.resample(sg.remove_small_loops(work), n)  # loops at corners are flourishes, not coils
     sigma = max(noise, weights.relative_noise * diag)
-    closed, loop = _closed_loop(raw, work, diag, sigma)
+    closed, loop, ellipse = _closed_loop(raw, work, diag, sigma)
     if not closed:
         work = sg.resample(sg.remove_hooks(work), n)
         if _polygon_left_open(work, diag):
@@ -188,7 +188,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if not closed:
         return _open_reading(raw, work, n, noise, sigma, weights, diag)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    ellipse = fit_ellipse(loop)
+    if ellipse is None:  # not already fitted to this loop by `_closed_loop`
+        ellipse = fit_ellipse(loop)
     lumpy = _lumpy_round(loop, noise, ellipse)
     if lumpy:
         polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
@@ -322,11 +323,13 @@ def _sides_turning(corners: np.ndarray) -> float:
     return float(((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi).sum())
 
 
-def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -> tuple[bool, np.ndarray]:
-    """Whether the stroke closes (judged on the raw ends: a gap, or drawn past its start), and the stroke once
-    round: an overshoot past the start, or a start before the end, cut at the closest approach."""
+def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
+                 ) -> tuple[bool, np.ndarray, EllipseFit | None]:
+    """Whether the stroke closes (judged on the raw ends: a gap, or drawn past its start), the stroke once round (an
+    overshoot past the start, or a start before the end, cut at the closest approach), and that loop's `fit_ellipse`
+    where it was fitted here (None when it was not: `_classify` fits it then)."""
     if sg.path_length(work) < 1.75 * diag:  # the smoothed path: jitter lengthens the raw one
-        return False, work
+        return False, work, None
     th = sg.turning(work)
     coarse = sg.coarse_turning(work, sigma)
     limit = max(CLOSED_GAP * diag, 4 * sigma)
@@ -335,22 +338,23 @@ def _closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float) -
         ellipse = fit_ellipse(loop)
         back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit  # it came back to its start (a pigtail does not)
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
-            return True, loop
+            return True, loop, ellipse
     if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
-        return True, sf.one_loop(work, th)  # a shape gone round twice over the same sides: once is enough
+        return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
     n = len(work)
     gap = float(np.hypot(*(raw[-1] - raw[0])))
     tail, head = work[n // 2:], work[: max(2, n // 2)]
     d_tail = np.hypot(*(tail - work[0]).T)
     d_head = np.hypot(*(head - work[-1]).T)
     if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit:
-        return False, work
+        return False, work, None
     loop = cut_ends(work, gap, d_tail, d_head)
     if len(loop) < 8:
-        return True, work
+        return True, work, None
     if sg.bbox_diagonal(loop) < SMALL_LOOP * diag:
-        return False, work  # a loop on a long shaft or between long tails: an arrow's closed head, an x drawn round
-    return True, loop
+        # a loop on a long shaft or between long tails: an arrow's closed head, an x drawn round
+        return False, work, None
+    return True, loop, None
 
 
 CLOSED_GAP = 0.2
