@@ -97,9 +97,12 @@ def round_error(ellipse: EllipseFit, noise: float) -> float:
     return ROUND_ERROR + noise / max(math.sqrt(rx * ry), 1e-12)
 
 
-def straight(run: np.ndarray, noise: float) -> bool:
+def straight(run: np.ndarray, noise: float, bow: float | None = None) -> bool:
+    """Whether ``run`` is a straight side (`STRAIGHT`); ``bow``: its `stroke_geometry.chord_deviation` where known."""
     chord = float(np.hypot(*(run[-1] - run[0])))
-    return chord > 0 and sg.chord_deviation(run) * chord < max(STRAIGHT * chord, 1.5 * noise)
+    if not chord > 0:
+        return False
+    return (sg.chord_deviation(run) if bow is None else bow) * chord < max(STRAIGHT * chord, 1.5 * noise)
 
 
 def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf) -> Recognition:
@@ -109,8 +112,10 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     th = sg.turning(work)
     total_turn = float(th.sum())
     corners = _kept_arm(work, sg.find_corners(work, every_dip=True), length)
-    straight_runs = [straight(work[a:b + 1], noise) or sg.path_length(work[a:b + 1]) < 0.06 * length
-                     for a, b in itertools.pairwise(corners)]
+    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+    bows = [sg.chord_deviation(run) for run in runs]  # each side's, for the tests below
+    straight_runs = [straight(run, noise, bow) or sg.path_length(run) < 0.06 * length
+                     for run, bow in zip(runs, bows, strict=True)]
     coarse = sg.coarse_turning(work, noise)
     lobes = sf.turn_lobes(coarse)  # `stroke_features.lobes`, once for every rule below
     concentration = sf.turn_concentration(coarse)
@@ -125,11 +130,11 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     roundness = sf.corner_roundness(work, corners, th=th)
     sharp = (max(roundness, default=0.0) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
              or _short_bend(work, corners, roundness, lobes))
-    if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length)
+    if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length, bows)
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, lobes)
             and not bracket_marks.looped_point(th, corners, lobes)
             and not bracket_marks.brace_point(work, corners, lobes)
-            and (all(straight_runs) or _bent_polyline(work, th, corners, lobes)
+            and (all(straight_runs) or _bent_polyline(th, corners, lobes, bows)
                  or _tick_into_bend(work, corners, straight_runs, roundness, lobes))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if (len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, th, corners, straight_runs, roundness)
@@ -159,11 +164,12 @@ def _kept_arm(work: np.ndarray, found: list[int], length: float) -> list[int]:
     return corners
 
 
-def _bowed_between_corners(work: np.ndarray, corners: list[int], length: float) -> bool:
-    """Whether a stroke with two or more inner corners has a main side that bows like an arc (`BOWED_SIDE`)."""
+def _bowed_between_corners(work: np.ndarray, corners: list[int], length: float, bows: list[float]) -> bool:
+    """Whether a stroke with two or more inner corners has a main side that bows like an arc (`BOWED_SIDE`).
+    ``bows``: each side's `stroke_geometry.chord_deviation`, as in `_bent_polyline`."""
     if len(corners) < 4:
         return False
-    return any(sg.chord_deviation(work[a:b + 1]) > BOWED_SIDE for a, b in itertools.pairwise(corners)
+    return any(bow > BOWED_SIDE for (a, b), bow in zip(itertools.pairwise(corners), bows, strict=True)
                if sg.path_length(work[a:b + 1]) > MAIN_SIDE * length)
 
 
@@ -229,11 +235,12 @@ def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
     return False
 
 
-def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int], lobes: list[float]) -> bool:
+def _bent_polyline(th: np.ndarray, corners: list[int], lobes: list[float], bows: list[float]) -> bool:
     """A polyline drawn with bowed or curled sides (a check mark's arms): it turns at a really sharp
     corner, in at most three lobes none of which curls right round (a pigtail's loop), or mostly at
     sharp corners with nearly straight sides (an arrow whose head doubles back). A question mark's
-    bend, where a corner finder may cut its curl, turns less than 90 degrees."""
+    bend, where a corner finder may cut its curl, turns less than 90 degrees. ``lobes``: the stroke's
+    `stroke_features.lobes`; ``bows``: each side's (corner to corner) `stroke_geometry.chord_deviation`."""
     turns = sf.corner_turns(th, corners)
     few_lobes = len(lobes) <= 3 and max((abs(v) for v in lobes), default=0.0) < 250.0
     if few_lobes and max(turns) >= VERY_SHARP_CORNER:
@@ -241,7 +248,7 @@ def _bent_polyline(work: np.ndarray, th: np.ndarray, corners: list[int], lobes: 
     if max(sf.bends(th, corners)) >= 120.0 or min(turns) < SHARP_CORNER or max(turns) < 90.0:
         return False
     share = sf.corner_share(th, corners)
-    worst = max(sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners))
+    worst = max(bows)
     if share >= 0.7 and worst < 1.4 * STRAIGHT:
         return True
     return few_lobes and share >= CORNER_SHARE

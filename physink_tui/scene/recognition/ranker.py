@@ -201,7 +201,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
             return None
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     deviation = [sg.chord_deviation(r) for r in runs]
-    straights = [open_shapes.straight(r, noise) for r in runs]
+    straights = [open_shapes.straight(r, noise, d) for r, d in zip(runs, deviation, strict=True)]
     bows = [min(d, 1.0) for d in deviation] or [0.0]
     roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners, th=th)] or [0.0]
     ellipse = fit_ellipse(work)
@@ -219,8 +219,9 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
         abs(coarse_sum) / max(coarse_abs, 1e-12), max(sf.bends(th, corners)) / 180.0,
         math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
         float(bool(runs) and all(straights)),
-        float(len(corners) > 2 and open_shapes._bent_polyline(work, th, corners, lobes)),
-        float(open_shapes._brace_tip(work, corners)), float(open_shapes._bowed_between_corners(work, corners, length)),
+        float(len(corners) > 2 and open_shapes._bent_polyline(th, corners, lobes, deviation)),
+        float(open_shapes._brace_tip(work, corners)),
+        float(open_shapes._bowed_between_corners(work, corners, length, deviation)),
         float(open_shapes._rounded_bracket(corners, straights, lobes)), 0.0, 0.0, checks[4]]
     slow = corner_slowdown(raw, times, corners, len(work))
     if slow is not None:
