@@ -4,16 +4,15 @@ another label than to any stroke of its own.
 
 Usage: .venv/bin/python benchmarks/label_contradictions.py SET [SET ...] [--files FILE ...]
 
-The $1 distance (Wobbrock, Wilson and Li 2007) is the mean distance between two strokes' points after each is
-resampled to `POINTS` points, turned so that its first point lies at angle 0 from its centroid, scaled to a square
-and centred, minimised over a further turn of up to 45 degrees (golden-section search to 2 degrees). Here it is
-also minimised over drawing the reference backwards (the recogniser does not care which end a stroke starts from).
-Only strokes of *other* sources are compared (a person's own strokes would vouch for the person's labels). The
-held-back sources (both groups: `bench_generalisation.held_back`, `held_back_new`) are neither scored nor used as
-references. Without
-``--files`` every stroke the rules-and-ranker recogniser (`recognize_stroke`) reads wrong is listed; a stroke is
-*contradicted* when its nearest other-source stroke carries another label, and that label's class accepts the kind
-the recogniser gave (the geometry agrees with a reading the label table calls wrong).
+The $1 distance (Wobbrock, Wilson and Li 2007) is the mean distance between two strokes' points after each is resampled
+to `POINTS` points, turned so that its first point lies at angle 0 from its centroid, scaled to a square and centred,
+minimised over a further turn of up to 45 degrees (golden-section search to 2 degrees). Here it is also minimised over
+drawing the reference backwards (the recogniser does not care which end a stroke starts from). Only strokes of *other*
+sources are compared (a person's own strokes would vouch for the person's labels). The held-back sources (both groups:
+`bench_generalisation.held_back`, `second_group`, the second even since it was opened) are neither scored nor used as
+references. Without ``--files`` every stroke the rules-and-ranker recogniser (`recognize_stroke`) reads wrong is listed;
+a stroke is *contradicted* when its nearest other-source stroke carries another label, and that label's class accepts
+the kind the recogniser gave (the geometry agrees with a reading the label table calls wrong).
 
 `CONTRADICTIONS` are the contradictions proved from geometry alone (two attempts joined after a pause, a question mark
 drawn as a zigzag, an open mark that loops, an x that does not cross itself, a curly brace without a point), each
@@ -31,7 +30,7 @@ from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
-from bench_generalisation import held_back, held_back_new, scored_rows
+from bench_generalisation import held_back, scored_rows, second_group
 from bench_recognition import table
 from stroke_sets import Row, read_set, source_of
 
@@ -289,7 +288,7 @@ def main() -> None:
     for path in args.sets:
         rows += read_set(path)
     rows, _ = scored_rows(rows)
-    group = held_back(rows) | held_back_new(rows)
+    group = held_back(rows) | second_group(rows)
     rows = [r for r in rows if source_of(r, "person") not in group]  # never read, never a reference
     if args.invariants:
         print(invariant_table(rows) + "\n")

@@ -10,7 +10,8 @@ answer]`` over standardised features (`ranker.features`). The weights are fitted
 replaces the rules' only when its chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources
 the model is fitted on. Design folds: each source not held back is scored by a model (and margin) fitted on the other
 design sources only. The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or
-``--write`` is given; the second (sources found later, `bench_generalisation.held_back_new`) only with ``--heldback``;
+``--write`` is given; the second (sources found later, `bench_generalisation.held_back_new`) was read only with
+``--heldback`` until it was opened as design material (`bench_generalisation.SECOND_GROUP_OPEN`): now it is read always;
 the third (the sets of the third search, `bench_generalisation.THIRD_SETS`) never: it is neither fitted on nor scored
 here; each group is then scored per source and per class, apart, by a model fitted on the design sources. ``--write``
 fits on every source given but the second held-back group (the margin chosen by leave-one-source-out over them) and

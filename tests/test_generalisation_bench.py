@@ -15,6 +15,7 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_generalisation import (
     FIRST_STUDENTS,
+    SECOND_GROUP_OPEN,
     THIRD_SETS,
     group_of,
     held_back,
@@ -22,6 +23,7 @@ from bench_generalisation import (
     is_held_back_new,
     leave_one_source_out,
     scored_rows,
+    second_group,
 )
 from bench_recognition import ACCEPTS, LABEL_CLASS
 from label_kinds import read_table
@@ -134,14 +136,31 @@ def test_sources_found_later_are_held_back_by_their_name_alone_apart_from_the_fi
     first += [{"source": "dollar1", "subject": s, "label": "circle"} for s in ("s02", "s03", "s04")]
     later = [{"source": "itt", "subject": f"student{k}", "label": "circle"} for k in range(40)]
     later += [{"source": "someset", "subject": f"p{k}", "label": "circle"} for k in range(40)]
-    assert held_back_new(first) == set()
-    group = held_back_new(first + later)
-    assert 20 <= len(group) <= 60 and group == held_back_new(list(reversed(later)))
+    assert second_group(first) == set()
+    group = second_group(first + later)
+    assert 20 <= len(group) <= 60 and group == second_group(list(reversed(later)))
     assert all(s.startswith(("itt:student", "someset:p")) for s in group)
     assert held_back(first + later) == held_back(first)  # the first group is drawn among the first 16 only
     assert {group_of(s, held_back(first)) for s in ("itt:Ferdi-FM", "itt:DerD4n", "dollar1:s03")} == {
         "first held back", "first design"}
     assert {group_of(s, set()) for s in group} == {"new held back"}
+
+
+def test_the_opened_second_group_is_read_by_every_run_and_fitted_on_but_still_named() -> None:
+    """Since the second group was opened as design material (`SECOND_GROUP_OPEN`), no run leaves it out: the
+    default run scores it, the ranker's folds and the written model read it; its sources are still named
+    (`second_group`), so their pooled figure is printed apart; the third group stays out."""
+    from train_ranker import rows_read
+
+    assert SECOND_GROUP_OPEN
+    rows = [{"source": "hcira", "subject": f"team/user{k}", "label": "circle", "file": f"c{k}",
+             "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(_circle())]]} for k in range(40)]
+    group = second_group(rows)
+    assert 5 <= len(group) <= 35
+    assert held_back_new(rows) == set() and not any(is_held_back_new(s) for s in group)
+    for heldback, write in ((False, False), (False, True)):
+        read, _, new = rows_read(rows, heldback, write)
+        assert len(read) == len(rows) and new == set()
 
 
 def test_strokes_whose_label_contradicts_their_geometry_are_counted_beside_the_raw_figure(capsys) -> None:

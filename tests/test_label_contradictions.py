@@ -25,7 +25,7 @@ import pytest
 from shared_data import shared_path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_generalisation import held_back, held_back_new, scored_rows
+from bench_generalisation import held_back, scored_rows, second_group
 from label_contradictions import (
     BRACES,
     CONTRADICTIONS,
@@ -58,7 +58,7 @@ def _students() -> list[dict]:
     if not STUDENTS.exists():
         pytest.skip(f"{STUDENTS} not found: `benchmarks/student_sets.py` writes it (the sets carry no licence)")
     rows, _ = scored_rows(read_set(STUDENTS))
-    group = held_back(rows) | held_back_new(rows)
+    group = held_back(rows) | second_group(rows)
     return _people() + [r for r in rows if source_of(r, "person") not in group]
 
 
@@ -138,7 +138,7 @@ def _design() -> tuple[dict, ...]:
     for path in paths:
         rows += read_set(path)
     rows, _ = scored_rows(rows)
-    group = held_back(rows) | held_back_new(rows)
+    group = held_back(rows) | second_group(rows)
     return tuple(_people() + [r for r in rows if source_of(r, "person") not in group])
 
 
