@@ -1,7 +1,7 @@
 """Gathers every public stroke set the benchmarks score into JSON Lines under ``~/.cache/physink/``, each read from a
 public repository at the commit measured: one command regenerates them all.
 
-Usage: .venv/bin/python benchmarks/public_sets.py [--mirrors DIR] [--out DIR]
+Usage: .venv/bin/python benchmarks/public_sets.py [--mirrors DIR] [--out DIR] [--only SET ...]
 
 Writes ``DIR/student-sets/itt.jsonl`` (the first 16 students, `student_sets.REPOS`) and, from `ENTRIES` (issue 25's
 second search, `benchmarks/SOURCES.md`), ``DIR/public-sets/<set>.jsonl`` (``itt-more.jsonl`` for the ITT
@@ -366,6 +366,8 @@ def main() -> None:
     ap.add_argument("--mirrors", type=Path, default=Path("/work/.mirror"),
                     help="folder of fetched repositories (<owner>+<name>/repo); cloned from GitHub when absent")
     ap.add_argument("--out", type=Path, default=CACHE)
+    ap.add_argument("--only", nargs="+", metavar="SET", help="write only these sets' files (every set is still read, "
+                    "so a stroke copied from an earlier set is still caught)")
     args = ap.parse_args()
     skipped: list[str] = []
     try:
@@ -376,9 +378,16 @@ def main() -> None:
     outputs = {args.out / "student-sets" / "itt.jsonl": first}
     outputs.update({args.out / "public-sets" / f"{'itt-more' if name == 'itt' else name}.jsonl": rows
                     for name, rows in sets.items()})
+    if args.only:
+        unknown = set(args.only) - set(sets) - {"itt-more"}
+        if unknown:
+            raise SystemExit(f"public_sets: --only {sorted(unknown)}: no such set (sets: {sorted(sets)})")
+        outputs = {p: rows for p, rows in outputs.items() if p.parent.name == "public-sets" and p.stem in args.only}
     for path, rows in outputs.items():
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text("".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows), encoding="utf-8")
+        partial = path.with_suffix(".partial")  # written whole, then renamed: a run reading it never sees half
+        partial.write_text("".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows), encoding="utf-8")
+        partial.replace(path)
         people = {r["subject"] for r in rows}
         print(f"{len(rows)} gestures of {len(people)} people -> {path}")
     for where in sorted(set(skipped)):
