@@ -15,8 +15,8 @@ Sources found after the first 19 whose name draws them into the second held-back
 unless ``--heldback`` was given, until the group was opened as design material (`SECOND_GROUP_OPEN`, 2026-12-04). The
 sets of the third search (`THIRD_SETS`: the third held-back group) are left out of every run but ``--third``, which
 scores them alone (`scored_rows`); the sets of the fourth search (`FOURTH_SETS`) likewise, but for ``--fourth``. Prints
-Markdown, and the issue 25 targets met or not (every source >= 98.6 %, every label with >= 50 strokes in a source >= 97
-% there). With ``--contradictions`` it also prints, beside the raw figure (which stays the headline: no stroke is
+Markdown, and the issue 25 targets met or not (every source >= 98.6 %, every label with >= 50 strokes in a source
+>= 97 % there). With ``--contradictions`` it also prints, beside the raw figure (which stays the headline: no stroke is
 dropped from it), how many strokes of each source the committed contradiction tests
 (`label_contradictions.CONTRADICTIONS`) convict of a label their geometry contradicts, and the targets re-stated on the
 strokes whose label agrees with their geometry.
