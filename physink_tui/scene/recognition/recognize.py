@@ -48,7 +48,15 @@ from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
 SHAKY = 1.5
-"""A stroke whose measured jitter is this many times the pen's stated noise is smoothed where it was sampled too."""
+"""A stroke whose measured jitter is this many times the pen's stated noise is smoothed where it was sampled too,
+unless its points are so far apart that the jitter may be the shape's own bends (`SPARSE_BENDS`)."""
+SPARSE_BENDS = 2.0
+"""A measured jitter (`stroke_geometry.jitter`) under this many times `stroke_geometry.shape_bend` (a round shape's
+bend between the stroke's points) may be the shape's, not the pen's: on points far apart (a device sampling evenly in
+time: 8-25 events over a fast stroke, the pen slowing at corners) successive bends differ by as much again as they
+are, and more where a corner falls. Such a jitter is not taken for a shaky hand (a filter one sample wide would cut the
+corners to chamfers) and raises the noise floor no further than `SHAKY` times the stated noise (a box's 8-25 events
+measure 10-40 px on a 280 px box, whose sides then no longer pay for their corners: read as an ellipse)."""
 MIN_SIZE = 3.0
 """A stroke less than this many noise widths across is a dot, not a shape."""
 PEN_NOISE = 1.0
@@ -111,8 +119,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
     given = noise if math.isfinite(noise) and noise > 0 else 0.0
     measured = sg.jitter(pts)
-    noise = max(given, measured)  # the pen may be worse than said
-    shaky = measured > SHAKY * given
+    # the pen may be worse than said, but a jitter that sparse points' own bends could make (`SPARSE_BENDS`) is
+    # credited only up to an ordinary pen's (`SHAKY`) and does not get the stroke smoothed where it was sampled
+    seen = measured <= given or measured > SPARSE_BENDS * sg.shape_bend(pts)
+    noise = max(given, measured if seen else min(measured, SHAKY * given))
+    shaky = measured > SHAKY * given and seen
     if size < MIN_SIZE * noise:
         return Recognition(None, 0.0, None, (), f"{TOO_SHORT}: {size:.3g} units across, within the pen's noise "
                                                 f"({noise:.3g} units)")

@@ -362,6 +362,24 @@ def jitter(pts: np.ndarray) -> float:
     return float(1.4826 * median(np.abs(bend[1:] - bend[:-1])) / math.sqrt(20))
 
 
+def shape_bend(pts: np.ndarray) -> float:
+    """How much a round shape as big as the stroke bends its path between neighbouring points, in the points' units:
+    a circle d across (the bounding box's diagonal) turns its path by 2/d a unit length, so over a median step s it
+    bends by 2 s^2/d; a shape with corners bends more where they fall. Dense tablet strokes give a few hundredths of
+    a unit; a trackpad's 8-25 events round a box, tens of units.
+
+    >>> square = np.array([[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]], dtype=float)
+    >>> round(shape_bend(square), 2)
+    14.14
+    """
+    if len(pts) < 2:
+        return 0.0
+    d = pts[1:] - pts[:-1]
+    step = median(np.hypot(d[:, 0], d[:, 1]))
+    size = bbox_diagonal(pts)
+    return 2 * step * step / size if size > 0 else 0.0
+
+
 def median(values: np.ndarray) -> float:
     """``np.median`` of a 1-D array, to the last bit, without its per-call overhead (NaN when any value is)."""
     n = len(values)

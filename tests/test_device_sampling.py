@@ -1,0 +1,94 @@
+"""Strokes as devices sample them (trackpad, mouse, finger, tkinter canvas): people's $1 strokes transformed, and a
+box sampled by a few events, still read as what they are.
+
+The transforms are `benchmarks/bench_device_stress.py`'s own (whole pixels at a small size, an event every 15-30
+ms, 8-25 events over a fast stroke, bursts, a mouse's stair steps, a finger's blunted corners, ends carried on);
+figures on them are figures on transformed strokes, not on people using those devices. The people's strokes are read
+in place from ``../shared/data/strokes/dollar1-dev.jsonl`` (`shared_data`); floors only rise.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import zlib
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+import pytest
+from shared_data import shared_path
+
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.recognize import SPARSE_BENDS, recognize_stroke
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+from bench_device_stress import COMBINED, TRANSFORMS, as_stroke  # the benchmark's own transforms, not copies
+from bench_recognition import ACCEPTS, LABEL_CLASS
+
+FLOORS: dict[str, dict[str, int]] = {
+    "8-25 events (fast)": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0, "arrow": 0},
+    "events every 15-30 ms": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0, "arrow": 0},
+    "mouse: stairs, bursts, repeats": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0,
+                                       "arrow": 0},
+    "tkinter: 30-80 px, no times": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0, "arrow": 0},
+    "touch: finger, overshoot, events every 15-30 ms": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0,
+                                                        "check": 0, "arrow": 0},
+}
+"""Per transform and label, how many of the label's 90 strokes (three people, three speeds) must still be read
+right."""
+
+
+@cache
+def people_rows() -> tuple[dict, ...]:
+    path = shared_path("strokes", "dollar1-dev.jsonl")
+    return tuple(json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip())
+
+
+@pytest.mark.parametrize("name", sorted(FLOORS))
+def test_people_strokes_as_devices_sample_them(name: str) -> None:
+    change = {**TRANSFORMS, **COMBINED}[name]
+    floors = FLOORS[name]
+    right = dict.fromkeys(floors, 0)
+    seen = dict.fromkeys(floors, 0)
+    for row in people_rows():
+        if row["label"] not in floors:
+            continue
+        rng = np.random.default_rng(zlib.crc32(f"{row['file']}|{row['label']}|{name}".encode()))
+        pts, times = change(as_stroke(row), rng)
+        found = recognize_stroke(pts.tolist(), None if times is None else times.tolist())
+        seen[row["label"]] += 1
+        right[row["label"]] += found.kind in ACCEPTS[LABEL_CLASS[row["label"]]]
+    assert all(n == 90 for n in seen.values()), seen
+    short = {label: f"{right[label]}/90 < {floor}" for label, floor in floors.items() if right[label] < floor}
+    assert not short, f"{name}: {short}"
+
+
+def _box_by_events(events: int, width: float = 240.0, height: float = 150.0) -> np.ndarray:
+    """A box drawn round from its top-left corner, the pen easing in and out of each corner, sampled by ``events``
+    events evenly in time (a trackpad's fast stroke)."""
+    corners = np.array([[0, 0], [width, 0], [width, height], [0, height], [0, 0]], dtype=float)
+    when = np.linspace(0.0, 4.0, events)
+    side = np.minimum(when.astype(int), 3)
+    u = when - side
+    eased = (1 - np.cos(np.pi * u)) / 2  # slow at the corners, fast along the sides
+    return corners[side] + (corners[side + 1] - corners[side]) * eased[:, None]
+
+
+@pytest.mark.parametrize("events", [9, 10, 11, 12, 14, 17, 21])
+def test_a_box_sampled_by_a_few_events_is_a_box(events: int) -> None:
+    """Between a few far-apart events the path's bends are the box's, not a shaky hand's: the points are not
+    smoothed where they were sampled (which cut the corners to a round shape)."""
+    pts = _box_by_events(events)
+    assert sg.jitter(pts) <= SPARSE_BENDS * sg.shape_bend(pts)
+    assert recognize_stroke(pts.tolist()).kind == "box"
+
+
+def test_a_shaky_hand_densely_sampled_is_still_seen() -> None:
+    """A circle drawn with a 1.5-unit wobble at 200 points: its jitter is the pen's, well over the shape's bends."""
+    rng = np.random.default_rng(7)
+    a = np.linspace(0, 2 * np.pi, 200)
+    pts = np.column_stack([100 * np.cos(a), 100 * np.sin(a)]) + rng.normal(0, 1.5, (200, 2))
+    assert 1.0 < sg.jitter(pts)
+    assert sg.jitter(pts) > 10 * SPARSE_BENDS * sg.shape_bend(pts)
+    assert recognize_stroke(pts.tolist()).kind == "circle"
