@@ -27,16 +27,20 @@ from bench_device_stress import COMBINED, TRANSFORMS, as_stroke  # the benchmark
 from bench_recognition import ACCEPTS, LABEL_CLASS
 
 FLOORS: dict[str, dict[str, int]] = {
-    "8-25 events (fast)": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0, "arrow": 0},
-    "events every 15-30 ms": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0, "arrow": 0},
-    "mouse: stairs, bursts, repeats": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0,
-                                       "arrow": 0},
-    "tkinter: 30-80 px, no times": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0, "check": 0, "arrow": 0},
-    "touch: finger, overshoot, events every 15-30 ms": {"rectangle": 0, "triangle": 0, "star": 0, "circle": 0,
-                                                        "check": 0, "arrow": 0},
+    "8-25 events (fast)": {"rectangle": 87, "triangle": 88, "star": 87, "circle": 84, "check": 88, "arrow": 88,
+                           "left_curly_brace": 84, "right_curly_brace": 82},
+    "events every 15-30 ms": {"rectangle": 88, "triangle": 88, "star": 88, "circle": 87, "check": 87, "arrow": 88},
+    "mouse: stairs, bursts, repeats": {"rectangle": 88, "triangle": 88, "star": 88, "circle": 84, "check": 84,
+                                       "arrow": 88},
+    "tkinter: 30-80 px, no times": {"rectangle": 88, "triangle": 88, "star": 88, "circle": 87, "check": 82,
+                                    "arrow": 88},
+    "touch: finger, overshoot, events every 15-30 ms": {"rectangle": 88, "triangle": 87, "star": 88, "circle": 84,
+                                                        "check": 83, "arrow": 88},
 }
-"""Per transform and label, how many of the label's 90 strokes (three people, three speeds) must still be read
-right."""
+"""Per transform and label, how many of the label's 90 strokes (three people, three speeds) must still be read right:
+two under today's count (f480c5f), for the learned ranker's refits. Before f480c5f (a sparse stroke's jitter taken for
+a shaky hand) 8-25 events left 59 rectangles, 58 stars, 80 triangles, 71 and 70 curly braces; today 89, 89, 90, 86, 84.
+"""
 
 
 @cache
@@ -90,5 +94,5 @@ def test_a_shaky_hand_densely_sampled_is_still_seen() -> None:
     a = np.linspace(0, 2 * np.pi, 200)
     pts = np.column_stack([100 * np.cos(a), 100 * np.sin(a)]) + rng.normal(0, 1.5, (200, 2))
     assert 1.0 < sg.jitter(pts)
-    assert sg.jitter(pts) > 10 * SPARSE_BENDS * sg.shape_bend(pts)
+    assert sg.jitter(pts) > 4 * SPARSE_BENDS * sg.shape_bend(pts)
     assert recognize_stroke(pts.tolist()).kind == "circle"
