@@ -3,8 +3,9 @@
 PaleoSketch's way (Paulson & Hammond 2008): interpretations compete rather than pass a cascade of cut-offs. The
 stroke is moved to unit size round its centroid (no overflow on absurd input), judged, and the geometry is scaled
 back. Every threshold allows for the pen's noise in absolute units (`noise`, 1 canvas pixel unless the caller says,
-or the stroke's own measured jitter when that is worse) as well as the shape's size, so a 22-pixel gesture and a
-600-pixel one are judged alike where that makes sense and differently where noise decides.
+or the stroke's own measured jitter when that is worse, except where its points lie so far apart that the jitter may
+be the shape's own bends: `recognize.SPARSE_BENDS`, a trackpad's or mouse's 8-25 events) as well as the shape's size,
+so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sense and differently where noise decides.
 
 1. A line (judged on steps a few noise widths long), a spring (loops turning one way whose centres advance along an
    axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a stroke under three noise widths
