@@ -89,12 +89,19 @@ def coarse(stroke: Stroke, rng: np.random.Generator) -> Stroke:
     return _at(pts, clock, when), when if t is not None else None
 
 
+def events(n: int) -> Transform:
+    """``n`` events evenly in time over the stroke, the first at pen-down and the last at pen-up."""
+    def change(stroke: Stroke, rng: np.random.Generator) -> Stroke:
+        pts, t = stroke
+        clock = _clock(stroke)
+        when = np.linspace(clock[0], clock[-1], n)
+        return _at(pts, clock, when), when if t is not None else None
+    return change
+
+
 def fast(stroke: Stroke, rng: np.random.Generator) -> Stroke:
     """8-25 events evenly in time: a stroke drawn in 0.2-0.5 s at an event every 15-30 ms."""
-    pts, t = stroke
-    clock = _clock(stroke)
-    when = np.linspace(clock[0], clock[-1], int(rng.integers(8, 26)))
-    return _at(pts, clock, when), when if t is not None else None
+    return events(int(rng.integers(8, 26)))(stroke, rng)
 
 
 def bursts(stroke: Stroke, rng: np.random.Generator) -> Stroke:

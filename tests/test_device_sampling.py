@@ -23,7 +23,7 @@ from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.recognize import SPARSE_BENDS, recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_device_stress import COMBINED, TRANSFORMS, as_stroke  # the benchmark's own transforms, not copies
+from bench_device_stress import COMBINED, TRANSFORMS, as_stroke, events  # the benchmark's own transforms, not copies
 from bench_recognition import ACCEPTS, LABEL_CLASS
 
 FLOORS: dict[str, dict[str, int]] = {
@@ -66,6 +66,30 @@ def test_people_strokes_as_devices_sample_them(name: str) -> None:
     assert all(n == 90 for n in seen.values()), seen
     short = {label: f"{right[label]}/90 < {floor}" for label, floor in floors.items() if right[label] < floor}
     assert not short, f"{name}: {short}"
+
+
+EVENT_FLOORS: dict[int, dict[str, int]] = {
+    10: {"circle": 83, "rectangle": 88, "triangle": 88, "star": 88, "left_curly_brace": 83},
+    12: {"circle": 88, "rectangle": 88, "triangle": 88, "star": 88, "left_curly_brace": 87},
+    16: {"circle": 87, "rectangle": 88, "triangle": 88, "star": 88, "left_curly_brace": 88},
+}
+"""Per number of events evenly in time over each stroke, how many of a label's 90 strokes must be read right: two
+under today's (f480c5f). Before it, at 10 / 12 / 16 events: rectangles 0 / 1 / 75, stars 7 / 20 / 69, triangles 65 /
+90 / 90, left curly braces 34 / 49 / 87, circles 85 / 90 / 90."""
+
+
+@pytest.mark.parametrize("n", sorted(EVENT_FLOORS))
+def test_people_strokes_by_a_few_events(n: int) -> None:
+    """A fast stroke on a trackpad or mouse: coarse-sampled circles are still circles, boxes still boxes."""
+    floors = EVENT_FLOORS[n]
+    right = dict.fromkeys(floors, 0)
+    for row in people_rows():
+        if row["label"] in floors:
+            pts, times = events(n)(as_stroke(row), np.random.default_rng(0))
+            found = recognize_stroke(pts.tolist(), None if times is None else times.tolist())
+            right[row["label"]] += found.kind in ACCEPTS[LABEL_CLASS[row["label"]]]
+    short = {label: f"{right[label]}/90 < {floor}" for label, floor in floors.items() if right[label] < floor}
+    assert not short, f"{n} events: {short}"
 
 
 def _box_by_events(events: int, width: float = 240.0, height: float = 150.0) -> np.ndarray:
