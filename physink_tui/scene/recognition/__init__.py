@@ -59,11 +59,11 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    at every sharp dip of a run of short straws (an arrow's head, a zig-zag's small teeth: `stroke_geometry.
    find_corners(every_dip=True)`), and a one-corner stroke turning one way whose bend is short against the whole
    stroke is sharp however short its arm (a tick, `open_shapes._short_bend`), its short arm may bow into the corner
-   (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
-   not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row turning each
-   way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the stroke does
-   before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended by running
-   back along itself is judged without that piece (`open_marks.retraced_ends`). Marks these rules misjudge
+   (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner nor point is
+   an arm, not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row
+   turning each way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the
+   stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
+   by running back along itself is judged without that piece (`open_marks.retraced_ends`). Marks these rules misjudge
    (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
    spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
@@ -74,8 +74,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    fitted offline on people's strokes by `benchmarks/train_ranker.py`, shipped in the package as the data module
    `ranker_model`; it overrules the rules only when it gives another kind a chance over its margin. Other kinds are
    left to the rules, and so is the rules' hurried check (one really sharp, off-centre corner in at most three
-   lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`), and the rules'
-   zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`).
+   lobes, or two corners of which the point holds a third of all the turning, never a loop's: `ranker.checked_point`),
+   and the rules' zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
@@ -109,5 +109,6 @@ Test-side generators live under `tests/`: `strokegen/` (seeded strokes per kind,
 `penmodels/` (a second, hurried pen model that draws the thesis scenes, written apart from the virtual pen).
 `benchmarks/bench_recognition.py` and `bench_recognition_robust.py` (leave one person out, stress variants, thin
 boxes, containers) measure what the tests only floor; `compare_readings.py` shows that a change (a speed-up) reads
-every design stroke exactly as another revision does, and `profile_recognition.py` where recognition's time goes.
+every design stroke exactly as another revision does, `profile_recognition.py` where recognition's time goes, and
+`ablate_rules.py` what each hand rule fixes and breaks, switched off in turn, where it was designed and elsewhere.
 """

@@ -22,7 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_marks, open_shapes, ranker_model
+from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, ranker_model
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
@@ -311,12 +311,13 @@ def checked_point(phi: np.ndarray) -> bool:
     and a long one, `CHECK_ARMS`), in at most three lobes: the rules' hurried check, whose arms may bow; also when a
     second, weaker corner marks where a bowed arm's hump starts, so long as the point holds `CHECK_POINT_SHARE` of
     all the stroke's turning. The rules read it as a polyline on purpose; a model fitted on people who draw checks
-    with straight arms reads bowed arms as a curve's, so it is not asked."""
+    with straight arms reads bowed arms as a curve's, so it is not asked. A point turning past half a turn
+    (`bracket_marks.LOOPED_POINT`) is a loop, as a brace's looped point, not a check's (issue 25, sixth pass)."""
     corners = round(float(phi[FEATURES.index("corners")]) * 8)
     turn = float(phi[FEATURES.index("max_corner_turn")]) * 180.0
     lobes = round(float(phi[FEATURES.index("lobes")]) * 4)
     balance = float(phi[FEATURES.index("point_balance")])
-    if turn < open_shapes.VERY_SHARP_CORNER or lobes > 3 or balance > CHECK_ARMS:
+    if turn < open_shapes.VERY_SHARP_CORNER or turn > bracket_marks.LOOPED_POINT or lobes > 3 or balance > CHECK_ARMS:
         return False
     whole = float(phi[FEATURES.index("abs_turn")]) * 360.0
     return corners == 1 or (corners == 2 and turn >= CHECK_POINT_SHARE * whole)

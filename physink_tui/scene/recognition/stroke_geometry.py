@@ -246,7 +246,9 @@ less than `ARM_STRAIGHT` of it, a quarter circle's bow), at least `ARM_SHARE` of
 within `ARM_ANGLE_DEG` (a hook doubles back along the stroke or curls; an arm stands off it), and the rest is one run
 with no corner: a tick or check drawn with a short first arm is two straight arms, not a line with a landing hook
 (a mouse lands without one). The landing hooks of the design sources' lines double back (under 40 degrees) or are
-under 5 % of the path; a brace's curl leaves a rest with its tip, a corner."""
+under 5 % of the path; a brace's curl leaves a rest with its tip, a corner, or a point the corner finder missed
+(`POINT_TURN_DEG` within `POINT_SPAN` in the rest's middle three fifths, as for the bracket's spine in `remove_hooks`:
+issue 25, sixth pass, in docs/BENCHMARKS.md)."""
 
 
 POINT_SPAN = 0.04
@@ -279,7 +281,10 @@ def end_arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
     if norms == 0.0:
         return False
     angle = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
-    return ARM_ANGLE_DEG[0] <= angle <= ARM_ANGLE_DEG[1] and len(find_corners(rest)) == 2
+    if not (ARM_ANGLE_DEG[0] <= angle <= ARM_ANGLE_DEG[1] and len(find_corners(rest)) == 2):
+        return False
+    middle = rest[len(rest) // 5: len(rest) - len(rest) // 5]  # no point there either (a brace's soft tip)
+    return sharpest_turn(middle, POINT_SPAN * length) < POINT_TURN_DEG
 
 
 def _hook_end(th_head: np.ndarray, min_turn_deg: float) -> int | None:
