@@ -22,7 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_marks, open_shapes, ranker_model
+from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, ranker_model
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
@@ -199,6 +199,8 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
         out[list(CHECK_FEATURES)] = checks
         if checked_point(np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
             return None
+        if len(corners) == 2 and bracket_marks.rounded_point(work, th, lobes) is not None:
+            return None  # a tick swung round its point, the rules' polyline: the model is not asked either
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     deviation = [sg.chord_deviation(r) for r in runs]
     straights = [open_shapes.straight(r, noise, d) for r, d in zip(runs, deviation, strict=True)]
