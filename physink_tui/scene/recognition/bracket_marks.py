@@ -124,8 +124,9 @@ def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> boo
 
 
 TICK_TURN = (45.0, 150.0)
-"""A tick, check or v turns one way by this much in all (degrees): its arms meet at 30-135 degrees (a bracket or a U
-turns half a turn, a question mark's curl more)."""
+"""A tick, check or v turns one way by this much in all (degrees; its one lobe at the coarse scale, where a hook the
+pen made landing or lifting does not count): its arms meet at 30-135 degrees (a bracket or a U turns half a turn, a
+question mark's curl more)."""
 TICK_ARMS_DEG = 55.0
 """A tick's arms' chords meet at this angle or more (`open_shapes._tip_in_line`: arms within 45 degrees of in line
 are a brace's, running on through its tip)."""
@@ -147,13 +148,16 @@ def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[
     stroke stands farthest from the line joining its ends. The long arm is straight (`BRACKET_STRAIGHT`, and
     `TICK_CONCENTRATED`: the stroke turns at its point, not along the arm) with no point in it
     (`stroke_geometry.POINT_TURN_DEG`: a long brace's tip), and the short arm, which carries the round point, bows no
-    more than an arc turning by the stroke's whole turn would: the bend is the point, not a curl of its own. An arc
-    turns evenly, so its longer arm is not straight; a brace turns both ways or runs on in line."""
+    more than an arc turning by the stroke's whole turn would: the bend is the point, not a curl of its own (the turn
+    for these two bounds is the larger of the coarse lobe's and the fine path's: the hurried hand's hooks move the
+    fine one either way). An arc turns evenly, so its longer arm is not straight; a brace turns both ways or runs on
+    in line."""
     if len(lobes) != 1:
         return None
-    total = abs(math.degrees(float(th.sum())))
+    total = abs(lobes[0])  # at the coarse scale: a hook where the pen landed or lifted does not count
     if not TICK_TURN[0] <= total <= TICK_TURN[1]:
         return None
+    bend = max(total, abs(math.degrees(float(th.sum()))))  # the bend's turn, the fine scale's where that is more
     start, end = work[0], work[-1]
     chord = float(np.hypot(*(end - start)))
     if chord == 0.0:
@@ -173,9 +177,9 @@ def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[
             or float(u @ v) > math.cos(math.radians(TICK_ARMS_DEG)) * norms):
         return None
     middle = long[len(long) // 5: len(long) - len(long) // 5]
-    even = math.tan(math.radians(total) * (1.0 - share) / 4) / 2  # the long arm's bow, the turning spread evenly
+    even = math.tan(math.radians(bend) * (1.0 - share) / 4) / 2  # the long arm's bow, the turning spread evenly
     if (sg.chord_deviation(long) >= min(BRACKET_STRAIGHT, TICK_CONCENTRATED * even)
-            or sg.chord_deviation(short) > math.tan(math.radians(total) / 4) / 2
+            or sg.chord_deviation(short) > math.tan(math.radians(bend) / 4) / 2
             or sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= sg.POINT_TURN_DEG):
         return None
     return [0, k, len(work) - 1]
