@@ -1,5 +1,6 @@
 """Open marks the general open-stroke rules misjudge: a square bracket with one corner rounded off, a curly brace with
-a loop at its point; judged on the open-stroke rules' own corners (`open_shapes.classify_open`), no I/O."""
+a loop at its point, a tick swung round its point; judged on the open-stroke rules' own corners and turning
+(`open_shapes.classify_open`), no I/O."""
 
 from __future__ import annotations
 
