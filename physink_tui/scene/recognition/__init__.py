@@ -67,7 +67,9 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
    spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
-   halfway along, the stroke on one side of that line), is not a polyline.
+   halfway along, the stroke on one side of that line), is not a polyline; a tick, check or v swung round its point
+   (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
+   polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`).
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -76,6 +78,10 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    left to the rules, and so is the rules' hurried check (one really sharp, off-centre corner in at most three
    lobes, or two corners of which the point holds a third of all the turning, never a loop's: `ranker.checked_point`),
    and the rules' zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`).
+
+   lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`), and the rules'
+   zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`) and a tick swung round its point (on the
+   model's own points, no corner found there: `bracket_marks.rounded_point`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
@@ -93,8 +99,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
 - `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line
   begun by sliding back along itself
-- `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
-  which the open-stroke rules misjudge
+- `bracket_marks.py`: square brackets with a rounded corner, curly braces with a looped or straight-armed point and
+  ticks swung round their point, which the open-stroke rules misjudge
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced

@@ -1,5 +1,6 @@
 """Open marks the general open-stroke rules misjudge: a square bracket with one corner rounded off, a curly brace with
-a loop at its point; judged on the open-stroke rules' own corners (`open_shapes.classify_open`), no I/O."""
+a loop at its point, a tick swung round its point; judged on the open-stroke rules' own corners and turning
+(`open_shapes.classify_open`), no I/O."""
 
 from __future__ import annotations
 
@@ -121,3 +122,65 @@ def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> boo
             and sg.sharpest_turn(work[near], sg.POINT_SPAN * length) < sg.POINT_TURN_DEG):
         return False  # no corner there, nor a point the finder missed (the label tests' brace point)
     return len(lobes) >= 2
+
+
+TICK_TURN = (45.0, 150.0)
+"""A tick, check or v turns one way by this much in all (degrees; its one lobe at the coarse scale, where a hook the
+pen made landing or lifting does not count): its arms meet at 30-135 degrees (a bracket or a U turns half a turn, a
+question mark's curl more)."""
+TICK_ARMS_DEG = 55.0
+"""A tick's arms' chords meet at this angle or more (`open_shapes._tip_in_line`: arms within 45 degrees of in line
+are a brace's, running on through its tip)."""
+TICK_CONCENTRATED = 0.5
+"""A tick's long arm bows less than this share of what it would were the stroke's turning spread evenly along it (an
+arc's bow over its chord: a quarter of its turn's tangent, halved): the turning is at the point, not along the arm (a
+question mark's stem curves on from its curl)."""
+TICK_SHORT = (0.06, 0.45)
+"""The shorter arm, the round point included, is this share of the path (`stroke_geometry.ARM_SHARE` to under
+half: a v's arms are alike, a tick's short arm shorter)."""
+
+
+def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[int] | None:
+    """The three vertices (start, point, end) of a tick, check or v whose point is a round bend, or None.
+
+    A hand in a hurry swings round a check's point instead of stopping at it: the finder finds no corner there, and
+    the stroke reads as a curve. What a reader sees is one bend (the stroke turns one way, `TICK_TURN`) between a
+    straight long arm and a short arm, their chords meeting at `TICK_ARMS_DEG` or more; the point is taken where the
+    stroke stands farthest from the line joining its ends. The long arm is straight (`BRACKET_STRAIGHT`, and
+    `TICK_CONCENTRATED`: the stroke turns at its point, not along the arm) with no point in it
+    (`stroke_geometry.POINT_TURN_DEG`: a long brace's tip), and the short arm, which carries the round point, bows no
+    more than an arc turning by the stroke's whole turn would: the bend is the point, not a curl of its own (the turn
+    for these two bounds is the larger of the coarse lobe's and the fine path's: the hurried hand's hooks move the
+    fine one either way). An arc turns evenly, so its longer arm is not straight; a brace turns both ways or runs on
+    in line."""
+    if len(lobes) != 1:
+        return None
+    total = abs(lobes[0])  # at the coarse scale: a hook where the pen landed or lifted does not count
+    if not TICK_TURN[0] <= total <= TICK_TURN[1]:
+        return None
+    bend = max(total, abs(math.degrees(float(th.sum()))))  # the bend's turn, the fine scale's where that is more
+    start, end = work[0], work[-1]
+    chord = float(np.hypot(*(end - start)))
+    if chord == 0.0:
+        return None
+    rel = work - start
+    k = int(np.argmax(np.abs(rel[:, 0] * (end - start)[1] - rel[:, 1] * (end - start)[0])))
+    if k == 0 or k == len(work) - 1:
+        return None
+    first, second = work[:k + 1], work[k:]
+    length = sg.path_length(work)
+    short_first = sg.path_length(first) <= sg.path_length(second)
+    short, long = (first, second) if short_first else (second, first)
+    share = sg.path_length(short) / length
+    u, v = work[k] - start, end - work[k]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if (not TICK_SHORT[0] <= share < TICK_SHORT[1] or norms == 0.0
+            or float(u @ v) > math.cos(math.radians(TICK_ARMS_DEG)) * norms):
+        return None
+    middle = long[len(long) // 5: len(long) - len(long) // 5]
+    even = math.tan(math.radians(bend) * (1.0 - share) / 4) / 2  # the long arm's bow, the turning spread evenly
+    if (sg.chord_deviation(long) >= min(BRACKET_STRAIGHT, TICK_CONCENTRATED * even)
+            or sg.chord_deviation(short) > math.tan(math.radians(bend) / 4) / 2
+            or sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= sg.POINT_TURN_DEG):
+        return None
+    return [0, k, len(work) - 1]

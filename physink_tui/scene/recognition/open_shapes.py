@@ -144,6 +144,9 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     bracket = bracket_marks.rounded_bracket_corners(work, th, corners, lobes)
     if bracket is not None:  # one corner rounded off: a square bracket still
         return Recognition("polyline", 0.75, Polyline(tuple(_pt(work[c]) for c in bracket)), (("curve", 0.4),))
+    point = bracket_marks.rounded_point(work, th, lobes) if len(corners) <= 3 else None
+    if point is not None:  # a tick, check or v swung round its point
+        return Recognition("polyline", 0.7, Polyline(tuple(_pt(work[c]) for c in point)), (("curve", 0.4),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
         one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends

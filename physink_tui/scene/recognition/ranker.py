@@ -179,8 +179,9 @@ CHECK_FEATURES = tuple(FEATURES.index(f) for f in ("corners", "abs_turn", "max_c
 
 def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np.ndarray | None:
     """`features` of a stroke already prepared by `_unit_work`. With ``polyline`` (the rules read one), None as soon
-    as the features `checked_point` reads show a hurried check, which `choose` does not ask the model about: the others
-    (fits, corner shapes, the rules' tests) are not computed."""
+    as the features `checked_point` reads show a hurried check, which `choose` does not ask the model about, or the
+    stroke is a tick swung round its point (`bracket_marks.rounded_point`, no corner found), which `rerank` does not
+    ask it about either: the others (fits, corner shapes, the rules' tests) are not computed."""
     out = np.zeros(len(FEATURES))
     if found is None:
         return out
@@ -199,6 +200,8 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
         out[list(CHECK_FEATURES)] = checks
         if checked_point(np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
             return None
+        if len(corners) == 2 and bracket_marks.rounded_point(work, th, lobes) is not None:
+            return None  # a tick swung round its point, the rules' polyline: the model is not asked either
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     deviation = [sg.chord_deviation(r) for r in runs]
     straights = [open_shapes.straight(r, noise, d) for r, d in zip(runs, deviation, strict=True)]
