@@ -16,6 +16,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.shape_fits import fit_circle
 
 SAW_TEETH = 4
 """A zig-zag has at least this many sharp corners in a row, joined by even sides: three teeth (two corners make an N,
@@ -45,6 +46,10 @@ kept at its ends turn it by a right angle or more)."""
 SWUNG_POINT_DEG = 2 * sg.POINT_TURN_DEG
 """... and no stretch of `stroke_geometry.POINT_SPAN` of its middle three fifths turns by this much (a brace's tip, in
 the middle, turns 69 degrees and more there; a swung line's wobble less)."""
+SWUNG_ARC = 0.15
+"""... and a circle explains its bow no better than this share of the line's error (`fit_circle`'s farthest point
+against the fitted line's): a bow a circle fits closer is an arc drawn so (arcs of 40-60 degrees by the stroke
+generator: 0.03-0.09 at the 10th-90th percentile; gtiwari's mouse-swung lines 0.16-0.78)."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
@@ -157,17 +162,23 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
 
 
 def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float) -> bool:
-    """Whether a stroke the line test refused (``coarse``: its smoothed points without hooks; ``stray`` and ``ink`` its
-    fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's swing
-    bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink, turns both ways (one way round, it would be
-    an arc: `ONE_WAY`), its heading turns less than `SWUNG_TURN_DEG` end to end and its middle has no point
-    (`SWUNG_POINT_DEG`). What a person does: a long diagonal drawn with a mouse, or a quick stroke of a wrist, pivots
-    and corrects; a reader still sees a line, not a curve."""
+    """Whether a stroke the line test refused (``coarse``: its smoothed points without hooks; ``stray`` and ``ink``
+    its fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's
+    swing bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink, turns both ways (one way round, it
+    would be an arc: `ONE_WAY`), its heading turns less than `SWUNG_TURN_DEG` end to end, its middle has no point
+    (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`). What a person does: a long diagonal drawn with a
+    mouse, or a quick stroke of a wrist, pivots and corrects; a reader still sees a line, not a curve."""
     if stray >= SWUNG_STRAY or ink >= SWUNG_INK:
         return False  # checked first: most strokes are far from straight
     th = sg.coarse_turning(coarse, noise)
     net, every = abs(float(th.sum())), float(np.abs(th).sum())
     if net > ONE_WAY * every or math.degrees(net) >= SWUNG_TURN_DEG:
         return False
+    length = sg.path_length(coarse)
     middle = coarse[len(coarse) // 5: len(coarse) - len(coarse) // 5]
-    return sg.sharpest_turn(middle, sg.POINT_SPAN * sg.path_length(coarse)) < SWUNG_POINT_DEG
+    if sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= SWUNG_POINT_DEG:
+        return False
+    centre, radius, _ = fit_circle(coarse)
+    if not math.isfinite(radius):
+        return True  # straight enough that no circle fits
+    return float(np.abs(np.hypot(*(coarse - centre).T) - radius).max()) >= SWUNG_ARC * stray * length
