@@ -62,7 +62,9 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
    not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row turning each
    way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the stroke does
    before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended by running
-   back along itself is judged without that piece (`open_marks.retraced_ends`). Marks these rules misjudge
+   back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed one way
+   and back (turning both ways, no point, no circle fitting its bow, straying under 9 % of its length) is a line
+   (`open_marks.swung_line`). Marks these rules misjudge
    (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
    spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
@@ -91,7 +93,7 @@ or the stroke's own measured jitter when that is worse) as well as the shape's s
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
 - `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line
-  begun by sliding back along itself
+  begun by sliding back along itself or bowed by the hand's swing
 - `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
   which the open-stroke rules misjudge
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,

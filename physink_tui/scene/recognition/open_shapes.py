@@ -87,11 +87,10 @@ def _line(raw: np.ndarray, noise: float, diag: float) -> tuple[Recognition | Non
         return None, None
     err = max(0.0, err - noise / chord)  # the pen's own wobble is not a bend
     slack = 1.0 + 3 * noise / chord
-    drawn = Line(_pt(coarse[0]), _pt(coarse[-1]))
     if (err < LINE and length < 1.12 * chord * slack) or (err < 0.5 * LINE and length < 1.3 * chord * slack):
-        return Recognition("line", 1.0 - err / LINE * 0.5, drawn, (("arc", 0.2),)), None
+        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])), (("arc", 0.2),)), None
     if open_marks.swung_line(coarse, err, length / (chord * slack), noise):
-        return None, Recognition("line", 0.6, drawn, (("curve", 0.4),))
+        return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),))
     return None, None
 
 
