@@ -12,11 +12,12 @@ the model is fitted on. Design folds: each source not held back is scored by a m
 design sources only. The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or
 ``--write`` is given; the second (sources found later, `bench_generalisation.held_back_new`) was read only with
 ``--heldback`` until it was opened as design material (`bench_generalisation.SECOND_GROUP_OPEN`): now it is read always;
-the third (the sets of the third search, `bench_generalisation.THIRD_SETS`) never: it is neither fitted on nor scored
-here; each group is then scored per source and per class, apart, by a model fitted on the design sources. ``--write``
-fits on every source given but the second held-back group (the margin chosen by leave-one-source-out over them) and
-writes the model as the Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py).
-Features are kept in ~/.cache/physink/ under a key of the rows and the recognition package's source.
+the third and fourth (the sets of the third and fourth searches, `bench_generalisation.THIRD_SETS`, `FOURTH_SETS`)
+never: they are neither fitted on nor scored here; each group is then scored per source and per class, apart, by a model
+fitted on the design sources. ``--write`` fits on every source given but the second held-back group (the margin chosen
+by leave-one-source-out over them) and writes the model as the Python data module the recogniser imports (PATH:
+physink_tui/scene/recognition/ranker_model.py). Features are kept in ~/.cache/physink/ under a key of the rows and the
+recognition package's source.
 """
 
 from __future__ import annotations
@@ -223,9 +224,10 @@ def model_module_text(doc: dict) -> str:
 
 
 def rows_read(rows: list[Row], heldback: bool, write: bool) -> tuple[list[Row], set[str], set[str]]:
-    """The scored rows the ranker may read, and the first and second held-back groups among them. The third
-    held-back group (`bench_generalisation.THIRD_SETS`) is never read, not even with ``heldback`` or ``write``
-    (`scored_rows` leaves it out); the second only with ``heldback``; the first only with ``heldback`` or ``write``."""
+    """The scored rows the ranker may read, and the first and second held-back groups among them. The third and
+    fourth held-back groups (`bench_generalisation.THIRD_SETS`, `FOURTH_SETS`) are never read, not even with
+    ``heldback`` or ``write`` (`scored_rows` leaves them out); the second only with ``heldback``; the first only with
+    ``heldback`` or ``write``."""
     rows, _ = scored_rows(rows)
     first, new = held_back(rows), held_back_new(rows)
     if not heldback:  # the second group is never read without --heldback, not even to write a model
