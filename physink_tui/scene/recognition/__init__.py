@@ -64,6 +64,14 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    turning each way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
    by running back along itself is judged without that piece (`open_marks.retraced_ends`). Marks these rules misjudge
+
+   (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
+   not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row turning each
+   way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the stroke does
+   before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended by running
+   back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed one way
+   and back (turning both ways, no point, no circle fitting its bow, straying under 9 % of its length) is a line
+   (`open_marks.swung_line`). Marks these rules misjudge
    (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
    spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
@@ -101,6 +109,10 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
   begun by sliding back along itself
 - `bracket_marks.py`: square brackets with a rounded corner, curly braces with a looped or straight-armed point and
   ticks swung round their point, which the open-stroke rules misjudge
+
+  begun by sliding back along itself or bowed by the hand's swing
+- `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
+  which the open-stroke rules misjudge
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced

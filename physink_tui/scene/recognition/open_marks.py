@@ -1,8 +1,10 @@
-"""Open marks drawn loosely by a hurried hand: zig-zag teeth between a lead-in and a tail, lines begun backwards.
+"""Open marks drawn loosely by a hurried hand: zig-zag teeth between a lead-in and a tail, lines begun backwards or
+swung.
 
 The open-stroke rules (`open_shapes`) ask every side of a polyline to be straight and every corner sharp, and a line
 to end where its extent ends; these tests say when a reader still sees the mark: a zig-zag's teeth whatever its ends
-do (`sawtooth`), a line without the piece its pen ran back along (`retraced_ends`). No I/O.
+do (`sawtooth`), a line without the piece its pen ran back along (`retraced_ends`), a line whose middle the hand's
+swing bowed one way and back (`swung_line`). No I/O.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.shape_fits import fit_circle
 
 SAW_TEETH = 4
 """A zig-zag has at least this many sharp corners in a row, joined by even sides: three teeth (two corners make an N,
@@ -29,6 +32,24 @@ SAW_EVEN = 1.5
 alike before it (two back: a sawtooth's drop and the next drop, its slanted rise and the next), or as short; a brace's
 arm is two to four times its tip's sides. At 2 people's uneven sawtooth teeth pass too (5 more zig-zags), and so do
 the braces one person draws as sharp teeth (2 lost): issue 25, fifth pass, in docs/BENCHMARKS.md."""
+SWUNG_STRAY = 0.09
+"""A line swung by the hand strays from its fitted line by less than this share of its length (twice the line test's
+`open_shapes.LINE`; a circular arc of 60 degrees strays 0.09)."""
+SWUNG_INK = 1.05
+"""... with at most this much ink for its chord (a circular arc of 60 degrees has 1.047: a wave big enough to be meant
+has more)."""
+ONE_WAY = 0.8
+"""A stroke whose net turning is over this share of all its turning turns one way (an arc: `open_shapes`' arc test)."""
+SWUNG_TURN_DEG = 90.0
+"""... and its heading from start to end turns by less than a right angle (a square bracket's or a tick's short arms
+kept at its ends turn it by a right angle or more)."""
+SWUNG_POINT_DEG = 2 * sg.POINT_TURN_DEG
+"""... and no stretch of `stroke_geometry.POINT_SPAN` of its middle three fifths turns by this much (a brace's tip, in
+the middle, turns 69 degrees and more there; a swung line's wobble less)."""
+SWUNG_ARC = 0.15
+"""... and a circle explains its bow no better than this share of the line's error (`fit_circle`'s farthest point
+against the fitted line's): a bow a circle fits closer is an arc drawn so (arcs of 40-60 degrees by the stroke
+generator: 0.03-0.09 at the 10th-90th percentile; gtiwari's mouse-swung lines 0.16-0.78)."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
@@ -138,3 +159,26 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     ends = np.concatenate([raw[:lo + 1], raw[hi:]])
     off = np.abs((ends[:, 0] - a[0]) * unit[1] - (ends[:, 1] - a[1]) * unit[0])
     return kept if float(off.max()) <= RETRACE_OFF * span + noise else None
+
+
+def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float) -> bool:
+    """Whether a stroke the line test refused (``coarse``: its smoothed points without hooks; ``stray`` and ``ink``
+    its fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's
+    swing bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink, turns both ways (one way round, it
+    would be an arc: `ONE_WAY`), its heading turns less than `SWUNG_TURN_DEG` end to end, its middle has no point
+    (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`). What a person does: a long diagonal drawn with a
+    mouse, or a quick stroke of a wrist, pivots and corrects; a reader still sees a line, not a curve."""
+    if stray >= SWUNG_STRAY or ink >= SWUNG_INK:
+        return False  # checked first: most strokes are far from straight
+    th = sg.coarse_turning(coarse, noise)
+    net, every = abs(float(th.sum())), float(np.abs(th).sum())
+    if net > ONE_WAY * every or math.degrees(net) >= SWUNG_TURN_DEG:
+        return False
+    length = sg.path_length(coarse)
+    middle = coarse[len(coarse) // 5: len(coarse) - len(coarse) // 5]
+    if sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= SWUNG_POINT_DEG:
+        return False
+    centre, radius, _ = fit_circle(coarse)
+    if not math.isfinite(radius):
+        return True  # straight enough that no circle fits
+    return float(np.abs(np.hypot(*(coarse - centre).T) - radius).max()) >= SWUNG_ARC * stray * length

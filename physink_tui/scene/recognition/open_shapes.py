@@ -62,18 +62,20 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
 def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
-    without a lead-in or tail that runs back along it (`open_marks.retraced_ends`)."""
-    found = _line(raw, noise, diag)
+    without a lead-in or tail that runs back along it (`open_marks.retraced_ends`), or bowed one way and back by the
+    hand's swing (`open_marks.swung_line`)."""
+    found, swung = _line(raw, noise, diag)
     if found is None:
         kept = open_marks.retraced_ends(raw, noise)
         if kept is not None:
-            found = _line(kept, noise, sg.bbox_diagonal(kept))
-    return found
+            found, _ = _line(kept, noise, sg.bbox_diagonal(kept))
+    return found if found is not None else swung
 
 
-def _line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
+def _line(raw: np.ndarray, noise: float, diag: float) -> tuple[Recognition | None, Recognition | None]:
+    """A line by the line test, or else one the hand's swing bowed (`open_marks.swung_line`), or None each."""
     if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
-        return None  # its ends are not its extent's ends: no line (hooks cost less than half)
+        return None, None  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
     n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
     coarse = sg.smooth(sg.resample(raw, n))
@@ -82,12 +84,14 @@ def _line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     length = sg.path_length(coarse)
     chord = float(np.hypot(*(coarse[-1] - coarse[0])))
     if chord == 0.0:
-        return None
+        return None, None
     err = max(0.0, err - noise / chord)  # the pen's own wobble is not a bend
     slack = 1.0 + 3 * noise / chord
     if (err < LINE and length < 1.12 * chord * slack) or (err < 0.5 * LINE and length < 1.3 * chord * slack):
-        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])), (("arc", 0.2),))
-    return None
+        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])), (("arc", 0.2),)), None
+    if open_marks.swung_line(coarse, err, length / (chord * slack), noise):
+        return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),))
+    return None, None
 
 
 def round_error(ellipse: EllipseFit, noise: float) -> float:
