@@ -63,15 +63,9 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    an arm, not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row
    turning each way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
-   by running back along itself is judged without that piece (`open_marks.retraced_ends`). Marks these rules misjudge
-
-   (`open_shapes._tick_into_bend`), and a short straight arm standing off a stroke with no other corner is an arm,
-   not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row turning each
-   way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the stroke does
-   before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended by running
-   back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed one way
-   and back (turning both ways, no point, no circle fitting its bow, straying under 9 % of its length) is a line
-   (`open_marks.swung_line`). Marks these rules misjudge
+   by running back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed
+   one way and back (turning both ways, no point, no circle fitting its bow, straying under 9 % of its length) is a
+   line (`open_marks.swung_line`). Marks these rules misjudge
    (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
    spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
