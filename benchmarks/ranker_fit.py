@@ -34,12 +34,15 @@ class Recipe:
     inner: int | None = None
     inner_by: str = "source"
     copies_weight: float = 1.0
+    skip_guarded: bool = False
 
     def name(self) -> str:
         parts = [f"lam {self.lam:g}", f"weigh {self.weigh}", "margins " + "/".join(f"{m:g}" for m in self.margins),
                  f"inner {self.inner_by}" + (f" {self.inner}" if self.inner and self.inner_by == "source" else "")]
         if self.drop:
             parts.append("drop " + ",".join(self.drop))
+        if self.skip_guarded:
+            parts.append("guarded strokes not fitted on")
         return "; ".join(parts)
 
 
@@ -99,7 +102,10 @@ def model(d: dict, idx: np.ndarray, recipe: Recipe, groups: np.ndarray | None = 
     """A model fitted on the strokes ``idx`` whose family holds a right kind, each weighing as ``recipe.weigh`` says
     (``groups``: one name a stroke, for every weighing but "stroke"); a dropped feature's column is zero, so its
     weights stay 0."""
-    use = idx[d["right"][idx].any(axis=1)]
+    fits = d["right"][idx].any(axis=1)
+    if recipe.skip_guarded:
+        fits &= ~d["guarded"][idx]
+    use = idx[fits]
     phi = d["phi"][use, :len(ranker.FEATURES)]
     mean = phi.mean(axis=0)
     std = np.where(phi.std(axis=0) > 1e-9, phi.std(axis=0), 1.0)
@@ -154,11 +160,14 @@ def inner_folds(names: list[str], k: int | None) -> list[list[str]]:
 
 
 def answers(d: dict, idx: np.ndarray, m: dict, rows: list[Row], margin: float | None = None) -> np.ndarray:
-    """Whether the recogniser with model ``m`` (at ``margin``, or the model's own) reads each stroke ``idx`` right."""
+    """Whether the recogniser with model ``m`` (at ``margin``, or the model's own) reads each stroke ``idx`` right: the
+    rules' kind where the recogniser does not ask the model (``d["guarded"]``: `ranker.zigzag_teeth`), else
+    `ranker.choose`'s."""
     out = np.zeros(len(idx), dtype=bool)
     margin = m["margin"] if margin is None else margin
     model_ = ranker.Model(m["theta"], m["mean"], m["std"], margin)
     for j, i in enumerate(idx):
-        kind = ranker.choose(d["rules"][i], d["phi"][i], model_)[0] if d["rules"][i] else None
+        rules = d["rules"][i]
+        kind = ranker.choose(rules, d["phi"][i], model_)[0] if rules and not d["guarded"][i] else rules
         out[j] = kind in rows[i]["accepts"]
     return out

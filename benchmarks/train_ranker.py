@@ -54,6 +54,8 @@ LAMBDA = 1e-2
 WIDTH = 4  # the largest family
 SETS = ("ahmadosama", "dollar1", "gtiwari", "hcira", "itt", "mmg")
 """The design sets, each held out whole by the set folds."""
+CACHE_FORMAT = b"guarded"
+"""Bumped when `describe` keeps more per stroke (a key of an older cache would lack it)."""
 DEVICES_UNKNOWN = ("mouse or touch screen",)
 """Devices a set names without saying which (hcira's sinarest1608: a mouse or a touch screen)."""
 
@@ -79,10 +81,12 @@ def device_known(row: Row) -> str:
 
 
 def describe(rows: list[Row], salt: bytes = b"") -> dict:
-    """Per stroke: the rules' kind (without the learned ranker), the features, which family kinds are right;
-    kept in ~/.cache/physink/ under a key of the rows, ``salt`` and the recognition package's source (but the
-    written model, `ranker_model`, which neither the rules without it nor the features read)."""
-    key = hashlib.sha256(json.dumps([r["file"] + r["label"] for r in rows]).encode() + salt)
+    """Per stroke: the rules' kind (without the learned ranker), the features, which family kinds are right, and
+    whether the recogniser keeps the rules' kind without asking the model (``guarded``: a polyline with a zig-zag's
+    teeth, `ranker.zigzag_teeth`); kept in ~/.cache/physink/ under a key of the rows, ``salt`` and the recognition
+    package's source (but the written model, `ranker_model`, which neither the rules without it nor the features
+    read)."""
+    key = hashlib.sha256(json.dumps([r["file"] + r["label"] for r in rows]).encode() + salt + CACHE_FORMAT)
     for f in sorted(Path(ranker.__file__).parent.glob("*.py")):
         if f.name != "ranker_model.py":
             key.update(f.read_bytes())
@@ -90,27 +94,29 @@ def describe(rows: list[Row], salt: bytes = b"") -> dict:
     if cache.exists():
         z = np.load(cache)
         return {"rules": [str(k) if k else None for k in z["rules"]], "phi": z["phi"], "right": z["right"],
-                "rules_right": z["rules_right"]}
+                "rules_right": z["rules_right"], "guarded": z["guarded"]}
     d = _describe(rows)
     cache.parent.mkdir(parents=True, exist_ok=True)
     np.savez(cache, rules=np.array([k or "" for k in d["rules"]]), phi=d["phi"], right=d["right"],
-             rules_right=d["rules_right"])
+             rules_right=d["rules_right"], guarded=d["guarded"])
     return d
 
 
 def _describe(rows: list[Row]) -> dict:
-    rules, phi, right = [], [], []
+    rules, phi, right, guarded = [], [], [], []
     for row in rows:
         stroke = row["strokes"][0]
         times = stroke_times(stroke)
-        kind = recognize_stroke([p[:2] for p in stroke], times, learned=False).kind
-        rules.append(kind)
+        found = recognize_stroke([p[:2] for p in stroke], times, learned=False)
+        rules.append(found.kind)
+        guarded.append(ranker.zigzag_teeth(found))
         phi.append(ranker.features(stroke, times))
-        kinds = ranker.family(kind, phi[-1])
+        kinds = ranker.family(found.kind, phi[-1])
         right.append(np.array([k in row["accepts"] for k in kinds] + [False] * (WIDTH - len(kinds)), dtype=bool))
     return {"rules": rules, "phi": np.array(phi).reshape(len(rows), len(ranker.FEATURES)),
             "right": np.array(right).reshape(len(rows), WIDTH),
-            "rules_right": np.array([k in r["accepts"] for k, r in zip(rules, rows, strict=True)], dtype=bool)}
+            "rules_right": np.array([k in r["accepts"] for k, r in zip(rules, rows, strict=True)], dtype=bool),
+            "guarded": np.array(guarded, dtype=bool)}
 
 
 def with_copies(rows: list[Row], d: dict, copies: int, seed: int) -> tuple[list[Row], dict, np.ndarray]:
@@ -124,8 +130,9 @@ def with_copies(rows: list[Row], d: dict, copies: int, seed: int) -> tuple[list[
     salt = Path(__file__).with_name("augment_strokes.py").read_bytes()
     e = describe(extra, salt)
     d = {"rules": d["rules"] + e["rules"], "phi": np.vstack([d["phi"], e["phi"]]),
-         "right": np.vstack([d["right"], e["right"]]), "rules_right": np.concatenate([d["rules_right"],
-                                                                                        e["rules_right"]]),
+         "right": np.vstack([d["right"], e["right"]]),
+         "rules_right": np.concatenate([d["rules_right"], e["rules_right"]]),
+         "guarded": np.concatenate([d["guarded"], e["guarded"]]),
          "real": np.concatenate([np.ones(n, dtype=bool), np.zeros(len(extra), dtype=bool)]), "copies": copies}
     return rows + extra, d, np.concatenate([np.arange(n), np.array(origin, dtype=int)])
 
@@ -166,18 +173,22 @@ def report(title: str, d: dict, rows: list[Row], sources: np.ndarray, folds: dic
           "% right (strokes).\n")
 
 
-def summary(title: str, d: dict, scored: np.ndarray, by: np.ndarray, results: dict[str, np.ndarray]) -> None:
+def summary(title: str, d: dict, scored: np.ndarray, by: np.ndarray,
+            results: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
     """Per group of ``by`` (a set or a device) and pooled: the rules and each fold scheme's % right (right), and the
-    strokes each scheme gains and loses against the rules."""
+    strokes each scheme gains and loses against the rules; a scheme's cell counts the strokes it scores (its mask:
+    the device folds score no stroke of an unknown device), the rules' all of them."""
     out = []
     rules = d["rules_right"]
     for g in [*sorted(set(by[scored].tolist())), "all"]:
         sel = scored & ((by == g) if g != "all" else True)
         n = int(sel.sum())
         cells = [f"{100 * rules[sel].mean():.2f} ({int(rules[sel].sum())})"]
-        for got in results.values():
-            cells.append(f"{100 * got[sel].mean():.2f} ({int(got[sel].sum())}; +{int((got & ~rules)[sel].sum())} "
-                         f"-{int((rules & ~got)[sel].sum())})")
+        for got, mask in results.values():
+            s = sel & mask
+            cells.append(f"{100 * got[s].mean():.2f} ({int(got[s].sum())}"
+                         + (f" of {int(s.sum())}" if s.sum() != n else "")
+                         + f"; +{int((got & ~rules)[s].sum())} -{int((rules & ~got)[s].sum())})" if s.any() else "")
         out.append([f"**{g}**" if g == "all" else g, n, *cells])
     print(f"### {title}\n")
     print(table(["group", "strokes", "rules % (right)", *(f"{k} % (right; gained -lost)" for k in results)], out)
@@ -215,7 +226,7 @@ def recipe_from(args: argparse.Namespace, lam: float) -> Recipe:
     margins = (0.5,) if args.no_gate else tuple(float(v) for v in args.margins.split(","))
     if not margins or not all(0.0 <= v < 1.0 for v in margins):
         raise SystemExit(f"--margins: {args.margins!r} must be numbers in [0, 1)")
-    return Recipe(lam, args.weigh, drop, margins, args.inner, args.inner_by, args.copies_weight)
+    return Recipe(lam, args.weigh, drop, margins, args.inner, args.inner_by, args.copies_weight, args.skip_guarded)
 
 
 def main() -> None:
@@ -241,6 +252,8 @@ def main() -> None:
                     "(`augment_strokes`; never scored)")
     ap.add_argument("--augment-seed", type=int, default=0)
     ap.add_argument("--copies-weight", type=float, default=1.0, help="the copies of a stroke weigh this in all")
+    ap.add_argument("--skip-guarded", action="store_true", help="fit on no stroke the recogniser never asks the "
+                    "model about (a zig-zag's teeth, `ranker.zigzag_teeth`)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     args = ap.parse_args()
     schemes = [f for f in args.folds.split(",") if f]
@@ -281,7 +294,7 @@ def main() -> None:
     for lam in (float(v) for v in args.lam.split(",")):
         recipe = recipe_from(args, lam)
         fitted = fitted_by(recipe)
-        results: dict[str, np.ndarray] = {}
+        results: dict[str, tuple[np.ndarray, np.ndarray]] = {}
         for scheme in schemes:
             if scheme == "in":
                 m = fitted(design)
@@ -291,7 +304,7 @@ def main() -> None:
             else:
                 got, margins = held_out(d, rows, design, keys_of[scheme], fitted, origin)
                 got = got[:n]
-            results[scheme] = got
+            results[scheme] = (got, scored & (devices[:n] != "") if scheme == "device" else scored)
             if scheme != "device" and not args.brief:
                 folds = {s: got[np.flatnonzero(sources[:n] == s)] for s in sorted(set(sources[design_real]))}
                 report(f"{scheme} folds: each source read by a model fitted without its {scheme} ({recipe.name()}; "
@@ -305,8 +318,9 @@ def main() -> None:
         summary(f"Per device where known ({recipe.name()})", rd, known, devices[:n], results)
         print("RESULT " + recipe.name() + (f"; augment {args.augment} x{args.copies_weight:g}" if args.augment
                                            else "") + " | " + " | ".join(
-            f"{k} {int(v[scored].sum())}/{int(scored.sum())} " + " ".join(
-                f"{s}:{int(v[scored & (sets[:n] == s)].sum())}" for s in SETS) for k, v in results.items()) + "\n")
+            f"{k} {int(v[mask].sum())}/{int(mask.sum())} " + " ".join(
+                f"{s}:{int(v[mask & (sets[:n] == s)].sum())}" for s in SETS) for k, (v, mask) in results.items())
+            + "\n")
     if args.heldback or args.write:
         m_design = fitted_by(recipe)(design)
         n_design = len(set(sources[design_real]))
