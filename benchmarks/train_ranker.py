@@ -23,6 +23,9 @@ the second (`bench_generalisation.held_back_new`) has been design material since
 on nor scored here. ``--write`` fits on every source read, the margin chosen as the recipe says, and writes the model as
 the Python data module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept
 in ~/.cache/physink/ under a key of the rows and the recognition package's source (not the written model's).
+
+The shipped model's recipe, chosen on the set and device folds with every test floor kept (docs/BENCHMARKS.md, "Sixth
+pass"): ``--augment 2 --copies-weight 0.5 --margins 0.5 --write physink_tui/scene/recognition/ranker_model.py``.
 """
 
 from __future__ import annotations
