@@ -2,7 +2,7 @@
 label, with the label -> kind table fixed before scoring (benchmarks/label_kinds.tsv).
 
 Usage: .venv/bin/python benchmarks/bench_generalisation.py SET [SET ...] [--by person|device|set] [--quick]
-       [--defaults] [--heldback] [--third] [--contradictions] [--rules]
+       [--defaults] [--heldback] [--third | --fourth] [--contradictions] [--rules]
 
 Each SET is a .jsonl file or a folder in a form `stroke_sets` reads (the $1 logs, the MMG set, the Drawn Shapes set);
 the sets stay where they are. A source is a person of a set (``--by person``, the default; a set that names no person is
@@ -14,11 +14,12 @@ column is not a held-out figure. Only single-stroke samples of labels the table 
 Sources found after the first 19 whose name draws them into the second held-back group (`in_second_group`) were left out
 unless ``--heldback`` was given, until the group was opened as design material (`SECOND_GROUP_OPEN`, 2026-12-04). The
 sets of the third search (`THIRD_SETS`: the third held-back group) are left out of every run but ``--third``, which
-scores them alone (`scored_rows`). Prints Markdown, and the issue 25 targets met or not (every source >= 98.6 %, every
-label with >= 50 strokes in a source >= 97 % there). With ``--contradictions`` it also prints, beside the raw figure
-(which stays the headline: no stroke is dropped from it), how many strokes of each source the committed contradiction
-tests (`label_contradictions.CONTRADICTIONS`) convict of a label their geometry contradicts, and the targets re-stated
-on the strokes whose label agrees with their geometry.
+scores them alone (`scored_rows`); the sets of the fourth search (`FOURTH_SETS`) likewise, but for ``--fourth``. Prints
+Markdown, and the issue 25 targets met or not (every source >= 98.6 %, every label with >= 50 strokes in a source
+>= 97 % there). With ``--contradictions`` it also prints, beside the raw figure (which stays the headline: no stroke is
+dropped from it), how many strokes of each source the committed contradiction tests
+(`label_contradictions.CONTRADICTIONS`) convict of a label their geometry contradicts, and the targets re-stated on the
+strokes whose label agrees with their geometry.
 """
 
 from __future__ import annotations
@@ -60,6 +61,13 @@ THIRD_SETS = frozenset({"hcira3", "fc"})
 "The third search"): the third held-back group, held back whole, by set name, fixed before any stroke of theirs was
 read. `scored_rows` leaves them out of every run (so `train_ranker.py` never fits on them, `label_contradictions` never
 reads them) unless asked for their group alone (``--third``): the lead scores them once, at the end of a session."""
+FOURTH_SETS = frozenset({"quickdraw", "tutorboard"})
+"""The sets found by the fourth search for public sets (issue 25, 2026-12-04; `benchmarks/SOURCES.md`, "The fourth
+search"): the fourth held-back group, held back whole, by set name, fixed (with their label -> kind rows, 1987277)
+before any stroke of theirs was read, to be the clean measure once the third group is spent. `scored_rows` leaves them
+out of every run (the default run, ``--heldback``, ``--third``, `train_ranker.py` even with ``--write``,
+`label_contradictions`, `compare_readings`, `profile_recognition`) unless asked for their group alone (``--fourth``):
+the lead scores them once, at the end of a session."""
 SECOND_GROUP_OPEN = True
 """The second held-back group was scored on merged code twice without being looked at (issue 25: 97.56 % at the end
 of session 13, 97.78 % at the end of session 14, docs/BENCHMARKS.md) and was opened on 2026-12-04, once the third
@@ -77,15 +85,34 @@ def in_third_group(row: Row) -> bool:
     return row["source"] in THIRD_SETS
 
 
-def scored_rows(rows: list[Row], third: bool = False) -> tuple[list[Row], Counter]:
-    """The rows scored (one stroke, a mapped label) and, for the rest, why not (counted). The third held-back group
-    (`THIRD_SETS`) is left out, counted, unless ``third``: then it alone is scored and every other row left out."""
+def in_fourth_group(row: Row) -> bool:
+    """Whether a row is of a set found by the fourth search (`FOURTH_SETS`), by its set's name alone."""
+    return row["source"] in FOURTH_SETS
+
+
+def held_back_set(set_name: str) -> str | None:
+    """Which held-back group of whole sets a set is in (``third``, ``fourth``), by its name; None for the others."""
+    return "third" if set_name in THIRD_SETS else "fourth" if set_name in FOURTH_SETS else None
+
+
+def scored_rows(rows: list[Row], third: bool = False, fourth: bool = False) -> tuple[list[Row], Counter]:
+    """The rows scored (one stroke, a mapped label) and, for the rest, why not (counted). The third and fourth
+    held-back groups (`THIRD_SETS`, `FOURTH_SETS`) are left out, counted, unless ``third`` or ``fourth``: then that
+    group alone is scored and every other row left out.
+
+    Raises:
+        SystemExit: both ``third`` and ``fourth`` (each group is scored alone).
+    """
+    if third and fourth:
+        raise SystemExit("--third and --fourth: each held-back group is scored alone, once")
+    asked = "third" if third else "fourth" if fourth else None
     labels = read_table()
     kept, left = [], Counter()
     for row in rows:
-        if in_third_group(row) != third:
-            left["of the third held-back group (`THIRD_SETS`; --third scores it alone)" if not third
-                 else "not of the third held-back group (--third scores it alone)"] += 1
+        group = held_back_set(row["source"])
+        if group != asked:
+            left[f"of the {group} held-back group (`{group.upper()}_SETS`; --{group} scores it alone)" if group
+                 else f"not of the {asked} held-back group (--{asked} scores it alone)"] += 1
             continue
         cls = labels.label_class(row["source"], row["label"])
         if cls is None:
@@ -110,7 +137,7 @@ def held_back(rows: list[Row]) -> set[str]:
 def in_second_group(source: str) -> bool:
     """Whether a source found after `FIRST_SOURCES` was drawn into the second group (`HELD_BACK_SEED_NEW`); by its
     name alone, whether or not the group is still held back (`SECOND_GROUP_OPEN`)."""
-    if source.split(":", 1)[0] in THIRD_SETS:  # the third search's sets are a group of their own
+    if held_back_set(source.split(":", 1)[0]):  # the third and fourth searches' sets are groups of their own
         return False
     return source not in FIRST_SOURCES and int(hashlib.sha256((HELD_BACK_SEED_NEW + source).encode()).hexdigest(),
                                                 16) % 2 == 0
@@ -134,9 +161,10 @@ def held_back_new(rows: list[Row]) -> set[str]:
 
 def group_of(source: str, first_group: set[str]) -> str:
     """Which group a person's source is pooled in: the first 19's design part or held-back part, the sources found
-    by the second search, design or held back, or the third held-back group."""
-    if source.split(":", 1)[0] in THIRD_SETS:
-        return "third held back"
+    by the second search, design or held back, or the third or fourth held-back group."""
+    group = held_back_set(source.split(":", 1)[0])
+    if group:
+        return f"{group} held back"
     if source in FIRST_SOURCES:
         return "first held back" if source in first_group else "first design"
     return "new held back" if in_second_group(source) else "new design"
@@ -217,8 +245,9 @@ def leave_one_source_out(rows: list[Row], by: str, grid: list[Weights], contradi
                  + (", opened 2026-12-04: no longer a held-out figure" if SECOND_GROUP_OPEN else ", held back")
                  + f"): {_share(pooled, 'new held back')}"
                  if pooled["new held back"] else "") + ".\n")
-    if by == "person" and pooled["third held back"]:
-        print(f"The third held-back group (`THIRD_SETS`): {_share(pooled, 'third held back')}.\n")
+    for group in ("third", "fourth"):
+        if by == "person" and pooled[f"{group} held back"]:
+            print(f"The {group} held-back group (`{group.upper()}_SETS`): {_share(pooled, f'{group} held back')}.\n")
     print("Issue 25 targets (every source >= 98.6 %; every label with >= 50 strokes in a source >= 97 %): "
           + ("met" if not misses else "not met: " + "; ".join(misses)) + "\n")
     if contradicted is not None:
@@ -266,6 +295,8 @@ def main() -> None:
     ap.add_argument("--heldback", action="store_true", help="score the second held-back group too (once, at the end)")
     ap.add_argument("--third", action="store_true", help="score the third held-back group alone (`THIRD_SETS`; once, "
                     "by the lead, at the end of a session)")
+    ap.add_argument("--fourth", action="store_true", help="score the fourth held-back group alone (`FOURTH_SETS`; "
+                    "once, by the lead, at the end of a session)")
     ap.add_argument("--contradictions", action="store_true", help="also count the strokes whose label the committed "
                     "contradiction tests convict, and re-state the targets without them (beside the raw figure)")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
@@ -276,7 +307,7 @@ def main() -> None:
             rows += read_set(path)
         except (OSError, ValueError) as exc:
             raise SystemExit(f"bench_generalisation: {exc}") from None
-    kept, left = scored_rows(rows, third=args.third)
+    kept, left = scored_rows(rows, third=args.third, fourth=args.fourth)
     if not args.heldback:
         hidden = held_back_new(kept)
         n = len(kept)

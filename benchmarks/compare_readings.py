@@ -8,8 +8,8 @@ tree: as recorded (times in seconds where the set has them, as `bench_generalisa
 into a temporary folder (`bench_side_by_side.export`); one worker process per tree imports its own package through
 PYTHONPATH and writes every reading (kind, confidence, beautified geometry, alternatives, reason) as JSON, whose floats
 round-trip exactly. Prints how many readings differ in kind, and in anything at all (geometry beyond ``--tolerance``,
-confidence, alternatives), by set; nothing about any stroke. The second and third held-back groups
-(`bench_generalisation.is_held_back_new`, `in_third_group`) are left out entirely: their strokes are not recognised.
+confidence, alternatives), by set; nothing about any stroke. The second, third and fourth held-back groups
+(`bench_generalisation.is_held_back_new`, `held_back_set`) are left out entirely: their strokes are not recognised.
 """
 
 from __future__ import annotations
@@ -30,13 +30,13 @@ MODES = ("as drawn", "200 points")
 
 def strokes(paths: list[Path]) -> list[tuple[str, list[list[float]], list[float] | None]]:
     """Each kept single-stroke sample as (set, points, times or None), the second held-back group left out."""
-    from bench_generalisation import in_third_group, is_held_back_new
+    from bench_generalisation import held_back_set, is_held_back_new
     from stroke_sets import read_set, source_of
 
     out = []
     for path in paths:
         for row in read_set(path):
-            if len(row["strokes"]) != 1 or in_third_group(row) or is_held_back_new(source_of(row, "person")):
+            if len(row["strokes"]) != 1 or held_back_set(row["source"]) or is_held_back_new(source_of(row, "person")):
                 continue
             stroke = row["strokes"][0]
             times = ([p[2] / 1000 for p in stroke] if stroke and all(len(p) > 2 and p[2] is not None for p in stroke)

@@ -1,7 +1,7 @@
 """Gathers every public stroke set the benchmarks score into JSON Lines under ``~/.cache/physink/``, each read from a
 public repository at the commit measured: one command regenerates them all.
 
-Usage: .venv/bin/python benchmarks/public_sets.py [--mirrors DIR] [--out DIR]
+Usage: .venv/bin/python benchmarks/public_sets.py [--mirrors DIR] [--out DIR] [--only SET ...]
 
 Writes ``DIR/student-sets/itt.jsonl`` (the first 16 students, `student_sets.REPOS`) and, from `ENTRIES` (issue 25's
 second search, `benchmarks/SOURCES.md`), ``DIR/public-sets/<set>.jsonl`` (``itt-more.jsonl`` for the ITT
@@ -12,8 +12,11 @@ set (Anthony & Wobbrock 2012, set ``mmg``: 20 people, stylus or finger on a Tabl
 holds it; and the sets of the third search (`THIRD_ENTRIES`: set ``hcira3``, two more HCIRA teams' people, on a
 trackpad, a mouse, a stylus on an iPad and a finger on a touch screen; set ``fc``, the online handwritten flowchart
 database FC, a writer a source, read from InkML), which are the third held-back group
-(`bench_generalisation.THIRD_SETS`: scored only by ``bench_generalisation.py --third``, by the lead, once). None
-carries a licence that allows copying it, so nothing is committed; a repository is read from
+(`bench_generalisation.THIRD_SETS`: scored only by ``bench_generalisation.py --third``, by the lead, once); and the
+sets of the fourth search (`FOURTH_ENTRIES`, read by `fourth_sets`: set ``quickdraw``, single drawings of Quick, Draw!
+players, a country a source; set ``tutorboard``, one person's pen strokes), the fourth held-back group
+(`bench_generalisation.FOURTH_SETS`: scored only by ``--fourth``). Only Quick, Draw! (CC BY 4.0) carries a licence
+that allows copying it, and nothing is committed; a repository is read from
 ``DIR/<owner>+<name>/repo`` (as the fetch tool leaves them) or cloned bare into the cache (`student_sets.git_dir`).
 
 Each entry names the folder holding one person's recordings (``ONE``) or a folder of per-person subfolders
@@ -37,12 +40,13 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import NamedTuple
 
+import fourth_sets
 import student_sets
 from student_sets import _git, git_dir, reserved_points, times_ms
 
 CACHE = Path.home() / ".cache" / "physink"
 ONE, PER_FOLDER = "one", "per-folder"
-XML, ACCORD, JAVA, INKML = "xml", "accord", "java", "inkml"
+XML, ACCORD, JAVA, INKML, QUICKDRAW, SMARTINK = "xml", "accord", "java", "inkml", "quickdraw", "smartink"
 INK = "{http://www.w3.org/2003/InkML}"
 
 
@@ -61,7 +65,10 @@ class Entry(NamedTuple):
     form: str = XML
     """`XML`: a gesture a file ($1 or $N form); `ACCORD`: a file a label of ``<Sequence>`` samples (the Accord.NET
     gesture sample's form); `JAVA`: a folder a label of Java-serialised samples; `INKML`: a diagram a file, its
-    symbols trace groups labelled by their ``truth`` annotation, its writer named in the file (the FC database)."""
+    symbols trace groups labelled by their ``truth`` annotation, its writer named in the file (the FC database);
+    `QUICKDRAW`: Quick, Draw! raw NDJSON, a file a category (``only``: the categories read), a drawing's person its
+    country; `SMARTINK`: TutorBoard's gzipped corpora (``only``: the files read), their person ``person``
+    (`fourth_sets`)."""
     rename: tuple[str, str] = ("", "")
     """`PER_FOLDER`: (a prefix put before, a suffix taken off) each subfolder's name to name its person, so that one
     person's folders on several devices are one source (``user01mouse`` -> ``user01``) and two studies of one team
@@ -85,6 +92,21 @@ THIRD_ENTRIES: tuple[Entry, ...] = (
 )
 """The sets of the third search (issue 25, `bench_generalisation.THIRD_SETS`: the third held-back group, never
 designed on; `benchmarks/SOURCES.md`, "The third search")."""
+QUICKDRAW_DEVICE = "mouse or touch (the Quick, Draw! web game; not recorded)"
+TUTORBOARD = ("ArtemLevin/tutorboard", "3b2766953482f1d7dc7f632f689f24efffeafa03")
+FOURTH_ENTRIES: tuple[Entry, ...] = (
+    Entry("quickdraw", "borismus/exupery", "5ab788cb27b61d790d9f289d2fb3944748115f85", "docs/sketches",
+          QUICKDRAW_DEVICE, ONE, form=QUICKDRAW,
+          only=("circle", "hexagon", "line", "octagon", "square", "squiggle", "star", "triangle", "zigzag")),
+    *(Entry("quickdraw", *TUTORBOARD, f"tests/fixtures/smart-ink-corpus/{folder}", QUICKDRAW_DEVICE, ONE,
+            f"tutorboard/seed{seed}", (f"{name}.seed-{seed}.json.gz",), SMARTINK)
+      for folder, name, seed in (("external", "quickdraw", 90210), ("external-v2", "holdout", 170731),
+                                 ("external-v3", "negative-holdout", 260730))),
+    Entry("tutorboard", *TUTORBOARD, "tests/fixtures/smart-ink-corpus/captured-chromium-v1",
+          "pen on a Windows laptop (Chromium)", ONE, "captured-chromium-v1", ("corpus.json.gz",), SMARTINK),
+)
+"""The sets of the fourth search (issue 25, `bench_generalisation.FOURTH_SETS`: the fourth held-back group, never
+designed on; `benchmarks/SOURCES.md`, "The fourth search")."""
 ENTRIES: tuple[Entry, ...] = (
     Entry("itt", "ITT-24/assignment-6-gesture-recognition-EmmaSophieReichert",
           "32d2840d2a55803e49d522f51e260a494c71589e", "dataset/my-dataset", "mouse", ONE, "EmmaSophieReichert"),
@@ -115,8 +137,9 @@ ENTRIES: tuple[Entry, ...] = (
     Entry("gtiwari", "gtiwari333/mouse-gesture-recognition-java-hidden-markov-model",
           "06d93512747fca7352b4d7e1c5417f999767ad8f", "trainData", "mouse", ONE, "gtiwari333", form=JAVA),
     *THIRD_ENTRIES,
+    *FOURTH_ENTRIES,
 )
-"""Every set of the second and third searches (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and
+"""Every set of the second, third and fourth searches (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and
 how."""
 
 SPELLINGS = {**student_sets.LABEL_SPELLINGS, "pig_tail": "pigtail", "zig_zag": "zigzag",
@@ -252,6 +275,22 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
                                                         1):
                 yield f"{at}{name}#{k}", writer, entry.device, label, strokes, ""
         return
+    if entry.form == QUICKDRAW:  # a file a category, a drawing a line; its person is its country
+        for category in entry.only:
+            name = f"{entry.folder}/{category}.ndjson"
+            for key, country, word, strokes in fourth_sets.quickdraw_drawings(at + name, _git(gdir, "show",
+                                                                                              f"{c}:{name}")):
+                yield f"{at}{name}#{key}", country, entry.device, word, strokes, ""
+        return
+    if entry.form == SMARTINK:  # TutorBoard's corpora: only the strokes drawn by people of the entry's set
+        keep = fourth_sets.QUICKDRAW_DATASET if entry.set_name == "quickdraw" else fourth_sets.CAPTURED
+        for name in entry.only:
+            path = f"{entry.folder}/{name}"
+            for k, (dataset, label, stroke) in enumerate(fourth_sets.smartink_samples(at + path, _git(
+                    gdir, "show", f"{c}:{path}"))):
+                if dataset == keep:
+                    yield f"{at}{path}#{k}", entry.person, entry.device, label, [stroke], ""
+        return
     if entry.form == JAVA:  # a folder per label, a serialised RawFeature per sample
         for sub in _subfolders(gdir, c, entry.folder):
             for name in _files(gdir, c, sub, ".TRAINDATA"):
@@ -327,6 +366,8 @@ def main() -> None:
     ap.add_argument("--mirrors", type=Path, default=Path("/work/.mirror"),
                     help="folder of fetched repositories (<owner>+<name>/repo); cloned from GitHub when absent")
     ap.add_argument("--out", type=Path, default=CACHE)
+    ap.add_argument("--only", nargs="+", metavar="SET", help="write only these sets' files (every set is still read, "
+                    "so a stroke copied from an earlier set is still caught)")
     args = ap.parse_args()
     skipped: list[str] = []
     try:
@@ -337,9 +378,16 @@ def main() -> None:
     outputs = {args.out / "student-sets" / "itt.jsonl": first}
     outputs.update({args.out / "public-sets" / f"{'itt-more' if name == 'itt' else name}.jsonl": rows
                     for name, rows in sets.items()})
+    if args.only:
+        unknown = set(args.only) - set(sets) - {"itt-more"}
+        if unknown:
+            raise SystemExit(f"public_sets: --only {sorted(unknown)}: no such set (sets: {sorted(sets)})")
+        outputs = {p: rows for p, rows in outputs.items() if p.parent.name == "public-sets" and p.stem in args.only}
     for path, rows in outputs.items():
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text("".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows), encoding="utf-8")
+        partial = path.with_suffix(".partial")  # written whole, then renamed: a run reading it never sees half
+        partial.write_text("".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows), encoding="utf-8")
+        partial.replace(path)
         people = {r["subject"] for r in rows}
         print(f"{len(rows)} gestures of {len(people)} people -> {path}")
     for where in sorted(set(skipped)):

@@ -7,12 +7,16 @@ import subprocess
 from pathlib import Path
 
 
-def commit_mirror(tmp_path: Path, repo: str, files: dict[str, str]) -> tuple[Path, str]:
-    """Commits ``files`` (path → text); returns the mirrors folder (``<owner>+<name>/repo`` inside) and the commit."""
+def commit_mirror(tmp_path: Path, repo: str, files: dict[str, str | bytes]) -> tuple[Path, str]:
+    """Commits ``files`` (path → text, or bytes as they are); returns the mirrors folder (``<owner>+<name>/repo``
+    inside) and the commit."""
     work = tmp_path / "work"
     for name, text in files.items():
         (work / name).parent.mkdir(parents=True, exist_ok=True)
-        (work / name).write_text(text, encoding="utf-8")
+        if isinstance(text, bytes):
+            (work / name).write_bytes(text)
+        else:
+            (work / name).write_text(text, encoding="utf-8")
     git = ["git", "-C", str(work), "-c", "user.name=t", "-c", "user.email=t@t"]
     subprocess.run([*git[:3], "init", "-q"], check=True)
     subprocess.run([*git, "add", "-A"], check=True)

@@ -15,6 +15,7 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_generalisation import (
     FIRST_STUDENTS,
+    FOURTH_SETS,
     SECOND_GROUP_OPEN,
     THIRD_SETS,
     group_of,
@@ -313,3 +314,82 @@ def test_the_third_flag_scores_the_third_group_alone_and_the_default_run_never(t
     assert "| dollar1:s02 | 1 |" in out and "hcira3:" not in out.split("### Leave one source out")[1]
     assert "fc:" not in out.split("### Leave one source out")[1] and "third held-back group" not in out.split(
         "### Leave one source out")[1]
+
+
+def test_the_fourth_search_sets_are_left_out_of_every_run_but_their_own_and_never_fitted_on(tmp_path, capsys,
+                                                                                            monkeypatch) -> None:
+    """The fourth held-back group (issue 25's fourth search) is held back whole by its sets' names: the default run,
+    `--heldback`, `--third`, the ranker's training (even when writing the shipped model), the contradiction tests and
+    the readings compared or profiled never see it; `--fourth` scores it alone, and never with `--third`."""
+    import label_contradictions
+    from compare_readings import strokes
+    from train_ranker import rows_read
+
+    table = read_table()
+
+    def row(set_name: str, person: str) -> dict:
+        label = next(lab for lab, cls in sorted(table.of_set(set_name).items()) if cls != "-")
+        return {"source": set_name, "subject": person, "label": label, "file": f"{set_name}-{person}",
+                "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(_circle())]]}
+
+    assert FOURTH_SETS and not FOURTH_SETS & (THIRD_SETS | {"dollar1", "itt", "hcira", "mmg", "ahmadosama", "gtiwari",
+                                                             "bouchal"})
+    earlier = [row("dollar1", "s02"), row("itt", "Ferdi-FM"), row("itt", "DerD4n")]
+    earlier += [row("hcira", f"team/user{k}") for k in range(12)]
+    third = [row(name, f"team/user{k}") for name in sorted(THIRD_SETS) for k in range(3)]
+    fourth = [row(name, f"p{k}") for name in sorted(FOURTH_SETS) for k in range(12)]
+    everything = earlier + third + fourth
+    kept, left = scored_rows(everything)
+    assert len(kept) == len(earlier) and {r["source"] for r in kept}.isdisjoint(FOURTH_SETS)
+    assert sum(n for why, n in left.items() if "fourth held-back group" in why) == len(fourth)
+    only_third, _ = scored_rows(everything, third=True)
+    assert {r["source"] for r in only_third} == set(THIRD_SETS)
+    only, left_fourth = scored_rows(everything, fourth=True)
+    assert {r["source"] for r in only} == set(FOURTH_SETS) and len(only) == len(fourth)
+    assert sum(left_fourth.values()) == len(earlier) + len(third)
+    with pytest.raises(SystemExit, match="each held-back group is scored alone"):
+        scored_rows(everything, third=True, fourth=True)
+    for heldback, write in ((False, False), (True, False), (False, True), (True, True)):
+        read, first, new = rows_read(everything, heldback, write)
+        assert read and {r["source"] for r in read}.isdisjoint(FOURTH_SETS | THIRD_SETS)
+        assert not any(s.split(":")[0] in FOURTH_SETS for s in first | new)
+    sources = {source_of(r, "person") for r in fourth}
+    assert not any(is_held_back_new(s) for s in sources) and not second_group(fourth)
+    assert {group_of(s, set()) for s in sources} == {"fourth held back"}
+    path = tmp_path / "sets.jsonl"
+    path.write_text("".join(json.dumps(r) + "\n" for r in everything))
+    assert {name for name, _, _ in strokes([path])} == {"dollar1", "itt", "hcira"}  # compare_readings, profiling
+    monkeypatch.setattr(sys, "argv", ["label_contradictions.py", str(path), "--invariants", "--files", "none"])
+    label_contradictions.main()
+    out = capsys.readouterr().out
+    assert "dollar1:s02" in out and not any(name in out for name in FOURTH_SETS | THIRD_SETS)
+
+
+def test_the_fourth_flag_scores_the_fourth_group_alone_and_no_other_run_does(tmp_path, capsys, monkeypatch) -> None:
+    """`bench_generalisation.py SETS --fourth --defaults` (the lead's one run) scores only the fourth group's sources,
+    pooled apart; the same sets with `--third`, with `--heldback` or alone score none of them (strokes made here)."""
+    import bench_generalisation
+
+    def row(set_name: str, person: str, label: str, points) -> dict:
+        return {"source": set_name, "subject": person, "label": label, "file": f"{set_name}-{person}-{label}",
+                "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(points)]]}
+
+    rows = [row("quickdraw", country, "circle", _circle(30 + 5 * k)) for k, country in enumerate(("US", "FI"))]
+    rows += [row("tutorboard", "captured-chromium-v1", "square", _square(70)), row("dollar1", "s02", "circle",
+                                                                                  _circle(50)),
+             row("dollar1", "s03", "rectangle", _square(90))]
+    rows += [row("hcira3", f"team/user0{k}", "circle", _circle(40 + k)) for k in (1, 2)]
+    path = tmp_path / "sets.jsonl"
+    path.write_text("".join(json.dumps(r) + "\n" for r in rows))
+    monkeypatch.setattr(sys, "argv", ["bench_generalisation.py", str(path), "--fourth", "--defaults"])
+    bench_generalisation.main()
+    out = capsys.readouterr().out.split("### Leave one source out")[1]
+    assert "| quickdraw:US | 1 |" in out and "| tutorboard:captured-chromium-v1 | 1 |" in out
+    assert "dollar1:" not in out and "hcira3:" not in out
+    assert "The fourth held-back group (`FOURTH_SETS`): 3/3 = 100.00 %." in out
+    for flags in ([], ["--heldback"], ["--third"]):
+        monkeypatch.setattr(sys, "argv", ["bench_generalisation.py", str(path), "--defaults", *flags])
+        bench_generalisation.main()
+        out = capsys.readouterr().out
+        assert "quickdraw:" not in out.split("### Leave one source out")[1] and "tutorboard:" not in out
+        assert "fourth held-back group (`FOURTH_SETS`; --fourth scores it alone)" in out.split("### Leave")[0]
