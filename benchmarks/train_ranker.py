@@ -26,7 +26,8 @@ imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept
 rows and the recognition package's source (not the written model's).
 
 The shipped model's recipe, chosen on the set and device folds with every test floor kept (docs/BENCHMARKS.md, "Sixth
-pass"): ``--augment 2 --copies-weight 0.5 --margins 0.5 --write physink_tui/scene/recognition/ranker_model.py``.
+pass"): ``--augment 2 --copies-weight 0.5 --margins 0.5 --drop sparse,has_times,corner_slowdown --write
+physink_tui/scene/recognition/ranker_model.py``.
 """
 
 from __future__ import annotations
