@@ -1,23 +1,33 @@
-"""Trains and measures the learned ranker (`recognition.ranker`) leave one source out, beside today's rules.
+"""Trains and measures the learned ranker (`recognition.ranker`) on sets, devices and sources it was not fitted on.
 
-Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--heldback] [--write PATH] [--lam L] [--no-gate]
-       [--inner K] [--weigh W]
+Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--folds set,device,source,in] [--brief]
+       [--lam L[,L...]] [--weigh W] [--drop F[,F...]] [--margins M[,M...]] [--inner K] [--inner-by source|set]
+       [--augment K] [--augment-seed S] [--copies-weight A] [--no-gate] [--heldback] [--write PATH]
 
 For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve, or
 a polygon left open (`ranker.family`), the ranker scores the family's kinds by ``w_kind . phi + a * [the rules'
-answer]`` over standardised features (`ranker.features`). The weights are fitted by conditional-logit maximum likelihood
-(Newton steps on the likelihood's Fisher matrix, L2 penalty `LAMBDA`, fixed beforehand, not tuned). The model's kind
-replaces the rules' only when its chance is over a margin (`MARGINS`) chosen by leave-one-source-out inside the sources
-the model is fitted on. Design folds: each source not held back is scored by a model (and margin) fitted on the other
-design sources only. The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or
-``--write`` is given; the second (sources found later, `bench_generalisation.held_back_new`) was read only with
-``--heldback`` until it was opened as design material (`bench_generalisation.SECOND_GROUP_OPEN`): now it is read always;
-the third and fourth (the sets of the third and fourth searches, `bench_generalisation.THIRD_SETS`, `FOURTH_SETS`)
-never: they are neither fitted on nor scored here; each group is then scored per source and per class, apart, by a model
-fitted on the design sources. ``--write`` fits on every source given but the second held-back group (the margin chosen
-by leave-one-source-out over them) and writes the model as the Python data module the recogniser imports (PATH:
-physink_tui/scene/recognition/ranker_model.py). Features are kept in ~/.cache/physink/ under a key of the rows and the
-recognition package's source.
+answer]`` over standardised features (`ranker.features`), fitted by conditional-logit maximum likelihood (`ranker_fit`:
+Newton steps, L2 penalty ``--lam``). The model's kind replaces the rules' only when its chance is over a margin
+(``--margins``) chosen inside the strokes the model is fitted on, on folds of whole sources (``--inner``) or sets
+(``--inner-by set``). A recipe (`ranker_fit.Recipe`) is judged on strokes of whole groups it was not fitted on
+(``--folds``): **set** (the headline: each set — dollar1, itt, hcira, mmg, ahmadosama, gtiwari — read by a model
+fitted without the whole set), **device** (each pen kind where it is known, `device_known`: stylus, touch or mouse,
+read by a model fitted without that device; strokes of an unknown device are neither fitted on nor scored there),
+**source** (each person read by a model fitted without them) and **in** (in-sample: the model fitted on every design
+source reads them). ``--augment K`` adds K training-only copies of each training stroke (`augment_strokes`; never
+scored). Tables per set and device (``--brief``: only these), per source and class; a ``RESULT`` line per run.
+
+The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given;
+the second (`bench_generalisation.held_back_new`) has been design material since it was opened
+(`bench_generalisation.SECOND_GROUP_OPEN`); the third and fourth (the sets of the third and fourth searches,
+`bench_generalisation.THIRD_SETS`, `FOURTH_SETS`) never: they are neither fitted on nor scored here. ``--write`` fits on
+every source read, the margin chosen as the recipe says, and writes the model as the Python data module the recogniser
+imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in ~/.cache/physink/ under a key of the
+rows and the recognition package's source (not the written model's).
+
+The shipped model's recipe, chosen on the set and device folds with every test floor kept (docs/BENCHMARKS.md, "Sixth
+pass"): ``--augment 2 --copies-weight 0.5 --margins 0.5 --drop sparse,has_times,corner_slowdown --write
+physink_tui/scene/recognition/ranker_model.py``.
 """
 
 from __future__ import annotations
@@ -33,17 +43,26 @@ from collections import Counter
 from pathlib import Path
 
 import numpy as np
+from augment_strokes import augmented_rows
 from bench_generalisation import held_back, held_back_new, scored_rows
 from bench_recognition import machine, table
+from ranker_fit import Recipe, answers, gated_model, inner_folds, model
 from stroke_sets import Row, read_set, source_of
 
 from physink_tui.scene.recognition import ranker
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
-MARGINS = (0.5, 0.7, 0.9)
+__all__ = ["inner_folds"]  # the folds' dealing, tested from here
+
 LAMBDA = 1e-2
-"""The L2 penalty, fixed before any fit was scored (not tuned)."""
+"""The L2 penalty, fixed before any fit was scored (the sixth pass's sensitivity grid: docs/BENCHMARKS.md)."""
 WIDTH = 4  # the largest family
+SETS = ("ahmadosama", "dollar1", "gtiwari", "hcira", "itt", "mmg")
+"""The design sets, each held out whole by the set folds."""
+CACHE_FORMAT = b"guarded"
+"""Bumped when `describe` keeps more per stroke (a key of an older cache would lack it)."""
+DEVICES_UNKNOWN = ("mouse or touch screen",)
+"""Devices a set names without saying which (hcira's sinarest1608: a mouse or a touch screen)."""
 
 
 def stroke_times(stroke: list) -> list[float] | None:
@@ -61,136 +80,81 @@ def device_of(row: Row) -> str:
     return "touch" if device in ("finger", "touchpad") or device.startswith("finger on") else "mouse"
 
 
-def describe(rows: list[Row]) -> dict:
-    """Per stroke: the rules' kind (without the learned ranker), the features, which family kinds are right;
-    kept in ~/.cache/physink/ under a key of the rows and the recognition package's source."""
-    key = hashlib.sha256(json.dumps([r["file"] + r["label"] for r in rows]).encode())
+def device_known(row: Row) -> str:
+    """`device_of` where the set says which pen it was; "" where it does not (`DEVICES_UNKNOWN`)."""
+    return "" if str(row.get("device") or "") in DEVICES_UNKNOWN else device_of(row)
+
+
+def describe(rows: list[Row], salt: bytes = b"") -> dict:
+    """Per stroke: the rules' kind (without the learned ranker), the features, which family kinds are right, and
+    whether the recogniser keeps the rules' kind without asking the model (``guarded``: a polyline with a zig-zag's
+    teeth, `ranker.zigzag_teeth`); kept in ~/.cache/physink/ under a key of the rows, ``salt`` and the recognition
+    package's source (but the written model, `ranker_model`, which neither the rules without it nor the features
+    read)."""
+    key = hashlib.sha256(json.dumps([r["file"] + r["label"] for r in rows]).encode() + salt + CACHE_FORMAT)
     for f in sorted(Path(ranker.__file__).parent.glob("*.py")):
-        key.update(f.read_bytes())
+        if f.name != "ranker_model.py":
+            key.update(f.read_bytes())
     cache = Path.home() / ".cache" / "physink" / f"ranker-{key.hexdigest()[:16]}.npz"
     if cache.exists():
         z = np.load(cache)
         return {"rules": [str(k) if k else None for k in z["rules"]], "phi": z["phi"], "right": z["right"],
-                "rules_right": z["rules_right"]}
+                "rules_right": z["rules_right"], "guarded": z["guarded"]}
     d = _describe(rows)
     cache.parent.mkdir(parents=True, exist_ok=True)
     np.savez(cache, rules=np.array([k or "" for k in d["rules"]]), phi=d["phi"], right=d["right"],
-             rules_right=d["rules_right"])
+             rules_right=d["rules_right"], guarded=d["guarded"])
     return d
 
 
 def _describe(rows: list[Row]) -> dict:
-    rules, phi, right = [], [], []
+    rules, phi, right, guarded = [], [], [], []
     for row in rows:
         stroke = row["strokes"][0]
         times = stroke_times(stroke)
-        kind = recognize_stroke([p[:2] for p in stroke], times, learned=False).kind
-        rules.append(kind)
+        found = recognize_stroke([p[:2] for p in stroke], times, learned=False)
+        rules.append(found.kind)
+        guarded.append(ranker.zigzag_teeth(found))
         phi.append(ranker.features(stroke, times))
-        kinds = ranker.family(kind, phi[-1])
+        kinds = ranker.family(found.kind, phi[-1])
         right.append(np.array([k in row["accepts"] for k in kinds] + [False] * (WIDTH - len(kinds)), dtype=bool))
-    return {"rules": rules, "phi": np.array(phi), "right": np.array(right),
-            "rules_right": np.array([k in r["accepts"] for k, r in zip(rules, rows, strict=True)])}
+    return {"rules": rules, "phi": np.array(phi).reshape(len(rows), len(ranker.FEATURES)),
+            "right": np.array(right).reshape(len(rows), WIDTH),
+            "rules_right": np.array([k in r["accepts"] for k, r in zip(rules, rows, strict=True)], dtype=bool),
+            "guarded": np.array(guarded, dtype=bool)}
 
 
-def tensors(d: dict, idx: np.ndarray, mean: np.ndarray, std: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    p = (len(ranker.FEATURES) + 1) * len(ranker.KINDS) + 1
-    x = np.zeros((len(idx), WIDTH, p))
-    mask = np.zeros((len(idx), WIDTH), dtype=bool)
-    for j, i in enumerate(idx):
-        kinds = ranker.family(d["rules"][i], d["phi"][i])
-        x[j, :len(kinds)] = ranker.design(kinds, (d["phi"][i, :len(ranker.FEATURES)] - mean) / std, d["rules"][i])
-        mask[j, :len(kinds)] = True
-    return x, mask
+def with_copies(rows: list[Row], d: dict, copies: int, seed: int) -> tuple[list[Row], dict, np.ndarray]:
+    """The rows and their description with ``copies`` training-only copies of each stroke the family can read right
+    appended (`augment_strokes`), and for every row the index of the people's row it is or was copied from."""
+    n = len(rows)
+    d = {**d, "real": np.ones(n, dtype=bool), "copies": copies}
+    if not copies:
+        return rows, d, np.arange(n)
+    extra, origin = augmented_rows(rows, copies, seed, ranker.KINDS)
+    salt = Path(__file__).with_name("augment_strokes.py").read_bytes()
+    e = describe(extra, salt)
+    d = {"rules": d["rules"] + e["rules"], "phi": np.vstack([d["phi"], e["phi"]]),
+         "right": np.vstack([d["right"], e["right"]]),
+         "rules_right": np.concatenate([d["rules_right"], e["rules_right"]]),
+         "guarded": np.concatenate([d["guarded"], e["guarded"]]),
+         "real": np.concatenate([np.ones(n, dtype=bool), np.zeros(len(extra), dtype=bool)]), "copies": copies}
+    return rows + extra, d, np.concatenate([np.arange(n), np.array(origin, dtype=int)])
 
 
-def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: int = 40,
-        weight: np.ndarray | None = None) -> np.ndarray:
-    """Conditional-logit weights maximising the mean log chance of a right kind (weighted by ``weight`` when given),
-    minus ``lam / 2 |theta|^2``."""
-    theta = np.zeros(x.shape[2])
-    theta[-1] = 1.0
-    w = np.full(len(x), 1.0 / len(x)) if weight is None else weight / weight.sum()
-
-    def loss(t: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
-        s = np.where(mask, (x.reshape(-1, x.shape[2]) @ t).reshape(mask.shape), -np.inf)
-        s = s - s.max(axis=1, keepdims=True)
-        e = np.exp(s)
-        p = e / e.sum(axis=1, keepdims=True)
-        pr = np.where(right, p, 0.0).sum(axis=1)
-        nll = -float(w @ np.log(np.maximum(pr, 1e-300))) + 0.5 * lam * float(t @ t)
-        return nll, p, pr
-
-    for _ in range(steps):
-        nll, p, pr = loss(theta)
-        q = np.where(right, p, 0.0) / np.maximum(pr, 1e-300)[:, None]
-        ex = (p[:, :, None] * x).sum(axis=1)
-        grad = w @ (ex - (q[:, :, None] * x).sum(axis=1)) + lam * theta
-        centred = (x - ex[:, None, :]) * np.sqrt(p * w[:, None])[:, :, None]
-        flat = centred.reshape(-1, x.shape[2])
-        hess = flat.T @ flat + lam * np.eye(len(theta))
-        step = np.linalg.solve(hess, grad)
-        rate = 1.0
-        while rate > 1e-4 and loss(theta - rate * step)[0] > nll:
-            rate /= 2
-        theta = theta - rate * step
-        if nll - loss(theta)[0] < 1e-10:
-            break
-    return theta
-
-
-def model(d: dict, idx: np.ndarray, lam: float, groups: np.ndarray | None = None) -> dict:
-    """A model fitted on the strokes ``idx`` whose family holds a right kind; each stroke weighs the same, or, given
-    ``groups`` (one name a stroke), each group does."""
-    use = idx[d["right"][idx].any(axis=1)]
-    phi = d["phi"][use, :len(ranker.FEATURES)]
-    mean = phi.mean(axis=0)
-    std = np.where(phi.std(axis=0) > 1e-9, phi.std(axis=0), 1.0)
-    x, mask = tensors(d, use, mean, std)
-    weight = None if groups is None else group_weights(groups[use])
-    return {"theta": fit(x, mask, d["right"][use], lam, weight=weight), "mean": mean, "std": std, "lam": lam,
-            "margin": 0.5}
-
-
-def group_weights(groups: np.ndarray) -> np.ndarray:
-    """Each stroke's weight in the likelihood when every group (a source, or a device) weighs the same."""
-    count = Counter(groups.tolist())
-    return np.array([1.0 / count[g] for g in groups.tolist()])
-
-
-def gated_model(d: dict, idx: np.ndarray, sources: np.ndarray, rows: list[Row], lam: float,
-                inner: int | None = None, groups: np.ndarray | None = None) -> dict:
-    """A model fitted on ``idx`` whose margin (`MARGINS`: how sure it must be to overrule the rules) is chosen by
-    leave-one-source-out within ``idx`` only (most right answers pooled; ties to the larger margin), or, with
-    ``inner`` K, by K folds of whole sources (`inner_folds`) when the sources are many."""
-    got = Counter()
-    for held in inner_folds(sorted(set(sources[idx])), inner):
-        out = np.isin(sources[idx], held)
-        fold = model(d, idx[~out], lam, groups)
-        for margin in MARGINS:
-            got[margin] += int(answers(d, idx[out], fold, rows, margin).sum())
-    m = model(d, idx, lam, groups)
-    m["margin"] = max(MARGINS, key=lambda v: (got[v], v))
-    return m
-
-
-def inner_folds(names: list[str], k: int | None) -> list[list[str]]:
-    """The sources held out together when a margin is chosen: one at a time (``k`` None), or ``k`` groups dealt in
-    the order of their names' sha256 (fixed by the names alone)."""
-    if k is None or k >= len(names):
-        return [[n] for n in names]
-    order = sorted(names, key=lambda n: hashlib.sha256(n.encode()).hexdigest())
-    return [order[i::k] for i in range(k)]
-
-
-def answers(d: dict, idx: np.ndarray, m: dict, rows: list[Row], margin: float | None = None) -> np.ndarray:
-    out = np.zeros(len(idx), dtype=bool)
-    margin = m["margin"] if margin is None else margin
-    for j, i in enumerate(idx):
-        kind = (ranker.choose(d["rules"][i], d["phi"][i], ranker.Model(m["theta"], m["mean"], m["std"], margin))[0]
-                if d["rules"][i] else None)
-        out[j] = kind in rows[i]["accepts"]
-    return out
+def held_out(d: dict, rows: list[Row], design: np.ndarray, keys: np.ndarray, fitted, origin: np.ndarray,
+             ) -> tuple[np.ndarray, dict[str, str]]:
+    """Each design stroke read by a model fitted without every stroke (and copy) of its key (a set, a device or a
+    source; "" is never held out, never fitted on, never scored): right or not, one a people's row; the margins."""
+    got = np.zeros(len(origin), dtype=bool)
+    margins = {}
+    train = design[keys[origin[design]] != ""]
+    for k in sorted(set(keys[origin[train]].tolist())):
+        m = fitted(train[keys[origin[train]] != k])
+        test = design[(keys[origin[design]] == k) & d["real"][design]]
+        got[test] = answers(d, test, m, rows)
+        margins[k] = f"{m['margin']:g}"
+    return got, margins
 
 
 def report(title: str, d: dict, rows: list[Row], sources: np.ndarray, folds: dict[str, np.ndarray]) -> None:
@@ -212,6 +176,28 @@ def report(title: str, d: dict, rows: list[Row], sources: np.ndarray, folds: dic
     print(f"Pooled: rules {pooled['before']}/{pooled['n']} = {100 * pooled['before'] / pooled['n']:.2f} %, ranker "
           f"{pooled['after']}/{pooled['n']} = {100 * pooled['after'] / pooled['n']:.2f} %. Cells: rules → ranker "
           "% right (strokes).\n")
+
+
+def summary(title: str, d: dict, scored: np.ndarray, by: np.ndarray,
+            results: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
+    """Per group of ``by`` (a set or a device) and pooled: the rules and each fold scheme's % right (right), and the
+    strokes each scheme gains and loses against the rules; a scheme's cell counts the strokes it scores (its mask:
+    the device folds score no stroke of an unknown device), the rules' all of them."""
+    out = []
+    rules = d["rules_right"]
+    for g in [*sorted(set(by[scored].tolist())), "all"]:
+        sel = scored & ((by == g) if g != "all" else True)
+        n = int(sel.sum())
+        cells = [f"{100 * rules[sel].mean():.2f} ({int(rules[sel].sum())})"]
+        for got, mask in results.values():
+            s = sel & mask
+            cells.append(f"{100 * got[s].mean():.2f} ({int(got[s].sum())}"
+                         + (f" of {int(s.sum())}" if s.sum() != n else "")
+                         + f"; +{int((got & ~rules)[s].sum())} -{int((rules & ~got)[s].sum())})" if s.any() else "")
+        out.append([f"**{g}**" if g == "all" else g, n, *cells])
+    print(f"### {title}\n")
+    print(table(["group", "strokes", "rules % (right)", *(f"{k} % (right; gained -lost)" for k in results)], out)
+          + "\n")
 
 
 def model_module_text(doc: dict) -> str:
@@ -238,60 +224,133 @@ def rows_read(rows: list[Row], heldback: bool, write: bool) -> tuple[list[Row], 
     return rows, first, new
 
 
+def recipe_from(args: argparse.Namespace, lam: float) -> Recipe:
+    drop = tuple(f for f in args.drop.split(",") if f)
+    unknown = sorted(set(drop) - set(ranker.FEATURES))
+    if unknown:
+        raise SystemExit(f"--drop: {', '.join(unknown)} not among the ranker's features {ranker.FEATURES}")
+    margins = (0.5,) if args.no_gate else tuple(float(v) for v in args.margins.split(","))
+    if not margins or not all(0.0 <= v < 1.0 for v in margins):
+        raise SystemExit(f"--margins: {args.margins!r} must be numbers in [0, 1)")
+    return Recipe(lam, args.weigh, drop, margins, args.inner, args.inner_by, args.copies_weight, args.skip_guarded)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("sets", type=Path, nargs="+")
+    ap.add_argument("--folds", default="set,device,source", help="what is held out whole, comma list of set, device, "
+                    "source and in (in-sample); the first is the figure a recipe is chosen on")
+    ap.add_argument("--brief", action="store_true", help="print the tables per set and device only")
     ap.add_argument("--heldback", action="store_true", help="score both held-back groups (once, at the end)")
-    ap.add_argument("--lam", default=str(LAMBDA), help="L2 penalty; a comma list reports the design folds with each "
+    ap.add_argument("--lam", default=str(LAMBDA), help="L2 penalty; a comma list reports the folds with each "
                     "(sensitivity), the first is used for the rest")
+    ap.add_argument("--weigh", choices=("stroke", "source", "set", "device"), default="stroke", help="what weighs the "
+                    "same in the likelihood: every stroke, every source, every set or every device (`device_of`)")
+    ap.add_argument("--drop", default="", help="features left out of the fit (comma list; their weights stay 0)")
+    ap.add_argument("--margins", default="0.5,0.7,0.9", help="the margins the model's chance may have to pass to "
+                    "overrule the rules, one chosen inside each fit")
     ap.add_argument("--no-gate", action="store_true", help="overrule the rules at any margin (0.5)")
     ap.add_argument("--inner", type=int, help="choose the margin by this many folds of whole sources instead of "
                     "leave-one-source-out (many sources: the fits grow with their square)")
-    ap.add_argument("--weigh", choices=("stroke", "source", "device"), default="stroke", help="what weighs the same "
-                    "in the likelihood: every stroke (the shipped recipe), every source or every device (`device_of`)")
+    ap.add_argument("--inner-by", choices=("source", "set"), default="source", help="choose the margin on folds of "
+                    "whole sources (--inner) or one fold a set")
+    ap.add_argument("--source-folds", type=int, help="the source folds hold out this many groups of whole sources "
+                    "(dealt by the sha256 of their names) instead of one source at a time (cheaper; fitted on fewer)")
+    ap.add_argument("--augment", type=int, default=0, help="training-only copies of each training stroke "
+                    "(`augment_strokes`; never scored)")
+    ap.add_argument("--augment-seed", type=int, default=0)
+    ap.add_argument("--copies-weight", type=float, default=1.0, help="the copies of a stroke weigh this in all")
+    ap.add_argument("--skip-guarded", action="store_true", help="fit on no stroke the recogniser never asks the "
+                    "model about (a zig-zag's teeth, `ranker.zigzag_teeth`)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     args = ap.parse_args()
+    schemes = [f for f in args.folds.split(",") if f]
+    if not set(schemes) <= {"set", "device", "source", "in"}:
+        raise SystemExit(f"--folds: {args.folds!r}: each of set, device, source, in")
     rows: list[Row] = []
     for path in args.sets:
         rows += read_set(path)
     rows, first, new = rows_read(rows, args.heldback, bool(args.write))
     group = first | new
+    n = len(rows)
+    rows, d, origin = with_copies(rows, describe(rows), args.augment, args.augment_seed)
     sources = np.array([source_of(r, "person") for r in rows])
-    d = describe(rows)
-    groups = {"stroke": None, "source": sources, "device": np.array([device_of(r) for r in rows])}[args.weigh]
-    design_idx = np.flatnonzero(~np.isin(sources, sorted(group)))
-    lams = [float(v) for v in args.lam.split(",")]
+    sets = np.array([r["source"] for r in rows])
+    devices = np.array([device_known(r) for r in rows])
+    weigh = {"stroke": None, "source": sources, "set": sets, "device": np.array([device_of(r) for r in rows])}
+    groups = weigh[args.weigh]
+    design = np.flatnonzero(~np.isin(sources, sorted(group)))
+    design_real = design[design < n]
+    scored = np.zeros(n, dtype=bool)
+    scored[design_real] = True
+    rd = {k: (v[:n] if k in ("rules_right",) else v) for k, v in d.items()}
 
-    def fitted(idx: np.ndarray, lam: float) -> dict:
-        return (model(d, idx, lam, groups) if args.no_gate
-                else gated_model(d, idx, sources, rows, lam, args.inner, groups))
+    def fitted_by(recipe: Recipe):
+        def fitted(idx: np.ndarray) -> dict:
+            if len(recipe.margins) == 1:
+                return {**model(d, idx, recipe, groups), "margin": recipe.margins[0]}
+            inner_keys = sets if recipe.inner_by == "set" else sources
+            return gated_model(d, idx, inner_keys, rows, recipe, groups)
+        return fitted
 
     print(f"## Learned ranker ({machine()})\n")
-    for lam in lams:
-        folds, margins = {}, {}
-        for s in sorted(set(sources[design_idx])):
-            m = fitted(design_idx[sources[design_idx] != s], lam)
-            folds[s] = answers(d, np.flatnonzero(sources == s), m, rows)
-            margins[s] = m["margin"]
-        report(f"Design sources, each scored by a model fitted without it (lam {lam:g}; margins "
-               + ", ".join(f"{v:g}" for v in margins.values()) + ")", d, rows, sources, folds)
+    print(f"{len(design_real)} strokes of {len(set(sources[design_real]))} design sources"
+          + (f", {len(rows) - n} training-only copies (`--augment {args.augment}`, seed {args.augment_seed})"
+             if args.augment else "") + ".\n")
+    keys_of = {"set": sets, "device": devices, "source": sources}
+    if args.source_folds:  # K groups of whole sources dealt by the sha256 of their names, not one fold a source
+        dealt = {s: f"sources {k}" for k, names in enumerate(inner_folds(sorted(set(sources[design_real].tolist())),
+                                                                          args.source_folds)) for s in names}
+        keys_of["source"] = np.array([dealt.get(s, "") for s in sources.tolist()])
+    recipe = recipe_from(args, float(args.lam.split(",")[0]))
+    for lam in (float(v) for v in args.lam.split(",")):
+        recipe = recipe_from(args, lam)
+        fitted = fitted_by(recipe)
+        results: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+        for scheme in schemes:
+            if scheme == "in":
+                m = fitted(design)
+                got = np.zeros(n, dtype=bool)
+                got[design_real] = answers(d, design_real, m, rows)
+                margins = {"all": f"{m['margin']:g}"}
+            else:
+                got, margins = held_out(d, rows, design, keys_of[scheme], fitted, origin)
+                got = got[:n]
+            results[scheme] = (got, scored & (devices[:n] != "") if scheme == "device" else scored)
+            if scheme != "device" and not args.brief:
+                folds = {s: got[np.flatnonzero(sources[:n] == s)] for s in sorted(set(sources[design_real]))}
+                report(f"{scheme} folds: each source read by a model fitted without its {scheme} ({recipe.name()}; "
+                       "margins " + ", ".join(f"{k} {v}" for k, v in margins.items()) + ")", rd, rows[:n],
+                       sources[:n], folds)
+            elif scheme == "device":
+                print("Device folds' margins: " + ", ".join(f"{k} {v}" for k, v in margins.items()) + ".\n")
+        summary(f"Per set ({recipe.name()}" + (f"; --augment {args.augment}" if args.augment else "") + ")", rd,
+                scored, sets[:n], results)
+        known = scored & (devices[:n] != "")
+        summary(f"Per device where known ({recipe.name()})", rd, known, devices[:n], results)
+        print("RESULT " + recipe.name() + (f"; augment {args.augment} x{args.copies_weight:g}" if args.augment
+                                           else "") + " | " + " | ".join(
+            f"{k} {int(v[mask].sum())}/{int(mask.sum())} " + " ".join(
+                f"{s}:{int(v[mask & (sets[:n] == s)].sum())}" for s in SETS) for k, (v, mask) in results.items())
+            + "\n")
     if args.heldback or args.write:
-        m_design = fitted(design_idx, lams[0])
-        n_design = len(set(sources[design_idx]))
+        m_design = fitted_by(recipe)(design)
+        n_design = len(set(sources[design_real]))
         for title, members in (("Held-back students (the first group)", first), ("Held-back sources found after the "
                                "first 19 (the second group)", new)):
             if members:
-                held = {s: answers(d, np.flatnonzero(sources == s), m_design, rows) for s in sorted(members)}
-                report(f"{title}, scored by a model fitted on the {n_design} design sources (lam "
-                       f"{m_design['lam']:g}, margin {m_design['margin']:g})", d, rows, sources, held)
+                held = {s: answers(d, np.flatnonzero(sources[:n] == s), m_design, rows) for s in sorted(members)}
+                report(f"{title}, scored by a model fitted on the {n_design} design sources ({recipe.name()}, "
+                       f"margin {m_design['margin']:g})", rd, rows[:n], sources[:n], held)
     if args.write:
         keep = np.flatnonzero(~np.isin(sources, sorted(new)))  # the second group is never fitted on
-        m = fitted(keep, lams[0])
+        m = fitted_by(recipe)(keep)
         args.write.write_text(model_module_text({
             "features": list(ranker.FEATURES), "kinds": list(ranker.KINDS), "lam": m["lam"], "margin": m["margin"],
             "theta": [round(float(v), 9) for v in m["theta"]], "mean": [round(float(v), 9) for v in m["mean"]],
             "std": [round(float(v), 9) for v in m["std"]]}))
-        print(f"wrote {args.write} (margin {m['margin']:g})")
+        print(f"wrote {args.write} ({recipe.name()}" + (f"; augment {args.augment} x{args.copies_weight:g}"
+                                                         if args.augment else "") + f"; margin {m['margin']:g})")
 
 
 if __name__ == "__main__":
