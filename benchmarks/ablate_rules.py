@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 from bench_generalisation import in_second_group, scored_rows
 from bench_recognition import machine, table
-from stroke_sets import Row, read_set, source_of
+from stroke_sets import Row, read_sets, source_of
 
 from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, polygon_checks, ranker, ranking
 from physink_tui.scene.recognition import recognize as rz
@@ -326,12 +326,7 @@ def main() -> None:
             raise SystemExit(f"ablate_rules: no rule named {', '.join(unknown)} (known: "
                              f"{', '.join(r.name for r in RULES)})")
         rules = [r for r in RULES if r.name in wanted]
-    rows: list[Row] = []
-    for path in args.sets:
-        try:
-            rows += read_set(path)
-        except (OSError, ValueError) as exc:
-            raise SystemExit(f"ablate_rules: {exc}") from None
+    rows = read_sets(args.sets, "ablate_rules")
     kept, _ = scored_rows(rows)
     base, off = ablate(kept, rules, args.jobs)
     text, saved = report(kept, rules, base, off)

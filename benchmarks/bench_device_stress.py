@@ -29,7 +29,7 @@ import numpy as np
 from bench_generalisation import is_held_back_new, scored_rows
 from bench_recognition import machine, table
 from label_kinds import read_table
-from stroke_sets import Row, read_set, source_of
+from stroke_sets import Row, read_sets, source_of
 
 from physink_tui.scene.recognition import ranker
 from physink_tui.scene.recognition.primitives import Recognition
@@ -309,12 +309,7 @@ def main() -> None:
     ap.add_argument("--only", default="", help="comma-separated variant names (default: all)")
     ap.add_argument("--json", type=Path, help="also write each variant's per-row results here")
     args = ap.parse_args()
-    rows: list[Row] = []
-    for path in args.sets:
-        try:
-            rows += read_set(path)
-        except (OSError, ValueError) as exc:
-            raise SystemExit(f"bench_device_stress: {exc}") from None
+    rows = read_sets(args.sets, "bench_device_stress")
     kept, _ = scored_rows(rows)
     kept = [r for r in kept if not is_held_back_new(source_of(r, "person"))
             and zlib.crc32(f"{r['file']}|{r['label']}".encode()) % args.every == 0]

@@ -34,7 +34,7 @@ from pathlib import Path
 import numpy as np
 from bench_recognition import machine, table
 from label_kinds import UNMAPPED, read_table
-from stroke_sets import Row, read_set, source_of
+from stroke_sets import Row, read_sets, source_of
 
 from physink_tui.scene.recognition.recognize import DEFAULT_WEIGHTS, Weights, recognize_stroke
 
@@ -301,12 +301,7 @@ def main() -> None:
                     "contradiction tests convict, and re-state the targets without them (beside the raw figure)")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
     args = ap.parse_args()
-    rows: list[Row] = []
-    for path in args.sets:
-        try:
-            rows += read_set(path)
-        except (OSError, ValueError) as exc:
-            raise SystemExit(f"bench_generalisation: {exc}") from None
+    rows = read_sets(args.sets, "bench_generalisation")
     kept, left = scored_rows(rows, third=args.third, fourth=args.fourth)
     if not args.heldback:
         hidden = held_back_new(kept)

@@ -23,6 +23,17 @@ from pathlib import Path
 Row = dict
 
 
+def read_sets(paths: list[Path], program: str) -> list[Row]:
+    """Every row of every set at ``paths``, in order; a set that cannot be read ends ``program`` with its reason."""
+    rows: list[Row] = []
+    for path in paths:
+        try:
+            rows += read_set(path)
+        except (OSError, ValueError) as exc:
+            raise SystemExit(f"{program}: {exc}") from None
+    return rows
+
+
 def read_set(path: Path) -> list[Row]:
     """Every row of the set at ``path`` (a .jsonl file, or a folder in one of the forms above).
 

@@ -14,10 +14,9 @@ from __future__ import annotations
 
 import math
 import random
-from collections import Counter
 
 import pytest
-from test_bracket_marks import PENS, _arc, _placed
+from test_bracket_marks import PENS, _arc, _placed, _readings
 from test_open_marks import cached_rows
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -61,14 +60,6 @@ def even_arc(seed: int) -> list[Point]:
     a0 = rng.uniform(0, 2 * math.pi)
     pts = _arc(0.0, 0.0, r, a0, a0 + turn, 24)
     return _placed(pts[::-1] if rng.random() < 0.5 else pts, rng)
-
-
-def _readings(shape, pen: str, learned: bool) -> Counter[str | None]:
-    out: Counter[str | None] = Counter()
-    for seed in SEEDS:
-        drawn = PENS[pen](shape(seed), seed)
-        out[recognize_stroke([p[:2] for p in drawn], [p[2] for p in drawn], learned=learned).kind] += 1
-    return out
 
 
 # (pen, learned) -> how many of the 40 read as a polyline (this branch's counts); at main d7f1057 none of the 160 (the
