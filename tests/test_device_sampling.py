@@ -22,7 +22,7 @@ from penmodels.hurried import single_strokes
 from penmodels.shapes import Shape, box, circle, polygon
 from shared_data import shared_path
 
-from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition import pen_noise
 from physink_tui.scene.recognition.recognize import SPARSE_BENDS, recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
@@ -111,7 +111,7 @@ def test_a_box_sampled_by_a_few_events_is_a_box(events: int) -> None:
     """Between a few far-apart events the path's bends are the box's, not a shaky hand's: the points are not
     smoothed where they were sampled (which cut the corners to a round shape)."""
     pts = _box_by_events(events)
-    assert sg.jitter(pts) <= SPARSE_BENDS * sg.shape_bend(pts)
+    assert pen_noise.jitter(pts) <= SPARSE_BENDS * pen_noise.shape_bend(pts)
     assert recognize_stroke(pts.tolist()).kind == "box"
 
 
@@ -120,8 +120,8 @@ def test_a_shaky_hand_densely_sampled_is_still_seen() -> None:
     rng = np.random.default_rng(7)
     a = np.linspace(0, 2 * np.pi, 200)
     pts = np.column_stack([100 * np.cos(a), 100 * np.sin(a)]) + rng.normal(0, 1.5, (200, 2))
-    assert 1.0 < sg.jitter(pts)
-    assert sg.jitter(pts) > 4 * SPARSE_BENDS * sg.shape_bend(pts)
+    assert 1.0 < pen_noise.jitter(pts)
+    assert pen_noise.jitter(pts) > 4 * SPARSE_BENDS * pen_noise.shape_bend(pts)
     assert recognize_stroke(pts.tolist()).kind == "circle"
 
 

@@ -12,7 +12,7 @@ import math
 import numpy as np
 from test_people_strokes import people_rows
 
-from physink_tui.scene.recognition import ranker
+from physink_tui.scene.recognition import pen_noise, ranker
 from physink_tui.scene.recognition import stroke_geometry as sg
 
 
@@ -29,7 +29,7 @@ def _strokes(seed: int, count: int) -> list[np.ndarray]:
 
 
 def _jitter_plain(pts: np.ndarray) -> float:
-    """`stroke_geometry.jitter` as first written, with np.diff, np.column_stack and np.median."""
+    """`pen_noise.jitter` as first written, with np.diff, np.column_stack and np.median."""
     if len(pts) < 6:
         return 0.0
     d2 = pts[:-2] - 2 * pts[1:-1] + pts[2:]
@@ -49,7 +49,7 @@ def test_the_geometry_helpers_give_numpys_numbers_to_the_last_bit() -> None:
         n = int(rng.integers(2, 400))
         total = float(rng.choice([rng.random() * 1e3, 1.0, 1e-310, 5e-324]))
         assert np.array_equal(sg.spaced(total, n), np.linspace(0.0, total, n))
-        assert sg.jitter(pts) == _jitter_plain(pts)
+        assert pen_noise.jitter(pts) == _jitter_plain(pts)
         values = rng.normal(size=int(rng.integers(1, 300)))
         assert sg.median(values) == float(np.median(values))
         if len(pts) < 2:
@@ -91,6 +91,6 @@ def test_the_ranker_stops_early_exactly_for_the_checks_it_does_not_ask_about() -
         keep = np.ones(len(pts), dtype=bool)
         keep[1:] = np.any(np.diff(pts, axis=0) != 0.0, axis=1)
         raw = pts[keep]
-        drawn = ranker.Drawn(raw, keep, raw.mean(axis=0), sg.bbox_diagonal(raw), sg.jitter(raw))
+        drawn = ranker.Drawn(raw, keep, raw.mean(axis=0), sg.bbox_diagonal(raw), pen_noise.jitter(raw))
         assert np.array_equal(ranker._features(ranker._unit_work(points, times, drawn), 1.0), full)
     assert stopped >= 50 and asked >= 200  # both ways exercised (84 and 276 of the 360 strokes)

@@ -108,7 +108,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
   which the open-stroke rules misjudge
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
-  ShortStraw/IStraw corners, hooks, small loops at corners, the stroke's own jitter
+  ShortStraw/IStraw corners, hooks, small loops at corners
+- `pen_noise.py`: the stroke's own jitter, and the bends a shape its size makes between sparse points
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
 - `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;

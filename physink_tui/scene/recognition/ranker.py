@@ -22,7 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, ranker_model
+from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, pen_noise, ranker_model
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
@@ -119,7 +119,7 @@ def model_from(doc: object, where: str = "ranker model") -> Model:
 class Drawn(NamedTuple):
     """What recognition already knows of the stroke it hands the ranker (`recognize.recognize_stroke`), so the ranker
     does not convert, clean and measure it again: the points without repeats, which of the given points they are,
-    their centroid, their diagonal (`stroke_geometry.bbox_diagonal`) and their jitter (`stroke_geometry.jitter`)."""
+    their centroid, their diagonal (`stroke_geometry.bbox_diagonal`) and their jitter (`pen_noise.jitter`)."""
 
     raw: np.ndarray
     keep: np.ndarray
@@ -186,7 +186,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
     if found is None:
         return out
     raw, work, times, diag, jitter = found
-    noise = max(noise, sg.jitter(raw) if jitter is None else jitter) / diag
+    noise = max(noise, pen_noise.jitter(raw) if jitter is None else jitter) / diag
     length = sg.path_length(work)
     th = sg.turning(work)
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)

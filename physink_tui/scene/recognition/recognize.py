@@ -23,7 +23,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes, ranker
+from physink_tui.scene.recognition import open_shapes, pen_noise, ranker
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, x_symbol
@@ -51,7 +51,7 @@ SHAKY = 1.5
 """A stroke whose measured jitter is this many times the pen's stated noise is smoothed where it was sampled too,
 unless its points are so far apart that the jitter may be the shape's own bends (`SPARSE_BENDS`)."""
 SPARSE_BENDS = 2.0
-"""A measured jitter (`stroke_geometry.jitter`) under this many times `stroke_geometry.shape_bend` (a round shape's
+"""A measured jitter (`pen_noise.jitter`) under this many times `pen_noise.shape_bend` (a round shape's
 bend between the stroke's points) may be the shape's, not the pen's: on points far apart (a device sampling evenly in
 time: 8-25 events over a fast stroke, the pen slowing at corners) successive bends differ by as much again as they
 are, and more where a corner falls. Such a jitter is not taken for a shaky hand (a filter one sample wide would cut the
@@ -101,7 +101,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
 
     ``noise`` is the pen's jitter in the points' units (pass it scaled with the coordinates: a canvas in
     fractions of its size has a noise of about 1 / its width in pixels); a stroke that is visibly shakier is
-    judged with its own, measured jitter (`stroke_geometry.jitter`). ``times`` (one a point, seconds), where
+    judged with its own, measured jitter (`pen_noise.jitter`). ``times`` (one a point, seconds), where
     given, tell the learned ranker how the pen slowed at corners. ``weights`` override the ranking's and
     ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
     """
@@ -118,10 +118,10 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
     given = noise if math.isfinite(noise) and noise > 0 else 0.0
-    measured = sg.jitter(pts)
+    measured = pen_noise.jitter(pts)
     # the pen may be worse than said, but a jitter that sparse points' own bends could make (`SPARSE_BENDS`) is
     # credited only up to an ordinary pen's (`SHAKY`) and does not get the stroke smoothed where it was sampled
-    seen = measured <= given or measured > SPARSE_BENDS * sg.shape_bend(pts)
+    seen = measured <= given or measured > SPARSE_BENDS * pen_noise.shape_bend(pts)
     noise = max(given, measured if seen else min(measured, SHAKY * given))
     shaky = measured > SHAKY * given and seen
     if size < MIN_SIZE * noise:
