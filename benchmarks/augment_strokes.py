@@ -4,10 +4,11 @@
 (`ranker.KINDS`) to the strokes a model is fitted on, never to the strokes it is scored on: the copies are not people
 and no figure counts them. Each copy is turned a little and stretched (rotation within `ROTATE` degrees, aspect within
 `ASPECT`), then changed in one way a hand does — corners rounded, corners cut, an overshoot or hook at an end, or none
-— then, half the time, drawn again as a mouse or a trackpad draws it (resampled at another density, snapped to a pixel
-grid, with a pixel of jitter), and its pen times, where it has them, sped up or slowed down unevenly. Every draw comes
-from a generator seeded by the sha256 of the seed, the stroke's file and label and the copy's number: the same rows
-give the same copies on any machine.
+— then, half the time, drawn again as a mouse or a trackpad draws it: resampled at another density, snapped to a pixel
+grid, with a pixel of jitter, or (``events_share`` of those, none by default) sampled by 8-25 events evenly in time as
+a trackpad gives a fast stroke (`SPARSE_EVENTS`); and its pen times, where it has them, sped up or slowed down
+unevenly. Every draw comes from a generator seeded by the sha256 of the seed, the stroke's file and label and the
+copy's number: the same rows give the same copies on any machine.
 """
 
 from __future__ import annotations
@@ -24,6 +25,12 @@ ASPECT = 1.33
 """The largest stretch of one axis against the other (either way)."""
 SHAPES = ("none", "round", "cut", "overshoot", "hook")
 """The one change of a hand each copy gets, drawn uniformly."""
+EVENTS_SHARE = 0.0
+"""The share of copies drawn again by a device that are sampled by a few events evenly in time (`_events`): none by
+default (the sixth pass's copies, drawn from the same numbers); `train_ranker.py --events-share` sets it."""
+SPARSE_EVENTS = (8, 25)
+"""The fewest and most events of a copy sampled evenly in time: a stroke of 0.2-0.5 s at an event every 15-30 ms
+(`bench_device_stress.fast`'s range)."""
 
 
 def rng_for(seed: int, row: Row, copy: int) -> np.random.Generator:
@@ -32,23 +39,26 @@ def rng_for(seed: int, row: Row, copy: int) -> np.random.Generator:
     return np.random.default_rng(int.from_bytes(digest[:8], "little"))
 
 
-def augmented_rows(rows: list[Row], copies: int, seed: int, kinds: tuple[str, ...]) -> tuple[list[Row], list[int]]:
+def augmented_rows(rows: list[Row], copies: int, seed: int, kinds: tuple[str, ...], events_share: float = EVENTS_SHARE,
+                   ) -> tuple[list[Row], list[int]]:
     """``copies`` changed copies of each row whose label accepts one of ``kinds``, and for each the index of the row
     it was made from; a copy keeps its row's fields (source, person, device, label, accepts) but its stroke, and its
-    file names the copy."""
+    file names the copy. ``events_share`` of the copies drawn again by a device are sampled by a few events (`_events`).
+    """
     out, origin = [], []
     for i, row in enumerate(rows):
         if not set(row["accepts"]) & set(kinds):
             continue
         for c in range(copies):
-            stroke = augment(row["strokes"][0], rng_for(seed, row, c))
+            stroke = augment(row["strokes"][0], rng_for(seed, row, c), events_share)
             out.append({**row, "strokes": [stroke], "file": f"{row['file']}#copy{c}-seed{seed}"})
             origin.append(i)
     return out, origin
 
 
-def augment(stroke: list, rng: np.random.Generator) -> list[list[float]]:
-    """One changed copy of ``stroke`` (points ``[x, y]`` or ``[x, y, t_ms]``), in the same form."""
+def augment(stroke: list, rng: np.random.Generator, events_share: float = EVENTS_SHARE) -> list[list[float]]:
+    """One changed copy of ``stroke`` (points ``[x, y]`` or ``[x, y, t_ms]``), in the same form; ``events_share`` of
+    the copies drawn again by a device are sampled by a few events evenly in time (`_events`)."""
     pts = np.array([p[:2] for p in stroke], dtype=float)
     times = (np.array([p[2] for p in stroke], dtype=float)
              if all(len(p) > 2 and p[2] is not None for p in stroke) else None)
@@ -64,7 +74,8 @@ def augment(stroke: list, rng: np.random.Generator) -> list[list[float]]:
         shape = SHAPES[int(rng.integers(len(SHAPES)))]
         pts, times = _shape(shape, pts, times, diag, rng)
         if rng.random() < 0.5:
-            pts, times = _device(pts, times, diag, rng)
+            drawn = _events if events_share > 0 and rng.random() < events_share else _device
+            pts, times = drawn(pts, times, diag, rng)
     if times is not None and len(times) > 1:
         times = _speed(times, rng)
     pts = pts + centre
@@ -181,6 +192,22 @@ def _device(pts: np.ndarray, times: np.ndarray | None, diag: float, rng: np.rand
     if len(p) < 2:
         return pts, times
     return p / scale, t
+
+
+def _events(pts: np.ndarray, times: np.ndarray | None, diag: float, rng: np.random.Generator,
+            ) -> tuple[np.ndarray, np.ndarray | None]:
+    """Sampled by `SPARSE_EVENTS` events evenly in time, the first at pen-down and the last at pen-up, the pen's
+    position between its points taken on the straight line between them; a stroke without times is taken as drawn at
+    an even pace a point (as `bench_device_stress` takes it)."""
+    clock = (np.maximum.accumulate(times) if times is not None and times[-1] > times[0]
+             else np.arange(len(pts), dtype=float))
+    keep = np.concatenate([[True], np.diff(clock) > 0])
+    if np.count_nonzero(keep) < 2:
+        return pts, times
+    n = int(rng.integers(SPARSE_EVENTS[0], SPARSE_EVENTS[1] + 1))
+    when = np.linspace(clock[0], clock[-1], n)
+    out = np.column_stack([np.interp(when, clock[keep], pts[keep, k]) for k in range(2)])
+    return out, (when if times is not None else None)
 
 
 def _speed(times: np.ndarray, rng: np.random.Generator) -> np.ndarray:

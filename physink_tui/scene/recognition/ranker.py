@@ -327,11 +327,12 @@ def checked_point(phi: np.ndarray) -> bool:
 
 
 def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,
-           model: Model, drawn: Drawn | None = None) -> Recognition:
+           model: Model, drawn: Drawn | None = None, sparse: bool = False) -> Recognition:
     """``found`` (the rules' reading of the stroke), or the kind the model prefers with its geometry drawn from
     the stroke, the rules' kind then the first alternative; ``drawn``, where given, is what recognition already
-    measured of ``points`` (`Drawn`)."""
-    if found.kind not in KINDS or zigzag_teeth(found):
+    measured of ``points`` (`Drawn`); ``sparse``: the points are so far apart that their jitter is the shape's own
+    bends (`recognize.sparse_bends`), where a curve the rules read is kept (`kept_curve`)."""
+    if found.kind not in KINDS or zigzag_teeth(found) or kept_curve(found, sparse):
         return found
     if found.kind == "polygon" and not _ends_apart(points, drawn):
         return found
@@ -358,6 +359,13 @@ def zigzag_teeth(found: Recognition) -> bool:
     on few zig-zags) take a curled tail's bow for a curve's."""
     return (found.kind == "polyline" and isinstance(found.geometry, Polyline)
             and open_marks.sawtooth_vertices(found.geometry.points))
+
+
+def kept_curve(found: Recognition, sparse: bool) -> bool:
+    """Whether the rules read a curve from points so far apart that their jitter is the shape's own bends
+    (``sparse``, `recognize.sparse_bends`: a device's 8-25 events), not asked of the model: far-apart events make
+    bends look like straight runs and corners, never corners round, so a curve the rules still see is the shape's."""
+    return sparse and found.kind == "curve"
 
 
 def _ends_apart(points: Sequence[Sequence[float]], drawn: Drawn | None = None) -> bool:

@@ -95,6 +95,21 @@ def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.nda
     return pts, keep, size, None
 
 
+def sparse_bends(pts: np.ndarray, noise: float, measured: float | None = None) -> bool:
+    """Whether the jitter measured on ``pts`` (the stroke's points without repeats; ``measured`` where already
+    measured) exceeds the pen's stated ``noise`` but could be the shape's own bends between sparse points
+    (`SPARSE_BENDS`): a device's few events, not a shaky hand."""
+    measured = pen_noise.jitter(pts) if measured is None else measured
+    return measured > noise and measured <= SPARSE_BENDS * pen_noise.shape_bend(pts)
+
+
+def sampled_sparsely(points: Sequence[Sequence[float]], noise: float = PEN_NOISE) -> bool:
+    """`sparse_bends` of a stroke as `recognize_stroke` is given it (False where it cannot be recognised)."""
+    with np.errstate(all="ignore"):
+        pts, _, _, _ = _clean(points)
+    return pts is not None and sparse_bends(pts, noise if math.isfinite(noise) and noise > 0 else 0.0)
+
+
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
                      noise: float = PEN_NOISE, weights: Weights | None = None, learned: bool = True) -> Recognition:
     """Recognise one stroke given as (x, y) points (extra columns such as t are ignored).
@@ -121,7 +136,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     measured = pen_noise.jitter(pts)
     # the pen may be worse than said, but a jitter that sparse points' own bends could make (`SPARSE_BENDS`) is
     # credited only up to an ordinary pen's (`SHAKY`) and does not get the stroke smoothed where it was sampled
-    seen = measured <= given or measured > SPARSE_BENDS * pen_noise.shape_bend(pts)
+    seen = not sparse_bends(pts, given, measured)
     noise = max(given, measured if seen else min(measured, SHAKY * given))
     shaky = measured > SHAKY * given and seen
     if size < MIN_SIZE * noise:
@@ -137,7 +152,8 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
-        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn)
+        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn,
+                             not seen)
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:
