@@ -79,7 +79,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    `ranker_model`; it overrules the rules only when it gives another kind a chance over its margin. Other kinds are
    left to the rules, and so is the rules' hurried check (one really sharp, off-centre corner in at most three
    lobes, or two corners of which the point holds a third of all the turning, never a loop's: `ranker.checked_point`),
-   and the rules' zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`).
+   the rules' zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`), and a curve the rules read
+   between a few far-apart events (`recognize.sparse_bends`: a trackpad's fast stroke, `ranker.kept_curve`).
 
    lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`), and the rules'
    zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`) and a tick swung round its point (on the
