@@ -35,13 +35,13 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
-from penmodels.hurried import HurriedPen, touching  # noqa: E402
-from penmodels.shapes import Outline, Oval, Shape  # noqa: E402
-from shapely.geometry import Polygon as ShapelyPolygon  # noqa: E402
+from penmodels.hurried import HurriedPen, touching
+from penmodels.shapes import Outline, Oval, Shape
+from shapely.geometry import Polygon as ShapelyPolygon
 
-from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen  # noqa: E402
-from physink_tui.scene.recognition.beautify import shape_points  # noqa: E402
-from physink_tui.scene.recognition.recognize import recognize_stroke  # noqa: E402
+from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
+from physink_tui.scene.recognition.beautify import shape_points
+from physink_tui.scene.recognition.recognize import recognize_stroke
 
 Point = tuple[float, float]
 CANVAS = (1600.0, 1000.0)
