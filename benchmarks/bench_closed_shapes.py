@@ -5,8 +5,9 @@ Usage: .venv/bin/python benchmarks/bench_closed_shapes.py [--seeds A:B] [--held-
 
 Each family (`FAMILIES`) draws a shape from its own seeded generator (``random.Random(f"{family}:{seed}")``: sizes
 40-400 px across, turned, stretched) and each pen draws it with the same seed: the careful virtual pen
-(`physink_tui.input.virtual_pen`, windows-ink) and the hurried hand (`tests/penmodels/hurried.py`). Every stroke is
-read twice, with its times and without. What a person expects (`EXPECTED`, the rule written down in
+(`physink_tui.input.virtual_pen`, windows-ink) and the hurried hand (`tests/penmodels/hurried.py`), the latter also
+through a device sending an event every 15-30 ms (`bench_device_stress.coarse`). Every stroke is read twice, with
+its times and without. What a person expects (`EXPECTED`, the rule written down in
 docs/BENCHMARKS.md "Closed shapes drawn by the pen models"):
 
 - a convex pentagon, hexagon or octagon, regular or not, is a polygon (a box when it is four-sided never happens);
@@ -34,7 +35,10 @@ from collections.abc import Callable
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import numpy as np
+from bench_device_stress import coarse
 from penmodels.hurried import HurriedPen, touching
 from penmodels.shapes import Outline, Oval, Shape
 from shapely.geometry import Polygon as ShapelyPolygon
@@ -193,7 +197,17 @@ def hurried(s: Shape, seed: int) -> list[tuple[float, float, float]]:
     return touching(HurriedPen(random.Random(seed)).draw(s, 0.0)[0])
 
 
-PENS: dict[str, Callable[[Shape, int], list[tuple[float, float, float]]]] = {"careful": careful, "hurried": hurried}
+def hurried_coarse(s: Shape, seed: int) -> list[tuple[float, float, float]]:
+    """The hurried hand on a device that sends an event every 15-30 ms (`bench_device_stress.coarse`): a stroke
+    drawn in half a second comes as 15-35 points, each corner between two of them."""
+    drawn = np.array(hurried(s, seed))
+    pts, when = coarse((drawn[:, :2], drawn[:, 2]), np.random.default_rng(seed))
+    assert when is not None
+    return [(float(x), float(y), float(t)) for (x, y), t in zip(pts, when, strict=True)]
+
+
+PENS: dict[str, Callable[[Shape, int], list[tuple[float, float, float]]]] = {
+    "careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse}
 
 
 def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True) -> tuple[str | None, float | None]:
