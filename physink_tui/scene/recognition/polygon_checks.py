@@ -9,6 +9,7 @@ these a fit passes; `split_hairpins` turns each doubled-back vertex into that fl
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -188,13 +189,24 @@ SHARP_SHARE = 0.75
 hand overshot it and cut back (the hurried pen model's octagons: up to 2 of 8), while a lumpy circle's polygon has as
 many round bends as sharp ones (people's lumpy circles in the design sets: 4 of 8 at 0.4 or more)."""
 SPARSE_STEP = 0.25
-"""Corners are judged only on points at least four to the shortest side (the median step between the stroke's own
-points at most this share of it): a circle given as 8-25 points round it (a mouse, a coarse event rate) is straight
-between them and as sharp at each as a polygon drawn."""
+"""Corners are judged only on points at least four to the shortest side (half the stroke drawn in steps between its
+own points no longer than this share of it, `_typical_step`): a circle given as 8-25 points round it (a mouse, a
+coarse event rate, events in bursts) is straight between them and as sharp at each as a polygon drawn."""
 SHALLOW_CORNER_DEG = 15.0
 """A vertex of a closed polygon turning less than `MIN_CORNER_DEG` but at least this much is still a corner where the
 turn is sharp (`SHARP_CORNER` at that vertex itself): an irregular octagon's flattest corners turn 15-35 degrees, and a
 bowed side, which `MIN_CORNER_DEG` keeps from being read as two, spreads its turning along the side."""
+
+
+def _typical_step(drawn: np.ndarray) -> float:
+    """The step between the stroke's points that half its length is drawn in steps at least as long as (a median
+    weighted by length: events in bursts, a few points close together then a long gap, have short steps but draw
+    the path in the gaps' long ones)."""
+    steps = np.sort(np.hypot(*np.diff(drawn, axis=0).T))
+    if not len(steps) or steps[-1] == 0.0:
+        return math.inf
+    covered = np.cumsum(steps[::-1])  # the longest first
+    return float(steps[::-1][int(np.searchsorted(covered, covered[-1] / 2))])
 
 
 def corner_roundness_closed(fit: PolygonFit) -> np.ndarray:
@@ -212,8 +224,7 @@ def sharp_corners(fit: PolygonFit, drawn: np.ndarray) -> bool:
     turning less than `MIN_CORNER_DEG` must be sharp itself (`SHALLOW_CORNER_DEG`)."""
     verts = fit.vertices
     sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
-    steps = np.hypot(*np.diff(drawn, axis=0).T)
-    if not len(steps) or float(np.median(steps)) > SPARSE_STEP * float(np.hypot(*sides.T).min()):
+    if _typical_step(drawn) > SPARSE_STEP * float(np.hypot(*sides.T).min()):
         return False
     roundness = corner_roundness_closed(fit)
     heading = np.arctan2(sides[:, 1], sides[:, 0])
