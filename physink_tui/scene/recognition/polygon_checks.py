@@ -190,7 +190,7 @@ hand overshot it and cut back (the hurried pen model's octagons: up to 2 of 8), 
 many round bends as sharp ones (people's lumpy circles in the design sets: 4 of 8 at 0.4 or more)."""
 SPARSE_STEP = 0.25
 """Corners are judged only on points at least four to the shortest side (half the stroke drawn in steps between its
-own points no longer than this share of it, `_typical_step`): a circle given as 8-25 points round it (a mouse, a
+own points no longer than this share of it, `typical_step`): a circle given as 8-25 points round it (a mouse, a
 coarse event rate, events in bursts) is straight between them and as sharp at each as a polygon drawn."""
 SHALLOW_CORNER_DEG = 15.0
 """A vertex of a closed polygon turning less than `MIN_CORNER_DEG` but at least this much is still a corner where the
@@ -198,7 +198,7 @@ turn is sharp (`SHARP_CORNER` at that vertex itself): an irregular octagon's fla
 bowed side, which `MIN_CORNER_DEG` keeps from being read as two, spreads its turning along the side."""
 
 
-def _typical_step(drawn: np.ndarray) -> float:
+def typical_step(drawn: np.ndarray) -> float:
     """The step between the stroke's points that half its length is drawn in steps at least as long as (a median
     weighted by length: events in bursts, a few points close together then a long gap, have short steps but draw
     the path in the gaps' long ones)."""
@@ -218,13 +218,13 @@ def corner_roundness_closed(fit: PolygonFit) -> np.ndarray:
     return np.asarray(corner_roundness(unrolled, corners))
 
 
-def sharp_corners(fit: PolygonFit, drawn: np.ndarray) -> bool:
+def sharp_corners(fit: PolygonFit, step: float) -> bool:
     """Whether the vertices of a closed fit are corners the pen turned at (`SHARP_CORNER`), on points dense enough to
-    tell a corner from a round bend (`SPARSE_STEP`; ``drawn``: the stroke's own points, in the fit's units); any vertex
-    turning less than `MIN_CORNER_DEG` must be sharp itself (`SHALLOW_CORNER_DEG`)."""
+    tell a corner from a round bend (`SPARSE_STEP`; ``step``: `typical_step` of the stroke's own points, in the fit's
+    units); any vertex turning less than `MIN_CORNER_DEG` must be sharp itself (`SHALLOW_CORNER_DEG`)."""
     verts = fit.vertices
     sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
-    if _typical_step(drawn) > SPARSE_STEP * float(np.hypot(*sides.T).min()):
+    if step > SPARSE_STEP * float(np.hypot(*sides.T).min()):
         return False
     roundness = corner_roundness_closed(fit)
     heading = np.arctan2(sides[:, 1], sides[:, 0])

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from physink_tui.scene.recognition.candidates import Candidate, Pending
-from physink_tui.scene.recognition.polygon_checks import SHALLOW_CORNER_DEG, corners_of, sharp_corners
+from physink_tui.scene.recognition.polygon_checks import SHALLOW_CORNER_DEG, corners_of, sharp_corners, typical_step
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Polygon, Recognition
 from physink_tui.scene.recognition.ranking import BOX_MARGIN, Weights, bic_score, bounds, inside
@@ -30,14 +30,18 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
     box_lo, box_hi = bounds(raw, noise, diag, BOX_MARGIN)
     explained = CORNERS_EXPLAIN * round_rss
     n = len(polygons[0].fits[0].points) if polygons and polygons[0].fits else 1
+    step = typical_step(raw)
     for pending in sorted((p for p in polygons if p.params >= 2 * 4 and p.rss <= explained),
                           key=lambda p: bic_score(p, n, sigma, weights)):
+        # the best fit of that many sides is judged, before building (which judges every corner: the costlier part)
+        sharp = [f for f in pending.fits[:1] if f.rss <= explained and sharp_corners(f, step)]
+        if not sharp:
+            continue
         for c, fit in [*_built(pending), *_shallow(pending, noise)]:
             if c.kind == "box" and not inside(c.geometry, box_lo, box_hi) and c.fallback is not None:
                 c = c.fallback
-            if not inside(c.geometry, *((box_lo, box_hi) if c.kind == "box" else (lo, hi))):
-                continue
-            if fit.rss <= explained and sharp_corners(fit, raw):
+            if any(fit is f for f in sharp) and inside(c.geometry, *((box_lo, box_hi) if c.kind == "box"
+                                                                    else (lo, hi))):
                 return Recognition(c.kind, ranked.confidence, c.geometry, ((ranked.kind, 1.0 - ranked.confidence),))
     return ranked
 
