@@ -315,7 +315,8 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
 
 def entry_rows(entry: Entry, mirrors: Path | None, known: set, seen: dict, skipped: list[str]) -> list[dict]:
     """The rows of one entry. ``known``: the $1 development people's strokes (refused); ``seen``: stroke -> source
-    of every stroke gathered so far (a stroke seen under another source is refused)."""
+    of every stroke gathered so far (a stroke seen under another source is refused), and (source, gesture) -> file
+    (a `GESTER` gesture whose every point repeats one of the same source is skipped)."""
     out: list[dict] = []
     copies: dict[str, int] = {}
     for where, subject, device, label, strokes, date in _gestures(entry, git_dir(entry.repo, mirrors)):
@@ -338,6 +339,12 @@ def entry_rows(entry: Entry, mirrors: Path | None, known: set, seen: dict, skipp
                                  "a copy of another source")
             skipped.append(f"{where} (a stroke of {first} again)")
             continue
+        if entry.form == GESTER:  # Gester's copies keep a few files twice under one person: read once
+            whole = (source, tuple(tuple((p[0], p[1]) for p in s) for s in strokes))
+            if whole in seen:
+                skipped.append(f"{where} (the same gesture as {seen[whole]})")
+                continue
+            seen[whole] = where
         for k, s in zip(keys, strokes, strict=True):
             if len(s) >= 8:
                 seen.setdefault(k, source)
