@@ -19,6 +19,8 @@ from mirror_repo import commit_mirror
 from public_sets import FIFTH_ENTRIES, GESTER, ONE, Entry, entry_rows
 from stroke_sets import source_of
 
+from physink_tui.scene.recognition.primitives import KINDS
+
 REPO = "someone/gestures"
 
 
@@ -115,6 +117,14 @@ def test_the_pinned_fifth_entries_are_the_fifth_group_each_read_from_its_own_fol
     for entry in FIFTH_ENTRIES:
         assert entry.form == GESTER and len(entry.commit) == 40 and table.of_set(entry.set_name)
         assert entry.folder.startswith("datasets/2D/") and entry.folder not in ("datasets/2D/$1", "datasets/2D/MMG")
+
+
+def test_every_kind_the_table_accepts_is_one_the_recogniser_can_name() -> None:
+    """A class accepting a kind the recogniser never names would count its strokes wrong whatever they look like (the
+    fifth search added ``bow``: arc or curve, for a parenthesis)."""
+    kinds = read_table().kinds
+    assert kinds["bow"] == {"arc", "curve"}
+    assert set().union(*kinds.values()) <= set(KINDS)
 
 
 def test_the_fifth_group_is_left_out_of_every_run_but_its_own(tmp_path, capsys, monkeypatch) -> None:
