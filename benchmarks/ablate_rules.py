@@ -2,9 +2,9 @@
 
 Usage: .venv/bin/python benchmarks/ablate_rules.py SET [SET ...] [--only NAME,...] [--jobs N] [--save FILE.json]
 
-Each rule of `RULES` (a hand rule of `physink_tui.scene.recognition`, most added while designing on the first 55
-design sources, issue 25) is switched off in this process only, by monkeypatching a constant or a function (no
-production flag), and every scored stroke (`bench_generalisation.scored_rows`: the third held-back group is never read)
+Each rule of `RULES` (a hand rule of `physink_tui.scene.recognition`, most added while designing on the first 55 design
+sources, issue 25) is switched off in this process only, by monkeypatching a constant or a function (no production
+flag), and every scored stroke (`bench_generalisation.scored_rows`: the third to fifth held-back groups are never read)
 is recognised by the rules alone and by the shipped recogniser (the learned ranker on the rules' reading; both from one
 call: the rules' reading is the one handed to the ranker). A rule's effect on a stroke is a gain when the stroke is
 right with every rule on and wrong with that rule off (the rule fixes it), a loss the other way. Printed per rule and

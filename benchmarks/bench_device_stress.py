@@ -3,7 +3,7 @@ trackpad, a mouse, a finger or a tkinter canvas would give them (transformed str
 
 Usage: .venv/bin/python benchmarks/bench_device_stress.py SET [SET ...] [--every K] [--only NAME,...] [--json OUT]
 
-Reads the sets as `bench_generalisation` does (`scored_rows`: the third and fourth held-back groups stay out) and
+Reads the sets as `bench_generalisation` does (`scored_rows`: the third to fifth held-back groups stay out) and
 keeps one stroke in ``K`` (by a hash of its file and label: the same strokes every run). Each transform changes one
 thing a device does (`TRANSFORMS`): whole pixels at a small size, repeated points, a coarse event rate (every 15-30 ms;
 8-25 events on a fast stroke), uneven

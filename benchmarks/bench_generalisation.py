@@ -2,7 +2,7 @@
 label, with the label -> kind table fixed before scoring (benchmarks/label_kinds.tsv).
 
 Usage: .venv/bin/python benchmarks/bench_generalisation.py SET [SET ...] [--by person|device|set] [--quick]
-       [--defaults] [--heldback] [--third | --fourth] [--contradictions] [--rules]
+       [--defaults] [--heldback] [--third | --fourth | --fifth] [--contradictions] [--rules]
 
 Each SET is a .jsonl file or a folder in a form `stroke_sets` reads (the $1 logs, the MMG set, the Drawn Shapes set);
 the sets stay where they are. A source is a person of a set (``--by person``, the default; a set that names no person is
@@ -14,7 +14,8 @@ column is not a held-out figure. Only single-stroke samples of labels the table 
 Sources found after the first 19 whose name draws them into the second held-back group (`in_second_group`) were left out
 unless ``--heldback`` was given, until the group was opened as design material (`SECOND_GROUP_OPEN`, 2026-12-04). The
 sets of the third search (`THIRD_SETS`: the third held-back group) are left out of every run but ``--third``, which
-scores them alone (`scored_rows`); the sets of the fourth search (`FOURTH_SETS`) likewise, but for ``--fourth``. Prints
+scores them alone (`scored_rows`); the sets of the fourth search (`FOURTH_SETS`) likewise, but for ``--fourth``, and
+those of the fifth (`FIFTH_SETS`) for ``--fifth``. Prints
 Markdown, and the issue 25 targets met or not (every source >= 98.6 %, every label with >= 50 strokes in a source
 >= 97 % there). With ``--contradictions`` it also prints, beside the raw figure (which stays the headline: no stroke is
 dropped from it), how many strokes of each source the committed contradiction tests
@@ -68,6 +69,15 @@ before any stroke of theirs was read, to be the clean measure once the third gro
 out of every run (the default run, ``--heldback``, ``--third``, `train_ranker.py` even with ``--write``,
 `label_contradictions`, `compare_readings`, `profile_recognition`) unless asked for their group alone (``--fourth``):
 the lead scores them once, at the end of a session."""
+FIFTH_SETS = frozenset({"sign", "lowvision", "eds", "mmgplus", "homus", "laviola", "nicicon"})
+"""The sets found by the fifth search for public sets (issue 25, 2026-12-04; `benchmarks/SOURCES.md`, "The fifth
+search": public 2D sets as `nmagrofuoco/Gester` republishes them): the fifth held-back group, held back whole, by set
+name, fixed with their label -> kind rows (908dd97) before any stroke of theirs was read, to be the clean measure once
+the third and fourth groups are spent. Left out of every run as `FOURTH_SETS` is (and of ``--third``, ``--fourth``)
+unless asked for alone (``--fifth``): the lead scores them once, at the end of a session."""
+GROUP_SETS = {"third": THIRD_SETS, "fourth": FOURTH_SETS, "fifth": FIFTH_SETS}
+"""The held-back groups of whole sets, by name: each is scored alone, by its flag (``--third``, ``--fourth``,
+``--fifth``), and by no other run."""
 SECOND_GROUP_OPEN = True
 """The second held-back group was scored on merged code twice without being looked at (issue 25: 97.56 % at the end
 of session 13, 97.78 % at the end of session 14, docs/BENCHMARKS.md) and was opened on 2026-12-04, once the third
@@ -90,22 +100,30 @@ def in_fourth_group(row: Row) -> bool:
     return row["source"] in FOURTH_SETS
 
 
+def in_fifth_group(row: Row) -> bool:
+    """Whether a row is of a set found by the fifth search (`FIFTH_SETS`), by its set's name alone."""
+    return row["source"] in FIFTH_SETS
+
+
 def held_back_set(set_name: str) -> str | None:
-    """Which held-back group of whole sets a set is in (``third``, ``fourth``), by its name; None for the others."""
-    return "third" if set_name in THIRD_SETS else "fourth" if set_name in FOURTH_SETS else None
+    """Which held-back group of whole sets a set is in (``third``, ``fourth``, ``fifth``: `GROUP_SETS`), by its name;
+    None for the others."""
+    return next((group for group, sets in GROUP_SETS.items() if set_name in sets), None)
 
 
-def scored_rows(rows: list[Row], third: bool = False, fourth: bool = False) -> tuple[list[Row], Counter]:
-    """The rows scored (one stroke, a mapped label) and, for the rest, why not (counted). The third and fourth
-    held-back groups (`THIRD_SETS`, `FOURTH_SETS`) are left out, counted, unless ``third`` or ``fourth``: then that
-    group alone is scored and every other row left out.
+def scored_rows(rows: list[Row], third: bool = False, fourth: bool = False,
+                fifth: bool = False) -> tuple[list[Row], Counter]:
+    """The rows scored (one stroke, a mapped label) and, for the rest, why not (counted). The held-back groups of
+    whole sets (`THIRD_SETS`, `FOURTH_SETS`, `FIFTH_SETS`) are left out, counted, unless one of ``third``, ``fourth``,
+    ``fifth`` asks for it: then that group alone is scored and every other row left out.
 
     Raises:
-        SystemExit: both ``third`` and ``fourth`` (each group is scored alone).
+        SystemExit: more than one group asked for (each group is scored alone).
     """
-    if third and fourth:
-        raise SystemExit("--third and --fourth: each held-back group is scored alone, once")
-    asked = "third" if third else "fourth" if fourth else None
+    asked_for = [group for group, flag in (("third", third), ("fourth", fourth), ("fifth", fifth)) if flag]
+    if len(asked_for) > 1:
+        raise SystemExit(" and ".join(f"--{g}" for g in asked_for) + ": each held-back group is scored alone, once")
+    asked = asked_for[0] if asked_for else None
     labels = read_table()
     kept, left = [], Counter()
     for row in rows:
@@ -137,7 +155,7 @@ def held_back(rows: list[Row]) -> set[str]:
 def in_second_group(source: str) -> bool:
     """Whether a source found after `FIRST_SOURCES` was drawn into the second group (`HELD_BACK_SEED_NEW`); by its
     name alone, whether or not the group is still held back (`SECOND_GROUP_OPEN`)."""
-    if held_back_set(source.split(":", 1)[0]):  # the third and fourth searches' sets are groups of their own
+    if held_back_set(source.split(":", 1)[0]):  # the third to fifth searches' sets are groups of their own
         return False
     return source not in FIRST_SOURCES and int(hashlib.sha256((HELD_BACK_SEED_NEW + source).encode()).hexdigest(),
                                                 16) % 2 == 0
@@ -161,7 +179,7 @@ def held_back_new(rows: list[Row]) -> set[str]:
 
 def group_of(source: str, first_group: set[str]) -> str:
     """Which group a person's source is pooled in: the first 19's design part or held-back part, the sources found
-    by the second search, design or held back, or the third or fourth held-back group."""
+    by the second search, design or held back, or the third, fourth or fifth held-back group."""
     group = held_back_set(source.split(":", 1)[0])
     if group:
         return f"{group} held back"
@@ -245,7 +263,7 @@ def leave_one_source_out(rows: list[Row], by: str, grid: list[Weights], contradi
                  + (", opened 2026-12-04: no longer a held-out figure" if SECOND_GROUP_OPEN else ", held back")
                  + f"): {_share(pooled, 'new held back')}"
                  if pooled["new held back"] else "") + ".\n")
-    for group in ("third", "fourth"):
+    for group in GROUP_SETS:
         if by == "person" and pooled[f"{group} held back"]:
             print(f"The {group} held-back group (`{group.upper()}_SETS`): {_share(pooled, f'{group} held back')}.\n")
     print("Issue 25 targets (every source >= 98.6 %; every label with >= 50 strokes in a source >= 97 %): "
@@ -297,12 +315,14 @@ def main() -> None:
                     "by the lead, at the end of a session)")
     ap.add_argument("--fourth", action="store_true", help="score the fourth held-back group alone (`FOURTH_SETS`; "
                     "once, by the lead, at the end of a session)")
+    ap.add_argument("--fifth", action="store_true", help="score the fifth held-back group alone (`FIFTH_SETS`; "
+                    "once, by the lead, at the end of a session)")
     ap.add_argument("--contradictions", action="store_true", help="also count the strokes whose label the committed "
                     "contradiction tests convict, and re-state the targets without them (beside the raw figure)")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
     args = ap.parse_args()
     rows = read_sets(args.sets, "bench_generalisation")
-    kept, left = scored_rows(rows, third=args.third, fourth=args.fourth)
+    kept, left = scored_rows(rows, third=args.third, fourth=args.fourth, fifth=args.fifth)
     if not args.heldback:
         hidden = held_back_new(kept)
         n = len(kept)

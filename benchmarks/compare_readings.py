@@ -8,7 +8,7 @@ tree: as recorded (times in seconds where the set has them, as `bench_generalisa
 into a temporary folder (`bench_side_by_side.export`); one worker process per tree imports its own package through
 PYTHONPATH and writes every reading (kind, confidence, beautified geometry, alternatives, reason) as JSON, whose floats
 round-trip exactly. Prints how many readings differ in kind, and in anything at all (geometry beyond ``--tolerance``,
-confidence, alternatives), by set; nothing about any stroke. The second, third and fourth held-back groups
+confidence, alternatives), by set; nothing about any stroke. The second to fifth held-back groups
 (`bench_generalisation.is_held_back_new`, `held_back_set`) are left out entirely: their strokes are not recognised.
 """
 

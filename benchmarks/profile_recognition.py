@@ -5,7 +5,7 @@ Usage: .venv/bin/python benchmarks/profile_recognition.py SET [SET ...] [--top 2
 
 Each single-stroke sample is resampled to 200 points with its times (`bench_recognition.resample`, as
 `bench_side_by_side` times it; ``--as-drawn`` keeps the points as recorded) and recognised once under cProfile. The
-second, third and fourth held-back groups are left out (`compare_readings.strokes`). Prints the total and the top
+second to fifth held-back groups are left out (`compare_readings.strokes`). Prints the total and the top
 entries.
 """
 

@@ -15,8 +15,11 @@ database FC, a writer a source, read from InkML), which are the third held-back 
 (`bench_generalisation.THIRD_SETS`: scored only by ``bench_generalisation.py --third``, by the lead, once); and the
 sets of the fourth search (`FOURTH_ENTRIES`, read by `fourth_sets`: set ``quickdraw``, single drawings of Quick, Draw!
 players, a country a source; set ``tutorboard``, one person's pen strokes), the fourth held-back group
-(`bench_generalisation.FOURTH_SETS`: scored only by ``--fourth``). Only Quick, Draw! (CC BY 4.0) carries a licence
-that allows copying it, and nothing is committed; a repository is read from
+(`bench_generalisation.FOURTH_SETS`: scored only by ``--fourth``); and the sets of the fifth search (`FIFTH_ENTRIES`,
+read by `fifth_sets`: sets ``sign``, ``lowvision``, ``eds``, ``mmgplus``, ``homus``, ``laviola``, ``nicicon``, public
+2D gesture sets as the Gester tool republishes them), the fifth held-back group (`bench_generalisation.FIFTH_SETS`:
+scored only by ``--fifth``). Only Quick, Draw! (CC BY 4.0) carries a licence that allows copying it, and nothing is
+committed; a repository is read from
 ``DIR/<owner>+<name>/repo`` (as the fetch tool leaves them) or cloned bare into the cache (`student_sets.git_dir`).
 
 Each entry names the folder holding one person's recordings (``ONE``) or a folder of per-person subfolders
@@ -38,42 +41,17 @@ import sys
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from pathlib import Path
-from typing import NamedTuple
 
+import fifth_sets
 import fourth_sets
 import student_sets
+
+# the forms and Entry are re-exported: the tests and other scripts import them from here
+from set_entries import ACCORD, GESTER, INKML, JAVA, ONE, PER_FOLDER, QUICKDRAW, SMARTINK, XML, Entry  # noqa: F401
 from student_sets import _git, git_dir, reserved_points, times_ms
 
 CACHE = Path.home() / ".cache" / "physink"
-ONE, PER_FOLDER = "one", "per-folder"
-XML, ACCORD, JAVA, INKML, QUICKDRAW, SMARTINK = "xml", "accord", "java", "inkml", "quickdraw", "smartink"
 INK = "{http://www.w3.org/2003/InkML}"
-
-
-class Entry(NamedTuple):
-    set_name: str
-    repo: str
-    commit: str
-    folder: str
-    device: str | None
-    """None: the file says (MMG's InputType)."""
-    layout: str
-    """`ONE` (the folder is one person, named by `person`) or `PER_FOLDER` (each subfolder is one person)."""
-    person: str = ""
-    only: tuple[str, ...] = ()
-    """`PER_FOLDER`: the subfolders read (all when empty)."""
-    form: str = XML
-    """`XML`: a gesture a file ($1 or $N form); `ACCORD`: a file a label of ``<Sequence>`` samples (the Accord.NET
-    gesture sample's form); `JAVA`: a folder a label of Java-serialised samples; `INKML`: a diagram a file, its
-    symbols trace groups labelled by their ``truth`` annotation, its writer named in the file (the FC database);
-    `QUICKDRAW`: Quick, Draw! raw NDJSON, a file a category (``only``: the categories read), a drawing's person its
-    country; `SMARTINK`: TutorBoard's gzipped corpora (``only``: the files read), their person ``person``
-    (`fourth_sets`)."""
-    rename: tuple[str, str] = ("", "")
-    """`PER_FOLDER`: (a prefix put before, a suffix taken off) each subfolder's name to name its person, so that one
-    person's folders on several devices are one source (``user01mouse`` -> ``user01``) and two studies of one team
-    are not (``user1`` -> ``trackpad-user1``)."""
-
 
 MAX_COPIES = 5
 """A gesture file whose stroke was gathered already under another source is skipped (a file copied by hand); more
@@ -107,6 +85,24 @@ FOURTH_ENTRIES: tuple[Entry, ...] = (
 )
 """The sets of the fourth search (issue 25, `bench_generalisation.FOURTH_SETS`: the fourth held-back group, never
 designed on; `benchmarks/SOURCES.md`, "The fourth search")."""
+GESTER_REPO = ("nmagrofuoco/Gester", "cd24525018a3007b769f100518e9bfc6bf982e2c")
+FIFTH_ENTRIES: tuple[Entry, ...] = (
+    Entry("sign", *GESTER_REPO, "datasets/2D/SIGN", "pen on a {os}", ONE, "{0}", form=GESTER),
+    Entry("lowvision", *GESTER_REPO, "datasets/2D/LowVision", "finger on a touch screen", ONE, "{0}/{1}",
+          ("with_impairment", "without_impairment"), GESTER),
+    Entry("eds", *GESTER_REPO, "datasets/2D/EDS", "pen", ONE, "{0}/{1}", ("EDS-1", "EDS-2"), GESTER),
+    Entry("mmgplus", *GESTER_REPO, "datasets/2D/MMG+", "finger on a smartphone (Huawei ANE-LX1)", ONE, "{1}",
+          ("Smartphone",), GESTER),
+    Entry("mmgplus", *GESTER_REPO, "datasets/2D/MMG+", "finger on a tablet (Samsung SM-T580)", ONE, "{1}", ("Tablet",),
+          GESTER),
+    Entry("homus", *GESTER_REPO, "datasets/2D/HOMUS", "stylus on a Samsung Galaxy Note 10.1", ONE, "{0}", form=GESTER),
+    Entry("laviola", *GESTER_REPO, "datasets/2D/LaViola", "pen on an HP TC1100 Tablet PC", ONE, "{1}",
+          ("training1", "training2"), GESTER),
+    Entry("nicicon", *GESTER_REPO, "datasets/2D/NicIcon", "pen", ONE, "{0}", form=GESTER),
+)
+"""The sets of the fifth search (issue 25, `bench_generalisation.FIFTH_SETS`: the fifth held-back group, never
+designed on; `benchmarks/SOURCES.md`, "The fifth search"): Gester's copies of public 2D sets, each read from its own
+folder only (never its ``$1`` folder, the reserved $1 logs, nor its ``MMG`` folder, the set ``mmg`` again)."""
 ENTRIES: tuple[Entry, ...] = (
     Entry("itt", "ITT-24/assignment-6-gesture-recognition-EmmaSophieReichert",
           "32d2840d2a55803e49d522f51e260a494c71589e", "dataset/my-dataset", "mouse", ONE, "EmmaSophieReichert"),
@@ -138,9 +134,9 @@ ENTRIES: tuple[Entry, ...] = (
           "06d93512747fca7352b4d7e1c5417f999767ad8f", "trainData", "mouse", ONE, "gtiwari333", form=JAVA),
     *THIRD_ENTRIES,
     *FOURTH_ENTRIES,
+    *FIFTH_ENTRIES,
 )
-"""Every set of the second, third and fourth searches (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and
-how."""
+"""Every set of the second to fifth searches (issue 25), pinned; `benchmarks/SOURCES.md` says who drew each and how."""
 
 SPELLINGS = {**student_sets.LABEL_SPELLINGS, "pig_tail": "pigtail", "zig_zag": "zigzag",
              "left_square_bracket": "left_sq_bracket", "right_square_bracket": "right_sq_bracket",
@@ -291,6 +287,9 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
                 if dataset == keep:
                     yield f"{at}{path}#{k}", entry.person, entry.device, label, [stroke], ""
         return
+    if entry.form == GESTER:  # Gester's unified JSON, a gesture a file
+        yield from fifth_sets.gester_gestures(entry, gdir)
+        return
     if entry.form == JAVA:  # a folder per label, a serialised RawFeature per sample
         for sub in _subfolders(gdir, c, entry.folder):
             for name in _files(gdir, c, sub, ".TRAINDATA"):
@@ -316,7 +315,8 @@ def _gestures(entry: Entry, gdir: Path) -> Iterator[tuple[str, str, str | None, 
 
 def entry_rows(entry: Entry, mirrors: Path | None, known: set, seen: dict, skipped: list[str]) -> list[dict]:
     """The rows of one entry. ``known``: the $1 development people's strokes (refused); ``seen``: stroke -> source
-    of every stroke gathered so far (a stroke seen under another source is refused)."""
+    of every stroke gathered so far (a stroke seen under another source is refused), and (source, gesture) -> file
+    (a `GESTER` gesture whose every point repeats one of the same source is skipped)."""
     out: list[dict] = []
     copies: dict[str, int] = {}
     for where, subject, device, label, strokes, date in _gestures(entry, git_dir(entry.repo, mirrors)):
@@ -339,6 +339,12 @@ def entry_rows(entry: Entry, mirrors: Path | None, known: set, seen: dict, skipp
                                  "a copy of another source")
             skipped.append(f"{where} (a stroke of {first} again)")
             continue
+        if entry.form == GESTER:  # Gester's copies keep a few files twice under one person: read once
+            whole = (source, tuple(tuple((p[0], p[1]) for p in s) for s in strokes))
+            if whole in seen:
+                skipped.append(f"{where} (the same gesture as {seen[whole]})")
+                continue
+            seen[whole] = where
         for k, s in zip(keys, strokes, strict=True):
             if len(s) >= 8:
                 seen.setdefault(k, source)

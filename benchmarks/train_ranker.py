@@ -22,11 +22,11 @@ Tables per set and device (``--brief``: only these), per source and class; a ``R
 
 The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given;
 the second (`bench_generalisation.held_back_new`) has been design material since it was opened
-(`bench_generalisation.SECOND_GROUP_OPEN`); the third and fourth (the sets of the third and fourth searches,
-`bench_generalisation.THIRD_SETS`, `FOURTH_SETS`) never: they are neither fitted on nor scored here. ``--write`` fits on
-every source read, the margin chosen as the recipe says, and writes the model as the Python data module the recogniser
-imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in ~/.cache/physink/ under a key of the
-rows and the recognition package's source (not the written model's).
+(`bench_generalisation.SECOND_GROUP_OPEN`); the third to fifth (the sets of the third to fifth searches,
+`bench_generalisation.THIRD_SETS`, `FOURTH_SETS`, `FIFTH_SETS`) never: they are neither fitted on nor scored here.
+``--write`` fits on every source read, the margin chosen as the recipe says, and writes the model as the Python data
+module the recogniser imports (PATH: physink_tui/scene/recognition/ranker_model.py). Features are kept in
+~/.cache/physink/ under a key of the rows and the recognition package's source (not the written model's).
 
 The shipped model's recipe (`ranker_model.py`, refitted 2026-12-04 on the rules of f0d407d, the 92 design sources):
 ``--augment 2 --copies-weight 0.5 --margins 0.5 --drop has_times,corner_slowdown --events-share 1.0 --lam 0.003
@@ -222,10 +222,10 @@ def model_module_text(doc: dict) -> str:
 
 
 def rows_read(rows: list[Row], heldback: bool, write: bool) -> tuple[list[Row], set[str], set[str]]:
-    """The scored rows the ranker may read, and the first and second held-back groups among them. The third and
-    fourth held-back groups (`bench_generalisation.THIRD_SETS`, `FOURTH_SETS`) are never read, not even with
-    ``heldback`` or ``write`` (`scored_rows` leaves them out); the second only with ``heldback``; the first only with
-    ``heldback`` or ``write``."""
+    """The scored rows the ranker may read, and the first and second held-back groups among them. The third to
+    fifth held-back groups (`bench_generalisation.THIRD_SETS`, `FOURTH_SETS`, `FIFTH_SETS`) are never read, not even
+    with ``heldback`` or ``write`` (`scored_rows` leaves them out); the second only with ``heldback``; the first only
+    with ``heldback`` or ``write``."""
     rows, _ = scored_rows(rows)
     first, new = held_back(rows), held_back_new(rows)
     if not heldback:  # the second group is never read without --heldback, not even to write a model

@@ -46,7 +46,11 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    reach 10 % (`ranking.BOX_MARGIN`: a box whose upright sides lean, squared, pokes out). A polygon left open (its
    last side heading home, or a star's run on past its start, `recognize.STAR_CROSSINGS`) is judged by its sides'
    turning where an end hook undoes the path's (`recognize.LEFT_OPEN_WOBBLE`), and its last side may bow
-   (`recognize.LAST_SIDE_BOW`).
+   (`recognize.LAST_SIDE_BOW`). A loop read round is read as its polygon of four sides or more after all
+   (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its
+   vertices turn within 0.4 of their shorter side (`polygon_checks.sharp_corners`; a round loop needs 0.8): a
+   hexagon or octagon whose many vertices the complexity penalty outweighed; never on points sparser than four to
+   the shortest side (a circle given as a few points round it).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
@@ -97,7 +101,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `polygon_fit.py`: best k-gon / k-segment chain for every k: candidate vertices, per-run line costs from prefix
   sums, dynamic programming, vertices where sides meet
 - `polygon_checks.py`: whether a fit's vertices are real corners; flat ends for hairpins; how much two outlines
-  overlap
+  overlap; whether a closed fit's corners are sharp rather than round bends
+- `round_or_cornered.py`: a loop the ranking read round, read as the polygon drawn when its corners are sharp
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
 - `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line

@@ -9,6 +9,7 @@ these a fit passes; `split_hairpins` turns each doubled-back vertex into that fl
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -16,6 +17,7 @@ import numpy as np
 import shapely
 
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, run_lines
+from physink_tui.scene.recognition.stroke_features import corner_roundness
 
 MIN_CORNER_DEG = 35.0
 """Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""
@@ -90,8 +92,10 @@ def _side_line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return centre, vt
 
 
-def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None:
-    """The fit's verdict: None when a vertex is no real corner or a side is bowed, else its hairpins."""
+def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: float = MIN_CORNER_DEG,
+               ) -> Corners | None:
+    """The fit's verdict: None when a vertex is no real corner (turning less than ``min_corner_deg``, or a cut-off
+    corner, a hook) or a side is bowed, else its hairpins."""
     pts, idx = fit.points, fit.indices
     corners = fit.vertices
     verts = np.concatenate([corners, corners[:1]]) if closed else corners
@@ -103,7 +107,7 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float) -> Corners | None
     if closed:
         heading = np.append(heading, heading[0])
     degrees = np.degrees(np.abs((np.diff(heading) + np.pi) % (2 * np.pi) - np.pi))
-    if len(degrees) and float(degrees.min()) < MIN_CORNER_DEG:
+    if len(degrees) and float(degrees.min()) < min_corner_deg:
         return None
     hairpins: list[int] = []
     if closed:
@@ -170,3 +174,61 @@ def split_hairpins(fit: PolygonFit, corners: Corners) -> np.ndarray:
         out.append(c1 + float((tip - c1) @ vt1[0]) * vt1[0])
         out.append(c2 + float((tip - c2) @ vt2[0]) * vt2[0])
     return np.array(out)
+
+
+
+SHARP_CORNER = 0.4
+"""A closed loop's polygon fit turns at its corners, not round between them, when at three in four of its vertices
+(`SHARP_SHARE`) the path does 80 % of the turning between the midpoints of the neighbouring sides within this share of
+the shorter side (`stroke_features.corner_roundness`). A round loop spreads its turning evenly, so it needs about 0.8
+of a side for that (a regular k-gon's sides through a circle: 0.8 whatever k; the pen models' ovals: 0.8 or more at
+most vertices); a drawn corner turns within a tenth or two of its sides, a hurried hand's rounded corner (a radius up
+to 0.15 of the side) within a third."""
+SHARP_SHARE = 0.75
+"""The share of a polygon's vertices that must be sharp (`SHARP_CORNER`): a corner in four may look round where the
+hand overshot it and cut back (the hurried pen model's octagons: up to 2 of 8), while a lumpy circle's polygon has as
+many round bends as sharp ones (people's lumpy circles in the design sets: 4 of 8 at 0.4 or more)."""
+SPARSE_STEP = 0.25
+"""Corners are judged only on points at least four to the shortest side (half the stroke drawn in steps between its
+own points no longer than this share of it, `typical_step`): a circle given as 8-25 points round it (a mouse, a
+coarse event rate, events in bursts) is straight between them and as sharp at each as a polygon drawn."""
+SHALLOW_CORNER_DEG = 15.0
+"""A vertex of a closed polygon turning less than `MIN_CORNER_DEG` but at least this much is still a corner where the
+turn is sharp (`SHARP_CORNER` at that vertex itself): an irregular octagon's flattest corners turn 15-35 degrees, and a
+bowed side, which `MIN_CORNER_DEG` keeps from being read as two, spreads its turning along the side."""
+
+
+def typical_step(drawn: np.ndarray) -> float:
+    """The step between the stroke's points that half its length is drawn in steps at least as long as (a median
+    weighted by length: events in bursts, a few points close together then a long gap, have short steps but draw
+    the path in the gaps' long ones)."""
+    steps = np.sort(np.hypot(*np.diff(drawn, axis=0).T))
+    if not len(steps) or steps[-1] == 0.0:
+        return math.inf
+    covered = np.cumsum(steps[::-1])  # the longest first
+    return float(steps[::-1][int(np.searchsorted(covered, covered[-1] / 2))])
+
+
+def corner_roundness_closed(fit: PolygonFit) -> np.ndarray:
+    """`stroke_features.corner_roundness` at each vertex of a closed fit, in the order of its vertices."""
+    ring = fit.points[:-1]
+    m, idx = len(ring), [int(i) % len(ring) for i in fit.indices[:-1]]
+    unrolled = np.concatenate([ring, ring, ring])  # every vertex with both neighbours, across the loop's start
+    corners = [idx[-1], *(m + i for i in idx), 2 * m + idx[0]]
+    return np.asarray(corner_roundness(unrolled, corners))
+
+
+def sharp_corners(fit: PolygonFit, step: float) -> bool:
+    """Whether the vertices of a closed fit are corners the pen turned at (`SHARP_CORNER`), on points dense enough to
+    tell a corner from a round bend (`SPARSE_STEP`; ``step``: `typical_step` of the stroke's own points, in the fit's
+    units); any vertex turning less than `MIN_CORNER_DEG` must be sharp itself (`SHALLOW_CORNER_DEG`)."""
+    verts = fit.vertices
+    sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
+    if step > SPARSE_STEP * float(np.hypot(*sides.T).min()):
+        return False
+    roundness = corner_roundness_closed(fit)
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    turns = np.degrees(np.abs((heading - np.roll(heading, 1) + np.pi) % (2 * np.pi) - np.pi))  # at each vertex
+    shallow = turns < MIN_CORNER_DEG
+    round_ones = int(np.count_nonzero(roundness >= SHARP_CORNER))
+    return round_ones <= (1.0 - SHARP_SHARE) * len(roundness) and bool((roundness[shallow] < SHARP_CORNER).all())

@@ -43,6 +43,7 @@ from physink_tui.scene.recognition.ranking import (
     keeps_the_outline,
     rank,
 )
+from physink_tui.scene.recognition.round_or_cornered import cornered_after_all
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 TOO_SHORT = "too short to recognise"
@@ -218,11 +219,13 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if ellipse is None:  # not already fitted to this loop by `_closed_loop`
         ellipse = fit_ellipse(loop)
     lumpy = _lumpy_round(loop, noise, ellipse)
-    if lumpy:
-        polygons = [p for p in polygons if p.params < 2 * LUMPY_SIDES]  # no corners: lumps are not sides
-    candidates: list[Candidate | Pending | None] = [*polygons, round_shape(loop, ellipse)]
+    sided = [p for p in polygons if p.params < 2 * LUMPY_SIDES] if lumpy else polygons  # lumps are not sides
+    round_fit = round_shape(loop, ellipse)
+    candidates: list[Candidate | Pending | None] = [*sided, round_fit]
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
+    if ranked.kind in ("circle", "ellipse") and round_fit is not None:
+        ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
