@@ -42,21 +42,26 @@ def _size(pts: np.ndarray) -> float:
 
 def acceleration(stroke: Stroke, rng: np.random.Generator) -> Stroke:
     """A trackpad's pointer acceleration: each event's motion multiplied by a gain that rises with the finger's speed
-    (gain (v / median v) ** k, k 0.3-0.7, within 0.4-2.5): slow parts of the stroke shrink, fast parts stretch, and a
-    closed shape need not close where it began. The finger's path is the stroke as drawn."""
+    (gain (v / median v) ** k, k 0.3-0.7, within 0.4-2.5): slow parts of the stroke shrink, fast parts stretch. The
+    hand steers by the pointer on the screen, so where the stroke ends relative to where it began is kept (the drift
+    the gain makes is taken back evenly along the path: a closed shape still closes); the shape between is warped."""
     pts, t = stroke
     if len(pts) < 3:
         return stroke
     clock = _clock(pts, t)
     step = np.diff(pts, axis=0)
     dt = np.maximum(np.diff(clock), 1e-3)
-    speed = np.hypot(*step.T) / dt
+    length = np.hypot(*step.T)
+    speed = length / dt
     moving = speed[speed > 0]
     if len(moving) == 0:
         return stroke
     gain = np.clip((np.maximum(speed, 1e-9) / float(np.median(moving))) ** rng.uniform(0.3, 0.7), 0.4, 2.5)
-    out = np.vstack([pts[:1], pts[:1] + np.cumsum(step * gain[:, None], axis=0)])
-    return out, t
+    moved = step * gain[:, None]
+    drift = moved.sum(axis=0) - step.sum(axis=0)
+    share = length * gain / max(float((length * gain).sum()), 1e-12)
+    moved -= np.outer(share, drift)
+    return np.vstack([pts[:1], pts[:1] + np.cumsum(moved, axis=0)]), t
 
 
 def lift_hook(stroke: Stroke, rng: np.random.Generator) -> Stroke:
