@@ -318,7 +318,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("sets", type=Path, nargs="+", help=".jsonl files or set folders (never the held-back groups')")
     ap.add_argument("--every", type=int, default=3, help="keep one stroke in K (by a hash: the same ones every run)")
-    ap.add_argument("--only", default="", help="comma-separated variant names (default: all)")
+    ap.add_argument("--only", default="", help="variant names, comma- or (names with commas) semicolon-separated")
     ap.add_argument("--json", type=Path, help="also write each variant's per-row results here")
     args = ap.parse_args()
     rows = read_sets(args.sets, "bench_device_stress")
@@ -327,7 +327,7 @@ def main() -> None:
             and zlib.crc32(f"{r['file']}|{r['label']}".encode()) % args.every == 0]
     variants: dict[str, Transform | None] = {"as drawn": None, **TRANSFORMS, **COMBINED, **MORE}
     if args.only:
-        wanted = set(args.only.split(","))
+        wanted = set(args.only.split(";" if ";" in args.only else ","))  # ';' for names with commas
         variants = {n: c for n, c in variants.items() if n == "as drawn" or n in wanted}
     print(f"## Device stress, transformed strokes, not people ({machine()})\n")
     print(f"{len(kept)} strokes (one in {args.every}) of " + ", ".join(sorted({r['source'] for r in kept})) + ".\n")

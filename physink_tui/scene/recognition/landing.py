@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-DWELL_RADIUS = 0.04
+DWELL_RADIUS = 0.06
 """A dwell stays within this share of the stroke's diagonal of its end point (or two noise widths, if more)."""
 DWELL_PATH = 2.5
 """...and wanders there: its points' path is at least this many radii long (a stroke that departs straight away
@@ -41,7 +41,7 @@ def settled(pts: np.ndarray, diag: float, noise: float) -> np.ndarray:
     >>> line = np.column_stack([np.linspace(0, 100, 20), np.zeros(20)])
     >>> blob = rng.normal(0, 1.5, (8, 2))
     >>> int(settled(np.vstack([blob, line]), 100.0, 1.0).sum())
-    20
+    19
     >>> int(settled(line, 100.0, 1.0).sum())
     20
     """
