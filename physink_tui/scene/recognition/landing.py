@@ -15,22 +15,23 @@ import numpy as np
 DWELL_RADIUS = 0.06
 """A dwell stays within this share of the stroke's diagonal of its end point (or two noise widths, if more)."""
 DWELL_PATH = 2.5
-"""...and wanders there: its points' path is at least this many radii long (a stroke that departs straight away
-travels one radius to leave; a hook out and back, two)."""
+"""...and wanders there: its points' path is at least this many times as long as the farthest of them is from the
+end point (a stroke that departs straight away travels that far once; a hook out and back, twice)."""
 DWELL_POINTS = 4
 """...over at least this many points."""
 
 
 def _dwell(pts: np.ndarray, radius: float) -> int:
-    """How many points from ``pts[0]`` on stay within ``radius`` of it while wandering (`DWELL_PATH`), or 0."""
+    """How many points from ``pts[0]`` on stay within ``radius`` of it, wandering there (`DWELL_PATH`), or 0."""
     away = np.hypot(*(pts - pts[0]).T) > radius
     if not away.any():
         return 0
     out = int(np.argmax(away))
     if out < DWELL_POINTS:
         return 0
+    extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
     path = float(np.hypot(*np.diff(pts[:out], axis=0).T).sum())
-    return out if path >= DWELL_PATH * radius else 0
+    return out if path >= DWELL_PATH * extent else 0
 
 
 def settled(pts: np.ndarray, diag: float, noise: float) -> np.ndarray:
