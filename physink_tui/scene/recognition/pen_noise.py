@@ -84,7 +84,14 @@ def turns_at_every_event(pts: np.ndarray, diag: float) -> bool:
         return False
     d = np.diff(pts, axis=0)
     step = np.hypot(d[:, 0], d[:, 1])
-    if median(step) < SPARSE_STEP * diag or float(np.std(step)) > EVEN_STEPS * float(np.mean(step)):
+    typical = median(step)
+    first, last = 0, len(step)
+    while last - first > 4 and step[first] < typical / 3:  # a hook or the last of a dwell at an end, at this scale
+        first += 1
+    while last - first > 4 and step[last - 1] < typical / 3:
+        last -= 1
+    d, step = d[first:last], step[first:last]
+    if typical < SPARSE_STEP * diag or float(np.std(step)) > EVEN_STEPS * float(np.mean(step)):
         return False
     sides = d[step > 0]
     heading = np.arctan2(sides[:, 1], sides[:, 0])
