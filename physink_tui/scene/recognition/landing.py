@@ -14,11 +14,15 @@ import numpy as np
 
 DWELL_RADIUS = 0.06
 """A dwell stays within this share of the stroke's diagonal of its end point (or two noise widths, if more)."""
-DWELL_PATH = 2.5
+DWELL_PATH = 3.5
 """...and wanders there: its points' path is at least this many times as long as the farthest of them is from the
-end point (a stroke that departs straight away travels that far once; a hook out and back, twice)."""
+end point (a stroke that departs straight away travels that far once; a hook out and back twice, three times in whole
+pixels' stair steps: `tests/test_swung_lines.py`'s arc that lands with a hook)..."""
 DWELL_POINTS = 4
-"""...over at least this many points."""
+"""...over at least this many points..."""
+DWELL_BREADTH = 0.4
+"""...and spreads about as wide as long (its narrower principal spread at least this share of its wider): a hook at an
+end goes out and back along one line, and stays (`stroke_geometry.remove_hooks` judges it)."""
 
 
 def _dwell(pts: np.ndarray, radius: float) -> int:
@@ -31,7 +35,10 @@ def _dwell(pts: np.ndarray, radius: float) -> int:
         return 0
     extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
     path = float(np.hypot(*np.diff(pts[:out], axis=0).T).sum())
-    return out if path >= DWELL_PATH * extent else 0
+    if path < DWELL_PATH * extent:
+        return 0
+    spread = np.linalg.eigvalsh(np.cov((pts[:out] - pts[:out].mean(axis=0)).T))
+    return out if spread[0] >= DWELL_BREADTH**2 * spread[1] else 0  # about as wide as long: not a hook
 
 
 def settled(pts: np.ndarray, diag: float, noise: float) -> np.ndarray:

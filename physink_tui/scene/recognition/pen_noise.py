@@ -59,7 +59,7 @@ EVEN_TURNS = 0.75
 """A sparsely sampled closed stroke that turns at this share of its events or more by at least half its mean turn
 (`turns_at_every_event`) has no sides: a box or polygon's events between its corners run straight (of the hcira and
 itt strokes sampled by 8-25 events, one in four, 173 of the 187 closed round ones turn so, and none of the boxes or
-polygons once round one way)."""
+polygons once round one way; counted before `EVEN_STEPS` was added)."""
 
 
 EVEN_STEPS = 0.45
