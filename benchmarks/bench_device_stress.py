@@ -8,11 +8,12 @@ keeps one stroke in ``K`` (by a hash of its file and label: the same strokes eve
 thing a device does (`TRANSFORMS`): whole pixels at a small size, repeated points, a coarse event rate (every 15-30 ms;
 8-25 events on a fast stroke), uneven
 bursts of events, a mouse's axis-aligned stair steps, a finger's blunted corners and wide arcs, ends carried past
-where they were meant to stop, no times or times only at the ends; `COMBINED` chains a few as one device would. Each
-stroke's random choices are seeded by its file, label and the transform's name: deterministic. Every stroke is read
-once a variant, and both readings are kept: the rules' (before the learned ranker) and the shipped recogniser's.
-Prints Markdown: per set and per class, the accuracy of each variant beside the strokes as drawn. A figure here is a
-figure on transformed strokes, not on people using those devices.
+where they were meant to stop, no times or times only at the ends; `COMBINED` chains a few as one device would;
+`MORE` (`device_habits`) adds pointer acceleration, a finger's lift and start, slow corners, a touch grid, y stored
+upward and tiny mouse drawings. Each stroke's random choices are seeded by its file, label and the transform's name:
+deterministic. Every stroke is read once a variant, and both readings are kept: the rules' (before the learned
+ranker) and the shipped recogniser's. Prints Markdown: per set and per class, the accuracy of each variant beside
+the strokes as drawn. A figure here is a figure on transformed strokes, not on people using those devices.
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from pathlib import Path
 import numpy as np
 from bench_generalisation import is_held_back_new, scored_rows
 from bench_recognition import machine, table
+from device_habits import TRANSFORMS_MORE, acceleration, lift_hook, lift_pause, start_blob, touch_grid
 from label_kinds import read_table
 from stroke_sets import Row, read_sets, source_of
 
@@ -234,6 +236,16 @@ COMBINED: dict[str, Transform] = {
     "touch: finger, overshoot, events every 15-30 ms": chain(finger, overshoot, coarse),
     "tkinter: 30-80 px, no times": chain(pixels(30, 80), no_times),
 }
+MORE: dict[str, Transform] = {
+    **TRANSFORMS_MORE,
+    "tiny mouse: pixels 20-40 px": pixels(20, 40),
+    "trackpad 2: acceleration, 8-25 events, start blob, lift hook": chain(acceleration, fast, start_blob, lift_hook),
+    "touch 2: start blob, touch grid, events every 15-30 ms, lift pause": chain(start_blob, touch_grid, coarse,
+                                                                               lift_pause),
+    "tiny mouse 2: 20-40 px, bursts, repeats": chain(pixels(20, 40), bursts, duplicates),
+}
+"""The second device pass's transforms (`device_habits`) and combinations; `TRANSFORMS` and `COMBINED` stay as the
+sixth pass left them, so its figures stay comparable."""
 
 
 def read(stroke: Stroke) -> tuple[Recognition, Recognition]:
@@ -306,16 +318,16 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("sets", type=Path, nargs="+", help=".jsonl files or set folders (never the held-back groups')")
     ap.add_argument("--every", type=int, default=3, help="keep one stroke in K (by a hash: the same ones every run)")
-    ap.add_argument("--only", default="", help="comma-separated variant names (default: all)")
+    ap.add_argument("--only", default="", help="variant names, comma- or (names with commas) semicolon-separated")
     ap.add_argument("--json", type=Path, help="also write each variant's per-row results here")
     args = ap.parse_args()
     rows = read_sets(args.sets, "bench_device_stress")
     kept, _ = scored_rows(rows)
     kept = [r for r in kept if not is_held_back_new(source_of(r, "person"))
             and zlib.crc32(f"{r['file']}|{r['label']}".encode()) % args.every == 0]
-    variants: dict[str, Transform | None] = {"as drawn": None, **TRANSFORMS, **COMBINED}
+    variants: dict[str, Transform | None] = {"as drawn": None, **TRANSFORMS, **COMBINED, **MORE}
     if args.only:
-        wanted = set(args.only.split(","))
+        wanted = set(args.only.split(";" if ";" in args.only else ","))  # ';' for names with commas
         variants = {n: c for n, c in variants.items() if n == "as drawn" or n in wanted}
     print(f"## Device stress, transformed strokes, not people ({machine()})\n")
     print(f"{len(kept)} strokes (one in {args.every}) of " + ", ".join(sorted({r['source'] for r in kept})) + ".\n")

@@ -115,7 +115,9 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
   which the open-stroke rules misjudge
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
-- `pen_noise.py`: the stroke's own jitter, and the bends a shape its size makes between sparse points
+- `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few
+  sparse events turn at every one (a round shape sampled, not a polygon's sides)
+- `landing.py`: a finger's or pen's dwell where it lands or lifts (points wandering about the end), kept as one point
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
 - `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;

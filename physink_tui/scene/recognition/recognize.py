@@ -23,7 +23,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes, pen_noise, ranker
+from physink_tui.scene.recognition import landing, open_shapes, pen_noise, ranker
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, x_symbol
@@ -125,6 +125,12 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         pts, keep, size, reason = _clean(points)
     if pts is None:
         return Recognition(None, 0.0, None, (), reason)
+    given = noise if math.isfinite(noise) and noise > 0 else 0.0
+    settled = landing.settled(pts, size, given)  # a finger's dwell where it landed or lifted: one point
+    if not settled.all():
+        if keep is not None:
+            keep[np.flatnonzero(keep)[~settled]] = False
+        pts, size = pts[settled], sg.bbox_diagonal(pts[settled])
     if len(pts) == 2:
         return Recognition("line", 1.0, Line(_point(pts[0]), _point(pts[-1])))
     # judge the shape at unit size round the origin (no overflow, no underflow), answer in its own units
@@ -133,7 +139,6 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         scale = float(np.abs(pts - origin).max())
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
-    given = noise if math.isfinite(noise) and noise > 0 else 0.0
     measured = pen_noise.jitter(pts)
     # the pen may be worse than said, but a jitter that sparse points' own bends could make (`SPARSE_BENDS`) is
     # credited only up to an ordinary pen's (`SHAKY`) and does not get the stroke smoothed where it was sampled
@@ -218,7 +223,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
     if ellipse is None:  # not already fitted to this loop by `_closed_loop`
         ellipse = fit_ellipse(loop)
-    lumpy = _lumpy_round(loop, noise, ellipse)
+    lumpy = _lumpy_round(loop, noise, ellipse, raw, diag)
     sided = [p for p in polygons if p.params < 2 * LUMPY_SIDES] if lumpy else polygons  # lumps are not sides
     round_fit = round_shape(loop, ellipse)
     candidates: list[Candidate | Pending | None] = [*sided, round_fit]
@@ -293,13 +298,16 @@ def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: f
     return Recognition("line", FREEFORM_CONFIDENCE, Line(points[0], points[-1]), ())
 
 
-def _lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None) -> bool:
+def _lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw: np.ndarray, diag: float) -> bool:
     """A closed loop about as wide as it is long (its ellipse, `fit_ellipse` of it, no flatter than `LUMPY_ASPECT`)
     that turns smoothly all round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides
-    are not lumps)."""
+    are not lumps); or sampled by a few events that it turns at nearly every one of (`pen_noise.turns_at_every_event`:
+    a circle by 8-12 events is an octagon to fit, but a drawn polygon runs straight through its events between
+    corners)."""
     if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
         return False
-    return sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH
+    return (sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH
+            or pen_noise.turns_at_every_event(raw, diag))
 
 
 def _polygon_left_open(work: np.ndarray, diag: float) -> bool:

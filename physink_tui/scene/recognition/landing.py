@@ -1,0 +1,71 @@
+"""Where a finger or pen dwells as it lands or lifts: points wandering about the stroke's first (or last) point before
+it departs (or after it arrives), kept as one point; no classification, no I/O.
+
+A fingertip's contact settles as it lands on a trackpad or touch screen (its centre shifts while the stroke has not
+yet left), and wanders again as pressure drops before it lifts; a device reporting every few milliseconds gives a
+cluster of points there. Left in, the cluster is a scribble at the stroke's end: its bends read as a shaky hand
+(`pen_noise.jitter`'s median counts every point alike, and a short stroke's dozen events are outnumbered) and its
+back-and-forth as a hook or a loop.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+DWELL_RADIUS = 0.06
+"""A dwell stays within this share of the stroke's diagonal of its end point (or two noise widths, if more)."""
+DWELL_PATH = 3.5
+"""...and wanders there: its points' path is at least this many times as long as the farthest of them is from the
+end point (a stroke that departs straight away travels that far once; a hook out and back twice, three times in whole
+pixels' stair steps: `tests/test_swung_lines.py`'s arc that lands with a hook)..."""
+DWELL_POINTS = 4
+"""...over at least this many points..."""
+DWELL_BREADTH = 0.4
+"""...and spreads about as wide as long (its narrower principal spread at least this share of its wider): a hook at an
+end goes out and back along one line, and stays (`stroke_geometry.remove_hooks` judges it)."""
+
+
+def _dwell(pts: np.ndarray, radius: float) -> int:
+    """How many points from ``pts[0]`` on stay within ``radius`` of it, wandering there (`DWELL_PATH`), or 0."""
+    away = np.hypot(*(pts - pts[0]).T) > radius
+    if not away.any():
+        return 0
+    out = int(np.argmax(away))
+    if out < DWELL_POINTS:
+        return 0
+    extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
+    path = float(np.hypot(*np.diff(pts[:out], axis=0).T).sum())
+    if path < DWELL_PATH * extent:
+        return 0
+    spread = np.linalg.eigvalsh(np.cov((pts[:out] - pts[:out].mean(axis=0)).T))
+    return out if spread[0] >= DWELL_BREADTH**2 * spread[1] else 0  # about as wide as long: not a hook
+
+
+def settled(pts: np.ndarray, diag: float, noise: float) -> np.ndarray:
+    """Which of ``pts`` (no repeats) to keep: all but a dwell's at either end, where the dwell is kept as its point
+    nearest the dwell's centre.
+
+    >>> rng = np.random.default_rng(1)
+    >>> line = np.column_stack([np.linspace(0, 100, 20), np.zeros(20)])
+    >>> blob = rng.normal(0, 1.5, (8, 2))
+    >>> int(settled(np.vstack([blob, line]), 100.0, 1.0).sum())
+    19
+    >>> int(settled(line, 100.0, 1.0).sum())
+    20
+    """
+    keep = np.ones(len(pts), dtype=bool)
+    if len(pts) < 2 * DWELL_POINTS + 3 or diag <= 0:
+        return keep
+    radius = max(DWELL_RADIUS * diag, 2 * noise)
+    for forward in (True, False):
+        run = pts if forward else pts[::-1]
+        n = _dwell(run, radius)
+        if n == 0 or n > len(pts) // 2:
+            continue
+        centre = run[:n].mean(axis=0)
+        stay = int(np.argmin(np.hypot(*(run[:n] - centre).T)))
+        drop = np.ones(n, dtype=bool)
+        drop[stay] = False
+        idx = np.flatnonzero(drop)
+        keep[idx if forward else len(pts) - 1 - idx] = False
+    return keep
