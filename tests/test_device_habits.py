@@ -8,23 +8,19 @@ strokes are read in place from ``../shared/data/strokes/dollar1-dev.jsonl`` (`sh
 
 from __future__ import annotations
 
-import json
 import math
 import sys
-import zlib
-from functools import cache
 from pathlib import Path
 
 import numpy as np
 import pytest
-from shared_data import shared_path
 
 from physink_tui.scene.recognition import landing, pen_noise
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_device_stress import MORE, as_stroke, events  # the benchmark's own transforms, not copies
-from bench_recognition import ACCEPTS, LABEL_CLASS
+from test_device_sampling import people_rows, short_of_floors
 from test_open_marks import cached_rows
 
 TRACKPAD = "trackpad 2: acceleration, 8-25 events, start blob, lift hook"
@@ -44,28 +40,9 @@ f7632ef: start blob circles 74, stars 88, checks 74, pigtails 85, x 88; lift pau
 stars 81, circles 82, checks 74, pigtails 85, arrows 85; touch circles 89, rectangles 90."""
 
 
-@cache
-def people_rows() -> tuple[dict, ...]:
-    path = shared_path("strokes", "dollar1-dev.jsonl")
-    return tuple(json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip())
-
-
 @pytest.mark.parametrize("name", sorted(FLOORS))
 def test_people_strokes_as_fingers_give_them(name: str) -> None:
-    change = MORE[name]
-    floors = FLOORS[name]
-    right = dict.fromkeys(floors, 0)
-    seen = dict.fromkeys(floors, 0)
-    for row in people_rows():
-        if row["label"] not in floors:
-            continue
-        rng = np.random.default_rng(zlib.crc32(f"{row['file']}|{row['label']}|{name}".encode()))
-        pts, times = change(as_stroke(row), rng)
-        found = recognize_stroke(pts.tolist(), None if times is None else times.tolist())
-        seen[row["label"]] += 1
-        right[row["label"]] += found.kind in ACCEPTS[LABEL_CLASS[row["label"]]]
-    assert all(n == 90 for n in seen.values()), seen
-    short = {label: f"{right[label]}/90 < {floor}" for label, floor in floors.items() if right[label] < floor}
+    short = short_of_floors(MORE[name], name, FLOORS[name])
     assert not short, f"{name}: {short}"
 
 
