@@ -99,12 +99,16 @@ def _exit_when_orphaned(parent: int) -> None:
     os._exit(1)  # no cleanup to run: a worker holds nothing of the user's
 
 
-def _start_worker() -> None:
+def _start_worker(parent: int) -> None:
     """In a worker: Ctrl-C is the parent's to handle (it writes the best so far), not a traceback per worker; and a
     worker whose parent was killed (SIGKILL, SIGTERM) exits instead of waiting forever on a queue whose writing end
-    it holds itself (forked workers inherit it, so it never reads end-of-file)."""
+    it holds itself (forked workers inherit it, so it never reads end-of-file). ``parent`` is the pid the parent
+    gave before starting the worker: a parent killed before this runs has already left the worker to init, whose pid
+    ``os.getppid()`` would give here and then be watched forever."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    threading.Thread(target=_exit_when_orphaned, args=(os.getppid(),), name="orphan-watch", daemon=True).start()
+    if os.getppid() != parent:
+        os._exit(1)
+    threading.Thread(target=_exit_when_orphaned, args=(parent,), name="orphan-watch", daemon=True).start()
 
 
 class ProcessExecutor:
@@ -123,7 +127,8 @@ class ProcessExecutor:
             self.close()
         if self._pool is None:
             self._version = _shared_version
-            self._pool = ProcessPoolExecutor(self.workers, mp_context=_context(), initializer=_start_worker)
+            self._pool = ProcessPoolExecutor(self.workers, mp_context=_context(), initializer=_start_worker,
+                                             initargs=(os.getpid(),))
         return list(self._pool.map(fn, items))
 
     def close(self, *, cancel: bool = False) -> None:
