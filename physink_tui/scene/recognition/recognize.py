@@ -107,8 +107,28 @@ def sparse_bends(pts: np.ndarray, noise: float, measured: float | None = None) -
 def sampled_sparsely(points: Sequence[Sequence[float]], noise: float = PEN_NOISE) -> bool:
     """`sparse_bends` of a stroke as `recognize_stroke` is given it (False where it cannot be recognised)."""
     with np.errstate(all="ignore"):
-        pts, _, _, _ = _clean(points)
-    return pts is not None and sparse_bends(pts, noise if math.isfinite(noise) and noise > 0 else 0.0)
+        pts, keep, size, _ = _clean(points)
+    if pts is None:
+        return False
+    given = _given(noise)
+    return sparse_bends(_settled(pts, keep, size, given)[0], given)
+
+
+def _given(noise: float) -> float:
+    """The pen's stated jitter, 0 where it is not a positive number."""
+    return noise if math.isfinite(noise) and noise > 0 else 0.0
+
+
+def _settled(pts: np.ndarray, keep: np.ndarray | None, size: float,
+             given: float) -> tuple[np.ndarray, np.ndarray | None, float]:
+    """``pts`` (with ``keep``, which of the given points they are, and their diagonal) without a finger's dwell where
+    it landed or lifted (`landing.settled`: kept as one point)."""
+    settled = landing.settled(pts, size, given)
+    if settled.all():
+        return pts, keep, size
+    if keep is not None:
+        keep[np.flatnonzero(keep)[~settled]] = False
+    return pts[settled], keep, sg.bbox_diagonal(pts[settled])
 
 
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
@@ -125,12 +145,8 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         pts, keep, size, reason = _clean(points)
     if pts is None:
         return Recognition(None, 0.0, None, (), reason)
-    given = noise if math.isfinite(noise) and noise > 0 else 0.0
-    settled = landing.settled(pts, size, given)  # a finger's dwell where it landed or lifted: one point
-    if not settled.all():
-        if keep is not None:
-            keep[np.flatnonzero(keep)[~settled]] = False
-        pts, size = pts[settled], sg.bbox_diagonal(pts[settled])
+    given = _given(noise)
+    pts, keep, size = _settled(pts, keep, size, given)
     if len(pts) == 2:
         return Recognition("line", 1.0, Line(_point(pts[0]), _point(pts[-1])))
     # judge the shape at unit size round the origin (no overflow, no underflow), answer in its own units

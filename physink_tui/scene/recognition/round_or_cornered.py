@@ -33,37 +33,30 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
     step = typical_step(raw)
     for pending in sorted((p for p in polygons if p.params >= 2 * 4 and p.rss <= explained),
                           key=lambda p: bic_score(p, n, sigma, weights)):
-        # the best fit of that many sides is judged, before building (which judges every corner: the costlier part)
-        sharp = [f for f in pending.fits[:1] if f.rss <= explained and sharp_corners(f, step)]
-        if not sharp:
+        # only the best fit of that many sides is judged, before building (which judges every corner: the costlier)
+        best = pending.fits[0] if pending.fits else None
+        if best is None or best.rss > explained or not sharp_corners(best, step):
             continue
-        for c, fit in [*_built(pending), *_shallow(pending, noise)]:
+        for c in [*_built(pending, best), *_shallow(pending, best, noise)]:
             if c.kind == "box" and not inside(c.geometry, box_lo, box_hi) and c.fallback is not None:
                 c = c.fallback
-            if any(fit is f for f in sharp) and inside(c.geometry, *((box_lo, box_hi) if c.kind == "box"
-                                                                    else (lo, hi))):
+            if inside(c.geometry, *((box_lo, box_hi) if c.kind == "box" else (lo, hi))):
                 return Recognition(c.kind, ranked.confidence, c.geometry, ((ranked.kind, 1.0 - ranked.confidence),))
     return ranked
 
 
-def _built(pending: Pending) -> list[tuple[Candidate, PolygonFit]]:
-    """The box or polygon the ranking would have built from ``pending``, with the fit it came from."""
-    out = []
-    for c in pending.build():
-        fit = next((f for f in pending.fits if f.rss == c.rss), None)
-        if c.kind in ("box", "polygon") and fit is not None:
-            out.append((c, fit))
-    return out
+def _built(pending: Pending, best: PolygonFit) -> list[Candidate]:
+    """The box or polygon the ranking would have built from ``pending``'s ``best`` fit."""
+    return [c for c in pending.build() if c.kind in ("box", "polygon") and c.rss == best.rss]
 
 
-def _shallow(pending: Pending, noise: float) -> list[tuple[Candidate, PolygonFit]]:
-    """Polygons of five sides or more from ``pending``'s fits whose flattest vertices turn under
+def _shallow(pending: Pending, best: PolygonFit, noise: float) -> list[Candidate]:
+    """The polygon of ``best`` (five sides or more) where its flattest vertices turn under
     `polygon_checks.MIN_CORNER_DEG` (down to `SHALLOW_CORNER_DEG`); `sharp_corners` then asks them to be sharp."""
     if pending.params < 2 * 5:
         return []
-    for f in pending.fits:
-        corners = corners_of(f, closed=True, noise=noise, min_corner_deg=SHALLOW_CORNER_DEG)
-        if corners is not None and not corners.hairpins:
-            points = tuple((float(x), float(y)) for x, y in corners.vertices)
-            return [(Candidate("polygon", Polygon(points), f.rss, pending.params), f)]
-    return []
+    corners = corners_of(best, closed=True, noise=noise, min_corner_deg=SHALLOW_CORNER_DEG)
+    if corners is None or corners.hairpins:
+        return []
+    points = tuple((float(x), float(y)) for x, y in corners.vertices)
+    return [Candidate("polygon", Polygon(points), best.rss, pending.params)]
