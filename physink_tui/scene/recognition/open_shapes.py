@@ -132,9 +132,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
     roundness = sf.corner_roundness(work, corners, th=th)
-    turns = sf.corner_turns(th, corners) if len(corners) > 2 else []
-    weak = [t < SHARP_CORNER for t in turns] if turns and max(turns) >= VERY_SHARP_CORNER else [False] * len(roundness)
-    sharp = (max((r for r, w in zip(roundness, weak) if not w), default=0.0) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
+    sharp = (_roundest_corner(th, corners, roundness) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
              or _short_bend(work, corners, roundness, lobes))
     if (len(straight_runs) >= 2 and sharp and not _bowed_between_corners(work, corners, length, bows)
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, lobes)
@@ -184,6 +182,16 @@ def straight_curve_as_line(found: Recognition) -> Recognition:
         return found
     ends = geometry.control_points
     return Recognition("line", 0.6, Line(ends[0], ends[-1]), (("curve", 0.4),))
+
+
+def _roundest_corner(th: np.ndarray, corners: list[int], roundness: list[float]) -> float:
+    """The roundest inner corner's `stroke_features.corner_roundness`; beside a really sharp corner
+    (`VERY_SHARP_CORNER`), a bend turning less than `SHARP_CORNER` is an arm's wobble (a hurried check's short arm
+    waved on its way down), not a corner whose roundness makes the mark round."""
+    turns = sf.corner_turns(th, corners) if len(corners) > 2 else []
+    wobble = bool(turns) and max(turns) >= VERY_SHARP_CORNER
+    return max((r for r, t in zip(roundness, turns or [math.inf] * len(roundness), strict=True)
+                if not (wobble and t < SHARP_CORNER)), default=0.0)
 
 
 def _kept_arm(work: np.ndarray, found: list[int], length: float) -> list[int]:
@@ -286,3 +294,25 @@ def _bent_polyline(th: np.ndarray, corners: list[int], lobes: list[float], bows:
     if share >= 0.7 and worst < 1.4 * STRAIGHT:
         return True
     return few_lobes and share >= CORNER_SHARE
+
+
+def straight_armed_mark(found: Recognition, pts: np.ndarray, noise: float) -> bool:
+    """Whether the rules read a one-corner mark (a tick, check, v, caret, chevron or L) whose arms, as drawn in
+    ``pts``, are both `straight` (``noise`` in their units), not running on in line (`ARMS_IN_LINE`), the longer with
+    no point along it (`stroke_geometry.POINT_TURN_DEG`: a thin brace's tip): such a mark is not asked of the learned
+    ranker (`recognize.recognize_stroke`), whose curve is for bowed arms (a mouse's brace or question mark is straight
+    runs and cusps, bowed between them)."""
+    geometry = found.geometry
+    if found.kind != "polyline" or not isinstance(geometry, Polyline) or len(geometry.points) != 3:
+        return False
+    k = int(np.argmin(np.hypot(*(pts - np.asarray(geometry.points[1])).T)))
+    arms = (pts[:k + 1], pts[k:])
+    u, v = pts[k] - pts[0], pts[-1] - pts[k]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if not norms > 0 or float(u @ v) > math.cos(math.radians(ARMS_IN_LINE)) * norms:
+        return False  # arms running on nearly in line: a brace's tip
+    if not all(len(arm) >= 2 and straight(arm, noise) for arm in arms):
+        return False
+    long = sg.smooth(sg.resample(max(arms, key=sg.path_length), 64))  # no point along it (a thin brace's tip)
+    middle = long[len(long) // 5: len(long) - len(long) // 5]
+    return sg.sharpest_turn(middle, sg.POINT_SPAN * sg.path_length(pts)) < sg.POINT_TURN_DEG

@@ -170,33 +170,13 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     if result.geometry is None:
         return result
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
-    if not learned or straight_armed_mark(result, pts, noise):
+    if not learned or open_shapes.straight_armed_mark(result, pts, noise):
         return open_shapes.straight_curve_as_line(result)
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
         found = ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn,
                               not seen)
     return open_shapes.straight_curve_as_line(found)
-
-
-def straight_armed_mark(found: Recognition, pts: np.ndarray, noise: float) -> bool:
-    """Whether the rules read a one-corner mark (a tick, check, v, caret, chevron or L) whose arms, as drawn in
-    ``pts``, are both straight (`open_shapes.straight`, ``noise`` in their units): not asked of the learned ranker, whose
-    curve is for bowed arms (a mouse's brace or question mark is straight runs and cusps; its arms bow between)."""
-    geometry = found.geometry
-    if found.kind != "polyline" or not isinstance(geometry, Polyline) or len(geometry.points) != 3:
-        return False
-    k = int(np.argmin(np.hypot(*(pts - np.asarray(geometry.points[1])).T)))
-    arms = (pts[:k + 1], pts[k:])
-    u, v = pts[k] - pts[0], pts[-1] - pts[k]
-    norms = float(np.hypot(*u) * np.hypot(*v))
-    if not norms > 0 or float(u @ v) > math.cos(math.radians(open_shapes.ARMS_IN_LINE)) * norms:
-        return False  # arms running on nearly in line: a brace's tip (`open_shapes._tip_in_line`)
-    if not all(len(arm) >= 2 and open_shapes.straight(arm, noise) for arm in arms):
-        return False
-    long = sg.smooth(sg.resample(max(arms, key=sg.path_length), 64))  # no point along it (a thin brace's tip)
-    middle = long[len(long) // 5: len(long) - len(long) // 5]
-    return sg.sharpest_turn(middle, sg.POINT_SPAN * sg.path_length(pts)) < sg.POINT_TURN_DEG
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:
