@@ -69,11 +69,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
    by running back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed
    one way and back (turning both ways, no point, no circle fitting its bow, straying under 9 % of its length) is a
-   line (`open_marks.swung_line`); one with no corner that strays from its chord no more than a polyline's side may
-   and has no point in its middle is offered as a curve with the line as its alternative (`open_shapes.STRAIGHT_CURVE`)
-   and read as the line unless the learned ranker sees a polyline in it (`open_shapes.straight_curve_as_line`). Beside
-   a really sharp corner, a bend under `open_shapes.SHARP_CORNER` is an arm's wobble whose roundness does not make the
-   mark round (`open_shapes._roundest_corner`). Marks these rules misjudge
+   line (`open_marks.swung_line`). Beside a really sharp corner, a bend under `open_shapes.SHARP_CORNER` is an arm's
+   wobble whose roundness does not make the mark round (`open_shapes._roundest_corner`). Marks these rules misjudge
    (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
    spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about

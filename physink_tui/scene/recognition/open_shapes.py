@@ -18,7 +18,7 @@ from physink_tui.scene.recognition import bracket_marks, open_marks
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
-from physink_tui.scene.recognition.primitives import Curve, Line, Polyline, Recognition
+from physink_tui.scene.recognition.primitives import Line, Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_circle, fit_ellipse, fit_line
 
 STRAIGHT = 0.12
@@ -156,32 +156,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends
         if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
             return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius), (("curve", 0.5),))
-    if len(corners) == 2 and straight_runs[0] and _no_point(work, length):
-        return Recognition("curve", 0.6, curve_geometry(work, corners), STRAIGHT_CURVE)
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
-
-
-STRAIGHT_CURVE = (("line", 0.4),)
-"""The alternatives of a curve with no corner that strays from its chord no more than a polyline's side may
-(`straight`) and has no point in its middle (a brace's tip, `stroke_geometry.POINT_TURN_DEG`): a line that the wrist's
-swing bowed or the pen wobbled past the line test (`LINE`; gtiwari's mouse lines bow 8-10 % of their length). It is a
-curve to the learned ranker, which may still see a polyline in it; a curve it keeps is read as the line
-(`straight_curve_as_line`)."""
-
-
-def _no_point(work: np.ndarray, length: float) -> bool:
-    middle = work[len(work) // 5: len(work) - len(work) // 5]
-    return sg.sharpest_turn(middle, sg.POINT_SPAN * length) < sg.POINT_TURN_DEG
-
-
-def straight_curve_as_line(found: Recognition) -> Recognition:
-    """``found``, or the line between its ends when it is a curve `classify_open` found straight (`STRAIGHT_CURVE`)
-    and the learned ranker kept as a curve."""
-    geometry = found.geometry
-    if found.kind != "curve" or found.alternatives != STRAIGHT_CURVE or not isinstance(geometry, Curve):
-        return found
-    ends = geometry.control_points
-    return Recognition("line", 0.6, Line(ends[0], ends[-1]), (("curve", 0.4),))
 
 
 def _roundest_corner(th: np.ndarray, corners: list[int], roundness: list[float]) -> float:

@@ -171,12 +171,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return result
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
     if not learned or open_shapes.straight_armed_mark(result, pts, noise):
-        return open_shapes.straight_curve_as_line(result)
+        return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
-        found = ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn,
-                              not seen)
-    return open_shapes.straight_curve_as_line(found)
+        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn,
+                             not seen)
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:
