@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from physink_tui.scene.recognition import quads
 from physink_tui.scene.recognition.beautify import box_geometry, round_geometry
 from physink_tui.scene.recognition.polygon_checks import corners_of, split_hairpins
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, best_polygons
@@ -95,11 +96,19 @@ def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float
     fit, verts = found[0], found[1].vertices
     if closed:
         box = box_geometry(verts) if k == 4 else None
-        if box is not None:
-            quad = Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 8)
-            out.append(Candidate("box", _box_from_sides(box, fit), fit.rss, 8, quad))
-        else:
-            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k))
+        drawn = Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k)
+        squared = _box_from_sides(box, fit) if box is not None else None
+        kept = quads.kept_as_drawn(fit.points, fit.indices, squared.corners) if squared is not None else None
+        if squared is None:
+            sides = quads.side_corners(fit.points, fit.indices) if k == 4 and quads.convex(verts) else None
+            if sides is not None and quads.convex(sides):  # where the sides meet (a hand rounds corners)
+                out.append(Candidate("polygon", Polygon(tuple(map(_pt, sides))), fit.rss, 8, drawn))
+            else:
+                out.append(drawn)
+        elif kept is None:
+            out.append(Candidate("box", squared, fit.rss, 8, drawn))
+        else:  # a trapezoid or a rhombus: its corners where its sides meet (a hand rounds them), else as fitted
+            out.append(Candidate("polygon", Polygon(tuple(map(_pt, kept))), fit.rss, 8, drawn))
     elif k == 1:
         out.append(Candidate("line", Line(_pt(verts[0]), _pt(verts[-1])), fit.rss, 4))
     else:
