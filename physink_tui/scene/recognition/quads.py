@@ -40,6 +40,9 @@ LEG_INWARD = 11.0
 is a box with the other wall askew (see above); people's rectangles drawn with both walls turned in, squared, overlap
 under 0.90 with the lesser leg at 4.7-9.3 degrees (hcira pixelfac user01 rectangle1, jd4386 User04 rectangle07,
 jonathanzhang53 s03 rectangle8, klarubbio s04 rectangle04), trapezoids drawn by the pen models at 13 or more."""
+SHORT_LEG = 0.25
+"""A leg this share of the base or shorter has no direction to judge (a thin box's ends are a few points long, as
+`beautify.box_geometry` allows): such a quad is not taken for a trapezoid (nor would squaring a flat one move much)."""
 RHOMBUS_SIDES = 0.95
 """A rhombus's shorter pair of sides is at least this share of the longer (a box leaning has unequal sides)."""
 ON_A_POINT = 20.0
@@ -92,7 +95,9 @@ def trapezoid(corners: np.ndarray) -> bool:
     sides = [corners[(i + 1) % 4] - corners[i] for i in range(4)]
     for i in range(4):  # each side in turn the longer parallel one (the base)
         base, top, left, right = sides[i], sides[(i + 2) % 4], sides[(i + 3) % 4], sides[(i + 1) % 4]
-        if _angle(base, top) > PARALLEL or float(np.hypot(*top)) >= float(np.hypot(*base)):
+        width = float(np.hypot(*base))
+        if (_angle(base, top) > PARALLEL or float(np.hypot(*top)) >= width
+                or min(float(np.hypot(*left)), float(np.hypot(*right))) <= SHORT_LEG * width):
             continue
         # the legs run from the base's ends to the top: the left one backwards (corner i to i - 1), the right forwards
         start, end = corners[i], corners[(i + 1) % 4]
