@@ -13,7 +13,7 @@ import functools
 import itertools
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -95,25 +95,31 @@ def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float
         return out
     fit, verts = found[0], found[1].vertices
     if closed:
-        box = box_geometry(verts) if k == 4 else None
         drawn = Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k)
+        box = box_geometry(verts) if k == 4 else None
         squared = _box_from_sides(box, fit) if box is not None else None
-        kept = quads.kept_as_drawn(fit.points, fit.indices, squared.corners) if squared is not None else None
-        if squared is None:
-            sides = quads.side_corners(fit.points, fit.indices) if k == 4 and quads.convex(verts) else None
-            if sides is not None and quads.convex(sides):  # where the sides meet (a hand rounds corners)
-                out.append(Candidate("polygon", Polygon(tuple(map(_pt, sides))), fit.rss, 8, drawn))
-            else:
-                out.append(drawn)
-        elif kept is None:
+        if squared is not None and not quads.kept_as_drawn(fit.points, fit.indices, squared.corners):
             out.append(Candidate("box", squared, fit.rss, 8, drawn))
-        else:  # a trapezoid or a rhombus: its corners where its sides meet (a hand rounds them), else as fitted
-            out.append(Candidate("polygon", Polygon(tuple(map(_pt, kept))), fit.rss, 8, drawn))
+        else:  # a polygon; a quad (a trapezoid or a rhombus among them) with its corners where its sides meet
+            out.append(_at_side_corners(drawn, fit) if k == 4 else drawn)
     elif k == 1:
         out.append(Candidate("line", Line(_pt(verts[0]), _pt(verts[-1])), fit.rss, 4))
     else:
         out.append(Candidate("polyline", Polyline(tuple(map(_pt, verts))), fit.rss, 2 * (k + 1)))
     return out
+
+
+def _at_side_corners(drawn: Candidate, fit: PolygonFit) -> Candidate:
+    """A four-sided polygon ``drawn`` (its fit's vertices) with its corners where its sides meet
+    (`quads.side_corners`: a hand rounds or cuts a corner, the fit's vertex lies inside it), falling back to ``drawn``
+    where those poke out of the stroke; ``drawn`` itself where either outline is not convex (a bow tie: a delete mark
+    or an alpha fitted with four sides is judged by how it crosses itself, `stroke_features.figure_eight`)."""
+    corners = quads.side_corners(fit.points, fit.indices)
+    if corners is None or not isinstance(drawn.geometry, Polygon):
+        return drawn
+    if not (quads.convex(corners) and quads.convex(np.asarray(drawn.geometry.points))):
+        return drawn
+    return replace(drawn, geometry=Polygon(tuple(map(_pt, corners))), fallback=drawn)
 
 
 def _box_from_sides(box: Box, fit: PolygonFit) -> Box:

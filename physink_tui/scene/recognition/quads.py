@@ -126,12 +126,12 @@ def convex(corners: np.ndarray) -> bool:
     return bool((turns > 0).all() or (turns < 0).all())
 
 
-def kept_as_drawn(points: np.ndarray, indices: tuple[int, ...],
-                  squared: Sequence[tuple[float, float]]) -> np.ndarray | None:
-    """The corners where its sides meet (`side_corners`) of a closed four-sided fit within a box's tolerance, when
-    the box ``squared`` from it (its corners) overlaps them by under `KEEPS` and it is a trapezoid or a rhombus: the
-    quad kept as drawn; None where it is a box."""
+def kept_as_drawn(points: np.ndarray, indices: tuple[int, ...], squared: Sequence[tuple[float, float]]) -> bool:
+    """Whether a closed four-sided fit within a box's tolerance is kept as the quad drawn: the box ``squared`` from
+    it (its corners) overlaps it (where its sides meet, `side_corners`) by under `KEEPS` and it is a trapezoid or a
+    rhombus."""
     corners = side_corners(points, indices)
-    if corners is None or overlap(squared, corners) >= KEEPS:
-        return None
-    return corners if convex(corners) and (trapezoid(corners) or rhombus(corners)) else None
+    if corners is None or not convex(corners) or overlap(squared, corners) >= KEEPS:
+        return False
+    return trapezoid(corners) or rhombus(corners)
+
