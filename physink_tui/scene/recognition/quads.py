@@ -29,7 +29,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from physink_tui.scene.recognition.polygon_checks import overlap
+from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, overlap
+from physink_tui.scene.recognition.polygon_fit import PolygonFit
 
 KEEPS = 0.90
 """A box squared from a quad must overlap the quad by this much (IoU) for a trapezoid or a rhombus to become one."""
@@ -135,3 +136,13 @@ def kept_as_drawn(points: np.ndarray, indices: tuple[int, ...], squared: Sequenc
         return False
     return trapezoid(corners) or rhombus(corners)
 
+
+
+def four_sides_cover(fit: PolygonFit, drawn: Sequence[tuple[float, float]]) -> bool:
+    """Whether a closed four-sided fit covers the polygon ``drawn`` nearly as drawn (`BOX_OVERLAP`): its vertices'
+    quad does, or the quad where its sides meet (a corner cut by a short fifth side lies on those sides' lines, not
+    on the fit's vertex across the cut: hcira jonathanzhang53 s04 rectangle7, 0.88 by its vertices, 0.97 so)."""
+    if overlap(fit.vertices, drawn) >= BOX_OVERLAP:
+        return True
+    corners = side_corners(fit.points, fit.indices)
+    return corners is not None and convex(corners) and overlap(corners, drawn) >= BOX_OVERLAP
