@@ -4,7 +4,8 @@ Every candidate is measured on the same points (the stroke resampled along its l
 ``rss`` is the summed squared distance of those points to the candidate's shape, in the units the stroke is
 judged at, and ``params`` counts the numbers the shape needs (a line 4, a k-segment polyline 2(k+1), a k-gon 2k,
 a circle 3, an ellipse 5). `recognize` ranks them. Vertices lie on or next to the stroke's own points, so no
-polygonal shape reaches far outside it; open strokes' curves and arcs are judged in `open_shapes`.
+polygonal shape reaches far outside it (a quad's corners are placed where its sides meet, falling back to the fitted
+vertices where they would); open strokes' curves and arcs are judged in `open_shapes`.
 """
 
 from __future__ import annotations
