@@ -1,13 +1,11 @@
-"""Where one recorded stroke holds several attempts at a mark (the pen lifted and came down again): the last whole one
-is the mark; no I/O, no clock (the stroke's own times only).
+"""A recorded stroke holding several attempts at a mark (the pen lifted between them) is read by its last; no I/O.
 
 Some recorders keep one "stroke" from the first pen-down to the last pen-up of a gesture: a person who draws a bracket,
 lifts, and draws it again over the first gives one stroke of two brackets joined by a straight jump, which reads as a
 box; a circle gone over twice reads as a coil, a brace gone over three times as a scribble. Such a lift shows in the
 stroke's times: no event for a second or more (`LIFT_PAUSE`), then the next event far from the last (`LIFT_STEPS`
-ordinary steps and `LIFT_SHARE` of the stroke's size), the path going on from there in a new direction. A device
-that drops reports while the pen keeps moving (a finger at a star's tip on a Tablet PC: 0.3-0.7 s, then one step a
-fifth of the star across) lands on the way the pen was going, and has not paused as long.
+ordinary steps and `LIFT_SHARE` of the stroke's size). A device that drops reports while the pen keeps moving (a
+finger at a star's tip on a Tablet PC: 0.3-0.76 s, then one step a fifth of the star across) has not paused as long.
 
 >>> line = [(float(x), 0.0) for x in range(50)]
 >>> again = line + [(float(x), 1.0) for x in range(50)]
@@ -20,6 +18,7 @@ True
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 
 import numpy as np
@@ -32,11 +31,6 @@ LIFT_STEPS = 5.0
 """A landing this many median steps from the last event (the pen moved while no event came)."""
 LIFT_SHARE = 0.05
 """... and this share of the stroke's bounding-box diagonal (a jump, not a fast stretch of the line)."""
-CARRIED_ON = 0.95
-"""A path that goes on from the landing in the jump's own direction (cosine at least this) was drawn through the
-gap: the reports were dropped, the pen stayed down."""
-CARRY_SHARE = 0.1
-"""How far along the path (share of the diagonal) the direction after the landing is taken."""
 WHOLE_ATTEMPT = 0.5
 """The mark is the last attempt at least this share of the longest one's path length (a tap or a short tick after
 the mark is not the mark)."""
@@ -61,23 +55,14 @@ def last_attempt(points: Sequence[Sequence[float]], times: Sequence[float] | Non
         return None
     jumps = np.flatnonzero((np.diff(at) >= LIFT_PAUSE) & (steps >= LIFT_STEPS * float(np.median(moving)))
                            & (steps >= LIFT_SHARE * diag))
-    lifts = [int(j) for j in jumps if not _carried_on(pts, steps, int(j), diag)]
+    lifts = [int(j) for j in jumps]
     if not lifts:
         return None
     cuts = [0, *(j + 1 for j in lifts), len(pts)]
-    lengths = [float(steps[a:b - 1].sum()) for a, b in zip(cuts[:-1], cuts[1:], strict=True)]
+    lengths = [float(steps[a:b - 1].sum()) for a, b in itertools.pairwise(cuts)]
     longest = max(lengths)
     if longest == 0.0:
         return None
     last = max(k for k, length in enumerate(lengths) if length >= WHOLE_ATTEMPT * longest)
     return slice(cuts[last], cuts[last + 1])
 
-
-def _carried_on(pts: np.ndarray, steps: np.ndarray, j: int, diag: float) -> bool:
-    """Whether the path after the jump from point ``j`` to ``j + 1`` goes on the way the jump went."""
-    jump = pts[j + 1] - pts[j]
-    along = np.cumsum(steps[j + 1:])
-    k = j + 1 + min(int(np.searchsorted(along, CARRY_SHARE * diag)) + 1, len(along))
-    after = pts[k] - pts[j + 1]
-    norms = float(np.hypot(*jump) * np.hypot(*after))
-    return norms > 0.0 and float(jump @ after) / norms >= CARRIED_ON
