@@ -12,7 +12,7 @@ from dataclasses import replace
 import pytest
 from penmodels.hurried import HurriedPen, single_strokes
 from penmodels.journal import header
-from penmodels.shapes import Path, Shape, polygon
+from penmodels.shapes import Path, Shape, box, polygon
 from test_open_marks import cached_rows
 from xerase_drawings import _pen_entry, replayed_project
 
@@ -119,3 +119,14 @@ def test_a_bracket_drawn_twice_without_a_reported_lift_becomes_one_polyline_body
         project, told = replayed_project(*_journal_lift_unreported(BRACKET, seed, 1.5 * LIFT_PAUSE), folder)
         shapes = [b.shape for b in project.scene.bodies()]
         assert shapes == ["polyline"], f"seed {seed}: {shapes}\n{told}"
+
+
+def test_a_pen_resting_at_a_corner_is_not_a_lift() -> None:
+    """A box whose pen rests 1.5 s at a corner (no events while it rests, then ordinary steps on): one attempt."""
+    for seed in range(10):
+        stroke = single_strokes(box((800.0, 500.0), 240.0, 150.0, angle=0.2), seed)[0]
+        points, times = _split(stroke)
+        corner = min(range(len(points)), key=lambda i: points[i][0] + points[i][1])  # the upper left corner
+        rested = times[:corner + 1] + [t + 1.5 * LIFT_PAUSE for t in times[corner + 1:]]
+        assert last_attempt(points, rested) is None, f"seed {seed}"
+        assert recognize_stroke(points, rested).kind == "box", f"seed {seed}"
