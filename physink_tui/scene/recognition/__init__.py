@@ -42,8 +42,12 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
    winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
    a delete mark whose ends happen to meet) is no outline: the stroke is judged open. A winning polygon of five
-   sides or more that its best four sides overlap by IoU >= 0.92 (`polygon_checks.BOX_OVERLAP`), when those four
-   make a box, is the box (a hook, a bowed side or a cut corner; a notch, T or L keeps its corners); a lumpy round
+   sides or more that its best four sides overlap by IoU >= 0.92 (`polygon_checks.BOX_OVERLAP`; their fitted quad, or
+   the quad where those sides meet, `quads.four_sides_cover`), when those four make a box, is the box (a hook, a bowed
+   side or a cut corner; a notch, T or L keeps its corners). A quad within the box's tolerance is not squared when the
+   box would overlap it by under 0.90 and it is a trapezoid (both legs turned in) or a rhombus standing on a point
+   (`quads`): it keeps its corners, placed where its sides meet, as every four-sided polygon's are; a parallelogram
+   with unequal sides (a box leaning) or a quad with one wall askew is a box, as people draw them; a lumpy round
    loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may; a box may
    reach 10 % (`ranking.BOX_MARGIN`: a box whose upright sides lean, squared, pokes out). A polygon left open (its
    last side heading home, or a star's run on past its start, `recognize.STAR_CROSSINGS`) is judged by its sides'
