@@ -7,6 +7,8 @@ or the stroke's own measured jitter when that is worse, except where its points 
 be the shape's own bends: `recognize.SPARSE_BENDS`, a trackpad's or mouse's 8-25 events) as well as the shape's size,
 so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sense and differently where noise decides.
 
+0. A stroke whose times show the pen lifted and came down to draw the mark again (some recorders keep one stroke from
+   the first landing to the last lifting) is read by its last whole attempt (`pen_lifts`).
 1. A line (judged on steps a few noise widths long), a spring (loops turning one way whose centres advance along an
    axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a stroke under three noise widths
    across is a dot (no kind).
@@ -125,6 +127,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few
   sparse events turn at every one (a round shape sampled, not a polygon's sides)
 - `landing.py`: a finger's or pen's dwell where it lands or lifts (points wandering about the end), kept as one point
+- `pen_lifts.py`: a recorded stroke whose times show the pen lifted and drew the mark again (a second's silence, then
+  a far landing), read by its last whole attempt
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
 - `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;

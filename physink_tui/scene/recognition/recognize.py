@@ -23,7 +23,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import landing, open_shapes, pen_noise, ranker
+from physink_tui.scene.recognition import landing, open_shapes, pen_lifts, pen_noise, ranker
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
@@ -141,7 +141,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     judged with its own, measured jitter (`pen_noise.jitter`). ``times`` (one a point, seconds), where
     given, tell the learned ranker how the pen slowed at corners. ``weights`` override the ranking's and
     ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
+    A stroke whose times show the pen lifted and drew the mark again is read by its last attempt (`pen_lifts`).
     """
+    attempt = pen_lifts.last_attempt(points, times)
+    if attempt is not None and times is not None:
+        points, times = points[attempt], times[attempt]
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
         pts, keep, size, reason = _clean(points)
     if pts is None:
