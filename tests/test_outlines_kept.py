@@ -65,20 +65,27 @@ def iou(a, b) -> float:
     return a.intersection(b).area / a.union(b).area
 
 
-@pytest.mark.parametrize("pen", ("hurried", "virtual"))
-@pytest.mark.parametrize("name", OUTLINES)
-def test_an_outline_keeps_its_corners_through_a_session(pen: str, name: str, tmp_path) -> None:
-    for scale in SCALES:
-        for seed in SEEDS:
-            meant = placed(OUTLINES[name], scale)
+def sessions_drawing(outline, pen: str, tmp_path, scales=SCALES, seeds=SEEDS):
+    """Each drawing of ``outline`` by ``pen`` at each scale and seed, through a whole session (journal -> replay ->
+    project), as (case, the one body's shape, its IoU with the outline meant, the session's messages); a session
+    making other than one body fails at once."""
+    for scale in scales:
+        for seed in seeds:
+            meant = placed(outline, scale)
             folder = tmp_path / f"{scale}-{seed}"
             folder.mkdir()
             project, told = replayed_project(*drawn(pen, meant, seed), folder)
             bodies = project.scene.bodies()
-            case = f"{name} at {scale}x, {pen} pen seed {seed}"
+            case = f"at {scale}x, {pen} pen seed {seed}"
             assert len(bodies) == 1, f"{case}: {[(b.id, b.shape) for b in bodies]}\n{told}"
-            overlap = iou(body_geometry(bodies[0]), Polygon(meant))
-            assert overlap >= IOU_FLOOR, f"{case}: a {bodies[0].shape} overlapping by IoU {overlap:.3f}\n{told}"
+            yield case, bodies[0].shape, iou(body_geometry(bodies[0]), Polygon(meant)), told
+
+
+@pytest.mark.parametrize("pen", ("hurried", "virtual"))
+@pytest.mark.parametrize("name", OUTLINES)
+def test_an_outline_keeps_its_corners_through_a_session(pen: str, name: str, tmp_path) -> None:
+    for case, shape, overlap, told in sessions_drawing(OUTLINES[name], pen, tmp_path):
+        assert overlap >= IOU_FLOOR, f"{name} {case}: a {shape} overlapping by IoU {overlap:.3f}\n{told}"
 
 
 @pytest.mark.parametrize("pen", ("hurried", "virtual"))

@@ -14,12 +14,9 @@ import sys
 from pathlib import Path
 
 import pytest
-from shapely.geometry import Polygon
 from test_open_marks import cached_rows
-from test_outlines_kept import IOU_FLOOR, drawn, iou, placed
-from xerase_drawings import replayed_project
+from test_outlines_kept import IOU_FLOOR, sessions_drawing
 
-from physink_tui.scene.interpretation.body_shapes import body_geometry
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
@@ -41,18 +38,9 @@ SEEDS = (1, 2, 3)
 @pytest.mark.parametrize("pen", ("hurried", "virtual"))
 @pytest.mark.parametrize("name", QUADS)
 def test_a_rhombus_or_a_trapezoid_keeps_its_corners_through_a_session(pen: str, name: str, tmp_path) -> None:
-    for scale in SCALES:
-        for seed in SEEDS:
-            meant = placed(QUADS[name], scale)
-            folder = tmp_path / f"{scale}-{seed}"
-            folder.mkdir()
-            project, told = replayed_project(*drawn(pen, meant, seed), folder)
-            bodies = project.scene.bodies()
-            case = f"{name} at {scale}x, {pen} pen seed {seed}"
-            assert len(bodies) == 1, f"{case}: {[(b.id, b.shape) for b in bodies]}\n{told}"
-            overlap = iou(body_geometry(bodies[0]), Polygon(meant))
-            assert bodies[0].shape == "polygon" and overlap >= IOU_FLOOR, (
-                f"{case}: a {bodies[0].shape} overlapping by IoU {overlap:.3f}\n{told}")
+    for case, shape, overlap, told in sessions_drawing(QUADS[name], pen, tmp_path, SCALES, SEEDS):
+        assert shape == "polygon" and overlap >= IOU_FLOOR, (
+            f"{name} {case}: a {shape} overlapping by IoU {overlap:.3f}\n{told}")
 
 
 KEPT_FLOORS = {
