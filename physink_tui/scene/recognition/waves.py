@@ -58,7 +58,7 @@ def wave(unit: np.ndarray) -> tuple[np.ndarray, list[int]] | None:
     if min(sf.corner_roundness(work, corners, th=th)) < MIN_ROUNDNESS:
         return None
     halves = []
-    for a, b in zip(corners[1:-2], corners[2:-1], strict=True):
+    for a, b in itertools.pairwise(corners[1:-1]):  # the sides between inner bends
         m = (a + b) // 2
         halves.append(max(sg.chord_deviation(work[a:m + 1]), sg.chord_deviation(work[m:b + 1])))
     return (work, corners) if float(np.median(halves)) >= SIDE_BOW else None
