@@ -57,11 +57,19 @@ def wave(unit: np.ndarray) -> tuple[np.ndarray, list[int]] | None:
         return None
     if min(sf.corner_roundness(work, corners, th=th)) < MIN_ROUNDNESS:
         return None
+    return (work, corners) if side_bow(work, corners) >= SIDE_BOW else None
+
+
+def side_bow(work: np.ndarray, corners: list[int]) -> float:
+    """How the sides between the stroke's inner bends curve (an S between two bends: each half bows away from its
+    chord): over those sides, the median of the larger `stroke_geometry.chord_deviation` of each side's two halves;
+    0 with fewer than two inner bends."""
     halves = []
-    for a, b in itertools.pairwise(corners[1:-1]):  # the sides between inner bends
+    for a, b in itertools.pairwise(corners[1:-1]):
         m = (a + b) // 2
-        halves.append(max(sg.chord_deviation(work[a:m + 1]), sg.chord_deviation(work[m:b + 1])))
-    return (work, corners) if float(np.median(halves)) >= SIDE_BOW else None
+        if m > a and b > m:
+            halves.append(max(sg.chord_deviation(work[a:m + 1]), sg.chord_deviation(work[m:b + 1])))
+    return min(float(np.median(halves)), 1.0) if halves else 0.0
 
 
 def as_curve(found: Recognition, unit: np.ndarray) -> Recognition:
