@@ -13,6 +13,8 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+import itertools
+
 from bench_waves import PENS, TUNING_SEEDS, read, wave
 
 from physink_tui.scene.recognition import waves
@@ -59,6 +61,6 @@ def _sine(periods: float, steepness: float, n: int = 200) -> np.ndarray:
 def test_a_sine_is_a_wave_and_a_sharp_zigzag_is_not() -> None:
     assert waves.wave(_sine(3.0, 0.3) / 300.0) is not None
     teeth = np.array([(60.0 * k, 40.0 * (k % 2)) for k in range(6)])
-    dense = np.concatenate([np.linspace(a, b, 30, endpoint=False) for a, b in zip(teeth, teeth[1:], strict=False)])
+    dense = np.concatenate([np.linspace(a, b, 30, endpoint=False) for a, b in itertools.pairwise(teeth)])
     assert waves.wave(np.vstack([dense, teeth[-1:]]) / 300.0) is None
     assert waves.wave(_sine(1.0, 0.3) / 300.0) is None  # one bend inside its ends: not enough for a wave
