@@ -25,6 +25,10 @@ from physink_tui.scene.recognition.primitives import Recognition
 WAVE_POINTS = 128
 """The stroke is judged resampled to this many points (a wave of 3.5 periods: 18 a half-period, enough to see a bend's
 width and a side's S), lightly smoothed (`stroke_geometry.smooth`)."""
+SIDE_POINTS = 16
+"""... or more, so that each side between two bends holds this many points on average: smoothing rounds a corner over
+a few points, so a zig-zag's small teeth (five in a row between a long lead-in and a curled tail) on fewer points
+each would look as round as a wave's bends."""
 MIN_BENDS = 3
 """A wave bends at least this many times inside its ends, each the other way from the one before (two bends are an S
 or an N, left to the rules)."""
@@ -46,11 +50,13 @@ def wave(unit: np.ndarray) -> tuple[np.ndarray, list[int]] | None:
     (`MIN_ROUNDNESS`), the sides between them curved (`SIDE_BOW`); else None."""
     if len(unit) < 3 or sg.bbox_diagonal(unit) == 0.0:
         return None
-    work = sg.smooth(sg.resample(unit, WAVE_POINTS))
-    length = sg.path_length(work)
-    corners = sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), length)
+    work, corners = _bends(unit, WAVE_POINTS)
     if len(corners) < MIN_BENDS + 2:
         return None
+    if SIDE_POINTS * (len(corners) - 1) > WAVE_POINTS:  # small teeth: judged on enough points to see them sharp
+        work, corners = _bends(unit, SIDE_POINTS * (len(corners) - 1))
+        if len(corners) < MIN_BENDS + 2:
+            return None
     th = sg.turning(work)  # th[k] is the turn at point k + 1
     signs = [float(th[max(c - 1 - REACH, 0):c + REACH].sum()) > 0 for c in corners[1:-1]]
     if any(a == b for a, b in itertools.pairwise(signs)):
@@ -58,6 +64,12 @@ def wave(unit: np.ndarray) -> tuple[np.ndarray, list[int]] | None:
     if min(sf.corner_roundness(work, corners, th=th)) < MIN_ROUNDNESS:
         return None
     return (work, corners) if side_bow(work, corners) >= SIDE_BOW else None
+
+
+def _bends(unit: np.ndarray, n: int) -> tuple[np.ndarray, list[int]]:
+    """The stroke resampled to ``n`` points, lightly smoothed, and its bends there, ends included."""
+    work = sg.smooth(sg.resample(unit, n))
+    return work, sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), sg.path_length(work))
 
 
 def side_bow(work: np.ndarray, corners: list[int]) -> float:
