@@ -20,7 +20,7 @@ import numpy as np
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry
-from physink_tui.scene.recognition.primitives import Recognition
+from physink_tui.scene.recognition.primitives import Polyline, Recognition
 
 WAVE_POINTS = 128
 """The stroke is judged resampled to this many points (a wave of 3.5 periods: 18 a half-period, enough to see a bend's
@@ -86,8 +86,9 @@ def side_bow(work: np.ndarray, corners: list[int]) -> float:
 
 def as_curve(found: Recognition, unit: np.ndarray) -> Recognition:
     """``found`` (the rules' reading of the stroke, at unit size), or, when the rules read a polyline and the stroke
-    is a `wave`, the curve through it, the polyline the alternative."""
-    if found.kind != "polyline":
+    is a `wave`, the curve through it, the polyline the alternative. Only a polyline with a vertex at `MIN_BENDS`
+    bends or more is looked at (the rules put one at each bend they saw): a tick, a v, a caret, a bracket is not."""
+    if not isinstance(found.geometry, Polyline) or len(found.geometry.points) < MIN_BENDS + 2:
         return found
     seen = wave(unit)
     if seen is None:
