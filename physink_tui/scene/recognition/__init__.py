@@ -7,6 +7,8 @@ or the stroke's own measured jitter when that is worse, except where its points 
 be the shape's own bends: `recognize.SPARSE_BENDS`, a trackpad's or mouse's 8-25 events) as well as the shape's size,
 so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sense and differently where noise decides.
 
+0. A stroke whose times show the pen lifted and came down to draw the mark again (some recorders keep one stroke from
+   the first landing to the last lifting) is read by its last whole attempt (`pen_lifts`).
 1. A line (judged on steps a few noise widths long), a spring (loops turning one way whose centres advance along an
    axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a stroke under three noise widths
    across is a dot (no kind).
@@ -40,8 +42,12 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
    winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
    a delete mark whose ends happen to meet) is no outline: the stroke is judged open. A winning polygon of five
-   sides or more that its best four sides overlap by IoU >= 0.92 (`polygon_checks.BOX_OVERLAP`), when those four
-   make a box, is the box (a hook, a bowed side or a cut corner; a notch, T or L keeps its corners); a lumpy round
+   sides or more that its best four sides overlap by IoU >= 0.92 (`polygon_checks.BOX_OVERLAP`; their fitted quad, or
+   the quad where those sides meet, `quads.four_sides_cover`), when those four make a box, is the box (a hook, a bowed
+   side or a cut corner; a notch, T or L keeps its corners). A quad within the box's tolerance is not squared when the
+   box would overlap it by under 0.90 and it is a trapezoid (both legs turned in) or a rhombus standing on a point
+   (`quads`): it keeps its corners, placed where its sides meet, as every four-sided polygon's are; a parallelogram
+   with unequal sides (a box leaning) or a quad with one wall askew is a box, as people draw them; a lumpy round
    loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may; a box may
    reach 10 % (`ranking.BOX_MARGIN`: a box whose upright sides lean, squared, pokes out). A polygon left open (its
    last side heading home, or a star's run on past its start, `recognize.STAR_CROSSINGS`) is judged by its sides'
@@ -121,6 +127,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few
   sparse events turn at every one (a round shape sampled, not a polygon's sides)
 - `landing.py`: a finger's or pen's dwell where it lands or lifts (points wandering about the end), kept as one point
+- `pen_lifts.py`: a recorded stroke whose times show the pen lifted and drew the mark again (a second's silence, then
+  a far landing), read by its last whole attempt
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
 - `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;

@@ -4,7 +4,8 @@ Every candidate is measured on the same points (the stroke resampled along its l
 ``rss`` is the summed squared distance of those points to the candidate's shape, in the units the stroke is
 judged at, and ``params`` counts the numbers the shape needs (a line 4, a k-segment polyline 2(k+1), a k-gon 2k,
 a circle 3, an ellipse 5). `recognize` ranks them. Vertices lie on or next to the stroke's own points, so no
-polygonal shape reaches far outside it; open strokes' curves and arcs are judged in `open_shapes`.
+polygonal shape reaches far outside it (a quad's corners are placed where its sides meet, falling back to the fitted
+vertices where they would); open strokes' curves and arcs are judged in `open_shapes`.
 """
 
 from __future__ import annotations
@@ -13,10 +14,11 @@ import functools
 import itertools
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from physink_tui.scene.recognition import quads
 from physink_tui.scene.recognition.beautify import box_geometry, round_geometry
 from physink_tui.scene.recognition.polygon_checks import corners_of, split_hairpins
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, best_polygons
@@ -94,17 +96,31 @@ def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float
         return out
     fit, verts = found[0], found[1].vertices
     if closed:
+        drawn = Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k)
         box = box_geometry(verts) if k == 4 else None
-        if box is not None:
-            quad = Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 8)
-            out.append(Candidate("box", _box_from_sides(box, fit), fit.rss, 8, quad))
-        else:
-            out.append(Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k))
+        squared = _box_from_sides(box, fit) if box is not None else None
+        if squared is not None and not quads.kept_as_drawn(fit.points, fit.indices, squared.corners):
+            out.append(Candidate("box", squared, fit.rss, 8, drawn))
+        else:  # a polygon; a quad (a trapezoid or a rhombus among them) with its corners where its sides meet
+            out.append(_at_side_corners(drawn, fit) if k == 4 else drawn)
     elif k == 1:
         out.append(Candidate("line", Line(_pt(verts[0]), _pt(verts[-1])), fit.rss, 4))
     else:
         out.append(Candidate("polyline", Polyline(tuple(map(_pt, verts))), fit.rss, 2 * (k + 1)))
     return out
+
+
+def _at_side_corners(drawn: Candidate, fit: PolygonFit) -> Candidate:
+    """A four-sided polygon ``drawn`` (its fit's vertices) with its corners where its sides meet
+    (`quads.side_corners`: a hand rounds or cuts a corner, the fit's vertex lies inside it), falling back to ``drawn``
+    where those poke out of the stroke; ``drawn`` itself where either outline is not convex (a bow tie: a delete mark
+    or an alpha fitted with four sides is judged by how it crosses itself, `stroke_features.figure_eight`)."""
+    corners = quads.side_corners(fit.points, fit.indices)
+    if corners is None or not isinstance(drawn.geometry, Polygon):
+        return drawn
+    if not (quads.convex(corners) and quads.convex(np.asarray(drawn.geometry.points))):
+        return drawn
+    return replace(drawn, geometry=Polygon(tuple(map(_pt, corners))), fallback=drawn)
 
 
 def _box_from_sides(box: Box, fit: PolygonFit) -> Box:

@@ -23,16 +23,17 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import landing, open_shapes, pen_noise, ranker, waves
+from physink_tui.scene.recognition import landing, open_shapes, pen_lifts, pen_noise, ranker, waves
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import scale_geometry, x_symbol
+from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import helix_or_scribble
 from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
 from physink_tui.scene.recognition.primitives import Line, Polygon, Polyline, Recognition
+from physink_tui.scene.recognition.quads import four_sides_cover
 from physink_tui.scene.recognition.ranking import (
     BOUNDS_MARGIN,
     BOX_MARGIN,
@@ -140,7 +141,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     judged with its own, measured jitter (`pen_noise.jitter`). ``times`` (one a point, seconds), where
     given, tell the learned ranker how the pen slowed at corners. ``weights`` override the ranking's and
     ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
+    A stroke whose times show the pen lifted and drew the mark again is read by its last attempt (`pen_lifts`).
     """
+    attempt = pen_lifts.last_attempt(points, times)
+    if attempt is not None and times is not None:
+        points, times = points[attempt], times[attempt]
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
         pts, keep, size, reason = _clean(points)
     if pts is None:
@@ -259,20 +264,22 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
 
 def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray, noise: float, diag: float,
                   loop: np.ndarray) -> Recognition:
-    """A polygon of five sides or more that its best four sides cover nearly as drawn (`polygon_checks.BOX_OVERLAP`),
-    when those four make a box: a box with a hook, a bowed side or a cut corner, read as the box."""
+    """A polygon of five sides or more that its best four sides cover nearly as drawn (`polygon_checks.BOX_OVERLAP`,
+    `quads.four_sides_cover`), when those four make a box that covers it as nearly (or their quad does): a box with a
+    hook, a bowed side or a cut corner, read as the box."""
     if not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 5:
         return ranked
     drawn = ranked.geometry.points
     if crossings(drawn) > 1:
         return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
-    quads = [p for p in polygons if p.params == 8 and any(overlap(f.vertices, drawn) >= BOX_OVERLAP for f in p.fits)]
+    fours = [p for p in polygons if p.params == 8 and any(four_sides_cover(f, drawn) for f in p.fits)]
     # built only where a four-sided fit covers it (judging corners costs more)
     lo, hi = bounds(raw, noise, diag, BOX_MARGIN)
-    for box in (c for p in quads for c in p.build() if c.kind == "box"):
+    for box in (c for p in fours for c in p.build() if c.kind == "box"):
         if (inside(box.geometry, lo, hi) and keeps_the_outline(box, loop)
                 and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
-                and overlap(box.fallback.geometry.points, drawn) >= BOX_OVERLAP):
+                and max(overlap(box.fallback.geometry.points, drawn), overlap(shape_points(box.geometry), drawn))
+                >= BOX_OVERLAP):
             return Recognition("box", ranked.confidence, box.geometry, (("polygon", 1.0 - ranked.confidence),))
     return ranked
 
