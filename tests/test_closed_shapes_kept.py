@@ -37,7 +37,8 @@ hexagons 24 and 22, octagons 0 and 0, irregular pentagons 29 and 30, hexagons 27
 rectangles 29 and 28 (the rest read as circles or ellipses); through a device sending an event every 15-30 ms (the
 hurried hand's "hurried-coarse"): pentagons 28, hexagons 21, octagons 0, irregular ones 27, 24 and 9, rhombi 29,
 rounded rectangles 28. A many-sided polygon on so few points (fewer than four to a side) is left round: a circle
-given as a few points round it, or as events in bursts, looks the same (`polygon_checks.SPARSE_STEP`)."""
+given as a few points round it, or as events in bursts, looks the same
+(`polygon_checks.MAX_STEP_OF_SHORTEST_SIDE`)."""
 
 
 @pytest.mark.parametrize(("family", "pen"), list(CORNERED_FLOORS))

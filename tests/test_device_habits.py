@@ -77,6 +77,17 @@ def test_a_circle_by_a_few_events_is_round(events: int) -> None:
     assert recognize_stroke(pts.tolist()).kind == "circle"
 
 
+@pytest.mark.parametrize("events", range(8, 41))
+def test_only_events_a_sparse_step_apart_are_a_round_shapes_samples(events: int) -> None:
+    """A circle by events evenly in time turns at every one; it is taken for a round shape's few samples only where
+    they are at least `pen_noise.SPARSE_STEP_OF_DIAGONAL` of its diagonal apart (a circle 200 px across: 28 events
+    or fewer); denser events are judged by the shape they draw."""
+    pts = _round_by_events(events)
+    diag = float(np.hypot(*np.ptp(pts, axis=0)))
+    step = float(np.median(np.hypot(*np.diff(pts, axis=0).T)))
+    assert pen_noise.turns_at_every_event(pts, diag) == (step >= pen_noise.SPARSE_STEP_OF_DIAGONAL * diag)
+
+
 def test_a_pentagram_by_its_points_is_not_round() -> None:
     """A star drawn through its five points turns as evenly at each, but goes round twice: it keeps its corners."""
     a = math.pi / 2 + 4 * math.pi * np.arange(6) / 5

@@ -82,7 +82,9 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
    halfway along, the stroke on one side of that line), is not a polyline; a tick, check or v swung round its point
    (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
-   polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`).
+   polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
+   bends at least three times inside its ends, each the other way from the one before, every bend round and the
+   sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -122,6 +124,7 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
   begun by sliding back along itself or bowed by the hand's swing
 - `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
   which the open-stroke rules misjudge
+- `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few

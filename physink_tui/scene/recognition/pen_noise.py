@@ -52,7 +52,7 @@ def shape_bend(pts: np.ndarray) -> float:
     return 2 * step * step / size if size > 0 else 0.0
 
 
-SPARSE_STEP = 0.08
+SPARSE_STEP_OF_DIAGONAL = 0.08
 """Events whose median step is at least this share of the stroke's diagonal sample it sparsely (a circle by 25
 events or fewer; a tablet's dense strokes step a hundredth of it): the path between them is not known."""
 EVEN_TURNS = 0.75
@@ -70,8 +70,8 @@ sources' circles by 8-25 events spread 0.19-0.50, 10th-90th percentile, median 0
 
 
 def turns_at_every_event(pts: np.ndarray, diag: float) -> bool:
-    """Whether a closed stroke's points are sparse samples (`SPARSE_STEP`) that turn at nearly every one of them
-    (`EVEN_TURNS`), spaced about evenly (`EVEN_STEPS`), once round one way: a round shape sampled by a few events,
+    """Whether a closed stroke's points are sparse samples (`SPARSE_STEP_OF_DIAGONAL`) that turn at nearly every one of
+    them (`EVEN_TURNS`), spaced about evenly (`EVEN_STEPS`), once round one way: a round shape sampled by a few events,
     whose straight chords are the device's, not sides.
 
     >>> a = np.linspace(0, 2 * np.pi, 11)
@@ -91,7 +91,7 @@ def turns_at_every_event(pts: np.ndarray, diag: float) -> bool:
     while last - first > 4 and step[last - 1] < typical / 3:
         last -= 1
     d, step = d[first:last], step[first:last]
-    if typical < SPARSE_STEP * diag or float(np.std(step)) > EVEN_STEPS * float(np.mean(step)):
+    if typical < SPARSE_STEP_OF_DIAGONAL * diag or float(np.std(step)) > EVEN_STEPS * float(np.mean(step)):
         return False
     sides = d[step > 0]
     heading = np.arctan2(sides[:, 1], sides[:, 0])

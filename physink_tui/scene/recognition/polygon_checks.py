@@ -188,7 +188,7 @@ SHARP_SHARE = 0.75
 """The share of a polygon's vertices that must be sharp (`SHARP_CORNER`): a corner in four may look round where the
 hand overshot it and cut back (the hurried pen model's octagons: up to 2 of 8), while a lumpy circle's polygon has as
 many round bends as sharp ones (people's lumpy circles in the design sets: 4 of 8 at 0.4 or more)."""
-SPARSE_STEP = 0.25
+MAX_STEP_OF_SHORTEST_SIDE = 0.25
 """Corners are judged only on points at least four to the shortest side (half the stroke drawn in steps between its
 own points no longer than this share of it, `typical_step`): a circle given as 8-25 points round it (a mouse, a
 coarse event rate, events in bursts) is straight between them and as sharp at each as a polygon drawn."""
@@ -220,11 +220,11 @@ def corner_roundness_closed(fit: PolygonFit) -> np.ndarray:
 
 def sharp_corners(fit: PolygonFit, step: float) -> bool:
     """Whether the vertices of a closed fit are corners the pen turned at (`SHARP_CORNER`), on points dense enough to
-    tell a corner from a round bend (`SPARSE_STEP`; ``step``: `typical_step` of the stroke's own points, in the fit's
-    units); any vertex turning less than `MIN_CORNER_DEG` must be sharp itself (`SHALLOW_CORNER_DEG`)."""
+    tell a corner from a round bend (`MAX_STEP_OF_SHORTEST_SIDE`; ``step``: `typical_step` of the stroke's own points,
+    in the fit's units); any vertex turning less than `MIN_CORNER_DEG` must be sharp itself (`SHALLOW_CORNER_DEG`)."""
     verts = fit.vertices
     sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
-    if step > SPARSE_STEP * float(np.hypot(*sides.T).min()):
+    if step > MAX_STEP_OF_SHORTEST_SIDE * float(np.hypot(*sides.T).min()):
         return False
     roundness = corner_roundness_closed(fit)
     heading = np.arctan2(sides[:, 1], sides[:, 0])

@@ -23,7 +23,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import landing, open_shapes, pen_lifts, pen_noise, ranker
+from physink_tui.scene.recognition import landing, open_shapes, pen_lifts, pen_noise, ranker, waves
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
@@ -170,12 +170,16 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return Recognition(None, 0.0, None, (), f"{TOO_SHORT}: {size:.3g} units across, within the pen's noise "
                                                 f"({noise:.3g} units)")
     unit_noise = noise / scale
+    unit = (pts - origin) / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
-        result = _classify((pts - origin) / scale, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale)
+        rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale)
+        result = waves.as_curve(rules, unit)  # a wave's round bends are no zig-zag's teeth
     if result.geometry is None:
         return result
+    wavy = result is not rules
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
-    if not learned or open_shapes.straight_armed_mark(result, pts, noise):
+    # a wave is not asked of the model (the people it was fitted on drew none), nor a mark straight-armed as drawn
+    if not learned or wavy or open_shapes.straight_armed_mark(result, pts, noise):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds

@@ -1,0 +1,97 @@
+"""A wave (a squiggle: an open stroke bending one way then the other at round bends, its sides curving) read as a curve.
+
+Issue 25: a wavy line drawn by a pen model (a sine of 1-3.5 periods, up to 0.45 of its wavelength high) has bends the
+corner finder marks (`stroke_geometry.find_corners`, every dip) and sides whose chords it stays within, so the rules
+read it as a polyline, and its vertices as a zig-zag's teeth (`ranker.zigzag_teeth`), which the learned ranker is not
+asked about. A zig-zag and a wave differ where a reader looks: a zig-zag's points are sharp, each turning within a
+short stretch of its sides, and its sides run straight between them; a wave's every bend is round and its sides curve
+along their length (an S between two bends: each half bows away from its chord). On the design sets' people (the 92
+sources, 2026-12-04) no stroke the rules read as a polyline meets both tests (`MIN_ROUNDNESS`, `SIDE_BOW`): the
+sharpest point of a person's zig-zag turns within 0.15 of its shorter side; of the pen models' waves up to 0.45 of
+their wavelength high, every one the rules read as a polyline does (docs/BENCHMARKS.md, "Waves read as curves").
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.beautify import curve_geometry
+from physink_tui.scene.recognition.primitives import Polyline, Recognition
+
+WAVE_POINTS = 128
+"""The stroke is judged resampled to this many points (a wave of 3.5 periods: 18 a half-period, enough to see a bend's
+width and a side's S), lightly smoothed (`stroke_geometry.smooth`)."""
+SIDE_POINTS = 16
+"""... or more, so that each side between two bends holds this many points on average: smoothing rounds a corner over
+a few points, so a zig-zag's small teeth (five in a row between a long lead-in and a curled tail) on fewer points
+each would look as round as a wave's bends."""
+MIN_BENDS = 3
+"""A wave bends at least this many times inside its ends, each the other way from the one before (two bends are an S
+or an N, left to the rules)."""
+MIN_ROUNDNESS = 0.2
+"""Every bend of a wave is round: it does its turning over at least this share of its shorter side
+(`stroke_features.corner_roundness`); the sharpest point of a person's zig-zag in the design sets turns within 0.15,
+a pen model's wave's roundest-cornered bends within 0.2-0.45."""
+SIDE_BOW = 0.08
+"""A wave's sides curve: the halves of each side between two inner bends (an S) stray from their chords by at least
+this share of the chord, as the median over the sides (`stroke_geometry.chord_deviation`; a straight side's halves
+stray by the pen's noise and the corners' rounding: a person's zig-zag's median 0.05)."""
+REACH = 3
+"""A bend's direction is the sign of the turning summed over this many points either side of it."""
+
+
+def wave(unit: np.ndarray) -> tuple[np.ndarray, list[int]] | None:
+    """The stroke (its points at unit size) resampled (`WAVE_POINTS`) and its bends, ends included, when it is a
+    wave: at least `MIN_BENDS` inner bends, each turning the other way from the one before, every one round
+    (`MIN_ROUNDNESS`), the sides between them curved (`SIDE_BOW`); else None."""
+    if len(unit) < 3 or sg.bbox_diagonal(unit) == 0.0:
+        return None
+    work, corners = _bends(unit, WAVE_POINTS)
+    if len(corners) < MIN_BENDS + 2:
+        return None
+    if SIDE_POINTS * (len(corners) - 1) > WAVE_POINTS:  # small teeth: judged on enough points to see them sharp
+        work, corners = _bends(unit, SIDE_POINTS * (len(corners) - 1))
+        if len(corners) < MIN_BENDS + 2:
+            return None
+    th = sg.turning(work)  # th[k] is the turn at point k + 1
+    signs = [float(th[max(c - 1 - REACH, 0):c + REACH].sum()) > 0 for c in corners[1:-1]]
+    if any(a == b for a, b in itertools.pairwise(signs)):
+        return None
+    if min(sf.corner_roundness(work, corners, th=th)) < MIN_ROUNDNESS:
+        return None
+    return (work, corners) if side_bow(work, corners) >= SIDE_BOW else None
+
+
+def _bends(unit: np.ndarray, n: int) -> tuple[np.ndarray, list[int]]:
+    """The stroke resampled to ``n`` points, lightly smoothed, and its bends there, ends included."""
+    work = sg.smooth(sg.resample(unit, n))
+    return work, sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), sg.path_length(work))
+
+
+def side_bow(work: np.ndarray, corners: list[int]) -> float:
+    """How the sides between the stroke's inner bends curve (an S between two bends: each half bows away from its
+    chord): over those sides, the median of the larger `stroke_geometry.chord_deviation` of each side's two halves;
+    0 with fewer than two inner bends."""
+    halves = []
+    for a, b in itertools.pairwise(corners[1:-1]):
+        m = (a + b) // 2
+        if m > a and b > m:
+            halves.append(max(sg.chord_deviation(work[a:m + 1]), sg.chord_deviation(work[m:b + 1])))
+    return min(float(np.median(halves)), 1.0) if halves else 0.0
+
+
+def as_curve(found: Recognition, unit: np.ndarray) -> Recognition:
+    """``found`` (the rules' reading of the stroke, at unit size), or, when the rules read a polyline and the stroke
+    is a `wave`, the curve through it, the polyline the alternative. Only a polyline with a vertex at `MIN_BENDS`
+    bends or more is looked at (the rules put one at each bend they saw): a tick, a v, a caret, a bracket is not."""
+    if not isinstance(found.geometry, Polyline) or len(found.geometry.points) < MIN_BENDS + 2:
+        return found
+    seen = wave(unit)
+    if seen is None:
+        return found
+    work, corners = seen
+    return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
