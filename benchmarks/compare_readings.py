@@ -47,7 +47,8 @@ def strokes(paths: list[Path]) -> list[tuple[str, list[list[float]], list[float]
 
 def _plain(value: object) -> object:
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
-        return {"type": type(value).__name__, **{k: _plain(v) for k, v in dataclasses.asdict(value).items()}}
+        return {"type": type(value).__name__, **{k: _plain(v) for k, v in dataclasses.asdict(value).items()
+                                                 if not (k == "note" and v is None)}}  # a tree without notes
     if isinstance(value, (tuple, list)):
         return [_plain(v) for v in value]
     return value

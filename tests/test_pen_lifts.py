@@ -119,6 +119,7 @@ def test_a_bracket_drawn_twice_without_a_reported_lift_becomes_one_polyline_body
         project, told = replayed_project(*_journal_lift_unreported(BRACKET, seed, 1.5 * LIFT_PAUSE), folder)
         shapes = [b.shape for b in project.scene.bodies()]
         assert shapes == ["polyline"], f"seed {seed}: {shapes}\n{told}"
+        assert "read by its last attempt: no pen event for 1.5 s" in told, f"seed {seed}: the user is not told\n{told}"
 
 
 def test_a_pen_resting_at_a_corner_is_not_a_lift() -> None:

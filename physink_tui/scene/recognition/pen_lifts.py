@@ -1,4 +1,5 @@
-"""A recorded stroke holding several attempts at a mark (the pen lifted between them) is read by its last; no I/O.
+"""A recorded stroke holding several attempts at a mark (the pen lifted between them) is read by its last, and the user
+told so (`told`); no I/O.
 
 Some recorders keep one "stroke" from the first pen-down to the last pen-up of a gesture: a person who draws a bracket,
 lifts, and draws it again over the first gives one stroke of two brackets joined by a straight jump, which reads as a
@@ -66,3 +67,11 @@ def last_attempt(points: Sequence[Sequence[float]], times: Sequence[float] | Non
     last = max(k for k, length in enumerate(lengths) if length >= WHOLE_ATTEMPT * longest)
     return slice(cuts[last], cuts[last + 1])
 
+
+def told(times: Sequence[float], attempt: slice) -> str:
+    """What the user is told of a stroke read by its ``attempt`` (`last_attempt`) alone: the earlier attempts are
+    in the journal, not in the sketch."""
+    start = attempt.start or 0
+    pause = float(times[start]) - float(times[start - 1]) if start > 0 else 0.0
+    return (f"read by its last attempt: no pen event for {pause:.1f} s, then the pen landed far away with no pen-up "
+            "reported (a lift the device missed); the earlier attempt is kept in the journal, not drawn")

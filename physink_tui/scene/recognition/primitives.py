@@ -122,6 +122,7 @@ class Recognition:
         geometry: the beautified primitive, or None with ``kind``.
         alternatives: other kinds that fit, best first, with their confidences.
         reason: why nothing was recognised (e.g. "too short to recognise"), else None.
+        note: what the user should know of how the stroke was read (only part of it read), else None.
     """
 
     kind: str | None
@@ -129,3 +130,4 @@ class Recognition:
     geometry: Geometry | None
     alternatives: tuple[tuple[str, float], ...] = ()
     reason: str | None = None
+    note: str | None = None

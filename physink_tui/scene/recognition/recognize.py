@@ -145,7 +145,8 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     """
     attempt = pen_lifts.last_attempt(points, times)
     if attempt is not None and times is not None:
-        points, times = points[attempt], times[attempt]
+        last = recognize_stroke(points[attempt], times[attempt], noise=noise, weights=weights, learned=learned)
+        return replace(last, note=pen_lifts.told(times, attempt))
     with np.errstate(all="ignore"):  # huge coordinates overflow here; the checks below catch it
         pts, keep, size, reason = _clean(points)
     if pts is None:

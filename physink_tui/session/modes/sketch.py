@@ -199,6 +199,8 @@ class SketchMode:
         outcome = stroke_outcome(recognition.kind, result, before)
         if outcome:
             self.host.tell(outcome, t, "outcome")
+        if recognition.note:
+            self.host.tell(recognition.note, t)
         if result.message:
             self.host.tell(result.message, t)
         if result.scene != before:
