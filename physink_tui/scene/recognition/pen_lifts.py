@@ -1,5 +1,4 @@
-"""A recorded stroke holding several attempts at a mark (the pen lifted between them) is read by its last, and the user
-told so (`told`); no I/O.
+"""A recorded stroke holding several attempts at a mark (the pen lifted between) is read by its last, the user told.
 
 Some recorders keep one "stroke" from the first pen-down to the last pen-up of a gesture: a person who draws a bracket,
 lifts, and draws it again over the first gives one stroke of two brackets joined by a straight jump, which reads as a
