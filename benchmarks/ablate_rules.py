@@ -33,7 +33,15 @@ from bench_generalisation import in_second_group, scored_rows
 from bench_recognition import machine, table
 from stroke_sets import Row, read_sets, source_of
 
-from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, polygon_checks, ranker, ranking
+from physink_tui.scene.recognition import (
+    bracket_marks,
+    closed_loops,
+    open_marks,
+    open_shapes,
+    polygon_checks,
+    ranker,
+    ranking,
+)
 from physink_tui.scene.recognition import recognize as rz
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
@@ -120,29 +128,29 @@ RULES: tuple[Rule, ...] = (
     Rule("brace_point", "bracket_marks.brace_point (BRACE_DEPTH, POINT_AT ...)",
          "fifth pass: a table over the design sources' polylines; hat359/user1", lambda: [
              (bracket_marks, "brace_point", _false)]),
-    # closed strokes (recognize, loop_ends, polygon_checks, ranking)
+    # closed strokes (recognize, closed_loops, loop_ends, polygon_checks, ranking)
     Rule("spur", "polygon_checks.SPUR", "itt second pass: rectangles of 6 students",
          lambda: [(polygon_checks, "SPUR", 0.0)]),
     Rule("figure_eight", "stroke_features.figure_eight", "itt second pass: delete marks, an arrow of 4 students",
          lambda: [(sf, "figure_eight", _false)]),
-    Rule("lumpy_round", "recognize._lumpy_round (LUMPY_SIDES, its ellipse's margin)",
+    Rule("lumpy_round", "closed_loops.lumpy_round (LUMPY_SIDES, its ellipse's margin)",
          "itt first pass: the students' mouse circles; fourth pass: the margin", lambda: [
-             (rz, "_lumpy_round", _false)]),
+             (closed_loops, "lumpy_round", _false)]),
     Rule("loop_end_sixths", "loop_ends.cut_ends' cut in the first and last sixths (END_SHARE)",
          "fourth pass: boxes with a lead-in and an overshoot; mmg:22, DerD4n, pixelfac/user03",
-         lambda: [(rz, "cut_ends", _cut_ends_without_sixths)]),
+         lambda: [(closed_loops, "cut_ends", _cut_ends_without_sixths)]),
     Rule("small_loop", "loop_ends.SMALL_LOOP", "fourth pass: pixelfac/user02, 03, jonathanzhang53/s05, "
-         "klarubbio/s06", lambda: [(rz, "SMALL_LOOP", 0.0)]),
+         "klarubbio/s06", lambda: [(closed_loops, "SMALL_LOOP", 0.0)]),
     Rule("box_as_drawn", "recognize._box_as_drawn (BOX_OVERLAP)", "fourth pass: the design sources' rectangles",
          lambda: [(rz, "_box_as_drawn", _as_ranked)]),
     Rule("box_margin", "ranking.BOX_MARGIN", "fifth pass: geometry only (no source)",
          lambda: [(ranking, "BOX_MARGIN", ranking.BOUNDS_MARGIN), (rz, "BOX_MARGIN", ranking.BOUNDS_MARGIN)]),
-    Rule("left_open_wobble", "recognize.LEFT_OPEN_WOBBLE", "fifth pass: klarubbio/s06, dollar1:s03",
-         lambda: [(rz, "LEFT_OPEN_WOBBLE", 0.0)]),
-    Rule("last_side_bow", "recognize.LAST_SIDE_BOW", "fifth pass: klarubbio/s06",
-         lambda: [(rz, "LAST_SIDE_BOW", open_shapes.STRAIGHT)]),
-    Rule("star_crossings", "recognize._star_run_past_its_start (STAR_CROSSINGS)",
-         "fifth pass: klarubbio/s06, sinarest1608/Subject3", lambda: [(rz, "STAR_CROSSINGS", math.inf)]),
+    Rule("left_open_wobble", "closed_loops.LEFT_OPEN_WOBBLE", "fifth pass: klarubbio/s06, dollar1:s03",
+         lambda: [(closed_loops, "LEFT_OPEN_WOBBLE", 0.0)]),
+    Rule("last_side_bow", "closed_loops.LAST_SIDE_BOW", "fifth pass: klarubbio/s06",
+         lambda: [(closed_loops, "LAST_SIDE_BOW", open_shapes.STRAIGHT)]),
+    Rule("star_crossings", "closed_loops.star_run_past_its_start (STAR_CROSSINGS)",
+         "fifth pass: klarubbio/s06, sinarest1608/Subject3", lambda: [(closed_loops, "STAR_CROSSINGS", math.inf)]),
     # the shipped ranker's guards (the rules alone never reach them)
     Rule("checked_point", "ranker.checked_point (the hurried check is not asked of the model)",
          "third pass: s04", lambda: [(ranker, "checked_point", _false)], shipped_only=True),

@@ -124,7 +124,7 @@ def _triangle_lifted_short(seed: int, ending: str) -> list[tuple[float, float, f
 @pytest.mark.parametrize("ending", ("plain", "bowed", "hook"))
 def test_a_triangle_lifted_short_of_its_start_is_a_polygon(ending: str) -> None:
     """Before the fifth pass 14, 11 and 2 of the 40 were polylines: a wobble or hook at the end undid the path's
-    turning (`recognize.LEFT_OPEN_WOBBLE`), or the last side bowed past `open_shapes.STRAIGHT` (`LAST_SIDE_BOW`)."""
+    turning (`closed_loops.LEFT_OPEN_WOBBLE`), or the last side bowed past `open_shapes.STRAIGHT` (`LAST_SIDE_BOW`)."""
     read = {seed: _read(_triangle_lifted_short(seed, ending)) for seed in SEEDS}
     assert all(kind == "polygon" for kind in read.values()), {s: k for s, k in read.items() if k != "polygon"}
 

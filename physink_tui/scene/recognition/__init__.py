@@ -37,7 +37,7 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
    to the ellipse drawn (`Candidate.fallback` again), and a loop about as wide as long turning smoothly all round (under
    `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
-   (`recognize.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
+   (`closed_loops.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
    A short side where the outline turns back sharply at one end and gently at the other, its neighbours' far ends
    apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
    winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
@@ -50,9 +50,9 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    with unequal sides (a box leaning) or a quad with one wall askew is a box, as people draw them; a lumpy round
    loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may; a box may
    reach 10 % (`ranking.BOX_MARGIN`: a box whose upright sides lean, squared, pokes out). A polygon left open (its
-   last side heading home, or a star's run on past its start, `recognize.STAR_CROSSINGS`) is judged by its sides'
-   turning where an end hook undoes the path's (`recognize.LEFT_OPEN_WOBBLE`), and its last side may bow
-   (`recognize.LAST_SIDE_BOW`). A loop read round is read as its polygon of four sides or more after all
+   last side heading home, or a star's run on past its start, `closed_loops.STAR_CROSSINGS`) is judged by its sides'
+   turning where an end hook undoes the path's (`closed_loops.LEFT_OPEN_WOBBLE`), and its last side may bow
+   (`closed_loops.LAST_SIDE_BOW`). A loop read round is read as its polygon of four sides or more after all
    (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its
    vertices turn within 0.4 of their shorter side (`polygon_checks.sharp_corners`; a round loop needs 0.8): a
    hexagon or octagon whose many vertices the complexity penalty outweighed; never on points sparser than four to
@@ -103,7 +103,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
-- `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above, closure
+- `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above
+- `closed_loops.py`: closure (a gap or an overshoot at the ends, a polygon left open, a lumpy circle's lumps)
 - `ranking.py`: the candidates scored (fit error against complexity, `Weights`, `DEFAULT_WEIGHTS`) and ranked: the
   best whose shape stays within the stroke's bounds and follows its outline, with the alternatives
 - `coils.py`: strokes that wind or scrub rather than outline: a spring drawn as one coil (a helix), a scribble

@@ -38,7 +38,7 @@ sets label no arc, and label trapezoids and parallelograms "rectangle", against 
 25), so a model fitted on them would learn to turn every arc into a curve and every trapezoid into a box."""
 OPEN_GAP = 0.2
 """A polygon whose ends are at least this share of its size apart (`stroke_features.closure`; the rules' own closing
-gap, `recognize.CLOSED_GAP`) may be an open mark: the model is asked."""
+gap, `closed_loops.CLOSED_GAP`) may be an open mark: the model is asked."""
 FEATURES = ("closure", "ink", "net_turn", "abs_turn", "corners", "concentration", "max_roundness",
             "mean_roundness", "straight_share", "max_bow", "mean_bow", "max_corner_turn", "min_corner_turn",
             "lobes", "ellipse_error", "circle_error", "aspect", "line_error", "corner_share", "one_way",

@@ -1,0 +1,126 @@
+"""Whether a stroke is a closed loop, and which loop: a gap or an overshoot at the ends, a polygon the pen left before
+closing it, a lumpy circle whose lumps are not sides; the fitting and ranking are `recognize`'s."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import open_shapes, pen_noise
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
+from physink_tui.scene.recognition.polygon_checks import crossings
+from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
+
+LUMPY_SIDES = 4
+"""A closed stroke that turns smoothly all round (`open_shapes.SMOOTH`, judged as open strokes are, on 32 to 40
+points a few noise widths apart: `stroke_geometry.coarse_turning`) is offered
+no polygon of `LUMPY_SIDES` sides or more: a lumpy circle drawn with a mouse (sparse points, flat stretches) fits
+a quad, pentagon or hexagon closely, but a drawn polygon turns at its corners."""
+LUMPY_ASPECT = 0.5
+"""Only a loop whose fitted ellipse is at least this wide for its length is judged lumpy-round (an oval drawn by a
+person is rarely flatter than 2:1; a thin box is far flatter)."""
+
+
+def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw: np.ndarray, diag: float) -> bool:
+    """A closed loop about as wide as it is long (its ellipse, `fit_ellipse` of it, no flatter than `LUMPY_ASPECT`)
+    that turns smoothly all round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides
+    are not lumps); or sampled by a few events that it turns at nearly every one of (`pen_noise.turns_at_every_event`:
+    a circle by 8-12 events is an octagon to fit, but a drawn polygon runs straight through its events between
+    corners)."""
+    if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
+        return False
+    return (sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH
+            or pen_noise.turns_at_every_event(raw, diag))
+
+
+def polygon_left_open(work: np.ndarray, diag: float) -> bool:
+    """Straight sides turning most of the way round, the last one heading for the start: a polygon the pen
+    left before closing it."""
+    length = sg.path_length(work)
+    if length < 1.75 * diag or sf.closure(work, diag) >= 0.42:
+        return False
+    turned = abs(float(sg.turning(work).sum()))
+    if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
+        return False
+    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+    if turned < LEFT_OPEN_TURN and abs(sides_turning(work[corners])) < LEFT_OPEN_TURN:
+        return False
+    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
+            and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
+            and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners)))
+
+
+STAR_CROSSINGS = 3
+"""A star drawn in one stroke crosses its own sides five times (a pentagram); an open mark whose last stroke runs
+back across its first (the $1 delete mark, an alpha) crosses once. From this many crossings on, a stroke whose last
+side runs on past its start is a star whose last stroke overshot, not an open mark."""
+
+
+def star_run_past_its_start(work: np.ndarray, corners: list[int]) -> bool:
+    """The last side ran on past the start (the start lies behind the end, within `stroke_features.heading_home`'s
+    50 degrees of the side's line) and the sides cross one another like a star's."""
+    last, home = work[-1] - work[corners[-2]], work[0] - work[-1]
+    norms = float(np.hypot(*last) * np.hypot(*home))
+    if norms == 0.0 or float(last @ home) / norms > -math.cos(math.radians(50.0)):
+        return False
+    return crossings(work[corners]) >= STAR_CROSSINGS
+
+
+LAST_SIDE_BOW = 0.2
+"""The last side of a polygon left open may bow this much (of its chord): the hand swings home as it lifts, while the
+sides before it are drawn straight (`open_shapes.STRAIGHT`)."""
+LEFT_OPEN_TURN = 1.25 * math.pi
+"""A polygon left open has turned at least this far round (a triangle short of its last side: about 1.33 pi)."""
+LEFT_OPEN_WOBBLE = 0.5 * math.pi
+"""How much of that turning a hurried hand's hook or wobble at an end may undo on the path itself; then the turning is
+taken from corner to corner, along the sides' chords (the corners the hand meant), not from every wiggle."""
+
+
+def sides_turning(corners: np.ndarray) -> float:
+    """The signed turning of the chain of sides through ``corners`` (radians)."""
+    sides = np.diff(corners, axis=0)
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    return float(((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi).sum())
+
+
+def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
+                 ) -> tuple[bool, np.ndarray, EllipseFit | None]:
+    """Whether the stroke closes (judged on the raw ends: a gap, or drawn past its start), the stroke once round (an
+    overshoot past the start, or a start before the end, cut at the closest approach), and that loop's `fit_ellipse`
+    where it was fitted here (None when it was not: `recognize` fits it then)."""
+    if sg.path_length(work) < 1.75 * diag:  # the smoothed path: jitter lengthens the raw one
+        return False, work, None
+    th = sg.turning(work)
+    coarse = sg.coarse_turning(work, sigma)
+    limit = max(CLOSED_GAP * diag, 4 * sigma)
+    if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
+        loop = sf.one_loop(work, th)  # round and round one way: once round is the shape, if it is round
+        ellipse = fit_ellipse(loop)
+        back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit  # it came back to its start (a pigtail does not)
+        if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
+            return True, loop, ellipse
+    if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
+        return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
+    n = len(work)
+    gap = float(np.hypot(*(raw[-1] - raw[0])))
+    tail, head = work[n // 2:], work[: max(2, n // 2)]
+    d_tail = np.hypot(*(tail - work[0]).T)
+    d_head = np.hypot(*(head - work[-1]).T)
+    if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit:
+        return False, work, None
+    loop = cut_ends(work, gap, d_tail, d_head)
+    if len(loop) < 8:
+        return True, work, None
+    if sg.bbox_diagonal(loop) < SMALL_LOOP * diag:
+        # a loop on a long shaft or between long tails: an arrow's closed head, an x drawn round
+        return False, work, None
+    return True, loop, None
+
+
+CLOSED_GAP = 0.2
+"""A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
