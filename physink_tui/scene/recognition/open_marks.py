@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from physink_tui.scene.recognition import lines
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.shape_fits import fit_circle
 
@@ -178,7 +179,8 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float) -> bo
     middle = coarse[len(coarse) // 5: len(coarse) - len(coarse) // 5]
     if sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= SWUNG_POINT_DEG:
         return False
-    centre, radius, _ = fit_circle(coarse)
+    bow = lines.without_hooked_ends(coarse, noise)  # a hook where the pen landed or lifted is no swing
+    centre, radius, _ = fit_circle(bow)
     if not math.isfinite(radius):
         return True  # straight enough that no circle fits
-    return float(np.abs(np.hypot(*(coarse - centre).T) - radius).max()) >= SWUNG_ARC * stray * length
+    return float(np.abs(np.hypot(*(bow - centre).T) - radius).max()) >= SWUNG_ARC * stray * length

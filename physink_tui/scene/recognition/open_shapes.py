@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import bracket_marks, open_marks
+from physink_tui.scene.recognition import bracket_marks, lines, open_marks
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -63,33 +63,46 @@ def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
     without a lead-in or tail that runs back along it (`open_marks.retraced_ends`), or bowed one way and back by the
-    hand's swing (`open_marks.swung_line`)."""
+    hand's swing (`open_marks.swung_line`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a
+    short line's hook is a large share of it), straight within the pen's own wobble (`lines.within_wobble`)."""
     found, swung = _line(raw, noise, diag)
     if found is None:
         kept = open_marks.retraced_ends(raw, noise)
         if kept is not None:
             found, _ = _line(kept, noise, sg.bbox_diagonal(kept))
+    for kept in lines.unhooked(raw, noise) if found is None else []:
+        found, _ = _line(kept, noise, sg.bbox_diagonal(kept), bow=False)
+        if found is not None:
+            break
     return found if found is not None else swung
 
 
-def _line(raw: np.ndarray, noise: float, diag: float) -> tuple[Recognition | None, Recognition | None]:
-    """A line by the line test, or else one the hand's swing bowed (`open_marks.swung_line`), or None each."""
+def _line(raw: np.ndarray, noise: float, diag: float,
+          bow: bool = True) -> tuple[Recognition | None, Recognition | None]:
+    """A line by the line test, or else one the hand's swing bowed (`open_marks.swung_line`), or None each; with
+    ``bow`` False, only a line straight within the pen's own wobble (`lines.within_wobble`)."""
     if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
         return None, None  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
     n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
     coarse = sg.smooth(sg.resample(raw, n))
     coarse = sg.resample(sg.remove_hooks(coarse), n)
-    _, _, err = fit_line(coarse)
+    _, _, off = fit_line(coarse)
     length = sg.path_length(coarse)
     chord = float(np.hypot(*(coarse[-1] - coarse[0])))
     if chord == 0.0:
         return None, None
-    err = max(0.0, err - noise / chord)  # the pen's own wobble is not a bend
+    err = max(0.0, off - noise / chord)  # the pen's own wobble is not a bend
     slack = 1.0 + 3 * noise / chord
-    if (err < LINE and length < 1.12 * chord * slack) or (err < 0.5 * LINE and length < 1.3 * chord * slack):
-        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])), (("arc", 0.2),)), None
-    if open_marks.swung_line(coarse, err, length / (chord * slack), noise):
+
+    def close(stray: float) -> bool:
+        return (stray < LINE and length < 1.12 * chord * slack) or (stray < 0.5 * LINE and length < 1.3 * chord * slack)
+
+    # nor, at its farthest, is a stroke's whole stray within the pen's wobble, unless it bows as an arc does
+    if (bow and close(err)) or (close(0.0) and lines.within_wobble(coarse, off, noise / chord)):
+        return Recognition("line", 1.0 - min(err, LINE) / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])),
+                           (("arc", 0.2),)), None
+    if bow and open_marks.swung_line(coarse, err, length / (chord * slack), noise):
         return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),))
     return None, None
 

@@ -1,0 +1,135 @@
+"""How far a person's straight line strays by the pen and hand alone (the noise at its farthest, a hook at an end),
+told from a bow drawn on purpose (a circle explains it) and from a mark's short arm; no classification, no I/O."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.shape_fits import fit_circle, fit_line
+
+CIRCULAR_BOW = 0.5
+"""A stroke whose farthest point from its best circle (`shape_fits.fit_circle`) is under this share of its farthest
+point from its best line bows one way, smoothly, as an arc does: the circle takes away at least half of what strays
+from the line. A hook, a tremor's wobble or a corner does not fit a circle so (`benchmarks/bench_lines.py`, tuning
+seeds: the pen models' arcs of 20-90 degrees 0.00-0.38 (0.9 where the slow shaky hand draws them), their short hooked
+and shaky lines 0.4-40, most over 1)."""
+
+
+def wobble_reach(n: int) -> float:
+    """How many noise widths the pen's own wobble takes a straight stroke off its line at the farthest of its ``n``
+    judged points: the largest of n draws of a noise of unit spread is about sqrt(2 ln n) (2.8 at 48 points, 3.2 at
+    160), and a slow tremor, smooth between points, reaches as far through the smoothing that white noise does not.
+
+    >>> round(wobble_reach(48), 2), round(wobble_reach(160), 2)
+    (2.78, 3.19)
+    """
+    return math.sqrt(2 * math.log(max(n, 2)))
+
+
+def circular_bow(pts: np.ndarray) -> bool:
+    """Whether ``pts`` bow off their line the way an arc does (`CIRCULAR_BOW`).
+
+    >>> a = np.linspace(-0.3, 0.3, 48)
+    >>> circular_bow(np.column_stack([np.sin(a), np.cos(a)]))
+    True
+    >>> hooked = np.vstack([[[-2.0, 3.0]], np.column_stack([np.linspace(0, 20, 47), np.zeros(47)])])
+    >>> circular_bow(hooked)
+    False
+    """
+    centre, direction, _ = fit_line(pts)
+    rel = pts - centre
+    off_line = float(np.abs(rel[:, 0] * direction[1] - rel[:, 1] * direction[0]).max())
+    middle, radius, _ = fit_circle(pts)
+    if not math.isfinite(radius) or off_line == 0.0:
+        return False
+    return float(np.abs(np.hypot(*(pts - middle).T) - radius).max()) < CIRCULAR_BOW * off_line
+
+
+HOOK_REACH = 8.0
+"""A hook where the pen lands or lifts is at most this many noise widths of path long, whatever the stroke's length: a
+hand's landing and flick (mmg's 596 lines, stylus and finger: the piece at an end heading off the line is 0 at the
+median, 3-4 px at the 95th percentile, 9-10 px at the 99th)."""
+HOOK_SHARE = 1 / 3
+"""... and at most this share of the stroke's path (a longer piece is a mark's arm)."""
+
+
+def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
+    """``raw`` without a hook's length (`HOOK_REACH`, `HOOK_SHARE`) of path at its start, and without one at its end
+    (``noise`` in ``raw``'s units), each to be judged by the line test again; none where the stroke is too short, nor
+    an end whose cut piece is a mark's arm (`_arm`). A short line's hook is a large share of it, more than
+    `stroke_geometry.remove_hooks` cuts (a tenth of the path). Not both ends at once: short pieces standing off both
+    ends are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px spine), and a hand hooks one end far more
+    often than both (mmg's lines: the start 2 %, the end 13 %)."""
+    steps = np.hypot(*np.diff(raw, axis=0).T)
+    along = np.concatenate([[0.0], np.cumsum(steps)])
+    length = float(along[-1])
+    cut = min(HOOK_REACH * noise, HOOK_SHARE * length)
+    if not cut > 0:
+        return []
+    head, tail = raw[along <= cut], raw[along >= length - cut][::-1]  # each from the stroke's end inwards
+    after_head, before_tail = raw[along >= cut], raw[along <= length - cut]
+    return [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
+            if len(rest) >= 2 and not _arm(piece, inward)]
+
+
+def _arm(piece: np.ndarray, rest: np.ndarray) -> bool:
+    """Whether ``piece`` (from an end of the stroke to where ``rest`` runs on) is a mark's short arm, not a hook:
+    straight (`stroke_geometry.ARM_STRAIGHT`) and standing off the rest's chord at `stroke_geometry.ARM_ANGLE_DEG`
+    (a tiny check's first arm, 10 px on a 20 px mark, itt lvht1203's check04, or a square bracket's); a hook curls
+    back or runs on nearly in line."""
+    if len(piece) < 2:
+        return False
+    if len(piece) > 2 and sg.chord_deviation(piece) >= sg.ARM_STRAIGHT:
+        return False
+    u, v = piece[0] - piece[-1], rest[-1] - rest[0]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return False
+    angle = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
+    return sg.ARM_ANGLE_DEG[0] <= angle <= sg.ARM_ANGLE_DEG[1]
+
+
+def within_wobble(pts: np.ndarray, stray: float, noise: float) -> bool:
+    """Whether ``pts`` (the line test's smoothed points without hooks, whose farthest point strays ``stray`` off their
+    line, and ``noise`` the pen's, both as shares of the chord) stray no farther than the pen's own wobble reaches
+    (`wobble_reach` noise widths), and do not bow as an arc does (`circular_bow`)."""
+    return stray < wobble_reach(len(pts)) * noise and not circular_bow(pts)
+
+
+HOOK_TURN_DEG = 20.0
+"""An end piece `HOOK_REACH` noise widths long whose chord turns this much from the way the stroke runs on from it is
+hooked (the pen landing or lifting); an arc's end turns by its sweep over that short piece, a few degrees."""
+
+
+def without_hooked_ends(pts: np.ndarray, noise: float) -> np.ndarray:
+    """``pts`` (equally spaced, ``noise`` in their units) without an end piece `HOOK_REACH` noise widths long that turns
+    off the way the stroke runs on (`HOOK_TURN_DEG`): what a circle is fitted to when `open_marks.swung_line` asks
+    whether a circle explains a bow. The hurried hand's small hooks on arcs of 45-66 degrees made the circle miss the
+    arcs' ends, and they were read as swung lines (`benchmarks/bench_lines.py`); gtiwari's mouse lines have none.
+
+    >>> arc = np.column_stack([np.cos(np.linspace(0, 1, 60)), np.sin(np.linspace(0, 1, 60))]) * 100
+    >>> hooked = np.vstack([arc[:1] + [[-4.0, -2.0]], arc])
+    >>> len(without_hooked_ends(hooked, 1.0)) < len(hooked), len(without_hooked_ends(arc, 1.0)) == len(arc)
+    (True, True)
+    """
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    reach = HOOK_REACH * noise
+    head = int(np.count_nonzero(along <= reach))
+    tail = int(np.count_nonzero(along >= along[-1] - reach))
+    lo = head - 1 if _turns_off(pts, head) else 0
+    hi = len(pts) - tail + 1 if _turns_off(pts[::-1], tail) else len(pts)
+    return pts[lo:hi] if hi - lo >= len(pts) // 2 else pts
+
+
+def _turns_off(pts: np.ndarray, k: int) -> bool:
+    """Whether the first ``k`` of ``pts`` head off the way the next ``2 k`` run on by `HOOK_TURN_DEG` or more."""
+    if k < 2 or 3 * k > len(pts):
+        return False
+    u, v = pts[k - 1] - pts[0], pts[3 * k - 2] - pts[k - 1]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return False
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms)))) >= HOOK_TURN_DEG
