@@ -37,7 +37,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 import numpy as np
 from bench_device_stress import coarse
 from bench_waves import careful
-from penmodels.hurried import SHAKY_SLOW, Habits, HurriedPen, touching
+from penmodels.hurried import SHAKY_SLOW, Habits, HurriedPen, PenPoint, touching
 from penmodels.shapes import Curve
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -104,16 +104,30 @@ def shape(family: str, seed: int) -> tuple[list[Point], float]:
     return keys, length
 
 
+LAND = 0.3
+"""When the hurried hand lands, seconds (its tremor runs on the session's clock): as in a session's journal
+(`tests/test_lines_drawn.py`), so a seed draws there the stroke it draws here."""
+
+
+def hurried_reports(points: list[Point], seed: int, habits: Habits | None) -> list[PenPoint]:
+    """Every report of the hurried hand (with ``habits``) drawing along ``points``, landing at `LAND`."""
+    return HurriedPen(random.Random(seed), habits=habits).draw(Curve(tuple(points)), LAND)[0]
+
+
+def habits_of(pen: str, family: str) -> Habits | None:
+    """The hurried hand's habits for ``pen`` (the slow shaky hand's, or the default) without its own hooks on the
+    hooked family, which has its own."""
+    habits = SHAKY_SLOW if pen == "shaky" else Habits()
+    return replace(habits, hook=0.0) if family == "hooked" else habits
+
+
 def _hurried(points: list[Point], seed: int, habits: Habits | None) -> list[tuple[float, float, float]]:
-    return touching(HurriedPen(random.Random(seed), habits=habits).draw(Curve(tuple(points)), 0.0)[0])
-
-
-NO_HOOKS = Habits(hook=0.0)
+    return touching(hurried_reports(points, seed, habits))
 
 
 def hurried(points: list[Point], family: str, seed: int) -> list[tuple[float, float, float]]:
     """The hurried hand along ``points`` (its own hooks, but not on the hooked family, which has its own)."""
-    return _hurried(points, seed, NO_HOOKS if family == "hooked" else None)
+    return _hurried(points, seed, habits_of("hurried", family))
 
 
 def hurried_coarse(points: list[Point], family: str, seed: int) -> list[tuple[float, float, float]]:
@@ -126,8 +140,7 @@ def hurried_coarse(points: list[Point], family: str, seed: int) -> list[tuple[fl
 
 def shaky(points: list[Point], family: str, seed: int) -> list[tuple[float, float, float]]:
     """The slow shaky hand (`penmodels.hurried.SHAKY_SLOW`; its own hooks, but not on the hooked family)."""
-    habits = replace(SHAKY_SLOW, hook=0.0) if family == "hooked" else SHAKY_SLOW
-    return _hurried(points, seed, habits)
+    return _hurried(points, seed, habits_of("shaky", family))
 
 
 def careful_pen(points: list[Point], family: str, seed: int) -> list[tuple[float, float, float]]:
