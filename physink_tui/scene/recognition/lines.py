@@ -92,6 +92,26 @@ def _arm(piece: np.ndarray, rest: np.ndarray) -> bool:
     return sg.ARM_ANGLE_DEG[0] <= angle <= sg.ARM_ANGLE_DEG[1]
 
 
+INK_STEP = 3.0
+"""`ink` is measured along steps this many noise widths long (`open_shapes`' line test judges on such steps)."""
+
+
+def ink(pts: np.ndarray, noise: float) -> float:
+    """The path length of ``pts`` along steps at least `INK_STEP` noise widths long: the ink of the stroke's shape,
+    not of the pen's wobble between points closer than that (the line test resamples a short stroke to 48 points, a
+    fraction of a noise width apart on a 20 px line, where a slow shaky hand's tremor and sensor noise add 20-90 % to
+    the path of a straight line: `benchmarks/bench_lines.py`'s shaky pen).
+
+    >>> zigzag = np.array([[x, 0.5 * (x % 2)] for x in range(0, 31)], dtype=float)
+    >>> round(ink(zigzag, 1.0), 1), round(float(np.hypot(*np.diff(zigzag, axis=0).T).sum()), 1)
+    (30.1, 33.5)
+    """
+    steps = np.hypot(*np.diff(pts, axis=0).T)
+    length = float(steps.sum())
+    k = int(min(len(pts), max(2, length / (INK_STEP * noise) + 1))) if noise > 0 else len(pts)
+    return length if k >= len(pts) else float(np.hypot(*np.diff(sg.resample(pts, k), axis=0).T).sum())
+
+
 def within_wobble(pts: np.ndarray, stray: float, noise: float) -> bool:
     """Whether ``pts`` (the line test's smoothed points without hooks, whose farthest point strays ``stray`` off their
     line, and ``noise`` the pen's, both as shares of the chord) stray no farther than the pen's own wobble reaches

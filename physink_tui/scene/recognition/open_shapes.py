@@ -98,8 +98,10 @@ def _line(raw: np.ndarray, noise: float, diag: float,
     def close(stray: float) -> bool:
         return (stray < LINE and length < 1.12 * chord * slack) or (stray < 0.5 * LINE and length < 1.3 * chord * slack)
 
-    # nor, at its farthest, is a stroke's whole stray within the pen's wobble, unless it bows as an arc does
-    if (bow and close(err)) or (close(0.0) and lines.within_wobble(coarse, off, noise / chord)):
+    # nor, at its farthest, is a stroke's whole stray within the pen's wobble, unless it bows as an arc does; nor the
+    # ink of that wobble between points closer than a few noise widths (`lines.ink`)
+    if (bow and close(err)) or (lines.ink(coarse, noise) < 1.3 * chord * slack
+                                and lines.within_wobble(coarse, off, noise / chord)):
         return Recognition("line", 1.0 - min(err, LINE) / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])),
                            (("arc", 0.2),)), None
     if bow and open_marks.swung_line(coarse, err, length / (chord * slack), noise):
