@@ -9,9 +9,11 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 
 0. A stroke whose times show the pen lifted and came down to draw the mark again (some recorders keep one stroke from
    the first landing to the last lifting) is read by its last whole attempt (`pen_lifts`).
-1. A line (judged on steps a few noise widths long), a spring (loops turning one way whose centres advance along an
-   axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a stroke under three noise widths
-   across is a dot (no kind).
+1. A line (judged on steps a few noise widths long; a stroke whose farthest point strays no farther than the pen's
+   own wobble reaches, sqrt(2 ln n) noise widths, is one unless a circle explains its bow, and a hook of up to 8 noise
+   widths at one end is cut first unless it is a straight arm standing off: `lines`), a spring (loops turning one way
+   whose centres advance along an axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a
+   stroke under three noise widths across is a dot (no kind).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
    drawn past its start and comes back to it (cut there), or it goes round the same sides twice. Where neither end
    comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook
@@ -126,6 +128,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
   which the open-stroke rules misjudge
 - `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline
+- `lines.py`: how far a person's line strays by the pen and hand alone (the noise's farthest reach, a hook at an
+  end, the ink of a wobble), told from a bow drawn on purpose (a circle explains it) and a mark's short arm
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few

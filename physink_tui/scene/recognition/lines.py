@@ -67,12 +67,21 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     along = np.concatenate([[0.0], np.cumsum(steps)])
     length = float(along[-1])
     cut = min(HOOK_REACH * noise, HOOK_SHARE * length)
-    if not cut > 0:
-        return []
-    head, tail = raw[along <= cut], raw[along >= length - cut][::-1]  # each from the stroke's end inwards
-    after_head, before_tail = raw[along >= cut], raw[along <= length - cut]
+    if not cut > 0 or sharp_corner(raw, noise):
+        return []  # too short, or a mark's corner (a short arm's) where a hook would be
+    at_head, at_tail = _at(raw, along, cut), _at(raw, along, length - cut)  # where each cut falls, between points
+    head = np.vstack([raw[along < cut], at_head])  # each piece from the stroke's end inwards
+    tail = np.vstack([raw[along > length - cut][::-1], at_tail])
+    after_head = np.vstack([at_head, raw[along > cut]])
+    before_tail = np.vstack([raw[along < length - cut], at_tail])
     return [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
             if len(rest) >= 2 and not _arm(piece, inward)]
+
+
+
+def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
+    """The point ``where`` along the path of ``pts`` (``along``: the path length at each point), as a row."""
+    return np.column_stack([np.interp(where, along, pts[:, 0]), np.interp(where, along, pts[:, 1])])
 
 
 def _arm(piece: np.ndarray, rest: np.ndarray) -> bool:
@@ -114,9 +123,47 @@ def ink(pts: np.ndarray, noise: float) -> float:
 
 def within_wobble(pts: np.ndarray, stray: float, noise: float) -> bool:
     """Whether ``pts`` (the line test's smoothed points without hooks, whose farthest point strays ``stray`` off their
-    line, and ``noise`` the pen's, both as shares of the chord) stray no farther than the pen's own wobble reaches
-    (`wobble_reach` noise widths), and do not bow as an arc does (`circular_bow`)."""
-    return stray < wobble_reach(len(pts)) * noise and not circular_bow(pts)
+    line, in their units, as ``noise``, the pen's) stray no farther than the pen's own wobble reaches (`wobble_reach`
+    noise widths), do not bow as an arc does (`circular_bow`) and turn nowhere by a mark's corner (`sharp_corner`)."""
+    return stray < wobble_reach(len(pts)) * noise and not circular_bow(pts) and not sharp_corner(pts, noise)
+
+
+CORNER_DEG = 90.0
+"""A stroke turning this much or more between chords `HOOK_REACH` noise widths long (shorter at its ends, down to
+`CORNER_CHORD`) has a mark's corner: a check's or a tick's point, a bracket's or a brace's, however short its arm. A
+hook where a hand lands or lifts curls onto the line, turning less (the pen models' hooks 20-80 degrees where they
+join it; one doubling back is `stroke_geometry.remove_hooks`' or `open_marks.retraced_ends`'). Dollar1's checks drawn
+20-40 px across by a mouse (`bench_device_stress`'s tiny mouse: a short arm of 5-8 px) turn 95-125 degrees."""
+CORNER_CHORD = 4.0
+"""...each chord at least this many noise widths long (half a hook's reach): a slow shaky hand's tremor where it lands
+turns sharply between shorter ones (chords of 2-3 noise widths took 8-16 of the shaky pen's 60 tuning lines)."""
+
+
+def sharp_corner(pts: np.ndarray, noise: float) -> bool:
+    """Whether ``pts`` turn by `CORNER_DEG` or more anywhere, between the chords from `HOOK_REACH` noise widths of
+    path before each point and to as far after it (``noise`` in their units).
+
+    >>> tick = np.vstack([np.column_stack([np.zeros(7), np.arange(7.0)]), np.column_stack([np.arange(1, 25.0),
+    ...                   6 - 0.8 * np.arange(1, 25.0)])])
+    >>> sharp_corner(tick, 1.0), sharp_corner(np.column_stack([np.arange(30.0), np.zeros(30)]), 1.0)
+    (True, False)
+    """
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    reach = HOOK_REACH * noise
+    back = _at_each(pts, along, np.maximum(along - reach, 0.0))
+    ahead = _at_each(pts, along, np.minimum(along + reach, along[-1]))
+    u, v = pts - back, ahead - pts
+    nu, nv = np.hypot(*u.T), np.hypot(*v.T)
+    ok = (nu >= CORNER_CHORD * noise) & (nv >= CORNER_CHORD * noise)
+    if not ok.any():
+        return False
+    cos = (u[ok] * v[ok]).sum(axis=1) / (nu[ok] * nv[ok])
+    return bool((cos <= math.cos(math.radians(CORNER_DEG))).any())
+
+
+def _at_each(pts: np.ndarray, along: np.ndarray, where: np.ndarray) -> np.ndarray:
+    """The points ``where`` along the path of ``pts`` (``along``: the path length at each point)."""
+    return np.column_stack([np.interp(where, along, pts[:, 0]), np.interp(where, along, pts[:, 1])])
 
 
 HOOK_TURN_DEG = 20.0

@@ -171,7 +171,8 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     unit_noise = noise / scale
     unit = (pts - origin) / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
-        rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale)
+        rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale,
+                          (given if given > 0 else noise) / scale)
         result = waves.as_curve(rules, unit)  # a wave's round bends are no zig-zag's teeth
     if result.geometry is None:
         return result
@@ -221,9 +222,11 @@ OPEN_ROUND_MARGIN = 0.2
 short pokes out by about 15 % of the stroke's diagonal)."""
 
 
-def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float) -> Recognition:
-    """``raw`` at unit size; ``diag`` its `stroke_geometry.bbox_diagonal`, ``noise`` in the same units."""
-    found = open_shapes.line(raw, noise, diag)
+def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float,
+              pen: float) -> Recognition:
+    """``raw`` at unit size; ``diag`` its `stroke_geometry.bbox_diagonal`, ``noise`` in the same units (the stroke's
+    measured jitter where worse than the pen's stated ``pen``)."""
+    found = open_shapes.line(raw, noise, diag, pen)
     if found is not None:
         return found
     length = sg.path_length(raw)
