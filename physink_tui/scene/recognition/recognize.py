@@ -183,7 +183,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale)
         result = waves.as_curve(rules, unit)  # a wave's round bends are no zig-zag's teeth
         wavy = result is not rules
-        chain = None if wavy else stairs.chain_reading(result, unit, unit_noise)  # steps judged at their own scale
+        # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
+        # (`sparse_bends`: a device's few events make any stroke straight runs joined at sharp turns)
+        chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise)
     if chain is not None:
         result = chain
     if result.geometry is None:
