@@ -87,6 +87,9 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
    bends at least three times inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below.
+   Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
+   chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
+   however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -130,6 +133,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline
 - `lines.py`: how far a person's line strays by the pen and hand alone (the noise's farthest reach, a hook at an
   end, the ink of a wobble), told from a bow drawn on purpose (a circle explains it) and a mark's short arm
+- `stairs.py`: a chain of sharp corners joined by straight, repeating sides (staircases, square waves, zig-zags),
+  judged at its sides' scale, read as a polyline through its corners
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few

@@ -22,7 +22,16 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import closed_loops, landing, open_shapes, pen_lifts, pen_noise, ranker, waves
+from physink_tui.scene.recognition import (
+    closed_loops,
+    landing,
+    open_shapes,
+    pen_lifts,
+    pen_noise,
+    ranker,
+    stairs,
+    waves,
+)
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
@@ -174,12 +183,18 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale,
                           (given if given > 0 else noise) / scale)
         result = waves.as_curve(rules, unit)  # a wave's round bends are no zig-zag's teeth
+        wavy = result is not rules
+        # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
+        # (`sparse_bends`: a device's few events make any stroke straight runs joined at sharp turns)
+        chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise)
+    if chain is not None:
+        result = chain
     if result.geometry is None:
         return result
-    wavy = result is not rules
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
-    # a wave is not asked of the model (the people it was fitted on drew none), nor a mark straight-armed as drawn
-    if not learned or wavy or open_shapes.straight_armed_mark(result, pts, noise):
+    # a wave is not asked of the model (the people it was fitted on drew none), nor a chain of sharp corners (its
+    # 64 points smooth small steps away), nor a mark straight-armed as drawn
+    if not learned or wavy or chain is not None or open_shapes.straight_armed_mark(result, pts, noise):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
