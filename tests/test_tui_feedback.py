@@ -21,9 +21,8 @@ from physink_tui.tui.drawing_help import DRAWING, vocabulary
 from physink_tui.tui.screens.modals import HelpScreen, PromptModal
 from physink_tui.tui.widgets.bars import StatusBar
 from physink_tui.tui.widgets.message_log import MessageLog, line
-from physink_tui.tui.widgets.scene_view import SceneView
 from physink_tui.tui.widgets.timeline_tree import TimelineTree
-from tests.tui_helpers import SIZE, cell, cells_of, circle_points, drag, draw, screen_is, tui_app, until, until_app
+from tests.tui_helpers import SIZE, cell, cells_of, circle_points, drag, draw, screen_is, tap, tui_app, until, until_app
 
 GUARD = 60.0
 
@@ -59,7 +58,7 @@ def test_each_message_of_the_session_is_in_the_status_line_and_the_narration_log
             (ball,) = drawn.scene.components
             assert any(m.kind == "outcome" for m in drawn.messages)  # what the stroke became, as the session says
             told = len(drawn.messages)
-            await pilot.click(SceneView, offset=cell(app, 0.5, 0.5))  # a tap selects: the session says so
+            await tap(pilot, cell(app, 0.5, 0.5))  # a tap selects: the session says so
             tapped = await until(pilot, lambda v: v.selected == ball and len(v.messages) > told, timeout=GUARD)
             await shown(pilot, tapped)
             assert ball in tapped.messages[-1].text

@@ -172,6 +172,14 @@ async def drag_cells(pilot, cells: Sequence[tuple[int, int]], button: int = 1) -
         await pilot.mouse_up(SceneView, offset=cells[-1])
 
 
+async def tap(pilot, where: tuple[int, int]) -> None:
+    """Press and release on the scene view's cell ``where`` with the session's clock held: a tap on any machine (a
+    stall of the app's loop between the press and the release would otherwise read as the pen held still, a dwell
+    that grabs the body under it)."""
+    with pilot.app.options.clock.held():
+        await pilot.click(SceneView, offset=where)
+
+
 async def draw(pilot, strokes: Sequence[Sequence[tuple[int, int]]],
                done: Callable[[SessionView], bool]) -> SessionView:
     """Drag the mouse through each stroke's cells (`drag_cells`), the session's clock held from the first press to
