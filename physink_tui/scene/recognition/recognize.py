@@ -22,7 +22,17 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import closed_loops, landing, open_shapes, pen_lifts, pen_noise, ranker, waves
+from physink_tui.scene.recognition import (
+    angular_braces,
+    closed_loops,
+    landing,
+    open_shapes,
+    pen_lifts,
+    pen_noise,
+    ranker,
+    round_brackets,
+    waves,
+)
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
@@ -177,8 +187,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return result
     wavy = result is not rules
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
-    # a wave is not asked of the model (the people it was fitted on drew none), nor a mark straight-armed as drawn
-    if not learned or wavy or open_shapes.straight_armed_mark(result, pts, noise):
+    # a wave is not asked of the model (the people it was fitted on drew none), nor a mark straight-armed as drawn,
+    # nor a square bracket whose corners were rounded off, nor a brace drawn as straight runs the rules read as a curve
+    if (not learned or wavy or open_shapes.straight_armed_mark(result, pts, noise)
+            or round_brackets.kept_bracket(result, unit, unit_noise)
+            or angular_braces.kept_brace(result, unit, unit_noise)):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
