@@ -85,6 +85,11 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
    bends at least three times inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below.
+   A square bracket with both corners rounded off (a long straight spine, a straight arm at each end, each joined to
+   it by a bend of about a right angle, half a turn in all) is a polyline with its corners where its sides meet
+   (`round_brackets`); a brace drawn as straight runs between cusps (running along its ends' line on one side of it,
+   its arms parallel to it and off it, its point about halfway sticking out past them) is not a polyline
+   (`angular_braces`); neither, so read, is asked of the ranker below.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -126,6 +131,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
 - `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
   which the open-stroke rules misjudge
 - `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline
+- `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline)
+- `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), read as a brace (a curve)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few

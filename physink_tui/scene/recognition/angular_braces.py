@@ -33,6 +33,10 @@ a zig-zag's teeth more)."""
 ARM_DEG = 25.0
 """Each arm (between 35 % and 80 % of the way from its end to the point) runs within this many degrees of the line's
 direction (a v's or caret's arms slant 30 degrees and more to reach a point half their length out)."""
+ARM_INK = 1.3
+"""... with at most this much ink for its chord: an arm runs on, bent at most where a curl or the point's run joins it
+(a bend of 60 degrees takes 1.15); a zig-zag's teeth between a lead-in and a tail make a layout like a brace's, their
+ink twice their chord and more."""
 PAST_ARMS = 1.3
 """The point stands this many times as far from the line as the arms do, or farther (a bracket's spine has no point)."""
 ARM_OFF = 0.08
@@ -50,7 +54,8 @@ def angular_brace(work: np.ndarray, lobes: list[float]) -> bool:
     """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes``
     its `stroke_features.lobes`) is a curly brace by its layout: on one side of the line joining its ends
     (`ONE_SIDE`) and running along it (`NO_RETURN`), its point about halfway (`POINT_AT`) standing out less than
-    `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run parallel to it (`ARM_DEG`) off it (`ARM_OFF`),
+    `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run on (`ARM_INK`), parallel to it
+    (`ARM_DEG`) and off it (`ARM_OFF`),
     and turning both ways (two lobes or more: its curls the other way from its point)."""
     if len(lobes) < 2 or len(work) < 16:
         return False
@@ -76,7 +81,8 @@ def angular_brace(work: np.ndarray, lobes: list[float]) -> bool:
         return False
     arms = (work[(cum >= 0.35 * at) & (cum <= 0.8 * at)],
             work[(cum >= at + 0.2 * (length - at)) & (cum <= at + 0.65 * (length - at))])
-    if any(len(arm) < 3 or not _arm_heading_ok(arm, unit) for arm in arms):
+    if any(len(arm) < 3 or not _arm_heading_ok(arm, unit)
+           or sg.path_length(arm) > ARM_INK * float(np.hypot(*(arm[-1] - arm[0]))) for arm in arms):
         return False
     stand = [float(np.median(sign * (arm[:, 0] - start[0]) * unit[1] - sign * (arm[:, 1] - start[1]) * unit[0]))
              for arm in arms]
