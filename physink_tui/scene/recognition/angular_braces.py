@@ -57,7 +57,12 @@ def angular_brace(work: np.ndarray, lobes: list[float]) -> bool:
     `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run on (`ARM_INK`), parallel to it
     (`ARM_DEG`) and off it (`ARM_OFF`),
     and turning both ways (two lobes or more: its curls the other way from its point)."""
-    if len(lobes) < 2 or len(work) < 16:
+    return len(lobes) >= 2 and laid_out(work)
+
+
+def laid_out(work: np.ndarray) -> bool:
+    """Whether ``work`` is laid out as a brace (`angular_brace`, but for its turning both ways)."""
+    if len(work) < 16:
         return False
     start, end = work[0], work[-1]
     chord = float(np.hypot(*(end - start)))
@@ -101,4 +106,4 @@ def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     if found.kind != "curve":
         return False
     work = sg.resample(sg.remove_hooks(sg.smooth(sg.resample(unit, JUDGED_POINTS))), JUDGED_POINTS)
-    return angular_brace(work, sf.lobes(work, noise=noise))
+    return laid_out(work) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more

@@ -12,7 +12,9 @@ before its stem; a brace turns both ways; a U's round bottom is one bend of a ha
 
 from __future__ import annotations
 
+import collections
 import math
+import statistics
 
 import numpy as np
 
@@ -43,24 +45,40 @@ MARGIN = 0.05
 diagonal outside the stroke's bounds (arms nearly parallel to the spine); then at the bend's middle."""
 
 
-def _longest_flat(heading: np.ndarray, lo: int, hi: int) -> tuple[int, int]:
-    """The longest run ``[a, b)`` of segments within ``[lo, hi)`` whose headings lie within `FLAT_DEG` of each other."""
-    best, a = (lo, lo), lo
-    for b in range(lo + 1, hi + 1):
-        while np.ptp(heading[a:b]) > FLAT_DEG:
+def _longest_flat(heading: list[float]) -> tuple[int, int]:
+    """The longest run ``[a, b)`` of segments whose headings lie within `FLAT_DEG` of each other (one pass, the
+    window's least and greatest heading kept in two monotone queues)."""
+    best, a = (0, 0), 0
+    low: collections.deque[int] = collections.deque()
+    high: collections.deque[int] = collections.deque()
+    for b, h in enumerate(heading):
+        while low and heading[low[-1]] >= h:
+            low.pop()
+        while high and heading[high[-1]] <= h:
+            high.pop()
+        low.append(b)
+        high.append(b)
+        while heading[high[0]] - heading[low[0]] > FLAT_DEG:
             a += 1
-        if b - a > best[1] - best[0]:
-            best = (a, b)
+            if low[0] < a:
+                low.popleft()
+            if high[0] < a:
+                high.popleft()
+        if b + 1 - a > best[1] - best[0]:
+            best = (a, b + 1)
     return best
 
 
-def _flat_end(heading: np.ndarray, lo: int, hi: int, from_start: bool) -> int:
-    """How many segments from the start (or end) of ``[lo, hi)`` keep within `FLAT_DEG` of each other."""
-    run = heading[lo:hi] if from_start else heading[lo:hi][::-1]
-    k = 1
-    while k < len(run) and np.ptp(run[:k + 1]) <= FLAT_DEG:
-        k += 1
-    return k if len(run) else 0
+def _flat_end(run: list[float]) -> int:
+    """How many of ``run``'s first segments keep within `FLAT_DEG` of each other."""
+    if not run:
+        return 0
+    low = high = run[0]
+    for k, h in enumerate(run):
+        low, high = min(low, h), max(high, h)
+        if high - low > FLAT_DEG:
+            return k
+    return len(run)
 
 
 def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
@@ -75,8 +93,21 @@ def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndar
 def _side(pts: np.ndarray, drawn: np.ndarray, lo: int, hi: int) -> tuple[np.ndarray, np.ndarray]:
     """A straight run's line, from its segments ``[lo, hi)``: through their points' centroid along their median
     heading (``drawn``: each segment's heading, radians; a bend's few segments at its ends do not tilt it)."""
-    angle = float(np.median(drawn[lo:hi]))
+    angle = statistics.median(drawn[lo:hi].tolist())
     return pts[lo:hi + 1].mean(axis=0), np.array([math.cos(angle), math.sin(angle)])
+
+
+def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """The stroke resampled (`POINTS`) and smoothed, each segment's heading as drawn (radians) and from the first,
+    turned the way the stroke turns (degrees), when its heading turns by half a turn (`HALF_TURN`); else None."""
+    pts = sg.smooth(sg.resample(work, POINTS))
+    d = np.diff(pts, axis=0)
+    drawn = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    heading = np.degrees(drawn - drawn[0])
+    turn = float(heading[-1])
+    if not HALF_TURN[0] <= abs(turn) <= HALF_TURN[1]:
+        return None
+    return pts, drawn, heading * math.copysign(1.0, turn)
 
 
 def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, float], ...] | None:
@@ -88,24 +119,21 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
     about a right angle (`BEND_DEG`), both the same way, half a turn in all (`HALF_TURN`)."""
     if len(lobes) != 1 or len(work) < 8:
         return None
-    pts = sg.smooth(sg.resample(work, POINTS))
-    d = np.diff(pts, axis=0)
-    drawn = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))  # radians, as drawn
-    heading = np.degrees(drawn - drawn[0])
-    turn = float(heading[-1])
-    if not HALF_TURN[0] <= abs(turn) <= HALF_TURN[1]:
+    found = _half_turn(work)
+    if found is None:
         return None
-    heading = heading * math.copysign(1.0, turn)
+    pts, drawn, heading = found
     n = len(heading)
-    a, b = _longest_flat(heading, 0, n)
+    listed = heading.tolist()
+    a, b = _longest_flat(listed)
     if (b - a) < SPINE_SHARE * n or a == 0 or b == n:
         return None
-    first = _flat_end(heading, 0, a, from_start=True)
-    last = _flat_end(heading, b, n, from_start=False)
+    first = _flat_end(listed[:a])
+    last = _flat_end(listed[b:][::-1])
     if min(first / a, last / (n - b)) < ARM_FLAT or min(first, last) < ARM_SHARE * n:
         return None
-    spine_heading = float(np.median(heading[a:b]))
-    bends = (spine_heading - float(np.median(heading[:first])), float(np.median(heading[n - last:])) - spine_heading)
+    spine_heading = statistics.median(listed[a:b])
+    bends = (spine_heading - statistics.median(listed[:first]), statistics.median(listed[n - last:]) - spine_heading)
     if not all(BEND_DEG[0] <= t <= BEND_DEG[1] for t in bends):
         return None
     if sg.chord_deviation(pts[a:b + 1]) >= FLAT_DEG / 180.0:
@@ -122,6 +150,9 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
     return tuple((float(p[0]), float(p[1])) for p in (pts[0], corners[0], corners[1], pts[-1]))
 
 
+VERTEX_BEND = (30.0, 150.0)
+"""`kept_bracket` looks only at a polyline whose two inner vertices turn the same way, each by this much (degrees;
+`BEND_DEG` with room for where a fit puts a rounded corner's vertex)."""
 JUDGED_POINTS = 128
 """`kept_bracket` judges the stroke resampled to this many points, smoothed, its end hooks cut (as `recognize` judges
 an open stroke)."""
@@ -134,5 +165,11 @@ def kept_bracket(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     curve's bends."""
     if found.kind != "polyline" or not isinstance(found.geometry, Polyline) or len(found.geometry.points) != 4:
         return False
+    v = np.diff(np.asarray(found.geometry.points, dtype=float), axis=0)
+    turns = np.degrees(np.arctan2(v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0], (v[:-1] * v[1:]).sum(axis=1)))
+    if not (turns[0] * turns[1] > 0 and all(VERTEX_BEND[0] <= abs(t) <= VERTEX_BEND[1] for t in turns)):
+        return False  # checked first, on the polyline's own vertices: no bracket's two bends (an N, a zig-zag)
     work = sg.resample(sg.remove_hooks(sg.smooth(sg.resample(unit, JUDGED_POINTS))), JUDGED_POINTS)
+    if _half_turn(work) is None:
+        return False  # checked first: the lobes cost more
     return rounded_bracket(work, sf.lobes(work, noise=noise)) is not None
