@@ -90,6 +90,11 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
    Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
+   A square bracket with both corners rounded off (a long straight spine, a straight arm at each end, each joined to
+   it by a bend of about a right angle, half a turn in all) is a polyline with its corners where its sides meet
+   (`round_brackets`); a brace drawn as straight runs between cusps (running along its ends' line on one side of it,
+   its arms parallel to it and off it, its point about halfway sticking out past them) is not a polyline
+   (`angular_braces`); neither, so read, is asked of the ranker below.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -135,6 +140,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
   end, the ink of a wobble), told from a bow drawn on purpose (a circle explains it) and a mark's short arm
 - `stairs.py`: a chain of sharp corners joined by straight, repeating sides (staircases, square waves, zig-zags),
   judged at its sides' scale, read as a polyline through its corners
+- `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline)
+- `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), read as a brace (a curve)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few

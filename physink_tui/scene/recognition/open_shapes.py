@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import bracket_marks, lines, open_marks
+from physink_tui.scene.recognition import angular_braces, bracket_marks, lines, open_marks, round_brackets
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -158,16 +158,20 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, lobes)
             and not bracket_marks.looped_point(th, corners, lobes)
             and not bracket_marks.brace_point(work, corners, lobes)
+            and not angular_braces.angular_brace(work, lobes)
             and (all(straight_runs) or _bent_polyline(th, corners, lobes, bows)
                  or _tick_into_bend(work, corners, straight_runs, roundness, lobes))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if (len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, th, corners, straight_runs, roundness)
-            and not _brace_tip(work, corners)):
+            and not _brace_tip(work, corners) and not angular_braces.angular_brace(work, lobes)):
         # a zig-zag's sharp teeth between a loose lead-in and a curled tail (`open_marks.sawtooth`)
         return Recognition("polyline", 0.8, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     bracket = bracket_marks.rounded_bracket_corners(work, th, corners, lobes)
     if bracket is not None:  # one corner rounded off: a square bracket still
         return Recognition("polyline", 0.75, Polyline(tuple(_pt(work[c]) for c in bracket)), (("curve", 0.4),))
+    rounded = round_brackets.rounded_bracket(work, lobes)
+    if rounded is not None:  # both corners rounded off: a square bracket still
+        return Recognition("polyline", 0.75, Polyline(rounded), (("curve", 0.4),))
     point = bracket_marks.rounded_point(work, th, lobes) if len(corners) <= 3 else None
     if point is not None:  # a tick, check or v swung round its point
         return Recognition("polyline", 0.7, Polyline(tuple(_pt(work[c]) for c in point)), (("curve", 0.4),))

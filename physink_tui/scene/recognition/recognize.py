@@ -23,12 +23,14 @@ from dataclasses import replace
 import numpy as np
 
 from physink_tui.scene.recognition import (
+    angular_braces,
     closed_loops,
     landing,
     open_shapes,
     pen_lifts,
     pen_noise,
     ranker,
+    round_brackets,
     stairs,
     waves,
 )
@@ -193,8 +195,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return result
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
     # a wave is not asked of the model (the people it was fitted on drew none), nor a chain of sharp corners (its
-    # 64 points smooth small steps away), nor a mark straight-armed as drawn
-    if not learned or wavy or chain is not None or open_shapes.straight_armed_mark(result, pts, noise):
+    # 64 points smooth small steps away), nor a mark straight-armed as drawn, nor a square bracket whose corners were
+    # rounded off, nor a brace drawn as straight runs the rules read as a curve
+    if (not learned or wavy or chain is not None or open_shapes.straight_armed_mark(result, pts, noise)
+            or round_brackets.kept_bracket(result, unit, unit_noise)
+            or angular_braces.kept_brace(result, unit, unit_noise)):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds

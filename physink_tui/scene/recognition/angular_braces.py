@@ -1,0 +1,109 @@
+"""A curly brace drawn as straight runs between cusps (a mouse's, a hurried hand's) read as a brace, a curve; no I/O.
+
+Issue 25: "curly braces ... as polylines". Drawn with a mouse, a brace is straight runs and cusps: a short run for each
+end's curl, a long run for each arm, two short runs out to its point and back. The corner finder finds every cusp and
+every run is straight, so the open-stroke rules read a polyline unless the point is a short excursion
+(`open_shapes.BRACE_TIP`) or sticks out little (`bracket_marks.BRACE_DEPTH`); a mouse's point often sticks out as far
+as the curls and is drawn with long runs. What a reader sees is the brace's layout against the line joining its ends:
+the stroke runs along that line on one side of it, its arms parallel to it, standing off it by the curls, and its
+point, about halfway, sticks out past the arms. A v, a caret or a check has arms slanting from the line to the point; a
+square bracket's spine runs parallel but no point sticks out of it; a zig-zag crosses the line or runs back along it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.primitives import Recognition
+
+POINT_AT = (0.3, 0.7)
+"""The point (the stroke's farthest from the line joining its ends) lies this far along the path (shares of it)."""
+MAX_DEPTH = 0.75
+"""It sticks out from that line by less than this share of the line (a brace is long and thin: its curls and point
+stand out 0.1-0.6 of its length)."""
+ONE_SIDE = 0.05
+"""The stroke strays to the other side of the line by less than this share of it (its curls and point on one side)."""
+NO_RETURN = 0.15
+"""... and runs back along it by less than this share of it (a mouse's cusps run back a little; an arrow's barbs,
+a zig-zag's teeth more)."""
+ARM_DEG = 25.0
+"""Each arm (between 35 % and 80 % of the way from its end to the point) runs within this many degrees of the line's
+direction (a v's or caret's arms slant 30 degrees and more to reach a point half their length out)."""
+ARM_INK = 1.3
+"""... with at most this much ink for its chord: an arm runs on, bent at most where a curl or the point's run joins it
+(a bend of 60 degrees takes 1.15); a zig-zag's teeth between a lead-in and a tail make a layout like a brace's, their
+ink twice their chord and more."""
+PAST_ARMS = 1.3
+"""The point stands this many times as far from the line as the arms do, or farther (a bracket's spine has no point)."""
+ARM_OFF = 0.08
+"""The arms stand off the line by at least this share of its length: the curls carry them off it."""
+
+
+def _arm_heading_ok(piece: np.ndarray, direction: np.ndarray) -> bool:
+    """Whether ``piece`` (a run of the stroke) heads within `ARM_DEG` of ``direction`` (a unit vector)."""
+    d = piece[-1] - piece[0]
+    norm = float(np.hypot(*d))
+    return norm > 0 and float(d @ direction) >= math.cos(math.radians(ARM_DEG)) * norm
+
+
+def angular_brace(work: np.ndarray, lobes: list[float]) -> bool:
+    """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes``
+    its `stroke_features.lobes`) is a curly brace by its layout: on one side of the line joining its ends
+    (`ONE_SIDE`) and running along it (`NO_RETURN`), its point about halfway (`POINT_AT`) standing out less than
+    `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run on (`ARM_INK`), parallel to it
+    (`ARM_DEG`) and off it (`ARM_OFF`),
+    and turning both ways (two lobes or more: its curls the other way from its point)."""
+    return len(lobes) >= 2 and laid_out(work)
+
+
+def laid_out(work: np.ndarray) -> bool:
+    """Whether ``work`` is laid out as a brace (`angular_brace`, but for its turning both ways)."""
+    if len(work) < 16:
+        return False
+    start, end = work[0], work[-1]
+    chord = float(np.hypot(*(end - start)))
+    if chord == 0.0:
+        return False
+    unit = (end - start) / chord
+    rel = work - start
+    across = rel[:, 0] * unit[1] - rel[:, 1] * unit[0]
+    k = int(np.argmax(np.abs(across)))
+    depth = float(across[k])
+    sign = math.copysign(1.0, depth)
+    if abs(depth) >= MAX_DEPTH * chord or float(np.max(-sign * across)) > ONE_SIDE * chord:
+        return False
+    along = rel @ unit
+    if float(np.max(np.maximum.accumulate(along) - along)) >= NO_RETURN * chord:
+        return False
+    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    length = float(cum[-1])
+    at = float(cum[k])
+    if not POINT_AT[0] * length <= at <= POINT_AT[1] * length:
+        return False
+    arms = (work[(cum >= 0.35 * at) & (cum <= 0.8 * at)],
+            work[(cum >= at + 0.2 * (length - at)) & (cum <= at + 0.65 * (length - at))])
+    if any(len(arm) < 3 or not _arm_heading_ok(arm, unit)
+           or sg.path_length(arm) > ARM_INK * float(np.hypot(*(arm[-1] - arm[0]))) for arm in arms):
+        return False
+    stand = [float(np.median(sign * (arm[:, 0] - start[0]) * unit[1] - sign * (arm[:, 1] - start[1]) * unit[0]))
+             for arm in arms]
+    return min(stand) >= ARM_OFF * chord and abs(depth) >= PAST_ARMS * max(stand)
+
+
+JUDGED_POINTS = 128
+"""`kept_brace` judges the stroke resampled to this many points, smoothed, its end hooks cut (as `recognize` judges an
+open stroke)."""
+
+
+def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
+    """Whether the rules read a curve from a stroke (``unit``: its points at unit size, ``noise`` the pen's in those
+    units) that is an `angular_brace`: not asked of the learned ranker (`recognize`), whose features see a mouse's
+    brace as straight runs and sharp corners, a polyline's."""
+    if found.kind != "curve":
+        return False
+    work = sg.resample(sg.remove_hooks(sg.smooth(sg.resample(unit, JUDGED_POINTS))), JUDGED_POINTS)
+    return laid_out(work) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more

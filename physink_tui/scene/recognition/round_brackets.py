@@ -1,0 +1,175 @@
+"""A square bracket whose corners a hand rounded off, both of them, read as the bracket (three straight sides); no I/O.
+
+Issue 25: "square brackets as curves". A hand in a hurry, or a mouse, swings round a bracket's corners instead of
+stopping at them; with both corners rounded the corner finder finds none (or finds them too round), and the open-stroke
+rules read a curve (`bracket_marks.rounded_bracket_corners` covers one corner rounded and one sharp). What a reader
+sees is what makes a bracket: a long straight spine, a straight arm at each end, each joined to the spine by a bend of
+about a right angle, the same way round (a half turn in all). Judged on the stroke's headings: the spine is its
+longest run of nearly one heading (`FLAT_DEG`), the arms its runs of nearly one heading at each end. An arc or a
+parenthesis turns evenly (no long run of one heading); a question mark's hook turns by far more than a right angle
+before its stem; a brace turns both ways; a U's round bottom is one bend of a half turn, not two of a right angle.
+"""
+
+from __future__ import annotations
+
+import collections
+import math
+import statistics
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.primitives import Polyline, Recognition
+
+POINTS = 64
+"""The stroke is judged resampled to this many points, lightly smoothed (`stroke_geometry.smooth`)."""
+HALF_TURN = (145.0, 215.0)
+"""A bracket's heading turns by half a turn from its first arm to its last (degrees; as `bracket_marks.HALF_TURN_SLACK`:
+a hand slants its arms)."""
+FLAT_DEG = 30.0
+"""A straight run's headings all lie within this many degrees of each other (a side's wobble; an arc of 30 degrees)."""
+SPINE_SHARE = 0.3
+"""The spine, the stroke's longest straight run, holds at least this share of the path (a semicircle's longest run of
+`FLAT_DEG` holds a sixth of it; a bracket's spine, its arms up to half of it, its corners rounded, over 0.4)."""
+BEND_DEG = (50.0, 130.0)
+"""Each bend, from an arm's heading to the spine's, turns by about a right angle (a question mark's hook turns 150
+degrees and more before its stem)."""
+ARM_FLAT = 0.4
+"""Each arm keeps a straight run of at least this share of the arm (the run, plus the bend up to the spine): a corner
+rounded over the whole arm makes a parenthesis, not a bracket."""
+ARM_SHARE = 0.04
+"""... and that run is at least this share of the path (a hook where the pen landed is no arm)."""
+MARGIN = 0.05
+"""A corner is put where the arm's and the spine's lines meet, unless that lies farther than this share of the
+diagonal outside the stroke's bounds (arms nearly parallel to the spine); then at the bend's middle."""
+
+
+def _longest_flat(heading: list[float]) -> tuple[int, int]:
+    """The longest run ``[a, b)`` of segments whose headings lie within `FLAT_DEG` of each other (one pass, the
+    window's least and greatest heading kept in two monotone queues)."""
+    best, a = (0, 0), 0
+    low: collections.deque[int] = collections.deque()
+    high: collections.deque[int] = collections.deque()
+    for b, h in enumerate(heading):
+        while low and heading[low[-1]] >= h:
+            low.pop()
+        while high and heading[high[-1]] <= h:
+            high.pop()
+        low.append(b)
+        high.append(b)
+        while heading[high[0]] - heading[low[0]] > FLAT_DEG:
+            a += 1
+            if low[0] < a:
+                low.popleft()
+            if high[0] < a:
+                high.popleft()
+        if b + 1 - a > best[1] - best[0]:
+            best = (a, b + 1)
+    return best
+
+
+def _flat_end(run: list[float]) -> int:
+    """How many of ``run``'s first segments keep within `FLAT_DEG` of each other."""
+    if not run:
+        return 0
+    low = high = run[0]
+    for k, h in enumerate(run):
+        low, high = min(low, h), max(high, h)
+        if high - low > FLAT_DEG:
+            return k
+    return len(run)
+
+
+def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
+    """Where the line through ``p`` along ``u`` meets the line through ``q`` along ``v`` (None when parallel)."""
+    cross = float(u[0] * v[1] - u[1] * v[0])
+    if abs(cross) < 1e-9:
+        return None
+    w = q - p
+    return p + u * float(w[0] * v[1] - w[1] * v[0]) / cross
+
+
+def _side(pts: np.ndarray, drawn: np.ndarray, lo: int, hi: int) -> tuple[np.ndarray, np.ndarray]:
+    """A straight run's line, from its segments ``[lo, hi)``: through their points' centroid along their median
+    heading (``drawn``: each segment's heading, radians; a bend's few segments at its ends do not tilt it)."""
+    angle = statistics.median(drawn[lo:hi].tolist())
+    return pts[lo:hi + 1].mean(axis=0), np.array([math.cos(angle), math.sin(angle)])
+
+
+def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """The stroke resampled (`POINTS`) and smoothed, each segment's heading as drawn (radians) and from the first,
+    turned the way the stroke turns (degrees), when its heading turns by half a turn (`HALF_TURN`); else None."""
+    pts = sg.smooth(sg.resample(work, POINTS))
+    d = np.diff(pts, axis=0)
+    drawn = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    heading = np.degrees(drawn - drawn[0])
+    turn = float(heading[-1])
+    if not HALF_TURN[0] <= abs(turn) <= HALF_TURN[1]:
+        return None
+    return pts, drawn, heading * math.copysign(1.0, turn)
+
+
+def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, float], ...] | None:
+    """The four vertices (start, corner, corner, end) of a square bracket whose corners are rounded off, or None.
+
+    ``work``: the open stroke (hooks and corner loops removed, as `open_shapes.classify_open` judges it); ``lobes``:
+    its `stroke_features.lobes` (a bracket turns one way: one lobe). The spine is the longest straight run
+    (`SPINE_SHARE`); an arm is the straight run at each end (`ARM_FLAT`, `ARM_SHARE`); each bend between them turns
+    about a right angle (`BEND_DEG`), both the same way, half a turn in all (`HALF_TURN`)."""
+    if len(lobes) != 1 or len(work) < 8:
+        return None
+    found = _half_turn(work)
+    if found is None:
+        return None
+    pts, drawn, heading = found
+    n = len(heading)
+    listed = heading.tolist()
+    a, b = _longest_flat(listed)
+    if (b - a) < SPINE_SHARE * n or a == 0 or b == n:
+        return None
+    first = _flat_end(listed[:a])
+    last = _flat_end(listed[b:][::-1])
+    if min(first / a, last / (n - b)) < ARM_FLAT or min(first, last) < ARM_SHARE * n:
+        return None
+    spine_heading = statistics.median(listed[a:b])
+    bends = (spine_heading - statistics.median(listed[:first]), statistics.median(listed[n - last:]) - spine_heading)
+    if not all(BEND_DEG[0] <= t <= BEND_DEG[1] for t in bends):
+        return None
+    if sg.chord_deviation(pts[a:b + 1]) >= FLAT_DEG / 180.0:
+        return None
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    margin = MARGIN * sg.bbox_diagonal(pts)
+    spine = _side(pts, drawn, a, b)
+    corners = []
+    for (lo_seg, hi_seg), bend_mid in (((0, first), (first + a) // 2), ((n - last, n), (b + n - last) // 2)):
+        at = _meet(*_side(pts, drawn, lo_seg, hi_seg), *spine)
+        if at is None or (at < lo - margin).any() or (at > hi + margin).any():
+            at = pts[bend_mid]
+        corners.append(at)
+    return tuple((float(p[0]), float(p[1])) for p in (pts[0], corners[0], corners[1], pts[-1]))
+
+
+VERTEX_BEND = (30.0, 150.0)
+"""`kept_bracket` looks only at a polyline whose two inner vertices turn the same way, each by this much (degrees;
+`BEND_DEG` with room for where a fit puts a rounded corner's vertex)."""
+JUDGED_POINTS = 128
+"""`kept_bracket` judges the stroke resampled to this many points, smoothed, its end hooks cut (as `recognize` judges
+an open stroke)."""
+
+
+def kept_bracket(found: Recognition, unit: np.ndarray, noise: float) -> bool:
+    """Whether the rules read a polyline of four vertices from a stroke (``unit``: its points at unit size, ``noise``
+    the pen's in those units) that is a `rounded_bracket`: not asked of the learned ranker (`recognize`), which was
+    fitted on people whose round-cornered strokes were mostly curves and takes a bracket's rounded corners for a
+    curve's bends."""
+    if found.kind != "polyline" or not isinstance(found.geometry, Polyline) or len(found.geometry.points) != 4:
+        return False
+    v = np.diff(np.asarray(found.geometry.points, dtype=float), axis=0)
+    turns = np.degrees(np.arctan2(v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0], (v[:-1] * v[1:]).sum(axis=1)))
+    if not (turns[0] * turns[1] > 0 and all(VERTEX_BEND[0] <= abs(t) <= VERTEX_BEND[1] for t in turns)):
+        return False  # checked first, on the polyline's own vertices: no bracket's two bends (an N, a zig-zag)
+    work = sg.resample(sg.remove_hooks(sg.smooth(sg.resample(unit, JUDGED_POINTS))), JUDGED_POINTS)
+    if _half_turn(work) is None:
+        return False  # checked first: the lobes cost more
+    return rounded_bracket(work, sf.lobes(work, noise=noise)) is not None
