@@ -2,7 +2,8 @@
 as continuous floats) read with the recogniser's default noise, beside the same strokes as drawn in pixels
 (transformed strokes, not people).
 
-Usage: .venv/bin/python benchmarks/bench_units.py SET [SET ...] [--every K] [--only NAME,...] [--noise default|stated]
+Usage: .venv/bin/python benchmarks/bench_units.py SET [SET ...] [--every K] [--only NAME,...]
+                                                  [--noise default|stated|auto] [--pens tuning|held-back]
 
 Reads the sets as `bench_generalisation` does (`scored_rows`: the held-back groups stay out) and keeps one stroke in
 ``K`` (by a hash of its file and label, as `bench_device_stress` keeps them). Each transform (`TRANSFORMS`) stores
@@ -13,6 +14,10 @@ stay in seconds. ``--noise default`` reads each with `recognize_stroke`'s defaul
 say gets; `physink recognize` without ``--noise``); ``--noise stated`` with the noise stated in the stroke's units
 (one pixel scaled, or the lattice's quantum where it is coarser): what a caller who knows the device gets. Prints
 Markdown: % read right per set and transform, and how many readings differ in kind from the stroke as drawn.
+``auto`` reads with ``noise=None`` (`units.stroke_noise`: judged from the stroke). ``--pens`` reads instead the
+closed shapes of `bench_closed_shapes` drawn by the pen models of `tests/penmodels` (careful, hurried, hurried through
+a coarse device; continuous floats in canvas pixels) on its tuning (0-29) or held-back (1000-1029) seeds, stored as
+`PEN_STORES` keep them, against their reading in pixels with the pen's stated noise (1 px, as a session gives it).
 """
 
 from __future__ import annotations
@@ -74,6 +79,46 @@ TRANSFORMS: dict[str, Callable[[np.ndarray, np.random.Generator], Stored]] = {
 """How a stroke drawn in whole pixels is stored in other units (see the module docstring)."""
 
 
+PEN_STORES: dict[str, Callable[[np.ndarray], Stored]] = {
+    "pixels, whole": lambda pts: (np.round(pts), 1.0),
+    "canvas fractions (0..1 of 1600 px), floats": lambda pts: (pts / 1600, 1 / 1600),
+    "canvas fractions to 4 decimals": lambda pts: (np.round(pts / 1600, 4), 1 / 1600),
+    "millimetres, floats": lambda pts: (pts * MM_PER_PIXEL, MM_PER_PIXEL),
+    "tablet x20 integers": lambda pts: (np.round(pts * 20), 20.0),
+}
+"""How a pen model's stroke (continuous canvas pixels) is stored in other units, with one pixel's noise in them."""
+
+
+def pen_models(seeds: range, how: str) -> None:
+    """Print, per pen and store, how many of the pen models' closed shapes read as in pixels and are right."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+    from bench_closed_shapes import FAMILIES, PENS, class_right, shape
+
+    same: Counter[tuple[str, str]] = Counter()
+    right: Counter[tuple[str, str]] = Counter()
+    count: Counter[str] = Counter()
+    for family in FAMILIES:
+        for pen, draw in PENS.items():
+            for seed in seeds:
+                drawn = np.array(draw(shape(family, seed), seed))
+                pts, times = drawn[:, :2], drawn[:, 2].tolist()
+                in_pixels = recognize_stroke(pts.tolist(), times, noise=1.0).kind
+                count[pen] += 1
+                right[(pen, "pixels, as drawn")] += class_right(family, in_pixels)
+                for name, store in PEN_STORES.items():
+                    stored, stated = store(pts)
+                    noise = {"stated": stated, "auto": None}.get(how, 1.0)
+                    kind = recognize_stroke(stored.tolist(), times, noise=noise).kind
+                    same[(pen, name)] += kind == in_pixels
+                    right[(pen, name)] += class_right(family, kind)
+    print(f"## Pen models' closed shapes in other units (noise: {how}; seeds {seeds.start}-{seeds.stop - 1})\n")
+    print("| store | " + " | ".join(f"{p} ({count[p]}): right / as in pixels" for p in PENS) + " |")
+    print("|---|" + "---:|" * len(PENS))
+    print("| pixels, as drawn (noise 1) | " + " | ".join(f"{right[(p, 'pixels, as drawn')]} / -" for p in PENS) + " |")
+    for name in PEN_STORES:
+        print(f"| {name} | " + " | ".join(f"{right[(p, name)]} / {same[(p, name)]}" for p in PENS) + " |")
+
+
 def rows(paths: list[Path], every: int) -> list[Row]:
     kept, _ = scored_rows(read_sets(paths, "bench_units"))
     return [r for r in kept if not is_held_back_new(source_of(r, "person"))
@@ -95,11 +140,15 @@ def read(row: Row, name: str, how: str) -> str | None:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("sets", type=Path, nargs="+", help=".jsonl files or set folders (never the held-back groups')")
+    ap.add_argument("sets", type=Path, nargs="*", help=".jsonl files or set folders (never the held-back groups')")
     ap.add_argument("--every", type=int, default=1, help="one stroke in K (by a hash of its file and label)")
     ap.add_argument("--only", default="", help="comma-separated transform names (default: all)")
     ap.add_argument("--noise", choices=("default", "stated", "auto"), default="default")
+    ap.add_argument("--pens", choices=("tuning", "held-back"), help="read the pen models' closed shapes instead")
     args = ap.parse_args()
+    if args.pens:
+        pen_models(range(0, 30) if args.pens == "tuning" else range(1000, 1030), args.noise)
+        return
     names = [n.strip() for n in args.only.split(",") if n.strip()] or list(TRANSFORMS)
     unknown = [n for n in names if n not in TRANSFORMS]
     if unknown:

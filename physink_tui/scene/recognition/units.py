@@ -24,10 +24,6 @@ as the design sources' typical one (their pixel strokes are 100-310 px across, 5
 FINE_LATTICE = 4.0
 """Coordinates on a lattice finer than this share of the noise their jitter shows (a tablet's raw units, floats
 rounded to many decimals) are judged as continuous: the quantum is not the pen's noise."""
-MIN_QUANTA = 3
-"""A lattice is found only where the stroke spans at least this many of its quanta."""
-
-
 def lattice(pts: np.ndarray, diag: float) -> float:
     """The quantum that every coordinate of ``pts`` is a whole multiple of (from any origin, each axis alike), in the
     points' units: 1 for whole pixels, 0.01 for fractions rounded to two decimals; 0 where there is none (continuous
@@ -59,7 +55,7 @@ def lattice(pts: np.ndarray, diag: float) -> float:
             quantum = float(np.dot(multiple, steps) / np.dot(multiple, multiple))  # least squares over every step
             decimal = float(f"{quantum:.6g}")  # stored numbers are decimals: 1 px in float32, 0.02 of a pixel
             quantum = decimal if abs(decimal - quantum) <= 1e-6 * quantum else quantum
-            return quantum if diag >= MIN_QUANTA * quantum else 0.0
+            return quantum
         quantum = float(off[wrong].min())
     return 0.0
 
