@@ -42,11 +42,13 @@ def last_attempt(points: Sequence[Sequence[float]], times: Sequence[float] | Non
     if times is None or len(times) != len(points) or len(points) < 4:
         return None
     try:
-        pts = np.asarray([p[:2] for p in points], dtype=float)
         at = np.asarray(times, dtype=float)
+        if at.ndim != 1 or not np.isfinite(at).all() or not (np.diff(at) >= LIFT_PAUSE).any():
+            return None  # no pause long enough for a lift: the common stroke, told without reading its points
+        pts = np.asarray([p[:2] for p in points], dtype=float)
     except (TypeError, ValueError, IndexError):
         return None  # the recogniser says what is wrong with such points
-    if pts.ndim != 2 or pts.shape[1] != 2 or not (np.isfinite(pts).all() and np.isfinite(at).all()):
+    if pts.ndim != 2 or pts.shape[1] != 2 or not np.isfinite(pts).all():
         return None
     steps = np.hypot(*np.diff(pts, axis=0).T)
     moving = steps[steps > 0]
