@@ -9,12 +9,13 @@ Reads the sets as `bench_generalisation` does (`scored_rows`: the held-back grou
 ``K`` (by a hash of its file and label, as `bench_device_stress` keeps them). Each transform (`TRANSFORMS`) stores
 the stroke as a device or a recorder might: scaled by 0.002 to 50 as floats; the pixel's true position within it
 (``dither``: uniform over the pixel, what rounding to whole pixels hid) as continuous millimetres; as fractions of a
-1000-pixel screen rounded to 1/100 or to 4 decimals; as the integers of a tablet 20 times finer than pixels. Times
-stay in seconds. ``--noise default`` reads each with `recognize_stroke`'s default noise (what a caller who does not
-say gets; `physink recognize` without ``--noise``); ``--noise stated`` with the noise stated in the stroke's units
-(one pixel scaled, or the lattice's quantum where it is coarser): what a caller who knows the device gets. Prints
-Markdown: % read right per set and transform, and how many readings differ in kind from the stroke as drawn.
-``auto`` reads with ``noise=None`` (`units.stroke_noise`: judged from the stroke). ``--pens`` reads instead the
+1000-pixel screen rounded to 1/100 or to 4 decimals; as the integers of a tablet 20 (or 5) times finer than pixels.
+Times stay in seconds. ``--noise default`` reads each with `recognize_stroke`'s default noise (a pixel, whatever the
+units: what the library gives a caller who does not say, and what `physink recognize` gave before ``--noise auto``);
+``--noise stated`` with the noise stated in the stroke's units (one pixel scaled, or the lattice's quantum where it is
+coarser): what a caller who knows the device gets; ``--noise auto`` with ``noise=None`` (`units.stroke_noise`: judged
+from the stroke; what `physink recognize` does without ``--noise``). Prints Markdown: % read right per set and
+transform, and how many readings differ in kind from the stroke in pixels read alike. ``--pens`` reads instead the
 closed shapes of `bench_closed_shapes` drawn by the pen models of `tests/penmodels` (careful, hurried, hurried through
 a coarse device; continuous floats in canvas pixels) on its tuning (0-29) or held-back (1000-1029) seeds, stored as
 `PEN_STORES` keep them, against their reading in pixels with the pen's stated noise (1 px, as a session gives it).
@@ -75,6 +76,7 @@ TRANSFORMS: dict[str, Callable[[np.ndarray, np.random.Generator], Stored]] = {
     "screen 0..1 to 1/100": _rounded(1 / SCREEN, 0.01, dither=True),
     "screen 0..1 to 4 decimals": _rounded(1 / SCREEN, 1e-4, dither=True),
     "tablet x20 integers": _rounded(20.0, 1.0, dither=True),
+    "tablet x5 integers": _rounded(5.0, 1.0, dither=True),
 }
 """How a stroke drawn in whole pixels is stored in other units (see the module docstring)."""
 

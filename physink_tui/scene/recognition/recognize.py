@@ -120,8 +120,9 @@ def _given(noise: float | None, points: Sequence[Sequence[float]], pts: np.ndarr
     (`units.stroke_noise`)."""
     if noise is None:
         with np.errstate(all="ignore"):
-            own_bends = pen_noise.jitter(pts) <= SPARSE_BENDS * pen_noise.shape_bend(pts)
-            return units.stroke_noise(pts, size, np.asarray(points, dtype=float)[:, :2], own_bends=own_bends)
+            measured = pen_noise.jitter(pts)
+            return units.stroke_noise(pts, size, np.asarray(points, dtype=float)[:, :2], measured=measured,
+                                      own_bends=measured <= SPARSE_BENDS * pen_noise.shape_bend(pts))
     return noise if math.isfinite(noise) and noise > 0 else 0.0
 
 
