@@ -71,6 +71,12 @@ class Habits:
         hook: chance of a hook at each end of a stroke, 0..1.
         bow: the largest bow of a side longer than 30 px, as a share of its length.
         tremor: scale of the tremor and the sensor noise (1: about a pixel).
+        tremor_hz: the range the tremor's frequencies are drawn from (a healthy hand's physiological tremor 7-11 Hz;
+            an essential or parkinsonian tremor 4-7 Hz).
+        speed: scale of the hand's speed (its power-law gain and its top speed; 1: the hurried hand's 1200-2000 px/s
+            along a side, 0.15: a slow, careful or unsteady hand's 180-300 px/s, sampled by many more reports).
+        drift: amplitude in pixels of a slow wander across the path (0.5-1.5 Hz: the hand correcting its course as
+            it goes), 0 for none (then nothing is drawn for it, and every other draw stays in place).
     """
 
     corner_overshoot: float = 0.45
@@ -80,6 +86,15 @@ class Habits:
     hook: float = 0.75
     bow: float = 0.01
     tremor: float = 1.0
+    tremor_hz: tuple[float, float] = (7.0, 11.0)
+    speed: float = 1.0
+    drift: float = 0.0
+
+
+SHAKY_SLOW = Habits(tremor=2.5, tremor_hz=(4.0, 7.0), speed=0.15, drift=2.0)
+"""A slow, unsteady hand (an older or low-vision person's, or anyone's drawing slowly to be careful): a 4-7 Hz tremor
+of 1-3 px with a little more sensor noise, a slow wander across the path of 1-2 px, and a speed of 180-300 px/s along
+a side, so a 200 Hz tablet sends several reports a pixel."""
 
 
 class HurriedPen:
@@ -277,6 +292,7 @@ class HurriedPen:
         """Speed (px/s) at each point: the two-thirds power law, capped, then acceleration-limited both ways."""
         rng = self.rng
         gain, v_max = rng.uniform(100.0, 140.0), rng.uniform(1200.0, 2000.0)
+        gain, v_max = gain * self.habits.speed, v_max * self.habits.speed
         accel, decel = rng.uniform(6000.0, 12000.0), rng.uniform(6000.0, 12000.0)
         n, w = len(pts), 3
         limit = []
@@ -286,7 +302,7 @@ class HurriedPen:
             turn = abs((h2 - h1 + math.pi) % (2 * math.pi) - math.pi) if a != b and b != c else 0.0
             span = math.dist(a, b) + math.dist(b, c)
             radius = span / turn if turn > 1e-6 else math.inf
-            limit.append(min(v_max, max(60.0, gain * radius ** (1.0 / 3.0))))
+            limit.append(min(v_max, max(60.0 * min(1.0, self.habits.speed), gain * radius ** (1.0 / 3.0))))
         v = list(limit)
         v[0] = min(v[0], rng.uniform(80.0, 200.0))
         v[-1] = min(v[-1], rng.uniform(100.0, 300.0))
@@ -308,9 +324,13 @@ class HurriedPen:
         duration = times[-1]
         shaky = self.habits.tremor
         amp = rng.uniform(0.5, 0.9) * shaky
-        tremor = [(rng.uniform(7.0, 11.0), rng.uniform(0.0, 2 * math.pi)) for _ in range(4)]
+        tremor = [(rng.uniform(*self.habits.tremor_hz), rng.uniform(0.0, 2 * math.pi)) for _ in range(4)]
         base, wander = rng.uniform(0.35, 0.65), rng.uniform(0.0, 2 * math.pi)
         ramp_up, ramp_down = rng.uniform(0.015, 0.04), rng.uniform(0.015, 0.04)
+        wander_by = self.habits.drift
+        slow = ((rng.uniform(0.5, 1.5), rng.uniform(0.0, 2 * math.pi), rng.uniform(0.5, 1.0) * wander_by)
+                if wander_by > 0 else (0.0, 0.0, 0.0))
+        across = _unit(-(pts[-1][1] - pts[0][1]), pts[-1][0] - pts[0][0])
 
         def shake(tau: float) -> Point:
             (f1, p1), (f2, p2), (f3, p3), (f4, p4) = tremor
@@ -335,6 +355,9 @@ class HurriedPen:
             tau = k * dt + (rng.gauss(0.0, 0.00015) if k else 0.0)  # reports come on the tablet's clock
             x, y = at(min(tau, duration))
             sx, sy = shake(t_land + tau)
+            if wander_by > 0:  # the slow wander across the path, nothing at the pen-down
+                off = slow[2] * (math.sin(2 * math.pi * slow[0] * tau + slow[1]) - math.sin(slow[1]))
+                sx, sy = sx + across[0] * off, sy + across[1] * off
             landing = min(tau / ramp_up, 1.0) ** 2
             lifting = min(max(duration - tau, 0.0) / ramp_down, 1.0) ** 2
             envelope = 0.15 + 0.85 * min(landing, lifting)

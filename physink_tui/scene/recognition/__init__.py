@@ -10,9 +10,11 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 
 0. A stroke whose times show the pen lifted and came down to draw the mark again (some recorders keep one stroke from
    the first landing to the last lifting) is read by its last whole attempt (`pen_lifts`).
-1. A line (judged on steps a few noise widths long), a spring (loops turning one way whose centres advance along an
-   axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a stroke under three noise widths
-   across is a dot (no kind).
+1. A line (judged on steps a few noise widths long; a stroke whose farthest point strays no farther than the pen's
+   own wobble reaches, sqrt(2 ln n) noise widths, is one unless a circle explains its bow, and a hook of up to 8 noise
+   widths at one end is cut first unless it is a straight arm standing off: `lines`), a spring (loops turning one way
+   whose centres advance along an axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a
+   stroke under three noise widths across is a dot (no kind).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
    drawn past its start and comes back to it (cut there), or it goes round the same sides twice. Where neither end
    comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook
@@ -86,6 +88,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
    bends at least three times inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below.
+   Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
+   chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
+   however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -127,6 +132,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
   which the open-stroke rules misjudge
 - `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline
+- `lines.py`: how far a person's line strays by the pen and hand alone (the noise's farthest reach, a hook at an
+  end, the ink of a wobble), told from a bow drawn on purpose (a circle explains it) and a mark's short arm
+- `stairs.py`: a chain of sharp corners joined by straight, repeating sides (staircases, square waves, zig-zags),
+  judged at its sides' scale, read as a polyline through its corners
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few

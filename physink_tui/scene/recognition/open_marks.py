@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from physink_tui.scene.recognition import lines
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.shape_fits import fit_circle
 
@@ -161,13 +162,15 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     return kept if float(off.max()) <= RETRACE_OFF * span + noise else None
 
 
-def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float) -> bool:
+def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: float | None = None) -> bool:
     """Whether a stroke the line test refused (``coarse``: its smoothed points without hooks; ``stray`` and ``ink``
     its fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's
     swing bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink, turns both ways (one way round, it
     would be an arc: `ONE_WAY`), its heading turns less than `SWUNG_TURN_DEG` end to end, its middle has no point
     (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`). What a person does: a long diagonal drawn with a
-    mouse, or a quick stroke of a wrist, pivots and corrects; a reader still sees a line, not a curve."""
+    mouse, or a quick stroke of a wrist, pivots and corrects; a reader still sees a line, not a curve. A hook where the
+    pen landed or lifted (its reach in the pen's stated noise ``pen``, ``noise`` where not given) is left out of the
+    circle's fit (`lines.without_hooked_ends`)."""
     if stray >= SWUNG_STRAY or ink >= SWUNG_INK:
         return False  # checked first: most strokes are far from straight
     th = sg.coarse_turning(coarse, noise)
@@ -178,7 +181,8 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float) -> bo
     middle = coarse[len(coarse) // 5: len(coarse) - len(coarse) // 5]
     if sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= SWUNG_POINT_DEG:
         return False
-    centre, radius, _ = fit_circle(coarse)
+    bow = lines.without_hooked_ends(coarse, noise if pen is None else pen)  # a hook where the pen landed is no swing
+    centre, radius, _ = fit_circle(bow)
     if not math.isfinite(radius):
         return True  # straight enough that no circle fits
-    return float(np.abs(np.hypot(*(coarse - centre).T) - radius).max()) >= SWUNG_ARC * stray * length
+    return float(np.abs(np.hypot(*(bow - centre).T) - radius).max()) >= SWUNG_ARC * stray * length

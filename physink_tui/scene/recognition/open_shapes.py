@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import bracket_marks, open_marks
+from physink_tui.scene.recognition import bracket_marks, lines, open_marks
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -59,37 +59,57 @@ def _pt(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def line(raw: np.ndarray, noise: float, diag: float) -> Recognition | None:
+def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -> Recognition | None:
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
     without a lead-in or tail that runs back along it (`open_marks.retraced_ends`), or bowed one way and back by the
-    hand's swing (`open_marks.swung_line`)."""
-    found, swung = _line(raw, noise, diag)
+    hand's swing (`open_marks.swung_line`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a
+    short line's hook is a large share of it), straight within the pen's own wobble (`lines.within_wobble`). Those
+    two are judged by the pen's stated noise ``pen`` (``noise`` where not given), not a measured jitter that may be
+    the shape's own bends between a few far-apart events (`recognize.SPARSE_BENDS`)."""
+    pen = noise if pen is None else min(pen, noise)
+    found, swung = _line(raw, noise, diag, pen)
     if found is None:
         kept = open_marks.retraced_ends(raw, noise)
         if kept is not None:
-            found, _ = _line(kept, noise, sg.bbox_diagonal(kept))
+            found, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen)
+    for kept in lines.unhooked(raw, pen) if found is None else []:
+        found, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen, bow=False)
+        if found is not None:
+            break
     return found if found is not None else swung
 
 
-def _line(raw: np.ndarray, noise: float, diag: float) -> tuple[Recognition | None, Recognition | None]:
-    """A line by the line test, or else one the hand's swing bowed (`open_marks.swung_line`), or None each."""
+def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
+          bow: bool = True) -> tuple[Recognition | None, Recognition | None]:
+    """A line by the line test, or else one the hand's swing bowed (`open_marks.swung_line`), or None each; with
+    ``bow`` False, only a line straight within the pen's own wobble (`lines.within_wobble`, judged by ``pen``)."""
     if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
         return None, None  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
     n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
     coarse = sg.smooth(sg.resample(raw, n))
-    coarse = sg.resample(sg.remove_hooks(coarse), n)
-    _, _, err = fit_line(coarse)
+    if bow:  # else a hook is cut from one end already (`lines.unhooked`): the rest is judged as drawn
+        coarse = sg.resample(sg.remove_hooks(coarse), n)
+    _, direction, off = fit_line(coarse)
+    along = float(np.ptp(coarse @ direction)) or 1e-12  # the extent `fit_line`'s stray is a share of
     length = sg.path_length(coarse)
     chord = float(np.hypot(*(coarse[-1] - coarse[0])))
     if chord == 0.0:
         return None, None
-    err = max(0.0, err - noise / chord)  # the pen's own wobble is not a bend
+    err = max(0.0, off - noise / chord)  # the pen's own wobble is not a bend
     slack = 1.0 + 3 * noise / chord
-    if (err < LINE and length < 1.12 * chord * slack) or (err < 0.5 * LINE and length < 1.3 * chord * slack):
-        return Recognition("line", 1.0 - err / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])), (("arc", 0.2),)), None
-    if open_marks.swung_line(coarse, err, length / (chord * slack), noise):
+
+    def close(stray: float) -> bool:
+        return (stray < LINE and length < 1.12 * chord * slack) or (stray < 0.5 * LINE and length < 1.3 * chord * slack)
+
+    # nor, at its farthest, is a stroke's whole stray within the pen's wobble, unless it bows as an arc does; nor the
+    # ink of that wobble between points closer than a few noise widths (`lines.ink`)
+    if (bow and close(err)) or (lines.ink(coarse, pen) < 1.3 * chord * slack
+                                and lines.within_wobble(coarse, off * along, pen)):
+        return Recognition("line", 1.0 - min(err, LINE) / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])),
+                           (("arc", 0.2),)), None
+    if bow and open_marks.swung_line(coarse, err, length / (chord * slack), noise, pen):
         return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),))
     return None, None
 

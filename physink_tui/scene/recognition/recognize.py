@@ -22,7 +22,17 @@ from dataclasses import replace
 
 import numpy as np
 
-from physink_tui.scene.recognition import closed_loops, landing, open_shapes, pen_lifts, pen_noise, ranker, units, waves
+from physink_tui.scene.recognition import (
+    closed_loops,
+    landing,
+    open_shapes,
+    pen_lifts,
+    pen_noise,
+    ranker,
+    stairs,
+    units,
+    waves,
+)
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
@@ -182,14 +192,21 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     unit_noise = noise / scale
     unit = (pts - origin) / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
-        rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale)
+        rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale,
+                          (given if given > 0 else noise) / scale)
         result = waves.as_curve(rules, unit)  # a wave's round bends are no zig-zag's teeth
+        wavy = result is not rules
+        # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
+        # (`sparse_bends`: a device's few events make any stroke straight runs joined at sharp turns)
+        chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise)
+    if chain is not None:
+        result = chain
     if result.geometry is None:
         return result
-    wavy = result is not rules
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
-    # a wave is not asked of the model (the people it was fitted on drew none), nor a mark straight-armed as drawn
-    if not learned or wavy or open_shapes.straight_armed_mark(result, pts, noise):
+    # a wave is not asked of the model (the people it was fitted on drew none), nor a chain of sharp corners (its
+    # 64 points smooth small steps away), nor a mark straight-armed as drawn
+    if not learned or wavy or chain is not None or open_shapes.straight_armed_mark(result, pts, noise):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
@@ -232,9 +249,11 @@ OPEN_ROUND_MARGIN = 0.2
 short pokes out by about 15 % of the stroke's diagonal)."""
 
 
-def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float) -> Recognition:
-    """``raw`` at unit size; ``diag`` its `stroke_geometry.bbox_diagonal`, ``noise`` in the same units."""
-    found = open_shapes.line(raw, noise, diag)
+def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float,
+              pen: float) -> Recognition:
+    """``raw`` at unit size; ``diag`` its `stroke_geometry.bbox_diagonal`, ``noise`` in the same units (the stroke's
+    measured jitter where worse than the pen's stated ``pen``)."""
+    found = open_shapes.line(raw, noise, diag, pen)
     if found is not None:
         return found
     length = sg.path_length(raw)

@@ -1,0 +1,202 @@
+"""How far a person's straight line strays by the pen and hand alone (the noise at its farthest, a hook at an end),
+told from a bow drawn on purpose (a circle explains it) and from a mark's short arm; no classification, no I/O."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.shape_fits import fit_circle, fit_line
+
+CIRCULAR_BOW = 0.5
+"""A stroke whose farthest point from its best circle (`shape_fits.fit_circle`) is under this share of its farthest
+point from its best line bows one way, smoothly, as an arc does: the circle takes away at least half of what strays
+from the line. A hook, a tremor's wobble or a corner does not fit a circle so (`benchmarks/bench_lines.py`, tuning
+seeds: the pen models' arcs of 20-90 degrees 0.00-0.38 (0.9 where the slow shaky hand draws them), their short hooked
+and shaky lines 0.4-40, most over 1)."""
+
+
+def wobble_reach(n: int) -> float:
+    """How many noise widths the pen's own wobble takes a straight stroke off its line at the farthest of its ``n``
+    judged points: the largest of n draws of a noise of unit spread is about sqrt(2 ln n) (2.8 at 48 points, 3.2 at
+    160), and a slow tremor, smooth between points, reaches as far through the smoothing that white noise does not.
+
+    >>> round(wobble_reach(48), 2), round(wobble_reach(160), 2)
+    (2.78, 3.19)
+    """
+    return math.sqrt(2 * math.log(max(n, 2)))
+
+
+def circular_bow(pts: np.ndarray) -> bool:
+    """Whether ``pts`` bow off their line the way an arc does (`CIRCULAR_BOW`).
+
+    >>> a = np.linspace(-0.3, 0.3, 48)
+    >>> circular_bow(np.column_stack([np.sin(a), np.cos(a)]))
+    True
+    >>> hooked = np.vstack([[[-2.0, 3.0]], np.column_stack([np.linspace(0, 20, 47), np.zeros(47)])])
+    >>> circular_bow(hooked)
+    False
+    """
+    centre, direction, _ = fit_line(pts)
+    rel = pts - centre
+    off_line = float(np.abs(rel[:, 0] * direction[1] - rel[:, 1] * direction[0]).max())
+    middle, radius, _ = fit_circle(pts)
+    if not math.isfinite(radius) or off_line == 0.0:
+        return False
+    return float(np.abs(np.hypot(*(pts - middle).T) - radius).max()) < CIRCULAR_BOW * off_line
+
+
+HOOK_REACH = 8.0
+"""A hook where the pen lands or lifts is at most this many noise widths of path long, whatever the stroke's length: a
+hand's landing and flick (mmg's 596 lines, stylus and finger: the piece at an end heading off the line is 0 at the
+median, 3-4 px at the 95th percentile, 9-10 px at the 99th)."""
+HOOK_SHARE = 1 / 3
+"""... and at most this share of the stroke's path (a longer piece is a mark's arm)."""
+
+
+def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
+    """``raw`` without a hook's length (`HOOK_REACH`, `HOOK_SHARE`) of path at its start, and without one at its end
+    (``noise`` in ``raw``'s units), each to be judged by the line test again; none where the stroke is too short, nor
+    an end whose cut piece is a mark's arm (`_arm`). A short line's hook is a large share of it, more than
+    `stroke_geometry.remove_hooks` cuts (a tenth of the path). Not both ends at once: short pieces standing off both
+    ends are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px spine), and a hand hooks one end far more
+    often than both (mmg's lines: the start 2 %, the end 13 %)."""
+    steps = np.hypot(*np.diff(raw, axis=0).T)
+    along = np.concatenate([[0.0], np.cumsum(steps)])
+    length = float(along[-1])
+    cut = min(HOOK_REACH * noise, HOOK_SHARE * length)
+    if not cut > 0 or sharp_corner(raw, noise):
+        return []  # too short, or a mark's corner (a short arm's) where a hook would be
+    at_head, at_tail = _at(raw, along, cut), _at(raw, along, length - cut)  # where each cut falls, between points
+    head = np.vstack([raw[along < cut], at_head])  # each piece from the stroke's end inwards
+    tail = np.vstack([raw[along > length - cut][::-1], at_tail])
+    after_head = np.vstack([at_head, raw[along > cut]])
+    before_tail = np.vstack([raw[along < length - cut], at_tail])
+    return [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
+            if len(rest) >= 2 and not _arm(piece, inward)]
+
+
+
+def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
+    """The point ``where`` along the path of ``pts`` (``along``: the path length at each point), as a row."""
+    return np.column_stack([np.interp(where, along, pts[:, 0]), np.interp(where, along, pts[:, 1])])
+
+
+def _arm(piece: np.ndarray, rest: np.ndarray) -> bool:
+    """Whether ``piece`` (from an end of the stroke to where ``rest`` runs on) is a mark's short arm, not a hook:
+    straight (`stroke_geometry.ARM_STRAIGHT`) and standing off the rest's chord at `stroke_geometry.ARM_ANGLE_DEG`
+    (a tiny check's first arm, 10 px on a 20 px mark, itt lvht1203's check04, or a square bracket's); a hook curls
+    back or runs on nearly in line."""
+    if len(piece) < 2:
+        return False
+    if len(piece) > 2 and sg.chord_deviation(piece) >= sg.ARM_STRAIGHT:
+        return False
+    u, v = piece[0] - piece[-1], rest[-1] - rest[0]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return False
+    angle = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
+    return sg.ARM_ANGLE_DEG[0] <= angle <= sg.ARM_ANGLE_DEG[1]
+
+
+INK_STEP = 3.0
+"""`ink` is measured along steps this many noise widths long (`open_shapes`' line test judges on such steps)."""
+
+
+def ink(pts: np.ndarray, noise: float) -> float:
+    """The path length of ``pts`` along steps at least `INK_STEP` noise widths long: the ink of the stroke's shape,
+    not of the pen's wobble between points closer than that (the line test resamples a short stroke to 48 points, a
+    fraction of a noise width apart on a 20 px line, where a slow shaky hand's tremor and sensor noise add 20-90 % to
+    the path of a straight line: `benchmarks/bench_lines.py`'s shaky pen).
+
+    >>> zigzag = np.array([[x, 0.5 * (x % 2)] for x in range(0, 31)], dtype=float)
+    >>> round(ink(zigzag, 1.0), 1), round(float(np.hypot(*np.diff(zigzag, axis=0).T).sum()), 1)
+    (30.1, 33.5)
+    """
+    steps = np.hypot(*np.diff(pts, axis=0).T)
+    length = float(steps.sum())
+    k = int(min(len(pts), max(2, length / (INK_STEP * noise) + 1))) if noise > 0 else len(pts)
+    return length if k >= len(pts) else float(np.hypot(*np.diff(sg.resample(pts, k), axis=0).T).sum())
+
+
+def within_wobble(pts: np.ndarray, stray: float, noise: float) -> bool:
+    """Whether ``pts`` (the line test's smoothed points without hooks, whose farthest point strays ``stray`` off their
+    line, in their units, as ``noise``, the pen's) stray no farther than the pen's own wobble reaches (`wobble_reach`
+    noise widths), do not bow as an arc does (`circular_bow`) and turn nowhere by a mark's corner (`sharp_corner`)."""
+    return stray < wobble_reach(len(pts)) * noise and not circular_bow(pts) and not sharp_corner(pts, noise)
+
+
+CORNER_DEG = 90.0
+"""A stroke turning this much or more between chords `HOOK_REACH` noise widths long (shorter at its ends, down to
+`CORNER_CHORD`) has a mark's corner: a check's or a tick's point, a bracket's or a brace's, however short its arm. A
+hook where a hand lands or lifts curls onto the line, turning less (the pen models' hooks 20-80 degrees where they
+join it; one doubling back is `stroke_geometry.remove_hooks`' or `open_marks.retraced_ends`'). Dollar1's checks drawn
+20-40 px across by a mouse (`bench_device_stress`'s tiny mouse: a short arm of 5-8 px) turn 95-125 degrees."""
+CORNER_CHORD = 4.0
+"""...each chord at least this many noise widths long (half a hook's reach): a slow shaky hand's tremor where it lands
+turns sharply between shorter ones (chords of 2-3 noise widths took 8-16 of the shaky pen's 60 tuning lines)."""
+
+
+def sharp_corner(pts: np.ndarray, noise: float) -> bool:
+    """Whether ``pts`` turn by `CORNER_DEG` or more anywhere, between the chords from `HOOK_REACH` noise widths of
+    path before each point and to as far after it (``noise`` in their units).
+
+    >>> tick = np.vstack([np.column_stack([np.zeros(7), np.arange(7.0)]), np.column_stack([np.arange(1, 25.0),
+    ...                   6 - 0.8 * np.arange(1, 25.0)])])
+    >>> sharp_corner(tick, 1.0), sharp_corner(np.column_stack([np.arange(30.0), np.zeros(30)]), 1.0)
+    (True, False)
+    """
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    reach = HOOK_REACH * noise
+    back = _at_each(pts, along, np.maximum(along - reach, 0.0))
+    ahead = _at_each(pts, along, np.minimum(along + reach, along[-1]))
+    u, v = pts - back, ahead - pts
+    nu, nv = np.hypot(*u.T), np.hypot(*v.T)
+    ok = (nu >= CORNER_CHORD * noise) & (nv >= CORNER_CHORD * noise)
+    if not ok.any():
+        return False
+    cos = (u[ok] * v[ok]).sum(axis=1) / (nu[ok] * nv[ok])
+    return bool((cos <= math.cos(math.radians(CORNER_DEG))).any())
+
+
+def _at_each(pts: np.ndarray, along: np.ndarray, where: np.ndarray) -> np.ndarray:
+    """The points ``where`` along the path of ``pts`` (``along``: the path length at each point)."""
+    return np.column_stack([np.interp(where, along, pts[:, 0]), np.interp(where, along, pts[:, 1])])
+
+
+HOOK_TURN_DEG = 20.0
+"""An end piece `HOOK_REACH` noise widths long whose chord turns this much from the way the stroke runs on from it is
+hooked (the pen landing or lifting); an arc's end turns by its sweep over that short piece, a few degrees."""
+
+
+def without_hooked_ends(pts: np.ndarray, noise: float) -> np.ndarray:
+    """``pts`` (equally spaced, ``noise`` in their units) without an end piece `HOOK_REACH` noise widths long that turns
+    off the way the stroke runs on (`HOOK_TURN_DEG`): what a circle is fitted to when `open_marks.swung_line` asks
+    whether a circle explains a bow. The hurried hand's small hooks on arcs of 45-66 degrees made the circle miss the
+    arcs' ends, and they were read as swung lines (`benchmarks/bench_lines.py`); gtiwari's mouse lines have none.
+
+    >>> arc = np.column_stack([np.cos(np.linspace(0, 1, 60)), np.sin(np.linspace(0, 1, 60))]) * 100
+    >>> hooked = np.vstack([arc[:1] + [[-4.0, -2.0]], arc])
+    >>> len(without_hooked_ends(hooked, 1.0)) < len(hooked), len(without_hooked_ends(arc, 1.0)) == len(arc)
+    (True, True)
+    """
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    reach = HOOK_REACH * noise
+    head = int(np.count_nonzero(along <= reach))
+    tail = int(np.count_nonzero(along >= along[-1] - reach))
+    lo = head - 1 if _turns_off(pts, head) else 0
+    hi = len(pts) - tail + 1 if _turns_off(pts[::-1], tail) else len(pts)
+    return pts[lo:hi] if hi - lo >= len(pts) // 2 else pts
+
+
+def _turns_off(pts: np.ndarray, k: int) -> bool:
+    """Whether the first ``k`` of ``pts`` head off the way the next ``2 k`` run on by `HOOK_TURN_DEG` or more."""
+    if k < 2 or 3 * k > len(pts):
+        return False
+    u, v = pts[k - 1] - pts[0], pts[3 * k - 2] - pts[k - 1]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return False
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms)))) >= HOOK_TURN_DEG
