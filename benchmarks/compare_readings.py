@@ -1,6 +1,6 @@
 """Benchmark: whether this tree reads strokes exactly as another revision does: a speed change must change no reading.
 
-Usage: .venv/bin/python benchmarks/compare_readings.py SET [SET ...] [--baseline main] [--tolerance 0]
+Usage: .venv/bin/python benchmarks/compare_readings.py SET [SET ...] [--baseline main] [--tolerance 0] [--noise auto]
 
 Every single-stroke sample of each SET (a .jsonl file or a folder `stroke_sets` reads) is recognised twice by each
 tree: as recorded (times in seconds where the set has them, as `bench_generalisation` passes them) and resampled to
@@ -10,6 +10,8 @@ PYTHONPATH and writes every reading (kind, confidence, beautified geometry, alte
 round-trip exactly. Prints how many readings differ in kind, and in anything at all (geometry beyond ``--tolerance``,
 confidence, alternatives), by set; nothing about any stroke. The second to fifth held-back groups
 (`bench_generalisation.is_held_back_new`, `held_back_set`) are left out entirely: their strokes are not recognised.
+``--noise auto`` has this tree read every stroke with ``noise=None`` (judged from the stroke: `units.stroke_noise`),
+the baseline with its default (a pixel).
 """
 
 from __future__ import annotations
@@ -54,12 +56,16 @@ def _plain(value: object) -> object:
     return value
 
 
-def worker(paths: list[Path], out: Path) -> None:
-    """Every reading of this tree's ``physink_tui``, one JSON line each, in `strokes` order then `MODES` order."""
+def worker(paths: list[Path], out: Path, auto: bool = False) -> None:
+    """Every reading of this tree's ``physink_tui``, one JSON line each, in `strokes` order then `MODES` order
+    (``auto``: with ``noise=None``)."""
     import numpy as np
     from bench_recognition import resample
 
-    from physink_tui.scene.recognition.recognize import recognize_stroke
+    from physink_tui.scene.recognition.recognize import recognize_stroke as recognize
+
+    def recognize_stroke(points: list, times: list | None) -> object:
+        return recognize(points, times, noise=None) if auto else recognize(points, times)
 
     with out.open("w", encoding="utf-8") as f:
         f.write(json.dumps({"package": __import__("physink_tui").__file__}) + "\n")
@@ -84,9 +90,10 @@ def _close(a: object, b: object, tolerance: float) -> bool:
     return a == b
 
 
-def run(tree: Path, paths: list[Path], out: Path) -> list[object]:
+def run(tree: Path, paths: list[Path], out: Path, auto: bool = False) -> list[object]:
     env = {**os.environ, "PYTHONPATH": str(tree)}
-    subprocess.run([sys.executable, __file__, "--worker", str(out), *map(str, paths)], env=env, check=True)
+    subprocess.run([sys.executable, __file__, "--worker", str(out), *(["--noise", "auto"] if auto else []),
+                    *map(str, paths)], env=env, check=True)
     lines = out.read_text(encoding="utf-8").splitlines()
     package = json.loads(lines[0])["package"]
     if not package.startswith(str(tree)):
@@ -99,17 +106,19 @@ def main() -> None:
     ap.add_argument("sets", type=Path, nargs="+")
     ap.add_argument("--baseline", default="main")
     ap.add_argument("--tolerance", type=float, default=0.0, help="geometry and confidence may differ by this much")
+    ap.add_argument("--noise", choices=("default", "auto"), default="default",
+                    help="auto: this tree reads with noise=None (judged from the stroke)")
     ap.add_argument("--worker", type=Path, help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.worker is not None:
-        worker(args.sets, args.worker)
+        worker(args.sets, args.worker, args.noise == "auto")
         return
     from bench_side_by_side import export
 
     sets = [s for s, _, _ in strokes(args.sets)]
     with tempfile.TemporaryDirectory() as tmp:
         base = run(export(args.baseline, Path(tmp)), args.sets, Path(tmp) / "baseline.jsonl")
-        this = run(ROOT, args.sets, Path(tmp) / "this.jsonl")
+        this = run(ROOT, args.sets, Path(tmp) / "this.jsonl", args.noise == "auto")
     if len(base) != len(this) or len(base) != len(MODES) * len(sets):
         raise SystemExit(f"{len(base)} baseline readings, {len(this)} here, for {len(sets)} strokes")
     total, kind, any_diff = Counter(), Counter(), Counter()
@@ -118,7 +127,8 @@ def main() -> None:
         total[key] += 1
         kind[key] += (a or {}).get("kind") != (b or {}).get("kind")
         any_diff[key] += not _close(a, b, args.tolerance)
-    print(f"Readings of this tree against {args.baseline} (geometry tolerance {args.tolerance:g}):\n")
+    print(f"Readings of this tree (noise: {args.noise}) against {args.baseline} (geometry tolerance "
+          f"{args.tolerance:g}):\n")
     print("| set | mode | readings | kind differs | anything differs |\n|---|---|---:|---:|---:|")
     for key in sorted(total):
         print(f"| {key[0]} | {key[1]} | {total[key]} | {kind[key]} | {any_diff[key]} |")

@@ -93,6 +93,11 @@ def _positive_float(text: str) -> float:
     return _positive(text, "a positive number")
 
 
+def _noise(text: str) -> float | None:
+    """``auto`` (None: judged from each stroke) or the pen's jitter in the strokes' units."""
+    return None if text.strip().lower() == "auto" else _positive(text, "auto or a positive number of units")
+
+
 def _frame_size(text: str) -> tuple[int, int]:
     match = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", text)
     width, height = (int(match[1]), int(match[2])) if match else (0, 0)
@@ -212,8 +217,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("recognize", help="recognise strokes: one JSON line per input line")
     p.add_argument("strokes", metavar="STROKES.jsonl", help="one stroke per line")
-    p.add_argument("--noise", type=float, default=1.0, metavar="UNITS",
-                   help="the pen's jitter in the strokes' units (default: %(default)s, a pixel)")
+    p.add_argument("--noise", type=_noise, default=None, metavar="UNITS",
+                   help="the pen's jitter in the strokes' units, or auto: judged from each stroke in whatever units "
+                        "it is stored (the lattice its coordinates are rounded to, whole pixels giving 1, else its "
+                        "own jitter) (default: auto)")
 
     p = sub.add_parser("timeline", help="print a project's causal timeline")
     p.add_argument("project", metavar="PROJECT", help="a project (.physink.json)")

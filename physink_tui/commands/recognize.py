@@ -4,7 +4,9 @@ that turns primitives into JSON.
 Input lines are ``{"strokes": [[[x, y, t?], ...], ...]}`` (one stroke, or two for an X-symbol; a stroke whose every
 point carries ``t``, the pen's time, is read with its times, as sketch mode reads a stroke);
 output lines are ``{"kind", "confidence", "geometry", "alternatives"}`` plus ``"reason"`` when
-nothing was recognised. A malformed input line stops with its line number.
+nothing was recognised. Without ``--noise`` the pen's noise is judged from each stroke (`units.stroke_noise`), so a
+drawing stored in pixels, tablet units, millimetres or fractions of a screen reads alike. A malformed input line
+stops with its line number.
 """
 
 from __future__ import annotations
@@ -100,9 +102,9 @@ def parse_line(text: str, path: str, lineno: int) -> list[list[list[float]]]:
 
 def run(args: argparse.Namespace) -> int:
     path = args.strokes
-    noise = getattr(args, "noise", 1.0)
-    if not (noise > 0 and noise < float("inf")):
-        raise PhysinkError(f"--noise: expected a positive number of units, got {noise!r}")
+    noise = getattr(args, "noise", None)  # None: judged from each stroke, in whatever units it is stored
+    if noise is not None and not (noise > 0 and noise < float("inf")):
+        raise PhysinkError(f"--noise: expected auto or a positive number of units, got {noise!r}")
     try:
         stream = sys.stdin.buffer if path == "-" else open(path, "rb")
     except OSError as exc:

@@ -3,9 +3,10 @@
 PaleoSketch's way (Paulson & Hammond 2008): interpretations compete rather than pass a cascade of cut-offs. The
 stroke is moved to unit size round its centroid (no overflow on absurd input), judged, and the geometry is scaled
 back. Every threshold allows for the pen's noise in absolute units (`noise`, 1 canvas pixel unless the caller says,
-or the stroke's own measured jitter when that is worse, except where its points lie so far apart that the jitter may
-be the shape's own bends: `recognize.SPARSE_BENDS`, a trackpad's or mouse's 8-25 events) as well as the shape's size,
-so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sense and differently where noise decides.
+or with ``noise=None`` judged from the stroke in whatever units it is stored: `units`; or the stroke's own measured
+jitter when that is worse, except where its points lie so far apart that the jitter may be the shape's own bends:
+`recognize.SPARSE_BENDS`, a trackpad's or mouse's 8-25 events) as well as the shape's size, so a 22-pixel
+gesture and a 600-pixel one are judged alike where that makes sense and differently where noise decides.
 
 0. A stroke whose times show the pen lifted and came down to draw the mark again (some recorders keep one stroke from
    the first landing to the last lifting) is read by its last whole attempt (`pen_lifts`).
@@ -146,6 +147,8 @@ so a 22-pixel gesture and a 600-pixel one are judged alike where that makes sens
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few
   sparse events turn at every one (a round shape sampled, not a polygon's sides)
+- `units.py`: the pen's noise judged from a stroke when not stated (``noise=None``, `physink recognize`'s
+  default): the lattice its coordinates are rounded to (whole pixels: 1), else its jitter as a rounding device's
 - `landing.py`: a finger's or pen's dwell where it lands or lifts (points wandering about the end), kept as one point
 - `pen_lifts.py`: a recorded stroke whose times show the pen lifted and drew the mark again (a second's silence, then
   a far landing), read by its last whole attempt

@@ -32,6 +32,7 @@ from physink_tui.scene.recognition import (
     ranker,
     round_brackets,
     stairs,
+    units,
     waves,
 )
 from physink_tui.scene.recognition import stroke_features as sf
@@ -71,7 +72,8 @@ measure 10-40 px on a 280 px box, whose sides then no longer pay for their corne
 MIN_SIZE = 3.0
 """A stroke less than this many noise widths across is a dot, not a shape."""
 PEN_NOISE = 1.0
-"""The pen's jitter in the stroke's units when the caller does not say: a pixel of a canvas in pixels."""
+"""The pen's jitter in the stroke's units when the caller does not say: a pixel of a canvas in pixels (``noise=None``
+judges it from the stroke instead: `units.stroke_noise`)."""
 
 
 def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.ndarray | None, float, str | None]:
@@ -114,18 +116,25 @@ def sparse_bends(pts: np.ndarray, noise: float, measured: float | None = None) -
     return measured > noise and measured <= SPARSE_BENDS * pen_noise.shape_bend(pts)
 
 
-def sampled_sparsely(points: Sequence[Sequence[float]], noise: float = PEN_NOISE) -> bool:
+def sampled_sparsely(points: Sequence[Sequence[float]], noise: float | None = PEN_NOISE) -> bool:
     """`sparse_bends` of a stroke as `recognize_stroke` is given it (False where it cannot be recognised)."""
     with np.errstate(all="ignore"):
         pts, keep, size, _ = _clean(points)
     if pts is None:
         return False
-    given = _given(noise)
+    given = _given(noise, points, pts, size)
     return sparse_bends(_settled(pts, keep, size, given)[0], given)
 
 
-def _given(noise: float) -> float:
-    """The pen's stated jitter, 0 where it is not a positive number."""
+def _given(noise: float | None, points: Sequence[Sequence[float]], pts: np.ndarray, size: float) -> float:
+    """The pen's stated jitter, 0 where it is not a positive number; where not stated (None), judged from the stroke:
+    the lattice of its ``points`` as given, the jitter of ``pts`` (without repeats) and their diagonal ``size``
+    (`units.stroke_noise`)."""
+    if noise is None:
+        with np.errstate(all="ignore"):
+            measured = pen_noise.jitter(pts)
+            return units.stroke_noise(pts, size, np.asarray(points, dtype=float)[:, :2], measured=measured,
+                                      own_bends=measured <= SPARSE_BENDS * pen_noise.shape_bend(pts))
     return noise if math.isfinite(noise) and noise > 0 else 0.0
 
 
@@ -142,15 +151,18 @@ def _settled(pts: np.ndarray, keep: np.ndarray | None, size: float,
 
 
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
-                     noise: float = PEN_NOISE, weights: Weights | None = None, learned: bool = True) -> Recognition:
+                     noise: float | None = PEN_NOISE, weights: Weights | None = None,
+                     learned: bool = True) -> Recognition:
     """Recognise one stroke given as (x, y) points (extra columns such as t are ignored).
 
     ``noise`` is the pen's jitter in the points' units (pass it scaled with the coordinates: a canvas in
-    fractions of its size has a noise of about 1 / its width in pixels); a stroke that is visibly shakier is
-    judged with its own, measured jitter (`pen_noise.jitter`). ``times`` (one a point, seconds), where
-    given, tell the learned ranker how the pen slowed at corners. ``weights`` override the ranking's and
-    ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for evaluation).
-    A stroke whose times show the pen lifted and drew the mark again is read by its last attempt (`pen_lifts`).
+    fractions of its size has a noise of about 1 / its width in pixels), or None to judge it from the stroke in
+    whatever units it is stored (`units.stroke_noise`: the lattice its coordinates are rounded to, else its jitter);
+    a stroke that is visibly shakier is judged with its own, measured jitter (`pen_noise.jitter`). ``times`` (one a
+    point, seconds), where given, tell the learned ranker how the pen slowed at corners. ``weights`` override the
+    ranking's and ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for
+    evaluation). A stroke whose times show the pen lifted and drew the mark again is read by its last attempt
+    (`pen_lifts`).
     """
     attempt = pen_lifts.last_attempt(points, times)
     if attempt is not None and times is not None:
@@ -160,7 +172,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         pts, keep, size, reason = _clean(points)
     if pts is None:
         return Recognition(None, 0.0, None, (), reason)
-    given = _given(noise)
+    given = _given(noise, points, pts, size)
     pts, keep, size = _settled(pts, keep, size, given)
     if len(pts) == 2:
         return Recognition("line", 1.0, Line(_point(pts[0]), _point(pts[-1])))
@@ -211,7 +223,7 @@ def _point(p: np.ndarray) -> tuple[float, float]:
     return (float(p[0]), float(p[1]))
 
 
-def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: float = PEN_NOISE,
+def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: float | None = PEN_NOISE,
                       times: Sequence[Sequence[float] | None] | None = None) -> Recognition:
     """One stroke, or two consecutive strokes that may be an X-symbol (thesis 3.2.1); ``times``, where given, holds
     each stroke's point times in seconds or None (`recognize_stroke`)."""
