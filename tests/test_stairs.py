@@ -6,6 +6,7 @@ least as often as measured here; the chain's rule itself is checked on clean sha
 
 from __future__ import annotations
 
+import json
 import math
 import random
 import sys
@@ -17,6 +18,7 @@ from penmodels.hurried import HurriedPen
 from penmodels.journal import header as hurried_header
 from penmodels.shapes import Path as PenPath
 from scenarios.thesis import DEVICE, MAPPING
+from shared_data import shared_path
 from xerase_drawings import _pen_entry, replayed_project
 
 from physink_tui.formats.journal.entries import JournalEntry, JournalHeader
@@ -175,3 +177,19 @@ def test_a_staircase_of_eight_small_steps_is_a_polyline(pen: str) -> None:
     got = [reading("stairs", 8, pen, seed, True).kind for seed in range(10)]
     assert got.count("polyline") >= 8, got
     assert len(shape("stairs", 8, 0)) - 2 == 16
+
+
+def test_no_mark_drawn_by_people_is_taken_for_a_chain() -> None:
+    """People's marks with corners that are no chain of repeating sides — stars, arrows, x's, delete marks, carets,
+    brackets, braces, question marks — in the $1 set (three people outside the project, a stylus), as drawn: the
+    chain's rule finds a chain in none of the 1,440 (measured 0), so it reads none of them otherwise."""
+    path = shared_path("strokes", "dollar1-dev.jsonl")
+    chains = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        row = json.loads(line)
+        pts = np.asarray([p[:2] for p in row["strokes"][0]], dtype=float)
+        origin = pts.mean(axis=0)
+        scale = float(np.abs(pts - origin).max())
+        if stairs.corner_chain((pts - origin) / scale, 1.0 / scale) is not None:  # 1 px noise, as `recognize` has it
+            chains.append(row["file"])
+    assert chains == []

@@ -105,5 +105,5 @@ def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     brace as straight runs and sharp corners, a polyline's."""
     if found.kind != "curve":
         return False
-    work = sg.resample(sg.remove_hooks(sg.smooth(sg.resample(unit, JUDGED_POINTS))), JUDGED_POINTS)
+    work = sg.hooks_cut(unit, JUDGED_POINTS)
     return laid_out(work) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more

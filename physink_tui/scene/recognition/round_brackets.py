@@ -169,7 +169,7 @@ def kept_bracket(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     turns = np.degrees(np.arctan2(v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0], (v[:-1] * v[1:]).sum(axis=1)))
     if not (turns[0] * turns[1] > 0 and all(VERTEX_BEND[0] <= abs(t) <= VERTEX_BEND[1] for t in turns)):
         return False  # checked first, on the polyline's own vertices: no bracket's two bends (an N, a zig-zag)
-    work = sg.resample(sg.remove_hooks(sg.smooth(sg.resample(unit, JUDGED_POINTS))), JUDGED_POINTS)
+    work = sg.hooks_cut(unit, JUDGED_POINTS)
     if _half_turn(work) is None:
         return False  # checked first: the lobes cost more
     return rounded_bracket(work, sf.lobes(work, noise=noise)) is not None

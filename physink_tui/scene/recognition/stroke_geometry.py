@@ -257,6 +257,12 @@ POINT_TURN_DEG = 20.0
 within any `POINT_SPAN` of the stroke's path (the label contradictions' brace-point test, the same numbers)."""
 
 
+def hooks_cut(pts: np.ndarray, n: int) -> np.ndarray:
+    """``pts`` on ``n`` points equally spaced, smoothed, a hook at either end cut (`remove_hooks`), and on ``n`` points
+    again: an open stroke as a mark's rule judges it (`round_brackets.kept_bracket`, `angular_braces.kept_brace`)."""
+    return resample(remove_hooks(smooth(resample(pts, n))), n)
+
+
 def sharpest_turn(run: np.ndarray, span: float) -> float:
     """The most the run turns (degrees, net) within any stretch of ``span`` along it (points equally spaced)."""
     if len(run) < 3:
