@@ -68,24 +68,29 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     two are judged by the pen's stated noise ``pen`` (``noise`` where not given), not a measured jitter that may be
     the shape's own bends between a few far-apart events (`recognize.SPARSE_BENDS`)."""
     pen = noise if pen is None else min(pen, noise)
-    found, swung = _line(raw, noise, diag, pen)
+    found, swung, loose = _line(raw, noise, diag, pen)
     if found is None:
         kept = open_marks.retraced_ends(raw, noise)
         if kept is not None:
-            found, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen)
-    for kept in lines.unhooked(raw, pen) if found is None else []:
-        found, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen, bow=False)
-        if found is not None:
-            break
+            found, _, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)
+    if found is None or loose:
+        # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
+        # straightest line left once a hook is cut is the line drawn (its ends where the hand meant them)
+        for kept in lines.unhooked(raw, pen):  # where a line was found already, the plain line test may judge the rest
+            cut, _, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen, bow=False, plain=found is not None)
+            if cut is not None and (found is None or cut.confidence > found.confidence):
+                found = cut
     return found if found is not None else swung
 
 
 def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
-          bow: bool = True) -> tuple[Recognition | None, Recognition | None]:
-    """A line by the line test, or else one the hand's swing bowed (`open_marks.swung_line`), or None each; with
-    ``bow`` False, only a line straight within the pen's own wobble (`lines.within_wobble`, judged by ``pen``)."""
+          bow: bool = True, plain: bool = False) -> tuple[Recognition | None, Recognition | None, bool]:
+    """A line by the line test, or else one the hand's swing bowed (`open_marks.swung_line`), or None each, and
+    whether the line passed only as straight within the pen's own wobble (`lines.within_wobble`, judged by ``pen``);
+    with ``bow`` False, hooks are not cut again and only such a line counts, or, with ``plain``, one by the line test
+    too."""
     if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
-        return None, None  # its ends are not its extent's ends: no line (hooks cost less than half)
+        return None, None, False  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
     n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
     coarse = sg.smooth(sg.resample(raw, n))
@@ -96,7 +101,7 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
     length = sg.path_length(coarse)
     chord = float(np.hypot(*(coarse[-1] - coarse[0])))
     if chord == 0.0:
-        return None, None
+        return None, None, False
     err = max(0.0, off - noise / chord)  # the pen's own wobble is not a bend
     slack = 1.0 + 3 * noise / chord
 
@@ -105,13 +110,13 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
 
     # nor, at its farthest, is a stroke's whole stray within the pen's wobble, unless it bows as an arc does; nor the
     # ink of that wobble between points closer than a few noise widths (`lines.ink`)
-    if (bow and close(err)) or (lines.ink(coarse, pen) < 1.3 * chord * slack
-                                and lines.within_wobble(coarse, off * along, pen)):
+    strict = (bow or plain) and close(err)
+    if strict or (lines.ink(coarse, pen) < 1.3 * chord * slack and lines.within_wobble(coarse, off * along, pen)):
         return Recognition("line", 1.0 - min(err, LINE) / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])),
-                           (("arc", 0.2),)), None
+                           (("arc", 0.2),)), None, not strict
     if bow and open_marks.swung_line(coarse, err, length / (chord * slack), noise, pen):
-        return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),))
-    return None, None
+        return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),)), False
+    return None, None, False
 
 
 def round_error(ellipse: EllipseFit, noise: float) -> float:
