@@ -1,0 +1,217 @@
+"""A loop read as a polygon that is a box with a corner or two rounded or cut by a hurried hand; geometry only, no I/O.
+
+A box is four straight sides meeting near right angles. A hand that rounds a corner off (a mouse swung round it) or
+cuts it short draws the corner's two sides straight only up to where the rounding begins, and the polygonal fit
+then spends a fifth or sixth side on the rounding, or puts a vertex in its middle, which skews the quad past a box's
+corner tolerance. Here each side of the best four-sided fit is judged by its straight part alone (the points within
+the straightness `polygon_checks.BOW_SHARE` allows a side, plus the pen's noise), and the box is where those straight
+parts' lines meet. It stands for the loop when:
+
+- the four lines meet near right angles (`beautify.box_geometry`'s tolerance);
+- each side runs straight, on the drawn points, for most of its length (`STRAIGHT_SHARE`): an octagon's sides, a
+  house's roof, a hexagon's do not;
+- the loop leaves the box's outline only inside it, at no more than `MAX_CUT` of its corners (a box with its four
+  corners cut is an octagon);
+- and it covers the loop nearly as drawn (`polygon_checks.BOX_OVERLAP`, intersection over union): a rounding or a cut
+  changes a box's area by a few per cent, where a pentagon's fifth corner or a notch changes it by more.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import quads
+from physink_tui.scene.recognition.beautify import box_geometry, shape_points
+from physink_tui.scene.recognition.candidates import Pending
+from physink_tui.scene.recognition.polygon_checks import BOW_SHARE, BOX_OVERLAP, crossings, overlap
+from physink_tui.scene.recognition.polygon_fit import PolygonFit
+from physink_tui.scene.recognition.primitives import Box, Polygon, Recognition
+from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside
+
+STRAIGHT_SHARE = 0.5
+"""Each side of the box runs straight on the drawn points for at least this share of its length (a regular octagon's
+sides, inside the square round it, for 0.41 of it)."""
+MAX_CUT = 2
+"""A box may have this many corners rounded or cut; with more it is another shape (an octagon: four cut)."""
+MOST_SIDES = 6
+"""A fit of up to this many sides is judged (four kept, the others taken for a rounding or a cut): a box's corner
+rounded or cut takes one side of a fit, or two."""
+FEWEST_SIDES = 5
+"""Only a polygon of this many sides or more is judged again: a four-sided one is a box or the quad drawn by
+`quads`' rules (a trapezoid, a rhombus)."""
+OFF_SIDE_POINTS = 3
+"""A corner counts as rounded or cut where at least this many of the loop's points leave the box's outline there
+(one or two are jitter)."""
+
+
+def _line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    centre = run.mean(axis=0)
+    _, _, vt = np.linalg.svd(run - centre, full_matrices=False)
+    return centre, vt[0]
+
+
+def _off(run: np.ndarray, centre: np.ndarray, direction: np.ndarray) -> np.ndarray:
+    rel = run - centre
+    return np.asarray(np.abs(rel[:, 0] * direction[1] - rel[:, 1] * direction[0]))
+
+
+def _longest(mask: np.ndarray) -> tuple[int, int]:
+    """The first and last index of the longest run of True in ``mask`` ((0, -1) where there is none)."""
+    best, start, found = 0, 0, (0, -1)
+    for i, on in enumerate([*mask.tolist(), False]):
+        if on and (i == 0 or not mask[i - 1]):
+            start = i
+        if not on and i > 0 and mask[i - 1] and i - start > best:
+            best, found = i - start, (start, i - 1)
+    return found
+
+
+Part = tuple[np.ndarray, np.ndarray, float, int, int]
+"""A side's straight part: its line's centre and direction, its length along the line, and where it starts and ends
+(indices into the side's points)."""
+
+
+def straight_part(run: np.ndarray, noise: float) -> Part | None:
+    """The line of a side's straight part (its centre and direction) and that part's length along it: the longest
+    stretch of the side's points within `BOW_SHARE` of the side's chord (plus twice the noise) of a line fitted to
+    them, found from the side's middle two thirds and refitted twice; None for a side of under six points."""
+    k = len(run)
+    if k < 6:
+        return None
+    a, b = k // 6, k - k // 6 - 1
+    band = BOW_SHARE * float(np.hypot(*(run[-1] - run[0]))) + 2 * noise
+    for _ in range(3):
+        centre, direction = _line(run[a:b + 1])
+        a, b = _longest(_off(run, centre, direction) <= band)
+        if b - a < 2:
+            return None
+    part = run[a:b + 1]
+    centre, direction = _line(part)
+    along = (part - centre) @ direction
+    return centre, direction, float(along.max() - along.min()), a, b
+
+
+def _meet(p: np.ndarray, d: np.ndarray, q: np.ndarray, e: np.ndarray) -> np.ndarray | None:
+    det = float(e[0] * d[1] - d[0] * e[1])
+    if abs(det) < 1e-9:
+        return None
+    t = float(e[0] * (q - p)[1] - (q - p)[0] * e[1]) / det
+    return p + t * d
+
+
+def _inside(points: np.ndarray, corners: np.ndarray) -> np.ndarray:
+    """Whether each point lies inside the convex outline through ``corners``."""
+    a, b = corners, np.roll(corners, -1, axis=0)
+    cross = ((b - a)[None, :, 0] * (points[:, None, 1] - a[None, :, 1])
+             - (b - a)[None, :, 1] * (points[:, None, 0] - a[None, :, 0]))
+    return np.asarray((cross >= 0).all(axis=1) | (cross <= 0).all(axis=1))
+
+
+def _gaps(points: np.ndarray, corners: np.ndarray) -> np.ndarray:
+    """Each point's distance to each side of the closed outline through ``corners`` (points by sides)."""
+    a, b = corners, np.roll(corners, -1, axis=0)
+    ab = b - a
+    rel = points[:, None, :] - a[None, :, :]
+    u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
+    return np.asarray(np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)))
+
+
+def _rounding(corner: np.ndarray, shorter: float, noise: float) -> bool | None:
+    """What the loop's points between two sides' straight parts (``corner``, in order) are: None where they are a
+    corner turned sharply (no longer than a side may bow: `BOW_SHARE` of the ``shorter`` side, plus twice the noise;
+    the sides' straight parts run into it); True where they bow out of their own chord by more than that share of it
+    (plus the noise), a corner rounded off; False where they run straight, a side of their own (a pentagon's fifth, a
+    corner cut), or in one step (a device's sparse events: no bow to tell a rounding by)."""
+    chord = corner[-1] - corner[0]
+    length = float(np.hypot(*chord))
+    if length <= BOW_SHARE * shorter + 2 * noise:
+        return None
+    if len(corner) < 3:
+        return False
+    rel = corner - corner[0]
+    bow = float(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]).max()) / length
+    return bow > BOW_SHARE * length + 2 * noise
+
+
+def box_of(fit: PolygonFit, kept: tuple[int, ...], loop: np.ndarray, noise: float, sharp: int = 0) -> Box | None:
+    """The box that four sides of a closed polygonal ``fit`` of ``loop`` (``kept``: which, in order round the loop; any
+    others are taken for a corner's rounding or cut) stand for, when their straight parts meet near right angles and
+    the loop is that box with at most `MAX_CUT` corners rounded or cut (see the module's docstring)."""
+    pts, idx = fit.points, fit.indices
+    parts = [straight_part(pts[idx[i]:idx[i + 1] + 1], noise) for i in kept]
+    lines = [p for p in parts if p is not None]
+    if len(lines) != 4:
+        return None
+    corners = []
+    for (p, d, *_), (q, e, *_) in zip(lines[-1:] + lines[:-1], lines, strict=True):
+        corner = _meet(p, d, q, e)
+        if corner is None:
+            return None
+        corners.append(corner)
+    quad = np.array(corners)
+    box = box_geometry(quad)
+    if box is None:
+        return None
+    sides = np.hypot(*(np.roll(quad, -1, axis=0) - quad).T)
+    if any(part[2] < STRAIGHT_SHARE * side for part, side in zip(lines, sides, strict=True)):
+        return None
+    ring = pts[:-1]  # the loop from the fit's start, not repeated
+    m = len(ring)
+    rounded = []
+    for j in range(4):  # the points between side j's straight part and the next one's, across the loop's start
+        start, end = idx[kept[j]] + lines[j][4], idx[kept[(j + 1) % 4]] + lines[(j + 1) % 4][3]
+        between = ring[np.arange(start, end + (m if end < start else 0) + 1) % m]
+        rounded.append(_rounding(between, float(min(sides[j], sides[(j + 1) % 4])), noise))
+    if False in rounded or True not in rounded or rounded.count(None) < sharp:
+        return None  # a corner cut by a side of its own, or none rounded: the polygon's rules stand
+    off = (_gaps(loop, quad) > BOW_SHARE * sides + 2 * noise).all(axis=1)  # as far from each side as it may bow
+    if (off & ~_inside(loop, quad)).any():
+        return None  # the loop strays outside the box: not a corner rounded or cut
+    nearest = np.hypot(*(loop[:, None, :] - quad[None, :, :]).transpose(2, 0, 1)).argmin(axis=1)
+    if int(np.count_nonzero(np.bincount(nearest[off], minlength=4) >= OFF_SIDE_POINTS)) > MAX_CUT:
+        return None
+    if overlap(quad, loop) < BOX_OVERLAP:
+        return None  # a pentagon's fifth corner, a notch: more than a rounding or a cut
+    squared = _box_on_sides(box, lines) or box
+    if (quads.trapezoid(quad) or quads.rhombus(quad)) and overlap(shape_points(squared), quad) < quads.KEEPS:
+        return None  # a trapezoid or a rhombus drawn, kept as drawn (`quads`)
+    return squared
+
+
+def _box_on_sides(box: Box, lines: list[Part]) -> Box | None:
+    """``box`` (turned as the quad's sides run) placed where the four sides' straight parts lie, as
+    `candidates._box_from_sides` places a box on a fit's sides; None where they do not pair up two by two."""
+    c, s = math.cos(box.angle), math.sin(box.angle)
+    axes = np.array([[c, s], [-s, c]])
+    offsets: list[list[float]] = [[], []]  # sides along u (positions along v), sides along v (along u)
+    for centre, direction, *_ in lines:
+        along_u = abs(float(direction @ axes[0])) >= abs(float(direction @ axes[1]))
+        offsets[0 if along_u else 1].append(float(centre @ axes[1 if along_u else 0]))
+    if sorted(map(len, offsets)) != [2, 2]:
+        return None
+    (v0, v1), (u0, u1) = sorted(offsets[0]), sorted(offsets[1])
+    centre = axes[0] * (u0 + u1) / 2 + axes[1] * (v0 + v1) / 2
+    return Box((float(centre[0]), float(centre[1])), u1 - u0, v1 - v0, box.angle)
+
+
+def box_after_all(ranked: Recognition, polygons: list[Pending], loop: np.ndarray, raw: np.ndarray, noise: float,
+                  diag: float) -> Recognition:
+    """``ranked``, a polygon, read as the box it is with a corner or two rounded or cut (`box_of` of a four-sided fit
+    of ``loop``, within the stroke's bounds as any box: `ranking.BOX_MARGIN`; ``polygons``: every closed polygonal fit,
+    ``raw``: the stroke's own points, ``diag`` their diagonal); ``ranked`` where no fit makes one."""
+    round_reading = ranked.kind in ("circle", "ellipse")
+    if not round_reading and (ranked.kind != "polygon" or not isinstance(ranked.geometry, Polygon)
+                              or len(ranked.geometry.points) < FEWEST_SIDES or crossings(ranked.geometry.points) > 1):
+        return ranked
+    lo, hi = bounds(raw, noise, diag, BOX_MARGIN)
+    for pending in polygons:
+        if not 8 <= pending.params <= 2 * MOST_SIDES:
+            continue
+        for fit, kept in ((f, k) for f in pending.fits for k in itertools.combinations(range(len(f.indices) - 1), 4)):
+            box = box_of(fit, kept, loop, noise, sharp=2 if round_reading else 0)
+            if box is not None and inside(box, lo, hi):
+                return Recognition("box", ranked.confidence, box, ((str(ranked.kind), 1.0 - ranked.confidence),))
+    return ranked
