@@ -1,7 +1,8 @@
 """Benchmark: closed shapes the design sets hardly hold (many-sided polygons, rhombi, parallelograms, trapezoids,
 ovals, rounded rectangles) drawn by the project's two pen models, read cornered or round as a person means them.
 
-Usage: .venv/bin/python benchmarks/bench_closed_shapes.py [--seeds A:B] [--held-back] [--rules] [--json OUT] [--families A,B]
+Usage: .venv/bin/python benchmarks/bench_closed_shapes.py [--seeds A:B] [--held-back] [--rules] [--json OUT]
+       [--families A,B]
 
 Each family (`FAMILIES`) draws a shape from its own seeded generator (``random.Random(f"{family}:{seed}")``: sizes
 40-400 px across, turned, stretched) and each pen draws it with the same seed: the careful virtual pen

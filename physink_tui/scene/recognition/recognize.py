@@ -25,13 +25,13 @@ import numpy as np
 from physink_tui.scene.recognition import (
     angular_braces,
     closed_loops,
-    cut_corners,
     landing,
     open_shapes,
     pen_lifts,
     pen_noise,
     ranker,
     round_brackets,
+    rounded_corners,
     stairs,
     units,
     waves,
@@ -293,7 +293,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
-    ranked = cut_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
+    ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
         return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag)

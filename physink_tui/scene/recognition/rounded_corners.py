@@ -1,19 +1,21 @@
-"""A loop read as a polygon that is a box with a corner or two rounded or cut by a hurried hand; geometry only, no I/O.
+"""A loop read as a polygon or as round that is a box a hand rounded a corner or two of; geometry only, no I/O.
 
-A box is four straight sides meeting near right angles. A hand that rounds a corner off (a mouse swung round it) or
-cuts it short draws the corner's two sides straight only up to where the rounding begins, and the polygonal fit
-then spends a fifth or sixth side on the rounding, or puts a vertex in its middle, which skews the quad past a box's
-corner tolerance. Here each side of the best four-sided fit is judged by its straight part alone (the points within
-the straightness `polygon_checks.BOW_SHARE` allows a side, plus the pen's noise), and the box is where those straight
+A box is four straight sides meeting near right angles. A hand that swings round a corner (a mouse, in a hurry) draws
+the corner's two sides straight only up to where the bend begins; the polygonal fit then spends a fifth or sixth side
+on the bend, or puts a vertex in its middle, skewing the quad past a box's corner tolerance, and a mouse's stepped
+sides with a corner swung round may look like a lumpy circle. Here four sides of a fit (of four to `MOST_SIDES`
+sides; any others taken for a corner's bend) are judged by their straight parts alone (the points within the
+straightness `polygon_checks.BOW_SHARE` allows a side, plus twice the pen's noise), and the box is where those straight
 parts' lines meet. It stands for the loop when:
 
 - the four lines meet near right angles (`beautify.box_geometry`'s tolerance);
-- each side runs straight, on the drawn points, for most of its length (`STRAIGHT_SHARE`): an octagon's sides, a
-  house's roof, a hexagon's do not;
-- the loop leaves the box's outline only inside it, at no more than `MAX_CUT` of its corners (a box with its four
-  corners cut is an octagon);
-- and it covers the loop nearly as drawn (`polygon_checks.BOX_OVERLAP`, intersection over union): a rounding or a cut
-  changes a box's area by a few per cent, where a pentagon's fifth corner or a notch changes it by more.
+- each side runs straight on the drawn points for at least `STRAIGHT_SHARE` of its length (an octagon's sides, a
+  house's roof do not);
+- between two sides' straight parts the loop either turns sharply (a corner) or bows out of its own chord (a corner
+  rounded off), at least once so; where it runs straight instead it is a side of its own (a pentagon's fifth, a
+  hexagon's, a corner cut short), and the polygon's rules stand (a loop read round also needs two sharp corners);
+- the loop leaves the box's outline only inside it, at no more than `MAX_CUT` corners, and the quad covers it nearly as
+  drawn (`polygon_checks.BOX_OVERLAP`, intersection over union); a trapezoid or a rhombus is kept as `quads` keeps it.
 """
 
 from __future__ import annotations
@@ -35,15 +37,19 @@ STRAIGHT_SHARE = 0.5
 """Each side of the box runs straight on the drawn points for at least this share of its length (a regular octagon's
 sides, inside the square round it, for 0.41 of it)."""
 MAX_CUT = 2
-"""A box may have this many corners rounded or cut; with more it is another shape (an octagon: four cut)."""
+"""A box may have this many corners rounded off; with more it is a rounded rectangle, which the ranking reads itself
+(`tests/stroke_cases.py`), or a round shape."""
 MOST_SIDES = 6
-"""A fit of up to this many sides is judged (four kept, the others taken for a rounding or a cut): a box's corner
-rounded or cut takes one side of a fit, or two."""
+"""A fit of up to this many sides is judged (four kept, the others taken for a corner's bend): a bend takes one side of
+a fit, or two."""
 FEWEST_SIDES = 5
 """Only a polygon of this many sides or more is judged again: a four-sided one is a box or the quad drawn by
 `quads`' rules (a trapezoid, a rhombus)."""
+SHARP_IF_READ_ROUND = 2
+"""A loop the ranking read as a circle or an ellipse is a box only with this many of its corners sharp: its corners are
+what the ranking missed, so they must be there to see."""
 OFF_SIDE_POINTS = 3
-"""A corner counts as rounded or cut where at least this many of the loop's points leave the box's outline there
+"""A corner counts as rounded where at least this many of the loop's points leave the box's outline there
 (one or two are jitter)."""
 
 
@@ -138,8 +144,9 @@ def _rounding(corner: np.ndarray, shorter: float, noise: float) -> bool | None:
 
 def box_of(fit: PolygonFit, kept: tuple[int, ...], loop: np.ndarray, noise: float, sharp: int = 0) -> Box | None:
     """The box that four sides of a closed polygonal ``fit`` of ``loop`` (``kept``: which, in order round the loop; any
-    others are taken for a corner's rounding or cut) stand for, when their straight parts meet near right angles and
-    the loop is that box with at most `MAX_CUT` corners rounded or cut (see the module's docstring)."""
+    others are taken for a corner's bend) stand for, when their straight parts meet near right angles and the loop is
+    that box with one to `MAX_CUT` corners rounded off and at least ``sharp`` turned sharply (see the module's
+    docstring)."""
     pts, idx = fit.points, fit.indices
     parts = [straight_part(pts[idx[i]:idx[i + 1] + 1], noise) for i in kept]
     lines = [p for p in parts if p is not None]
@@ -169,12 +176,12 @@ def box_of(fit: PolygonFit, kept: tuple[int, ...], loop: np.ndarray, noise: floa
         return None  # a corner cut by a side of its own, or none rounded: the polygon's rules stand
     off = (_gaps(loop, quad) > BOW_SHARE * sides + 2 * noise).all(axis=1)  # as far from each side as it may bow
     if (off & ~_inside(loop, quad)).any():
-        return None  # the loop strays outside the box: not a corner rounded or cut
+        return None  # the loop strays outside the box: not a corner rounded off
     nearest = np.hypot(*(loop[:, None, :] - quad[None, :, :]).transpose(2, 0, 1)).argmin(axis=1)
     if int(np.count_nonzero(np.bincount(nearest[off], minlength=4) >= OFF_SIDE_POINTS)) > MAX_CUT:
         return None
     if overlap(quad, loop) < BOX_OVERLAP:
-        return None  # a pentagon's fifth corner, a notch: more than a rounding or a cut
+        return None  # a notch, a bulge: more than a corner rounded off
     squared = _box_on_sides(box, lines) or box
     if (quads.trapezoid(quad) or quads.rhombus(quad)) and overlap(shape_points(squared), quad) < quads.KEEPS:
         return None  # a trapezoid or a rhombus drawn, kept as drawn (`quads`)
@@ -199,9 +206,10 @@ def _box_on_sides(box: Box, lines: list[Part]) -> Box | None:
 
 def box_after_all(ranked: Recognition, polygons: list[Pending], loop: np.ndarray, raw: np.ndarray, noise: float,
                   diag: float) -> Recognition:
-    """``ranked``, a polygon, read as the box it is with a corner or two rounded or cut (`box_of` of a four-sided fit
-    of ``loop``, within the stroke's bounds as any box: `ranking.BOX_MARGIN`; ``polygons``: every closed polygonal fit,
-    ``raw``: the stroke's own points, ``diag`` their diagonal); ``ranked`` where no fit makes one."""
+    """``ranked`` (a polygon of `FEWEST_SIDES` or more, or a circle or an ellipse) read as the box it is with a corner
+    or two rounded off (`box_of` four sides of a fit of ``loop``, within the stroke's bounds as any box:
+    `ranking.BOX_MARGIN`; ``polygons``: every closed polygonal fit, ``raw``: the stroke's own points, ``diag`` their
+    diagonal, ``noise`` the pen's in their units); ``ranked`` where no fit makes one."""
     round_reading = ranked.kind in ("circle", "ellipse")
     if not round_reading and (ranked.kind != "polygon" or not isinstance(ranked.geometry, Polygon)
                               or len(ranked.geometry.points) < FEWEST_SIDES or crossings(ranked.geometry.points) > 1):
@@ -211,7 +219,7 @@ def box_after_all(ranked: Recognition, polygons: list[Pending], loop: np.ndarray
         if not 8 <= pending.params <= 2 * MOST_SIDES:
             continue
         for fit, kept in ((f, k) for f in pending.fits for k in itertools.combinations(range(len(f.indices) - 1), 4)):
-            box = box_of(fit, kept, loop, noise, sharp=2 if round_reading else 0)
+            box = box_of(fit, kept, loop, noise, sharp=SHARP_IF_READ_ROUND if round_reading else 0)
             if box is not None and inside(box, lo, hi):
                 return Recognition("box", ranked.confidence, box, ((str(ranked.kind), 1.0 - ranked.confidence),))
     return ranked
