@@ -49,6 +49,16 @@ def test_a_persons_rectangle_with_a_corner_rounded_off_is_a_box(file: str) -> No
     assert got.kind == "box", (file, got.kind, got.alternatives)
 
 
+SQUARISH_CIRCLE = "klarubbio/hcira_p1@e8eb332:xml/s07/circle08.xml"
+"""A person's circle (hcira, a design set) with flat stretches and no sharp corner: a box if a loop read round needed
+no sharp corners to be read again (`rounded_corners.SHARP_IF_READ_ROUND`)."""
+
+
+def test_a_persons_circle_with_flat_stretches_stays_round() -> None:
+    got = recognize_stroke(_points(SQUARISH_CIRCLE))
+    assert got.kind in ("circle", "ellipse"), (got.kind, got.alternatives)
+
+
 def _journal(points: list[list[float]], centre: tuple[float, float] = (800.0, 500.0),
              step: float = 0.01) -> list[JournalEntry]:
     """The stroke moved to ``centre`` of the scenarios' 1600 x 1000 canvas, as a mouse sends it (an event every
