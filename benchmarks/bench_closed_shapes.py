@@ -11,6 +11,7 @@ its times and without. What a person expects (`EXPECTED`, the rule written down 
 docs/BENCHMARKS.md "Closed shapes drawn by the pen models"):
 
 - a convex pentagon, hexagon or octagon, regular or not, is a polygon (a box when it is four-sided never happens);
+- a star's outline of 5-7 points, its inner corners at 0.35-0.75 of its tips' radius, is a polygon;
 - a rhombus (diamond), a parallelogram or a trapezoid is cornered: a box where squaring it stays within the stroke
   (`beautify.box_geometry`), else the four-sided polygon drawn;
 - a rectangle with rounded corners (radius up to a quarter of its short side: straight sides longer than the arcs) is
@@ -138,6 +139,22 @@ def rounded_rectangle(rng: random.Random) -> Shape:
     return Outline(_turned(_fit_size(pts, rng.uniform(40, 400)), rng.uniform(-0.4, 0.4)))
 
 
+def star(points: int) -> Callable[[random.Random], Shape]:
+    """A star's outline drawn round in one stroke, as the Quick, Draw! players drew theirs: ``points`` tips at radius
+    0.85-1.15, the inner corners at 0.35-0.75 of it (each apart: a hurried hand makes some nearly flat), every corner
+    up to 0.15 of a step off its place, stretched 0.75-1, turned."""
+    def make(rng: random.Random) -> Shape:
+        step = math.pi / points
+        phase = rng.uniform(0, 2 * math.pi)
+        stretch = rng.uniform(0.75, 1.0)
+        pts = [(r * math.cos(a), stretch * r * math.sin(a))
+               for a, r in ((phase + step * (k + rng.uniform(-0.15, 0.15)),
+                             rng.uniform(0.85, 1.15) * (1.0 if k % 2 == 0 else rng.uniform(0.35, 0.75)))
+                            for k in range(2 * points))]
+        return Outline(_turned(_fit_size(pts, rng.uniform(60, 400)), rng.uniform(0, math.pi)))
+    return make
+
+
 def circle(rng: random.Random) -> Shape:
     return Oval(CENTRE, rng.uniform(20, 200), 0.0)
 
@@ -153,11 +170,11 @@ FAMILIES: dict[str, Callable[[random.Random], Shape]] = {
     "pentagon": regular(5), "hexagon": regular(6), "octagon": regular(8),
     "pentagon-irregular": irregular(5), "hexagon-irregular": irregular(6), "octagon-irregular": irregular(8),
     "rhombus": rhombus, "parallelogram": parallelogram, "trapezoid": trapezoid,
-    "rounded-rectangle": rounded_rectangle,
+    "rounded-rectangle": rounded_rectangle, "star-5": star(5), "star-6": star(6), "star-7": star(7),
     "circle": circle, "oval-1.3-1.8": oval(1.3, 1.8), "oval-1.8-3": oval(1.8, 3.0),
 }
 EXPECTED: dict[str, tuple[str, ...]] = {
-    **{f: ("polygon",) for f in FAMILIES if f.startswith(("pentagon", "hexagon", "octagon"))},
+    **{f: ("polygon",) for f in FAMILIES if f.startswith(("pentagon", "hexagon", "octagon", "star"))},
     "rhombus": CORNERED, "parallelogram": CORNERED, "trapezoid": CORNERED, "rounded-rectangle": ("box",),
     "circle": ROUND, "oval-1.3-1.8": ("ellipse",), "oval-1.8-3": ("ellipse",),
 }
@@ -269,7 +286,11 @@ def main() -> None:
     parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
     parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
     parser.add_argument("--json", type=Path, help="write every reading here")
+    parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
     args = parser.parse_args()
+    if args.families:
+        for name in set(FAMILIES) - set(args.families.split(",")):
+            del FAMILIES[name]
     if args.held_back:
         seeds, name = HELD_BACK_SEEDS, "held-back seeds 1000-1029"
     elif args.seeds:

@@ -25,13 +25,45 @@ LUMPY_ASPECT = 0.5
 person is rarely flatter than 2:1; a thin box is far flatter)."""
 
 
+FAR_FROM_ROUND = 2.0
+"""A closed loop whose fitted ellipse misses it by more than this many times the most a round stroke may miss
+(`open_shapes.round_error`: its normalised RMS radial error) is no circle or ellipse, however its sides fail as a
+polygon's: a star, a scribble. Measured (fits of the closed loops read round and labelled round): the 949 of the design
+sets at most 1.10 of that allowance, the 207 of the fourth group (opened, not designed on) at most 1.19; a drawn
+star's outline with deep points misses its ellipse by 2.7-3.2 of it (a regular triangle, sides at half its radius, by
+about 2)."""
+TURNS_BACK = 180.0
+"""A closed loop that turns back against its own sense by this many degrees in all (on its coarse turning,
+`stroke_geometry.coarse_turning`: 32-40 points a few noise widths apart) is no circle or ellipse: a star's outline turns
+back at each inner corner (a regular star's outline, whatever its points and depth, by 360 degrees in all, less the
+rounding its corners get), while an oval turns one way all round; a six- or seven-pointed star fits an ellipse within
+`FAR_FROM_ROUND` (a hexagram's inner corners are at 0.58 of its tips' radius) and needs more sides than
+`candidates.MAX_SIDES`. Measured on the closed loops read round and labelled round: the design sets' 949 turn back at
+most 88 degrees (a dent where the ends meet), the fourth group's 207 at most 43."""
+
+
+def no_round_shape(loop: np.ndarray, noise: float, ellipse: EllipseFit | None) -> bool:
+    """Whether a closed loop is no circle or ellipse whatever the ranking would say: its `fit_ellipse` misses it by
+    more than `FAR_FROM_ROUND` times `open_shapes.round_error`, or it turns back by `TURNS_BACK` in all (a star)."""
+    if ellipse is not None and ellipse[4] > FAR_FROM_ROUND * open_shapes.round_error(ellipse, noise):
+        return True
+    return turned_back(loop, noise) >= TURNS_BACK
+
+
+def turned_back(loop: np.ndarray, noise: float) -> float:
+    """How far (degrees, in all) a closed loop turns against the sense it turns round in, on its coarse turning."""
+    th = sg.coarse_turning(loop, noise)
+    sense = 1.0 if float(th.sum()) >= 0.0 else -1.0
+    return float(np.degrees(-sense * th[th * sense < 0].sum()))
+
+
 def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw: np.ndarray, diag: float) -> bool:
     """A closed loop about as wide as it is long (its ellipse, `fit_ellipse` of it, no flatter than `LUMPY_ASPECT`)
     that turns smoothly all round: a circle drawn lumpily, whose lumps are not sides (a thin box's jittery long sides
     are not lumps); or sampled by a few events that it turns at nearly every one of (`pen_noise.turns_at_every_event`:
     a circle by 8-12 events is an octagon to fit, but a drawn polygon runs straight through its events between
     corners)."""
-    if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
+    if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1] or no_round_shape(loop, noise, ellipse):
         return False
     return (sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH
             or pen_noise.turns_at_every_event(raw, diag))
