@@ -11,7 +11,7 @@ import numpy as np
 from physink_tui.scene.recognition import open_shapes, pen_noise
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
+from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
 from physink_tui.scene.recognition.polygon_checks import crossings
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
@@ -143,7 +143,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     tail, head = work[n // 2:], work[: max(2, n // 2)]
     d_tail = np.hypot(*(tail - work[0]).T)
     d_head = np.hypot(*(head - work[-1]).T)
-    if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit:
+    if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit and not ends_cross(work, diag):
         return False, work, None
     loop = cut_ends(work, gap, d_tail, d_head)
     if len(loop) < 8:
@@ -156,3 +156,27 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
 
 CLOSED_GAP = 0.2
 """A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
+
+
+def ends_cross(work: np.ndarray, diag: float) -> bool:
+    """Whether the stroke's ends ran on past each other after closing it: its path crosses itself where each end's
+    tail beyond the crossing is no longer than the gap a closed stroke's ends may leave (`CLOSED_GAP` of its size):
+    a triangle closed in a hurry, its tails crossing at a corner, however far apart the ends lifted. A delete mark's or
+    an x's first and last strokes cross at their middles, far from the ends; a pigtail's crossing is between long
+    tails."""
+    k = max(2, int(END_SHARE * len(work)))
+    steps = np.hypot(*np.diff(work, axis=0).T)
+    along = np.concatenate([[0.0], np.cumsum(steps)])
+    head_n = int(np.searchsorted(along, CLOSED_GAP * diag, side="right"))
+    tail_n = int(np.searchsorted(along[-1] - along[::-1], CLOSED_GAP * diag, side="right"))
+    head, tail = work[:min(head_n + 1, k)], work[len(work) - min(tail_n + 1, k):]
+    if len(head) < 2 or len(tail) < 2:
+        return False
+    p, r = head[:-1, None, :], np.diff(head, axis=0)[:, None, :]
+    q, s = tail[None, :-1, :], np.diff(tail, axis=0)[None, :, :]
+    den = r[..., 0] * s[..., 1] - r[..., 1] * s[..., 0]
+    qp = q - p
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (qp[..., 0] * s[..., 1] - qp[..., 1] * s[..., 0]) / den
+        u = (qp[..., 0] * r[..., 1] - qp[..., 1] * r[..., 0]) / den
+    return bool(np.any((den != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)))
