@@ -95,7 +95,8 @@ def _arm_corner(pts: np.ndarray, within: int, noise: float) -> int | None:
 def _tick(arm: np.ndarray, rest: np.ndarray, noise: float, length: float) -> bool:
     """Whether ``arm`` (from the stroke's end to the corner) is a straight short arm (once a hook where the pen landed,
     `lines.HOOK_REACH` noise widths at most, is left out of it, half the arm at most) and ``rest`` (on from the corner)
-    a straight side with no point, their chords not in line."""
+    a straight side with no point, their chords (the arm's without the hook) not in line: a hook and the first few
+    noise widths of a line are no arm, their chord running on along the line."""
     along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(arm, axis=0).T))])
     core = arm[along >= min(lines.HOOK_REACH * noise, along[-1] / 2)]  # without a hook where the pen landed
     if len(core) > 2 and sg.chord_deviation(core) >= sg.ARM_STRAIGHT:
@@ -105,6 +106,6 @@ def _tick(arm: np.ndarray, rest: np.ndarray, noise: float, length: float) -> boo
     middle = rest[len(rest) // 5: len(rest) - len(rest) // 5]
     if sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= sg.POINT_TURN_DEG:
         return False
-    u, v = arm[-1] - arm[0], rest[-1] - rest[0]
+    u, v = core[-1] - core[0], rest[-1] - rest[0]  # the arm's own heading, not a hook's
     norms = float(np.hypot(*u) * np.hypot(*v))
     return norms > 0.0 and float(u @ v) <= math.cos(math.radians(CORNER_DEG)) * norms  # not a bend in a line
