@@ -95,7 +95,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    it by a bend of about a right angle, half a turn in all) is a polyline with its corners where its sides meet
    (`round_brackets`); a brace drawn as straight runs between cusps (running along its ends' line on one side of it,
    its arms parallel to it and off it, its point about halfway sticking out past them) is not a polyline
-   (`angular_braces`); neither, so read, is asked of the ranker below.
+   (`angular_braces`); neither, so read, is asked of the ranker below. A curve, arc or polyline so read whose one
+   end is a straight short arm longer than a landing hook reaches (`lines.HOOK_REACH`) but within the tenth of the
+   path the rules cut as a hook, standing off a straight long arm at a tick's angle, is a tick: a polyline through
+   its start, point and end (`hooked_ticks`), not asked of the ranker either.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -143,6 +146,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   judged at its sides' scale, read as a polyline through its corners
 - `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline)
 - `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), read as a brace (a curve)
+- `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the
+  tenth the rules cut as one), read as a tick (a polyline)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few

@@ -25,6 +25,7 @@ import numpy as np
 from physink_tui.scene.recognition import (
     angular_braces,
     closed_loops,
+    hooked_ticks,
     landing,
     open_shapes,
     pen_lifts,
@@ -202,15 +203,22 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
         # (`sparse_bends`: a device's few events make any stroke straight runs joined at sharp turns)
         chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise)
+        # a tick whose short arm the rules cut as a hook (under a tenth of the path, longer than a hook reaches)
+        tick = (hooked_ticks.hooked_tick(unit, unit_noise)
+                if chain is None and not wavy and result.kind in hooked_ticks.READ_AS else None)
     if chain is not None:
         result = chain
+    if tick is not None:
+        result = tick
     if result.geometry is None:
         return result
     result = replace(result, geometry=scale_geometry(result.geometry, origin, scale))
     # a wave is not asked of the model (the people it was fitted on drew none), nor a chain of sharp corners (its
-    # 64 points smooth small steps away), nor a mark straight-armed as drawn, nor a square bracket whose corners were
-    # rounded off, nor a brace drawn as straight runs the rules read as a curve
-    if (not learned or wavy or chain is not None or open_shapes.straight_armed_mark(result, pts, noise)
+    # 64 points smooth small steps away), nor a tick whose short arm is a few percent of it (the model takes it for a
+    # curve), nor a mark straight-armed as drawn, nor a square bracket whose corners were rounded off, nor a brace
+    # drawn as straight runs the rules read as a curve
+    if (not learned or wavy or chain is not None or tick is not None
+            or open_shapes.straight_armed_mark(result, pts, noise)
             or round_brackets.kept_bracket(result, unit, unit_noise)
             or angular_braces.kept_brace(result, unit, unit_noise)):
         return result
