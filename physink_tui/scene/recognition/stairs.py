@@ -81,7 +81,10 @@ def corner_chain(unit: np.ndarray, noise: float) -> np.ndarray | None:
     n = int(min(MAX_POINTS, max(MIN_POINTS, length / (SPACING * noise))))
     work = sg.smooth(sg.resample(unit, n))
     th = sg.turning(work)
-    corners = _stubs_dropped(work, _joined(work, th, _corners(th, len(work))))
+    corners = _corners(th, len(work))
+    if len(corners) < MIN_CORNERS + 2:
+        return None  # (joining and dropping stubs only take corners away)
+    corners = _stubs_dropped(work, _joined(work, th, corners))
     if len(corners) < MIN_CORNERS + 2:
         return None
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
@@ -165,8 +168,8 @@ def _corners(th: np.ndarray, n: int) -> list[int]:
     may = (sharpness >= least / (2 * REACH + 1)) & (whole[hi] - whole[lo] >= least * (1 - 1e-9))
     free = np.ones(len(th), dtype=bool)  # turning not yet counted by a corner (th[k - 1] is point k's)
     taken: list[int] = []
-    order = np.argsort(-sharpness, kind="stable")
-    for k in order[may[order]].tolist():
+    looked = np.flatnonzero(may)
+    for k in looked[np.argsort(-sharpness[looked], kind="stable")].tolist():
         c, a, b = k + 1, int(lo[k]), int(hi[k])
         if free[c - 1] and abs(float(th[a:b][free[a:b]].sum())) >= least:
             taken.append(c)
