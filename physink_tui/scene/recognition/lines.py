@@ -4,7 +4,6 @@ told from a bow drawn on purpose (a circle explains it) and from a mark's short 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 
 import numpy as np
 
@@ -57,29 +56,26 @@ HOOK_SHARE = 1 / 3
 """... and at most this share of the stroke's path (a longer piece is a mark's arm)."""
 
 
-def unhooked(raw: np.ndarray, noise: float,
-             worth: Callable[[np.ndarray], bool] | None = None) -> list[np.ndarray]:
+def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     """``raw`` without a hook's length (`HOOK_REACH`, `HOOK_SHARE`) of path at its start, and without one at its end
     (``noise`` in ``raw``'s units), each to be judged by the line test again; none where the stroke is too short, nor
     an end whose cut piece is a mark's arm (`_arm`). A short line's hook is a large share of it, more than
     `stroke_geometry.remove_hooks` cuts (a tenth of the path). Not both ends at once: short pieces standing off both
     ends are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px spine), and a hand hooks one end far more
-    often than both (mmg's lines: the start 2 %, the end 13 %). ``worth``, where given, tells which pieces are worth
-    judging at all (asked before the corner test, which costs more)."""
+    often than both (mmg's lines: the start 2 %, the end 13 %)."""
     steps = np.hypot(*np.diff(raw, axis=0).T)
     along = np.concatenate([[0.0], np.cumsum(steps)])
     length = float(along[-1])
     cut = min(HOOK_REACH * noise, HOOK_SHARE * length)
-    if not cut > 0:
-        return []  # too short
+    if not cut > 0 or sharp_corner(raw, noise):
+        return []  # too short, or a mark's corner (a short arm's) where a hook would be
     at_head, at_tail = _at(raw, along, cut), _at(raw, along, length - cut)  # where each cut falls, between points
     head = np.vstack([raw[along < cut], at_head])  # each piece from the stroke's end inwards
     tail = np.vstack([raw[along > length - cut][::-1], at_tail])
     after_head = np.vstack([at_head, raw[along > cut]])
     before_tail = np.vstack([raw[along < length - cut], at_tail])
-    kept = [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
-            if len(rest) >= 2 and not _arm(piece, inward) and (worth is None or worth(rest))]
-    return [] if not kept or sharp_corner(raw, noise) else kept  # a mark's corner (a short arm's) where a hook would be
+    return [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
+            if len(rest) >= 2 and not _arm(piece, inward)]
 
 
 def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
@@ -88,7 +84,7 @@ def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
     (`open_shapes._line`): cutting c of path from an end moves that end by c at most and shrinks the diagonal by c at
     most (what is cut lies along c of path from the new end), and no cut is longer than `HOOK_REACH` noise widths, so
     the ends must be at least half the diagonal less 1.5 c apart. Asked before `unhooked`, whose corner test costs more
-    (most strokes that are no line have their ends close: a closed shape's, a curl's); a hair's margin for rounding."""
+    (a closed shape's or a curl's ends are close); a hair's margin for rounding."""
     return float(np.hypot(*(raw[-1] - raw[0]))) + 1.5 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
 
 

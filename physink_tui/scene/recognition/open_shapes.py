@@ -76,8 +76,8 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     if (found is None or loose) and lines.ends_may_span(raw, pen, diag):
         # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
         # straightest line left once a hook is cut is the line drawn (its ends where the hand meant them)
-        for kept in lines.unhooked(raw, pen, _ends_span):  # where a line was found already, the plain line test may
-            cut, _, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen, bow=False, plain=found is not None)  # judge it
+        for kept in lines.unhooked(raw, pen):  # where a line was found already, the plain line test may judge the rest
+            cut, _, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen, bow=False, plain=found is not None)
             if cut is not None and (found is None or cut.confidence > found.confidence):
                 found = cut
     return found if found is not None else swung
