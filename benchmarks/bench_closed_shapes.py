@@ -11,6 +11,8 @@ its times and without. What a person expects (`EXPECTED`, the rule written down 
 docs/BENCHMARKS.md "Closed shapes drawn by the pen models"):
 
 - a convex pentagon, hexagon or octagon, regular or not, is a polygon (a box when it is four-sided never happens);
+- a triangle closed past its first corner, the tails crossing there, is a polygon;
+- a star's outline of 5-7 points, its inner corners at 0.35-0.75 of its tips' radius, is a polygon;
 - a rhombus (diamond), a parallelogram or a trapezoid is cornered: a box where squaring it stays within the stroke
   (`beautify.box_geometry`), else the four-sided polygon drawn;
 - a rectangle with rounded corners (radius up to a quarter of its short side: straight sides longer than the arcs) is
@@ -41,6 +43,7 @@ import numpy as np
 from bench_device_stress import coarse
 from penmodels.hurried import HurriedPen, touching
 from penmodels.shapes import Outline, Oval, Shape
+from penmodels.shapes import Path as PenPath
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
@@ -138,6 +141,43 @@ def rounded_rectangle(rng: random.Random) -> Shape:
     return Outline(_turned(_fit_size(pts, rng.uniform(40, 400)), rng.uniform(-0.4, 0.4)))
 
 
+def star(points: int) -> Callable[[random.Random], Shape]:
+    """A star's outline drawn round in one stroke, as the Quick, Draw! players drew theirs: ``points`` tips at radius
+    0.85-1.15, the inner corners at 0.35-0.75 of it (each apart: a hurried hand makes some nearly flat), every corner
+    up to 0.15 of a step off its place, stretched 0.75-1, turned."""
+    def make(rng: random.Random) -> Shape:
+        step = math.pi / points
+        phase = rng.uniform(0, 2 * math.pi)
+        stretch = rng.uniform(0.75, 1.0)
+        pts = [(r * math.cos(a), stretch * r * math.sin(a))
+               for a, r in ((phase + step * (k + rng.uniform(-0.15, 0.15)),
+                             rng.uniform(0.85, 1.15) * (1.0 if k % 2 == 0 else rng.uniform(0.35, 0.75)))
+                            for k in range(2 * points))]
+        return Outline(_turned(_fit_size(pts, rng.uniform(60, 400)), rng.uniform(0, math.pi)))
+    return make
+
+
+def crossed_triangle(rng: random.Random) -> Shape:
+    """A triangle closed in a hurry, as Quick, Draw! players drew some: the stroke lands a little before its first
+    corner, on the line of its first side, goes round, and runs on past that corner along the last side's line, the
+    two tails crossing there (each 0.05-0.2 of its longest side beyond it). Drawn as the open path it is (a
+    `penmodels.shapes.Path`); the outline meant is the triangle (`outline_of`)."""
+    while True:
+        pts = [(math.cos(a), math.sin(a)) for a in (rng.uniform(0, 2 * math.pi) for _ in range(3))]
+        (ax, ay), (bx, by), (cx, cy) = pts
+        if abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) > 0.8:  # no sliver: twice its area on the unit circle
+            break
+    a, b, c = _fit_size(pts, rng.uniform(60, 400))
+    size = max(math.dist(a, b), math.dist(b, c), math.dist(c, a))
+
+    def beyond(p: Point, q: Point, share: float) -> Point:  # past p on the line from q through p
+        d = math.dist(p, q)
+        return (p[0] + (p[0] - q[0]) * share * size / d, p[1] + (p[1] - q[1]) * share * size / d)
+
+    start, end = beyond(a, b, rng.uniform(0.05, 0.2)), beyond(a, c, rng.uniform(0.05, 0.2))
+    return PenPath(_turned([start, b, c, end], rng.uniform(0, math.pi)))
+
+
 def circle(rng: random.Random) -> Shape:
     return Oval(CENTRE, rng.uniform(20, 200), 0.0)
 
@@ -153,11 +193,12 @@ FAMILIES: dict[str, Callable[[random.Random], Shape]] = {
     "pentagon": regular(5), "hexagon": regular(6), "octagon": regular(8),
     "pentagon-irregular": irregular(5), "hexagon-irregular": irregular(6), "octagon-irregular": irregular(8),
     "rhombus": rhombus, "parallelogram": parallelogram, "trapezoid": trapezoid,
-    "rounded-rectangle": rounded_rectangle,
+    "rounded-rectangle": rounded_rectangle, "triangle-crossed": crossed_triangle,
+    "star-5": star(5), "star-6": star(6), "star-7": star(7),
     "circle": circle, "oval-1.3-1.8": oval(1.3, 1.8), "oval-1.8-3": oval(1.8, 3.0),
 }
 EXPECTED: dict[str, tuple[str, ...]] = {
-    **{f: ("polygon",) for f in FAMILIES if f.startswith(("pentagon", "hexagon", "octagon"))},
+    **{f: ("polygon",) for f in FAMILIES if f.startswith(("pentagon", "hexagon", "octagon", "star", "triangle"))},
     "rhombus": CORNERED, "parallelogram": CORNERED, "trapezoid": CORNERED, "rounded-rectangle": ("box",),
     "circle": ROUND, "oval-1.3-1.8": ("ellipse",), "oval-1.8-3": ("ellipse",),
 }
@@ -175,6 +216,11 @@ def outline_of(s: Shape, n: int = 72) -> list[Point]:
     """The outline meant, as a ring of points (an oval sampled at ``n`` points)."""
     if isinstance(s, Outline):
         return list(s.vertices)
+    if isinstance(s, PenPath):  # a triangle whose tails cross at its first corner (`crossed_triangle`)
+        (sx, sy), b, c, (ex, ey) = s.vertices
+        dx1, dy1, dx2, dy2 = b[0] - sx, b[1] - sy, ex - c[0], ey - c[1]
+        t = ((c[0] - sx) * dy2 - (c[1] - sy) * dx2) / (dx1 * dy2 - dy1 * dx2)
+        return [(sx + t * dx1, sy + t * dy1), b, c]
     assert isinstance(s, Oval)
     c, si = math.cos(s.angle), math.sin(s.angle)
     return [(s.center[0] + s.rx * math.cos(t) * c - s.ry * math.sin(t) * si,
@@ -184,9 +230,12 @@ def outline_of(s: Shape, n: int = 72) -> list[Point]:
 
 def careful(s: Shape, seed: int) -> list[tuple[float, float, float]]:
     """The virtual pen round the outline, starting at a corner (or a point of an oval) that the seed picks."""
-    ring = outline_of(s)
-    start = seed % len(ring)
-    ring = ring[start:] + ring[:start + 1]
+    if isinstance(s, PenPath):
+        ring = list(s.vertices)
+    else:
+        ring = outline_of(s)
+        start = seed % len(ring)
+        ring = ring[start:] + ring[:start + 1]
     w, h = CANVAS
     samples = VirtualPen(REFERENCE_DEVICES["windows-ink"], seed=seed).samples(
         [Stroke(tuple((x / w, y / h) for x, y in ring))])
@@ -269,7 +318,11 @@ def main() -> None:
     parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
     parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
     parser.add_argument("--json", type=Path, help="write every reading here")
+    parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
     args = parser.parse_args()
+    if args.families:
+        for name in set(FAMILIES) - set(args.families.split(",")):
+            del FAMILIES[name]
     if args.held_back:
         seeds, name = HELD_BACK_SEEDS, "held-back seeds 1000-1029"
     elif args.seeds:

@@ -7,6 +7,8 @@ wavy or curling line, a curve) fell in session 16. So the pen models draw them (
 
 - a **wave**: a sine of 1-3.5 periods, its amplitude 0.06-0.25 of its length (0.06-0.875 of its wavelength: its
   steepness), 150-450 px long, turned; expected a curve;
+- an **S** (session 19, the fourth group's squiggles): a sine of 0.8-1.2 periods starting near its middle line, two
+  bends inside its ends, 0.1-0.3 of its length high; expected a curve;
 - a **zig-zag**: 3-7 teeth of straight sides, 0.1-0.3 of its length high; expected a polyline;
 
 each drawn by the careful virtual pen (windows-ink, through the points), the hurried hand (`tests/penmodels/hurried`:
@@ -40,7 +42,7 @@ CANVAS = (1600, 1000)
 TUNING_SEEDS = range(30)
 HELD_SEEDS = range(1000, 1060)
 Point = tuple[float, float]
-EXPECTED = {"wave": "curve", "zigzag": "polyline"}
+EXPECTED = {"wave": "curve", "zigzag": "polyline", "s-curve": "curve"}
 
 
 def _place(rng: random.Random) -> tuple[float, float, float]:
@@ -65,6 +67,19 @@ def wave(seed: int) -> tuple[list[Point], float]:
     curve = [((k / 79 - 0.5) * length, amplitude * math.sin(2 * math.pi * periods * k / 79 + phase))
              for k in range(80)]
     return _placed(curve, place), amplitude * periods / length
+
+
+def s_curve(seed: int) -> list[Point]:
+    """The S of ``seed`` (80 points along it): a sine of 0.8-1.2 periods starting near its middle line, so that it
+    bends twice inside its ends (a hump and a dip, as the Quick, Draw! players' squiggles often were), 0.1-0.3 of its
+    length high, 150-450 px long, turned. Its seed is drawn apart from the waves' (``s-curve:seed``)."""
+    rng = random.Random(f"s-curve:{seed}")
+    length, periods = rng.uniform(150, 450), rng.uniform(0.8, 1.2)
+    amplitude = rng.uniform(0.1, 0.3) * length
+    place = _place(rng)
+    phase = rng.uniform(-0.3, 0.3)
+    return _placed([((k / 79 - 0.5) * length, amplitude * math.sin(2 * math.pi * periods * k / 79 + phase))
+                    for k in range(80)], place)
 
 
 def zigzag(seed: int) -> list[Point]:
@@ -104,8 +119,8 @@ PENS: dict[str, Callable[[list[Point], bool, int], list[tuple[float, float, floa
 
 def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True) -> str | None:
     """The kind the recogniser reads the ``family``'s shape of ``seed`` drawn by ``pen`` as."""
-    points = wave(seed)[0] if family == "wave" else zigzag(seed)
-    drawn = PENS[pen](points, family == "wave", seed)
+    points = wave(seed)[0] if family == "wave" else s_curve(seed) if family == "s-curve" else zigzag(seed)
+    drawn = PENS[pen](points, family != "zigzag", seed)
     return recognize_stroke([p[:2] for p in drawn], [p[2] for p in drawn] if timed else None, learned=learned).kind
 
 
