@@ -1,6 +1,7 @@
 """Benchmark: whether this tree reads strokes exactly as another revision does: a speed change must change no reading.
 
 Usage: .venv/bin/python benchmarks/compare_readings.py SET [SET ...] [--baseline main] [--tolerance 0] [--noise auto]
+       [--fourth]
 
 Every single-stroke sample of each SET (a .jsonl file or a folder `stroke_sets` reads) is recognised twice by each
 tree: as recorded (times in seconds where the set has them, as `bench_generalisation` passes them) and resampled to
@@ -9,7 +10,9 @@ into a temporary folder (`bench_side_by_side.export`); one worker process per tr
 PYTHONPATH and writes every reading (kind, confidence, beautified geometry, alternatives, reason) as JSON, whose floats
 round-trip exactly. Prints how many readings differ in kind, and in anything at all (geometry beyond ``--tolerance``,
 confidence, alternatives), by set; nothing about any stroke. The second to fifth held-back groups
-(`bench_generalisation.is_held_back_new`, `held_back_set`) are left out entirely: their strokes are not recognised.
+(`bench_generalisation.is_held_back_new`, `held_back_set`) are left out entirely: their strokes are not recognised;
+but for ``--fourth``, which reads the fourth group's sets too (`bench_generalisation.FOURTH_SETS`, opened as design
+material in session 19).
 ``--noise auto`` has this tree read every stroke with ``noise=None`` (judged from the stroke: `units.stroke_noise`),
 the baseline with its default (a pixel).
 """
@@ -30,15 +33,18 @@ ROOT = Path(__file__).resolve().parents[1]
 MODES = ("as drawn", "200 points")
 
 
-def strokes(paths: list[Path]) -> list[tuple[str, list[list[float]], list[float] | None]]:
-    """Each kept single-stroke sample as (set, points, times or None), the second held-back group left out."""
+def strokes(paths: list[Path], fourth: bool = False) -> list[tuple[str, list[list[float]], list[float] | None]]:
+    """Each kept single-stroke sample as (set, points, times or None), the held-back groups left out (the fourth too
+    unless ``fourth``)."""
     from bench_generalisation import held_back_set, is_held_back_new
     from stroke_sets import read_set, source_of
 
     out = []
     for path in paths:
         for row in read_set(path):
-            if len(row["strokes"]) != 1 or held_back_set(row["source"]) or is_held_back_new(source_of(row, "person")):
+            group = held_back_set(row["source"])
+            if (len(row["strokes"]) != 1 or (group is not None and not (fourth and group == "fourth"))
+                    or is_held_back_new(source_of(row, "person"))):
                 continue
             stroke = row["strokes"][0]
             times = ([p[2] / 1000 for p in stroke] if stroke and all(len(p) > 2 and p[2] is not None for p in stroke)
@@ -56,9 +62,9 @@ def _plain(value: object) -> object:
     return value
 
 
-def worker(paths: list[Path], out: Path, auto: bool = False) -> None:
+def worker(paths: list[Path], out: Path, auto: bool = False, fourth: bool = False) -> None:
     """Every reading of this tree's ``physink_tui``, one JSON line each, in `strokes` order then `MODES` order
-    (``auto``: with ``noise=None``)."""
+    (``auto``: with ``noise=None``; ``fourth``: the fourth group's sets read too)."""
     import numpy as np
     from bench_recognition import resample
 
@@ -69,7 +75,7 @@ def worker(paths: list[Path], out: Path, auto: bool = False) -> None:
 
     with out.open("w", encoding="utf-8") as f:
         f.write(json.dumps({"package": __import__("physink_tui").__file__}) + "\n")
-        for _, points, times in strokes(paths):
+        for _, points, times in strokes(paths, fourth):
             f.write(json.dumps(_plain(recognize_stroke(points, times))) + "\n")
             pts = np.asarray(points, dtype=float)
             when = np.asarray(times, dtype=float) if times is not None else np.arange(len(pts)) / 100.0
@@ -90,10 +96,10 @@ def _close(a: object, b: object, tolerance: float) -> bool:
     return a == b
 
 
-def run(tree: Path, paths: list[Path], out: Path, auto: bool = False) -> list[object]:
+def run(tree: Path, paths: list[Path], out: Path, auto: bool = False, fourth: bool = False) -> list[object]:
     env = {**os.environ, "PYTHONPATH": str(tree)}
     subprocess.run([sys.executable, __file__, "--worker", str(out), *(["--noise", "auto"] if auto else []),
-                    *map(str, paths)], env=env, check=True)
+                    *(["--fourth"] if fourth else []), *map(str, paths)], env=env, check=True)
     lines = out.read_text(encoding="utf-8").splitlines()
     package = json.loads(lines[0])["package"]
     if not package.startswith(str(tree)):
@@ -108,17 +114,19 @@ def main() -> None:
     ap.add_argument("--tolerance", type=float, default=0.0, help="geometry and confidence may differ by this much")
     ap.add_argument("--noise", choices=("default", "auto"), default="default",
                     help="auto: this tree reads with noise=None (judged from the stroke)")
+    ap.add_argument("--fourth", action="store_true",
+                    help="read the fourth group's sets too (opened as design material; the third and fifth never)")
     ap.add_argument("--worker", type=Path, help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.worker is not None:
-        worker(args.sets, args.worker, args.noise == "auto")
+        worker(args.sets, args.worker, args.noise == "auto", args.fourth)
         return
     from bench_side_by_side import export
 
-    sets = [s for s, _, _ in strokes(args.sets)]
+    sets = [s for s, _, _ in strokes(args.sets, args.fourth)]
     with tempfile.TemporaryDirectory() as tmp:
-        base = run(export(args.baseline, Path(tmp)), args.sets, Path(tmp) / "baseline.jsonl")
-        this = run(ROOT, args.sets, Path(tmp) / "this.jsonl", args.noise == "auto")
+        base = run(export(args.baseline, Path(tmp)), args.sets, Path(tmp) / "baseline.jsonl", fourth=args.fourth)
+        this = run(ROOT, args.sets, Path(tmp) / "this.jsonl", args.noise == "auto", args.fourth)
     if len(base) != len(this) or len(base) != len(MODES) * len(sets):
         raise SystemExit(f"{len(base)} baseline readings, {len(this)} here, for {len(sets)} strokes")
     total, kind, any_diff = Counter(), Counter(), Counter()

@@ -78,6 +78,15 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
             if len(rest) >= 2 and not _arm(piece, inward)]
 
 
+def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
+    """Whether a piece `unhooked` leaves of ``raw`` (``diag``: its `stroke_geometry.bbox_diagonal`; ``noise`` as
+    `unhooked`'s) could have its ends half its own diagonal apart, which the line test asks first
+    (`open_shapes._line`): cutting c of path from an end moves that end by c at most and shrinks the diagonal by c at
+    most (what is cut lies along c of path from the new end), and no cut is longer than `HOOK_REACH` noise widths, so
+    the ends must be at least half the diagonal less 1.5 c apart. Asked before `unhooked`, whose corner test costs more
+    (a closed shape's or a curl's ends are close); a hair's margin for rounding."""
+    return float(np.hypot(*(raw[-1] - raw[0]))) + 1.5 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
+
 
 def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
     """The point ``where`` along the path of ``pts`` (``along``: the path length at each point), as a row."""

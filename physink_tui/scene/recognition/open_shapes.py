@@ -73,7 +73,7 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
         kept = open_marks.retraced_ends(raw, noise)
         if kept is not None:
             found, _, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)
-    if found is None or loose:
+    if (found is None or loose) and lines.ends_may_span(raw, pen, diag):
         # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
         # straightest line left once a hook is cut is the line drawn (its ends where the hand meant them)
         for kept in lines.unhooked(raw, pen):  # where a line was found already, the plain line test may judge the rest
@@ -89,7 +89,7 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
     whether the line passed only as straight within the pen's own wobble (`lines.within_wobble`, judged by ``pen``);
     with ``bow`` False, hooks are not cut again and only such a line counts, or, with ``plain``, one by the line test
     too."""
-    if float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * diag:
+    if not _ends_span(raw, diag):
         return None, None, False  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
     n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
@@ -109,14 +109,21 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
         return (stray < LINE and length < 1.12 * chord * slack) or (stray < 0.5 * LINE and length < 1.3 * chord * slack)
 
     # nor, at its farthest, is a stroke's whole stray within the pen's wobble, unless it bows as an arc does; nor the
-    # ink of that wobble between points closer than a few noise widths (`lines.ink`)
+    # ink of that wobble between points closer than a few noise widths (`lines.ink`; the stray judged first, at no cost)
     strict = (bow or plain) and close(err)
-    if strict or (lines.ink(coarse, pen) < 1.3 * chord * slack and lines.within_wobble(coarse, off * along, pen)):
+    stray = off * along
+    if strict or (stray < lines.wobble_reach(len(coarse)) * pen and lines.ink(coarse, pen) < 1.3 * chord * slack
+                  and lines.within_wobble(coarse, stray, pen)):
         return Recognition("line", 1.0 - min(err, LINE) / LINE * 0.5, Line(_pt(coarse[0]), _pt(coarse[-1])),
                            (("arc", 0.2),)), None, not strict
     if bow and open_marks.swung_line(coarse, err, length / (chord * slack), noise, pen):
         return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),)), False
     return None, None, False
+
+
+def _ends_span(raw: np.ndarray, diag: float | None = None) -> bool:
+    """Whether the ends of ``raw`` are not under half its diagonal (``diag``, where known) apart, as a line's are."""
+    return not float(np.hypot(*(raw[-1] - raw[0]))) < 0.5 * (sg.bbox_diagonal(raw) if diag is None else diag)
 
 
 def round_error(ellipse: EllipseFit, noise: float) -> float:

@@ -81,7 +81,10 @@ def corner_chain(unit: np.ndarray, noise: float) -> np.ndarray | None:
     n = int(min(MAX_POINTS, max(MIN_POINTS, length / (SPACING * noise))))
     work = sg.smooth(sg.resample(unit, n))
     th = sg.turning(work)
-    corners = _stubs_dropped(work, _joined(work, th, _corners(th, len(work))))
+    corners = _corners(th, len(work))
+    if len(corners) < MIN_CORNERS + 2:
+        return None  # (joining and dropping stubs only take corners away)
+    corners = _stubs_dropped(work, _joined(work, th, corners))
     if len(corners) < MIN_CORNERS + 2:
         return None
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
@@ -157,13 +160,17 @@ def _corners(th: np.ndarray, n: int) -> list[int]:
     idx = np.arange(1, n - 1)
     sharpness = np.abs(cum[np.minimum(idx + 1, n - 2)] - cum[np.maximum(idx - 1, 1) - 1])
     least = math.radians(MIN_TURN_DEG)
+    # only points turning sharply enough over a point either side, whose window turns by `least` or more all told
+    # (whichever of its points are free, their net turn is no more): at this fine scale most points of a smooth or
+    # jittery path turn a little, and few can be corners (a hair's margin for rounding: the rest fail the test anyway)
+    whole = np.concatenate([[0.0], np.cumsum(np.abs(th))])
+    lo, hi = np.maximum(idx - REACH, 1) - 1, np.minimum(idx + REACH, n - 2)
+    may = (sharpness >= least / (2 * REACH + 1)) & (whole[hi] - whole[lo] >= least * (1 - 1e-9))
     free = np.ones(len(th), dtype=bool)  # turning not yet counted by a corner (th[k - 1] is point k's)
     taken: list[int] = []
-    for k in np.argsort(-sharpness, kind="stable").tolist():
-        c = k + 1
-        if sharpness[k] < least / (2 * REACH + 1):
-            break  # too gentle here for any window round it to turn far enough
-        a, b = max(c - REACH, 1) - 1, min(c + REACH, n - 2)
+    looked = np.flatnonzero(may)
+    for k in looked[np.argsort(-sharpness[looked], kind="stable")].tolist():
+        c, a, b = k + 1, int(lo[k]), int(hi[k])
         if free[c - 1] and abs(float(th[a:b][free[a:b]].sum())) >= least:
             taken.append(c)
             free[a:b] = False
