@@ -59,7 +59,14 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its
    vertices turn within 0.4 of their shorter side (`polygon_checks.sharp_corners`; a round loop needs 0.8): a
    hexagon or octagon whose many vertices the complexity penalty outweighed; never on points sparser than four to
-   the shortest side (a circle given as a few points round it).
+   the shortest side (a circle given as a few points round it). A polygon of five sides or more, or a loop read round
+   with two sharp corners, is the box drawn with a corner or two rounded off (`rounded_corners`) when four sides of
+   its fit run straight for most of their length, meet near right angles, and only bows or sharp turns lie between
+   them (a straight stretch between two sides is a side: a pentagon's, a hexagon's, a cut corner's). A closed loop
+   its ellipse misses by more than twice `open_shapes.round_error`, or that turns back against its own direction by
+   half a turn or more in all (a star's inner corners), is offered no circle or ellipse
+   (`closed_loops.no_round_shape`); a stroke whose tails cross each other near its ends is closed however far apart
+   its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
@@ -86,7 +93,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    halfway along, the stroke on one side of that line), is not a polyline; a tick, check or v swung round its point
    (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
-   bends at least three times inside its ends, each the other way from the one before, every bend round and the
+   bends at least twice inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below.
    Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
@@ -129,16 +136,13 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `polygon_checks.py`: whether a fit's vertices are real corners; flat ends for hairpins; how much two outlines
   overlap; whether a closed fit's corners are sharp rather than round bends
 - `round_or_cornered.py`: a loop the ranking read round, read as the polygon drawn when its corners are sharp
+- `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
 - `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line
-  begun by sliding back along itself
+  begun by sliding back along itself or bowed by the hand's swing
 - `bracket_marks.py`: square brackets with a rounded corner, curly braces with a looped or straight-armed point and
   ticks swung round their point, which the open-stroke rules misjudge
-
-  begun by sliding back along itself or bowed by the hand's swing
-- `bracket_marks.py`: square brackets with a rounded corner and curly braces with a looped or straight-armed point,
-  which the open-stroke rules misjudge
 - `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline
 - `lines.py`: how far a person's line strays by the pen and hand alone (the noise's farthest reach, a hook at an
   end, the ink of a wobble), told from a bow drawn on purpose (a circle explains it) and a mark's short arm
