@@ -18,7 +18,7 @@ import argparse
 import random
 import sys
 from collections import Counter
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
@@ -74,27 +74,31 @@ def drawn(family: str, pen: str, seed: int) -> Drawn:
     return PENS[pen](FAMILIES[family](seed), seed)
 
 
-def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True) -> str | None:
-    """The kind the recogniser reads the ``family``'s mark of ``seed`` drawn by ``pen`` as."""
-    stroke = drawn(family, pen, seed)
+def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True,
+         families: Mapping[str, Callable[[int], Mark]] = FAMILIES) -> str | None:
+    """The kind the recogniser reads the ``family``'s mark of ``seed`` (one of ``families``) drawn by ``pen`` as."""
+    stroke = PENS[pen](families[family](seed), seed)
     return recognize_stroke([p[:2] for p in stroke], [p[2] for p in stroke] if timed else None, learned=learned).kind
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main(families: Mapping[str, Callable[[int], Mark]] = FAMILIES, expected: Mapping[str, str] = EXPECTED,
+         doc: str = __doc__ or "") -> None:
+    """The table of ``families`` read by every pen, against the kinds ``expected`` (`bench_hurried_marks` reads its
+    own families through it)."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("--seeds", choices=("tune", "held", "all"), default="tune")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
-    ap.add_argument("--family", choices=tuple(FAMILIES), action="append", help="only these families")
+    ap.add_argument("--family", choices=tuple(families), action="append", help="only these families")
     args = ap.parse_args()
     groups = {"tune": [("tune 0-29", TUNING_SEEDS)], "held": [("held 1000-1029", HELD_SEEDS)]}
     groups["all"] = groups["tune"] + groups["held"]
     print("| seeds | family | pen | read as expected | readings |\n|---|---|---|---:|---|")
     for name, seeds in groups[args.seeds]:
         total = Counter()
-        for family in args.family or FAMILIES:
+        for family in args.family or families:
             for pen in PENS:
-                got = [read(family, pen, s, timed, not args.rules) for s in seeds for timed in (True, False)]
-                right = sum(k == EXPECTED[family] for k in got)
+                got = [read(family, pen, s, timed, not args.rules, families) for s in seeds for timed in (True, False)]
+                right = sum(k == expected[family] for k in got)
                 total["right"] += right
                 total["all"] += len(got)
                 kinds = ", ".join(f"{k} {c}" for k, c in Counter(got).most_common())
