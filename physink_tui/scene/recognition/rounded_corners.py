@@ -54,9 +54,13 @@ OFF_SIDE_POINTS = 3
 
 
 def _line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The total-least-squares line through ``run``: its centre and unit direction (the points' principal axis, in
+    closed form for two dimensions)."""
     centre = run.mean(axis=0)
-    _, _, vt = np.linalg.svd(run - centre, full_matrices=False)
-    return centre, vt[0]
+    rel = run - centre
+    sxx, syy, sxy = float(rel[:, 0] @ rel[:, 0]), float(rel[:, 1] @ rel[:, 1]), float(rel[:, 0] @ rel[:, 1])
+    angle = 0.5 * math.atan2(2.0 * sxy, sxx - syy)
+    return centre, np.array([math.cos(angle), math.sin(angle)])
 
 
 def _off(run: np.ndarray, centre: np.ndarray, direction: np.ndarray) -> np.ndarray:
@@ -142,14 +146,21 @@ def _rounding(corner: np.ndarray, shorter: float, noise: float) -> bool | None:
     return bow > BOW_SHARE * length + 2 * noise
 
 
-def box_of(fit: PolygonFit, kept: tuple[int, ...], loop: np.ndarray, noise: float, sharp: int = 0) -> Box | None:
+def straight_parts(fit: PolygonFit, noise: float) -> list[Part | None]:
+    """`straight_part` of each side of ``fit``, in order round the loop."""
+    pts, idx = fit.points, fit.indices
+    return [straight_part(pts[idx[i]:idx[i + 1] + 1], noise) for i in range(len(idx) - 1)]
+
+
+def box_of(fit: PolygonFit, kept: tuple[int, ...], loop: np.ndarray, noise: float, sharp: int = 0,
+           parts: list[Part | None] | None = None) -> Box | None:
     """The box that four sides of a closed polygonal ``fit`` of ``loop`` (``kept``: which, in order round the loop; any
     others are taken for a corner's bend) stand for, when their straight parts meet near right angles and the loop is
     that box with one to `MAX_CUT` corners rounded off and at least ``sharp`` turned sharply (see the module's
-    docstring)."""
+    docstring). ``parts``: the fit's `straight_parts`, when already found."""
     pts, idx = fit.points, fit.indices
-    parts = [straight_part(pts[idx[i]:idx[i + 1] + 1], noise) for i in kept]
-    lines = [p for p in parts if p is not None]
+    every = straight_parts(fit, noise) if parts is None else parts
+    lines = [p for p in (every[i] for i in kept) if p is not None]
     if len(lines) != 4:
         return None
     corners = []
@@ -218,8 +229,12 @@ def box_after_all(ranked: Recognition, polygons: list[Pending], loop: np.ndarray
     for pending in polygons:
         if not 8 <= pending.params <= 2 * MOST_SIDES:
             continue
-        for fit, kept in ((f, k) for f in pending.fits for k in itertools.combinations(range(len(f.indices) - 1), 4)):
-            box = box_of(fit, kept, loop, noise, sharp=SHARP_IF_READ_ROUND if round_reading else 0)
-            if box is not None and inside(box, lo, hi):
-                return Recognition("box", ranked.confidence, box, ((str(ranked.kind), 1.0 - ranked.confidence),))
+        for fit in pending.fits:
+            parts = straight_parts(fit, noise)  # each side's once, for every four of them
+            if sum(p is not None for p in parts) < 4:
+                continue
+            for kept in itertools.combinations(range(len(fit.indices) - 1), 4):
+                box = box_of(fit, kept, loop, noise, SHARP_IF_READ_ROUND if round_reading else 0, parts)
+                if box is not None and inside(box, lo, hi):
+                    return Recognition("box", ranked.confidence, box, ((str(ranked.kind), 1.0 - ranked.confidence),))
     return ranked
