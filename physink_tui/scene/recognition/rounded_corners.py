@@ -28,7 +28,14 @@ import numpy as np
 from physink_tui.scene.recognition import quads
 from physink_tui.scene.recognition.beautify import box_geometry, shape_points
 from physink_tui.scene.recognition.candidates import Pending
-from physink_tui.scene.recognition.polygon_checks import BOW_SHARE, BOX_OVERLAP, crossings, overlap
+from physink_tui.scene.recognition.polygon_checks import (
+    BOW_SHARE,
+    BOX_OVERLAP,
+    SHARP_CORNER,
+    corner_roundness_closed,
+    crossings,
+    overlap,
+)
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Box, Polygon, Recognition
 from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside
@@ -47,7 +54,8 @@ FEWEST_SIDES = 5
 `quads`' rules (a trapezoid, a rhombus)."""
 SHARP_IF_READ_ROUND = 2
 """A loop the ranking read as a circle or an ellipse is a box only with this many of its corners sharp: its corners are
-what the ranking missed, so they must be there to see."""
+what the ranking missed, so they must be there to see (a fit is judged only when as many of its vertices turn sharply,
+`_sharp_vertices`, and the box only when as many of its corners are turned, not bowed)."""
 OFF_SIDE_POINTS = 3
 """A corner counts as rounded where at least this many of the loop's points leave the box's outline there
 (one or two are jitter)."""
@@ -215,6 +223,12 @@ def _box_on_sides(box: Box, lines: list[Part]) -> Box | None:
     return Box((float(centre[0]), float(centre[1])), u1 - u0, v1 - v0, box.angle)
 
 
+def _sharp_vertices(fit: PolygonFit) -> int:
+    """How many of a closed fit's vertices the path turns at within `polygon_checks.SHARP_CORNER` of the shorter side
+    (`polygon_checks.corner_roundness_closed`): a corner's turning, not a round bend's."""
+    return int(np.count_nonzero(corner_roundness_closed(fit) < SHARP_CORNER))
+
+
 def box_after_all(ranked: Recognition, polygons: list[Pending], loop: np.ndarray, raw: np.ndarray, noise: float,
                   diag: float) -> Recognition:
     """``ranked`` (a polygon of `FEWEST_SIDES` or more, or a circle or an ellipse) read as the box it is with a corner
@@ -230,6 +244,8 @@ def box_after_all(ranked: Recognition, polygons: list[Pending], loop: np.ndarray
         if not 8 <= pending.params <= 2 * MOST_SIDES:
             continue
         for fit in pending.fits:
+            if round_reading and _sharp_vertices(fit) < SHARP_IF_READ_ROUND:
+                continue  # a round loop turns evenly all round (about 0.8 of a side at every vertex): no corner to see
             parts = straight_parts(fit, noise)  # each side's once, for every four of them
             if sum(p is not None for p in parts) < 4:
                 continue
