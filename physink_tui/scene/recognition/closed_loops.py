@@ -63,7 +63,7 @@ def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw:
     are not lumps); or sampled by a few events that it turns at nearly every one of (`pen_noise.turns_at_every_event`:
     a circle by 8-12 events is an octagon to fit, but a drawn polygon runs straight through its events between
     corners)."""
-    if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1] or no_round_shape(loop, noise, ellipse):
+    if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
         return False
     return (sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH
             or pen_noise.turns_at_every_event(raw, diag))

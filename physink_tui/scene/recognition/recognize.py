@@ -291,12 +291,13 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
     if ellipse is None:  # not already fitted to this loop by `closed_loops.closed_loop`
         ellipse = fit_ellipse(loop)
-    lumpy = closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
-    # a lumpy circle's lumps are not sides
-    sided = [p for p in polygons if p.params < 2 * closed_loops.LUMPY_SIDES] if lumpy else polygons
     # a loop far from any ellipse, or turning back as a star's outline does, is not read round (a star whose
     # shallow inner corners no polygon fit passes, or whose points are more than `candidates.MAX_SIDES` can follow)
-    round_fit = None if closed_loops.no_round_shape(loop, noise, ellipse) else round_shape(loop, ellipse)
+    never_round = closed_loops.no_round_shape(loop, noise, ellipse)
+    lumpy = not never_round and closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
+    # a lumpy circle's lumps are not sides
+    sided = [p for p in polygons if p.params < 2 * closed_loops.LUMPY_SIDES] if lumpy else polygons
+    round_fit = None if never_round else round_shape(loop, ellipse)
     candidates: list[Candidate | Pending | None] = [*sided, round_fit]
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
