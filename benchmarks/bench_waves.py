@@ -12,8 +12,10 @@ wavy or curling line, a curve) fell in session 16. So the pen models draw them (
 - a **zig-zag**: 3-7 teeth of straight sides, 0.1-0.3 of its length high; expected a polyline;
 
 each drawn by the careful virtual pen (windows-ink, through the points), the hurried hand (`tests/penmodels/hurried`:
-a wave as a smooth path, a zig-zag's corners overshot, rounded or turned cleanly) and the hurried hand through a device
-sending an event every 15-30 ms (`bench_device_stress.coarse`), and read with the stroke's times and without.
+a wave as a smooth path, a zig-zag's corners overshot, rounded or turned cleanly), the hurried hand through a device
+sending an event every 15-30 ms (`bench_device_stress.coarse`) and, since session 20, through a mouse (whole-pixel
+stair steps at 60-200 px across, bursts of events, repeated events: does a fast mouse round a zig-zag's teeth into a
+wave's bends?), and read with the stroke's times and without.
 Seeds 0-29 (`TUNING_SEEDS`) chose `waves`' thresholds with the design sets; 1000-1059 (`HELD_SEEDS`) were read once.
 """
 
@@ -30,7 +32,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 import numpy as np
-from bench_device_stress import coarse
+from bench_device_stress import bursts, chain, coarse, duplicates, stairs
 from penmodels.hurried import HurriedPen, touching
 from penmodels.shapes import Curve
 from penmodels.shapes import Path as PenPath
@@ -113,8 +115,17 @@ def hurried_coarse(points: list[Point], smooth: bool, seed: int) -> list[tuple[f
     return [(float(x), float(y), float(t)) for (x, y), t in zip(pts, when, strict=True)]
 
 
+def hurried_mouse(points: list[Point], smooth: bool, seed: int) -> list[tuple[float, float, float]]:
+    """The hurried hand through a mouse (`bench_open_marks`' "hurried-mouse": whole-pixel stair steps at 60-200 px
+    across, events in bursts, repeated events)."""
+    drawn = np.array(hurried(points, smooth, seed))
+    pts, when = chain(stairs, bursts, duplicates)((drawn[:, :2], drawn[:, 2]), np.random.default_rng(seed))
+    assert when is not None
+    return [(float(x), float(y), float(t)) for (x, y), t in zip(pts, when, strict=True)]
+
+
 PENS: dict[str, Callable[[list[Point], bool, int], list[tuple[float, float, float]]]] = {
-    "careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse}
+    "careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse, "hurried-mouse": hurried_mouse}
 
 
 def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True) -> str | None:

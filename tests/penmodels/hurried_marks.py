@@ -10,7 +10,8 @@ from collections.abc import Callable
 
 from penmodels.open_marks import Mark, Point, _arc, _placed
 
-EXPECTED = {"x": "polyline", "swung-x": "polyline", "hooked-tick": "polyline", "ribbon-pigtail": "curve"}
+EXPECTED = {"x": "polyline", "swung-x": "polyline", "hooked-tick": "polyline", "ribbon-pigtail": "curve",
+            "bowed-zigzag": "polyline"}
 """The kind each family is read as (benchmarks/label_kinds.tsv: an x and a check are polylines, a pigtail a curve)."""
 
 
@@ -91,5 +92,26 @@ def ribbon_pigtail(seed: int) -> Mark:
     return Mark("ribbon-pigtail", _placed(rng, [(x * scale, y * scale) for x, y in pts], rng.random() < 0.5), True)
 
 
+def bowed_zigzag(seed: int) -> Mark:
+    """A zig-zag drawn in a hurry: 4-7 teeth, 150-450 px long, 0.15-0.35 of that high (`bench_waves.zigzag`'s
+    proportions), its points sharp but each side swung by the hand into a bow of 4-12 % of its chord (a circular arc's
+    sagitta; the Quick, Draw! players' and klarubbio/s06's zig-zags bow a side by 0.09-0.13), each side its own way;
+    drawn from either end, turned half the time."""
+    rng = random.Random(f"bowed-zigzag:{seed}")
+    length, teeth = rng.uniform(150, 450), rng.randint(4, 7)
+    height = rng.uniform(0.15, 0.35) * length
+    corners = [((k / teeth - 0.5) * length, height * (0.5 if k % 2 else -0.5)) for k in range(teeth + 1)]
+    pts: list[Point] = [corners[0]]
+    for a, b in zip(corners, corners[1:], strict=False):
+        bow = rng.choice((-1.0, 1.0)) * rng.uniform(0.04, 0.12) * math.dist(a, b)
+        normal = ((a[1] - b[1]) / math.dist(a, b), (b[0] - a[0]) / math.dist(a, b))
+        for k in range(1, 17):
+            u = k / 16
+            off = 4 * bow * u * (1 - u)  # a parabola as near a shallow arc as a hand draws: ``bow`` at the middle
+            pts.append((a[0] + (b[0] - a[0]) * u + off * normal[0], a[1] + (b[1] - a[1]) * u + off * normal[1]))
+    return Mark("bowed-zigzag", _placed(rng, pts, rng.random() < 0.5), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
-    "x": x_mark, "swung-x": swung_x, "hooked-tick": hooked_tick, "ribbon-pigtail": ribbon_pigtail}
+    "x": x_mark, "swung-x": swung_x, "hooked-tick": hooked_tick, "ribbon-pigtail": ribbon_pigtail,
+    "bowed-zigzag": bowed_zigzag}
