@@ -1,6 +1,6 @@
 """Benchmark: an x swung round at its far side, a plain one-stroke x, a tick whose short arm is a few percent of the
-stroke, and a pigtail whose arms cross as an x's do, drawn by the pen models, read as the kinds people's labels say
-(x's and ticks polylines, pigtails curves).
+stroke, a pigtail whose arms cross as an x's do, and a zig-zag whose sides the hand bowed (session 20), drawn by the pen
+models, read as the kinds people's labels say (x's, ticks and zig-zags polylines, pigtails curves).
 
 Usage: .venv/bin/python benchmarks/bench_hurried_marks.py [--seeds tune|held|all] [--rules] [--family NAME]
 

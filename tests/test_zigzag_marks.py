@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 import random
+import sys
+from pathlib import Path
 
 import pytest
 from penmodels.hurried import HurriedPen, touching
@@ -21,6 +23,10 @@ from test_mouse_marks import mouse_brace, mouse_tick
 
 from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
 from physink_tui.scene.recognition.recognize import recognize_stroke
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+from bench_hurried_marks import read
+from bench_open_marks import TUNING_SEEDS
 
 Point = tuple[float, float]
 SEEDS = range(40)
@@ -121,3 +127,19 @@ def test_a_ticks_short_arm_is_not_taken_for_a_retraced_start() -> None:
     for learned, floor in ((False, 35), (True, 40)):
         read = [recognize_stroke(mouse_tick(seed), learned=learned).kind for seed in range(40)]
         assert sum(k == "polyline" for k in read) >= floor, read
+
+
+BOWED_FLOORS = {"careful": 54, "hurried": 56, "hurried-coarse": 50, "hurried-mouse": 52}
+"""pen -> of the 60 readings of `bench_hurried_marks`' bowed-zigzag family (30 tuning seeds, with and without times),
+how many are polylines: the lower of the tuning and held figures measured when the family was written (session 20, main
+2996772: tuning 58, 56, 50, 54; held seeds 1000-1029 54, 56, 52, 52). The misses are teeth whose neighbouring sides bow
+against each other, which turns a point by less than a right angle or spreads its turning (`open_marks.SAW_TURN_DEG`,
+`SAW_ROUND`)."""
+
+
+@pytest.mark.parametrize("pen", list(BOWED_FLOORS))
+def test_a_zigzag_whose_sides_the_hand_bowed_is_a_polyline(pen: str) -> None:
+    """A hurried hand swings each side of a zig-zag a little (the Quick, Draw! players' and klarubbio/s06's bow a side
+    by 0.09-0.13 of its chord); the teeth stay sharp, so the mark stays a polyline and no wave (`recognition.waves`)."""
+    got = [read("bowed-zigzag", pen, seed, timed) for seed in TUNING_SEEDS for timed in (True, False)]
+    assert sum(k == "polyline" for k in got) >= BOWED_FLOORS[pen], got

@@ -1,9 +1,11 @@
 """Marks drawn fast in one stroke (issue 25): an x swung round at its far side, a tick whose short arm is a few percent
-of the stroke, and what they must not be taken for: a pigtail whose arms cross as an x's do; in canvas pixels, seeded;
+of the stroke, a zig-zag whose sides the hand bowed, and what they must not be taken for: a pigtail whose arms cross as
+an x's do; in canvas pixels, seeded;
 no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen; `benchmarks/bench_hurried_marks.py`)."""
 
 from __future__ import annotations
 
+import itertools
 import math
 import random
 from collections.abc import Callable
@@ -102,7 +104,7 @@ def bowed_zigzag(seed: int) -> Mark:
     height = rng.uniform(0.15, 0.35) * length
     corners = [((k / teeth - 0.5) * length, height * (0.5 if k % 2 else -0.5)) for k in range(teeth + 1)]
     pts: list[Point] = [corners[0]]
-    for a, b in zip(corners, corners[1:], strict=False):
+    for a, b in itertools.pairwise(corners):
         bow = rng.choice((-1.0, 1.0)) * rng.uniform(0.04, 0.12) * math.dist(a, b)
         normal = ((a[1] - b[1]) / math.dist(a, b), (b[0] - a[0]) / math.dist(a, b))
         for k in range(1, 17):
