@@ -71,7 +71,7 @@ AUDITED: dict[str, str] = {
     f"{_AO}101": "the short arm a round hook (its bend 1.8 times the arm)",
 }
 """Files of the misread strokes of these classes at main 2996772 (51 with dollar1's s04/slow/check10.xml, which
-test_people_strokes holds) -> what they are: 12 label slips, the rest reading errors no rule told apart from another
+test_people_strokes holds) -> what they are: 11 label slips, the rest reading errors no rule told apart from another
 class's figure without losing that class (docs/BENCHMARKS.md)."""
 
 
