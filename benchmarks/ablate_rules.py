@@ -125,7 +125,7 @@ RULES: tuple[Rule, ...] = (
          "klarubbio/s06", lambda: [(bracket_marks, "rounded_bracket_corners", _none)]),
     Rule("looped_point", "bracket_marks.looped_point (LOOPED_POINT)", "fifth pass: jd4386/User04, User05",
          lambda: [(bracket_marks, "looped_point", _false)]),
-    Rule("brace_point", "bracket_marks.brace_point (BRACE_DEPTH, POINT_AT ...)",
+    Rule("brace_point", "bracket_marks.brace_point (BRACE_DEPTH, POINT_FROM_ENDS, ARMS_ALIKE ...)",
          "fifth pass: a table over the design sources' polylines; hat359/user1", lambda: [
              (bracket_marks, "brace_point", _false)]),
     # closed strokes (recognize, closed_loops, loop_ends, polygon_checks, ranking)

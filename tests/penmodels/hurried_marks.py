@@ -13,7 +13,7 @@ from collections.abc import Callable
 from penmodels.open_marks import Mark, Point, _arc, _placed
 
 EXPECTED = {"x": "polyline", "swung-x": "polyline", "hooked-tick": "polyline", "ribbon-pigtail": "curve",
-            "bowed-zigzag": "polyline"}
+            "bowed-zigzag": "polyline", "check": "polyline"}
 """The kind each family is read as (benchmarks/label_kinds.tsv: an x and a check are polylines, a pigtail a curve)."""
 
 
@@ -114,6 +114,32 @@ def bowed_zigzag(seed: int) -> Mark:
     return Mark("bowed-zigzag", _placed(rng, pts, rng.random() < 0.5), True)
 
 
+def check(seed: int) -> Mark:
+    """A check as people's hurried ones are (dollar1 s04's, sinarest1608/Subject2's, klarubbio/s04's, pixelfac/user05's
+    checks): a long arm 120-300 px rising at 40-70 degrees, bowed by up to 6 % of its length either way; a short arm
+    0.2-0.6 as long (people's checks and ticks: 0.16-0.58 at the 5th-95th percentile, their arms' chords split at the
+    point) coming down to it at 20-60 degrees below the level, swung into a bow of 8-20 % of its chord that turns
+    against the point's turn (the hand sets off sideways: the stroke turns both ways); drawn short arm first or, half
+    the time, from the long arm's end (a hand that draws its checks backwards: the reading must not depend on it);
+    turned up to 12 degrees."""
+    rng = random.Random(f"check:{seed}")
+    long_arm = rng.uniform(120, 300)
+    short_arm = rng.uniform(0.2, 0.6) * long_arm
+    down, up = math.radians(rng.uniform(20, 60)), math.radians(rng.uniform(40, 70))
+    start = (-short_arm * math.cos(down), -short_arm * math.sin(down))  # y down: the point, at the origin, is lowest
+    end = (long_arm * math.cos(up), -long_arm * math.sin(up))
+    pts: list[Point] = [start]
+    bows = (-rng.uniform(0.08, 0.2), rng.uniform(-0.06, 0.06))  # the short arm's against the point's turn
+    for (a, b), bow in zip(((start, (0.0, 0.0)), ((0.0, 0.0), end)), bows, strict=True):
+        chord = math.dist(a, b)
+        normal = ((a[1] - b[1]) / chord, (b[0] - a[0]) / chord)
+        for k in range(1, 25):
+            u = k / 24
+            off = 4 * bow * chord * u * (1 - u)
+            pts.append((a[0] + (b[0] - a[0]) * u + off * normal[0], a[1] + (b[1] - a[1]) * u + off * normal[1]))
+    return Mark("check", _placed(rng, pts, False), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "x": x_mark, "swung-x": swung_x, "hooked-tick": hooked_tick, "ribbon-pigtail": ribbon_pigtail,
-    "bowed-zigzag": bowed_zigzag}
+    "bowed-zigzag": bowed_zigzag, "check": check}

@@ -81,9 +81,15 @@ taken). 0.4 reads four more braces right by the rules, none more shipped, and ta
 ONE_SIDE = 0.03
 """A brace lies on one side of the line joining its ends (its curls and its point on the same side: 0-0.02 of the
 line on the other side); a zig-zag's teeth cross it (0.04 and more)."""
-POINT_AT = (0.42, 0.7)
-"""Where along the path (shares of it) a brace's point lies: about halfway (0.45-0.7, curls of unequal size); a check's
-or tick's corner, drawn short arm first, lies a third of the way along or less (0.20-0.41 on the design sources)."""
+POINT_FROM_ENDS = 0.3
+"""A brace's point lies at least this share of the path from either end: about halfway (0.42-0.70 of the way along on
+the design sources as drawn, 0.30-0.58 drawn from the other end). Either end: a mark is read the same whichever end it
+was drawn from (until session 20 the window was 0.42-0.7 from the start, so a check drawn from its long arm's end,
+its point 0.59-0.80 of the way along, was taken for a brace: 11 of the design sets' checks reversed)."""
+ARMS_ALIKE = 0.62
+"""... and the chords from each end to the point are alike, the shorter at least this share of the longer (a brace's
+halves mirror each other: 0.67-0.99 at the 5th-95th percentile on dollar1 and itt, where it was chosen; a check's or
+tick's short arm is at most 0.59 of its long one there, 0.16-0.58 at the 5th-95th percentile on all design sets)."""
 POINT_NEAR = 0.05
 """The point farthest from the line is a brace's point when a found corner lies within this share of the path of it,
 or the path within it turns sharply (`stroke_geometry.POINT_TURN_DEG` within `POINT_SPAN`: hat359/user1's right brace
@@ -95,9 +101,10 @@ arrow's barbs run back along its shaft."""
 
 def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> bool:
     """Whether the stroke is a curly brace whose curls or point the finder took for corners between straight sides:
-    the point farthest from the line joining its ends is a corner about halfway along (`POINT_AT`, `POINT_NEAR`),
-    sticking out less than `BRACE_DEPTH` of that line, with the whole stroke on that side of it (`ONE_SIDE`) and
-    running along it (`NO_RETURN`), and the stroke turns both ways (a v, a caret or a tick turns one way)."""
+    the point farthest from the line joining its ends is a corner about halfway along (`POINT_FROM_ENDS`,
+    `POINT_NEAR`) between halves alike (`ARMS_ALIKE`), sticking out less than `BRACE_DEPTH` of that line, with the whole
+    stroke on that side of it (`ONE_SIDE`) and running along it (`NO_RETURN`), and the stroke turns both ways (a v, a
+    caret or a tick turns one way). Nothing here depends on which end the stroke was drawn from."""
     if len(corners) < 3:
         return False
     start, end = work[0], work[-1]
@@ -115,8 +122,11 @@ def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> boo
         return False
     cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
     length = float(cum[-1])
-    if not POINT_AT[0] <= cum[k] / length <= POINT_AT[1]:
+    if min(float(cum[k]), length - float(cum[k])) < POINT_FROM_ENDS * length:
         return False
+    halves = float(np.hypot(*(work[k] - start))), float(np.hypot(*(end - work[k])))
+    if min(halves) < ARMS_ALIKE * max(halves):
+        return False  # a check's short arm and long arm, whichever was drawn first
     near = np.abs(cum - cum[k]) < POINT_NEAR * length
     if (min(abs(float(cum[c] - cum[k])) for c in corners[1:-1]) >= POINT_NEAR * length
             and sg.sharpest_turn(work[near], sg.POINT_SPAN * length) < sg.POINT_TURN_DEG):
