@@ -34,10 +34,14 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from bench_waves import PENS, _place, _placed
+from bench_waves import PENS as WAVE_PENS
+from bench_waves import _place, _placed
 
 from physink_tui.scene.recognition.primitives import Polyline, Recognition
 from physink_tui.scene.recognition.recognize import recognize_stroke
+
+PENS = {pen: WAVE_PENS[pen] for pen in ("careful", "hurried", "hurried-coarse")}
+"""The pens of `bench_waves` this benchmark was measured with (not its mouse pen, added in session 20)."""
 
 TUNING_SEEDS = range(30)
 HELD_SEEDS = range(1000, 1060)

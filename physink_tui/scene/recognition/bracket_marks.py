@@ -104,7 +104,7 @@ def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> boo
     the point farthest from the line joining its ends is a corner about halfway along (`POINT_FROM_ENDS`,
     `POINT_NEAR`) between halves alike (`ARMS_ALIKE`), sticking out less than `BRACE_DEPTH` of that line, with the whole
     stroke on that side of it (`ONE_SIDE`) and running along it (`NO_RETURN`), and the stroke turns both ways (a v, a
-    caret or a tick turns one way). Nothing here depends on which end the stroke was drawn from."""
+    caret or a tick turns one way). None of these tests depends on which end the stroke was drawn from."""
     if len(corners) < 3:
         return False
     start, end = work[0], work[-1]
