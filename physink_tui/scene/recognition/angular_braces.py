@@ -50,14 +50,24 @@ def _arm_heading_ok(piece: np.ndarray, direction: np.ndarray) -> bool:
     return norm > 0 and float(d @ direction) >= math.cos(math.radians(ARM_DEG)) * norm
 
 
+POINT_LOBE_DEG = 20.0
+"""A brace laid out as one (`laid_out`) turns both ways if a run of its turning the other way from the rest reaches
+this many degrees (`stroke_features.lobes` ignores runs under 35 degrees: a wobble). A device's few events sample the
+point by one or two, and the stroke then turns out towards it by only 20-35 degrees before turning back (the design
+braces by 8-25 events evenly in time, `bench_device_stress`); a parenthesis or an arc laid out so turns one way."""
+
+
 def angular_brace(work: np.ndarray, lobes: list[float]) -> bool:
     """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes``
     its `stroke_features.lobes`) is a curly brace by its layout: on one side of the line joining its ends
     (`ONE_SIDE`) and running along it (`NO_RETURN`), its point about halfway (`POINT_AT`) standing out less than
     `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run on (`ARM_INK`), parallel to it
     (`ARM_DEG`) and off it (`ARM_OFF`),
-    and turning both ways (two lobes or more: its curls the other way from its point)."""
-    return len(lobes) >= 2 and laid_out(work)
+    and turning both ways (two lobes or more: its curls the other way from its point; `POINT_LOBE_DEG` where the
+    point was sampled by few events)."""
+    if not laid_out(work):
+        return False
+    return len(lobes) >= 2 or len(sf.lobes(work, POINT_LOBE_DEG)) >= 2
 
 
 def laid_out(work: np.ndarray) -> bool:
