@@ -57,24 +57,24 @@ point by one or two, and the stroke then turns out towards it by only 20-35 degr
 braces by 8-25 events evenly in time, `bench_device_stress`); a parenthesis or an arc laid out so turns one way."""
 
 
-def angular_brace(work: np.ndarray, lobes: list[float]) -> bool:
+def angular_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0) -> bool:
     """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes``
     its `stroke_features.lobes`) is a curly brace by its layout: on one side of the line joining its ends
     (`ONE_SIDE`) and running along it (`NO_RETURN`), its point about halfway (`POINT_AT`) standing out less than
     `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run on (`ARM_INK`), parallel to it
     (`ARM_DEG`) and off it (`ARM_OFF`) -- or so against its arms' own line where it was drawn askew (`laid_out`) --
     and turning both ways (two lobes or more: its curls the other way from its point; `POINT_LOBE_DEG` where the
-    point was sampled by few events)."""
-    if not laid_out(work):
+    point was sampled by few events); ``noise``: the pen's, in ``work``'s units."""
+    if not laid_out(work, noise):
         return False
-    return len(lobes) >= 2 or len(sf.lobes(work, POINT_LOBE_DEG)) >= 2
+    return len(lobes) >= 2 or len(sf.lobes(work, POINT_LOBE_DEG, noise=noise)) >= 2
 
 
-def laid_out(work: np.ndarray) -> bool:
+def laid_out(work: np.ndarray, noise: float = 0.0) -> bool:
     """Whether ``work`` is laid out as a brace (`angular_brace`, but for its turning both ways): against the line
     joining its ends (`_chord_layout`) or, where a hand drew the brace askew, against its arms' own line
-    (`_arms_layout`)."""
-    return _chord_layout(work) or _arms_layout(work)
+    (`_arms_layout`; ``noise``, the pen's in ``work``'s units, as it takes it)."""
+    return _chord_layout(work) or _arms_layout(work, noise)
 
 
 def _chord_layout(work: np.ndarray) -> bool:
@@ -113,6 +113,10 @@ def _chord_layout(work: np.ndarray) -> bool:
 
 POINT_OUT = 0.08
 """`_arms_layout`: the point stands out from the arms' line by at least this share of the arms' span..."""
+POINT_NOISE = 3.0
+"""...and by at least this many of the pen's noise widths (a straight line's wobble reaches about three,
+`lines.wobble_reach`: a square bracket's spine in whole pixels jogs a pixel or two, which the arms' line, the spine's
+own, would take for a point)..."""
 PAST_POINT = 1.05
 """...nothing of the stroke stands out farther than this many times the point does (a curl swung wider is a
 question mark's hook or an S's bend)..."""
@@ -121,13 +125,14 @@ ENDS_BEHIND = 0.25
 back behind the arms, away from the point."""
 
 
-def _arms_layout(work: np.ndarray) -> bool:
+def _arms_layout(work: np.ndarray, noise: float = 0.0) -> bool:
     """Whether ``work`` is laid out as a brace against its arms' line, not its chord: a hand that curls one end wider
     than the other, or draws the brace askew, tilts the chord against the arms (hcira's mouse braces: the farthest
     point from the chord is then a curl, an arm heads 35-75 degrees off it), but the arms still run on in line with
     each other. The point is the farthest from the chord within `POINT_AT` of the path; the arms' line joins the
     middles of the runs before and after it (as `_chord_layout` takes them), which head along it (`ARM_DEG`) and run on
-    (`ARM_INK`); the point stands out of that line (`POINT_OUT`, under `MAX_DEPTH` of the span) farther than anything
+    (`ARM_INK`); the point stands out of that line (`POINT_OUT`, `POINT_NOISE` times the pen's ``noise``; under
+    `MAX_DEPTH` of the span) farther than anything
     else (`PAST_POINT`), the ends curl back behind it (`ENDS_BEHIND`), and the stroke runs along it (`NO_RETURN`)."""
     if len(work) < 16:
         return False
@@ -159,7 +164,8 @@ def _arms_layout(work: np.ndarray) -> bool:
     off = (work - first) @ np.array([along_arms[1], -along_arms[0]])
     depth = float(off[k])
     out = math.copysign(1.0, depth) * off
-    if not POINT_OUT * span <= abs(depth) < MAX_DEPTH * span or float(out.max()) > PAST_POINT * abs(depth):
+    if (not max(POINT_OUT * span, POINT_NOISE * noise) <= abs(depth) < MAX_DEPTH * span
+            or float(out.max()) > PAST_POINT * abs(depth)):
         return False
     if max(float(out[0]), float(out[-1])) > ENDS_BEHIND * abs(depth):
         return False
@@ -179,4 +185,4 @@ def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     if found.kind != "curve":
         return False
     work = sg.hooks_cut(unit, JUDGED_POINTS)
-    return laid_out(work) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more
+    return laid_out(work, noise) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more
