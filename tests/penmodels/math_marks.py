@@ -12,7 +12,7 @@ from penmodels.open_marks import Mark, Point, _bezier
 EXPECTED: dict[str, frozenset[str]] = {
     "radical": frozenset({"polyline"}), "round-radical": frozenset({"polyline"}),
     "barless-radical": frozenset({"polyline"}), "parenthesis": frozenset({"arc", "curve"}),
-    "hooked-parenthesis": frozenset({"arc", "curve"})}
+    "hooked-parenthesis": frozenset({"arc", "curve"}), "flicked-parenthesis": frozenset({"arc", "curve"})}
 """The kinds each family may be read as (benchmarks/label_kinds.tsv, laviola: a radical sign is straight sides, open,
 a polyline; a parenthesis one smooth open bow, an arc, or a curve where it bends unevenly)."""
 
@@ -49,8 +49,11 @@ def _toward(a: Point, b: Point, d: float) -> Point:
 
 
 def _placed(rng: random.Random, pts: list[Point], tilt_deg: float) -> tuple[Point, ...]:
-    """``pts`` (round the origin, y up) turned to y down, tilted by up to ``tilt_deg`` either way and moved to a random
-    place on the 1600 x 1000 canvas."""
+    """``pts`` (y up) turned to y down, tilted by up to ``tilt_deg`` either way and moved to a random place on the
+    1600 x 1000 canvas (the middle of their extent)."""
+    mx = (min(x for x, _ in pts) + max(x for x, _ in pts)) / 2
+    my = (min(y for _, y in pts) + max(y for _, y in pts)) / 2
+    pts = [(x - mx, y - my) for x, y in pts]
     angle = math.radians(rng.uniform(-tilt_deg, tilt_deg))
     c, s = math.cos(angle), math.sin(angle)
     cx, cy = rng.uniform(500, 1100), rng.uniform(350, 650)
@@ -191,6 +194,29 @@ def _end_turned(rng: random.Random, pts: list[Point], h: float) -> list[Point]:
     return out
 
 
+def flicked_parenthesis(seed: int) -> Mark:
+    """A parenthesis as `parenthesis` whose end (or both) the pen flicks off straight: a straight piece 0.04-0.1 of
+    its height turned at once 40-90 degrees off the bow's heading, on round the bow (in) or back against it (out)."""
+    rng = random.Random(f"flicked-parenthesis:{seed}")
+    h = rng.uniform(100, 320)
+    pts = _bow(rng, h)
+    ends = rng.choice(("top", "bottom", "both"))
+    if ends in ("bottom", "both"):
+        pts = _end_flicked(rng, pts, h)
+    if ends in ("top", "both"):
+        pts = _end_flicked(rng, pts[::-1], h)[::-1]
+    return Mark("flicked-parenthesis", _finished(rng, pts), True)
+
+
+def _end_flicked(rng: random.Random, pts: list[Point], h: float) -> list[Point]:
+    """``pts`` with a straight piece at their last end, turned at once off the bow's heading, in or out."""
+    length = rng.uniform(0.04, 0.1) * h
+    (x0, y0), (x1, y1) = pts[-4], pts[-1]
+    heading = math.atan2(y1 - y0, x1 - x0) + math.radians(rng.uniform(40, 90)) * rng.choice((-1.0, 1.0))
+    end = (x1 + length * math.cos(heading), y1 + length * math.sin(heading))
+    return pts + _line(pts[-1], end, 6)
+
+
 def _finished(rng: random.Random, pts: list[Point]) -> tuple[Point, ...]:
     """A left parenthesis' points turned into a right one's half the time, drawn up one time in five, placed."""
     if rng.random() < 0.5:
@@ -202,4 +228,4 @@ def _finished(rng: random.Random, pts: list[Point]) -> tuple[Point, ...]:
 
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "radical": radical, "round-radical": round_radical, "barless-radical": barless_radical,
-    "parenthesis": parenthesis, "hooked-parenthesis": hooked_parenthesis}
+    "parenthesis": parenthesis, "hooked-parenthesis": hooked_parenthesis, "flicked-parenthesis": flicked_parenthesis}
