@@ -94,7 +94,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
-   sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below.
+   sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
+   of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).
    Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
