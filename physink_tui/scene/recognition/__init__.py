@@ -150,13 +150,15 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `stairs.py`: a chain of sharp corners joined by straight, repeating sides (staircases, square waves, zig-zags),
   judged at its sides' scale, read as a polyline through its corners
 - `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline)
-- `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), read as a brace (a curve)
+- `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), or askew (laid out against its
+  arms' own line), read as a brace (a curve)
 - `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the
   tenth the rules cut as one), read as a tick (a polyline)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
-- `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few
-  sparse events turn at every one (a round shape sampled, not a polygon's sides)
+- `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points (their step
+  judged along the stroke's body, not a landing's cluster), and whether a few sparse events turn at every one (a
+  round shape sampled, not a polygon's sides)
 - `units.py`: the pen's noise judged from a stroke when not stated (``noise=None``, `physink recognize`'s
   default): the lattice its coordinates are rounded to (whole pixels: 1), else its jitter as a rounding device's
 - `landing.py`: a finger's or pen's dwell where it lands or lifts (points wandering about the end), kept as one point
