@@ -41,7 +41,7 @@ f7632ef: start blob circles 74, stars 88, checks 74, pigtails 85, x 88; lift pau
 stars 81, circles 82, checks 74, pigtails 85, arrows 85; touch circles 89, rectangles 90. Before the events' step was
 judged along the stroke's body (`pen_noise.path_step`: a landing's short steps outnumbered a trackpad's events) and a
 brace's point by few events turned both ways at 20 degrees (`angular_braces.POINT_LOBE_DEG`), on main 2996772: trackpad
-rectangles 89, stars 88, left braces 79, right braces 81, left brackets 88, right brackets 88 (now 90, 90, 85, 84, 90,
+rectangles 89, stars 88, left braces 79, right braces 81, left brackets 88, right brackets 88 (now 90, 90, 84, 83, 90,
 89)."""
 
 

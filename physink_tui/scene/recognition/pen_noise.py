@@ -53,21 +53,27 @@ def shape_bend(pts: np.ndarray) -> float:
 
 
 END_PATH = 0.1
-"""`path_step` leaves out the steps in this share of the path at each end."""
+"""`path_step` judges the events' own step on the path but for this share of it at each end..."""
+CLUSTER_STEP = 1 / 3
+"""...and leaves out the run of steps at an end shorter than this share of that step: a finger's landing or lift..."""
+CLUSTER_STEPS = 2
+"""...where the run is this many steps or more (a landing's 4-10 events, a lift's hook of 2-4; a pen slowing as it
+starts or stops by a single short step keeps it)."""
 
 
 def path_step(steps: np.ndarray) -> float:
-    """The step between the stroke's points along its body: the median of ``steps`` (in path order) whose middle lies
-    past the first and before the last `END_PATH` of the path. However many short steps a finger's landing, a lift's
-    hook or a burst of events adds at an end, a device's few events far apart keep their step (a trackpad's 8-25
-    events with 4-10 more where the finger settled: the plain median is the cluster's step, a fifth of the events' or
-    less, and a box's corners are then taken for a shaky hand's jitter, read round); a stroke sampled evenly keeps
-    its median.
+    """The step between the stroke's points (``steps``, in path order): their median, without a cluster of short steps
+    at either end (`CLUSTER_STEPS` or more, each under `CLUSTER_STEP` of the median step of the path's body, its first
+    and last `END_PATH` left out).
+    However many short steps a finger's landing or a lift's hook adds at an end, a device's few events far apart keep
+    their step (a trackpad's 8-25 events with 4-10 more where the finger settled: the plain median is the cluster's, a
+    fifth of the events' or less, and a box's corners are then taken for a shaky hand's jitter, read round); a pen that
+    only slows towards its ends keeps its median.
 
     >>> path_step(np.array([1.0, 1.0, 1.0, 1.0, 1.0, 50.0, 50.0, 50.0, 50.0, 50.0, 50.0, 1.0]))
     50.0
-    >>> path_step(np.array([2.0, 2.0, 3.0]))
-    2.0
+    >>> path_step(np.array([20.0, 30.0, 50.0, 50.0, 50.0, 50.0, 30.0, 20.0]))
+    40.0
     """
     steps = np.asarray(steps, dtype=float)
     if len(steps) == 0:
@@ -75,7 +81,15 @@ def path_step(steps: np.ndarray) -> float:
     middle = np.cumsum(steps) - steps / 2
     length = float(middle[-1] + steps[-1] / 2)
     body = steps[(middle >= END_PATH * length) & (middle <= (1 - END_PATH) * length)]
-    return median(body if len(body) else steps)
+    short = steps < CLUSTER_STEP * median(body if len(body) else steps)
+    first, last = 0, len(steps)
+    while first < last and short[first]:
+        first += 1
+    while last > first and short[last - 1]:
+        last -= 1
+    first = first if first >= CLUSTER_STEPS else 0
+    last = last if len(steps) - last >= CLUSTER_STEPS else len(steps)
+    return median(steps[first:last] if last > first else steps)
 
 
 SPARSE_STEP_OF_DIAGONAL = 0.08
