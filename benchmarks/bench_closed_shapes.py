@@ -43,7 +43,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np
 from bench_device_stress import coarse
-from penmodels.hurried import HurriedPen, touching
+from penmodels.hurried import SHAKY_SLOW, HurriedPen, touching
+from penmodels.shapes import Curve as PenCurve
 from penmodels.shapes import Outline, Oval, Shape
 from penmodels.shapes import Path as PenPath
 from shapely.geometry import Polygon as ShapelyPolygon
@@ -215,6 +216,48 @@ def crossed_triangle(rng: random.Random) -> Shape:
     return PenPath(_turned([start, b, c, end], rng.uniform(0, math.pi)))
 
 
+def rounded_polygon(sides: int) -> Callable[[random.Random], Shape]:
+    """An `irregular` polygon whose every corner a hand rounded a little: an arc tangent to both sides taking off
+    0.08-0.2 of the shorter side at each (`_corner_arc`), straight runs between."""
+    def make(rng: random.Random) -> Shape:
+        corners = list(irregular(sides)(rng).vertices)  # type: ignore[union-attr]
+        pts: list[Point] = []
+        for i, corner in enumerate(corners):
+            before, after = corners[i - 1], corners[(i + 1) % sides]
+            shorter = min(math.dist(before, corner), math.dist(corner, after))
+            pts += _corner_arc(corner, before, after, rng.uniform(0.08, 0.2) * shorter, True)
+        return Outline(tuple(pts))
+    return make
+
+
+def egg(rng: random.Random) -> Shape:
+    """An egg: an oval of aspect 1.2-2 whose one end is fatter than the other (the half-width grows by 10-25 % of
+    itself from the narrow end to the wide one: ``y = b sin t (1 + k cos t)``), turned; drawn as a smooth closed
+    curve (72 points, the start repeated)."""
+    a = rng.uniform(20, 200)
+    b = a / rng.uniform(1.2, 2.0)
+    k = rng.uniform(0.1, 0.25)
+    pts = [(a * math.cos(t), b * math.sin(t) * (1 + k * math.cos(t)))
+           for t in (2 * math.pi * j / 72 for j in range(73))]
+    start = rng.randrange(72)
+    return PenCurve(_turned([*pts[start:72], *pts[:start + 1]], rng.uniform(0, 2 * math.pi)))
+
+
+def lumpy_circle(rng: random.Random) -> Shape:
+    """A circle drawn unevenly, as people's are: its radius wanders by the 2nd to 5th harmonics round it, each of
+    amplitude up to 3 % (in all 4-8 % from the mean), so it bulges and flattens but turns one way all round; drawn as
+    a smooth closed curve (72 points, the start repeated)."""
+    r = rng.uniform(20, 200)
+    waves = [(m, rng.uniform(0.0, 0.03), rng.uniform(0, 2 * math.pi)) for m in (2, 3, 4, 5)]
+    spread = sum(amp for _, amp, _ in waves)
+    want = rng.uniform(0.04, 0.08)
+    waves = [(m, amp * want / spread, ph) for m, amp, ph in waves]
+    pts = [(r * (1 + sum(amp * math.cos(m * t + ph) for m, amp, ph in waves)) * math.cos(t),
+            r * (1 + sum(amp * math.cos(m * t + ph) for m, amp, ph in waves)) * math.sin(t))
+           for t in (2 * math.pi * j / 72 for j in range(73))]
+    return PenCurve(_turned(pts, rng.uniform(0, 2 * math.pi)))
+
+
 def circle(rng: random.Random) -> Shape:
     return Oval(CENTRE, rng.uniform(20, 200), 0.0)
 
@@ -227,19 +270,23 @@ def oval(low: float, high: float) -> Callable[[random.Random], Shape]:
 
 
 FAMILIES: dict[str, Callable[[random.Random], Shape]] = {
-    "pentagon": regular(5), "hexagon": regular(6), "octagon": regular(8),
-    "pentagon-irregular": irregular(5), "hexagon-irregular": irregular(6), "octagon-irregular": irregular(8),
+    "pentagon": regular(5), "hexagon": regular(6), "heptagon": regular(7), "octagon": regular(8),
+    "pentagon-irregular": irregular(5), "hexagon-irregular": irregular(6), "heptagon-irregular": irregular(7),
+    "octagon-irregular": irregular(8), "pentagon-rounded": rounded_polygon(5), "hexagon-rounded": rounded_polygon(6),
+    "heptagon-rounded": rounded_polygon(7), "octagon-rounded": rounded_polygon(8),
     "rhombus": rhombus, "parallelogram": parallelogram, "trapezoid": trapezoid,
     "rounded-rectangle": rounded_rectangle, "triangle-crossed": crossed_triangle,
     "star-5": star(5), "star-6": star(6), "star-7": star(7),
     "box-corners-rounded": box_corners_off(rounded=True), "box-corner-cut": box_corners_off(rounded=False),
-    "circle": circle, "oval-1.3-1.8": oval(1.3, 1.8), "oval-1.8-3": oval(1.8, 3.0),
+    "circle": circle, "oval-1.3-1.8": oval(1.3, 1.8), "oval-1.8-3": oval(1.8, 3.0), "egg": egg,
+    "circle-lumpy": lumpy_circle,
 }
 EXPECTED: dict[str, tuple[str, ...]] = {
-    **{f: ("polygon",) for f in FAMILIES if f.startswith(("pentagon", "hexagon", "octagon", "star", "triangle"))},
+    **{f: ("polygon",) for f in FAMILIES
+       if f.startswith(("pentagon", "hexagon", "heptagon", "octagon", "star", "triangle"))},
     "rhombus": CORNERED, "parallelogram": CORNERED, "trapezoid": CORNERED, "rounded-rectangle": ("box",),
     "box-corners-rounded": ("box",), "box-corner-cut": ("box",),
-    "circle": ROUND, "oval-1.3-1.8": ("ellipse",), "oval-1.8-3": ("ellipse",),
+    "circle": ROUND, "oval-1.3-1.8": ("ellipse",), "oval-1.8-3": ("ellipse",), "egg": ROUND, "circle-lumpy": ROUND,
 }
 """The kinds a person expects for each family (either kind of a pair counts as right)."""
 
@@ -255,6 +302,8 @@ def outline_of(s: Shape, n: int = 72) -> list[Point]:
     """The outline meant, as a ring of points (an oval sampled at ``n`` points)."""
     if isinstance(s, Outline):
         return list(s.vertices)
+    if isinstance(s, PenCurve):  # a smooth closed curve (an egg, a lumpy circle): its points, the start once
+        return list(s.points[:-1])
     if isinstance(s, PenPath):  # a triangle whose tails cross at its first corner (`crossed_triangle`)
         (sx, sy), b, c, (ex, ey) = s.vertices
         dx1, dy1, dx2, dy2 = b[0] - sx, b[1] - sy, ex - c[0], ey - c[1]
@@ -271,6 +320,8 @@ def careful(s: Shape, seed: int) -> list[tuple[float, float, float]]:
     """The virtual pen round the outline, starting at a corner (or a point of an oval) that the seed picks."""
     if isinstance(s, PenPath):
         ring = list(s.vertices)
+    elif isinstance(s, PenCurve):
+        ring = list(s.points)
     else:
         ring = outline_of(s)
         start = seed % len(ring)
@@ -285,6 +336,11 @@ def hurried(s: Shape, seed: int) -> list[tuple[float, float, float]]:
     return touching(HurriedPen(random.Random(seed)).draw(s, 0.0)[0])
 
 
+def slow(s: Shape, seed: int) -> list[tuple[float, float, float]]:
+    """The slow, unsteady hand (`penmodels.hurried.SHAKY_SLOW`: 180-300 px/s along a side, a 4-7 Hz tremor)."""
+    return touching(HurriedPen(random.Random(seed), habits=SHAKY_SLOW).draw(s, 0.0)[0])
+
+
 def hurried_coarse(s: Shape, seed: int) -> list[tuple[float, float, float]]:
     """The hurried hand on a device that sends an event every 15-30 ms (`bench_device_stress.coarse`): a stroke
     drawn in half a second comes as 15-35 points, each corner between two of them."""
@@ -295,7 +351,7 @@ def hurried_coarse(s: Shape, seed: int) -> list[tuple[float, float, float]]:
 
 
 PENS: dict[str, Callable[[Shape, int], list[tuple[float, float, float]]]] = {
-    "careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse}
+    "careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse, "slow": slow}
 
 
 def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True) -> tuple[str | None, float | None]:
