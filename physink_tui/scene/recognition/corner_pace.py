@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
-SLOW_CORNER = 0.6
+SLOW_CORNER = 0.55
 """A closed polygon's vertices were meant when the pen's pace near them (`CORNER_REACH`) is, at the median vertex, under
-this share of the stroke's mean pace. Measured on fits of five sides or more that explain half the round shape's error
-(`round_or_cornered.CORNERS_EXPLAIN`): the 326 timed closed circles of the design sets at 0.68 or more, the fourth
-group's 41 timed closed circles at 0.93 or more; the Quick, Draw! octagons at 0.39-0.78 (median 0.51), hexagons at
-0.30-0.61."""
+this share of the stroke's mean pace. Measured where `round_or_cornered.slowed_corners` asks it (a loop read round, a
+fit of five sides or more explaining half its error, its median vertex turning within half a side), each stroke's
+slowest such fit: the design sets' timed circles at 0.61 or more (one itt mouse circle drawn as a polygon at 0.61, the
+next at 0.74), the fourth group's timed circles at 0.75 or more; the Quick, Draw! octagons read round at main
+2996772 at 0.37-0.66 (7 under 0.55 become polygons; under 0.6, 9, too near the design circle's 0.61)."""
 CORNER_REACH = 0.15
 """The pace at a vertex is taken over the path within this share of the mean side either side of it."""
 
