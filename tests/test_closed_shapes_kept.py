@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_closed_shapes import EXPECTED, FAMILIES, PENS, TUNING_SEEDS, class_right, read
+from bench_closed_shapes import ALL_FAMILIES, EXPECTED, PENS, TUNING_SEEDS, class_right, read
 
 CORNERED_FLOORS = {
     ("pentagon", "careful"): 30, ("pentagon", "hurried"): 30,
@@ -66,10 +66,10 @@ def test_a_cornered_closed_shape_keeps_its_corners(family: str, pen: str) -> Non
     assert sum(class_right(family, k) for k in got) >= CORNERED_FLOORS[(family, pen)], got
 
 
-ROUND_FAMILIES = [f for f in FAMILIES if EXPECTED[f][0] in ("circle", "ellipse")]
+ROUND_FAMILIES = [f for f in ALL_FAMILIES if EXPECTED[f][0] in ("circle", "ellipse")]
 
 
-@pytest.mark.parametrize("pen", [p for p in PENS if p != "slow"])
+@pytest.mark.parametrize("pen", list(PENS))
 @pytest.mark.parametrize("family", ROUND_FAMILIES)
 def test_a_circle_or_an_oval_stays_round_with_or_without_times(family: str, pen: str) -> None:
     for timed in (True, False):

@@ -52,13 +52,14 @@ def no_round_shape(loop: np.ndarray, noise: float, ellipse: EllipseFit | None) -
     return (ellipse is None or ellipse[4] > WITHIN_ROUND * allowed) and turned_back(loop, noise) >= TURNS_BACK
 
 
-WITHIN_ROUND = 1.0
-"""A closed loop whose ellipse misses it by no more than this many times what a round stroke may
+WITHIN_ROUND = 0.8
+"""A closed loop whose ellipse misses it by no more than this share of what a round stroke may
 (`open_shapes.round_error`) is not refused as a star for turning back (`TURNS_BACK`): a slow, unsteady hand's tremor
 (4-7 Hz at 180-300 px/s: waves 25-75 px long) makes a circle's coarse turning wiggle back by up to 850 degrees in all,
 but its ellipse misses it by 0.1-0.65 of that allowance (the pen models' circles, ovals, eggs and lumpy circles drawn
 by `penmodels.hurried.SHAKY_SLOW`, tuning seeds 0-29), while a star's outline misses its ellipse by 1.01-2.4 of it (the
-pen models' five- to seven-pointed stars, every pen, the same seeds)."""
+pen models' five- to seven-pointed stars, every pen, the same seeds); between the two. Held-back seeds 1000-1029: the
+slow hand's round shapes 0.05-0.71, the stars 0.79-2.49 (one six-pointed star through a coarse device at 0.79)."""
 
 
 def turned_back(loop: np.ndarray, noise: float) -> float:
