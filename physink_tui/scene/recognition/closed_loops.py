@@ -45,7 +45,7 @@ most 88 degrees (a dent where the ends meet), the fourth group's 207 at most 43.
 def no_round_shape(loop: np.ndarray, noise: float, ellipse: EllipseFit | None) -> bool:
     """Whether a closed loop is no circle or ellipse whatever the ranking would say: its `fit_ellipse` misses it by
     more than `FAR_FROM_ROUND` times `open_shapes.round_error`, or it turns back by `TURNS_BACK` in all (a star) and its
-    ellipse misses it by more than a round stroke may (`WITHIN_ROUND`)."""
+    ellipse misses it by more than `WITHIN_ROUND` of that error (a tremor turns a slow hand's circle back too)."""
     allowed = open_shapes.round_error(ellipse, noise) if ellipse is not None else 0.0
     if ellipse is not None and ellipse[4] > FAR_FROM_ROUND * allowed:
         return True
