@@ -59,12 +59,17 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its
    vertices turn within 0.4 of their shorter side (`polygon_checks.sharp_corners`; a round loop needs 0.8): a
    hexagon or octagon whose many vertices the complexity penalty outweighed; never on points sparser than four to
-   the shortest side (a circle given as a few points round it). A polygon of five sides or more, or a loop read round
-   with two sharp corners, is the box drawn with a corner or two rounded off (`rounded_corners`) when four sides of
-   its fit run straight for most of their length, meet near right angles, and only bows or sharp turns lie between
-   them (a straight stretch between two sides is a side: a pentagon's, a hexagon's, a cut corner's). A closed loop
-   its ellipse misses by more than twice `open_shapes.round_error`, or that turns back against its own direction by
-   half a turn or more in all (a star's inner corners), is offered no circle or ellipse
+   the shortest side (a circle given as a few points round it). Where the stroke's times are known, a polygon of five
+   sides or more is also read so when the pen slowed at its vertices (`corner_pace`: under 0.55 of its mean pace at the
+   median vertex) and its median vertex turns within half its shorter side: a mouse's octagon, its corners blurred by
+   sparse points, which a person's mouse circle (drawn at an even pace) fits as closely. A polygon of five sides or
+   more, or a loop read round with two sharp corners, is the box drawn with a corner or two rounded off
+   (`rounded_corners`) when four sides of its fit run straight for most of their length, meet near right angles, and
+   only bows or sharp turns lie between them (a straight stretch between two sides is a side: a pentagon's, a
+   hexagon's, a cut corner's). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that
+   turns back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse
+   misses it by more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a
+   circle back too), is offered no circle or ellipse
    (`closed_loops.no_round_shape`); a stroke whose tails cross each other near its ends is closed however far apart
    its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
@@ -94,7 +99,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
-   sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below.
+   sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
+   of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).
    Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
@@ -136,6 +142,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `polygon_checks.py`: whether a fit's vertices are real corners; flat ends for hairpins; how much two outlines
   overlap; whether a closed fit's corners are sharp rather than round bends
 - `round_or_cornered.py`: a loop the ranking read round, read as the polygon drawn when its corners are sharp
+  or the pen slowed at them
+- `corner_pace.py`: the pen's pace at a closed polygon's vertices against its mean pace (a hand slows at the corners
+  it means, keeps its pace round a circle)
 - `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off)
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
@@ -149,13 +158,15 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `stairs.py`: a chain of sharp corners joined by straight, repeating sides (staircases, square waves, zig-zags),
   judged at its sides' scale, read as a polyline through its corners
 - `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline)
-- `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), read as a brace (a curve)
+- `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), or askew (laid out against its
+  arms' own line), read as a brace (a curve)
 - `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the
   tenth the rules cut as one), read as a tick (a polyline)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
-- `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points, and whether a few
-  sparse events turn at every one (a round shape sampled, not a polygon's sides)
+- `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points (their step
+  judged along the stroke's body, not a landing's cluster), and whether a few sparse events turn at every one (a
+  round shape sampled, not a polygon's sides)
 - `units.py`: the pen's noise judged from a stroke when not stated (``noise=None``, `physink recognize`'s
   default): the lattice its coordinates are rounded to (whole pixels: 1), else its jitter as a rounding device's
 - `landing.py`: a finger's or pen's dwell where it lands or lifts (points wandering about the end), kept as one point

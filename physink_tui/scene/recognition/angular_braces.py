@@ -50,18 +50,35 @@ def _arm_heading_ok(piece: np.ndarray, direction: np.ndarray) -> bool:
     return norm > 0 and float(d @ direction) >= math.cos(math.radians(ARM_DEG)) * norm
 
 
-def angular_brace(work: np.ndarray, lobes: list[float]) -> bool:
+POINT_LOBE_DEG = 20.0
+"""A brace laid out as one (`laid_out`) turns both ways if a run of its turning the other way from the rest reaches
+this many degrees (`stroke_features.lobes` ignores runs under 35 degrees: a wobble). A device's few events sample the
+point by one or two, and the stroke then turns out towards it by only 20-35 degrees before turning back (the design
+braces by 8-25 events evenly in time, `bench_device_stress`); a parenthesis or an arc laid out so turns one way."""
+
+
+def angular_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0) -> bool:
     """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes``
     its `stroke_features.lobes`) is a curly brace by its layout: on one side of the line joining its ends
     (`ONE_SIDE`) and running along it (`NO_RETURN`), its point about halfway (`POINT_AT`) standing out less than
     `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run on (`ARM_INK`), parallel to it
-    (`ARM_DEG`) and off it (`ARM_OFF`),
-    and turning both ways (two lobes or more: its curls the other way from its point)."""
-    return len(lobes) >= 2 and laid_out(work)
+    (`ARM_DEG`) and off it (`ARM_OFF`) -- or so against its arms' own line where it was drawn askew (`laid_out`) --
+    and turning both ways (two lobes or more: its curls the other way from its point; `POINT_LOBE_DEG` where the
+    point was sampled by few events); ``noise``: the pen's, in ``work``'s units."""
+    if not laid_out(work, noise):
+        return False
+    return len(lobes) >= 2 or len(sf.lobes(work, POINT_LOBE_DEG, noise=noise)) >= 2
 
 
-def laid_out(work: np.ndarray) -> bool:
-    """Whether ``work`` is laid out as a brace (`angular_brace`, but for its turning both ways)."""
+def laid_out(work: np.ndarray, noise: float = 0.0) -> bool:
+    """Whether ``work`` is laid out as a brace (`angular_brace`, but for its turning both ways): against the line
+    joining its ends (`_chord_layout`) or, where a hand drew the brace askew, against its arms' own line
+    (`_arms_layout`; ``noise``, the pen's in ``work``'s units, as it takes it)."""
+    return _chord_layout(work) or _arms_layout(work, noise)
+
+
+def _chord_layout(work: np.ndarray) -> bool:
+    """Whether ``work`` is laid out as a brace against the line joining its ends (`angular_brace`)."""
     if len(work) < 16:
         return False
     start, end = work[0], work[-1]
@@ -94,6 +111,68 @@ def laid_out(work: np.ndarray) -> bool:
     return min(stand) >= ARM_OFF * chord and abs(depth) >= PAST_ARMS * max(stand)
 
 
+POINT_OUT = 0.08
+"""`_arms_layout`: the point stands out from the arms' line by at least this share of the arms' span..."""
+POINT_NOISE = 3.0
+"""...and by at least this many of the pen's noise widths (a straight line's wobble reaches about three,
+`lines.wobble_reach`: a square bracket's spine in whole pixels jogs a pixel or two, which the arms' line, the spine's
+own, would take for a point)..."""
+PAST_POINT = 1.05
+"""...nothing of the stroke stands out farther than this many times the point does (a curl swung wider is a
+question mark's hook or an S's bend)..."""
+ENDS_BEHIND = 0.25
+"""...and each end stands out on the point's side by at most this share of the point's depth: the curls turn the ends
+back behind the arms, away from the point."""
+
+
+def _arms_layout(work: np.ndarray, noise: float = 0.0) -> bool:
+    """Whether ``work`` is laid out as a brace against its arms' line, not its chord: a hand that curls one end wider
+    than the other, or draws the brace askew, tilts the chord against the arms (hcira's mouse braces: the farthest
+    point from the chord is then a curl, an arm heads 35-75 degrees off it), but the arms still run on in line with
+    each other. The point is the farthest from the chord within `POINT_AT` of the path; the arms' line joins the
+    middles of the runs before and after it (as `_chord_layout` takes them), which head along it (`ARM_DEG`) and run on
+    (`ARM_INK`); the point stands out of that line (`POINT_OUT`, `POINT_NOISE` times the pen's ``noise``; under
+    `MAX_DEPTH` of the span) farther than anything
+    else (`PAST_POINT`), the ends curl back behind it (`ENDS_BEHIND`), and the stroke runs along it (`NO_RETURN`)."""
+    if len(work) < 16:
+        return False
+    start, end = work[0], work[-1]
+    chord = float(np.hypot(*(end - start)))
+    if chord == 0.0:
+        return False
+    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    length = float(cum[-1])
+    unit = (end - start) / chord
+    across = (work[:, 0] - start[0]) * unit[1] - (work[:, 1] - start[1]) * unit[0]
+    middle = np.flatnonzero((cum >= POINT_AT[0] * length) & (cum <= POINT_AT[1] * length))
+    if len(middle) == 0:
+        return False
+    k = int(middle[np.argmax(np.abs(across[middle]))])
+    at = float(cum[k])
+    arms = (work[(cum >= 0.35 * at) & (cum <= 0.8 * at)],
+            work[(cum >= at + 0.2 * (length - at)) & (cum <= at + 0.65 * (length - at))])
+    if any(len(arm) < 3 for arm in arms):
+        return False
+    first, last = arms[0].mean(axis=0), arms[1].mean(axis=0)
+    span = float(np.hypot(*(last - first)))
+    if span == 0.0:
+        return False
+    along_arms = (last - first) / span
+    if any(not _arm_heading_ok(arm, along_arms)
+           or sg.path_length(arm) > ARM_INK * float(np.hypot(*(arm[-1] - arm[0]))) for arm in arms):
+        return False
+    off = (work - first) @ np.array([along_arms[1], -along_arms[0]])
+    depth = float(off[k])
+    out = math.copysign(1.0, depth) * off
+    if (not max(POINT_OUT * span, POINT_NOISE * noise) <= abs(depth) < MAX_DEPTH * span
+            or float(out.max()) > PAST_POINT * abs(depth)):
+        return False
+    if max(float(out[0]), float(out[-1])) > ENDS_BEHIND * abs(depth):
+        return False
+    along = (work - first) @ along_arms
+    return float(np.max(np.maximum.accumulate(along) - along)) < NO_RETURN * span
+
+
 JUDGED_POINTS = 128
 """`kept_brace` judges the stroke resampled to this many points, smoothed, its end hooks cut (as `recognize` judges an
 open stroke)."""
@@ -106,4 +185,4 @@ def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     if found.kind != "curve":
         return False
     work = sg.hooks_cut(unit, JUDGED_POINTS)
-    return laid_out(work) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more
+    return laid_out(work, noise) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more

@@ -44,10 +44,22 @@ most 88 degrees (a dent where the ends meet), the fourth group's 207 at most 43.
 
 def no_round_shape(loop: np.ndarray, noise: float, ellipse: EllipseFit | None) -> bool:
     """Whether a closed loop is no circle or ellipse whatever the ranking would say: its `fit_ellipse` misses it by
-    more than `FAR_FROM_ROUND` times `open_shapes.round_error`, or it turns back by `TURNS_BACK` in all (a star)."""
-    if ellipse is not None and ellipse[4] > FAR_FROM_ROUND * open_shapes.round_error(ellipse, noise):
+    more than `FAR_FROM_ROUND` times `open_shapes.round_error`, or it turns back by `TURNS_BACK` in all (a star) and its
+    ellipse misses it by more than `WITHIN_ROUND` of that error (a tremor turns a slow hand's circle back too)."""
+    allowed = open_shapes.round_error(ellipse, noise) if ellipse is not None else 0.0
+    if ellipse is not None and ellipse[4] > FAR_FROM_ROUND * allowed:
         return True
-    return turned_back(loop, noise) >= TURNS_BACK
+    return (ellipse is None or ellipse[4] > WITHIN_ROUND * allowed) and turned_back(loop, noise) >= TURNS_BACK
+
+
+WITHIN_ROUND = 0.8
+"""A closed loop whose ellipse misses it by no more than this share of what a round stroke may
+(`open_shapes.round_error`) is not refused as a star for turning back (`TURNS_BACK`): a slow, unsteady hand's tremor
+(4-7 Hz at 180-300 px/s: waves 25-75 px long) makes a circle's coarse turning wiggle back by up to 850 degrees in all,
+but its ellipse misses it by 0.1-0.65 of that allowance (the pen models' circles, ovals, eggs and lumpy circles drawn
+by `penmodels.hurried.SHAKY_SLOW`, tuning seeds 0-29), while a star's outline misses its ellipse by 1.01-2.4 of it (the
+pen models' five- to seven-pointed stars, every pen, the same seeds); between the two. Held-back seeds 1000-1029: the
+slow hand's round shapes 0.05-0.71, the stars 0.79-2.49 (one six-pointed star through a coarse device at 0.79)."""
 
 
 def turned_back(loop: np.ndarray, noise: float) -> float:

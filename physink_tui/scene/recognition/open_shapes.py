@@ -170,12 +170,12 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, lobes)
             and not bracket_marks.looped_point(th, corners, lobes)
             and not bracket_marks.brace_point(work, corners, lobes)
-            and not angular_braces.angular_brace(work, lobes)
+            and not angular_braces.angular_brace(work, lobes, noise)
             and (all(straight_runs) or _bent_polyline(th, corners, lobes, bows)
                  or _tick_into_bend(work, corners, straight_runs, roundness, lobes))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if (len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, th, corners, straight_runs, roundness)
-            and not _brace_tip(work, corners) and not angular_braces.angular_brace(work, lobes)):
+            and not _brace_tip(work, corners) and not angular_braces.angular_brace(work, lobes, noise)):
         # a zig-zag's sharp teeth between a loose lead-in and a curled tail (`open_marks.sawtooth`)
         return Recognition("polyline", 0.8, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     bracket = bracket_marks.rounded_bracket_corners(work, th, corners, lobes)

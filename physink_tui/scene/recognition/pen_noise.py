@@ -36,9 +36,9 @@ def jitter(pts: np.ndarray) -> float:
 
 def shape_bend(pts: np.ndarray) -> float:
     """How much a round shape as big as the stroke bends its path between neighbouring points, in the points' units:
-    a circle d across (the bounding box's diagonal) turns its path by 2/d a unit length, so over a median step s it
-    bends by 2 s^2/d; a shape with corners bends more where they fall. Dense tablet strokes give a few hundredths of
-    a unit; a trackpad's 8-25 events round a box, tens of units.
+    a circle d across (the bounding box's diagonal) turns its path by 2/d a unit length, so over a step s (the step
+    along most of the path, `path_step`) it bends by 2 s^2/d; a shape with corners bends more where they fall. Dense
+    tablet strokes give a few hundredths of a unit; a trackpad's 8-25 events round a box, tens of units.
 
     >>> square = np.array([[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]], dtype=float)
     >>> round(shape_bend(square), 2)
@@ -47,13 +47,53 @@ def shape_bend(pts: np.ndarray) -> float:
     if len(pts) < 2:
         return 0.0
     d = pts[1:] - pts[:-1]
-    step = median(np.hypot(d[:, 0], d[:, 1]))
+    step = path_step(np.hypot(d[:, 0], d[:, 1]))
     size = bbox_diagonal(pts)
     return 2 * step * step / size if size > 0 else 0.0
 
 
+END_PATH = 0.1
+"""`path_step` judges the events' own step on the path but for this share of it at each end..."""
+CLUSTER_STEP = 1 / 3
+"""...and leaves out the run of steps at an end shorter than this share of that step: a finger's landing or lift..."""
+CLUSTER_STEPS = 2
+"""...where the run is this many steps or more (a landing's 4-10 events, a lift's hook of 2-4; a pen slowing as it
+starts or stops by a single short step keeps it)."""
+
+
+def path_step(steps: np.ndarray) -> float:
+    """The step between the stroke's points (``steps``, in path order): their median, without a cluster of short steps
+    at either end (`CLUSTER_STEPS` or more, each under `CLUSTER_STEP` of the median step of the path's body, its first
+    and last `END_PATH` left out).
+    However many short steps a finger's landing or a lift's hook adds at an end, a device's few events far apart keep
+    their step (a trackpad's 8-25 events with 4-10 more where the finger settled: the plain median is the cluster's, a
+    fifth of the events' or less, and a box's corners are then taken for a shaky hand's jitter, read round); a pen that
+    only slows towards its ends keeps its median.
+
+    >>> path_step(np.array([1.0, 1.0, 1.0, 1.0, 1.0, 50.0, 50.0, 50.0, 50.0, 50.0, 50.0, 1.0]))
+    50.0
+    >>> path_step(np.array([20.0, 30.0, 50.0, 50.0, 50.0, 50.0, 30.0, 20.0]))
+    40.0
+    """
+    steps = np.asarray(steps, dtype=float)
+    if len(steps) == 0:
+        return 0.0
+    middle = np.cumsum(steps) - steps / 2
+    length = float(middle[-1] + steps[-1] / 2)
+    body = steps[(middle >= END_PATH * length) & (middle <= (1 - END_PATH) * length)]
+    short = steps < CLUSTER_STEP * median(body if len(body) else steps)
+    first, last = 0, len(steps)
+    while first < last and short[first]:
+        first += 1
+    while last > first and short[last - 1]:
+        last -= 1
+    first = first if first >= CLUSTER_STEPS else 0
+    last = last if len(steps) - last >= CLUSTER_STEPS else len(steps)
+    return median(steps[first:last] if last > first else steps)
+
+
 SPARSE_STEP_OF_DIAGONAL = 0.08
-"""Events whose median step is at least this share of the stroke's diagonal sample it sparsely (a circle by 25
+"""Events whose step (`path_step`) is at least this share of the stroke's diagonal sample it sparsely (a circle by 25
 events or fewer; a tablet's dense strokes step a hundredth of it): the path between them is not known."""
 EVEN_TURNS = 0.75
 """A sparsely sampled closed stroke that turns at this share of its events or more by at least half its mean turn
@@ -84,7 +124,7 @@ def turns_at_every_event(pts: np.ndarray, diag: float) -> bool:
         return False
     d = np.diff(pts, axis=0)
     step = np.hypot(d[:, 0], d[:, 1])
-    typical = median(step)
+    typical = path_step(step)  # not a finger's landing or lift, whose short steps may outnumber the events'
     first, last = 0, len(step)
     while last - first > 4 and step[first] < typical / 3:  # a hook or the last of a dwell at an end, at this scale
         first += 1

@@ -218,14 +218,22 @@ def corner_roundness_closed(fit: PolygonFit) -> np.ndarray:
     return np.asarray(corner_roundness(unrolled, corners))
 
 
-def sharp_corners(fit: PolygonFit, step: float) -> bool:
-    """Whether the vertices of a closed fit are corners the pen turned at (`SHARP_CORNER`), on points dense enough to
-    tell a corner from a round bend (`MAX_STEP_OF_SHORTEST_SIDE`; ``step``: `typical_step` of the stroke's own points,
-    in the fit's units); any vertex turning less than `MIN_CORNER_DEG` must be sharp itself (`SHALLOW_CORNER_DEG`)."""
+def dense_enough(fit: PolygonFit, step: float) -> bool:
+    """Whether the stroke's own points are dense enough to tell a corner of the closed fit from a round bend
+    (`MAX_STEP_OF_SHORTEST_SIDE`; ``step``: `typical_step` of the stroke's own points, in the fit's units)."""
     verts = fit.vertices
     sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
-    if step > MAX_STEP_OF_SHORTEST_SIDE * float(np.hypot(*sides.T).min()):
+    return step <= MAX_STEP_OF_SHORTEST_SIDE * float(np.hypot(*sides.T).min())
+
+
+def sharp_corners(fit: PolygonFit, step: float) -> bool:
+    """Whether the vertices of a closed fit are corners the pen turned at (`SHARP_CORNER`), on points dense enough to
+    tell a corner from a round bend (`dense_enough`); any vertex turning less than `MIN_CORNER_DEG` must be sharp
+    itself (`SHALLOW_CORNER_DEG`)."""
+    if not dense_enough(fit, step):
         return False
+    verts = fit.vertices
+    sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
     roundness = corner_roundness_closed(fit)
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     turns = np.degrees(np.abs((heading - np.roll(heading, 1) + np.pi) % (2 * np.pi) - np.pi))  # at each vertex

@@ -197,7 +197,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     unit = (pts - origin) / scale
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
         rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale,
-                          (given if given > 0 else noise) / scale)
+                          (given if given > 0 else noise) / scale, _kept_times(times, keep, len(pts)))
         result = waves.as_curve(rules, unit)  # a wave's round bends are no zig-zag's teeth
         wavy = result is not rules
         # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
@@ -226,6 +226,15 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
         return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn,
                              not seen)
+
+
+def _kept_times(times: Sequence[float] | None, keep: np.ndarray | None, n: int) -> np.ndarray | None:
+    """The times of the points kept (``keep``: which of the given points they are; None where a long stroke was thinned,
+    which leaves no time to a point), or None."""
+    if times is None or keep is None or len(times) != len(keep):
+        return None
+    kept = np.asarray(times, dtype=float)[keep]
+    return kept if len(kept) == n else None
 
 
 def _point(p: np.ndarray) -> tuple[float, float]:
@@ -264,9 +273,9 @@ short pokes out by about 15 % of the stroke's diagonal)."""
 
 
 def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float,
-              pen: float) -> Recognition:
+              pen: float, times: np.ndarray | None = None) -> Recognition:
     """``raw`` at unit size; ``diag`` its `stroke_geometry.bbox_diagonal`, ``noise`` in the same units (the stroke's
-    measured jitter where worse than the pen's stated ``pen``)."""
+    measured jitter where worse than the pen's stated ``pen``); ``times`` one a point of ``raw`` (seconds) or None."""
     found = open_shapes.line(raw, noise, diag, pen)
     if found is not None:
         return found
@@ -302,7 +311,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
-        ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights)
+        ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):

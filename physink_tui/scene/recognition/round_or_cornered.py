@@ -5,7 +5,15 @@ from __future__ import annotations
 import numpy as np
 
 from physink_tui.scene.recognition.candidates import Candidate, Pending
-from physink_tui.scene.recognition.polygon_checks import SHALLOW_CORNER_DEG, corners_of, sharp_corners, typical_step
+from physink_tui.scene.recognition.corner_pace import slowed_at_corners
+from physink_tui.scene.recognition.polygon_checks import (
+    SHALLOW_CORNER_DEG,
+    corner_roundness_closed,
+    corners_of,
+    dense_enough,
+    sharp_corners,
+    typical_step,
+)
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Polygon, Recognition
 from physink_tui.scene.recognition.ranking import BOX_MARGIN, Weights, bic_score, bounds, inside
@@ -15,15 +23,23 @@ CORNERS_EXPLAIN = 0.5
 its corners are what the round shape missed (the pen models' hexagons and octagons, regular: under 0.21 of it). A
 lumpy circle's polygon through a few sharp bends leaves most of it (people's lumpy circles in the design sets: 0.6-0.9;
 the pen models' octagons drawn so irregular that a corner turns under 35 degrees, read with fewer sides: 0.45-0.98)."""
+TURNS_AT_VERTICES = 0.5
+"""A polygon whose vertices the pen slowed at (`corner_pace.slowed_at_corners`) is read as drawn when at its median
+vertex the path does 80 % of its turning within this share of the shorter side (`stroke_features.corner_roundness`):
+a round loop's turning, spread evenly, takes 0.8 of a side whatever the vertices, a drawn corner a tenth or two, and
+one blurred by a mouse's sparse points and the smoothing a third or more (Quick, Draw! octagons: 3-4 vertices of 8 at
+0.4 or more, which `polygon_checks.sharp_corners` refuses)."""
 
 
 def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: float, raw: np.ndarray,
-                       noise: float, diag: float, sigma: float, weights: Weights) -> Recognition:
+                       noise: float, diag: float, sigma: float, weights: Weights,
+                       times: np.ndarray | None = None) -> Recognition:
     """A loop read round whose polygon of four sides or more explains most of the round shape's error
-    (`CORNERS_EXPLAIN`) and turns at its corners (`polygon_checks.sharp_corners`): a hexagon, an octagon or a rounded
-    rectangle drawn, whose every vertex the complexity penalty charges as if it might be noise on a round shape. The
-    best-scored such polygon (a box where squaring it stays within the stroke); ``ranked`` when there is none.
-    ``polygons``: every closed polygonal fit (`candidates.polygonal`), ``raw``: the stroke's own points."""
+    (`CORNERS_EXPLAIN`) and turns at its corners (`polygon_checks.sharp_corners`, or, where ``times`` show the pen
+    slowed at them, `slowed_corners`): a hexagon, an octagon or a rounded rectangle drawn, whose every vertex the
+    complexity penalty charges as if it might be noise on a round shape. The best-scored such polygon (a box where
+    squaring it stays within the stroke); ``ranked`` when there is none. ``polygons``: every closed polygonal fit
+    (`candidates.polygonal`), ``raw``: the stroke's own points, ``times``: one a point of ``raw`` (seconds) or None."""
     if ranked.kind is None:
         return ranked
     lo, hi = bounds(raw, noise, diag)
@@ -35,7 +51,8 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
                           key=lambda p: bic_score(p, n, sigma, weights)):
         # only the best fit of that many sides is judged, before building (which judges every corner: the costlier)
         best = pending.fits[0] if pending.fits else None
-        if best is None or best.rss > explained or not sharp_corners(best, step):
+        if best is None or best.rss > explained or not (sharp_corners(best, step)
+                                                         or slowed_corners(best, step, raw, times)):
             continue
         for c in [*_built(pending, best), *_shallow(pending, best, noise)]:
             if c.kind == "box" and not inside(c.geometry, box_lo, box_hi) and c.fallback is not None:
@@ -43,6 +60,16 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
             if inside(c.geometry, *((box_lo, box_hi) if c.kind == "box" else (lo, hi))):
                 return Recognition(c.kind, ranked.confidence, c.geometry, ((ranked.kind, 1.0 - ranked.confidence),))
     return ranked
+
+
+def slowed_corners(fit: PolygonFit, step: float, raw: np.ndarray, times: np.ndarray | None) -> bool:
+    """Whether a closed fit of five sides or more has vertices the pen slowed at (`corner_pace.slowed_at_corners`)
+    where the path turns (`TURNS_AT_VERTICES`), on points dense enough to tell (`polygon_checks.dense_enough`)."""
+    if times is None or len(fit.indices) - 1 < 5 or not dense_enough(fit, step):
+        return False
+    if float(np.median(corner_roundness_closed(fit))) >= TURNS_AT_VERTICES:
+        return False
+    return slowed_at_corners(fit.vertices, raw, times)
 
 
 def _built(pending: Pending, best: PolygonFit) -> list[Candidate]:

@@ -34,7 +34,11 @@ MIN_BENDS = 2
 hump and a dip) is a wave of two bends, an N or a Z of two corners is not one by the other tests (its sides run
 straight between its corners, `SIDE_BOW`). Three until session 19, when the fourth group (opened) showed squiggles of
 two round bends read as polylines (quickdraw squiggle 4 of 110); the design sets read the same with two
-(`compare_readings`, docs/BENCHMARKS.md "The fourth group opened")."""
+(`compare_readings`, docs/BENCHMARKS.md "The fourth group opened"). Of two bends only, the longest piece must curve
+as a wave's side does (`SIDE_BOW`, `_long_straight_piece`): a radical sign drawn without its bar (a serif, its tick's
+point, a long straight rise) or with it (a rounded point, a long straight rise, a bar) bends twice each way in turn
+too, round enough, but along a straight side (session 20: the fifth group's LaViola radicals lost 7 to two bends;
+`benchmarks/bench_math_marks.py`)."""
 MIN_ROUNDNESS = 0.2
 """Every bend of a wave is round: it does its turning over at least this share of its shorter side
 (`stroke_features.corner_roundness`); the sharpest point of a person's zig-zag in the design sets turns within 0.15,
@@ -64,9 +68,19 @@ def wave(unit: np.ndarray) -> tuple[np.ndarray, list[int]] | None:
     signs = [float(th[max(c - 1 - REACH, 0):c + REACH].sum()) > 0 for c in corners[1:-1]]
     if any(a == b for a, b in itertools.pairwise(signs)):
         return None
+    if len(corners) == 4 and _long_straight_piece(work, corners):
+        return None  # an S lying down curves along its longest piece; a radical sign's rise runs straight
     if min(sf.corner_roundness(work, corners, th=th)) < MIN_ROUNDNESS:
         return None
     return (work, corners) if side_bow(work, corners) >= SIDE_BOW else None
+
+
+def _long_straight_piece(work: np.ndarray, corners: list[int]) -> bool:
+    """Whether the longest piece of the stroke between its bends (or an end and a bend) is straight: neither of its
+    halves strays from its chord by `SIDE_BOW` (as a wave's sides do, `side_bow`)."""
+    a, b = max(itertools.pairwise(corners), key=lambda ab: sg.path_length(work[ab[0]:ab[1] + 1]))
+    m = (a + b) // 2
+    return m > a and b > m and max(sg.chord_deviation(work[a:m + 1]), sg.chord_deviation(work[m:b + 1])) < SIDE_BOW
 
 
 def _bends(unit: np.ndarray, n: int) -> tuple[np.ndarray, list[int]]:
