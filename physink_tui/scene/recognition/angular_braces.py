@@ -77,17 +77,28 @@ def laid_out(work: np.ndarray, noise: float = 0.0) -> bool:
     return _chord_layout(work) or _arms_layout(work, noise)
 
 
-def _chord_layout(work: np.ndarray) -> bool:
-    """Whether ``work`` is laid out as a brace against the line joining its ends (`angular_brace`)."""
+def _chord_frame(work: np.ndarray) -> tuple[float, np.ndarray, np.ndarray] | None:
+    """The line joining ``work``'s ends: its length, its unit vector and each point's signed distance across it; None
+    for a stroke too short to judge as a brace or one that ends where it began."""
     if len(work) < 16:
-        return False
+        return None
     start, end = work[0], work[-1]
     chord = float(np.hypot(*(end - start)))
     if chord == 0.0:
-        return False
+        return None
     unit = (end - start) / chord
     rel = work - start
-    across = rel[:, 0] * unit[1] - rel[:, 1] * unit[0]
+    return chord, unit, rel[:, 0] * unit[1] - rel[:, 1] * unit[0]
+
+
+def _chord_layout(work: np.ndarray) -> bool:
+    """Whether ``work`` is laid out as a brace against the line joining its ends (`angular_brace`)."""
+    frame = _chord_frame(work)
+    if frame is None:
+        return False
+    chord, unit, across = frame
+    start = work[0]
+    rel = work - start
     k = int(np.argmax(np.abs(across)))
     depth = float(across[k])
     sign = math.copysign(1.0, depth)
@@ -134,16 +145,12 @@ def _arms_layout(work: np.ndarray, noise: float = 0.0) -> bool:
     (`ARM_INK`); the point stands out of that line (`POINT_OUT`, `POINT_NOISE` times the pen's ``noise``; under
     `MAX_DEPTH` of the span) farther than anything
     else (`PAST_POINT`), the ends curl back behind it (`ENDS_BEHIND`), and the stroke runs along it (`NO_RETURN`)."""
-    if len(work) < 16:
+    frame = _chord_frame(work)
+    if frame is None:
         return False
-    start, end = work[0], work[-1]
-    chord = float(np.hypot(*(end - start)))
-    if chord == 0.0:
-        return False
+    across = frame[2]
     cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
     length = float(cum[-1])
-    unit = (end - start) / chord
-    across = (work[:, 0] - start[0]) * unit[1] - (work[:, 1] - start[1]) * unit[0]
     middle = np.flatnonzero((cum >= POINT_AT[0] * length) & (cum <= POINT_AT[1] * length))
     if len(middle) == 0:
         return False
