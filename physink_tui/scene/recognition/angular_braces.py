@@ -65,9 +65,9 @@ def angular_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0) -> b
     (`ARM_DEG`) and off it (`ARM_OFF`) -- or so against its arms' own line where it was drawn askew (`laid_out`) --
     and turning both ways (two lobes or more: its curls the other way from its point; `POINT_LOBE_DEG` where the
     point was sampled by few events); ``noise``: the pen's, in ``work``'s units."""
-    if not laid_out(work, noise):
-        return False
-    return len(lobes) >= 2 or len(sf.lobes(work, POINT_LOBE_DEG, noise=noise)) >= 2
+    if len(lobes) < 2 and len(sf.lobes(work, POINT_LOBE_DEG, noise=noise)) < 2:
+        return False  # turning both ways first: most open strokes turn one way, and the layout costs more
+    return laid_out(work, noise)
 
 
 def laid_out(work: np.ndarray, noise: float = 0.0) -> bool:
