@@ -144,8 +144,8 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     limit = max(CLOSED_GAP * diag, 4 * sigma)
     if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
         loop = sf.one_loop(work, th)  # round and round one way: once round is the shape, if it is round
-        ellipse = fit_ellipse(loop)
         back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit  # it came back to its start (a pigtail does not)
+        ellipse = fit_ellipse(loop) if back else None  # fitted only where it may be kept
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop, ellipse
     if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):

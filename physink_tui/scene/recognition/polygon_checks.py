@@ -17,7 +17,7 @@ import numpy as np
 import shapely
 
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, run_lines
-from physink_tui.scene.recognition.stroke_features import corner_roundness
+from physink_tui.scene.recognition.stroke_features import roundness_along, walk
 
 MIN_CORNER_DEG = 35.0
 """Every vertex of a polyline or polygon turns the path at least this much (a bowed side is not two sides)."""
@@ -210,12 +210,22 @@ def typical_step(drawn: np.ndarray) -> float:
 
 
 def corner_roundness_closed(fit: PolygonFit) -> np.ndarray:
-    """`stroke_features.corner_roundness` at each vertex of a closed fit, in the order of its vertices."""
+    """`stroke_features.corner_roundness` at each vertex of a closed fit, in the order of its vertices (measured once
+    a fit, on a walk round the loop measured once for all fits of its points: `PolygonFit.memo`, `PolygonFit.walks`;
+    read-only)."""
+    found = fit.memo.get("roundness_closed")
+    if found is not None:
+        return found
     ring = fit.points[:-1]
     m, idx = len(ring), [int(i) % len(ring) for i in fit.indices[:-1]]
-    unrolled = np.concatenate([ring, ring, ring])  # every vertex with both neighbours, across the loop's start
+    walked = fit.walks.get("ring thrice")
+    if walked is None:  # every vertex with both neighbours, across the loop's start
+        walked = fit.walks["ring thrice"] = walk(np.concatenate([ring, ring, ring]))
     corners = [idx[-1], *(m + i for i in idx), 2 * m + idx[0]]
-    return np.asarray(corner_roundness(unrolled, corners))
+    found = np.asarray(roundness_along(walked, corners))
+    found.flags.writeable = False
+    fit.memo["roundness_closed"] = found
+    return found
 
 
 def dense_enough(fit: PolygonFit, step: float) -> bool:

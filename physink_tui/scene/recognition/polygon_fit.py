@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import heapq
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -44,11 +44,22 @@ class PolygonFit:
     reach: float
     sums: tuple[np.ndarray, ...]
     """`moments` of ``points``, shared by every fit of the same points."""
+    memo: dict[str, np.ndarray] = field(default_factory=dict, compare=False, repr=False)
+    """What has been measured of this fit (`vertices`, `polygon_checks.corner_roundness_closed`), each once: a fit's
+    points and indices never change, so neither does anything measured of them (kept read-only)."""
+    walks: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict, compare=False, repr=False)
+    """Walks along ``points`` (`stroke_features.walk`: the turning and the path before each point) that checks of the
+    fits measure (`polygon_checks.corner_roundness_closed`), shared by every fit of the same points, as ``sums``."""
 
     @property
     def vertices(self) -> np.ndarray:
-        """The chain's vertices (`corner_points`); computed on each call, so keep the answer."""
-        return corner_points(self.points, self.indices, closed=self.closed, reach=self.reach, sums=self.sums)
+        """The chain's vertices (`corner_points`), measured once (`memo`; read-only)."""
+        found = self.memo.get("vertices")
+        if found is None:
+            found = corner_points(self.points, self.indices, closed=self.closed, reach=self.reach, sums=self.sums)
+            found.flags.writeable = False
+            self.memo["vertices"] = found
+        return found
 
 
 DP_POINTS = 100
@@ -191,13 +202,14 @@ def _chains(pts: np.ndarray, max_segments: int, tolerance: float, *, closed: boo
     cand = np.array(candidate_vertices(pts, tolerance))
     sums = moments(pts)
     cost = line_costs(pts, cand, sums)
+    walks: dict[str, tuple[list[float], list[float]]] = {}  # shared by the fits, as ``sums``
     out: dict[int, PolygonFit] = {}
     for k, found in enumerate(_segmentations(cost, min(max_segments, len(cand) - 1)), start=1):
         if found is None:
             continue
         rss, path = found
         indices = tuple(int(cand[p]) for p in path)
-        out[k] = PolygonFit(indices, rss, pts, closed, 4 * tolerance, sums)
+        out[k] = PolygonFit(indices, rss, pts, closed, 4 * tolerance, sums, walks=walks)
     return out
 
 

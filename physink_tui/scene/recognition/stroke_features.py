@@ -155,13 +155,25 @@ def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8, *
     ``share`` of the turning it does between the midpoints of its neighbouring sides, over the shorter of those
     two sides. A drawn corner turns within a tenth or two of its sides; a brace's or a question mark's bend
     takes as long as a side. ``th``: `stroke_geometry.turning` of ``work`` where already known."""
+    return roundness_along(walk(work, th), corners, share)
+
+
+def walk(work: np.ndarray, th: np.ndarray | None = None) -> tuple[list[float], list[float]]:
+    """The turning done before each point of ``work`` but the first (``th``: `stroke_geometry.turning` of ``work``
+    where already known) and the path drawn to each point, from the start: what `corner_roundness` walks along, as plain
+    floats (each corner's walk looks at a few of them one at a time)."""
     if th is None:
         th = sg.turning(work)  # th[k] is the turn at point k + 1
-    # as plain floats (the same numbers): each corner's walk below looks at a few of them one at a time
     cum_turn = [0.0, *np.cumsum(th).tolist()]  # cum_turn[k]: turning done before point k + 1
     d = work[1:] - work[:-1]
     cum_len = [0.0, *np.cumsum(np.hypot(d[:, 0], d[:, 1])).tolist()]
-    n = len(work)
+    return cum_turn, cum_len
+
+
+def roundness_along(walked: tuple[list[float], list[float]], corners: list[int], share: float = 0.8) -> list[float]:
+    """`corner_roundness` of the stroke whose `walk` is ``walked``."""
+    cum_turn, cum_len = walked
+    n = len(cum_len)
     out = []
     for a, c, b in zip(corners, corners[1:], corners[2:], strict=False):
         lo, hi = (a + c) // 2, (c + b) // 2
