@@ -78,6 +78,49 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
             if len(rest) >= 2 and not _arm(piece, inward)]
 
 
+LINE_TEST_POINTS = (48, 160)
+LINE_TEST_STEP = 3.0
+"""The line test (`open_shapes._line`) judges a stroke resampled to steps this many noise widths long, but to no fewer
+and no more points than these (`line_test_points`)."""
+
+
+def line_test_points(length: float, noise: float) -> int:
+    """How many points the line test resamples a stroke of path ``length`` to (``noise``: the pen's jitter it steps by,
+    `LINE_TEST_STEP`, `LINE_TEST_POINTS`)."""
+    fewest, most = LINE_TEST_POINTS
+    return int(min(most, max(fewest, length / (LINE_TEST_STEP * noise)))) if noise > 0 else fewest
+
+
+def beyond_wobble(raw: np.ndarray, noise: float, pen: float) -> bool:
+    """Whether no piece `unhooked` may leave of ``raw`` can pass the line test (`open_shapes._line`, stepping by
+    ``noise``) as straight within the pen's own wobble (``pen``): each such piece strays farther from any line than
+    `wobble_reach` at the test's most points. Asked before `unhooked` (whose corner test costs more) where no line was
+    found as drawn, when a piece passes only within the wobble. The points of ``raw`` farther along its path than a cut
+    from both ends are in every piece; a triangle of three of them (the first, the last, the farthest from the line
+    joining those two) strays from any line by half its least altitude at least, and the test's points (resampled by
+    steps of h, `line_test_points`, and smoothed: `stroke_geometry.smooth` averages five of them) come within 2.5 h of
+    each point of the piece's path, so they stray by that less at least (a hair's margin for rounding)."""
+    d = raw[1:] - raw[:-1]
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(d[:, 0], d[:, 1]))])  # as `unhooked` measures it
+    length = float(along[-1])
+    cut = min(HOOK_REACH * pen, HOOK_SHARE * length)
+    inner = raw[(along > cut) & (along < length - cut)]
+    if len(inner) < 3 or not cut > 0:
+        return False
+    first, last = inner[0], inner[-1]
+    chord = last - first
+    area = np.abs((inner[:, 0] - first[0]) * chord[1] - (inner[:, 1] - first[1]) * chord[0])  # twice the triangle's
+    k = int(np.argmax(area))
+    longest = max(float(np.hypot(*chord)), float(np.hypot(*(inner[k] - first))), float(np.hypot(*(inner[k] - last))))
+    if not longest > 0:
+        return False
+    fewest, most = LINE_TEST_POINTS
+    # the longest step of any piece (no longer than ``raw``): n = `line_test_points` of the piece's length
+    step = max(1.1 * LINE_TEST_STEP * noise, length / (most - 1)) if noise > 0 else length / (fewest - 1)
+    least = float(area[k]) / longest / 2 - 2.5 * step
+    return least > (1 + 1e-6) * wobble_reach(most) * pen
+
+
 def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
     """Whether a piece `unhooked` leaves of ``raw`` (``diag``: its `stroke_geometry.bbox_diagonal`; ``noise`` as
     `unhooked`'s) could have its ends half its own diagonal apart, which the line test asks first

@@ -76,7 +76,9 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     if (found is None or loose) and lines.ends_may_span(raw, pen, diag):
         # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
         # straightest line left once a hook is cut is the line drawn (its ends where the hand meant them)
-        for kept in lines.unhooked(raw, pen):  # where a line was found already, the plain line test may judge the rest
+        # (where none was, a piece may pass only within the pen's wobble: not where every piece strays farther)
+        pieces = [] if found is None and lines.beyond_wobble(raw, noise, pen) else lines.unhooked(raw, pen)
+        for kept in pieces:  # where a line was found already, the plain line test may judge the rest
             cut, _, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen, bow=False, plain=found is not None)
             if cut is not None and (found is None or cut.confidence > found.confidence):
                 found = cut
@@ -92,7 +94,7 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
     if not _ends_span(raw, diag):
         return None, None, False  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
-    n = int(min(160, max(48, sg.path_length(raw) / (3 * noise)))) if noise > 0 else 48
+    n = lines.line_test_points(sg.path_length(raw), noise)
     coarse = sg.smooth(sg.resample(raw, n))
     if bow:  # else a hook is cut from one end already (`lines.unhooked`): the rest is judged as drawn
         coarse = sg.resample(sg.remove_hooks(coarse), n)
