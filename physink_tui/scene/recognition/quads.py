@@ -132,9 +132,9 @@ def kept_as_drawn(points: np.ndarray, indices: tuple[int, ...], squared: Sequenc
     it (its corners) overlaps it (where its sides meet, `side_corners`) by under `KEEPS` and it is a trapezoid or a
     rhombus."""
     corners = side_corners(points, indices)
-    if corners is None or not convex(corners) or overlap(squared, corners) >= KEEPS:
-        return False
-    return trapezoid(corners) or rhombus(corners)
+    if corners is None or not convex(corners) or not (trapezoid(corners) or rhombus(corners)):
+        return False  # the shapes asked first: the overlap costs more, and most boxes drawn are neither
+    return overlap(squared, corners) < KEEPS
 
 
 
