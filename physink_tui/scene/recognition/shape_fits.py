@@ -18,7 +18,7 @@ EllipseFit = tuple[np.ndarray, float, float, float, float]
 
 def fit_line(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
     """Total least squares line: ``(point, unit direction, max distance / length)``."""
-    c = pts.mean(axis=0)
+    c = np.add.reduce(pts, axis=0) / len(pts)  # `pts.mean(axis=0)` to the bit, without its per-call overhead
     rel = pts - c
     _, _, vt = np.linalg.svd(rel, full_matrices=False)
     d = vt[0]
@@ -31,7 +31,8 @@ def fit_line(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
 def fit_circle(pts: np.ndarray) -> tuple[np.ndarray, float, float]:
     """Kasa fit: ``(centre, radius, RMS radial error / radius)``; radius inf for collinear points."""
     x, y = pts[:, 0], pts[:, 1]
-    a = np.column_stack([x, y, np.ones_like(x)])
+    a = np.empty((len(pts), 3))  # as `np.column_stack` lays it out
+    a[:, 0], a[:, 1], a[:, 2] = x, y, 1.0
     b = x * x + y * y
     try:
         sol, *_ = np.linalg.lstsq(a, b, rcond=None)
@@ -43,7 +44,7 @@ def fit_circle(pts: np.ndarray) -> tuple[np.ndarray, float, float]:
         return pts.mean(axis=0), math.inf, math.inf
     r = math.sqrt(r2)
     d = np.hypot(x - cx, y - cy)
-    return np.array([cx, cy]), r, float(np.sqrt(np.mean((d - r) ** 2))) / r
+    return np.array([cx, cy]), r, float(np.sqrt(np.add.reduce((d - r) ** 2) / len(d))) / r  # `np.mean` to the bit
 
 
 def fit_ellipse(pts: np.ndarray) -> EllipseFit | None:
@@ -51,14 +52,19 @@ def fit_ellipse(pts: np.ndarray) -> EllipseFit | None:
 
     None when the points do not determine an ellipse (collinear, too few).
     """
-    if len(pts) < 6:
+    n = len(pts)
+    if n < 6:
         return None
-    mean = pts.mean(axis=0)
-    scale = float(np.abs(pts - mean).max()) or 1.0
-    p = (pts - mean) / scale
+    mean = np.add.reduce(pts, axis=0) / n  # `pts.mean(axis=0)` to the bit, without its per-call overhead
+    rel = pts - mean
+    scale = float(np.abs(rel).max()) or 1.0
+    p = rel / scale
     x, y = p[:, 0], p[:, 1]
-    d1 = np.column_stack([x * x, x * y, y * y])
-    d2 = np.column_stack([x, y, np.ones_like(x)])
+    d1, d2 = np.empty((n, 3)), np.empty((n, 3))  # as `np.column_stack` lays them out
+    np.multiply(x, x, out=d1[:, 0])
+    np.multiply(x, y, out=d1[:, 1])
+    np.multiply(y, y, out=d1[:, 2])
+    d2[:, 0], d2[:, 1], d2[:, 2] = x, y, 1.0
     s1, s2, s3 = d1.T @ d1, d1.T @ d2, d2.T @ d2
     try:
         t = -np.linalg.solve(s3, s2.T)
@@ -78,8 +84,9 @@ def fit_ellipse(pts: np.ndarray) -> EllipseFit | None:
     a1 = evecs[:, good[0]]
     if a1[0] + a1[2] < 0:  # an eigenvector's sign is arbitrary: make the quadratic part positive
         a1 = -a1
-    a, b, c = a1
-    dd, e, f = t @ a1
+    # as plain floats (the same numbers and the same arithmetic, without numpy scalars' overhead)
+    a, b, c = a1.tolist()
+    dd, e, f = (t @ a1).tolist()
     den = b * b - 4 * a * c
     if den >= 0:
         return None
@@ -105,7 +112,7 @@ def ellipse_error(pts: np.ndarray, centre: np.ndarray, rx: float, ry: float, ang
     u = rel[:, 0] * c + rel[:, 1] * s
     v = -rel[:, 0] * s + rel[:, 1] * c
     r = np.sqrt((u / rx) ** 2 + (v / ry) ** 2)
-    return float(np.sqrt(np.mean((r - 1.0) ** 2)))
+    return float(np.sqrt(np.add.reduce((r - 1.0) ** 2) / len(r)))  # `np.mean` to the bit
 
 
 def fit_cubic(pts: np.ndarray) -> tuple[np.ndarray, float]:
@@ -115,13 +122,17 @@ def fit_cubic(pts: np.ndarray) -> tuple[np.ndarray, float]:
     if n < 4:
         ctrl = np.array([p0, p0 + (p3 - p0) / 3, p0 + 2 * (p3 - p0) / 3, p3])
         return ctrl, 0.0
-    seg = np.hypot(*np.diff(pts, axis=0).T)
-    u = np.concatenate([[0.0], np.cumsum(seg)])
+    d = pts[1:] - pts[:-1]  # as np.diff, without its per-call overhead
+    seg = np.hypot(d[:, 0], d[:, 1])
+    u = np.empty(n)
+    u[0] = 0.0
+    np.cumsum(seg, out=u[1:])
     u = u / u[-1] if u[-1] else np.linspace(0, 1, n)
     b0, b1, b2, b3 = (1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3
     start, end = b0[:, None] * p0, b3[:, None] * p3  # np.outer(b0, p0), np.outer(b3, p3): made once, used twice
     rhs = pts - start - end
-    a = np.column_stack([b1, b2])
+    a = np.empty((n, 2))  # as `np.column_stack` lays it out
+    a[:, 0], a[:, 1] = b1, b2
     sol, *_ = np.linalg.lstsq(a, rhs, rcond=None)
     ctrl = np.array([p0, sol[0], sol[1], p3])
     fitted = start + b1[:, None] * sol[0] + b2[:, None] * sol[1] + end
