@@ -191,10 +191,10 @@ def shape_points(g: Geometry, per_piece: int = 12) -> list[tuple[float, float]]:
         ctrl = np.asarray(g.control_points, dtype=float)
         ts = np.linspace(0.0, 1.0, per_piece + 1)[:, None]
         out = [(float(ctrl[0][0]), float(ctrl[0][1]))]
-        for i in range(0, len(ctrl) - 3, 3):
-            p0, p1, p2, p3 = ctrl[i:i + 4]
-            pts = (1 - ts) ** 3 * p0 + 3 * ts * (1 - ts) ** 2 * p1 + 3 * ts * ts * (1 - ts) * p2 + ts ** 3 * p3
-            out += [(float(x), float(y)) for x, y in pts[1:]]
+        at = np.arange(0, len(ctrl) - 3, 3)[:, None, None]  # every piece at once, each point as a piece at a time
+        p0, p1, p2, p3 = (ctrl[at + k, np.arange(2)] for k in range(4))
+        pts = (1 - ts) ** 3 * p0 + 3 * ts * (1 - ts) ** 2 * p1 + 3 * ts * ts * (1 - ts) * p2 + ts ** 3 * p3
+        out += map(tuple, pts[:, 1:].reshape(-1, 2).tolist())  # the same floats as float(x), float(y) a row
         return out
     if isinstance(g, Helix):
         return [g.start, g.end]

@@ -123,8 +123,15 @@ def retraced(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
     first, rest = work[:end], work[end:]
     if len(rest) < 4 or len(first) < 4:
         return False
+    limit = 0.06 * diag
+    # asked first, at no cost: no point of ``rest`` is nearer ``first`` than its bounding box, so where a tenth of
+    # them or more are that far from the box (an order statistic at or below the quantile's), the quantile is too
+    outside = np.maximum(np.maximum(first.min(axis=0) - rest, rest - first.max(axis=0)), 0.0)
+    k = max(int(0.9 * (len(rest) - 1)) - 1, 0)
+    if float(np.partition(np.hypot(outside[:, 0], outside[:, 1]), k)[k]) >= limit * (1 + 1e-9):
+        return False
     d = np.hypot(rest[:, None, 0] - first[None, :, 0], rest[:, None, 1] - first[None, :, 1]).min(axis=1)
-    return float(np.quantile(d, 0.9)) < 0.06 * diag
+    return float(np.quantile(d, 0.9)) < limit
 
 
 def one_loop(work: np.ndarray, th: np.ndarray) -> np.ndarray:
