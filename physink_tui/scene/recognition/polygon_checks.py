@@ -133,7 +133,7 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: f
 
 
 def _bowed(pts: np.ndarray, idx: np.ndarray, chords: np.ndarray, noise: float,
-           sums: tuple[np.ndarray, ...] | None = None) -> bool:
+           sums: np.ndarray | None = None) -> bool:
     """Whether a side's points stray from the side's own line: four in five of them by more than `BOW_SHARE`
     of its length plus twice the noise (a hook is a few points; a short side's bow is only where its corners'
     points fell, so sides under 10 noise widths or 6 points are not judged)."""

@@ -42,7 +42,7 @@ class PolygonFit:
     points: np.ndarray
     closed: bool
     reach: float
-    sums: tuple[np.ndarray, ...]
+    sums: np.ndarray
     """`moments` of ``points``, shared by every fit of the same points."""
     memo: dict[str, np.ndarray] = field(default_factory=dict, compare=False, repr=False)
     """What has been measured of this fit (`vertices`, `polygon_checks.corner_roundness_closed`), each once: a fit's
@@ -119,7 +119,7 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
     return chosen
 
 
-def line_costs(pts: np.ndarray, cand: np.ndarray, sums: tuple[np.ndarray, ...] | None = None) -> np.ndarray:
+def line_costs(pts: np.ndarray, cand: np.ndarray, sums: np.ndarray | None = None) -> np.ndarray:
     """``C[a, b]``: summed squared distance of ``pts[cand[a]..cand[b]]`` to their own best-fitting line (total
     least squares; inf for ``a >= b``), so where exactly a corner's apex point lies costs nothing."""
     sx, sy, sxx, syy, sxy = sums if sums is not None else moments(pts)
@@ -213,32 +213,35 @@ def _chains(pts: np.ndarray, max_segments: int, tolerance: float, *, closed: boo
     return out
 
 
-def _prefix(values: np.ndarray) -> np.ndarray:
-    return np.concatenate([np.zeros(1), np.cumsum(values)])
-
-
-def moments(pts: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Prefix sums of x, y, x^2, y^2 and xy: any run's line in O(1)."""
+def moments(pts: np.ndarray) -> np.ndarray:
+    """Prefix sums of x, y, x^2, y^2 and xy (rows of one array, each from 0): any run's line in O(1)."""
     x, y = pts[:, 0], pts[:, 1]
-    return _prefix(x), _prefix(y), _prefix(x * x), _prefix(y * y), _prefix(x * y)
+    out = np.zeros((5, len(pts) + 1))
+    for row, values in zip(out, (x, y, x * x, y * y, x * y), strict=True):
+        np.cumsum(values, out=row[1:])
+    return out
 
 
-def run_lines(pts: np.ndarray, lo: np.ndarray, hi: np.ndarray, sums: tuple[np.ndarray, ...] | None = None,
+def run_lines(pts: np.ndarray, lo: np.ndarray, hi: np.ndarray, sums: np.ndarray | None = None,
               ) -> tuple[np.ndarray, np.ndarray]:
     """Centre and unit direction of the total-least-squares line through each ``pts[lo:hi]`` (closed form, from
     prefix sums, `moments` of ``pts`` when given: no per-run loop)."""
-    sx, sy, sxx, syy, sxy = sums if sums is not None else moments(pts)
+    table = sums if sums is not None else moments(pts)
+    px, py, sxx, syy, sxy = table[:, hi] - table[:, lo]  # each run's sums of x, y, x^2, y^2 and xy, all five at once
     m = np.maximum(hi - lo, 1).astype(float)
-    px, py = sx[hi] - sx[lo], sy[hi] - sy[lo]
-    cxx = sxx[hi] - sxx[lo] - px * px / m
-    cyy = syy[hi] - syy[lo] - py * py / m
-    cxy = sxy[hi] - sxy[lo] - px * py / m
+    cxx = sxx - px * px / m
+    cyy = syy - py * py / m
+    cxy = sxy - px * py / m
     theta = 0.5 * np.arctan2(2 * cxy, cxx - cyy)
-    return np.column_stack([px / m, py / m]), np.column_stack([np.cos(theta), np.sin(theta)])
+    centres, dirs = np.empty((len(m), 2)), np.empty((len(m), 2))  # as `np.column_stack` lays them out
+    np.divide(px, m, out=centres[:, 0])
+    np.divide(py, m, out=centres[:, 1])
+    dirs[:, 0], dirs[:, 1] = np.cos(theta), np.sin(theta)  # computed into their own arrays, as before
+    return centres, dirs
 
 
 def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, reach: float,
-                  sums: tuple[np.ndarray, ...] | None = None) -> np.ndarray:
+                  sums: np.ndarray | None = None) -> np.ndarray:
     """The vertices of a chain of runs: where the lines fitted to neighbouring runs (their middle two thirds)
     meet, when that is near the point where the runs join (within a third of the shorter run, and within
     ``reach`` of the points' bounds); else that point itself (nearly parallel sides never meet far away). The
