@@ -12,10 +12,12 @@ corners, either way round, and changes one thing about it:
 - ``retraced``: the pen goes round 1.3-2 times, each lap 1-4 % of the box's size off the last;
 - ``turned``: the whole box turned 25-40 degrees either way;
 - ``wall-askew``: one wall leaned 15-30 degrees from square (less where its corner would slide past 0.6 of the side
-  it slides along), its neighbours square (a right trapezoid, as hcira
-  klarubbio's mouse rectangles and jd4386's are drawn);
+  it slides along), its neighbours square: a right trapezoid, its base and top parallel;
+- ``wall-askew-by-hand``: the same, every corner placed 3-8 % of the shorter side off (as hcira klarubbio's mouse
+  rectangles and jd4386's are drawn: no two sides exactly parallel);
 - ``corner-swung``: one corner swung round wide (a radius 0.35-0.8 of the shorter side), as a mouse hand does;
-- ``two-corners-swung``: both corners of one side swung round (0.3-0.6 of the shorter side): a D;
+- ``two-corners-swung``: both corners of one side swung round (0.25-0.4 of the shorter side, so a fifth of the side
+  or more stays straight: with none a D or a stadium, no box);
 - ``mouse-box``: a wall leaned 8-20 degrees, a corner swung round and a tail past the close, all at once;
 - ``gap-at-close``: the fourth side stops 0.15-0.4 of its length short of the start;
 - ``start-mid-wall``: the pen starts 0.2-0.8 along a side and stops within 3 % of the perimeter of the start;
@@ -120,6 +122,11 @@ def turned(rng: random.Random) -> Path:
 
 def wall_askew(rng: random.Random) -> Path:
     """One corner slid along its side so that the wall ending there leans 15-30 degrees; the others stay square."""
+    c = _askew(rng)
+    return _placed([*c, c[0]], _upright(rng))
+
+
+def _askew(rng: random.Random) -> list[Point]:
     c = _corners(rng)
     k = rng.randrange(4)
     a, b, prev = c[k], c[(k + 1) % 4], c[k - 1]  # side a-b keeps its line; the wall prev-a leans
@@ -127,7 +134,19 @@ def wall_askew(rng: random.Random) -> Path:
     slide = wall * math.tan(math.radians(rng.uniform(15.0, 30.0))) * rng.choice((-1.0, 1.0))
     slide = max(-0.6 * _side(a, b), min(0.6 * _side(a, b), slide))  # no corner slid past the far one
     c[k] = _along(a, b, slide / _side(a, b))
-    return _placed([*c, c[0]], _upright(rng))
+    return c
+
+
+def wall_askew_by_hand(rng: random.Random) -> Path:
+    """A `wall_askew` box whose every corner the hand placed 3-8 % of the shorter side off where it meant (in any
+    direction), so that, as in people's boxes, its sides are no longer exactly parallel or square."""
+    c = _askew(rng)
+    shorter = min(_side(c[0], c[1]), _side(c[1], c[2]), _side(c[2], c[3]), _side(c[3], c[0]))
+    moved = []
+    for x, y in c:
+        r, a = rng.uniform(0.03, 0.08) * shorter, rng.uniform(0.0, 2 * math.pi)
+        moved.append((x + r * math.cos(a), y + r * math.sin(a)))
+    return _placed([*moved, moved[0]], _upright(rng))
 
 
 def _bend(corner: Point, before: Point, after: Point, cut: float, n: int = 9) -> list[Point]:
@@ -154,7 +173,7 @@ def corner_swung(rng: random.Random) -> Path:
 def two_corners_swung(rng: random.Random) -> Path:
     c = _corners(rng)
     k = rng.randrange(1, 3)
-    return _placed(_swung(c, {k, k + 1}, rng, (0.3, 0.6)), _upright(rng))  # one side's two corners: a D
+    return _placed(_swung(c, {k, k + 1}, rng, (0.25, 0.4)), _upright(rng))  # one side's two corners
 
 
 def mouse_box(rng: random.Random) -> Path:
@@ -227,7 +246,8 @@ def small(rng: random.Random) -> Path:
 
 FAMILIES: dict[str, Callable[[random.Random], Path]] = {
     "plain": plain, "tail-past-close": tail_past_close, "tail-hooked-in": tail_hooked_in, "retraced": retraced,
-    "turned": turned, "wall-askew": wall_askew, "corner-swung": corner_swung,
+    "turned": turned, "wall-askew": wall_askew, "wall-askew-by-hand": wall_askew_by_hand,
+    "corner-swung": corner_swung,
     "two-corners-swung": two_corners_swung, "mouse-box": mouse_box, "gap-at-close": gap_at_close,
     "start-mid-wall": start_mid_wall, "side-bowed": side_bowed, "corner-crossings": corner_crossings, "thin": thin,
     "small": small,

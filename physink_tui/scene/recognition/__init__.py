@@ -36,8 +36,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    % wins, the next kinds are the alternatives. Outlines are kept as drawn (issue 25): a box squared from a drawn quad
    that pokes out of those bounds (a rhombus, a diamond) gives way to the quad itself as a polygon
    (`Candidate.fallback`), and a box that leaves more than a tenth of the stroke's points farther than 8 % of its
-   diagonal from its sides is not kept (`recognize.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is not
-   a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
+   diagonal from its sides is not kept (`polygon_checks.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is
+   not a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
    to the ellipse drawn (`Candidate.fallback` again), and a loop about as wide as long turning smoothly all round (under
    `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
    (`closed_loops.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
