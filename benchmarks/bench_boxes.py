@@ -6,7 +6,8 @@ Usage: .venv/bin/python benchmarks/bench_boxes.py [--seeds A:B] [--held-back] [-
 
 Each family draws its box from its own seeded generator (`box_habits.drawn`) and each pen draws it with the same seed,
 as `bench_closed_shapes` does: the careful virtual pen (windows-ink), the hurried hand (`penmodels.hurried`) and the
-hurried hand through a device sending an event every 15-30 ms (a mouse's or a browser's sparse events). Every stroke is
+hurried hand through a device sending an event every 15-30 ms (a browser's sparse events) and through a mouse
+(`hurried_mouse`: whole pixels, one axis a step, events in bursts). Every stroke is
 read with its times. A family is right when it reads as a box (benchmarks/label_kinds.tsv: a rectangle is a box).
 Seeds 0-29 are the tuning range; seeds 1000-1029 (``--held-back``) are never looked at while tuning and reported
 apart. ``--misread`` lists each misread (family, pen, seed, kind). Deterministic: no clock, no unseeded randomness.
@@ -22,14 +23,28 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import numpy as np
 from bench_closed_shapes import careful, hurried, hurried_coarse
+from bench_device_stress import COMBINED
 from penmodels.box_habits import FAMILIES, drawn
+from penmodels.shapes import Shape
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 TUNING_SEEDS = range(0, 30)
 HELD_BACK_SEEDS = range(1000, 1030)
-PENS = {"careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse}
+
+
+def hurried_mouse(s: Shape, seed: int) -> list[tuple[float, float, float]]:
+    """The hurried hand through a mouse (`bench_device_stress.COMBINED` "mouse": 60-200 px across in whole pixels, one
+    axis a step, events in bursts, some repeated)."""
+    drawn_ = np.array(hurried(s, seed))
+    pts, when = COMBINED["mouse: stairs, bursts, repeats"]((drawn_[:, :2], drawn_[:, 2]), np.random.default_rng(seed))
+    assert when is not None
+    return [(float(x), float(y), float(t)) for (x, y), t in zip(pts, when, strict=True)]
+
+
+PENS = {"careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse, "hurried-mouse": hurried_mouse}
 
 
 def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:

@@ -18,6 +18,7 @@ corners, either way round, and changes one thing about it:
 - ``corner-swung``: one corner swung round wide (a radius 0.35-0.8 of the shorter side), as a mouse hand does;
 - ``two-corners-swung``: both corners of one side swung round (0.25-0.4 of the shorter side, so a fifth of the side
   or more stays straight: with none a D or a stadium, no box);
+- ``corners-rounded``: every corner swung round (0.25-0.45 of the shorter side): a box drawn in one sweep;
 - ``mouse-box``: a wall leaned 8-20 degrees, a corner swung round and a tail past the close, all at once;
 - ``gap-at-close``: the fourth side stops 0.15-0.4 of its length short of the start;
 - ``start-mid-wall``: the pen starts 0.2-0.8 along a side and stops within 3 % of the perimeter of the start;
@@ -176,6 +177,12 @@ def two_corners_swung(rng: random.Random) -> Path:
     return _placed(_swung(c, {k, k + 1}, rng, (0.25, 0.4)), _upright(rng))  # one side's two corners
 
 
+def corners_rounded(rng: random.Random) -> Path:
+    """Every corner swung round (a radius 0.25-0.45 of the shorter side, each its own): a box drawn in one sweep."""
+    c = _corners(rng)
+    return _placed(_swung(c, {0, 1, 2, 3}, rng, (0.25, 0.45)), _upright(rng))
+
+
 def mouse_box(rng: random.Random) -> Path:
     """Three habits at once, as a mouse hand in a hurry (hcira klarubbio s06): a wall leaned 8-20 degrees, a corner
     swung round (0.25-0.5 of the shorter side), and a tail on past the close (0.1-0.4 of the first side)."""
@@ -248,7 +255,7 @@ FAMILIES: dict[str, Callable[[random.Random], Path]] = {
     "plain": plain, "tail-past-close": tail_past_close, "tail-hooked-in": tail_hooked_in, "retraced": retraced,
     "turned": turned, "wall-askew": wall_askew, "wall-askew-by-hand": wall_askew_by_hand,
     "corner-swung": corner_swung,
-    "two-corners-swung": two_corners_swung, "mouse-box": mouse_box, "gap-at-close": gap_at_close,
+    "two-corners-swung": two_corners_swung, "corners-rounded": corners_rounded, "mouse-box": mouse_box, "gap-at-close": gap_at_close,
     "start-mid-wall": start_mid_wall, "side-bowed": side_bowed, "corner-crossings": corner_crossings, "thin": thin,
     "small": small,
 }
