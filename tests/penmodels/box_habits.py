@@ -253,11 +253,10 @@ def small(rng: random.Random) -> Path:
 
 FAMILIES: dict[str, Callable[[random.Random], Path]] = {
     "plain": plain, "tail-past-close": tail_past_close, "tail-hooked-in": tail_hooked_in, "retraced": retraced,
-    "turned": turned, "wall-askew": wall_askew, "wall-askew-by-hand": wall_askew_by_hand,
-    "corner-swung": corner_swung,
-    "two-corners-swung": two_corners_swung, "corners-rounded": corners_rounded, "mouse-box": mouse_box, "gap-at-close": gap_at_close,
-    "start-mid-wall": start_mid_wall, "side-bowed": side_bowed, "corner-crossings": corner_crossings, "thin": thin,
-    "small": small,
+    "turned": turned, "wall-askew": wall_askew, "wall-askew-by-hand": wall_askew_by_hand, "corner-swung": corner_swung,
+    "two-corners-swung": two_corners_swung, "corners-rounded": corners_rounded, "mouse-box": mouse_box,
+    "gap-at-close": gap_at_close, "start-mid-wall": start_mid_wall, "side-bowed": side_bowed,
+    "corner-crossings": corner_crossings, "thin": thin, "small": small,
 }
 """Every family, by name; each is read as a box (benchmarks/label_kinds.tsv: a rectangle is a box)."""
 
