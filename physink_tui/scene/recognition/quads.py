@@ -150,6 +150,12 @@ parallel (issue 25, session 21). A right trapezoid (a square leg, the other lean
 the trapezoid drawn, as the pen models draw it (`tests/test_quads_kept.py`)."""
 SQUARE_WALL = 12.0
 """Degrees: the wall opposite an askew one meets both its neighbours this near square (a hand's right angle)."""
+STRAIGHT_WALLS = 0.03
+"""Four in five of each side's points lie within this share of its chord of the side's line (its middle points'): an
+askew wall is a straight one, while a side bent in its middle is two sides (a pentagon whose shallow corner no fit
+of five sides passes, fitted with four: 0.056-0.059 of the chord in `benchmarks/bench_closed_shapes.py`'s irregular and
+rounded pentagons; people's askew rectangles above 0.006-0.022, the pen models' `wall-askew-by-hand` boxes under
+0.013)."""
 
 
 def _corner_angles(corners: np.ndarray) -> list[float]:
@@ -176,7 +182,23 @@ def askew_box(points: np.ndarray, indices: tuple[int, ...]) -> Box | None:
     # opposite sides parallel where the corners along either side between them add up to a half turn
     if min(abs(angles[0] + angles[1] - 180.0), abs(angles[1] + angles[2] - 180.0)) <= PARALLEL:
         return None
+    if not _straight_sides(points, indices):
+        return None
     return box_geometry(corners, tolerance_deg=WALL_ASKEW)
+
+
+def _straight_sides(points: np.ndarray, indices: tuple[int, ...]) -> bool:
+    """Whether each side of a closed fit runs straight (`STRAIGHT_WALLS`) along the line through its middle points."""
+    for a, b in itertools.pairwise(indices):
+        run = points[a:b + 1]
+        core = _core(run)
+        centre = core.mean(axis=0)
+        _, _, vt = np.linalg.svd(core - centre, full_matrices=False)
+        rel = run - centre
+        off = np.abs(rel[:, 0] * vt[0][1] - rel[:, 1] * vt[0][0])
+        if float(np.quantile(off, 0.8)) > STRAIGHT_WALLS * float(np.hypot(*(run[-1] - run[0]))):
+            return False
+    return True
 
 
 def four_sides_cover(fit: PolygonFit, drawn: Sequence[tuple[float, float]]) -> bool:
