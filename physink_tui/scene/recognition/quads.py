@@ -14,7 +14,9 @@ What a hurried hand does to a box stays a box whatever the overlap: it leans the
 sides parallel, neighbours of unequal length, `tests/test_closed_marks.py`), or sends one wall askew (a right
 trapezoid: one leg square to its neighbours, the other off by up to 20-30 degrees in people's rectangles: hcira jd4386
 User04 rectangle03, sinarest1608 Subject5 rectangle6), or pulls a corner of a square drawn on its side (hat359 user1
-rectangle01: equal sides, but its diagonals at 45 degrees to the page).
+rectangle01: equal sides, but its diagonals at 45 degrees to the page). Past the box's tolerance, a quad with one wall
+askew by up to `WALL_ASKEW`, the wall opposite square and no two sides parallel, every side straight, is still a box
+(`askew_box`); with its base and top parallel it is a right trapezoid, kept as drawn.
 
 The quad is judged where its sides lie (`side_corners`: each side's line through its middle points, as
 `candidates._box_from_sides` places a box), not on the fit's vertices, which a rounded or cut corner moves inside;
@@ -154,7 +156,7 @@ STRAIGHT_WALLS = 0.03
 """Four in five of each side's points lie within this share of its chord of the side's line (its middle points'): an
 askew wall is a straight one, while a side bent in its middle is two sides (a pentagon whose shallow corner no fit
 of five sides passes, fitted with four: 0.056-0.059 of the chord in `benchmarks/bench_closed_shapes.py`'s irregular and
-rounded pentagons; people's askew rectangles above 0.006-0.022, the pen models' `wall-askew-by-hand` boxes under
+rounded pentagons; people's askew rectangles 0.006-0.022, the pen models' `wall-askew-by-hand` boxes under
 0.013)."""
 
 
