@@ -18,7 +18,9 @@ from physink_tui.scene.recognition import stroke_geometry as sg
 JUDGED_POINTS = 64
 """The stroke is judged resampled to this many points, lightly smoothed (`stroke_geometry.smooth`)."""
 POINT_AT = (0.3, 0.7)
-"""The point (the stroke's farthest from the line joining its ends in this stretch of its path, shares of it)..."""
+"""The point (where the stroke turns most sharply in this stretch of its path, shares of it: by
+`stroke_geometry.POINT_TURN_DEG` or more within `stroke_geometry.POINT_SPAN`, and no arm turns so: a shaky hand's line
+wobbles all along, a brace has one point between its curls)..."""
 POINT_NOISE = 3.0
 """...stands out of each arm's line (the chord of the arm's run between 35 % and 80 % of the way from its end to the
 point) by at least this many of the pen's noise widths (a straight line's wobble reaches about three,
@@ -36,7 +38,8 @@ def thin_brace(raw: np.ndarray, noise: float) -> bool:
     """Whether the stroke ``raw`` (``noise``: the pen's, in its units) is a tall, thin curly brace: a sharp point
     (`stroke_geometry.POINT_TURN_DEG` within `stroke_geometry.POINT_SPAN`) about halfway (`POINT_AT`) standing out of
     each arm's line by `POINT_NOISE` noise widths, the arm's end standing off it the other way (`CURL_NOISE`), the
-    stroke running along its chord (`NO_RETURN`). Mirrored, turned or drawn from the other end, it answers the same."""
+    stroke running along its chord (`NO_RETURN`). None of these tests asks which way the brace faces or which end it
+    was drawn from."""
     if len(raw) < 8:
         return False
     pts = sg.smooth(sg.resample(raw, JUDGED_POINTS))
@@ -46,7 +49,6 @@ def thin_brace(raw: np.ndarray, noise: float) -> bool:
         return False
     unit = (end - start) / chord
     rel = pts - start
-    across = rel[:, 0] * unit[1] - rel[:, 1] * unit[0]
     along = rel @ unit
     if float(np.max(np.maximum.accumulate(along) - along)) >= NO_RETURN * chord:
         return False  # checked first, with the point below: most strokes the line test passes are lines
@@ -55,17 +57,24 @@ def thin_brace(raw: np.ndarray, noise: float) -> bool:
     middle = np.flatnonzero((cum >= POINT_AT[0] * length) & (cum <= POINT_AT[1] * length))
     if len(middle) == 0:
         return False
-    k = int(middle[np.argmax(np.abs(across[middle]))])
-    at = float(cum[k])
-    near = np.abs(cum - at) < 2 * sg.POINT_SPAN * length
-    if sg.sharpest_turn(pts[near], sg.POINT_SPAN * length) < sg.POINT_TURN_DEG:
+    # the point: where the stroke turns most sharply in that stretch (the farthest from the chord where curls of
+    # unlike width tilt it is a curl's foot, not the point)
+    step = length / (len(pts) - 1)
+    w = max(1, round(sg.POINT_SPAN * length / step))
+    done = np.concatenate([[0.0], np.cumsum(np.degrees(sg.turning(pts)))])  # done[j]: turned at points 1 .. j
+    sharp = np.zeros(len(pts))  # each point's turn within `stroke_geometry.POINT_SPAN` round it (`sharpest_turn`'s)
+    sharp[(w + 1) // 2:(w + 1) // 2 + len(done) - w] = np.abs(done[w:] - done[:-w])
+    k = int(middle[np.argmax(sharp[middle])])
+    if sharp[k] < sg.POINT_TURN_DEG:
         return False  # no point: a line's wobble, a swung line's bow
-    arms = ((pts[(cum >= 0.35 * at) & (cum <= 0.8 * at)], pts[0]),
-            (pts[(cum >= at + 0.2 * (length - at)) & (cum <= at + 0.65 * (length - at))], pts[-1]))
+    at = float(cum[k])
+    in_arms = ((cum >= 0.35 * at) & (cum <= 0.8 * at),
+               (cum >= at + 0.2 * (length - at)) & (cum <= at + 0.65 * (length - at)))
     sides = []
-    for arm, tip_end in arms:
-        if len(arm) < 2:
-            return False
+    for run, tip_end in zip(in_arms, (pts[0], pts[-1]), strict=True):
+        arm = pts[run]
+        if len(arm) < 2 or float(sharp[run].max()) >= sg.POINT_TURN_DEG:
+            return False  # an arm with a point of its own: a shaky hand's wobble, not a brace's one point
         d = arm[-1] - arm[0]
         norm = float(np.hypot(*d))
         if norm == 0.0:
