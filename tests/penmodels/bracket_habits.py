@@ -1,7 +1,8 @@
 """Square brackets as people we have not seen draw them (issue 25: held-back people read brackets ~10 % wrong): ends
 the pen flicks into a hook, corners a mouse rounds over most of an arm, a spine the hand bows, short or unequal arms,
-arms drawn askew, arms so long and leaning in that the bracket nearly closes; in canvas pixels, seeded; no motion, no
-noise (the pens draw them: `penmodels.hurried`, the virtual pen; `benchmarks/bench_bracket_habits.py`)."""
+arms drawn askew, arms so long and leaning in that the bracket nearly closes, small brackets; in canvas pixels,
+seeded; no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen;
+`benchmarks/bench_bracket_habits.py`)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ from collections.abc import Callable
 from penmodels.open_marks import Mark, Point, _placed
 
 EXPECTED = {"hooked-bracket": "polyline", "mouse-rounded-bracket": "polyline", "bowed-spine-bracket": "polyline",
-            "short-arm-bracket": "polyline", "askew-bracket": "polyline", "closing-bracket": "polyline"}
+            "short-arm-bracket": "polyline", "askew-bracket": "polyline", "closing-bracket": "polyline",
+            "small-bracket": "polyline"}
 """The kind each family is read as (benchmarks/label_kinds.tsv: a square bracket is three straight sides, a
 polyline, however its corners are turned)."""
 
@@ -90,7 +92,8 @@ def _verts(h: float, a1: float, a2: float, tilt1: float = 0.0, tilt2: float = 0.
 
 def _corner_radii(rng: random.Random, a1: float, a2: float, most: float) -> tuple[float, float]:
     """Each corner rounded off over up to ``most`` of its arm, half the time (else sharp: the pens turn it)."""
-    return tuple(rng.uniform(0.05, most) * a if rng.random() < 0.5 else 0.0 for a in (a1, a2))  # type: ignore[return-value]
+    r1, r2 = (rng.uniform(0.05, most) * a if rng.random() < 0.5 else 0.0 for a in (a1, a2))
+    return r1, r2
 
 
 def hooked_bracket(seed: int) -> Mark:
@@ -168,7 +171,18 @@ def closing_bracket(seed: int) -> Mark:
     return Mark("closing-bracket", _placed(rng, pts, rng.random() < 0.5), True)
 
 
+def small_bracket(seed: int) -> Mark:
+    """A small bracket, 40-90 px tall (a finger or a mouse on a small canvas, text-sized), arms 0.25-0.5 of the spine:
+    the pen's hooks and tremor are a larger share of it; corners sharp or rounded over up to 0.3 of the arm."""
+    rng = random.Random(f"small-bracket:{seed}")
+    h = rng.uniform(40, 90)
+    a1 = rng.uniform(0.25, 0.5) * h
+    a2 = a1 * rng.uniform(0.85, 1.15)
+    pts = _bracket(_verts(h, a1, a2), _corner_radii(rng, a1, a2, 0.3), (0.0, rng.uniform(-0.02, 0.02), 0.0))
+    return Mark("small-bracket", _placed(rng, pts, rng.random() < 0.5), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "hooked-bracket": hooked_bracket, "mouse-rounded-bracket": mouse_rounded_bracket,
     "bowed-spine-bracket": bowed_spine_bracket, "short-arm-bracket": short_arm_bracket,
-    "askew-bracket": askew_bracket, "closing-bracket": closing_bracket}
+    "askew-bracket": askew_bracket, "closing-bracket": closing_bracket, "small-bracket": small_bracket}
