@@ -12,8 +12,8 @@ virtual pen, the hurried hand, the hurried hand through a coarse device and thro
 through a fast device (`bench_device_stress.fast`: 8-25 events over the stroke), each read with its times and without.
 With ``--symmetry`` each stroke is also read mirrored left to right and reversed (its points and times), and the
 readings that differ from the stroke's own are counted. ``--marks x`` reads one-stroke x's instead
-(`tests/penmodels/x_habits`: diagonals crossing off their middles). Seeds 0-29 (`TUNING_SEEDS`) were looked at while designing;
-1000-1029 (`HELD_SEEDS`) were read once, at the end.
+(`tests/penmodels/x_habits`: diagonals crossing off their middles). Seeds 0-29 (`TUNING_SEEDS`) were looked at while
+designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
 """
 
 from __future__ import annotations
