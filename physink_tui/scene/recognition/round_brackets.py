@@ -81,16 +81,17 @@ def _longest_flats(heading: list[float]) -> list[tuple[int, int]]:
     return best
 
 
-def _flat_end(run: list[float]) -> int:
-    """How many of ``run``'s first segments keep within `FLAT_DEG` of each other."""
-    if not run:
+def _flat_end(run: list[float], start: int = 0) -> int:
+    """How many of ``run``'s first segments (from ``start``) keep within `FLAT_DEG` of each other."""
+    if start >= len(run):
         return 0
-    low = high = run[0]
-    for k, h in enumerate(run):
+    low = high = run[start]
+    for k in range(start, len(run)):
+        h = run[k]
         low, high = min(low, h), max(high, h)
         if high - low > FLAT_DEG:
-            return k
-    return len(run)
+            return k - start
+    return len(run) - start
 
 
 def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
@@ -117,7 +118,7 @@ def _hook(heading: list[float]) -> int:
     plain = _flat_end(heading)
     best, skip = plain, 0
     for k in range(1, min(HOOK_SEGMENTS, len(heading) - 1) + 1):
-        reach = k + _flat_end(heading[k:])
+        reach = k + _flat_end(heading, k)
         if reach >= plain + 2 * k and reach > best:
             best, skip = reach, k
     return skip
@@ -131,8 +132,14 @@ def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, in
     pts = sg.smooth(sg.resample(work, POINTS))
     d = np.diff(pts, axis=0)
     drawn = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
-    listed = drawn.tolist()
-    lead, tail = _hook(np.degrees(listed).tolist()), _hook(np.degrees(listed[::-1]).tolist())
+    degrees = np.degrees(drawn)
+    # where a hook may end at each end bounds the turn between them: most strokes are no half turn whatever is cut
+    first, last = degrees[:HOOK_SEGMENTS + 1], degrees[-HOOK_SEGMENTS - 1:]
+    least, most = float(last.min() - first.max()), float(last.max() - first.min())
+    if not (most >= HALF_TURN[0] and least <= HALF_TURN[1]) and not (least <= -HALF_TURN[0] and most >= -HALF_TURN[1]):
+        return None
+    listed = degrees.tolist()
+    lead, tail = _hook(listed), _hook(listed[::-1])
     end = len(drawn) - tail
     pts, drawn = pts[lead:end + 1], drawn[lead:end]
     heading = np.degrees(drawn - drawn[0])
