@@ -12,7 +12,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    the first landing to the last lifting) is read by its last whole attempt (`pen_lifts`).
 1. A line (judged on steps a few noise widths long; a stroke whose farthest point strays no farther than the pen's
    own wobble reaches, sqrt(2 ln n) noise widths, is one unless a circle explains its bow, and a hook of up to 8 noise
-   widths at one end is cut first unless it is a straight arm standing off: `lines`), a spring (loops turning one way
+   widths at one end is cut first unless it is a straight arm standing off: `lines`; a tall, thin curly brace, a sharp
+   point about halfway standing out of each arm's line with both ends curling back behind it, is no line:
+   `thin_braces`), a spring (loops turning one way
    whose centres advance along an axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a
    stroke under three noise widths across is a dot (no kind).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
@@ -36,8 +38,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    % wins, the next kinds are the alternatives. Outlines are kept as drawn (issue 25): a box squared from a drawn quad
    that pokes out of those bounds (a rhombus, a diamond) gives way to the quad itself as a polygon
    (`Candidate.fallback`), and a box that leaves more than a tenth of the stroke's points farther than 8 % of its
-   diagonal from its sides is not kept (`recognize.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is not
-   a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
+   diagonal from its sides is not kept (`polygon_checks.OUTLINE_FAR`; a golf tee's thin wide top on its narrow stem is
+   not a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
    to the ellipse drawn (`Candidate.fallback` again), and a loop about as wide as long turning smoothly all round (under
    `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
    (`closed_loops.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
@@ -162,6 +164,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   judged without the pen's hooks at its ends, the same whichever end it was drawn from
 - `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), or askew (laid out against its
   arms' own line), read as a brace (a curve)
+- `thin_braces.py`: a tall, thin curly brace (its point and curls within a line's stray) told from a line by its one
+  sharp point between arms and its ends curling back behind them
 - `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the
   tenth the rules cut as one), read as a tick (a polyline)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,

@@ -20,7 +20,7 @@ import numpy as np
 
 from physink_tui.scene.recognition import quads
 from physink_tui.scene.recognition.beautify import box_geometry, round_geometry
-from physink_tui.scene.recognition.polygon_checks import corners_of, split_hairpins
+from physink_tui.scene.recognition.polygon_checks import corners_of, follows_the_outline, split_hairpins
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, best_polygons
 from physink_tui.scene.recognition.primitives import Box, Geometry, Line, Polygon, Polyline
 from physink_tui.scene.recognition.shape_fits import EllipseFit
@@ -98,8 +98,11 @@ def _build_polygonal(k: int, tried: list[PolygonFit], closed: bool, noise: float
     if closed:
         drawn = Candidate("polygon", Polygon(tuple(map(_pt, verts))), fit.rss, 2 * k)
         box = box_geometry(verts) if k == 4 else None
+        askew = box is None and k == 4 and (box := quads.askew_box(fit.points, fit.indices)) is not None
         squared = _box_from_sides(box, fit) if box is not None else None
-        if squared is not None and not quads.kept_as_drawn(fit.points, fit.indices, squared.corners):
+        # a box squared from a wall askew leaves no part of the loop out (else the quad drawn stands, as before)
+        if (squared is not None and not quads.kept_as_drawn(fit.points, fit.indices, squared.corners)
+                and not (askew and not follows_the_outline(squared.corners, fit.points))):
             out.append(Candidate("box", squared, fit.rss, 8, drawn))
         else:  # a polygon; a quad (a trapezoid or a rhombus among them) with its corners where its sides meet
             out.append(_at_side_corners(drawn, fit) if k == 4 else drawn)

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import angular_braces, bracket_marks, lines, open_marks, round_brackets
+from physink_tui.scene.recognition import angular_braces, bracket_marks, lines, open_marks, round_brackets, thin_braces
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -66,7 +66,8 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     hand's swing (`open_marks.swung_line`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a
     short line's hook is a large share of it), straight within the pen's own wobble (`lines.within_wobble`). Those
     two are judged by the pen's stated noise ``pen`` (``noise`` where not given), not a measured jitter that may be
-    the shape's own bends between a few far-apart events (`recognize.SPARSE_BENDS`)."""
+    the shape's own bends between a few far-apart events (`recognize.SPARSE_BENDS`). A tall, thin curly brace
+    (`thin_braces.thin_brace`: a sharp point halfway, both ends curling back) is no line."""
     pen = noise if pen is None else min(pen, noise)
     found, swung, loose = _line(raw, noise, diag, pen)
     if found is None:
@@ -80,6 +81,8 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
             cut, _, _ = _line(kept, noise, sg.bbox_diagonal(kept), pen, bow=False, plain=found is not None)
             if cut is not None and (found is None or cut.confidence > found.confidence):
                 found = cut
+    if (found is not None or swung is not None) and thin_braces.thin_brace(raw, noise):
+        return None  # a tall, thin brace: its point and curls within a line's stray
     return found if found is not None else swung
 
 

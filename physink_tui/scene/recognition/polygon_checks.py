@@ -76,6 +76,27 @@ def overlap(a: Sequence[tuple[float, float]] | np.ndarray, b: Sequence[tuple[flo
     return float(shapely.intersection(pa, pb).area) / union if union > 0 else 0.0
 
 
+OUTLINE_FAR = 0.08
+OUTLINE_LEFT_OUT = 0.1
+"""A box leaves out part of what was drawn when more than `OUTLINE_LEFT_OUT` of the closed loop's points lie farther
+than `OUTLINE_FAR` of the loop's diagonal from the box's sides: the wide top of a golf tee drawn on its narrow stem is
+not a box the size of the stem (people's and hurried boxes, thin ones included, leave out under 2 % of their
+points; such a tee's wings are a quarter of its points)."""
+
+
+def follows_the_outline(corners: Sequence[tuple[float, float]] | np.ndarray, drawn: np.ndarray) -> bool:
+    """Whether the closed outline through ``corners`` (a box's) follows the whole loop ``drawn`` (`OUTLINE_FAR`,
+    `OUTLINE_LEFT_OUT`)."""
+    diag = float(np.hypot(*(drawn.max(axis=0) - drawn.min(axis=0))))
+    a = np.asarray(corners, dtype=float)
+    b = np.roll(a, -1, axis=0)
+    ab = b - a
+    rel = drawn[:, None, :] - a[None, :, :]  # each point against each side
+    u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
+    gap = np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)).min(axis=1)
+    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(drawn)
+
+
 @dataclass(frozen=True, slots=True)
 class Corners:
     """A fit whose vertices are corners; ``hairpins`` are the vertices (positions in the fit's vertex list)

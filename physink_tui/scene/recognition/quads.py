@@ -14,7 +14,9 @@ What a hurried hand does to a box stays a box whatever the overlap: it leans the
 sides parallel, neighbours of unequal length, `tests/test_closed_marks.py`), or sends one wall askew (a right
 trapezoid: one leg square to its neighbours, the other off by up to 20-30 degrees in people's rectangles: hcira jd4386
 User04 rectangle03, sinarest1608 Subject5 rectangle6), or pulls a corner of a square drawn on its side (hat359 user1
-rectangle01: equal sides, but its diagonals at 45 degrees to the page).
+rectangle01: equal sides, but its diagonals at 45 degrees to the page). Past the box's tolerance, a quad with one wall
+askew by up to `WALL_ASKEW`, the wall opposite square and no two sides parallel, every side straight, is still a box
+(`askew_box`); with its base and top parallel it is a right trapezoid, kept as drawn.
 
 The quad is judged where its sides lie (`side_corners`: each side's line through its middle points, as
 `candidates._box_from_sides` places a box), not on the fit's vertices, which a rounded or cut corner moves inside;
@@ -29,8 +31,10 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from physink_tui.scene.recognition.beautify import box_geometry
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, overlap
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
+from physink_tui.scene.recognition.primitives import Box
 
 KEEPS = 0.90
 """A box squared from a quad must overlap the quad by this much (IoU) for a trapezoid or a rhombus to become one."""
@@ -136,6 +140,67 @@ def kept_as_drawn(points: np.ndarray, indices: tuple[int, ...], squared: Sequenc
         return False
     return trapezoid(corners) or rhombus(corners)
 
+
+
+WALL_ASKEW = 34.0
+"""Degrees: past a box's corner tolerance (`beautify.box_geometry`, 24), a quad with a wall this far from square is
+still a box a hand drew with that wall askew when no two of its sides are parallel (`PARALLEL`: no trapezoid, no
+parallelogram, no rhombus, which keep two sides parallel) and one wall stands square to both its neighbours
+(`SQUARE_WALL`; a kite's square corners are opposite). People's rectangles drawn so read as quads: hcira jd4386 User06
+rectangle, klarubbio s06 (a mouse), itt uniUbungsAccount, a wall 27-29 degrees out, no sides within 9 degrees of
+parallel (issue 25, session 21). A right trapezoid (a square leg, the other leaning, its base and top parallel) is
+the trapezoid drawn, as the pen models draw it (`tests/test_quads_kept.py`)."""
+SQUARE_WALL = 12.0
+"""Degrees: the wall opposite an askew one meets both its neighbours this near square (a hand's right angle)."""
+STRAIGHT_WALLS = 0.03
+"""Four in five of each side's points lie within this share of its chord of the side's line (its middle points'): an
+askew wall is a straight one, while a side bent in its middle is two sides (a pentagon whose shallow corner no fit
+of five sides passes, fitted with four: 0.056-0.059 of the chord in `benchmarks/bench_closed_shapes.py`'s irregular and
+rounded pentagons; people's askew rectangles 0.006-0.022, the pen models' `wall-askew-by-hand` boxes under
+0.013)."""
+
+
+def _corner_angles(corners: np.ndarray) -> list[float]:
+    """Each corner's angle in degrees, in order."""
+    out = []
+    for i in range(4):
+        a, b = corners[i - 1] - corners[i], corners[(i + 1) % 4] - corners[i]
+        cos = float(a @ b) / float(np.hypot(*a) * np.hypot(*b))
+        out.append(math.degrees(math.acos(max(-1.0, min(1.0, cos)))))
+    return out
+
+
+def askew_box(points: np.ndarray, indices: tuple[int, ...]) -> Box | None:
+    """The box a closed four-sided fit stands for when a wall of it is askew by up to `WALL_ASKEW`, the wall opposite
+    square to its neighbours (`SQUARE_WALL`) and no two sides parallel, judged where its sides lie (`side_corners`);
+    None for a quad of any other shape (a trapezoid, a rhombus, a parallelogram, a kite: the quad drawn)."""
+    corners = side_corners(points, indices)
+    if corners is None or not convex(corners):
+        return None
+    angles = _corner_angles(corners)
+    off = [abs(a - 90.0) for a in angles]
+    if max(off) > WALL_ASKEW or not any(off[i] <= SQUARE_WALL and off[(i + 1) % 4] <= SQUARE_WALL for i in range(4)):
+        return None
+    # opposite sides parallel where the corners along either side between them add up to a half turn
+    if min(abs(angles[0] + angles[1] - 180.0), abs(angles[1] + angles[2] - 180.0)) <= PARALLEL:
+        return None
+    if not _straight_sides(points, indices):
+        return None
+    return box_geometry(corners, tolerance_deg=WALL_ASKEW)
+
+
+def _straight_sides(points: np.ndarray, indices: tuple[int, ...]) -> bool:
+    """Whether each side of a closed fit runs straight (`STRAIGHT_WALLS`) along the line through its middle points."""
+    for a, b in itertools.pairwise(indices):
+        run = points[a:b + 1]
+        core = _core(run)
+        centre = core.mean(axis=0)
+        _, _, vt = np.linalg.svd(core - centre, full_matrices=False)
+        rel = run - centre
+        off = np.abs(rel[:, 0] * vt[0][1] - rel[:, 1] * vt[0][0])
+        if float(np.quantile(off, 0.8)) > STRAIGHT_WALLS * float(np.hypot(*(run[-1] - run[0]))):
+            return False
+    return True
 
 
 def four_sides_cover(fit: PolygonFit, drawn: Sequence[tuple[float, float]]) -> bool:

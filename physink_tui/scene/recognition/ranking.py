@@ -14,6 +14,7 @@ import numpy as np
 
 from physink_tui.scene.recognition.beautify import shape_points
 from physink_tui.scene.recognition.candidates import Candidate, Pending
+from physink_tui.scene.recognition.polygon_checks import follows_the_outline
 from physink_tui.scene.recognition.primitives import Geometry, Recognition
 
 
@@ -102,27 +103,10 @@ def rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weight
     return Recognition(best.kind, round(weight[best.kind] / total, 4), best.geometry, alternatives[:3])
 
 
-OUTLINE_FAR = 0.08
-OUTLINE_LEFT_OUT = 0.1
-"""A box leaves out part of what was drawn when more than `OUTLINE_LEFT_OUT` of the closed loop's points lie farther
-than `OUTLINE_FAR` of the loop's diagonal from the box's sides: the wide top of a golf tee drawn on its narrow stem is
-not a box the size of the stem (people's and hurried boxes, thin ones included, leave out under 2 % of their
-points; such a tee's wings are a quarter of its points)."""
-
-
 def keeps_the_outline(c: Candidate, drawn: np.ndarray) -> bool:
     """Whether a box candidate follows the whole outline it was fitted to (``drawn``: the closed loop, without a
-    tail drawn on past it); other kinds are not judged here."""
-    if c.kind != "box":
-        return True
-    diag = float(np.hypot(*(drawn.max(axis=0) - drawn.min(axis=0))))
-    corners = np.asarray(shape_points(c.geometry), dtype=float)
-    a, b = corners, np.roll(corners, -1, axis=0)
-    ab = b - a
-    rel = drawn[:, None, :] - a[None, :, :]  # each point against each side
-    u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
-    gap = np.hypot(*(rel - u[:, :, None] * ab).transpose(2, 0, 1)).min(axis=1)
-    return float(np.count_nonzero(gap > OUTLINE_FAR * diag)) <= OUTLINE_LEFT_OUT * len(drawn)
+    tail drawn on past it: `polygon_checks.follows_the_outline`); other kinds are not judged here."""
+    return c.kind != "box" or follows_the_outline(shape_points(c.geometry), drawn)
 
 
 SEARCH_SPAN = 3 * 6.0

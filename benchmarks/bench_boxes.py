@@ -1,0 +1,108 @@
+"""Benchmark: rectangles drawn with the habits of people we have not seen (`tests/penmodels/box_habits.py`: tails past
+the close, retraced, turned, a wall askew, a corner swung wide, a gap at the close, ...) by the project's pen models,
+each read as a box.
+
+Usage: .venv/bin/python benchmarks/bench_boxes.py [--seeds A:B] [--held-back] [--rules] [--families A,B] [--misread]
+
+Each family draws its box from its own seeded generator (`box_habits.drawn`) and each pen draws it with the same seed,
+as `bench_closed_shapes` does: the careful virtual pen (windows-ink), the hurried hand (`penmodels.hurried`) and the
+hurried hand through a device sending an event every 15-30 ms (a browser's sparse events) and through a mouse
+(`hurried_mouse`: whole pixels, one axis a step, events in bursts). Every stroke is
+read with its times. A family is right when it reads as a box (benchmarks/label_kinds.tsv: a rectangle is a box).
+Seeds 0-29 are the tuning range; seeds 1000-1029 (``--held-back``) are never looked at while tuning and reported
+apart. ``--misread`` lists each misread (family, pen, seed, kind). Deterministic: no clock, no unseeded randomness.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections import Counter
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import numpy as np
+from bench_closed_shapes import careful, hurried, hurried_coarse
+from bench_device_stress import COMBINED
+from penmodels.box_habits import FAMILIES, drawn
+from penmodels.shapes import Shape
+
+from physink_tui.scene.recognition.recognize import recognize_stroke
+
+TUNING_SEEDS = range(0, 30)
+HELD_BACK_SEEDS = range(1000, 1030)
+
+
+def hurried_mouse(s: Shape, seed: int) -> list[tuple[float, float, float]]:
+    """The hurried hand through a mouse (`bench_device_stress.COMBINED` "mouse": 60-200 px across in whole pixels, one
+    axis a step, events in bursts, some repeated)."""
+    drawn_ = np.array(hurried(s, seed))
+    pts, when = COMBINED["mouse: stairs, bursts, repeats"]((drawn_[:, :2], drawn_[:, 2]), np.random.default_rng(seed))
+    assert when is not None
+    return [(float(x), float(y), float(t)) for (x, y), t in zip(pts, when, strict=True)]
+
+
+PENS = {"careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse, "hurried-mouse": hurried_mouse}
+
+
+def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:
+    """The kind read from ``family``'s box for ``seed`` drawn by ``pen``, with its times."""
+    points = PENS[pen](drawn(family, seed), seed)
+    return recognize_stroke([p[:2] for p in points], [p[2] for p in points], learned=learned).kind
+
+
+def run(families: list[str], seeds: range, learned: bool) -> dict[tuple[str, str], list[str | None]]:
+    return {(f, p): [read(f, p, s, learned) for s in seeds] for f in families for p in PENS}
+
+
+def report(results: dict[tuple[str, str], list[str | None]], title: str) -> list[str]:
+    lines = [f"#### {title}", "", "| family | " + " | ".join(PENS) + " | readings other than box |",
+             "|---|" + "---:|" * len(PENS) + "---|"]
+    pooled: Counter[str] = Counter()
+    for family in dict.fromkeys(f for f, _ in results):
+        cells, others = [], Counter[str]()
+        for pen in PENS:
+            got = results[(family, pen)]
+            right = sum(k == "box" for k in got)
+            cells.append(f"{right}/{len(got)}")
+            others.update(str(k) for k in got if k != "box")
+            pooled[pen] += right
+            pooled[f"{pen} n"] += len(got)
+        lines.append(f"| {family} | " + " | ".join(cells) + " | "
+                     + ", ".join(f"{k} {n}" for k, n in others.most_common()) + " |")
+    total = sum(pooled[p] for p in PENS)
+    n = sum(pooled[f"{p} n"] for p in PENS)
+    lines += ["", "- " + ", ".join(f"{p} {pooled[p]}/{pooled[p + ' n']}" for p in PENS)
+              + f"; all {total}/{n} = {100 * total / n:.1f} %"]
+    return lines
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seeds", help="A:B, a range of seeds (default: the tuning range 0:30)")
+    parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
+    parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
+    parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
+    parser.add_argument("--misread", action="store_true", help="list every misread stroke")
+    args = parser.parse_args()
+    families = args.families.split(",") if args.families else list(FAMILIES)
+    if args.held_back:
+        seeds, name = HELD_BACK_SEEDS, "held-back seeds 1000-1029"
+    elif args.seeds:
+        a, b = map(int, args.seeds.split(":"))
+        seeds, name = range(a, b), f"seeds {a}-{b - 1}"
+    else:
+        seeds, name = TUNING_SEEDS, "tuning seeds 0-29"
+    results = run(families, seeds, learned=not args.rules)
+    print("\n".join(report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}")))
+    if args.misread:
+        for (family, pen), got in results.items():
+            for seed, kind in zip(seeds, got, strict=True):
+                if kind != "box":
+                    print(f"{family} {pen} {seed} {kind}")
+
+
+if __name__ == "__main__":
+    main()
