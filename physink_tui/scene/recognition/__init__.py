@@ -107,13 +107,14 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
    A square bracket with both corners rounded off (a long straight spine, a straight arm at each end, each joined to
-   it by a bend of about a right angle, half a turn in all) is a polyline with its corners where its sides meet
-   (`round_brackets`); a brace drawn as straight runs between cusps (running along its ends' line on one side of it,
-   its arms parallel to it and off it, its point about halfway sticking out past them) is not a polyline
-   (`angular_braces`); neither, so read, is asked of the ranker below. A curve, arc or polyline so read whose one
-   end is a straight short arm longer than a landing hook reaches (`lines.HOOK_REACH`) but within the tenth of the
-   path the rules cut as a hook, standing off a straight long arm at a tick's angle, is a tick: a polyline through
-   its start, point and end (`hooked_ticks`), not asked of the ranker either.
+   it by a bend of about a right angle, half a turn in all, judged without a hook where the pen landed or lifted) is
+   a polyline with its corners where its sides meet (`round_brackets`), not an ellipse left open; a brace drawn as
+   straight runs between cusps (running along its ends' line on one side of it, its arms parallel to it and off it,
+   its point about halfway sticking out past them) is not a polyline (`angular_braces`); neither, so read, is asked
+   of the ranker below. A curve, arc or polyline so read whose one end is a straight short arm longer than a landing
+   hook reaches (`lines.HOOK_REACH`) but within the tenth of the path the rules cut as a hook, standing off a straight
+   long arm at a tick's angle, is a tick: a polyline through its start, point and end (`hooked_ticks`), not asked of
+   the ranker either.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -159,7 +160,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   end, the ink of a wobble), told from a bow drawn on purpose (a circle explains it) and a mark's short arm
 - `stairs.py`: a chain of sharp corners joined by straight, repeating sides (staircases, square waves, zig-zags),
   judged at its sides' scale, read as a polyline through its corners
-- `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline)
+- `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline),
+  judged without the pen's hooks at its ends, the same whichever end it was drawn from
 - `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), or askew (laid out against its
   arms' own line), read as a brace (a curve)
 - `thin_braces.py`: a tall, thin curly brace (its point and curls within a line's stray) told from a line by its one

@@ -163,9 +163,11 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     smooth = concentration < SMOOTH  # a polyline turning the same way at sharp corners is not round
     if (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
             and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum())):
-        # most of a turn, smoothly: a round shape left open (people often stop short of the start)
+        # most of a turn, smoothly: a round shape left open (people often stop short of the start); not a bracket
+        # rounded at both corners, which turns that far only with its hooks and has a straight spine
         open_ellipse = fit_ellipse(work)
-        if open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise):
+        if (open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise)
+                and round_brackets.rounded_bracket(work, lobes) is None):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
     roundness = sf.corner_roundness(work, corners, th=th)

@@ -13,6 +13,7 @@ before its stem; a brace turns both ways; a U's round bottom is one bend of a ha
 from __future__ import annotations
 
 import collections
+import itertools
 import math
 import statistics
 
@@ -43,12 +44,21 @@ ARM_SHARE = 0.04
 MARGIN = 0.05
 """A corner is put where the arm's and the spine's lines meet, unless that lies farther than this share of the
 diagonal outside the stroke's bounds (arms nearly parallel to the spine); then at the bend's middle."""
+HOOK_SEGMENTS = 4
+"""A hook where the pen landed or lifted spans at most this many of the `POINTS` segments at an end (about 6 % of the
+path: the hurried hand's 2-5 px hooks, a flick off an arm); the bracket is judged from where its arm begins. The
+stroke's own hook cut (`stroke_geometry.remove_hooks`) keeps a hook followed at once by a round corner, as on a
+bracket whose short arm runs into a rounded corner."""
+TURN_BACK_DEG = 45.0
+"""Between its hooks a bracket turns one way: its heading never comes back by more than this (degrees; a hand's wobble
+along a side; a brace's point or an S turns back by a right angle and more)."""
 
 
-def _longest_flat(heading: list[float]) -> tuple[int, int]:
-    """The longest run ``[a, b)`` of segments whose headings lie within `FLAT_DEG` of each other (one pass, the
-    window's least and greatest heading kept in two monotone queues)."""
-    best, a = (0, 0), 0
+def _longest_flats(heading: list[float]) -> list[tuple[int, int]]:
+    """The longest runs ``[a, b)`` of segments whose headings lie within `FLAT_DEG` of each other, all of them where
+    several are as long, in drawing order (one pass, the window's least and greatest heading kept in two monotone
+    queues): the same runs, whichever end the stroke was drawn from."""
+    best, a = [(0, 0)], 0
     low: collections.deque[int] = collections.deque()
     high: collections.deque[int] = collections.deque()
     for b, h in enumerate(heading):
@@ -64,21 +74,24 @@ def _longest_flat(heading: list[float]) -> tuple[int, int]:
                 low.popleft()
             if high[0] < a:
                 high.popleft()
-        if b + 1 - a > best[1] - best[0]:
-            best = (a, b + 1)
+        if b + 1 - a > best[0][1] - best[0][0]:
+            best = [(a, b + 1)]
+        elif b + 1 - a == best[0][1] - best[0][0]:
+            best.append((a, b + 1))
     return best
 
 
-def _flat_end(run: list[float]) -> int:
-    """How many of ``run``'s first segments keep within `FLAT_DEG` of each other."""
-    if not run:
+def _flat_end(run: list[float], start: int = 0) -> int:
+    """How many of ``run``'s first segments (from ``start``) keep within `FLAT_DEG` of each other."""
+    if start >= len(run):
         return 0
-    low = high = run[0]
-    for k, h in enumerate(run):
+    low = high = run[start]
+    for k in range(start, len(run)):
+        h = run[k]
         low, high = min(low, h), max(high, h)
         if high - low > FLAT_DEG:
-            return k
-    return len(run)
+            return k - start
+    return len(run) - start
 
 
 def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
@@ -97,36 +110,71 @@ def _side(pts: np.ndarray, drawn: np.ndarray, lo: int, hi: int) -> tuple[np.ndar
     return pts[lo:hi + 1].mean(axis=0), np.array([math.cos(angle), math.sin(angle)])
 
 
-def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
-    """The stroke resampled (`POINTS`) and smoothed, each segment's heading as drawn (radians) and from the first,
-    turned the way the stroke turns (degrees), when its heading turns by half a turn (`HALF_TURN`); else None."""
+def _hook(heading: list[float]) -> int:
+    """How many of ``heading``'s first segments (degrees) are a hook, `HOOK_SEGMENTS` at most: a lead after which the
+    run of one heading (`_flat_end`) reaches on past the run from the very end by at least twice the lead's length (a
+    hook hides a whole arm; a bend easing into a rounded corner gains little by a skip), the skip after which the run
+    reaches farthest."""
+    plain = _flat_end(heading)
+    best, skip = plain, 0
+    for k in range(1, min(HOOK_SEGMENTS, len(heading) - 1) + 1):
+        reach = k + _flat_end(heading, k)
+        if reach >= plain + 2 * k and reach > best:
+            best, skip = reach, k
+    return skip
+
+
+def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, int] | None:
+    """The stroke resampled (`POINTS`) and smoothed, without a hook at either end (`_hook`), each segment's heading as
+    drawn (radians) and from the first, turned the way the stroke turns (degrees), and how many ends had a hook cut,
+    when its heading turns by half a turn (`HALF_TURN`) from its first arm to its last and never back
+    (`TURN_BACK_DEG`); else None."""
     pts = sg.smooth(sg.resample(work, POINTS))
     d = np.diff(pts, axis=0)
     drawn = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    degrees = np.degrees(drawn)
+    # where a hook may end at each end bounds the turn between them: most strokes are no half turn whatever is cut
+    first, last = degrees[:HOOK_SEGMENTS + 1], degrees[-HOOK_SEGMENTS - 1:]
+    least, most = float(last.min() - first.max()), float(last.max() - first.min())
+    if not (most >= HALF_TURN[0] and least <= HALF_TURN[1]) and not (least <= -HALF_TURN[0] and most >= -HALF_TURN[1]):
+        return None
+    listed = degrees.tolist()
+    lead, tail = _hook(listed), _hook(listed[::-1])
+    end = len(drawn) - tail
+    pts, drawn = pts[lead:end + 1], drawn[lead:end]
     heading = np.degrees(drawn - drawn[0])
     turn = float(heading[-1])
     if not HALF_TURN[0] <= abs(turn) <= HALF_TURN[1]:
         return None
-    return pts, drawn, heading * math.copysign(1.0, turn)
+    heading = heading * math.copysign(1.0, turn)
+    if float(np.max(np.maximum.accumulate(heading) - heading)) > TURN_BACK_DEG:
+        return None
+    return pts, drawn, heading, (lead > 0) + (tail > 0)
 
 
 def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, float], ...] | None:
     """The four vertices (start, corner, corner, end) of a square bracket whose corners are rounded off, or None.
 
     ``work``: the open stroke (hooks and corner loops removed, as `open_shapes.classify_open` judges it); ``lobes``:
-    its `stroke_features.lobes` (a bracket turns one way: one lobe). The spine is the longest straight run
+    its `stroke_features.lobes` (a bracket turns one way: one lobe, and one more for each hook cut at an end, which
+    may turn the other way; between its hooks it turns one way, `TURN_BACK_DEG`). The spine is the longest straight run
     (`SPINE_SHARE`); an arm is the straight run at each end (`ARM_FLAT`, `ARM_SHARE`); each bend between them turns
     about a right angle (`BEND_DEG`), both the same way, half a turn in all (`HALF_TURN`)."""
-    if len(lobes) != 1 or len(work) < 8:
+    if not 1 <= len(lobes) <= 3 or len(work) < 8:
         return None
     found = _half_turn(work)
-    if found is None:
+    if found is None or len(lobes) > 1 + found[3]:
         return None
-    pts, drawn, heading = found
+    pts, drawn, heading, _ = found
     n = len(heading)
     listed = heading.tolist()
-    a, b = _longest_flat(listed)
-    if (b - a) < SPINE_SHARE * n or a == 0 or b == n:
+    runs = _longest_flats(listed)
+    # runs as long, each sharing most of its segments with the next, are one spine from the first's start to the last's
+    # end (the same, whichever end the stroke was drawn from); runs as long further apart are no one spine (a brace's
+    # halves either side of its point)
+    a, b = runs[0][0], runs[-1][1]
+    if (any(2 * later[0] >= earlier[0] + earlier[1] for earlier, later in itertools.pairwise(runs))
+            or runs[0][1] - runs[0][0] < SPINE_SHARE * n or a == 0 or b == n):
         return None
     first = _flat_end(listed[:a])
     last = _flat_end(listed[b:][::-1])
