@@ -10,7 +10,7 @@ import random
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from penmodels.open_marks import Mark
+from penmodels.open_marks import Mark, angular_brace_corners
 
 Point = tuple[float, float]
 WAYS = ("left-down", "left-up", "right-down", "right-up")
@@ -182,14 +182,7 @@ def straight_runs(seed: int, way: str) -> Mark:
     """A brace drawn as straight runs between corners (a mouse's): a run for each curl, each arm, out to the point and
     back (as `penmodels.open_marks.angular_brace`), the pen turning at each corner."""
     rng = random.Random(seed)
-    h = rng.uniform(120, 320)
-    w = rng.uniform(0.1, 0.25) * h
-    tip = rng.uniform(0.6, 1.5) * w
-    curl = rng.uniform(0.06, 0.18) * h
-    approach = rng.uniform(0.03, 0.12) * h
-    pts = [(w, -h / 2), (0.0, -h / 2 + curl), (0.0, -approach), (-tip, 0.0), (0.0, approach), (0.0, h / 2 - curl),
-           (w * rng.uniform(0.8, 1.2), h / 2)]
-    return Mark("straight-runs", _placed(rng, pts, way), False)
+    return Mark("straight-runs", _placed(rng, angular_brace_corners(rng), way), False)
 
 
 FAMILIES: dict[str, Callable[[int, str], Mark]] = {

@@ -82,14 +82,18 @@ def angular_brace(seed: int) -> Mark:
     run, each arm a long one, the point two short ones); drawn as `brace` is placed, its corners turned as a pen turns
     any corner. Still a brace: a curve (`open_shapes.BRACE_TIP`)."""
     rng = random.Random(seed)
+    return Mark("angular-brace", _placed(rng, angular_brace_corners(rng), rng.random() < 0.5), False)
+
+
+def angular_brace_corners(rng: random.Random) -> list[tuple[float, float]]:
+    """The corners of a brace of straight runs 120-320 px tall, its point to the left of its arms, about the origin."""
     h = rng.uniform(120, 320)
     w = rng.uniform(0.1, 0.25) * h
     tip = rng.uniform(0.6, 1.5) * w
     curl = rng.uniform(0.06, 0.18) * h
     approach = rng.uniform(0.03, 0.12) * h
-    pts = [(w, -h / 2), (0.0, -h / 2 + curl), (0.0, -approach), (-tip, 0.0), (0.0, approach), (0.0, h / 2 - curl),
-           (w * rng.uniform(0.8, 1.2), h / 2)]
-    return Mark("angular-brace", _placed(rng, pts, rng.random() < 0.5), False)
+    return [(w, -h / 2), (0.0, -h / 2 + curl), (0.0, -approach), (-tip, 0.0), (0.0, approach), (0.0, h / 2 - curl),
+            (w * rng.uniform(0.8, 1.2), h / 2)]
 
 
 def question(seed: int) -> Mark:
