@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from shapely.geometry import MultiPoint
+import shapely
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from physink_tui.scene.recognition.primitives import Box, Recognition
@@ -38,7 +38,7 @@ def smallest_rectangle(loop: np.ndarray) -> tuple[np.ndarray, float, np.ndarray,
     """The smallest rectangle round ``loop`` (it lies along a side of the loop's convex hull): its centre, the angle
     of its first axis, its side lengths (along that axis and across it), and the loop's points in it, scaled to the
     square [-1, 1] x [-1, 1]; None for a loop without area."""
-    hull = MultiPoint([tuple(p) for p in loop]).convex_hull
+    hull = shapely.convex_hull(shapely.multipoints(np.asarray(loop, dtype=float)))
     if not isinstance(hull, ShapelyPolygon) or hull.area <= 0.0:
         return None
     ring = np.asarray(hull.exterior.coords)[:-1]
