@@ -39,6 +39,15 @@ def rounded_box(w: float, h: float, share: float, arc_points: int = 9) -> list[P
     return out
 
 
+def evenly(ring: list[Point]) -> list[list[float]]:
+    """The closed outline through ``ring`` drawn evenly (a point every 2 px) round (800, 500), back to its start."""
+    dense: list[list[float]] = []
+    for p, q in zip(ring, [*ring[1:], ring[0]], strict=True):
+        n = max(1, int(math.dist(p, q) / 2))
+        dense += [[p[0] + (q[0] - p[0]) * k / n + 800.0, p[1] + (q[1] - p[1]) * k / n + 500.0] for k in range(n)]
+    return [*dense, dense[0]]
+
+
 def _reach(points: list[Point]) -> float:
     found = smallest_rectangle(np.asarray(points, dtype=float))
     assert found is not None
@@ -65,14 +74,22 @@ def test_a_squares_rounded_corners_reach_as_far_as_their_radius_lets_them(share:
 @pytest.mark.parametrize("size", ((200.0, 200.0), (300.0, 150.0), (400.0, 100.0)))
 def test_a_box_with_every_corner_rounded_reads_as_the_box(share: float, size: tuple[float, float]) -> None:
     """Drawn evenly (a point every 2 px), each at main a circle or an ellipse for the shares over a quarter."""
-    ring = rounded_box(*size, share)
-    dense: list[list[float]] = []
-    for a, b in zip(ring, [*ring[1:], ring[0]], strict=True):
-        n = max(1, int(math.dist(a, b) / 2))
-        dense += [[a[0] + (b[0] - a[0]) * k / n + 800.0, a[1] + (b[1] - a[1]) * k / n + 500.0] for k in range(n)]
-    got = recognize_stroke([*dense, dense[0]])
+    got = recognize_stroke(evenly(rounded_box(*size, share)))
     assert got.kind == "box", (share, size, got.kind, got.alternatives)
     assert got.geometry.width * got.geometry.height == pytest.approx(size[0] * size[1], rel=0.05)
+
+
+@pytest.mark.parametrize("share", (0.25, 0.3, 0.35))
+@pytest.mark.parametrize("degrees", (15.0, 30.0, 45.0))
+def test_a_rounded_square_turned_reads_as_the_box(share: float, degrees: float) -> None:
+    """Turned, the rectangle round it pokes out past the stroke's upright bounds at the rounded corners (a first
+    version that kept a box within them read 0.3 at 45 degrees and 0.35 at 30 and 45 as circles)."""
+    a = math.radians(degrees)
+    ring = [(x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a))
+            for x, y in rounded_box(200.0, 200.0, share)]
+    got = recognize_stroke(evenly(ring))
+    assert got.kind == "box", (share, degrees, got.kind, got.alternatives)
+    assert math.degrees(got.geometry.angle) % 90.0 == pytest.approx(degrees % 90.0, abs=3.0)
 
 
 @pytest.mark.parametrize("pen", ("hurried", "virtual"))

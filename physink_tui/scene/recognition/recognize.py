@@ -315,7 +315,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
-    ranked = rounded_boxes.box_rounded_all_round(ranked, loop, raw, noise, diag)
+    ranked = rounded_boxes.box_rounded_all_round(ranked, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
         return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag)

@@ -25,7 +25,6 @@ import shapely
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from physink_tui.scene.recognition.primitives import Box, Recognition
-from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside
 
 CORNER_REACH = 0.78
 """A loop read round is the box round it when its least corner reaches at least this far towards the corner of the
@@ -74,12 +73,12 @@ def corner_reach(scaled: np.ndarray) -> float:
     return reach
 
 
-def box_rounded_all_round(ranked: Recognition, loop: np.ndarray, raw: np.ndarray, noise: float,
-                          diag: float) -> Recognition:
-    """``ranked`` (a circle or an ellipse) read as the box round ``loop`` when every corner of the loop reaches
-    `CORNER_REACH` towards that box's corner and the box stays within the stroke's bounds as any box does
-    (`ranking.BOX_MARGIN`; ``raw``: the stroke's own points, ``diag`` their diagonal, ``noise`` the pen's in their
-    units); ``ranked`` otherwise."""
+def box_rounded_all_round(ranked: Recognition, loop: np.ndarray) -> Recognition:
+    """``ranked`` (a circle or an ellipse) read as the box round ``loop`` (the smallest rectangle round it) when every
+    corner of the loop reaches `CORNER_REACH` towards that box's corner; ``ranked`` otherwise. The box's sides touch
+    the loop and its corners lie beyond it only by what the rounding took off, so it is not asked to stay within the
+    stroke's bounds as a box fitted otherwise is (`ranking.BOX_MARGIN`): a square turned 30-45 degrees whose corners
+    are rounded by a third of its side pokes out past them by more."""
     if ranked.kind not in ("circle", "ellipse") or len(loop) < 8:
         return ranked
     found = smallest_rectangle(loop)
@@ -89,6 +88,4 @@ def box_rounded_all_round(ranked: Recognition, loop: np.ndarray, raw: np.ndarray
     if corner_reach(scaled) < CORNER_REACH:
         return ranked
     box = Box((float(centre[0]), float(centre[1])), float(size[0]), float(size[1]), angle)
-    if not inside(box, *bounds(raw, noise, diag, BOX_MARGIN)):
-        return ranked
     return Recognition("box", ranked.confidence, box, ((str(ranked.kind), 1.0 - ranked.confidence),))
