@@ -170,9 +170,12 @@ def _once_round(work: np.ndarray, th: np.ndarray, limit: float) -> tuple[np.ndar
     and whether it came back within ``limit`` of where it began: from both ends where the stroke crosses itself (a
     pigtail's tails cross, and one of them may be short enough to come back), from either end where it does not (a
     circle drawn on past its start and out: once round from its end the overshoot is a lead-in that does not). Asked
-    of both ends alike, so that a stroke reads the same drawn either way."""
+    of both ends alike, so that a stroke reads the same drawn either way; but a stroke whose ends meet is judged from
+    its start alone, as before (once round from one end may stop short where a hook's turn adds to the count)."""
     loop = sf.one_loop(work, th)
     back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit
+    if float(np.hypot(*(work[-1] - work[0]))) <= limit:
+        return loop, back
     other = sf.one_loop(work[::-1], -th[::-1])
     back_other = float(np.hypot(*(other[-1] - other[0]))) <= limit
     if back == back_other:
