@@ -78,7 +78,8 @@ def main(families: Mapping[str, Callable[[int], Mark]] = FAMILIES, expected: Map
     ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("--seeds", choices=("tune", "held", "all"), default="tune")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
-    ap.add_argument("--marks", choices=tuple(MARKS), default="brackets", help="square brackets (the default), x's or pigtails")
+    ap.add_argument("--marks", choices=tuple(MARKS), default="brackets",
+                    help="square brackets (the default), x's or pigtails")
     ap.add_argument("--family", action="append", help="only these families")
     ap.add_argument("--symmetry", action="store_true", help="also count readings changed by mirroring or reversing")
     args = ap.parse_args()

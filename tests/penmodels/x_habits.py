@@ -75,7 +75,8 @@ def _corners(rng: random.Random, h: float) -> list[Point]:
 def looped_turn_x(seed: int) -> Mark:
     """An x 120-300 px tall whose pen, at one turn of the side or both, runs past the corner and loops round into the
     next side (an alpha at the turn: a loop 0.06-0.15 of the x's height across, swung the long way round, against the
-    corner's own turn) instead of making a sharp corner; straight sides otherwise; either way round, from either end, turned half the time."""
+    corner's own turn) instead of making a sharp corner; straight sides otherwise; either way round, from either end,
+    turned half the time."""
     rng = random.Random(f"looped-turn-x:{seed}")
     h = rng.uniform(120, 300)
     a, p, q, d = _corners(rng, h)
@@ -160,8 +161,10 @@ def unequal_x(seed: int) -> Mark:
     long_, short = h, h * ratio
     if rng.random() < 0.5:
         long_, short = short, long_
-    a, p = (-along1 * long_ * d1[0], -along1 * long_ * d1[1]), ((1 - along1) * long_ * d1[0], (1 - along1) * long_ * d1[1])
-    q, d = ((1 - along2) * short * d2[0], (1 - along2) * short * d2[1]), (-along2 * short * d2[0], -along2 * short * d2[1])
+    a, p = (-along1 * long_ * d1[0], -along1 * long_ * d1[1]), ((1 - along1) * long_ * d1[0],
+                                                                 (1 - along1) * long_ * d1[1])
+    q, d = ((1 - along2) * short * d2[0], (1 - along2) * short * d2[1]), (-along2 * short * d2[0],
+                                                                          -along2 * short * d2[1])
     tilt = math.radians(rng.choice((-1.0, 1.0)) * rng.uniform(15, 40))
     c, s = math.cos(tilt), math.sin(tilt)
     pts = [(x * c - y * s, x * s + y * c) for x, y in (a, p, q, d)]
