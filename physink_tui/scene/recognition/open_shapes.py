@@ -14,7 +14,15 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import angular_braces, bracket_marks, lines, open_marks, round_brackets, thin_braces
+from physink_tui.scene.recognition import (
+    angular_braces,
+    bracket_marks,
+    lines,
+    open_marks,
+    round_brackets,
+    round_cores,
+    thin_braces,
+)
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -170,6 +178,11 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
                 and round_brackets.rounded_bracket(work, lobes) is None):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
+        # a lead in from inside, or an end curled in past the start: the round core with a stroke inside it
+        core = round_cores.round_core(work, lambda e: e[4] < 0.6 * round_error(e, noise), NEARLY_ROUND * math.pi)
+        if core is not None and round_brackets.rounded_bracket(work, lobes) is None:
+            geom, kind = round_geometry(core)
+            return Recognition(kind, 0.65, geom, (("curve", 0.5),))
     roundness = sf.corner_roundness(work, corners, th=th)
     sharp = (_roundest_corner(th, corners, roundness) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
              or _short_bend(work, corners, roundness, lobes))
