@@ -18,6 +18,7 @@ from physink_tui.scene.recognition import (
     angular_braces,
     bracket_marks,
     lines,
+    lopsided_braces,
     open_marks,
     round_brackets,
     round_cores,
@@ -191,6 +192,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             and not bracket_marks.looped_point(th, corners, lobes)
             and not bracket_marks.brace_point(work, corners, lobes)
             and not angular_braces.angular_brace(work, lobes, noise)
+            and not lopsided_braces.lopsided_brace(work, lobes, noise)
             and (all(straight_runs) or _bent_polyline(th, corners, lobes, bows)
                  or _tick_into_bend(work, corners, straight_runs, roundness, lobes))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
