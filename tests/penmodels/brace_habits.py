@@ -1,7 +1,8 @@
 """Curly braces as different hands draw them (issue 25: right braces of people the project never saw): flattened,
-lopsided, askew, hooked, two arcs meeting at a cusp, tall and thin, a wide chevron with rounded ends, straight runs;
-each built as a left brace drawn from its top and then turned round and drawn from either end, seeded; no motion, no
-noise (the pens draw them: `penmodels.hurried`, the virtual pen)."""
+lopsided, askew, hooked, two arcs meeting at a cusp, tall and thin, a wide chevron with rounded ends, straight runs,
+lopsided with a bracket's square end and a straight short half; each built as a left brace drawn from its top and
+then turned round and drawn from either end, seeded; no motion, no noise (the pens draw them: `penmodels.hurried`,
+the virtual pen)."""
 
 from __future__ import annotations
 

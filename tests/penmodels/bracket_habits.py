@@ -1,7 +1,7 @@
 """Square brackets as people we have not seen draw them (issue 25: held-back people read brackets ~10 % wrong): ends
 the pen flicks into a hook, corners a mouse rounds over most of an arm, a spine the hand bows, short or unequal arms,
-arms drawn askew, arms so long and leaning in that the bracket nearly closes, small brackets; in canvas pixels,
-seeded; no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen;
+arms drawn askew, arms so long and leaning in that the bracket nearly closes, small brackets, one arm swept into the
+spine; in canvas pixels, seeded; no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen;
 `benchmarks/bench_bracket_habits.py`)."""
 
 from __future__ import annotations
@@ -185,8 +185,8 @@ def small_bracket(seed: int) -> Mark:
 def swept_arm_bracket(seed: int) -> Mark:
     """A bracket with one corner sharp and the other swept: that arm drawn as one curve from its end into the spine
     (a quadratic through the corner, reaching 1-2 times the arm down the spine), no straight piece left of it, as a
-    mouse or a hurried hand swings the first or the last arm in (`_placed` draws either first) (pixelfac/user01's left bracket 3); arms 0.25-0.5 of
-    the spine, the sharp corner's arm straight, the spine bowed up to 3 % either way."""
+    mouse or a hurried hand swings the first or the last arm in (`_placed` draws either first; pixelfac/user01's left
+    bracket 3); arms 0.25-0.5 of the spine, the sharp corner's arm straight, the spine bowed up to 3 % either way."""
     rng = random.Random(f"swept-arm-bracket:{seed}")
     h, a1, a2 = _frame(rng, (0.25, 0.5))
     e0, c1, c2, e3 = _verts(h, a1, a2)

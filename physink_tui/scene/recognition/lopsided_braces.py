@@ -31,6 +31,9 @@ SHORT_STRAIGHT = 0.12
 SPINE = (0.2, 0.8)
 """The long half's spine is the piece this far along it from its end towards the point (shares of the half's path),
 past the end arm and short of the bend out to the point."""
+SPINE_OFF = angular_braces.ARM_OFF / 2
+"""The spine stays off the line joining the ends all along, by at least this share of it (half what it stands off
+at its median, `angular_braces.ARM_OFF`): a zig-zag's spine comes back to the line between its teeth."""
 END_OFF = 0.08
 """The long half's end stands off the spine's line by at least this share of the line joining the ends (its end arm;
 as `angular_braces.ARM_OFF`)."""
@@ -97,8 +100,10 @@ def laid_out(work: np.ndarray) -> bool:
     if not SHORT_SLANT_DEG[0] <= slant <= SHORT_SLANT_DEG[1]:
         return False
     rel = spine - work[0]
-    stand = float(np.median(sign * (rel[:, 0] * unit[1] - rel[:, 1] * unit[0])))
-    if stand < angular_braces.ARM_OFF * chord or abs(depth) < angular_braces.PAST_ARMS * stand:
+    off_line = sign * (rel[:, 0] * unit[1] - rel[:, 1] * unit[0])
+    stand = float(np.median(off_line))
+    if (stand < angular_braces.ARM_OFF * chord or float(off_line.min()) < SPINE_OFF * chord
+            or abs(depth) < angular_braces.PAST_ARMS * stand):
         return False
     # against the spine's own line: the long half's end is carried off it by its end arm (a check's long arm runs on
     # straight to its end), and the point stands out past it (a bracket's spine runs straight into its corner)

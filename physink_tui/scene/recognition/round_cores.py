@@ -12,6 +12,7 @@ or a 6's tail runs out of its loop, an arc's or a question mark's does not turn 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -39,7 +40,7 @@ def _radial(pts: np.ndarray, ellipse: EllipseFit) -> np.ndarray:
     return np.hypot(u, v)
 
 
-def round_core(work: np.ndarray, fits: object, min_turn: float) -> EllipseFit | None:
+def round_core(work: np.ndarray, fits: Callable[[EllipseFit], bool], min_turn: float) -> EllipseFit | None:
     """The ellipse of ``work``'s round core, or None: ``work`` (an open stroke, equally spaced points) less a lead or
     curl at its ends that lies inside that ellipse (`INSIDE`), at most `MOST_CUT` of the path, the core still turning
     by ``min_turn`` radians or more; ``fits`` (an ellipse fit -> bool) says whether an ellipse fits the core."""
