@@ -27,9 +27,14 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_open_marks import HELD_SEEDS
 from bench_round_habits import EXPECTED, PENS, drawn, reading
 
-HELD_FLOORS: dict[str, dict[str, int]] = {}
+HELD_FLOORS = {
+    "lead-in-circle": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60, "hurried-fast": 58},
+    "curled-in-circle": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60, "hurried-fast": 60},
+    "both-ends-in": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60, "hurried-fast": 58},
+}
 """family -> pen -> of the 60 readings on the held seeds (30 circles, with and without times), how many are circles
-or ellipses, measured on this branch (main 007872c's figures in docs/BENCHMARKS.md)."""
+or ellipses, measured on this branch; main 007872c read 36, 32, 32, 38, 34 (lead-in), 54, 50, 50, 50, 52 (curled in)
+and 46, 44, 44, 48, 44 (both), the rest curves and an arc."""
 
 
 @pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])
