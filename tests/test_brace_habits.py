@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from penmodels.brace_habits import FAMILIES, WAYS
-from test_open_marks import CACHE, _stroke, cached_rows
+from test_open_marks import CACHE
 
 from physink_tui.scene.recognition import lopsided_braces
 from physink_tui.scene.recognition import stroke_geometry as sg
@@ -101,16 +101,6 @@ all 30 held seeds, with and without times, main 007872c read 2, 104, 100 and 102
 def test_a_lopsided_brace_with_a_straight_short_half_is_a_curve(pen: str) -> None:
     read = [_read("plain-short-half", way, pen, seed) for seed in HELD[:15] for way in WAYS]
     assert sum(k == "curve" for k in read) >= PLAIN_SHORT_HALF_FLOORS[pen], read
-
-
-def test_a_persons_lopsided_brace_with_a_straight_short_half_is_a_curve() -> None:
-    """pixelfac/user01's right brace 10: a bracket's square top end and spine, a round point low down, a straight
-    slant back to the bottom end (main 007872c: a polyline)."""
-    row = cached_rows("public-sets/hcira.jsonl").get(
-        "pixelfac/hcira-project-23@80d4cc7:src/dataset/user01/right curly brace10.xml")
-    assert row is not None
-    points, times = _stroke(row)
-    assert recognize_stroke(points, times).kind == "curve"
 
 
 def _unit_path(*corners: tuple[float, float]) -> np.ndarray:
