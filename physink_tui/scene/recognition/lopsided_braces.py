@@ -120,7 +120,29 @@ def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     """Whether the rules read a curve from a stroke (``unit``: its points at unit size, ``noise`` the pen's in those
     units) laid out as a lopsided brace (`laid_out`, judged as `angular_braces.kept_brace` judges its own): not asked of
     the learned ranker (`recognize`), which sees its square corner and straight runs as a polyline's."""
-    if found.kind != "curve":
+    if found.kind != "curve" or not _roughly_lopsided(unit):
         return False
     work = sg.hooks_cut(unit, angular_braces.JUDGED_POINTS)
     return laid_out(work) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more
+
+
+def _roughly_lopsided(pts: np.ndarray) -> bool:
+    """A cheap first look at the points as given (unevenly spaced, hooks and all), before they are resampled: the
+    farthest from the line joining the ends leaves a short half of at most twice `SHORT_HALF`'s upper share of the
+    path, at least half its lower, and nothing strays across that line by more than twice `angular_braces.ONE_SIDE`
+    (a hook where the pen landed may)."""
+    if len(pts) < 3:
+        return False
+    chord = float(np.hypot(*(pts[-1] - pts[0])))
+    if chord == 0.0:
+        return False
+    unit = (pts[-1] - pts[0]) / chord
+    rel = pts - pts[0]
+    across = rel[:, 0] * unit[1] - rel[:, 1] * unit[0]
+    k = int(np.argmax(np.abs(across)))
+    if float(np.max(-math.copysign(1.0, float(across[k])) * across)) > 2 * angular_braces.ONE_SIDE * chord:
+        return False
+    steps = np.hypot(*np.diff(pts, axis=0).T)
+    length = float(steps.sum())
+    short = min(float(steps[:k].sum()), length - float(steps[:k].sum()))
+    return SHORT_HALF[0] / 2 * length <= short <= min(0.5, 2 * SHORT_HALF[1]) * length

@@ -180,7 +180,8 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
         # a lead in from inside, or an end curled in past the start: the round core with a stroke inside it
-        core = round_cores.round_core(work, lambda e: e[4] < 0.6 * round_error(e, noise), NEARLY_ROUND * math.pi)
+        core = round_cores.round_core(work, lambda e: e[4] < 0.6 * round_error(e, noise), NEARLY_ROUND * math.pi,
+                                      open_ellipse)
         if core is not None and round_brackets.rounded_bracket(work, lobes) is None:
             geom, kind = round_geometry(core)
             return Recognition(kind, 0.65, geom, (("curve", 0.5),))

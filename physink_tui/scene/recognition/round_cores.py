@@ -40,10 +40,12 @@ def _radial(pts: np.ndarray, ellipse: EllipseFit) -> np.ndarray:
     return np.hypot(u, v)
 
 
-def round_core(work: np.ndarray, fits: Callable[[EllipseFit], bool], min_turn: float) -> EllipseFit | None:
+def round_core(work: np.ndarray, fits: Callable[[EllipseFit], bool], min_turn: float,
+               whole: EllipseFit | None = None) -> EllipseFit | None:
     """The ellipse of ``work``'s round core, or None: ``work`` (an open stroke, equally spaced points) less a lead or
     curl at its ends that lies inside that ellipse (`INSIDE`), at most `MOST_CUT` of the path, the core still turning
-    by ``min_turn`` radians or more; ``fits`` (an ellipse fit -> bool) says whether an ellipse fits the core."""
+    by ``min_turn`` radians or more; ``fits`` (an ellipse fit -> bool) says whether an ellipse fits the core;
+    ``whole``: the ellipse already fitted to all of ``work``, where the caller has it."""
     n = len(work)
     step = max(1, round(STEP * (n - 1)))
     most = int(MOST_CUT * (n - 1))
@@ -52,7 +54,7 @@ def round_core(work: np.ndarray, fits: Callable[[EllipseFit], bool], min_turn: f
         core = work[lo:hi]
         if len(core) < MIN_POINTS:
             return None
-        ellipse = fit_ellipse(core)
+        ellipse = whole if whole is not None and lo == 0 and hi == n else fit_ellipse(core)
         if ellipse is None or not (ellipse[1] > 0 and ellipse[2] > 0):
             return None
         if fits(ellipse):
@@ -64,10 +66,14 @@ def round_core(work: np.ndarray, fits: Callable[[EllipseFit], bool], min_turn: f
             return ellipse
         if lo + (n - hi) + step > most:
             return None
-        # cut the end lying farther inside the round fitted so far (a lead's or a curl's points lie inside it)
-        head = float(_radial(core[:step], ellipse).mean())
-        tail = float(_radial(core[-step:], ellipse).mean())
-        if head <= tail:
+        # cut the end lying farther inside the round fitted so far (a lead's or a curl's points lie inside it); one
+        # reaching out of it (a pigtail's tail) ends the search at once: what is cut must lie inside
+        head = _radial(core[:step], ellipse)
+        tail = _radial(core[-step:], ellipse)
+        cut_head = float(head.mean()) <= float(tail.mean())
+        if float((head if cut_head else tail).max()) > INSIDE:
+            return None
+        if cut_head:
             lo += step
         else:
             hi -= step
