@@ -25,7 +25,7 @@ from physink_tui.scene.recognition.primitives import Polyline, Recognition
 
 POINTS = 64
 """The stroke is judged resampled to this many points, lightly smoothed (`stroke_geometry.smooth`)."""
-HALF_TURN = (145.0, 215.0)
+HALF_TURN = (120.0, 215.0)
 """A bracket's heading turns by half a turn from its first arm to its last (degrees; as `bracket_marks.HALF_TURN_SLACK`:
 a hand slants its arms)."""
 FLAT_DEG = 30.0
@@ -186,12 +186,16 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
         return None
     if sg.chord_deviation(pts[a:b + 1]) >= FLAT_DEG / 180.0:
         return None
+    spine = pts[a:b + 1]
+    cut = len(spine) // 5
+    if sg.sharpest_turn(spine[cut:len(spine) - cut], sg.POINT_SPAN * sg.path_length(pts)) >= sg.POINT_TURN_DEG:
+        return None
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     margin = MARGIN * sg.bbox_diagonal(pts)
-    spine = _side(pts, drawn, a, b)
+    spine_line = _side(pts, drawn, a, b)
     corners = []
     for (lo_seg, hi_seg), bend_mid in (((0, first), (first + a) // 2), ((n - last, n), (b + n - last) // 2)):
-        at = _meet(*_side(pts, drawn, lo_seg, hi_seg), *spine)
+        at = _meet(*_side(pts, drawn, lo_seg, hi_seg), *spine_line)
         if at is None or (at < lo - margin).any() or (at > hi + margin).any():
             at = pts[bend_mid]
         corners.append(at)
