@@ -26,8 +26,11 @@ from physink_tui.scene.recognition.primitives import Polyline, Recognition
 POINTS = 64
 """The stroke is judged resampled to this many points, lightly smoothed (`stroke_geometry.smooth`)."""
 HALF_TURN = (120.0, 215.0)
-"""A bracket's heading turns by half a turn from its first arm to its last (degrees; as `bracket_marks.HALF_TURN_SLACK`:
-a hand slants its arms)."""
+"""A bracket's heading turns by about half a turn from its first arm to its last (degrees; up to
+`bracket_marks.HALF_TURN_SLACK` more: a hand slants its arms; less by up to 60: a wrist swinging a mouse splays them
+out, 8-20 degrees each, so such a bracket turns 140-164 degrees, measured on the smoothed stroke 120-145: session 22's
+`tests/penmodels/mouse_habits` splayed brackets; an arc or a parenthesis that turns as far has no straight spine and
+arms, a brace's spine has a point)."""
 FLAT_DEG = 30.0
 """A straight run's headings all lie within this many degrees of each other (a side's wobble; an arc of 30 degrees)."""
 SPINE_SHARE = 0.3
@@ -159,7 +162,9 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
     its `stroke_features.lobes` (a bracket turns one way: one lobe, and one more for each hook cut at an end, which
     may turn the other way; between its hooks it turns one way, `TURN_BACK_DEG`). The spine is the longest straight run
     (`SPINE_SHARE`); an arm is the straight run at each end (`ARM_FLAT`, `ARM_SHARE`); each bend between them turns
-    about a right angle (`BEND_DEG`), both the same way, half a turn in all (`HALF_TURN`)."""
+    about a right angle (`BEND_DEG`), both the same way, about half a turn in all (`HALF_TURN`); the spine's middle
+    three fifths have no point (`stroke_geometry.POINT_TURN_DEG` within `stroke_geometry.POINT_SPAN`: a brace's tip,
+    small, between arms drawn straight)."""
     if not 1 <= len(lobes) <= 3 or len(work) < 8:
         return None
     found = _half_turn(work)
