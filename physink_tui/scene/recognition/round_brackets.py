@@ -137,8 +137,8 @@ def _hook(heading: list[float]) -> int:
 def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, int] | None:
     """The stroke resampled (`POINTS`) and smoothed, without a hook at either end (`_hook`), each segment's heading as
     drawn (radians) and from the first, turned the way the stroke turns (degrees), and how many ends had a hook cut,
-    when its heading turns by about half a turn (`SPLAYED_TURN` to `HALF_TURN`) from its first arm to its last and never back
-    (`TURN_BACK_DEG`); else None."""
+    when its heading turns by about half a turn (`SPLAYED_TURN` to `HALF_TURN`) from its first arm to its last and
+    never back (`TURN_BACK_DEG`); else None."""
     pts = sg.smooth(sg.resample(work, POINTS))
     d = np.diff(pts, axis=0)
     drawn = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
