@@ -139,7 +139,10 @@ def test_an_x_whose_diagonals_cross_near_an_end_reads_as_an_x(pen: str) -> None:
     "closed_loops.polygon_left_open asks stroke_features.heading_home whether the first side or the last heads home, "
     "not the same of each: an x whose diagonals cross near its end, its first tail left long, passes as a triangle "
     "'drawn past its start, back from it'; drawn from the other end it does not. Asking it both ways, or asking the "
-    "last side to run along the first, cost two or three design polygons left open (session 21)"))
+    "last side to run along the first, cost two or three design polygons left open (session 21); session 22 measured "
+    "both symmetric forms: 'past the start' asked of the first side and the last alike loses hcira jonathanzhang53/s06 "
+    "triangle5 and klarubbio/s01 star09 as drawn (and a fourth-group star), of either loses sinarest1608/Subject3 "
+    "delete_mark10 and 4 of 300 offset-x tuning readings"))
 def test_an_x_whose_diagonals_cross_near_an_end_reads_the_same_drawn_the_other_way() -> None:
     changed = [seed for seed in HELD_SEEDS
                for stroke in [drawn("offset-x", "hurried", seed, x_habits.FAMILIES)]
