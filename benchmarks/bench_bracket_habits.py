@@ -4,7 +4,7 @@ by the pen models, read as people's labels say (a bracket is a polyline); and wh
 mirrored (a left bracket made a right one) or drawn the other way.
 
 Usage: .venv/bin/python benchmarks/bench_bracket_habits.py [--seeds tune|held|all] [--rules] [--family NAME]
-       [--symmetry] [--marks brackets|x]
+       [--symmetry] [--marks brackets|x|pigtail]
 
 Issue 25: the held-back HCIRA people read left and right square brackets 90 % and 89 % where the design HCIRA people
 read 98-99 %. The marks (`tests/penmodels/bracket_habits`) are drawn by the pens of `bench_open_marks` (the careful
@@ -12,7 +12,9 @@ virtual pen, the hurried hand, the hurried hand through a coarse device and thro
 through a fast device (`bench_device_stress.fast`: 8-25 events over the stroke), each read with its times and without.
 With ``--symmetry`` each stroke is also read mirrored left to right and reversed (its points and times), and the
 readings that differ from the stroke's own are counted. ``--marks x`` reads one-stroke x's instead
-(`tests/penmodels/x_habits`: diagonals crossing off their middles). Seeds 0-29 (`TUNING_SEEDS`) were looked at while
+(`tests/penmodels/x_habits`: diagonals crossing off their middles, a loop or a round bend at a turn, long tails, a
+hooked second diagonal, unequal arms tilted), ``--marks pigtail`` pigtails (`tests/penmodels/pigtail_habits`: a
+big round loop, a narrow loop, long tails). Seeds 0-29 (`TUNING_SEEDS`) were looked at while
 designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
 """
 
@@ -29,21 +31,24 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 import bench_open_marks
 from bench_device_stress import fast
 from bench_open_marks import HELD_SEEDS, TUNING_SEEDS, Drawn
-from penmodels import x_habits
+from penmodels import pigtail_habits, x_habits
 from penmodels.bracket_habits import EXPECTED, FAMILIES
 from penmodels.open_marks import Mark
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
-MARKS = {"brackets": (FAMILIES, EXPECTED), "x": (x_habits.FAMILIES, x_habits.EXPECTED)}
+MARKS = {"brackets": (FAMILIES, EXPECTED), "x": (x_habits.FAMILIES, x_habits.EXPECTED),
+         "pigtail": (pigtail_habits.FAMILIES, pigtail_habits.EXPECTED)}
 """The families each ``--marks`` reads, and the kinds they are read as."""
 PENS: dict[str, Callable[[Mark, int], Drawn]] = {
     **bench_open_marks.PENS, "hurried-fast": bench_open_marks._through(fast)}
 
 
-def drawn(family: str, pen: str, seed: int, families: Mapping[str, Callable[[int], Mark]] = FAMILIES) -> Drawn:
-    """The ``family``'s mark of ``seed`` as ``pen`` draws it: ``(x, y, t)`` canvas pixels, seconds."""
-    return PENS[pen](families[family](seed), seed)
+def drawn(family: str, pen: str, seed: int, families: Mapping[str, Callable[[int], Mark]] = FAMILIES,
+          pens: Mapping[str, Callable[[Mark, int], Drawn]] = PENS) -> Drawn:
+    """The ``family``'s mark of ``seed`` as ``pen`` (one of ``pens``) draws it: ``(x, y, t)`` canvas pixels,
+    seconds."""
+    return pens[pen](families[family](seed), seed)
 
 
 def reading(stroke: Drawn, timed: bool, learned: bool = True) -> str | None:
@@ -70,12 +75,14 @@ def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True,
 
 
 def main(families: Mapping[str, Callable[[int], Mark]] = FAMILIES, expected: Mapping[str, str] = EXPECTED,
-         doc: str = __doc__ or "") -> None:
-    """The table of ``families`` read by every pen (`PENS`) against the kinds ``expected``."""
+         doc: str = __doc__ or "", pens: Mapping[str, Callable[[Mark, int], Drawn]] = PENS) -> None:
+    """The table of ``families`` read by every one of ``pens`` (`PENS` unless given) against the kinds
+    ``expected``."""
     ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("--seeds", choices=("tune", "held", "all"), default="tune")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
-    ap.add_argument("--marks", choices=tuple(MARKS), default="brackets", help="square brackets (the default) or x's")
+    ap.add_argument("--marks", choices=tuple(MARKS), default="brackets",
+                    help="square brackets (the default), x's or pigtails")
     ap.add_argument("--family", action="append", help="only these families")
     ap.add_argument("--symmetry", action="store_true", help="also count readings changed by mirroring or reversing")
     args = ap.parse_args()
@@ -89,11 +96,11 @@ def main(families: Mapping[str, Callable[[int], Mark]] = FAMILIES, expected: Map
     for name, seeds in groups[args.seeds]:
         total: Counter[str] = Counter()
         for family in args.family or families:
-            for pen in PENS:
+            for pen in pens:
                 got: list[str | None] = []
                 flips: Counter[str] = Counter()
                 for seed in seeds:
-                    stroke = drawn(family, pen, seed, families)
+                    stroke = drawn(family, pen, seed, families, pens)
                     for timed in (True, False):
                         kind = reading(stroke, timed, not args.rules)
                         got.append(kind)

@@ -108,7 +108,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
    A square bracket with both corners rounded off (a long straight spine, a straight arm at each end, each joined to
-   it by a bend of about a right angle, half a turn in all, judged without a hook where the pen landed or lifted) is
+   it by a bend of about a right angle, 120-215 degrees in all (a mouse's wrist splays the arms), the spine with no
+   brace's point in its middle, judged without a hook where the pen landed or lifted) is
    a polyline with its corners where its sides meet (`round_brackets`), not an ellipse left open; a brace drawn as
    straight runs between cusps (running along its ends' line on one side of it, its arms parallel to it and off it,
    its point about halfway sticking out past them) is not a polyline (`angular_braces`), nor is a lopsided brace

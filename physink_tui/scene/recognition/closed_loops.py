@@ -143,8 +143,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     coarse = sg.coarse_turning(work, sigma)
     limit = max(CLOSED_GAP * diag, 4 * sigma)
     if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
-        loop = sf.one_loop(work, th)  # round and round one way: once round is the shape, if it is round
-        back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit  # it came back to its start (a pigtail does not)
+        loop, back = _once_round(work, th, limit)  # round and round one way: once round is the shape, if round
         ellipse = fit_ellipse(loop) if back else None  # fitted only where it may be kept
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop, ellipse
@@ -164,6 +163,44 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         # a loop on a long shaft or between long tails: an arrow's closed head, an x drawn round
         return False, work, None
     return True, loop, None
+
+
+def _once_round(work: np.ndarray, th: np.ndarray, limit: float) -> tuple[np.ndarray, bool]:
+    """The stroke once round (`stroke_features.one_loop`, from its start, or from its end where only that comes back)
+    and whether it came back within ``limit`` of where it began: from both ends where the stroke crosses itself (a
+    pigtail's tails cross, and one of them may be short enough to come back), from either end where it does not (a
+    circle drawn on past its start and out: once round from its end the overshoot is a lead-in that does not). Asked
+    of both ends alike, so that a stroke reads the same drawn either way; but a stroke whose ends meet is judged from
+    its start alone, as before (once round from one end may stop short where a hook's turn adds to the count)."""
+    loop = sf.one_loop(work, th)
+    back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit
+    if float(np.hypot(*(work[-1] - work[0]))) <= limit:
+        return loop, back
+    other = sf.one_loop(work[::-1], -th[::-1])
+    back_other = float(np.hypot(*(other[-1] - other[0]))) <= limit
+    if back == back_other:
+        return loop, back
+    if crosses_itself(work):
+        return loop, False
+    return (loop, True) if back else (other[::-1], True)
+
+
+CROSSING_POINTS = 48
+"""`crosses_itself` judges a path on this many points (a pigtail's crossing is between long runs; a hook's wiggle at an
+end is no crossing)."""
+
+
+def crosses_itself(work: np.ndarray) -> bool:
+    """Whether an open path crosses itself (judged on `CROSSING_POINTS` points along it)."""
+    a = sg.resample(work, CROSSING_POINTS)
+    i, j = np.triu_indices(len(a) - 1, 2)
+    p, r, q, s = a[i], a[i + 1] - a[i], a[j], a[j + 1] - a[j]
+    den = r[:, 0] * s[:, 1] - r[:, 1] * s[:, 0]
+    qp = q - p
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (qp[:, 0] * s[:, 1] - qp[:, 1] * s[:, 0]) / den
+        u = (qp[:, 0] * r[:, 1] - qp[:, 1] * r[:, 0]) / den
+    return bool(np.any((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1)))
 
 
 CLOSED_GAP = 0.2
