@@ -44,9 +44,11 @@ PENS: dict[str, Callable[[Mark, int], Drawn]] = {
     **bench_open_marks.PENS, "hurried-fast": bench_open_marks._through(fast)}
 
 
-def drawn(family: str, pen: str, seed: int, families: Mapping[str, Callable[[int], Mark]] = FAMILIES) -> Drawn:
-    """The ``family``'s mark of ``seed`` as ``pen`` draws it: ``(x, y, t)`` canvas pixels, seconds."""
-    return PENS[pen](families[family](seed), seed)
+def drawn(family: str, pen: str, seed: int, families: Mapping[str, Callable[[int], Mark]] = FAMILIES,
+          pens: Mapping[str, Callable[[Mark, int], Drawn]] = PENS) -> Drawn:
+    """The ``family``'s mark of ``seed`` as ``pen`` (one of ``pens``) draws it: ``(x, y, t)`` canvas pixels,
+    seconds."""
+    return pens[pen](families[family](seed), seed)
 
 
 def reading(stroke: Drawn, timed: bool, learned: bool = True) -> str | None:
@@ -73,8 +75,9 @@ def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True,
 
 
 def main(families: Mapping[str, Callable[[int], Mark]] = FAMILIES, expected: Mapping[str, str] = EXPECTED,
-         doc: str = __doc__ or "") -> None:
-    """The table of ``families`` read by every pen (`PENS`) against the kinds ``expected``."""
+         doc: str = __doc__ or "", pens: Mapping[str, Callable[[Mark, int], Drawn]] = PENS) -> None:
+    """The table of ``families`` read by every one of ``pens`` (`PENS` unless given) against the kinds
+    ``expected``."""
     ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("--seeds", choices=("tune", "held", "all"), default="tune")
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
@@ -93,11 +96,11 @@ def main(families: Mapping[str, Callable[[int], Mark]] = FAMILIES, expected: Map
     for name, seeds in groups[args.seeds]:
         total: Counter[str] = Counter()
         for family in args.family or families:
-            for pen in PENS:
+            for pen in pens:
                 got: list[str | None] = []
                 flips: Counter[str] = Counter()
                 for seed in seeds:
-                    stroke = drawn(family, pen, seed, families)
+                    stroke = drawn(family, pen, seed, families, pens)
                     for timed in (True, False):
                         kind = reading(stroke, timed, not args.rules)
                         got.append(kind)

@@ -9,14 +9,18 @@ rule was designed. People's strokes are read from the caches `benchmarks/public_
 
 from __future__ import annotations
 
+import itertools
 import json
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 from penmodels.brace_habits import FAMILIES, WAYS
 from test_open_marks import CACHE
 
+from physink_tui.scene.recognition import lopsided_braces
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
@@ -84,3 +88,38 @@ def test_a_line_with_a_kink_or_hooks_is_still_a_line() -> None:
     hooks = ([(96.0 + 2 * k, 480.0 + 4 * k) for k in range(5)] + [(108.0 + 4 * k, 500.0) for k in range(100)]
              + [(508.0 + 2 * k, 500.0 - 4 * k) for k in range(1, 5)])
     assert recognize_stroke(hooks).kind == "line"
+
+
+PLAIN_SHORT_HALF_FLOORS = {"careful": 45, "hurried": 58, "hurried-mouse": 54, "hurried-fast": 56}
+"""Of the lopsided braces with a straight short half (`brace_habits.plain_short_half`) of the first 15 held seeds drawn
+four ways (60), how many each pen's read as curves: the held seeds' figures when `lopsided_braces` was written (on
+all 30 held seeds, with and without times, main 007872c read 2, 104, 100 and 102 of 240 as curves, this branch 210,
+232, 186 and 224: docs/BENCHMARKS.md, session 22)."""
+
+
+@pytest.mark.parametrize("pen", list(PLAIN_SHORT_HALF_FLOORS))
+def test_a_lopsided_brace_with_a_straight_short_half_is_a_curve(pen: str) -> None:
+    read = [_read("plain-short-half", way, pen, seed) for seed in HELD[:15] for way in WAYS]
+    assert sum(k == "curve" for k in read) >= PLAIN_SHORT_HALF_FLOORS[pen], read
+
+
+def _unit_path(*corners: tuple[float, float]) -> np.ndarray:
+    """Straight runs through ``corners``, on 128 points equally spaced (as `lopsided_braces` judges a stroke)."""
+    pts = np.concatenate([np.linspace(a, b, 40, endpoint=False) for a, b in itertools.pairwise(corners)]
+                         + [np.asarray(corners[-1:], dtype=float)])
+    return sg.resample(pts, 128)
+
+
+@pytest.mark.parametrize(("name", "corners"), [
+    ("check", ((0.0, 0.0), (0.25, 0.3), (1.0, -0.6))),
+    ("bracket with a long lower arm", ((0.3, 0.0), (0.0, 0.0), (0.0, 1.0), (0.55, 1.0))),
+    ("zig-zag of two teeth", ((0.0, 0.0), (0.2, 0.3), (0.45, 0.05), (0.7, 0.3), (0.9, 0.0))),
+])
+def test_a_check_a_bracket_or_a_zigzag_is_no_lopsided_brace(name: str, corners: tuple) -> None:
+    assert not lopsided_braces.laid_out(_unit_path(*corners)), name
+
+
+def test_a_lopsided_brace_drawn_as_straight_runs_is_laid_out_as_one() -> None:
+    """An end arm, a square corner, a long spine, a point standing past it, a straight slant back: either way."""
+    brace = _unit_path((0.3, 0.0), (0.0, 0.0), (0.0, 0.7), (-0.15, 0.85), (0.25, 1.2))
+    assert lopsided_braces.laid_out(brace) and lopsided_braces.laid_out(brace[::-1])

@@ -43,11 +43,10 @@ BELOW_FLOOR: dict[str, str] = {}
 them red; delete the entry then."""
 EVERY = 4
 """Interpretation tests take every 4th stroke of a label (23 of 90, all three people, all speeds)."""
-KNOWN_FAILING: dict[str, str] = {
-    "s02/fast/circle01.xml": "recognised as a curve, so it becomes a rope (since 08e5de4; a circle before)",
-}
-"""People's strokes that the interpretation tests below get wrong today (file -> what happens). They run as strict
-xfails: a fix turns them red; delete the entry then."""
+KNOWN_FAILING: dict[str, str] = {}
+"""People's strokes that the interpretation tests below get wrong today (file -> what happens). They are checked
+to still fail (`test_known_failing_people_strokes_still_fail`): a fix turns it red; delete the entry then (s02's
+fast circle 01, a curve and so a rope since 08e5de4, is a circle again by `recognition.round_cores`: session 22)."""
 
 
 def people_rows() -> list[dict]:
@@ -191,13 +190,16 @@ def test_a_persons_shape_becomes_one_body_of_its_kind(label: str) -> None:
     assert not any(failures), [f for f in failures if f]
 
 
-@pytest.mark.parametrize("file", sorted(KNOWN_FAILING))
-def test_known_failing_people_strokes(file: str, request) -> None:
-    request.applymarker(pytest.mark.xfail(strict=True, reason=KNOWN_FAILING[file]))
-    label = next(r["label"] for r in people_rows() if r["file"] == file)
-    ((i, row),) = [(i, row) for i, row in sample(label) if row["file"] == file]
-    failure = body_failure(label, i, row)
-    assert failure is None, failure
+def test_known_failing_people_strokes_still_fail() -> None:
+    """Each entry of `KNOWN_FAILING` is still got wrong (a strict xfail by hand: with no entry left there is nothing
+    to run, and pytest would report an empty parametrisation as a skip); a fixed one must be deleted."""
+    fixed = []
+    for file, reason in sorted(KNOWN_FAILING.items()):
+        label = next(r["label"] for r in people_rows() if r["file"] == file)
+        ((i, row),) = [(i, row) for i, row in sample(label) if row["file"] == file]
+        if body_failure(label, i, row) is None:
+            fixed.append(f"{file} ({reason})")
+    assert not fixed, f"read right now: delete from KNOWN_FAILING: {fixed}"
 
 
 def test_a_persons_small_circle_in_a_box_pins_it() -> None:

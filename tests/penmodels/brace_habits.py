@@ -1,7 +1,8 @@
 """Curly braces as different hands draw them (issue 25: right braces of people the project never saw): flattened,
-lopsided, askew, hooked, two arcs meeting at a cusp, tall and thin, a wide chevron with rounded ends, straight runs;
-each built as a left brace drawn from its top and then turned round and drawn from either end, seeded; no motion, no
-noise (the pens draw them: `penmodels.hurried`, the virtual pen)."""
+lopsided, askew, hooked, two arcs meeting at a cusp, tall and thin, a wide chevron with rounded ends, straight runs,
+lopsided with a bracket's square end and a straight short half; each built as a left brace drawn from its top and
+then turned round and drawn from either end, seeded; no motion, no noise (the pens draw them: `penmodels.hurried`,
+the virtual pen)."""
 
 from __future__ import annotations
 
@@ -185,7 +186,43 @@ def straight_runs(seed: int, way: str) -> Mark:
     return Mark("straight-runs", _placed(rng, angular_brace_corners(rng), way), False)
 
 
+def _run(a: Point, b: Point, step: float = 3.0) -> list[Point]:
+    """Points every ``step`` px or so from ``a`` (left out) to ``b`` along a straight run."""
+    n = max(2, int(math.dist(a, b) / step))
+    return [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(1, n + 1)]
+
+
+def _bend(a: Point, c: Point, b: Point, n: int = 10) -> list[Point]:
+    """A quadratic from ``a`` (left out) by ``c`` to ``b``: a rounded corner."""
+    return [((1 - u) ** 2 * a[0] + 2 * u * (1 - u) * c[0] + u * u * b[0],
+             (1 - u) ** 2 * a[1] + 2 * u * (1 - u) * c[1] + u * u * b[1]) for u in (k / n for k in range(1, n + 1))]
+
+
+def plain_short_half(seed: int, way: str) -> Mark:
+    """A lopsided brace whose short half runs straight from the point to its end, slanting back with no curl, and
+    whose long half turns onto its end arm at a square corner, as a bracket's (itt GixD42's and hcira
+    pixelfac/user01's right braces): the long half 1.6-2.4 times the short (40-90 px), its end arm 0.3-0.6 of the
+    short half, its spine bending out over its last 0.15-0.3 to a round point standing 0.2-0.45 of the short half
+    past it; the short half's end 0.6-1.2 of the arm out, on the arm's side. The long half on top or at the bottom."""
+    rng = random.Random(seed)
+    short = rng.uniform(40, 90)
+    long = short * rng.uniform(1.6, 2.4)
+    arm = rng.uniform(0.3, 0.6) * short
+    depth = rng.uniform(0.2, 0.45) * short
+    bend = rng.uniform(0.15, 0.3) * long
+    end = (rng.uniform(0.6, 1.2) * arm, short)
+    corner, spine_end, point = (0.0, -long), (0.0, -bend), (-depth, 0.0)
+    round_in = (point[0] + 0.25 * (spine_end[0] - point[0]), point[1] + 0.25 * (spine_end[1] - point[1]))
+    round_out = (point[0] + 0.2 * (end[0] - point[0]), point[1] + 0.2 * (end[1] - point[1]))
+    pts: list[Point] = [(arm, -long), *_run((arm, -long), corner), *_run(corner, spine_end)]
+    pts += _bend(spine_end, (0.0, -0.4 * bend), round_in) + _bend(round_in, point, round_out) + _run(round_out, end)
+    if rng.random() < 0.5:
+        pts = [(x, -y) for x, y in pts][::-1]  # the long half at the bottom, still drawn from the top
+    return Mark("plain-short-half", _placed(rng, pts, way), True)
+
+
 FAMILIES: dict[str, Callable[[int, str], Mark]] = {
     "classic": classic, "flat-point": flat_point, "lopsided": lopsided, "askew": askew, "hooked": hooked,
-    "cusp-arcs": cusp_arcs, "tall-thin": tall_thin, "wide-chevron": wide_chevron, "straight-runs": straight_runs}
+    "cusp-arcs": cusp_arcs, "tall-thin": tall_thin, "wide-chevron": wide_chevron, "straight-runs": straight_runs,
+    "plain-short-half": plain_short_half}
 """Every family; each is read as a curve (benchmarks/label_kinds.tsv: a curly brace is a curve)."""

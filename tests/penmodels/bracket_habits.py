@@ -1,7 +1,7 @@
 """Square brackets as people we have not seen draw them (issue 25: held-back people read brackets ~10 % wrong): ends
 the pen flicks into a hook, corners a mouse rounds over most of an arm, a spine the hand bows, short or unequal arms,
-arms drawn askew, arms so long and leaning in that the bracket nearly closes, small brackets; in canvas pixels,
-seeded; no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen;
+arms drawn askew, arms so long and leaning in that the bracket nearly closes, small brackets, one arm swept into the
+spine; in canvas pixels, seeded; no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen;
 `benchmarks/bench_bracket_habits.py`)."""
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from penmodels.open_marks import Mark, Point, _placed
 
 EXPECTED = {"hooked-bracket": "polyline", "mouse-rounded-bracket": "polyline", "bowed-spine-bracket": "polyline",
             "short-arm-bracket": "polyline", "askew-bracket": "polyline", "closing-bracket": "polyline",
-            "small-bracket": "polyline"}
+            "small-bracket": "polyline", "swept-arm-bracket": "polyline"}
 """The kind each family is read as (benchmarks/label_kinds.tsv: a square bracket is three straight sides, a
 polyline, however its corners are turned)."""
 
@@ -182,7 +182,24 @@ def small_bracket(seed: int) -> Mark:
     return Mark("small-bracket", _placed(rng, pts, rng.random() < 0.5), True)
 
 
+def swept_arm_bracket(seed: int) -> Mark:
+    """A bracket with one corner sharp and the other swept: that arm drawn as one curve from its end into the spine
+    (a quadratic through the corner, reaching 1-2 times the arm down the spine), no straight piece left of it, as a
+    mouse or a hurried hand swings the first or the last arm in (`_placed` draws either first; pixelfac/user01's left
+    bracket 3); arms 0.25-0.5 of the spine, the sharp corner's arm straight, the spine bowed up to 3 % either way."""
+    rng = random.Random(f"swept-arm-bracket:{seed}")
+    h, a1, a2 = _frame(rng, (0.25, 0.5))
+    e0, c1, c2, e3 = _verts(h, a1, a2)
+    reach = rng.uniform(1.0, 2.0) * a1
+    swept_end = _toward(c1, c2, reach)
+    pts: list[Point] = [e0, *_quad(e0, c1, swept_end, max(8, int((a1 + reach) / 4)))]
+    pts += _side(swept_end, c2, rng.uniform(-0.03, 0.03), max(4, int(math.dist(swept_end, c2) / 4)))
+    pts += _side(c2, e3, 0.0, max(4, int(a2 / 4)))
+    return Mark("swept-arm-bracket", _placed(rng, pts, rng.random() < 0.5), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "hooked-bracket": hooked_bracket, "mouse-rounded-bracket": mouse_rounded_bracket,
     "bowed-spine-bracket": bowed_spine_bracket, "short-arm-bracket": short_arm_bracket,
-    "askew-bracket": askew_bracket, "closing-bracket": closing_bracket, "small-bracket": small_bracket}
+    "askew-bracket": askew_bracket, "closing-bracket": closing_bracket, "small-bracket": small_bracket,
+    "swept-arm-bracket": swept_arm_bracket}

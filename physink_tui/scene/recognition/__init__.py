@@ -78,7 +78,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (`closed_loops.no_round_shape`); a stroke whose tails cross each other near its ends is closed however far apart
    its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
-   open (more than 225 degrees one way, fitting an ellipse), a polyline (straight sides, or bowed sides meeting at
+   open (more than 225 degrees one way, fitting an ellipse; or fitting one once a lead from inside or an end curled in
+   past the start, lying inside it, is cut: `round_cores`), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
    curve's, but three straight sides turning one way, a square bracket, may round theirs,
    `open_shapes._rounded_bracket`; with two or more corners, no main side bowed like a quarter circle,
@@ -110,14 +111,17 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
    A square bracket with both corners rounded off (a long straight spine, a straight arm at each end, each joined to
-   it by a bend of about a right angle, half a turn in all, judged without a hook where the pen landed or lifted) is
+   it by a bend of about a right angle, 120-215 degrees in all (a mouse's wrist splays the arms), the spine with no
+   brace's point in its middle, judged without a hook where the pen landed or lifted) is
    a polyline with its corners where its sides meet (`round_brackets`), not an ellipse left open; a brace drawn as
    straight runs between cusps (running along its ends' line on one side of it, its arms parallel to it and off it,
-   its point about halfway sticking out past them) is not a polyline (`angular_braces`); neither, so read, is asked
-   of the ranker below. A curve, arc or polyline so read whose one end is a straight short arm longer than a landing
-   hook reaches (`lines.HOOK_REACH`) but within the tenth of the path the rules cut as a hook, standing off a straight
-   long arm at a tick's angle, is a tick: a polyline through its start, point and end (`hooked_ticks`), not asked of
-   the ranker either.
+   its point about halfway sticking out past them) is not a polyline (`angular_braces`), nor is a lopsided brace
+   whose short half runs straight from its point back to its end (a bracket's square end and spine on the long half,
+   the spine off that line all along, the point past the spine's own line: `lopsided_braces`); none, so read, is
+   asked of the ranker below. A curve, arc or polyline so read whose one end is a straight short arm longer than a
+   landing hook reaches (`lines.HOOK_REACH`) but within the tenth of the path the rules cut as a hook, standing off a
+   straight long arm at a tick's angle, is a tick: a polyline through its start, point and end (`hooked_ticks`), not
+   asked of the ranker either.
 5. A polyline or a curve so read, or a polygon whose ends stay apart by the rules' closing gap (`ranker.OPEN_GAP`:
    a caret, a v or an arrow the rules closed), is re-ranked by a learned model (`ranker`, issue 25): a conditional
    logit over polyline, curve (and the polygon read) on the stroke's geometric features (and the rules' own tests),
@@ -168,6 +172,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   judged without the pen's hooks at its ends, the same whichever end it was drawn from
 - `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), or askew (laid out against its
   arms' own line), read as a brace (a curve)
+- `lopsided_braces.py`: a lopsided curly brace whose short half is a straight slant back from its point, its long
+  half a bracket's square end and spine, read as a brace (a curve)
+- `round_cores.py`: a circle drawn with a lead from inside it or an end curling in past its start, read by its round
+  core (the ends cut while they lie inside the core's ellipse)
 - `thin_braces.py`: a tall, thin curly brace (its point and curls within a line's stray) told from a line by its one
   sharp point between arms and its ends curling back behind them
 - `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the

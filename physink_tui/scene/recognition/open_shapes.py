@@ -14,7 +14,16 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import angular_braces, bracket_marks, lines, open_marks, round_brackets, thin_braces
+from physink_tui.scene.recognition import (
+    angular_braces,
+    bracket_marks,
+    lines,
+    lopsided_braces,
+    open_marks,
+    round_brackets,
+    round_cores,
+    thin_braces,
+)
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import arc_geometry, curve_geometry, round_geometry
@@ -170,6 +179,12 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
                 and round_brackets.rounded_bracket(work, lobes) is None):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
+        # a lead in from inside, or an end curled in past the start: the round core with a stroke inside it
+        core = round_cores.round_core(work, lambda e: e[4] < 0.6 * round_error(e, noise), NEARLY_ROUND * math.pi,
+                                      open_ellipse)
+        if core is not None and round_brackets.rounded_bracket(work, lobes) is None:
+            geom, kind = round_geometry(core)
+            return Recognition(kind, 0.65, geom, (("curve", 0.5),))
     roundness = sf.corner_roundness(work, corners, th=th)
     sharp = (_roundest_corner(th, corners, roundness) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
              or _short_bend(work, corners, roundness, lobes))
@@ -178,6 +193,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             and not bracket_marks.looped_point(th, corners, lobes)
             and not bracket_marks.brace_point(work, corners, lobes)
             and not angular_braces.angular_brace(work, lobes, noise)
+            and not lopsided_braces.lopsided_brace(work, lobes, noise)
             and (all(straight_runs) or _bent_polyline(th, corners, lobes, bows)
                  or _tick_into_bend(work, corners, straight_runs, roundness, lobes))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))

@@ -27,6 +27,7 @@ from physink_tui.scene.recognition import (
     closed_loops,
     hooked_ticks,
     landing,
+    lopsided_braces,
     open_shapes,
     pen_lifts,
     pen_noise,
@@ -217,11 +218,12 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     # a wave is not asked of the model (the people it was fitted on drew none), nor a chain of sharp corners (its
     # 64 points smooth small steps away), nor a tick whose short arm is a few percent of it (the model takes it for a
     # curve), nor a mark straight-armed as drawn, nor a square bracket whose corners were rounded off, nor a brace
-    # drawn as straight runs the rules read as a curve
+    # drawn as straight runs or lopsided with a straight short half the rules read as a curve
     if (not learned or wavy or chain is not None or tick is not None
             or open_shapes.straight_armed_mark(result, pts, noise)
             or round_brackets.kept_bracket(result, unit, unit_noise)
-            or angular_braces.kept_brace(result, unit, unit_noise)):
+            or angular_braces.kept_brace(result, unit, unit_noise)
+            or lopsided_braces.kept_brace(result, unit, unit_noise)):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds

@@ -28,6 +28,16 @@ POINTS = 64
 HALF_TURN = (145.0, 215.0)
 """A bracket's heading turns by half a turn from its first arm to its last (degrees; as `bracket_marks.HALF_TURN_SLACK`:
 a hand slants its arms)."""
+SPLAYED_TURN = 120.0
+"""...or by as little as this when a wrist swinging a mouse splays its arms out (8-20 degrees each: such a bracket turns
+140-164 degrees, measured on the smoothed stroke 120-145; session 22's `tests/penmodels/mouse_habits` splayed
+brackets), if its arms are long and its spine straight (`SPLAYED_ARM_SHARE`, `SPLAYED_SPINE_BOW`)..."""
+SPLAYED_ARM_SHARE = 0.1
+"""...each arm's straight run at least this share of the path (a brace's curls turning as little hold 5-9 % of it, a
+splayed bracket's arms 13 % and more: a curl is no arm)..."""
+SPLAYED_SPINE_BOW = 0.055
+"""...and the spine bowing less than this share of its chord (`stroke_geometry.chord_deviation`: a parenthesis whose end
+the pen flicked off straight bows 0.057-0.06 there, a splayed bracket's spine 0.02-0.05)."""
 FLAT_DEG = 30.0
 """A straight run's headings all lie within this many degrees of each other (a side's wobble; an arc of 30 degrees)."""
 SPINE_SHARE = 0.3
@@ -127,8 +137,8 @@ def _hook(heading: list[float]) -> int:
 def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, int] | None:
     """The stroke resampled (`POINTS`) and smoothed, without a hook at either end (`_hook`), each segment's heading as
     drawn (radians) and from the first, turned the way the stroke turns (degrees), and how many ends had a hook cut,
-    when its heading turns by half a turn (`HALF_TURN`) from its first arm to its last and never back
-    (`TURN_BACK_DEG`); else None."""
+    when its heading turns by about half a turn (`SPLAYED_TURN` to `HALF_TURN`) from its first arm to its last and
+    never back (`TURN_BACK_DEG`); else None."""
     pts = sg.smooth(sg.resample(work, POINTS))
     d = np.diff(pts, axis=0)
     drawn = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
@@ -136,7 +146,7 @@ def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, in
     # where a hook may end at each end bounds the turn between them: most strokes are no half turn whatever is cut
     first, last = degrees[:HOOK_SEGMENTS + 1], degrees[-HOOK_SEGMENTS - 1:]
     least, most = float(last.min() - first.max()), float(last.max() - first.min())
-    if not (most >= HALF_TURN[0] and least <= HALF_TURN[1]) and not (least <= -HALF_TURN[0] and most >= -HALF_TURN[1]):
+    if not (most >= SPLAYED_TURN and least <= HALF_TURN[1]) and not (least <= -SPLAYED_TURN and most >= -HALF_TURN[1]):
         return None
     listed = degrees.tolist()
     lead, tail = _hook(listed), _hook(listed[::-1])
@@ -144,7 +154,7 @@ def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, in
     pts, drawn = pts[lead:end + 1], drawn[lead:end]
     heading = np.degrees(drawn - drawn[0])
     turn = float(heading[-1])
-    if not HALF_TURN[0] <= abs(turn) <= HALF_TURN[1]:
+    if not SPLAYED_TURN <= abs(turn) <= HALF_TURN[1]:
         return None
     heading = heading * math.copysign(1.0, turn)
     if float(np.max(np.maximum.accumulate(heading) - heading)) > TURN_BACK_DEG:
@@ -159,7 +169,10 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
     its `stroke_features.lobes` (a bracket turns one way: one lobe, and one more for each hook cut at an end, which
     may turn the other way; between its hooks it turns one way, `TURN_BACK_DEG`). The spine is the longest straight run
     (`SPINE_SHARE`); an arm is the straight run at each end (`ARM_FLAT`, `ARM_SHARE`); each bend between them turns
-    about a right angle (`BEND_DEG`), both the same way, half a turn in all (`HALF_TURN`)."""
+    about a right angle (`BEND_DEG`), both the same way, half a turn in all (`HALF_TURN`; less, `SPLAYED_TURN`, for
+    long arms splayed off a straight spine); the spine's middle
+    three fifths have no point (`stroke_geometry.POINT_TURN_DEG` within `stroke_geometry.POINT_SPAN`: a brace's tip,
+    small, between arms drawn straight)."""
     if not 1 <= len(lobes) <= 3 or len(work) < 8:
         return None
     found = _half_turn(work)
@@ -186,12 +199,19 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
         return None
     if sg.chord_deviation(pts[a:b + 1]) >= FLAT_DEG / 180.0:
         return None
+    spine = pts[a:b + 1]
+    if heading[-1] < HALF_TURN[0] and (min(first, last) < SPLAYED_ARM_SHARE * n
+                                       or sg.chord_deviation(spine) >= SPLAYED_SPINE_BOW):
+        return None  # short of half a turn: only long arms splayed off a straight spine
+    cut = len(spine) // 5
+    if sg.sharpest_turn(spine[cut:len(spine) - cut], sg.POINT_SPAN * sg.path_length(pts)) >= sg.POINT_TURN_DEG:
+        return None
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     margin = MARGIN * sg.bbox_diagonal(pts)
-    spine = _side(pts, drawn, a, b)
+    spine_line = _side(pts, drawn, a, b)
     corners = []
     for (lo_seg, hi_seg), bend_mid in (((0, first), (first + a) // 2), ((n - last, n), (b + n - last) // 2)):
-        at = _meet(*_side(pts, drawn, lo_seg, hi_seg), *spine)
+        at = _meet(*_side(pts, drawn, lo_seg, hi_seg), *spine_line)
         if at is None or (at < lo - margin).any() or (at > hi + margin).any():
             at = pts[bend_mid]
         corners.append(at)
