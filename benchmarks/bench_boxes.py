@@ -24,15 +24,18 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np
-from bench_closed_shapes import careful, hurried, hurried_coarse
+from bench_closed_shapes import (
+    add_seed_arguments,
+    careful,
+    chosen_seeds,
+    hurried,
+    hurried_coarse,
+)
 from bench_device_stress import COMBINED
 from penmodels.box_habits import FAMILIES, drawn
 from penmodels.shapes import Shape
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
-
-TUNING_SEEDS = range(0, 30)
-HELD_BACK_SEEDS = range(1000, 1030)
 
 
 def hurried_mouse(s: Shape, seed: int) -> list[tuple[float, float, float]]:
@@ -81,20 +84,13 @@ def report(results: dict[tuple[str, str], list[str | None]], title: str) -> list
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--seeds", help="A:B, a range of seeds (default: the tuning range 0:30)")
-    parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
+    add_seed_arguments(parser)
     parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
     parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
     parser.add_argument("--misread", action="store_true", help="list every misread stroke")
     args = parser.parse_args()
     families = args.families.split(",") if args.families else list(FAMILIES)
-    if args.held_back:
-        seeds, name = HELD_BACK_SEEDS, "held-back seeds 1000-1029"
-    elif args.seeds:
-        a, b = map(int, args.seeds.split(":"))
-        seeds, name = range(a, b), f"seeds {a}-{b - 1}"
-    else:
-        seeds, name = TUNING_SEEDS, "tuning seeds 0-29"
+    seeds, name = chosen_seeds(args)
     results = run(families, seeds, learned=not args.rules)
     print("\n".join(report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}")))
     if args.misread:

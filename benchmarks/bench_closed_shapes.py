@@ -226,10 +226,26 @@ def report(results: dict[tuple[str, str, bool], list[tuple[str | None, float | N
     return lines
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def add_seed_arguments(parser: argparse.ArgumentParser) -> None:
+    """``--seeds A:B`` and ``--held-back``, the seeds a pen-model bench draws (`chosen_seeds`; `bench_boxes` and
+    `bench_rounded_boxes` ask the same)."""
     parser.add_argument("--seeds", help="A:B, a range of seeds (default: the tuning range 0:30)")
     parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
+
+
+def chosen_seeds(args: argparse.Namespace) -> tuple[range, str]:
+    """The seeds asked for (`add_seed_arguments`) and their name: the held-back seeds, a range, or the tuning seeds."""
+    if args.held_back:
+        return HELD_BACK_SEEDS, "held-back seeds 1000-1029"
+    if args.seeds:
+        a, b = map(int, args.seeds.split(":"))
+        return range(a, b), f"seeds {a}-{b - 1}"
+    return TUNING_SEEDS, "tuning seeds 0-29"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_seed_arguments(parser)
     parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
     parser.add_argument("--json", type=Path, help="write every reading here")
     parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
@@ -237,13 +253,7 @@ def main() -> None:
     if args.families:
         for name in set(ALL_FAMILIES) - set(args.families.split(",")):
             del ALL_FAMILIES[name]
-    if args.held_back:
-        seeds, name = HELD_BACK_SEEDS, "held-back seeds 1000-1029"
-    elif args.seeds:
-        a, b = map(int, args.seeds.split(":"))
-        seeds, name = range(a, b), f"seeds {a}-{b - 1}"
-    else:
-        seeds, name = TUNING_SEEDS, "tuning seeds 0-29"
+    seeds, name = chosen_seeds(args)
     results = run(seeds, learned=not args.rules)
     print("\n".join(report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}")))
     if args.json:

@@ -13,9 +13,7 @@ read with its times and without. Seeds 0-29 (`TUNING_SEEDS`) were looked at whil
 
 from __future__ import annotations
 
-import argparse
 import sys
-from collections import Counter
 from collections.abc import Callable
 from pathlib import Path
 
@@ -23,7 +21,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 import bench_open_marks
 from bench_device_stress import fast
-from bench_open_marks import HELD_SEEDS, TUNING_SEEDS, Drawn
+from bench_open_marks import Drawn
 from penmodels.open_marks import Mark
 from penmodels.round_habits import EXPECTED, FAMILIES
 
@@ -44,25 +42,8 @@ def reading(stroke: Drawn, timed: bool, learned: bool = True) -> str | None:
 
 
 def main() -> None:
-    ap = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
-    ap.add_argument("--seeds", choices=("tune", "held", "all"), default="tune")
-    ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
-    ap.add_argument("--family", choices=tuple(FAMILIES), action="append", help="only these families")
-    args = ap.parse_args()
-    groups = {"tune": [("tune 0-29", TUNING_SEEDS)], "held": [("held 1000-1029", HELD_SEEDS)]}
-    groups["all"] = groups["tune"] + groups["held"]
-    print("| seeds | family | pen | read as circles or ellipses | readings |\n|---|---|---|---:|---|")
-    for name, seeds in groups[args.seeds]:
-        total = Counter()
-        for family in args.family or FAMILIES:
-            for pen in PENS:
-                got = [reading(drawn(family, pen, s), timed, not args.rules) for s in seeds for timed in (True, False)]
-                right = sum(k in EXPECTED for k in got)
-                total["right"] += right
-                total["all"] += len(got)
-                kinds = ", ".join(f"{k} {c}" for k, c in Counter(got).most_common())
-                print(f"| {name} | {family} | {pen} | {right}/{len(got)} | {kinds} |", flush=True)
-        print(f"| {name} | all | all | {total['right']}/{total['all']} | |")
+    """The table of every family read by every pen (`bench_open_marks.main`), as a circle or an ellipse."""
+    bench_open_marks.main(FAMILIES, dict.fromkeys(FAMILIES, EXPECTED), __doc__ or "", PENS)
 
 
 if __name__ == "__main__":

@@ -24,12 +24,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_boxes import PENS
+from bench_closed_shapes import add_seed_arguments, chosen_seeds
 from penmodels.rounded_boxes import BOXES, FAMILIES, drawn
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
-TUNING_SEEDS = range(0, 30)
-HELD_BACK_SEEDS = range(1000, 1030)
 ROUND = ("circle", "ellipse")
 
 
@@ -76,19 +75,12 @@ def report(results: dict[tuple[str, str], list[str | None]], title: str) -> list
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--seeds", help="A:B, a range of seeds (default: the tuning range 0:30)")
-    parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
+    add_seed_arguments(parser)
     parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
     parser.add_argument("--misread", action="store_true", help="list every misread stroke")
     args = parser.parse_args()
     families = args.families.split(",") if args.families else list(FAMILIES)
-    if args.held_back:
-        seeds, name = HELD_BACK_SEEDS, "held-back seeds 1000-1029"
-    elif args.seeds:
-        a, b = map(int, args.seeds.split(":"))
-        seeds, name = range(a, b), f"seeds {a}-{b - 1}"
-    else:
-        seeds, name = TUNING_SEEDS, "tuning seeds 0-29"
+    seeds, name = chosen_seeds(args)
     results = run(families, seeds)
     print("\n".join(report(results, name)))
     if args.misread:

@@ -22,8 +22,8 @@ from test_outlines_kept import IOU_FLOOR, sessions_drawing
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_boxes import HELD_BACK_SEEDS, read
-from bench_closed_shapes import TUNING_SEEDS
+from bench_boxes import read
+from bench_closed_shapes import HELD_BACK_SEEDS, TUNING_SEEDS
 from bench_closed_shapes import read as read_closed
 
 Point = tuple[float, float]

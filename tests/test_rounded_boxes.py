@@ -23,7 +23,8 @@ from physink_tui.scene.recognition.recognize import recognize_stroke
 from physink_tui.scene.recognition.rounded_boxes import CORNER_REACH, corner_reach, smallest_rectangle
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_rounded_boxes import HELD_BACK_SEEDS, expected, read
+from bench_closed_shapes import HELD_BACK_SEEDS
+from bench_rounded_boxes import expected, read
 
 Point = tuple[float, float]
 

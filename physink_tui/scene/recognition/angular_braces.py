@@ -43,7 +43,7 @@ ARM_OFF = 0.08
 """The arms stand off the line by at least this share of its length: the curls carry them off it."""
 
 
-def _arm_heading_ok(piece: np.ndarray, direction: np.ndarray) -> bool:
+def arm_heading_ok(piece: np.ndarray, direction: np.ndarray) -> bool:
     """Whether ``piece`` (a run of the stroke) heads within `ARM_DEG` of ``direction`` (a unit vector)."""
     d = piece[-1] - piece[0]
     norm = float(np.hypot(*d))
@@ -77,7 +77,7 @@ def laid_out(work: np.ndarray, noise: float = 0.0) -> bool:
     return _chord_layout(work) or _arms_layout(work, noise)
 
 
-def _chord_frame(work: np.ndarray) -> tuple[float, np.ndarray, np.ndarray] | None:
+def chord_frame(work: np.ndarray) -> tuple[float, np.ndarray, np.ndarray] | None:
     """The line joining ``work``'s ends: its length, its unit vector and each point's signed distance across it; None
     for a stroke too short to judge as a brace or one that ends where it began."""
     if len(work) < 16:
@@ -93,7 +93,7 @@ def _chord_frame(work: np.ndarray) -> tuple[float, np.ndarray, np.ndarray] | Non
 
 def _chord_layout(work: np.ndarray) -> bool:
     """Whether ``work`` is laid out as a brace against the line joining its ends (`angular_brace`)."""
-    frame = _chord_frame(work)
+    frame = chord_frame(work)
     if frame is None:
         return False
     chord, unit, across = frame
@@ -114,7 +114,7 @@ def _chord_layout(work: np.ndarray) -> bool:
         return False
     arms = (work[(cum >= 0.35 * at) & (cum <= 0.8 * at)],
             work[(cum >= at + 0.2 * (length - at)) & (cum <= at + 0.65 * (length - at))])
-    if any(len(arm) < 3 or not _arm_heading_ok(arm, unit)
+    if any(len(arm) < 3 or not arm_heading_ok(arm, unit)
            or sg.path_length(arm) > ARM_INK * float(np.hypot(*(arm[-1] - arm[0]))) for arm in arms):
         return False
     stand = [float(np.median(sign * (arm[:, 0] - start[0]) * unit[1] - sign * (arm[:, 1] - start[1]) * unit[0]))
@@ -145,7 +145,7 @@ def _arms_layout(work: np.ndarray, noise: float = 0.0) -> bool:
     (`ARM_INK`); the point stands out of that line (`POINT_OUT`, `POINT_NOISE` times the pen's ``noise``; under
     `MAX_DEPTH` of the span) farther than anything
     else (`PAST_POINT`), the ends curl back behind it (`ENDS_BEHIND`), and the stroke runs along it (`NO_RETURN`)."""
-    frame = _chord_frame(work)
+    frame = chord_frame(work)
     if frame is None:
         return False
     across = frame[2]
@@ -165,7 +165,7 @@ def _arms_layout(work: np.ndarray, noise: float = 0.0) -> bool:
     if span == 0.0:
         return False
     along_arms = (last - first) / span
-    if any(not _arm_heading_ok(arm, along_arms)
+    if any(not arm_heading_ok(arm, along_arms)
            or sg.path_length(arm) > ARM_INK * float(np.hypot(*(arm[-1] - arm[0]))) for arm in arms):
         return False
     off = (work - first) @ np.array([along_arms[1], -along_arms[0]])

@@ -62,7 +62,7 @@ def laid_out(work: np.ndarray) -> bool:
     (`angular_braces.ARM_DEG`, `angular_braces.ARM_INK`), standing off it (`angular_braces.ARM_OFF`) and standing
     `angular_braces.PAST_ARMS` times less far out than the point; the short half (`SHORT_HALF`) straight
     (`SHORT_STRAIGHT`), slanting back to its end (`SHORT_SLANT_DEG`). The same whichever end it was drawn from."""
-    frame = angular_braces._chord_frame(work)
+    frame = angular_braces.chord_frame(work)
     if frame is None:
         return False
     chord, unit, across = frame
@@ -85,12 +85,13 @@ def laid_out(work: np.ndarray) -> bool:
     # each half from its end towards the point
     from_end = cum if long_first else length - cum
     long_len = length - short_len
-    spine = work[(from_end >= SPINE[0] * long_len) & (from_end <= SPINE[1] * long_len)]  # in drawing order
+    on_spine = (from_end >= SPINE[0] * long_len) & (from_end <= SPINE[1] * long_len)
+    spine = work[on_spine]  # in drawing order
     short = work[k:] if long_first else work[:k + 1][::-1]  # from the point to its end
     short = short[len(short) // 5:]
     if len(spine) < 3 or len(short) < 3:
         return False
-    if (not angular_braces._arm_heading_ok(spine, unit)
+    if (not angular_braces.arm_heading_ok(spine, unit)
             or sg.path_length(spine) > angular_braces.ARM_INK * float(np.hypot(*(spine[-1] - spine[0])))):
         return False
     if sg.chord_deviation(short) >= SHORT_STRAIGHT:
@@ -99,8 +100,7 @@ def laid_out(work: np.ndarray) -> bool:
     slant = math.degrees(math.acos(max(-1.0, min(1.0, abs(float(d @ unit)) / max(float(np.hypot(*d)), 1e-12)))))
     if not SHORT_SLANT_DEG[0] <= slant <= SHORT_SLANT_DEG[1]:
         return False
-    rel = spine - work[0]
-    off_line = sign * (rel[:, 0] * unit[1] - rel[:, 1] * unit[0])
+    off_line = sign * across[on_spine]
     stand = float(np.median(off_line))
     if (stand < angular_braces.ARM_OFF * chord or float(off_line.min()) < SPINE_OFF * chord
             or abs(depth) < angular_braces.PAST_ARMS * stand):

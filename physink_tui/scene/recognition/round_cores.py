@@ -58,9 +58,9 @@ def round_core(work: np.ndarray, fits: Callable[[EllipseFit], bool], min_turn: f
         if ellipse is None or not (ellipse[1] > 0 and ellipse[2] > 0):
             return None
         if fits(ellipse):
-            cut = np.concatenate([work[:lo], work[hi:]])
             if lo + n - hi == 0:
                 return None  # nothing cut: the plain fit's question, not this one's
+            cut = np.concatenate([work[:lo], work[hi:]])
             if abs(float(sg.turning(core).sum())) < min_turn or float(_radial(cut, ellipse).max()) > INSIDE:
                 return None
             return ellipse
