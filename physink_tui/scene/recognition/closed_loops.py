@@ -144,6 +144,8 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     limit = max(CLOSED_GAP * diag, 4 * sigma)
     if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
         loop, back = _once_round(work, th, limit)  # round and round one way: once round is the shape, if round
+        # not a lead-in drawn out and back along itself, nor a hook's small loop at an end
+        back = back and encloses(loop) and sg.bbox_diagonal(loop) >= SMALL_LOOP * diag
         ellipse = fit_ellipse(loop) if back else None  # fitted only where it may be kept
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop, ellipse
@@ -163,6 +165,22 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         # a loop on a long shaft or between long tails: an arrow's closed head, an x drawn round
         return False, work, None
     return True, loop, None
+
+
+ENCLOSES = 0.1
+"""A stroke once round (`_once_round`) is a loop only where it encloses at least this share of what a circle of its
+length would (its isoperimetric quotient, 4 pi area / length^2: a circle 1, a square 0.79, a 3:1 oval 0.73, a 12:1 box
+0.22): a pen that lands on a box's first side, runs along it, turns back to the corner and turns again onto it (the
+first side drawn twice over, `penmodels.box_habits` ``first-side-redrawn``) has turned a whole turn by the time it is
+back at its start, on a sliver of no area (0.00-0.05), which an ellipse as thin fits closely."""
+
+
+def encloses(loop: np.ndarray) -> bool:
+    """Whether a closed path encloses an area (`ENCLOSES`), not a sliver drawn out and back along itself."""
+    length = sg.path_length(loop) + float(np.hypot(*(loop[-1] - loop[0])))
+    x, y = loop[:, 0], loop[:, 1]
+    area = 0.5 * abs(float(x @ np.roll(y, -1) - y @ np.roll(x, -1)))
+    return length > 0.0 and 4 * math.pi * area / (length * length) >= ENCLOSES
 
 
 def _once_round(work: np.ndarray, th: np.ndarray, limit: float) -> tuple[np.ndarray, bool]:
