@@ -1,9 +1,10 @@
 """Issue 25: rectangles drawn with the habits of people we have not seen (`penmodels.box_habits`: tails past the close,
 retraced, turned, a wall askew, corners swung round, a gap at the close, a start mid-wall, a bowed side, crossings at
-the corners, thin, small) read as boxes by both pen models at least as often as measured on the held-back seeds
-1000-1029 (`benchmarks/bench_boxes.py --held-back`); a box with one wall askew and no two sides parallel is a box
-through a whole session (journal -> replay -> project), as three people's rectangles are, while the quads it could be
-taken for (a right trapezoid, whose base and top are parallel; a kite; a quad without a square wall) keep their
+the corners, thin, small, a side drawn twice over, a start inside, a kinked side) read as boxes by both pen models at
+least as often as measured on the held-back seeds 1000-1029 (`benchmarks/bench_boxes.py --held-back`), and a box with
+a side drawn twice over reads as one drawn either way round; a box with one wall askew and no two sides parallel is a
+box through a whole session (journal -> replay -> project), as three people's rectangles are, while the quads it could
+be taken for (a right trapezoid, whose base and top are parallel; a kite; a quad without a square wall) keep their
 corners.
 
 People's strokes are read from the public-set caches (`benchmarks/public_sets.py`; no licence: never committed) and
@@ -15,14 +16,14 @@ import sys
 from pathlib import Path
 
 import pytest
-from penmodels.box_habits import FAMILIES
+from penmodels.box_habits import FAMILIES, drawn
 from test_open_marks import _stroke, cached_rows
 from test_outlines_kept import IOU_FLOOR, sessions_drawing
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_boxes import read
+from bench_boxes import PENS, read
 from bench_closed_shapes import HELD_BACK_SEEDS, TUNING_SEEDS
 from bench_closed_shapes import read as read_closed
 
@@ -33,7 +34,8 @@ FLOORS: dict[str, tuple[int, int]] = {
     "turned": (30, 30), "wall-askew": (23, 22), "wall-askew-by-hand": (22, 24), "corner-swung": (30, 30),
     "two-corners-swung": (30, 30), "corners-rounded": (29, 27), "mouse-box": (30, 30), "gap-at-close": (30, 30),
     "start-mid-wall": (30, 30), "side-bowed": (30, 30), "corner-crossings": (30, 28), "thin": (30, 30),
-    "small": (30, 30),
+    "small": (30, 30), "first-side-redrawn": (30, 30), "last-side-redrawn": (30, 30), "start-inside": (30, 30),
+    "side-kinked": (30, 30),
 }
 """family -> of the 30 held-back seeds, how many read as a box drawn by the careful virtual pen and by the hurried hand
 (with their times), measured on wt-boxes (session 21; at main 98c6955 the same: the askew-wall rule gains on the tuning
@@ -41,7 +43,9 @@ seeds and on people's rectangles, not on these). Short of 30: a wall leaned 24-3
 parallel is a right trapezoid (the quad drawn, see `quads.askew_box`); a box with all four corners swung round by a
 quarter or more of its shorter side read round until session 22 (14/11 at main 007872c; `rounded_boxes`, wt-rounded:
 29/27), the rest reach no further towards their corners than people's squarish circles; two crossings at corners run
-past by a tenth of a side become a polygon's corners."""
+past by a tenth of a side become a polygon's corners. Session 23 (wt-corners) added the last four: at main 6b543d7 a box
+with its first side drawn twice over read as a box 25 and 24 times (an ellipse or a polygon through the sliver the pen
+drew out and back: `closed_loops.encloses`), its mirror at the close and the others 30 and 30."""
 
 
 def test_every_family_has_a_floor() -> None:
@@ -116,3 +120,18 @@ def test_peoples_rectangles_with_a_wall_askew_are_boxes(cache: str, file: str) -
         pytest.skip(f"{file} not in the cached {cache}")
     points, times = _stroke(rows[file])
     assert recognize_stroke(points, times).kind == "box"
+
+
+@pytest.mark.parametrize("pen", ("careful", "hurried"))
+def test_a_box_with_a_side_drawn_twice_over_reads_the_same_either_way_round(pen: str) -> None:
+    """A box whose first side the pen ran along, back to the corner and along again is the box drawn with its last side
+    drawn twice over, the other way round: both read as boxes, drawn either way (session 23: drawn from the start it
+    read as an ellipse or a polygon 6 times in 30 by the careful pen, from the close never)."""
+    for family in ("first-side-redrawn", "last-side-redrawn"):
+        for seed in TUNING_SEEDS:
+            points = PENS[pen](drawn(family, seed), seed)
+            end = points[-1][2]
+            ways = {"as drawn": points, "backwards": [(x, y, end - t) for x, y, t in points[::-1]]}
+            for way, pts in ways.items():
+                kind = recognize_stroke([p[:2] for p in pts], [p[2] for p in pts]).kind
+                assert kind == "box", (family, pen, seed, way, kind)

@@ -26,7 +26,14 @@ corners, either way round, and changes one thing about it:
 - ``corner-crossings``: at two to four corners the pen runs past by 4-12 % of the side and crosses back onto the next
   side behind the corner;
 - ``thin``: aspect 5-12 (a shelf, a slab), 150-500 px long;
-- ``small``: a square or near-square 18-40 px across.
+- ``small``: a square or near-square 18-40 px across;
+- ``first-side-redrawn``: the pen lands at a corner, runs 0.2-0.6 along the first side, comes back to the corner (to
+  within 5 % of the side either way) and draws the box from there, the first side twice over (session 23);
+- ``last-side-redrawn``: the same at the close: back 0.2-0.6 along the last side, and on to the corner again;
+- ``start-inside``: the pen lands 0.05-0.25 along the first side and 5-12 % of the shorter side off it (inside or
+  out), and the last side runs on to the corner, past the start (hcira klarubbio s06, itt Bam33751);
+- ``side-kinked``: the longest side drawn in two pieces meeting 0.3-0.7 along it, the meeting point 4-9 % of the side
+  off its line: a fifth corner of 8-20 degrees, as a hand regripping mid-side makes (a mouse, a trackpad).
 """
 
 from __future__ import annotations
@@ -251,12 +258,44 @@ def small(rng: random.Random) -> Path:
     return _placed([*c, c[0]], _upright(rng))
 
 
+def first_side_redrawn(rng: random.Random) -> Path:
+    c = _corners(rng)
+    out = _along(c[0], c[1], rng.uniform(0.2, 0.6), rng.uniform(-0.03, 0.03) * _side(c[0], c[1]))
+    back = _along(c[0], c[1], rng.uniform(-0.05, 0.05))
+    return _placed([c[0], out, back, c[1], c[2], c[3], c[0]], _upright(rng))
+
+
+def last_side_redrawn(rng: random.Random) -> Path:
+    c = _corners(rng)
+    out = _along(c[0], c[3], rng.uniform(0.2, 0.6), rng.uniform(-0.03, 0.03) * _side(c[0], c[3]))
+    return _placed([*c, c[0], out, _along(c[3], c[0], 1.0 + rng.uniform(-0.05, 0.05))], _upright(rng))
+
+
+def start_inside(rng: random.Random) -> Path:
+    c = _corners(rng)
+    shorter = min(_side(c[0], c[1]), _side(c[1], c[2]))
+    off = rng.choice((-1.0, 1.0)) * rng.uniform(0.05, 0.12) * shorter
+    return _placed([_along(c[0], c[1], rng.uniform(0.05, 0.25), off), c[1], c[2], c[3], c[0]], _upright(rng))
+
+
+def side_kinked(rng: random.Random) -> Path:
+    c = _corners(rng)
+    k = max(range(4), key=lambda i: _side(c[i], c[(i + 1) % 4]) + 1e-6 * i)
+    a, b = c[k], c[(k + 1) % 4]
+    kink = _along(a, b, rng.uniform(0.3, 0.7), rng.choice((-1.0, 1.0)) * rng.uniform(0.04, 0.09) * _side(a, b))
+    pts: list[Point] = []
+    for i in range(4):
+        pts += [c[i], kink] if i == k else [c[i]]
+    return _placed([*pts, c[0]], _upright(rng))
+
+
 FAMILIES: dict[str, Callable[[random.Random], Path]] = {
     "plain": plain, "tail-past-close": tail_past_close, "tail-hooked-in": tail_hooked_in, "retraced": retraced,
     "turned": turned, "wall-askew": wall_askew, "wall-askew-by-hand": wall_askew_by_hand, "corner-swung": corner_swung,
     "two-corners-swung": two_corners_swung, "corners-rounded": corners_rounded, "mouse-box": mouse_box,
     "gap-at-close": gap_at_close, "start-mid-wall": start_mid_wall, "side-bowed": side_bowed,
-    "corner-crossings": corner_crossings, "thin": thin, "small": small,
+    "corner-crossings": corner_crossings, "thin": thin, "small": small, "first-side-redrawn": first_side_redrawn,
+    "last-side-redrawn": last_side_redrawn, "start-inside": start_inside, "side-kinked": side_kinked,
 }
 """Every family, by name; each is read as a box (benchmarks/label_kinds.tsv: a rectangle is a box)."""
 
