@@ -118,7 +118,7 @@ def star_run_past_its_start(work: np.ndarray, corners: list[int]) -> bool:
 LAST_SIDE_BOW = 0.2
 """The last side of a polygon left open may bow this much (of its chord): the hand swings home as it lifts, while the
 sides before it are drawn straight (`open_shapes.STRAIGHT`)."""
-LEFT_OPEN_TURN = 1.25 * math.pi
+LEFT_OPEN_TURN = 1.15 * math.pi
 """A polygon left open has turned at least this far round (a triangle short of its last side: about 1.33 pi)."""
 LEFT_OPEN_WOBBLE = 0.5 * math.pi
 """How much of that turning a hurried hand's hook or wobble at an end may undo on the path itself; then the turning is
