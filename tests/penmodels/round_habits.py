@@ -1,6 +1,6 @@
 """Circles whose ends do not meet as a closed outline's do (issue 25: held-back people read circles 93 %): the pen
-lands inside and runs out to the rim first, or curls in past where it started at the end, or both; in canvas pixels,
-seeded; no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen;
+lands inside and runs out to the rim first, or curls in past where it started at the end, or both, or draws its first
+arc twice over; in canvas pixels, seeded; no motion, no noise (the pens draw them: `penmodels.hurried`, the virtual pen;
 `benchmarks/bench_round_habits.py`)."""
 
 from __future__ import annotations
@@ -97,6 +97,22 @@ def both_ends_in(seed: int) -> Mark:
     return Mark("both-ends-in", _placed(rng, pts), True)
 
 
+def first_arc_redrawn(seed: int) -> Mark:
+    """A circle whose pen lands on the rim, runs 30-90 degrees round it, comes back to where it landed (to within 5
+    degrees either way) and goes round from there by 345-375 degrees (closing within 15 degrees): its first arc drawn
+    twice over (session 23)."""
+    rng = random.Random(f"first-arc-redrawn:{seed}")
+    radius, flat = _rim(rng)
+    way = rng.choice((-1.0, 1.0))
+    start = rng.uniform(0, 2 * math.pi)
+    out = way * math.radians(rng.uniform(30, 90))
+    again = start + math.radians(rng.uniform(-5, 5))
+    pts = _round(radius, flat, start, out) + _round(radius, flat, start + out, again - start - out)[1:]
+    pts += _round(radius, flat, again, way * math.radians(rng.uniform(345, 375)))[1:]
+    return Mark("first-arc-redrawn", _placed(rng, pts), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
-    "lead-in-circle": lead_in_circle, "curled-in-circle": curled_in_circle, "both-ends-in": both_ends_in}
+    "lead-in-circle": lead_in_circle, "curled-in-circle": curled_in_circle, "both-ends-in": both_ends_in,
+    "first-arc-redrawn": first_arc_redrawn}
 """Every family; each is read as a circle or an ellipse (`EXPECTED`)."""

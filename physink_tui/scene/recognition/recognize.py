@@ -27,6 +27,7 @@ from physink_tui.scene.recognition import (
     closed_loops,
     hooked_ticks,
     landing,
+    loop_ends,
     lopsided_braces,
     open_shapes,
     pen_lifts,
@@ -288,6 +289,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     n = int(min(max(64, length / spacing), MAX_JUDGED_POINTS))
     # a shaky pen's points are smoothed where they were sampled first, then along the resampled path
     work = sg.smooth(sg.resample(sg.smooth(raw) if shaky else raw, n))
+    work = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
     special = helix_or_scribble(work, n, diag, sg.path_length(work))
     if special is not None:
         return special
