@@ -1,5 +1,6 @@
 """Where a closed stroke's loop begins and ends: a hook or lead-in where the pen landed and an overshoot where it lifted
-are cut off, and a loop much smaller than the stroke is left to the open marks; no ranking, no I/O."""
+are cut off, a lead drawn out and back along the path that the shape draws again is cut from any stroke, and a loop
+much smaller than the stroke is left to the open marks; no ranking, no I/O."""
 
 from __future__ import annotations
 
