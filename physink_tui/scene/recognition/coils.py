@@ -12,6 +12,8 @@ from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import helix_geometry
 from physink_tui.scene.recognition.primitives import Recognition
 
+COILED = 3.5 * math.pi
+"""A stroke turning this far one way in all (radians) may be a spring: more than once round and most of a second."""
 COIL_SHARPNESS = 0.7
 """A spring's loops may be pointed (a hurried hand), but not turn as sharply as a star's corners (about 0.9 of
 their turning in the sharpest fifth)."""
@@ -21,7 +23,7 @@ def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float) -> R
     """A spring (loops advancing along an axis, turning smoothly) or a scribble back and forth, else None."""
     th = sg.turning(work)
     total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    if abs(total_turn) > 3.5 * math.pi:
+    if abs(total_turn) > COILED:
         coil = sg.resample(sg.remove_hooks(work), n)
         coil_turn = sg.turning(coil)
         if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < COIL_SHARPNESS:  # a star winds twice too

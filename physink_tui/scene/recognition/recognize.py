@@ -44,7 +44,7 @@ from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
-from physink_tui.scene.recognition.coils import helix_or_scribble
+from physink_tui.scene.recognition.coils import COILED, helix_or_scribble
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
 from physink_tui.scene.recognition.primitives import Line, Polygon, Polyline, Recognition
@@ -289,7 +289,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     n = int(min(max(64, length / spacing), MAX_JUDGED_POINTS))
     # a shaky pen's points are smoothed where they were sampled first, then along the resampled path
     work = sg.smooth(sg.resample(sg.smooth(raw) if shaky else raw, n))
-    work = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
+    if abs(float(sg.turning(work).sum())) > COILED:  # a lead drawn out and back turns a half turn each way
+        work = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
     special = helix_or_scribble(work, n, diag, sg.path_length(work))
     if special is not None:
         return special
