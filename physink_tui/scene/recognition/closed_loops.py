@@ -83,20 +83,56 @@ def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw:
 
 def polygon_left_open(work: np.ndarray, diag: float) -> bool:
     """Straight sides turning most of the way round, the last one heading for the start: a polygon the pen
-    left before closing it."""
+    left before closing it (or a many-sided one left open by a side, `many_sided_left_open`)."""
     length = sg.path_length(work)
-    if length < 1.75 * diag or sf.closure(work, diag) >= 0.42:
+    if length < 1.75 * diag:
+        return False
+    closure = sf.closure(work, diag)
+    if closure >= LEFT_OPEN_CLOSURE:
         return False
     turned = abs(float(sg.turning(work).sum()))
     if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
         return False
     corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
-    if turned < LEFT_OPEN_TURN and abs(sides_turning(work[corners])) < LEFT_OPEN_TURN:
-        return False
+    if closure >= 0.42 or (turned < LEFT_OPEN_TURN and abs(sides_turning(work[corners])) < LEFT_OPEN_TURN):
+        return many_sided_left_open(work, corners, runs)
     return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
             and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
             and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners)))
+
+
+LEFT_OPEN_CLOSURE = 0.75
+"""A polygon left open has a gap under this share of its diagonal (`stroke_features.closure`); under 0.42 it may have
+any number of sides, from 0.42 on only many sides (`many_sided_left_open`: one side of an irregular hexagon drawn
+narrow, 0.5-0.6 of it in Quick, Draw!)."""
+LEFT_OPEN_CORNERS = 4
+"""A polygon of five sides or more left open by one side (a Quick, Draw! player's hexagon or octagon, the game ending
+as it guessed) shows at least this many corners between its ends: it turns only 200-250 degrees, less than
+`LEFT_OPEN_TURN`, but its sides and the gap close a convex outline (`many_sided_left_open`); a bracket, a U or a C shows
+two or three."""
+LEFT_OPEN_GAP = 1.5
+"""The gap of such a polygon is no longer than this many times its longest side drawn: one side missing (two missing
+leave a gap of 1.7-1.9 sides on a regular hexagon, an outline half drawn)."""
+
+
+def many_sided_left_open(work: np.ndarray, corners: list[int], runs: list[np.ndarray]) -> bool:
+    """Whether a stroke of `LEFT_OPEN_CORNERS` corners or more, its sides straight (`open_shapes.STRAIGHT`; the
+    first and last up to `LAST_SIDE_BOW`: the hand swings as it lands and lifts), is a polygon left open by one side:
+    the gap (`LEFT_OPEN_GAP`) and the sides make a convex outline, turning the same way at every vertex once round."""
+    if len(corners) - 2 < LEFT_OPEN_CORNERS:
+        return False
+    bows = [sg.chord_deviation(r) for r in runs]
+    if max(bows[1:-1]) >= open_shapes.STRAIGHT or max(bows[0], bows[-1]) >= LAST_SIDE_BOW:
+        return False
+    ring = np.vstack([work[corners], work[corners[:1]]])
+    sides = np.diff(ring, axis=0)
+    lengths = np.hypot(*sides.T)
+    if not lengths[:-1].max() > 0 or lengths[-1] > LEFT_OPEN_GAP * lengths[:-1].max():
+        return False
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    turns = (np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi
+    return bool((turns > 0).all() or (turns < 0).all()) and abs(abs(float(turns.sum())) - 2 * math.pi) < 0.1
 
 
 STAR_CROSSINGS = 3

@@ -34,11 +34,13 @@ CORNERS_EXPLAIN_MOST = 0.1
 """A polygon of five sides or more that leaves at most this share of the round shape's error has drawn corners even
 where one or two of them, shallow, were swept round (`MOSTLY_SHARP`): a hurried hand's irregular octagon turns 25-30
 degrees at some corners and rounds them over the side (Quick, Draw! octagons: 0.05-0.07 of the round error, one
-shallow corner swept). People's circles leave 0.064 or more in the design sources (hcira, itt)."""
-MOSTLY_SHARP = 2 / 3
+shallow corner swept). A person's wobbly circle's polygon of 9-10 sides may leave as little (the design sources:
+0.02 and up), so the corners must be sharp too."""
+MOSTLY_SHARP = 0.7
 """The share of the vertices of such a polygon (`CORNERS_EXPLAIN_MOST`) that must be sharp
-(`polygon_checks.SHARP_CORNER`): the Quick, Draw! octagons it reads 0.71-0.88; people's circles whose polygon leaves under 0.1 of the round error at
-most 0.56 (the design sources), the Quick, Draw! players' circles at most 0.62 (on sparse points, not judged)."""
+(`polygon_checks.SHARP_CORNER`): the Quick, Draw! octagons it reads 0.71-0.88; people's circles whose polygon leaves
+under 0.1 of the round error at most 0.62 (the design sources: hcira jonathanzhang53/s04 circle6, ahmadosama Circle
+#12; both stay round)."""
 
 
 def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: float, raw: np.ndarray,
