@@ -11,7 +11,8 @@ from collections.abc import Callable
 
 from penmodels.open_marks import Mark, Point
 
-EXPECTED = {"irregular-hexagon": "polygon", "swept-octagon": "polygon", "uneven-squiggle": "curve"}
+EXPECTED = {"irregular-hexagon": "polygon", "swept-octagon": "polygon", "left-open": "polygon",
+            "uneven-squiggle": "curve"}
 """The kind each family is read as (benchmarks/label_kinds.tsv: quickdraw hexagons and octagons are polygons,
 squiggles curves)."""
 
@@ -84,6 +85,15 @@ def swept_octagon(seed: int) -> Mark:
     return Mark("swept-octagon", _placed(rng, _closed(rng, pts)), False)
 
 
+def left_open(seed: int) -> Mark:
+    """A hexagon, heptagon or octagon (`irregular_hexagon`'s corners, up to a fifth of the spacing off even) drawn
+    round to its last corner and left open there, its last side not drawn (Quick, Draw! hexagons: the game ended as it
+    guessed)."""
+    rng = random.Random(f"left-open:{seed}")
+    corners = _corners(rng, rng.choice((6, 7, 8)), 0.2)
+    return Mark("left-open", _placed(rng, corners[::rng.choice((1, -1))]), False)
+
+
 def uneven_squiggle(seed: int) -> Mark:
     """A squiggle of 2-4 round humps, alternately up and down, each 0.6-1.4 of the others' width and 0.15-0.45 of its
     length high (Quick, Draw! squiggles), 150-400 px long, its ends 0-0.5 of a hump past the first and last bend."""
@@ -108,5 +118,6 @@ def uneven_squiggle(seed: int) -> Mark:
 
 
 FAMILIES: dict[str, Callable[[int], Mark]] = {
-    "irregular-hexagon": irregular_hexagon, "swept-octagon": swept_octagon, "uneven-squiggle": uneven_squiggle}
+    "irregular-hexagon": irregular_hexagon, "swept-octagon": swept_octagon, "left-open": left_open,
+    "uneven-squiggle": uneven_squiggle}
 """Every family; each is read as `EXPECTED` says."""

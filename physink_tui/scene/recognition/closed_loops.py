@@ -12,7 +12,7 @@ from physink_tui.scene.recognition import open_shapes, pen_noise
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
-from physink_tui.scene.recognition.polygon_checks import crossings
+from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, SHARP_SHARE, crossings
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 LUMPY_SIDES = 4
@@ -93,13 +93,15 @@ def polygon_left_open(work: np.ndarray, diag: float) -> bool:
     turned = abs(float(sg.turning(work).sum()))
     if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
         return False
-    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
-    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
-    if closure >= 0.42 or (turned < LEFT_OPEN_TURN and abs(sides_turning(work[corners])) < LEFT_OPEN_TURN):
-        return many_sided_left_open(work, corners, runs)
-    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
-            and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
-            and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners)))
+    if closure < 0.42:
+        corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+        runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+        if ((turned >= LEFT_OPEN_TURN or abs(sides_turning(work[corners])) >= LEFT_OPEN_TURN)
+                and len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
+                and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
+                and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners))):
+            return True
+    return many_sided_left_open(work, length)
 
 
 LEFT_OPEN_CLOSURE = 0.75
@@ -111,18 +113,25 @@ LEFT_OPEN_CORNERS = 4
 as it guessed) shows at least this many corners between its ends: it turns only 200-250 degrees, less than
 `LEFT_OPEN_TURN`, but its sides and the gap close a convex outline (`many_sided_left_open`); a bracket, a U or a C shows
 two or three."""
+MANY_SIDED_TURN_DEG = 25.0
+"""The corners of such a polygon are found where the path turns this much or more (`stroke_geometry.find_corners`,
+every dip: an irregular octagon's corners turn 25-65 degrees, its sides as short as the corner finder's straw); an
+arc's turning is spread along it, so the corners must be sharp too (`SHARP_SHARE`)."""
 LEFT_OPEN_GAP = 1.5
 """The gap of such a polygon is no longer than this many times its longest side drawn: one side missing (two missing
 leave a gap of 1.7-1.9 sides on a regular hexagon, an outline half drawn)."""
 
 
-def many_sided_left_open(work: np.ndarray, corners: list[int], runs: list[np.ndarray]) -> bool:
-    """Whether a stroke of `LEFT_OPEN_CORNERS` corners or more, its sides straight (`open_shapes.STRAIGHT`; the
-    first and last up to `LAST_SIDE_BOW`: the hand swings as it lands and lifts), is a polygon left open by one side:
-    the gap (`LEFT_OPEN_GAP`) and the sides make a convex outline, turning the same way at every vertex once round."""
+def many_sided_left_open(work: np.ndarray, length: float) -> bool:
+    """Whether a stroke (``length`` long) of `LEFT_OPEN_CORNERS` corners or more (turning `MANY_SIDED_TURN_DEG` or
+    more), sharp ones (`SHARP_SHARE` of them within `polygon_checks.SHARP_CORNER`), its sides straight
+    (`open_shapes.STRAIGHT`; the first and last up to `LAST_SIDE_BOW`: the hand swings as it lands and lifts), is a
+    polygon left open by one side: the gap (`LEFT_OPEN_GAP`) and the sides make a convex outline, turning the same way
+    at every vertex once round."""
+    corners = sf.drop_end_stubs(work, sg.find_corners(work, MANY_SIDED_TURN_DEG, every_dip=True), length)
     if len(corners) - 2 < LEFT_OPEN_CORNERS:
         return False
-    bows = [sg.chord_deviation(r) for r in runs]
+    bows = [sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
     if max(bows[1:-1]) >= open_shapes.STRAIGHT or max(bows[0], bows[-1]) >= LAST_SIDE_BOW:
         return False
     ring = np.vstack([work[corners], work[corners[:1]]])
@@ -132,7 +141,10 @@ def many_sided_left_open(work: np.ndarray, corners: list[int], runs: list[np.nda
         return False
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     turns = (np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi
-    return bool((turns > 0).all() or (turns < 0).all()) and abs(abs(float(turns.sum())) - 2 * math.pi) < 0.1
+    if not ((turns > 0).all() or (turns < 0).all()) or abs(abs(float(turns.sum())) - 2 * math.pi) > 0.1:
+        return False
+    roundness = np.asarray(sf.corner_roundness(work, corners))
+    return float(np.mean(roundness < SHARP_CORNER)) >= SHARP_SHARE
 
 
 STAR_CROSSINGS = 3
