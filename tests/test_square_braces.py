@@ -25,8 +25,9 @@ from bench_brace_habits import drawn
 HELD = range(1000, 1030)
 
 SQUARE_CORNERED_FLOORS = {"careful": 60, "hurried": 60, "hurried-fast": 60, "hurried-mouse": 60, "hurried-tiny": 60}
-"""Of the square-cornered braces of the first 15 held seeds drawn four ways (60), how many each pen's read as curves (with
-times): the held seeds' figures when `square_braces` was written (main 6b543d7: see docs/BENCHMARKS.md, session 23)."""
+"""Of the square-cornered braces of the first 15 held seeds drawn four ways (60), how many each pen's read as curves
+(with times): the held seeds' figures when `square_braces` was written (main 6b543d7: docs/BENCHMARKS.md, session
+23)."""
 
 
 @pytest.mark.parametrize("pen", list(SQUARE_CORNERED_FLOORS))

@@ -32,33 +32,34 @@ MIN_POINTS = 64
 POINT_AT = (0.3, 0.7)
 """The point, where the stroke turns most sharply in this stretch of its path (shares of it), by
 `stroke_geometry.POINT_TURN_DEG` or more within `stroke_geometry.POINT_SPAN` (as `thin_braces.POINT_AT`)..."""
-PIECE_SHARE = 0.1
-"""...has on each side a piece of spine: from where the point's bend ends to the next sharp turn (a square corner) or
-the stroke's end, at least this share of the path (an arm's hook or a zig-zag's short tooth is no spine)..."""
-PIECE_STRAIGHT = 0.08
-"""...straight, straying from its chord by less than this share of it (`bracket_marks.BRACKET_STRAIGHT` is 0.12: the
-spine of a bracket is straighter than its arms)..."""
 POINT_REACH = 0.12
-"""The point's bends (out of the spine, round the point, back) lie within this share of the path of the point."""
+"""...has its bends (out of the spine, round the point, back) within this share of the path of it..."""
+PIECE_SHARE = 0.1
+"""...and on each side, past them, a piece of spine up to the next sharp turn (a square corner) or the stroke's end, at
+least this share of the path (an arm's hook or a zig-zag's short tooth is no spine)..."""
+PIECE_STRAIGHT = 0.08
+"""...straight, straying from its chord by less than this share of it (`bracket_marks.BRACKET_STRAIGHT` is 0.12: a
+spine is straighter than a hand's arms)..."""
 IN_LINE_DEG = 20.0
-"""...the two pieces heading within this many degrees of each other, and each piece's line passing within
-`IN_LINE_OFF` of the other's middle: the spine runs on through the point (a W's or a zig-zag's pieces slant apart; a
-step's pieces are parallel but offset)."""
+"""...the two pieces heading within this many degrees of each other..."""
 IN_LINE_OFF = 0.75
-"""As a share of the point's depth from that line (the halves of a spine a hand drew in two strokes of the wrist stand
-apart a few pixels; hcira jonathanzhang53/s01's right brace 1, 0.55)."""
+"""...and each piece's middle within this share of the point's depth of the other's line: the spine runs on through
+the point (a W's or a zig-zag's pieces slant apart; a step's are offset as far as its riser; the halves of a spine a
+hand drew in two strokes of the wrist stand a few pixels apart: hcira jonathanzhang53/s01's right brace 1, 0.55)."""
 POINT_NOISE = 3.0
 """The point stands out of each piece's line by at least this many of the pen's noise widths (a straight line's wobble
 reaches about three, `lines.wobble_reach`)..."""
 POINT_OUT = 0.025
 """...and by at least this share of the spine (both pieces and the point between them): a mouse's jog or a hand's
-tremor along a bracket's spine stands out less."""
+tremor along a bracket's spine stands out less..."""
 POINT_DEEP = 0.35
-"""The point stands out of the pieces' line by less than this share of the spine (a deeper point makes a brace the
-other rules read: `angular_braces`, `bracket_marks.brace_point`; a deep notch is a chevron's)."""
+"""...and by less than this share of it (a deeper point makes a brace the other rules read: `angular_braces`,
+`bracket_marks.brace_point`; a deep notch is a chevron's)."""
 END_OFF = 1.0
-"""Each end stands off its piece's line on the side away from the point by at least this many times the point's depth
-and this many noise widths: the end arms carry the ends to the other side (a hooked line's hooks are short)."""
+"""Each end stands off its piece's line on the side away from the point by at least this many times the point's
+depth..."""
+END_NOISE = 2.0
+"""...and this many noise widths: the end arms carry the ends to the other side (a hooked line's hooks are short)."""
 NO_RETURN = 0.1
 """The stroke runs along the line joining its ends, turning back along it by less than this share of that line."""
 
@@ -98,11 +99,13 @@ def square_brace(raw: np.ndarray, noise: float) -> bool:
     """Whether the open stroke ``raw`` (its points as drawn; ``noise`` the pen's, in their units) is a brace drawn
     square-cornered: a sharp point about halfway (`POINT_AT`) between two straight pieces of spine (`PIECE_SHARE`,
     `PIECE_STRAIGHT`) in line with each other (`IN_LINE_DEG`, `IN_LINE_OFF`), standing out of each piece's line
-    (`POINT_NOISE`, `POINT_OUT`, `POINT_DEEP`) away from the ends (`END_OFF`), the stroke running along the line joining
-    its ends (`NO_RETURN`). The same whichever end it was drawn from, whichever way it faces."""
+    (`POINT_NOISE`, `POINT_OUT`, `POINT_DEEP`) away from the ends (`END_OFF`, `END_NOISE`), the stroke running along
+    the line joining its ends (`NO_RETURN`). The same whichever end it was drawn from, whichever way it faces."""
     if len(raw) < 8:
         return False
-    n = int(min(JUDGED_POINTS, max(MIN_POINTS, sg.path_length(raw) / (SPACING * noise)))) if noise > 0 else JUDGED_POINTS
+    n = JUDGED_POINTS
+    if noise > 0:
+        n = int(min(JUDGED_POINTS, max(MIN_POINTS, sg.path_length(raw) / (SPACING * noise))))
     pts = sg.smooth(sg.resample(raw, n))
     start, end = pts[0], pts[-1]
     chord = float(np.hypot(*(end - start)))
@@ -132,8 +135,7 @@ def square_brace(raw: np.ndarray, noise: float) -> bool:
         if norm == 0.0 or sg.chord_deviation(piece) >= PIECE_STRAIGHT:
             return False
         lines.append((piece.mean(axis=0), d / norm))
-    (c0, u0), (c1, u1) = lines
-    if float(u0 @ u1) < math.cos(math.radians(IN_LINE_DEG)):
+    if float(lines[0][1] @ lines[1][1]) < math.cos(math.radians(IN_LINE_DEG)):
         return False
     spine = float(cum[pieces[1][1]] - cum[pieces[0][0]])
     depths, offs = [], []
@@ -147,7 +149,7 @@ def square_brace(raw: np.ndarray, noise: float) -> bool:
     if not max(POINT_NOISE * noise, POINT_OUT * spine) <= depth < POINT_DEEP * spine:
         return False
     side = math.copysign(1.0, depths[0])
-    return all(-side * end_off >= max(END_OFF * depth, 2 * noise) and abs(mid_off) <= IN_LINE_OFF * abs(own)
+    return all(-side * end_off >= max(END_OFF * depth, END_NOISE * noise) and abs(mid_off) <= IN_LINE_OFF * abs(own)
                for (end_off, mid_off), own in zip(offs, depths, strict=True))
 
 
