@@ -24,10 +24,11 @@ from bench_brace_habits import drawn
 
 HELD = range(1000, 1030)
 
-SQUARE_CORNERED_FLOORS = {"careful": 60, "hurried": 60, "hurried-fast": 60, "hurried-mouse": 60, "hurried-tiny": 60}
+SQUARE_CORNERED_FLOORS = {"careful": 60, "hurried": 58, "hurried-fast": 44, "hurried-mouse": 43, "hurried-tiny": 45,
+                          "hurried-accel": 55}
 """Of the square-cornered braces of the first 15 held seeds drawn four ways (60), how many each pen's read as curves
-(with times): the held seeds' figures when `square_braces` was written (main 6b543d7: docs/BENCHMARKS.md, session
-23)."""
+(with times): the held seeds' figures when `square_braces` was written; main 6b543d7 read 32, 42, 28, 33, 45 and 30
+(the rest polylines, a few tiny ones lines; docs/BENCHMARKS.md, session 23)."""
 
 
 @pytest.mark.parametrize("pen", list(SQUARE_CORNERED_FLOORS))
