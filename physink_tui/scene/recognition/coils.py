@@ -19,9 +19,11 @@ COIL_SHARPNESS = 0.7
 their turning in the sharpest fifth)."""
 
 
-def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float) -> Recognition | None:
-    """A spring (loops advancing along an axis, turning smoothly) or a scribble back and forth, else None."""
-    th = sg.turning(work)
+def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
+                      th: np.ndarray | None = None) -> Recognition | None:
+    """A spring (loops advancing along an axis, turning smoothly) or a scribble back and forth, else None (``th``: the
+    path's turning, `stroke_geometry.turning`, where already measured)."""
+    th = sg.turning(work) if th is None else th
     total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
     if abs(total_turn) > COILED:
         coil = sg.resample(sg.remove_hooks(work), n)

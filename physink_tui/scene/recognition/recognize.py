@@ -291,9 +291,12 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     n = int(min(max(64, length / spacing), MAX_JUDGED_POINTS))
     # a shaky pen's points are smoothed where they were sampled first, then along the resampled path
     work = sg.smooth(sg.resample(sg.smooth(raw) if shaky else raw, n))
-    if abs(float(sg.turning(work).sum())) > COILED:  # a lead drawn out and back turns a half turn each way
-        work = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
-    special = helix_or_scribble(work, n, diag, sg.path_length(work))
+    th = sg.turning(work)
+    if abs(float(th.sum())) > COILED:  # a lead drawn out and back turns a half turn each way
+        led = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
+        if led is not work:
+            work, th = led, sg.turning(led)
+    special = helix_or_scribble(work, n, diag, sg.path_length(work), th)
     if special is not None:
         return special
     work = sg.resample(sg.remove_small_loops(work), n)  # loops at corners are flourishes, not coils
