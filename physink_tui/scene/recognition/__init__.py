@@ -16,9 +16,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    point about halfway standing out of each arm's line with both ends curling back behind it, is no line:
    `thin_braces`), a spring (loops turning one way
    whose centres advance along an axis; pointed loops allowed) or a scribble (no kind, a reason) are told first; a
-   stroke under three noise widths across is a dot (no kind). Before the spring test, a lead the pen drew out and
-   back along its own path at either end and drew again with the shape (a box's first side or a circle's first arc
-   drawn twice over) is cut (`loop_ends.retraced_lead`).
+   stroke under three noise widths across is a dot (no kind). Before the spring test, in a stroke turning past
+   `coils.COILED`, a lead the pen drew out and back along its own path at either end and drew again with the shape (a
+   box's first side or a circle's first arc drawn twice over) is cut (`loop_ends.retraced_lead`).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
    drawn past its start and comes back to it (cut there), or it goes round the same sides twice. Where neither end
    comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook
