@@ -225,8 +225,8 @@ def unhooked_point(work: np.ndarray, corners: list[int], noise: float) -> tuple[
         else:
             return None  # a corner along the stroke: no tick swung round its point
     kept = work[first:final + 1]
-    if len(kept) < 8:
-        return None
+    if (first == 0 and final == last) or len(kept) < 8:
+        return None  # no hook to cut (`rounded_point` judges the stroke as it is), or hardly a stroke left
     kept = sg.resample(kept, len(work))
     point = rounded_point(kept, sg.turning(kept), sf.turn_lobes(sg.coarse_turning(kept, noise)))
     if point is None:
