@@ -31,7 +31,7 @@ from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_mark_habits import FAMILIES
-from bench_open_marks import PENS, TUNING_SEEDS, read
+from bench_open_marks import TUNING_SEEDS, read
 
 TICK_FLOORS = {"careful": 56, "hurried": 52, "hurried-coarse": 58, "hurried-mouse": 56}
 """pen -> of the 60 readings of the hooked swung tick (30 tuning seeds, with and without times), how many are

@@ -44,10 +44,11 @@ def _hook(rng: random.Random, start: Point, heading: Point, reach: float) -> lis
 
 
 def hooked_swung_tick(seed: int) -> Mark:
-    """A tick as pixelfac/user02's check7 (hcira): a long arm 140-300 px going up at 40-60 degrees, a short arm 0.25-0.45
-    of it coming down at 35-55 degrees, the point swung round by an arc tangent to both taking 0.5-0.8 of the short arm
-    (`tests/test_tick_marks.swung_tick`'s tick, `bracket_marks.rounded_point`), and where the pen landed a hook of 4-8 % of the path curling back 100-160
-    degrees into the short arm (a mouse or finger set down moving); a hook where it lifted too, a third of the time."""
+    """A tick as pixelfac/user02's check7 (hcira): a long arm 140-300 px going up at 40-60 degrees, a short arm
+    0.25-0.45 of it coming down at 35-55 degrees, the point swung round by an arc tangent to both taking 0.5-0.8 of the
+    short arm (`tests/test_tick_marks.swung_tick`'s tick, `bracket_marks.rounded_point`), and where the pen landed a
+    hook of 4-8 % of the path curling back 100-160 degrees into the short arm (a mouse or finger set down moving); a
+    hook where it lifted too, a third of the time."""
     rng = random.Random(f"hooked-swung-tick:{seed}")
     long_arm = rng.uniform(140, 300)
     short_arm = rng.uniform(0.25, 0.45) * long_arm
