@@ -12,7 +12,7 @@ from physink_tui.scene.recognition import open_shapes, pen_noise
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
-from physink_tui.scene.recognition.polygon_checks import crossings
+from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, SHARP_SHARE, crossings
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 LUMPY_SIDES = 4
@@ -83,20 +83,68 @@ def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw:
 
 def polygon_left_open(work: np.ndarray, diag: float) -> bool:
     """Straight sides turning most of the way round, the last one heading for the start: a polygon the pen
-    left before closing it."""
+    left before closing it (or a many-sided one left open by a side, `many_sided_left_open`)."""
     length = sg.path_length(work)
-    if length < 1.75 * diag or sf.closure(work, diag) >= 0.42:
+    if length < 1.75 * diag:
+        return False
+    closure = sf.closure(work, diag)
+    if closure >= LEFT_OPEN_CLOSURE:
         return False
     turned = abs(float(sg.turning(work).sum()))
     if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
         return False
-    corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
-    runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
-    if turned < LEFT_OPEN_TURN and abs(sides_turning(work[corners])) < LEFT_OPEN_TURN:
+    if closure < 0.42:
+        corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+        runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
+        if ((turned >= LEFT_OPEN_TURN or abs(sides_turning(work[corners])) >= LEFT_OPEN_TURN)
+                and len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
+                and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
+                and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners))):
+            return True
+    return many_sided_left_open(work, length)
+
+
+LEFT_OPEN_CLOSURE = 0.75
+"""A polygon left open has a gap under this share of its diagonal (`stroke_features.closure`); under 0.42 it may have
+any number of sides, from 0.42 on only many sides (`many_sided_left_open`: one side of an irregular hexagon drawn
+narrow, 0.5-0.6 of it in Quick, Draw!)."""
+LEFT_OPEN_CORNERS = 4
+"""A polygon of five sides or more left open by one side (a Quick, Draw! player's hexagon or octagon, the game ending
+as it guessed) shows at least this many corners between its ends: it turns only 200-250 degrees, less than
+`LEFT_OPEN_TURN`, but its sides and the gap close a convex outline (`many_sided_left_open`); a bracket, a U or a C shows
+two or three."""
+MANY_SIDED_TURN_DEG = 25.0
+"""The corners of such a polygon are found where the path turns this much or more (`stroke_geometry.find_corners`,
+every dip: an irregular octagon's corners turn 25-65 degrees, its sides as short as the corner finder's straw); an
+arc's turning is spread along it, so the corners must be sharp too (`SHARP_SHARE`)."""
+LEFT_OPEN_GAP = 1.5
+"""The gap of such a polygon is no longer than this many times its longest side drawn: one side missing (two missing
+leave a gap of 1.7-1.9 sides on a regular hexagon, an outline half drawn)."""
+
+
+def many_sided_left_open(work: np.ndarray, length: float) -> bool:
+    """Whether a stroke (``length`` long) of `LEFT_OPEN_CORNERS` corners or more (turning `MANY_SIDED_TURN_DEG` or
+    more), sharp ones (`SHARP_SHARE` of them within `polygon_checks.SHARP_CORNER`), its sides straight
+    (`open_shapes.STRAIGHT`; the first and last up to `LAST_SIDE_BOW`: the hand swings as it lands and lifts), is a
+    polygon left open by one side: the gap (`LEFT_OPEN_GAP`) and the sides make a convex outline, turning the same way
+    at every vertex once round."""
+    corners = sf.drop_end_stubs(work, sg.find_corners(work, MANY_SIDED_TURN_DEG, every_dip=True), length)
+    if len(corners) - 2 < LEFT_OPEN_CORNERS:
         return False
-    return (len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
-            and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
-            and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners)))
+    bows = [sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
+    if max(bows[1:-1]) >= open_shapes.STRAIGHT or max(bows[0], bows[-1]) >= LAST_SIDE_BOW:
+        return False
+    ring = np.vstack([work[corners], work[corners[:1]]])
+    sides = np.diff(ring, axis=0)
+    lengths = np.hypot(*sides.T)
+    if not lengths[:-1].max() > 0 or lengths[-1] > LEFT_OPEN_GAP * lengths[:-1].max():
+        return False
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    turns = (np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi
+    if not ((turns > 0).all() or (turns < 0).all()) or abs(abs(float(turns.sum())) - 2 * math.pi) > 0.1:
+        return False
+    roundness = np.asarray(sf.corner_roundness(work, corners))
+    return float(np.mean(roundness < SHARP_CORNER)) >= SHARP_SHARE
 
 
 STAR_CROSSINGS = 3

@@ -8,6 +8,7 @@ from physink_tui.scene.recognition.candidates import Candidate, Pending
 from physink_tui.scene.recognition.corner_pace import slowed_at_corners
 from physink_tui.scene.recognition.polygon_checks import (
     SHALLOW_CORNER_DEG,
+    SHARP_CORNER,
     corner_roundness_closed,
     corners_of,
     dense_enough,
@@ -29,6 +30,17 @@ vertex the path does 80 % of its turning within this share of the shorter side (
 a round loop's turning, spread evenly, takes 0.8 of a side whatever the vertices, a drawn corner a tenth or two, and
 one blurred by a mouse's sparse points and the smoothing a third or more (Quick, Draw! octagons: 3-4 vertices of 8 at
 0.4 or more, which `polygon_checks.sharp_corners` refuses)."""
+CORNERS_EXPLAIN_MOST = 0.1
+"""A polygon of five sides or more that leaves at most this share of the round shape's error has drawn corners even
+where one or two of them, shallow, were swept round (`MOSTLY_SHARP`): a hurried hand's irregular octagon turns 25-30
+degrees at some corners and rounds them over the side (Quick, Draw! octagons: 0.05-0.07 of the round error, one
+shallow corner swept). A person's wobbly circle's polygon of 9-10 sides may leave as little (the design sources:
+0.02 and up), so the corners must be sharp too."""
+MOSTLY_SHARP = 0.7
+"""The share of the vertices of such a polygon (`CORNERS_EXPLAIN_MOST`) that must be sharp
+(`polygon_checks.SHARP_CORNER`): the Quick, Draw! octagons it reads 0.71-0.88; people's circles whose polygon leaves
+under 0.1 of the round error at most 0.62 (the design sources: hcira jonathanzhang53/s04 circle6, ahmadosama Circle
+#12; both stay round)."""
 
 
 def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: float, raw: np.ndarray,
@@ -52,7 +64,8 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
         # only the best fit of that many sides is judged, before building (which judges every corner: the costlier)
         best = pending.fits[0] if pending.fits else None
         if best is None or best.rss > explained or not (sharp_corners(best, step)
-                                                         or slowed_corners(best, step, raw, times)):
+                                                         or slowed_corners(best, step, raw, times)
+                                                         or mostly_sharp(best, step, round_rss)):
             continue
         for c in [*_built(pending, best), *_shallow(pending, best, noise)]:
             if c.kind == "box" and not inside(c.geometry, box_lo, box_hi) and c.fallback is not None:
@@ -70,6 +83,15 @@ def slowed_corners(fit: PolygonFit, step: float, raw: np.ndarray, times: np.ndar
     if float(np.median(corner_roundness_closed(fit))) >= TURNS_AT_VERTICES:
         return False
     return slowed_at_corners(fit.vertices, raw, times)
+
+
+def mostly_sharp(fit: PolygonFit, step: float, round_rss: float) -> bool:
+    """Whether a closed fit of five sides or more leaves at most `CORNERS_EXPLAIN_MOST` of the round shape's error
+    (``round_rss``) and turns sharply at `MOSTLY_SHARP` of its vertices, on points dense enough to tell
+    (`polygon_checks.dense_enough`)."""
+    if len(fit.indices) - 1 < 5 or fit.rss > CORNERS_EXPLAIN_MOST * round_rss or not dense_enough(fit, step):
+        return False
+    return float(np.mean(corner_roundness_closed(fit) < SHARP_CORNER)) >= MOSTLY_SHARP
 
 
 def _built(pending: Pending, best: PolygonFit) -> list[Candidate]:
