@@ -7,8 +7,10 @@ Issue 25, session 21: held-back people read right braces worse than left ones (a
 (flattened point, lopsided, askew, hooked ends, two arcs at a cusp, tall and thin, a wide chevron with rounded ends,
 straight runs) are drawn by the careful virtual pen, the hurried hand (`tests/penmodels/hurried`), the hurried hand
 through a device sending 8-25 events in all (`bench_device_stress.fast`), through a mouse at 60-200 px
-(`bench_device_stress`'s stairs, bursts, repeated points) and in whole pixels at 20-40 px (a tiny mouse brace). Every
-mark is read four ways (`brace_habits.WAYS`): a reading that depends on the way is an asymmetry of the recogniser.
+(`bench_device_stress`'s stairs, bursts, repeated points), in whole pixels at 20-40 px (a tiny mouse brace) and
+through a trackpad's pointer acceleration (`device_habits.acceleration`: slow parts shrink, fast parts stretch; session
+23). Every mark is read four ways (`brace_habits.WAYS`): a reading that depends on the way is an asymmetry of the
+recogniser.
 Seeds 0-29 (`TUNING_SEEDS`) were looked at while designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
 """
 
@@ -25,6 +27,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 import numpy as np
 from bench_device_stress import bursts, chain, duplicates, fast, pixels, stairs
 from bench_open_marks import careful, hurried
+from device_habits import acceleration
 from penmodels.brace_habits import FAMILIES, WAYS
 from penmodels.open_marks import Mark
 
@@ -48,7 +51,8 @@ def _through(*steps: Callable[..., tuple[np.ndarray, np.ndarray | None]]) -> Cal
 
 PENS: dict[str, Callable[[Mark, int], Drawn]] = {
     "careful": careful, "hurried": hurried, "hurried-fast": _through(fast),
-    "hurried-mouse": _through(stairs, bursts, duplicates), "hurried-tiny": _through(pixels(20, 40), duplicates)}
+    "hurried-mouse": _through(stairs, bursts, duplicates), "hurried-tiny": _through(pixels(20, 40), duplicates),
+    "hurried-accel": _through(acceleration)}
 
 
 def drawn(family: str, way: str, pen: str, seed: int) -> Drawn:

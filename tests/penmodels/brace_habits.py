@@ -1,8 +1,8 @@
 """Curly braces as different hands draw them (issue 25: right braces of people the project never saw): flattened,
 lopsided, askew, hooked, two arcs meeting at a cusp, tall and thin, a wide chevron with rounded ends, straight runs,
-lopsided with a bracket's square end and a straight short half; each built as a left brace drawn from its top and
-then turned round and drawn from either end, seeded; no motion, no noise (the pens draw them: `penmodels.hurried`,
-the virtual pen)."""
+lopsided with a bracket's square end and a straight short half, square-cornered with a small point; each built as a
+left brace drawn from its top and then turned round and drawn from either end, seeded; no motion, no noise (the pens
+draw them: `penmodels.hurried`, the virtual pen)."""
 
 from __future__ import annotations
 
@@ -221,8 +221,26 @@ def plain_short_half(seed: int, way: str) -> Mark:
     return Mark("plain-short-half", _placed(rng, pts, way), True)
 
 
+def square_cornered(seed: int, way: str) -> Mark:
+    """A brace drawn square-cornered, as a hand on a mouse or a trackpad that cannot swing a curl draws one (hcira
+    jonathanzhang53/s01's right brace 1): each end arm (0.1-0.3 of the height) turned at a square corner (80-100
+    degrees) onto a straight spine 120-320 px tall, and halfway along it a small point, 0.035-0.1 of the height out,
+    reached over 0.02-0.08 of it either side; drawn as straight runs, the pen turning at each corner."""
+    rng = random.Random(f"square-cornered:{seed}")
+    h = rng.uniform(120, 320)
+    arms = []
+    for _ in range(2):
+        length, tilt = rng.uniform(0.1, 0.3) * h, math.radians(rng.uniform(-10, 10))
+        arms.append((length * math.cos(tilt), length * math.sin(tilt)))
+    tip, approach = rng.uniform(0.035, 0.1) * h, rng.uniform(0.02, 0.08) * h
+    (w1, t1), (w2, t2) = arms
+    pts = [(w1, -h / 2 + t1), (0.0, -h / 2), (0.0, -approach), (-tip, 0.0), (0.0, approach), (0.0, h / 2),
+           (w2, h / 2 - t2)]
+    return Mark("square-cornered", _placed(rng, pts, way), False)
+
+
 FAMILIES: dict[str, Callable[[int, str], Mark]] = {
     "classic": classic, "flat-point": flat_point, "lopsided": lopsided, "askew": askew, "hooked": hooked,
     "cusp-arcs": cusp_arcs, "tall-thin": tall_thin, "wide-chevron": wide_chevron, "straight-runs": straight_runs,
-    "plain-short-half": plain_short_half}
+    "plain-short-half": plain_short_half, "square-cornered": square_cornered}
 """Every family; each is read as a curve (benchmarks/label_kinds.tsv: a curly brace is a curve)."""

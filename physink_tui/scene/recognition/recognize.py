@@ -35,13 +35,14 @@ from physink_tui.scene.recognition import (
     round_brackets,
     rounded_boxes,
     rounded_corners,
+    square_braces,
     stairs,
     units,
     waves,
 )
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import scale_geometry, shape_points, x_symbol
+from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry, shape_points, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import helix_or_scribble
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
@@ -218,12 +219,13 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     # a wave is not asked of the model (the people it was fitted on drew none), nor a chain of sharp corners (its
     # 64 points smooth small steps away), nor a tick whose short arm is a few percent of it (the model takes it for a
     # curve), nor a mark straight-armed as drawn, nor a square bracket whose corners were rounded off, nor a brace
-    # drawn as straight runs or lopsided with a straight short half the rules read as a curve
+    # drawn as straight runs, lopsided with a straight short half or square-cornered the rules read as a curve
     if (not learned or wavy or chain is not None or tick is not None
             or open_shapes.straight_armed_mark(result, pts, noise)
             or round_brackets.kept_bracket(result, unit, unit_noise)
             or angular_braces.kept_brace(result, unit, unit_noise)
-            or lopsided_braces.kept_brace(result, unit, unit_noise)):
+            or lopsided_braces.kept_brace(result, unit, unit_noise)
+            or square_braces.kept_brace(result, unit, unit_noise)):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
@@ -352,6 +354,9 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
     coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
     found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
                                       weights.round_corner)
+    if found.kind == "polyline" and square_braces.square_brace(raw, noise):
+        # a brace drawn square-cornered, whose small point these coarse points smoothed away
+        found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
     round_left_open = found.kind in ("circle", "ellipse")
     share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
     if inside(found.geometry, *bounds(raw, noise, diag, share)):
