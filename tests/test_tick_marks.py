@@ -66,8 +66,10 @@ def even_arc(seed: int) -> list[Point]:
 # careful pen's 31 curves and 9 arcs, the hurried hand's 40 curves, by the rules and shipped alike). The shipped
 # recogniser keeps 29 of the hurried hand's 36: the model, asked where its own corner finder finds a corner, re-reads
 # the rest as curves (the lead's refit takes the rules' answer among its inputs). With the fine path's turn alone (not
-# the coarse lobe's) the hurried hand's hooks left 22 and 8.
-SWUNG_FLOORS = {("careful", False): 40, ("hurried", False): 36, ("careful", True): 40, ("hurried", True): 29}
+# the coarse lobe's) the hurried hand's hooks left 22 and 8. Session 23 (wt-marks): the model is not asked either once
+# a hook where the pen landed or lifted is cut (`ranker.swung_tick`, `bracket_marks.unhooked_point`): the hurried hand's
+# 37 and 36 (rules, shipped), floors two under the shipped count.
+SWUNG_FLOORS = {("careful", False): 40, ("hurried", False): 36, ("careful", True): 40, ("hurried", True): 34}
 
 
 @pytest.mark.parametrize(("pen", "learned"), list(SWUNG_FLOORS))

@@ -105,7 +105,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
    halfway along, the stroke on one side of that line), is not a polyline; a tick, check or v swung round its point
    (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
-   polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`). A polyline so read that
+   polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`), also once a hook where
+   the pen landed or lifted, found as a corner within a tenth of the path from an end, is cut
+   (`bracket_marks.unhooked_point`). A polyline so read that
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
    of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).
@@ -138,7 +140,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 
    lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`), and the rules'
    zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`) and a tick swung round its point (on the
-   model's own points, no corner found there: `bracket_marks.rounded_point`).
+   model's own points, no corner found there, or none but a hook's, cut: `ranker.swung_tick`,
+   `bracket_marks.unhooked_point`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)

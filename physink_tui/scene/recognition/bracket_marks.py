@@ -196,3 +196,39 @@ def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[
             or sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= sg.POINT_TURN_DEG):
         return None
     return [0, k, len(work) - 1]
+
+
+HOOK_SHARE = 0.1
+"""A hook where the pen landed or lifted is at most this share of the path (`stroke_geometry.remove_hooks`'
+``max_fraction``)."""
+
+
+def unhooked_point(work: np.ndarray, corners: list[int], noise: float) -> tuple[tuple[float, float], ...] | None:
+    """The start, point and end of a tick swung round its point (`rounded_point`) once a hook the pen made landing or
+    lifting is cut where the finder found a corner within `HOOK_SHARE` of the path from that end, or None (also when a
+    corner lies elsewhere). `stroke_geometry.remove_hooks` keeps a hook after which the stroke turns on within a tenth
+    of the path, as a tick's short arm does into its round point: the hook then adds its turn to the tick's one lobe,
+    or a lobe of its own (pixelfac/user02's check7, `penmodels.mark_habits.hooked_swung_tick`). ``work``: the stroke
+    as `open_shapes.classify_open` judges it, ``corners`` its corners (ends included), ``noise`` the pen's jitter in
+    its units."""
+    last = len(work) - 1
+    if len(corners) < 3:
+        return None
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    reach = HOOK_SHARE * along[-1]
+    first, final = 0, last
+    for c in corners[1:-1]:
+        if along[c] <= reach:
+            first = max(first, c)
+        elif along[-1] - along[c] <= reach:
+            final = min(final, c)
+        else:
+            return None  # a corner along the stroke: no tick swung round its point
+    kept = work[first:final + 1]
+    if (first == 0 and final == last) or len(kept) < 8:
+        return None  # no hook to cut (`rounded_point` judges the stroke as it is), or hardly a stroke left
+    kept = sg.resample(kept, len(work))
+    point = rounded_point(kept, sg.turning(kept), sf.turn_lobes(sg.coarse_turning(kept, noise)))
+    if point is None:
+        return None
+    return tuple((float(kept[i][0]), float(kept[i][1])) for i in point)

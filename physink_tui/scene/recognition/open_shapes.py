@@ -161,7 +161,8 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     length = sg.path_length(work)
     th = sg.turning(work)
     total_turn = float(th.sum())
-    corners = _kept_arm(work, sg.find_corners(work, every_dip=True), length)
+    found = sg.find_corners(work, every_dip=True)
+    corners = _kept_arm(work, found, length)
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     bows = [sg.chord_deviation(run) for run in runs]  # each side's, for the tests below
     straight_runs = [straight(run, noise, bow) or sg.path_length(run) < 0.06 * length
@@ -210,6 +211,9 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     point = bracket_marks.rounded_point(work, th, lobes) if len(corners) <= 3 else None
     if point is not None:  # a tick, check or v swung round its point
         return Recognition("polyline", 0.7, Polyline(tuple(_pt(work[c]) for c in point)), (("curve", 0.4),))
+    hooked = bracket_marks.unhooked_point(work, found, noise) if len(found) <= 4 else None
+    if hooked is not None:  # the same, once a hook where the pen landed or lifted is cut
+        return Recognition("polyline", 0.7, Polyline(hooked), (("curve", 0.4),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
         one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends
