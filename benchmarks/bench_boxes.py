@@ -15,7 +15,6 @@ apart. ``--misread`` lists each misread (family, pen, seed, kind). Deterministic
 
 from __future__ import annotations
 
-import argparse
 import sys
 from collections import Counter
 from pathlib import Path
@@ -25,9 +24,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np
 from bench_closed_shapes import (
-    add_seed_arguments,
     careful,
     chosen_seeds,
+    family_bench_parser,
     hurried,
     hurried_coarse,
 )
@@ -83,12 +82,7 @@ def report(results: dict[tuple[str, str], list[str | None]], title: str) -> list
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    add_seed_arguments(parser)
-    parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
-    parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
-    parser.add_argument("--misread", action="store_true", help="list every misread stroke")
-    args = parser.parse_args()
+    args = family_bench_parser(__doc__ or "").parse_args()
     families = args.families.split(",") if args.families else list(FAMILIES)
     seeds, name = chosen_seeds(args)
     results = run(families, seeds, learned=not args.rules)

@@ -228,9 +228,21 @@ def report(results: dict[tuple[str, str, bool], list[tuple[str | None, float | N
 
 def add_seed_arguments(parser: argparse.ArgumentParser) -> None:
     """``--seeds A:B`` and ``--held-back``, the seeds a pen-model bench draws (`chosen_seeds`; `bench_boxes` and
-    `bench_rounded_boxes` ask the same)."""
+    `bench_rounded_boxes` ask the same; `family_bench_parser` adds them)."""
     parser.add_argument("--seeds", help="A:B, a range of seeds (default: the tuning range 0:30)")
     parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
+
+
+def family_bench_parser(doc: str) -> argparse.ArgumentParser:
+    """The arguments of a bench that reads pen-model families of one closed shape (`bench_boxes`, `bench_triangles`):
+    the seeds (`add_seed_arguments`), ``--rules``, ``--families`` and ``--misread``; described by ``doc``'s first
+    line."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    add_seed_arguments(parser)
+    parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
+    parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
+    parser.add_argument("--misread", action="store_true", help="list every misread stroke")
+    return parser
 
 
 def chosen_seeds(args: argparse.Namespace) -> tuple[range, str]:

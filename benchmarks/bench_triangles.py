@@ -10,7 +10,6 @@ through a mouse); every stroke is read with its times. A family is right when it
 
 from __future__ import annotations
 
-import argparse
 import sys
 from collections import Counter
 from pathlib import Path
@@ -19,7 +18,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_boxes import PENS
-from bench_closed_shapes import add_seed_arguments, chosen_seeds
+from bench_closed_shapes import chosen_seeds, family_bench_parser
 from penmodels.triangle_habits import FAMILIES, drawn
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -34,12 +33,7 @@ def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    add_seed_arguments(parser)
-    parser.add_argument("--rules", action="store_true", help="the rules' reading, without the learned ranker")
-    parser.add_argument("--families", help="a comma-separated subset of the families (default: all)")
-    parser.add_argument("--misread", action="store_true", help="list every misread stroke")
-    args = parser.parse_args()
+    args = family_bench_parser(__doc__ or "").parse_args()
     families = args.families.split(",") if args.families else list(FAMILIES)
     seeds, name = chosen_seeds(args)
     print(f"#### {name}, {'rules' if args.rules else 'shipped recogniser'}", "",
