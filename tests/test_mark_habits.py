@@ -2,7 +2,8 @@
 read as a curve: the open-stroke rules keep a hook after which the stroke turns on within a tenth of the path, as a
 tick's short arm does into its round point, and the hook's turn spoils the tick's one lobe
 (`bracket_marks.rounded_point`); the learned ranker, seeing the hook, re-read the rules' tick as a curve. Now the tick
-is read once the hook is cut (`bracket_marks.unhooked_point`) and the model is not asked of it (`ranker.swung_tick`).
+is read once the hook is cut (`bracket_marks.unhooked_point`) and the model is not asked of it
+(`bracket_marks.swung_tick`).
 Drawn by the pen models (`tests/penmodels/mark_habits`, `benchmarks/bench_mark_habits.py`) and through a whole
 session, it becomes a polyline body; a question mark whose hook meets its stem at a corner stays a curve; an arc
 with a landing hook and a line with one are no tick.

@@ -67,8 +67,8 @@ def even_arc(seed: int) -> list[Point]:
 # recogniser keeps 29 of the hurried hand's 36: the model, asked where its own corner finder finds a corner, re-reads
 # the rest as curves (the lead's refit takes the rules' answer among its inputs). With the fine path's turn alone (not
 # the coarse lobe's) the hurried hand's hooks left 22 and 8. Session 23 (wt-marks): the model is not asked either once
-# a hook where the pen landed or lifted is cut (`ranker.swung_tick`, `bracket_marks.unhooked_point`): the hurried hand's
-# 37 and 36 (rules, shipped), floors two under the shipped count.
+# a hook where the pen landed or lifted is cut (`bracket_marks.swung_tick`, `bracket_marks.unhooked_point`): the
+# hurried hand's 37 and 36 (rules, shipped), floors two under the shipped count.
 SWUNG_FLOORS = {("careful", False): 40, ("hurried", False): 36, ("careful", True): 40, ("hurried", True): 34}
 
 

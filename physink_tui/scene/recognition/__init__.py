@@ -140,7 +140,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 
    lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`), and the rules'
    zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`) and a tick swung round its point (on the
-   model's own points, no corner found there, or none but a hook's, cut: `ranker.swung_tick`,
+   model's own points, no corner found there, or none but a hook's, cut: `bracket_marks.swung_tick`,
    `bracket_marks.unhooked_point`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,

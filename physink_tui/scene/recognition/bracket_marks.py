@@ -232,3 +232,20 @@ def unhooked_point(work: np.ndarray, corners: list[int], noise: float) -> tuple[
     if point is None:
         return None
     return tuple((float(kept[i][0]), float(kept[i][1])) for i in point)
+
+
+def swung_tick(work: np.ndarray, th: np.ndarray, lobes: list[float], noise: float) -> bool:
+    """Whether ``work`` (the learned ranker's points, `ranker.WORK_POINTS` of them, no corner found; ``th`` its
+    turning, ``lobes`` its `stroke_features.turn_lobes`, ``noise`` the pen's jitter in its units) is a tick swung round
+    its point (`rounded_point`) as drawn or, as the rules judge it, once a hook where the pen landed or lifted is cut
+    (`stroke_geometry.remove_hooks`): a hook curling back at an end adds its own turn to the lobe (pixelfac/user02's
+    check7: 241 degrees with its hooks, 116 without), and the rules' tick is then re-read as a curve. The ranker does
+    not ask its model about such a tick."""
+    if rounded_point(work, th, lobes) is not None:
+        return True
+    unhooked = sg.remove_hooks(work)
+    if len(unhooked) == len(work):
+        return False  # no hook cut: the same stroke, already judged
+    unhooked = sg.resample(unhooked, len(work))
+    return rounded_point(unhooked, sg.turning(unhooked),
+                         sf.turn_lobes(sg.coarse_turning(unhooked, noise))) is not None

@@ -202,7 +202,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
         out[list(CHECK_FEATURES)] = checks
         if checked_point(np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
             return None
-        if ((len(corners) == 2 and swung_tick(work, th, lobes, noise))
+        if ((len(corners) == 2 and bracket_marks.swung_tick(work, th, lobes, noise))
                 or (len(found_corners) <= 4 and bracket_marks.unhooked_point(work, found_corners, noise) is not None)):
             return None  # a tick swung round its point (a hook cut), the rules' polyline: the model is not asked either
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
@@ -236,22 +236,6 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
     if not np.isfinite(out).all():  # as np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0), only where needed
         out = np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
     return out
-
-
-def swung_tick(work: np.ndarray, th: np.ndarray, lobes: list[float], noise: float) -> bool:
-    """Whether ``work`` (the model's points, no corner found; ``th`` its turning, ``lobes`` its
-    `stroke_features.turn_lobes`, ``noise`` the pen's jitter in its units) is a tick swung round its point
-    (`bracket_marks.rounded_point`) as drawn or, as the rules judge it, once a hook where the pen landed or lifted is
-    cut (`stroke_geometry.remove_hooks`): a hook curling back at an end adds its own turn to the lobe (pixelfac/user02's
-    check7: 241 degrees with its hooks, 116 without), and the rules' tick is then re-read as a curve."""
-    if bracket_marks.rounded_point(work, th, lobes) is not None:
-        return True
-    unhooked = sg.remove_hooks(work)
-    if len(unhooked) == len(work):
-        return False  # no hook cut: the same stroke, already judged
-    unhooked = sg.resample(unhooked, WORK_POINTS)
-    return bracket_marks.rounded_point(unhooked, sg.turning(unhooked),
-                                       sf.turn_lobes(sg.coarse_turning(unhooked, noise))) is not None
 
 
 def point_balance(work: np.ndarray, corners: list[int], turns: list[float]) -> float:
