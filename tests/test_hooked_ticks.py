@@ -53,15 +53,12 @@ def _journal(pen: str, points: tuple[Point, ...], seed: int) -> tuple[JournalHea
 SESSION_TICKS = {"hurried": 4, "virtual": 2}
 
 
-@pytest.mark.parametrize("pen", ("hurried", "virtual"))
-def test_a_tick_with_a_short_first_arm_becomes_a_polyline_body_with_its_point(pen: str, tmp_path) -> None:
-    """Of five ticks (seeds 1-5), each becomes one body, and as many as `SESSION_TICKS` says a tick's: measured 4 of 5
-    by the hurried hand, 2 of 5 by the virtual pen (the thesis's uclogic tablet), whose other three the line test takes
-    for lines, as it cuts the short arm as a hook (not asked of `hooked_ticks`: asked of lines it took mmg's hooked
-    lines for ticks). On main (a9aabd6) none became a tick's body: 4 and 2 curves made no body at all, 1 and 3 lines."""
-    missed = []
-    for seed in range(1, 6):
-        mark = hooked_tick(seed)
+def session_tick_bodies(pen: str, marks: list, tmp_path) -> tuple[list[tuple[object, np.ndarray, str]], list[str]]:
+    """Each of ``marks`` drawn by ``pen`` through a whole session (journal -> replay -> project), asserted to make one
+    body: the (mark, outline, what the session told) of each that became a polyline of three points, a tick's body,
+    and a line for each that did not."""
+    ticks, missed = [], []
+    for seed, mark in enumerate(marks, start=1):
         folder = tmp_path / str(seed)
         folder.mkdir()
         project, told = replayed_project(*_journal(pen, mark.points, seed), folder)
@@ -70,15 +67,27 @@ def test_a_tick_with_a_short_first_arm_becomes_a_polyline_body_with_its_point(pe
         outline = np.asarray(bodies[0].outline, dtype=float)
         if bodies[0].shape != "polyline" or len(outline) != 3:
             missed.append(f"seed {seed}: {bodies[0].shape} of {len(outline)} points\n{told}")
-            continue
+        else:
+            ticks.append((mark, outline, told))
+    return ticks, missed
+
+
+@pytest.mark.parametrize("pen", ("hurried", "virtual"))
+def test_a_tick_with_a_short_first_arm_becomes_a_polyline_body_with_its_point(pen: str, tmp_path) -> None:
+    """Of five ticks (seeds 1-5), each becomes one body, and as many as `SESSION_TICKS` says a tick's: measured 4 of 5
+    by the hurried hand, 2 of 5 by the virtual pen (the thesis's uclogic tablet), whose other three the line test takes
+    for lines, as it cuts the short arm as a hook (not asked of `hooked_ticks`: asked of lines it took mmg's hooked
+    lines for ticks). On main (a9aabd6) none became a tick's body: 4 and 2 curves made no body at all, 1 and 3 lines."""
+    ticks, missed = session_tick_bodies(pen, [hooked_tick(seed) for seed in range(1, 6)], tmp_path)
+    for mark, outline, told in ticks:
         # a short arm and a long one, at a tick's angle (the outline is the body's, in its own units and place)
         arms = np.diff(outline, axis=0)
         short, long = sorted(np.hypot(arms[:, 0], arms[:, 1]))
         drawn_short = min(math.dist(mark.points[0], mark.points[6]), math.dist(mark.points[-1], mark.points[-7]))
         drawn_long = math.dist(mark.points[0], mark.points[-1])
-        assert abs(short / long - drawn_short / drawn_long) < 0.05, f"{pen} seed {seed}: arms {short:.3g}, {long:.3g}"
+        assert abs(short / long - drawn_short / drawn_long) < 0.05, f"{pen}: arms {short:.3g}, {long:.3g}\n{told}"
         turn = math.degrees(math.acos(float(arms[0] @ arms[1]) / (short * long)))
-        assert turn >= 60.0, f"{pen} seed {seed}: the arms turn {turn:.0f} degrees\n{told}"
+        assert turn >= 60.0, f"{pen}: the arms turn {turn:.0f} degrees\n{told}"
     assert 5 - len(missed) >= SESSION_TICKS[pen], "\n".join(missed)
 
 

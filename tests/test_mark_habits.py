@@ -21,9 +21,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 from penmodels.mark_habits import hooked_swung_tick
-from test_hooked_ticks import _journal
+from test_hooked_ticks import session_tick_bodies
 from test_open_marks import cached_rows
-from xerase_drawings import replayed_project
 
 from physink_tui.scene.recognition import bracket_marks
 from physink_tui.scene.recognition import stroke_features as sf
@@ -67,23 +66,13 @@ def test_a_hooked_swung_tick_becomes_a_polyline_body_through_its_point(pen: str,
     becomes one body and as many as `SESSION_TICKS` says a polyline of three points whose middle one is the tick's
     point: the lowest of the three, its arms meeting at a tick's angle (measured 5 of 5 by both pens; main 6b543d7: 3
     and 2, the rest curves, which make no body)."""
-    missed = []
-    for seed in range(1, 6):
-        mark = hooked_swung_tick(seed)
-        folder = tmp_path / str(seed)
-        folder.mkdir()
-        project, told = replayed_project(*_journal(pen, mark.points, seed), folder)
-        bodies = project.scene.bodies()
-        assert len(bodies) == 1, f"{pen} seed {seed}: {bodies}\n{told}"
-        outline = np.asarray(bodies[0].outline, dtype=float)
-        if bodies[0].shape != "polyline" or len(outline) != 3:
-            missed.append(f"seed {seed}: {bodies[0].shape} of {len(outline)} points\n{told}")
-            continue
+    ticks, missed = session_tick_bodies(pen, [hooked_swung_tick(seed) for seed in range(1, 6)], tmp_path)
+    for _mark, outline, told in ticks:
         arms = np.diff(outline, axis=0)
         turn = math.degrees(math.acos(float(arms[0] @ arms[1]) / float(np.hypot(*arms[0]) * np.hypot(*arms[1]))))
-        assert 45.0 <= turn <= 150.0, f"{pen} seed {seed}: the arms turn {turn:.0f} degrees\n{told}"
+        assert 45.0 <= turn <= 150.0, f"{pen}: the arms turn {turn:.0f} degrees\n{told}"
         # the point is the body's middle vertex: the lowest of the three on the canvas (y down), as the tick's is
-        assert int(np.argmax(outline[:, 1])) == 1, f"{pen} seed {seed}: {outline.tolist()}"
+        assert int(np.argmax(outline[:, 1])) == 1, f"{pen}: {outline.tolist()}\n{told}"
     assert 5 - len(missed) >= SESSION_TICKS[pen], "\n".join(missed)
 
 
