@@ -303,8 +303,11 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     if not closed:
-        work = sg.resample(sg.remove_hooks(work), n)
-        if closed_loops.polygon_left_open(work, diag):
+        unhooked = sg.remove_hooks(work)
+        if len(unhooked) < len(work):  # a hook where the pen landed or lifted left the ends apart: judged without it
+            closed, loop, ellipse = closed_loops.closed_loop(unhooked, sg.resample(unhooked, n), diag, sigma)
+        work = sg.resample(unhooked, n)
+        if not closed and closed_loops.polygon_left_open(work, diag):
             closed, loop = True, work
     if not closed:
         return _open_reading(raw, work, n, noise, sigma, weights, diag)
