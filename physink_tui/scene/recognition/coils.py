@@ -25,7 +25,8 @@ def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
     path's turning, `stroke_geometry.turning`, where already measured)."""
     th = sg.turning(work) if th is None else th
     total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    if abs(total_turn) > COILED:
+    if abs(total_turn) > COILED and abs(float(sg.turning(sg.remove_small_loops(work)).sum())) > COILED:
+        # a finger's or pen's small loop where it landed or lifted (or at a corner) is no loop of the spring
         coil = sg.resample(sg.remove_hooks(work), n)
         coil_turn = sg.turning(coil)
         if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < COIL_SHARPNESS:  # a star winds twice too
