@@ -25,22 +25,12 @@ DWELL_BREADTH = 0.4
 end goes out and back along one line, and stays (`stroke_geometry.remove_hooks` judges it)."""
 
 
-DEPARTED = 3
-"""The stroke has left a dwell where it is this many points running beyond `DWELL_RADIUS` of the end point (a finger
-settling may jump out once and come back: its contact's centre shifts by a few per cent of the stroke's size); the
-dwell ends where the way out begins, at the last point from which the stroke only draws away."""
-
-
 def _dwell(pts: np.ndarray, radius: float) -> int:
     """How many points from ``pts[0]`` on stay within ``radius`` of it, wandering there (`DWELL_PATH`), or 0."""
-    reach = np.hypot(*(pts - pts[0]).T)
-    away = reach > radius
+    away = np.hypot(*(pts - pts[0]).T) > radius
     if not away.any():
         return 0
-    gone = np.flatnonzero(np.convolve(away, np.ones(DEPARTED), mode="valid") == DEPARTED)  # out and staying out
-    out = int(gone[0]) if len(gone) else int(np.argmax(away))
-    while out > 1 and reach[out - 2] < reach[out - 1]:  # the way out, from the last point nearest the end on
-        out -= 1
+    out = int(np.argmax(away))
     if out < DWELL_POINTS:
         return 0
     extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
