@@ -7,8 +7,10 @@ Issue 25, session 24: the held-back people read circles 93.3 %. The marks are dr
 (the careful virtual pen, the hurried hand, the hurried hand through a coarse device, through a mouse and through a
 device sending 8-25 events over the whole stroke, `bench_device_stress.fast`: a circle of chords) and by the hurried
 hand through a trackpad's pointer acceleration sampled every 15-30 ms (`device_habits.acceleration`, then
-`bench_device_stress.coarse`) or over 10-25 events in all (`chords`), and through a mouse at the drawing's own size
-(`whole_pixels`), each read with its times and without. Seeds 0-29 (`TUNING_SEEDS`) were looked at while
+`bench_device_stress.coarse`) or over 10-25 events in all (`chords`), through a mouse at the drawing's own size
+(`whole_pixels`), through a finger (`bench_device_stress.finger`, `device_habits.start_blob`, `device_habits.lift_hook`)
+and through a trackpad (pointer acceleration, 10-25 events, the finger's landing and lift), each read with its times
+and without. Seeds 0-29 (`TUNING_SEEDS`) were looked at while
 designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
 """
 
@@ -24,13 +26,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 import bench_open_marks
 import bench_round_habits
-from bench_device_stress import Stroke, chain, coarse, events
+from bench_device_stress import Stroke, chain, coarse, events, finger
 from bench_open_marks import Drawn
-from bench_device_stress import finger
 from device_habits import acceleration, lift_hook, start_blob
 from penmodels.circle_habits import EXPECTED, FAMILIES
 from penmodels.open_marks import Mark
-
 
 
 def chords(stroke: Stroke, rng: np.random.Generator) -> Stroke:
@@ -43,7 +43,7 @@ def whole_pixels(stroke: Stroke, rng: np.random.Generator) -> Stroke:
     """A mouse at the drawing's own size: an event every 8 ms (125 Hz), each at a whole pixel, an event that did not
     move left out (`bench_device_stress.stairs` scales the drawing to 60-200 px first, so a small circle is no longer
     small)."""
-    pts, t = events(1)(stroke, rng) if len(stroke[0]) < 2 else stroke
+    pts, t = stroke
     clock = np.arange(len(pts)) * 0.01 if t is None else np.maximum.accumulate(t)
     when = np.arange(clock[0], clock[-1], 0.008)
     when = np.append(when, clock[-1]) if clock[-1] - when[-1] > 1e-9 else when

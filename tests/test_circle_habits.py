@@ -1,6 +1,6 @@
 """Issue 25, session 24: circles and ovals drawn small, flat, lumpy, gone round again, with a tail, left open as a
-spiral's turn, pointed where the ends meet or flat on one side (`tests/penmodels/circle_habits`), drawn by the pen models
-through poor devices (a slow sampler's chords, a mouse, pointer acceleration, a finger, a trackpad:
+spiral's turn, pointed where the ends meet or flat on one side (`tests/penmodels/circle_habits`), drawn by the pen
+models through poor devices (a slow sampler's chords, a mouse, pointer acceleration, a finger, a trackpad:
 `benchmarks/bench_circle_habits.py`), read as circles or ellipses.
 
 Floors were measured on the held seeds (1000-1029), read once, at the end; each is this branch's figure.

@@ -78,7 +78,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    misses it by more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a
    circle back too), is offered no circle or ellipse
    (`closed_loops.no_round_shape`); a stroke whose tails cross each other near its ends is closed however far apart
-   its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner).
+   its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner), and one whose ends a hook
+   where the pen landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px
+   circle's hook of a few pixels is a fifth of its size; a pigtail's tails cross).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse; or fitting one once a lead from inside or an end curled in
    past the start, lying inside it, is cut: `round_cores`), a polyline (straight sides, or bowed sides meeting at

@@ -21,8 +21,9 @@ their turning in the sharpest fifth)."""
 
 def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
                       th: np.ndarray | None = None) -> Recognition | None:
-    """A spring (loops advancing along an axis, turning smoothly) or a scribble back and forth, else None (``th``: the
-    path's turning, `stroke_geometry.turning`, where already measured)."""
+    """A spring (loops advancing along an axis, turning smoothly, `COILED` far without its small loops:
+    `stroke_geometry.remove_small_loops`) or a scribble back and forth, else None (``th``: the path's turning,
+    `stroke_geometry.turning`, where already measured)."""
     th = sg.turning(work) if th is None else th
     total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
     if abs(total_turn) > COILED and abs(float(sg.turning(sg.remove_small_loops(work)).sum())) > COILED:
