@@ -1,5 +1,5 @@
-"""Benchmark: circles and ovals drawn small, flat, lumpy, gone round again, with a tail or left open as a spiral's turn
-(`tests/penmodels/circle_habits`), drawn by the pen models through poor devices, read as circles or ellipses.
+"""Benchmark: circles and ovals drawn small, flat, lumpy, gone round again, with a tail, left open as a spiral's turn,
+pointed where the ends meet or flat on one side (`tests/penmodels/circle_habits`), drawn by the pen models through poor devices, read as circles or ellipses.
 
 Usage: .venv/bin/python benchmarks/bench_circle_habits.py [--seeds tune|held|all] [--rules] [--family NAME]
 
@@ -10,8 +10,8 @@ hand through a trackpad's pointer acceleration sampled every 15-30 ms (`device_h
 `bench_device_stress.coarse`) or over 10-25 events in all (`chords`), through a mouse at the drawing's own size
 (`whole_pixels`), through a finger (`bench_device_stress.finger`, `device_habits.start_blob`, `device_habits.lift_hook`)
 and through a trackpad (pointer acceleration, 10-25 events, the finger's landing and lift), each read with its times
-and without. Seeds 0-29 (`TUNING_SEEDS`) were looked at while
-designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
+and without. Seeds 0-29 (`TUNING_SEEDS`) were looked at while designing; 1000-1029 (`HELD_SEEDS`) were read once, at
+the end.
 """
 
 from __future__ import annotations
