@@ -281,6 +281,16 @@ CLOSED_GAP = 0.2
 """A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
 
 
+def hook_kept_apart(work: np.ndarray, unhooked: np.ndarray, diag: float, sigma: float) -> bool:
+    """Whether a stroke's ends meet (within `CLOSED_GAP` of its size, or four noise widths) once the hooks where the
+    pen landed or lifted are cut (``unhooked``, `stroke_geometry.remove_hooks` of ``work``), and the rest does not
+    cross itself (a pigtail's tails cross): a 10-30 px circle's hook of a few pixels is a fifth of its size."""
+    if len(unhooked) == len(work):
+        return False
+    gap = float(np.hypot(*(unhooked[-1] - unhooked[0])))
+    return gap <= max(CLOSED_GAP * diag, 4 * sigma) and not crosses_itself(unhooked)
+
+
 def ends_cross(work: np.ndarray, diag: float) -> bool:
     """Whether the stroke's ends ran on past each other after closing it: its path crosses itself where each end's
     tail beyond the crossing is no longer than the gap a closed stroke's ends may leave (`CLOSED_GAP` of its size):

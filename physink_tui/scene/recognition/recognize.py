@@ -304,9 +304,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     if not closed:
         unhooked = sg.remove_hooks(work)
-        if len(unhooked) < len(work) and not closed_loops.crosses_itself(unhooked):
-            # a hook where the pen landed or lifted left a loop's ends apart: judged without it (a pigtail's
-            # tails cross)
+        if closed_loops.hook_kept_apart(work, unhooked, diag, sigma):
             closed, loop, ellipse = closed_loops.closed_loop(unhooked, sg.resample(unhooked, n), diag, sigma)
         work = sg.resample(unhooked, n)
         if not closed and closed_loops.polygon_left_open(work, diag):
