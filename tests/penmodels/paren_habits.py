@@ -1,0 +1,100 @@
+"""Parentheses as people and devices not seen draw them (issue 25, session 24): one bow, shallow or deep, round or
+flat in the middle, small or large, with or without a hook where the pen landed or lifted; in canvas pixels, seeded,
+no noise (the pens draw them: `penmodels.hurried`, the virtual pen; `benchmarks/bench_paren_habits.py`)."""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Callable
+
+from penmodels.open_marks import Mark, Point, _arc, _placed
+
+EXPECTED = ("arc", "curve")
+"""The kinds a parenthesis may be read as (benchmarks/label_kinds.tsv, laviola: one smooth open bow, an arc, or a
+curve where it bends unevenly)."""
+
+
+def _round_bow(sweep: float, height: float) -> list[Point]:
+    """A circular bow turning ``sweep`` radians (y down, from its top down, bulging to -x: a left parenthesis), 48
+    points, ``height`` tall (its chord up to a half turn, its diameter past one); 60 degrees stand off the chord 0.13
+    of it, 120 degrees 0.29."""
+    r = height / (2 * math.sin(sweep / 2)) if sweep <= math.pi else height / 2
+    start = math.pi + sweep / 2  # y down: from above the centre's left, anticlockwise on screen through its left
+    pts = [(r * math.cos(start), r * math.sin(start))]
+    pts += _arc((0.0, 0.0), r, start, -sweep, 48)
+    return [(x, -y) for x, y in pts]
+
+
+def _flat_bow(rng: random.Random, depth: float, height: float) -> list[Point]:
+    """A bow flatter in its middle than a circle's, ``depth`` deep: x = -depth (1 - |u|^p), p 2.5-4.5 (a depth of 0.1
+    of the height turns it 60-80 degrees, 0.35 of it 120-150), its deepest point up to a fifth of the height off its
+    middle."""
+    p = rng.uniform(2.5, 4.5)
+    shift = rng.uniform(-0.2, 0.2)
+    pts = []
+    for k in range(49):
+        t = 1 - 2 * k / 48  # the top (t = 1) down to the bottom
+        u = (t - shift) / (1 - shift) if t >= shift else (t - shift) / (1 + shift)
+        pts.append((-depth * (1 - abs(u) ** p), -t * height / 2))
+    return pts
+
+
+def _bow(rng: random.Random, low: float, high: float, sweeps: tuple[float, float],
+         depths: tuple[float, float]) -> list[Point]:
+    """A parenthesis' bow ``low``-``high`` px tall: round half the time, turning ``sweeps`` degrees, else flat in the
+    middle, ``depths`` of its height deep."""
+    height = rng.uniform(low, high)
+    if rng.random() < 0.5:
+        return _round_bow(math.radians(rng.uniform(*sweeps)), height)
+    return _flat_bow(rng, rng.uniform(*depths) * height, height)
+
+
+def _hook(rng: random.Random, pts: list[Point]) -> list[Point]:
+    """``pts`` with a hook before their first point, where the pen landed moving: 2-6 px and 2-6 % of the path more,
+    turning 60-160 degrees into the bow's start, curling either way (on round the bow or against it)."""
+    path = sum(math.dist(a, b) for a, b in zip(pts, pts[1:], strict=False))
+    reach = rng.uniform(2.0, 6.0) + rng.uniform(0.02, 0.06) * path
+    (x0, y0), (x1, y1) = pts[0], pts[3]
+    heading = math.atan2(y1 - y0, x1 - x0)
+    bend = math.radians(rng.uniform(60, 160)) * rng.choice((-1.0, 1.0))
+    back = [pts[0]]
+    for k in range(1, 9):  # walking back from the bow's start, turning away from its heading
+        a = heading + math.pi + bend * k / 8
+        back.append((back[-1][0] + reach / 8 * math.cos(a), back[-1][1] + reach / 8 * math.sin(a)))
+    return back[:0:-1] + pts
+
+
+def _hooked(rng: random.Random, pts: list[Point]) -> list[Point]:
+    """``pts`` with a landing hook at their start, and a lifting hook at their end a third of the time."""
+    pts = _hook(rng, pts)
+    if rng.random() < 1 / 3:
+        pts = _hook(rng, pts[::-1])[::-1]
+    return pts
+
+
+def _paren(name: str, low: float, high: float, sweeps: tuple[float, float], depths: tuple[float, float],
+           hooked: bool) -> Callable[[int], Mark]:
+    def family(seed: int) -> Mark:
+        rng = random.Random(f"{name}:{seed}")
+        pts = _bow(rng, low, high, sweeps, depths)
+        if hooked:
+            pts = _hooked(rng, pts)
+        return Mark(name, _placed(rng, pts, False), True)
+    family.__doc__ = (f"A parenthesis {low:g}-{high:g} px tall, round turning {sweeps[0]:g}-{sweeps[1]:g} degrees or "
+                      f"flat in the middle {depths[0]:g}-{depths[1]:g} of its height deep (`_bow`)"
+                      f"{', with a landing hook (`_hooked`)' if hooked else ''}; left or right, drawn from either end, "
+                      "turned up to 12 degrees.")
+    return family
+
+
+FAMILIES: dict[str, Callable[[int], Mark]] = {
+    "shallow-paren": _paren("shallow-paren", 60, 320, (60, 120), (0.1, 0.2), False),
+    "deep-paren": _paren("deep-paren", 60, 320, (120, 200), (0.2, 0.35), False),
+    "small-paren": _paren("small-paren", 15, 60, (60, 200), (0.1, 0.35), False),
+    "hooked-paren": _paren("hooked-paren", 60, 320, (60, 200), (0.1, 0.35), True),
+    "small-hooked-paren": _paren("small-hooked-paren", 15, 60, (60, 200), (0.1, 0.35), True),
+}
+"""The families: shallow (round 60-120 degrees, flat 0.1-0.2 of the height deep) and deep (120-200 degrees, 0.2-0.35)
+bows 60-320 px tall, small ones 15-60 px, and each size with a hook where the pen landed (and lifted, a third of the
+time); the hurried pens add their own small hooks."""
