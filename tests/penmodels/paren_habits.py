@@ -26,11 +26,12 @@ def _round_bow(sweep: float, height: float) -> list[Point]:
     return [(x, -y) for x, y in pts]
 
 
-def _flat_bow(rng: random.Random, depth: float, height: float) -> list[Point]:
-    """A bow flatter in its middle than a circle's, ``depth`` deep: x = -depth (1 - |u|^p), p 2.5-4.5 (a depth of 0.1
-    of the height turns it 60-80 degrees, 0.35 of it 120-150), its deepest point up to a fifth of the height off its
-    middle."""
-    p = rng.uniform(2.5, 4.5)
+def _flat_bow(rng: random.Random, turn: float, height: float) -> list[Point]:
+    """A bow flatter in its middle than a circle's, turning ``turn`` radians: x = -depth (1 - |u|^p), p 2.5-4, its ends
+    heading ``turn / 2`` off the upright (at most 60 degrees: flatter still, with ends swept nearly level, it is a
+    square bracket rounded at its corners), its deepest point up to a fifth of the height off its middle."""
+    p = rng.uniform(2.5, 4.0)
+    depth = math.tan(min(turn / 2, math.radians(60))) * height / (2 * p)
     shift = rng.uniform(-0.2, 0.2)
     pts = []
     for k in range(49):
@@ -40,14 +41,30 @@ def _flat_bow(rng: random.Random, depth: float, height: float) -> list[Point]:
     return pts
 
 
-def _bow(rng: random.Random, low: float, high: float, sweeps: tuple[float, float],
-         depths: tuple[float, float]) -> list[Point]:
-    """A parenthesis' bow ``low``-``high`` px tall: round half the time, turning ``sweeps`` degrees, else flat in the
-    middle, ``depths`` of its height deep."""
+def _bow(rng: random.Random, low: float, high: float, sweeps: tuple[float, float]) -> list[Point]:
+    """A parenthesis' bow ``low``-``high`` px tall turning ``sweeps`` degrees: round half the time, else flat in the
+    middle (turning at most 120 degrees)."""
     height = rng.uniform(low, high)
-    if rng.random() < 0.5:
-        return _round_bow(math.radians(rng.uniform(*sweeps)), height)
-    return _flat_bow(rng, rng.uniform(*depths) * height, height)
+    sweep = math.radians(rng.uniform(*sweeps))
+    return _round_bow(sweep, height) if rng.random() < 0.5 else _flat_bow(rng, sweep, height)
+
+
+def _lopsided_bow(rng: random.Random, low: float, high: float, sweeps: tuple[float, float]) -> list[Point]:
+    """A bow ``low``-``high`` px tall whose deepest point lies 0.15-0.35 of its height from one end (x = -depth (1 -
+    |u|^p), p 1.6-2.6, u running from -1 at the near end through 0 at the deepest point to 1 at the far one: the near
+    part curls tightly, the far part is a long, gentle sweep), turning about ``sweeps`` degrees in all."""
+    height = rng.uniform(low, high)
+    turn = math.radians(rng.uniform(*sweeps))
+    p = rng.uniform(1.6, 2.6)
+    near = rng.uniform(0.15, 0.35)  # the deepest point's place, as a share of the height from the top
+    # the near end heads steepest: tan(heading) = depth p / (near height); half the turn is done by each side at most
+    depth = math.tan(min(turn / 2, math.radians(70))) * near * height / p
+    pts = []
+    for k in range(49):
+        y = height * k / 48  # the top down
+        u = (y - near * height) / (near * height) if y < near * height else (y - near * height) / ((1 - near) * height)
+        pts.append((-depth * (1 - abs(u) ** p), y - height / 2))
+    return pts
 
 
 def _hook(rng: random.Random, pts: list[Point]) -> list[Point]:
@@ -73,28 +90,38 @@ def _hooked(rng: random.Random, pts: list[Point]) -> list[Point]:
     return pts
 
 
-def _paren(name: str, low: float, high: float, sweeps: tuple[float, float], depths: tuple[float, float],
-           hooked: bool) -> Callable[[int], Mark]:
+def _paren(name: str, low: float, high: float, sweeps: tuple[float, float], hooked: bool) -> Callable[[int], Mark]:
     def family(seed: int) -> Mark:
         rng = random.Random(f"{name}:{seed}")
-        pts = _bow(rng, low, high, sweeps, depths)
+        pts = _bow(rng, low, high, sweeps)
         if hooked:
             pts = _hooked(rng, pts)
         return Mark(name, _placed(rng, pts, False), True)
-    family.__doc__ = (f"A parenthesis {low:g}-{high:g} px tall, round turning {sweeps[0]:g}-{sweeps[1]:g} degrees or "
-                      f"flat in the middle {depths[0]:g}-{depths[1]:g} of its height deep (`_bow`)"
+    family.__doc__ = (f"A parenthesis {low:g}-{high:g} px tall turning {sweeps[0]:g}-{sweeps[1]:g} degrees, round or "
+                      "flat in the middle (`_bow`)"
                       f"{', with a landing hook (`_hooked`)' if hooked else ''}; left or right, drawn from either end, "
                       "turned up to 12 degrees.")
     return family
 
 
+def lopsided_paren(seed: int) -> Mark:
+    """A parenthesis 40-320 px tall curling tightly near one end and sweeping gently the rest of the way
+    (`_lopsided_bow`, 60-160 degrees), a landing hook half the time (`_hooked`); left or right, drawn from either end,
+    turned up to 12 degrees."""
+    rng = random.Random(f"lopsided-paren:{seed}")
+    pts = _lopsided_bow(rng, 40, 320, (60, 160))
+    if rng.random() < 0.5:
+        pts = _hooked(rng, pts)
+    return Mark("lopsided-paren", _placed(rng, pts, False), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
-    "shallow-paren": _paren("shallow-paren", 60, 320, (60, 120), (0.1, 0.2), False),
-    "deep-paren": _paren("deep-paren", 60, 320, (120, 200), (0.2, 0.35), False),
-    "small-paren": _paren("small-paren", 15, 60, (60, 200), (0.1, 0.35), False),
-    "hooked-paren": _paren("hooked-paren", 60, 320, (60, 200), (0.1, 0.35), True),
-    "small-hooked-paren": _paren("small-hooked-paren", 15, 60, (60, 200), (0.1, 0.35), True),
+    "shallow-paren": _paren("shallow-paren", 60, 320, (60, 120), False),
+    "deep-paren": _paren("deep-paren", 60, 320, (120, 200), False),
+    "small-paren": _paren("small-paren", 15, 60, (60, 200), False),
+    "hooked-paren": _paren("hooked-paren", 60, 320, (60, 200), True),
+    "small-hooked-paren": _paren("small-hooked-paren", 15, 60, (60, 200), True),
+    "lopsided-paren": lopsided_paren,
 }
-"""The families: shallow (round 60-120 degrees, flat 0.1-0.2 of the height deep) and deep (120-200 degrees, 0.2-0.35)
-bows 60-320 px tall, small ones 15-60 px, and each size with a hook where the pen landed (and lifted, a third of the
+"""The families: shallow (60-120 degrees) and deep (120-200 degrees) bows 60-320 px tall, small ones 15-60 px, and each size with a hook where the pen landed (and lifted, a third of the
 time); the hurried pens add their own small hooks."""
