@@ -51,6 +51,10 @@ SWUNG_ARC = 0.15
 """... and a circle explains its bow no better than this share of the line's error (`fit_circle`'s farthest point
 against the fitted line's): a bow a circle fits closer is an arc drawn so (arcs of 40-60 degrees by the stroke
 generator: 0.03-0.09 at the 10th-90th percentile; gtiwari's mouse-swung lines 0.16-0.78)."""
+SWUNG_WOBBLE = 1.0
+"""... beyond this many of the pen's noise widths (its stated noise): the circle's farthest miss on the smoothed points
+is the pen's wobble at most, however small the stroke (a parenthesis 20-60 px tall bows 2-8 px, its circle missing by
+0.5-1 px, `benchmarks/bench_paren_habits.py`; gtiwari's swung lines, hundreds of px long, miss by several px)."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
@@ -181,8 +185,10 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
     middle = coarse[len(coarse) // 5: len(coarse) - len(coarse) // 5]
     if sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= SWUNG_POINT_DEG:
         return False
-    bow = lines.without_hooked_ends(coarse, noise if pen is None else pen)  # a hook where the pen landed is no swing
+    own = noise if pen is None else pen
+    bow = lines.without_hooked_ends(coarse, own)  # a hook where the pen landed is no swing
     centre, radius, _ = fit_circle(bow)
     if not math.isfinite(radius):
         return True  # straight enough that no circle fits
-    return float(np.abs(np.hypot(*(bow - centre).T) - radius).max()) >= SWUNG_ARC * stray * length
+    # the pen's own wobble is no swing: a circle missing the bow by no more than that explains it
+    return float(np.abs(np.hypot(*(bow - centre).T) - radius).max()) >= SWUNG_ARC * stray * length + SWUNG_WOBBLE * own
