@@ -123,5 +123,6 @@ FAMILIES: dict[str, Callable[[int], Mark]] = {
     "small-hooked-paren": _paren("small-hooked-paren", 15, 60, (60, 200), True),
     "lopsided-paren": lopsided_paren,
 }
-"""The families: shallow (60-120 degrees) and deep (120-200 degrees) bows 60-320 px tall, small ones 15-60 px, and each size with a hook where the pen landed (and lifted, a third of the
-time); the hurried pens add their own small hooks."""
+"""The families: shallow (60-120 degrees) and deep (120-200 degrees) bows 60-320 px tall, small ones 15-60 px, and
+each size with a hook where the pen landed (and lifted, a third of the time), and lopsided bows curling near one end;
+the hurried pens add their own small hooks."""

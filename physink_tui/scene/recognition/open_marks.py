@@ -175,8 +175,8 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
     would be an arc: `ONE_WAY`), its heading turns less than `SWUNG_TURN_DEG` end to end, its middle has no point
     (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`, and beyond the pen's own wobble: `SWUNG_WOBBLE`).
     What a person does: a long diagonal drawn with a mouse, or a quick stroke of a wrist, pivots and corrects; a
-    reader still sees a line, not a curve. A hook where the pen landed or lifted (its reach in the pen's stated noise ``pen``, ``noise`` where not given) is left out of the
-    circle's fit (`lines.without_hooked_ends`)."""
+    reader still sees a line, not a curve. A hook where the pen landed or lifted (its reach in the pen's stated noise
+    ``pen``, ``noise`` where not given) is left out of the circle's fit (`lines.without_hooked_ends`)."""
     if stray >= SWUNG_STRAY or ink >= SWUNG_INK:
         return False  # checked first: most strokes are far from straight
     th = sg.coarse_turning(coarse, noise)
