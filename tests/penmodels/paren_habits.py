@@ -4,6 +4,7 @@ no noise (the pens draw them: `penmodels.hurried`, the virtual pen; `benchmarks/
 
 from __future__ import annotations
 
+import itertools
 import math
 import random
 from collections.abc import Callable
@@ -70,7 +71,7 @@ def _lopsided_bow(rng: random.Random, low: float, high: float, sweeps: tuple[flo
 def _hook(rng: random.Random, pts: list[Point]) -> list[Point]:
     """``pts`` with a hook before their first point, where the pen landed moving: 2-6 px and 2-6 % of the path more,
     turning 60-160 degrees into the bow's start, curling either way (on round the bow or against it)."""
-    path = sum(math.dist(a, b) for a, b in zip(pts, pts[1:], strict=False))
+    path = sum(math.dist(a, b) for a, b in itertools.pairwise(pts))
     reach = rng.uniform(2.0, 6.0) + rng.uniform(0.02, 0.06) * path
     (x0, y0), (x1, y1) = pts[0], pts[3]
     heading = math.atan2(y1 - y0, x1 - x0)
