@@ -101,9 +101,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    9 % of its length) is a line (`open_marks.swung_line`). Beside a really sharp corner, a bend under
    `open_shapes.SHARP_CORNER` is an arm's wobble whose roundness does not make the mark round
    (`open_shapes._roundest_corner`). Marks these rules misjudge (`bracket_marks`): a square bracket with one corner
-   rounded off (one sharp corner, half a turn one way, a straight spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
-   were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
-   halfway along, the stroke on one side of that line), is not a polyline; a tick, check or v swung round its point
+   rounded off (one sharp corner, half a turn one way, a straight spine) is a polyline through its rounded corner
+   too; a brace whose point is a small loop, or whose curls or point were taken for corners between straight sides
+   (its farthest point from its ends' line a shallow point about halfway along, the stroke on one side of that
+   line), is not a polyline; a tick, check or v swung round its point
    (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`), also once a hook where
    the pen landed or lifted, found as a corner within a tenth of the path from an end, is cut
