@@ -267,7 +267,8 @@ def swung_tick(work: np.ndarray, th: np.ndarray, lobes: list[float], noise: floa
     its point (`rounded_point`) as drawn or, as the rules judge it, once a hook where the pen landed or lifted is cut
     (`stroke_geometry.remove_hooks`): a hook curling back at an end adds its own turn to the lobe (pixelfac/user02's
     check7: 241 degrees with its hooks, 116 without), and the rules' tick is then re-read as a curve. The ranker does
-    not ask its model about such a tick."""
+    not ask its model about such a tick, but for one whose long arm curls on round the bend (`curling_arm`: a lopsided
+    parenthesis, a curve)."""
     point = rounded_point(work, th, lobes)
     if point is not None:
         return not curling_arm(work, point)

@@ -54,9 +54,9 @@ generator: 0.03-0.09 at the 10th-90th percentile; gtiwari's mouse-swung lines 0.
 SWUNG_WOBBLE = 1.5
 """... nor, whatever the bow's size, by less than this many of the pen's noise widths (its stated noise): a circle
 missing a bow by no more than the pen's own wobble explains it. Parentheses 15-60 px tall bow a few pixels, and the
-circle misses the hurried hand's by 0.5-1.5 px (`benchmarks/bench_paren_habits.py`); of the 53 design and fourth-group
-strokes `swung_line` takes, the circle misses every one by 2.4 noise widths or more (mmg:10's fast stylus line 2.4,
-gtiwari's mouse lines 3.1 and more)."""
+circle misses the hurried hand's by 0.5-2 px, most under 1.5 (`benchmarks/bench_paren_habits.py`); of the 53 design
+and fourth-group strokes `swung_line` takes, the circle misses every one by 2.4 noise widths or more (mmg:10's fast
+stylus line 2.4, gtiwari's mouse lines 3.1 and more)."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
