@@ -78,8 +78,9 @@ def _drawn_open(pen: str, chain: list[Point], seed: int):
 @pytest.mark.parametrize("pen", ("hurried", "virtual"))
 @pytest.mark.parametrize("name", LEFT_OPEN)
 def test_a_box_left_open_by_part_of_a_side_is_a_box_through_a_session(pen: str, name: str, tmp_path) -> None:
-    """Polylines at main 40b8114: the ends 0.43-0.49 of the size apart, past the 0.42 a polygon of any sides may be
-    left open by (`closed_loops.polygon_left_open`)."""
+    """Polylines at main 40b8114: the half side drawn is a tenth of the path, cut as a hook (`remove_hooks`), and the
+    box begun mid-wall has its ends 0.49 of its size apart, past the 0.42 a polygon of any sides may be left open by
+    (`closed_loops.polygon_left_open`)."""
     for scale in (0.75, 1.0):
         for seed in (1, 2):
             chain = [(CENTRE[0] + x * scale, CENTRE[1] + y * scale) for x, y in LEFT_OPEN[name]]
