@@ -205,7 +205,8 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         once = loop if back else None
     if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
-    if once is not None and abs(float(th.sum())) > TWICE_ROUND and _beside(work, once, diag):
+    if (once is not None and abs(float(th.sum())) > TWICE_ROUND and self_crossings(work) < STAR_CROSSINGS
+            and _beside(work, once, diag)):
         return True, once, None  # gone round again beside the first lap, not over it: the first lap is the shape
     n = len(work)
     gap = float(np.hypot(*(raw[-1] - raw[0])))
@@ -270,6 +271,11 @@ end is no crossing)."""
 
 def crosses_itself(work: np.ndarray) -> bool:
     """Whether an open path crosses itself (judged on `CROSSING_POINTS` points along it)."""
+    return self_crossings(work) > 0
+
+
+def self_crossings(work: np.ndarray) -> int:
+    """How many times an open path crosses itself (judged on `CROSSING_POINTS` points along it)."""
     a = sg.resample(work, CROSSING_POINTS)
     i, j = np.triu_indices(len(a) - 1, 2)
     p, r, q, s = a[i], a[i + 1] - a[i], a[j], a[j + 1] - a[j]
@@ -278,7 +284,7 @@ def crosses_itself(work: np.ndarray) -> bool:
     with np.errstate(divide="ignore", invalid="ignore"):
         t = (qp[:, 0] * s[:, 1] - qp[:, 1] * s[:, 0]) / den
         u = (qp[:, 0] * r[:, 1] - qp[:, 1] * r[:, 0]) / den
-    return bool(np.any((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1)))
+    return int(np.count_nonzero((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1)))
 
 
 TWICE_ROUND = 3.0 * math.pi
@@ -286,7 +292,8 @@ TWICE_ROUND = 3.0 * math.pi
 (`_once_round`) is that lap, the rest a second lap drawn beside it (a box gone round twice, the second lap a tenth of
 its size out: hcira shriyansnidhish s02 rectangle01, `penmodels.box_slips` ``laps-apart``); a second lap drawn over
 the first is `stroke_features.retraced`, a spiral is `coils.helix_or_scribble`'s before this is asked, a star drawn
-crossing itself does not come back once round, and the second lap must lie beside the first (`_beside`)."""
+crossing itself crosses itself `STAR_CROSSINGS` times or more (people's pentagrams come back once round, and lie
+within `CLOSED_GAP` of it), and the second lap must lie beside the first (`_beside`)."""
 CLOSED_GAP = 0.2
 """A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
 
