@@ -24,6 +24,10 @@ last side keeps 0.35-0.6 of it)."""
 RUN_PAST = 0.25
 """The first or last side may run past the fourth corner by this share of itself (the pen lifting on past the corner
 of a box begun mid-wall: itt Bam33751 rectangle_09); further, the ends cross, which `closed_loops.ends_cross` reads."""
+LEAST_TURN = 0.4 * math.pi
+"""The path of a box left open turns one way at three corners, each within `CORNER_SLACK_DEG` of square: at least
+three times 55 degrees, less what a hook at an end may undo (`closed_loops.LEFT_OPEN_WOBBLE`, a quarter turn); a
+zig-zag or a wave turns back and forth, netting less. Asked first, before any corner is looked for."""
 KEPT_END = 0.03
 """A run at an end of the stroke as short as this share of the path is a stub, not a side (`four_sides`): a box's last
 side drawn for a third of a short side of a 2.5:1 box is 0.05 of the path, under the 0.07 the polygons left open
@@ -79,6 +83,8 @@ def box_left_open(work: np.ndarray, diag: float) -> bool:
     False
     """
     if sg.path_length(work) < 1.75 * diag or sf.closure(work, diag) >= LEFT_OPEN_CLOSURE:
+        return False
+    if abs(float(sg.turning(work).sum())) < LEAST_TURN:
         return False
     runs = four_sides(work)
     if runs is None:

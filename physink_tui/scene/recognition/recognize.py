@@ -304,11 +304,13 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     if not closed:
-        hooked, work = work, sg.resample(sg.remove_hooks(work), n)
+        hooked, unhooked = work, sg.remove_hooks(work)
+        work = sg.resample(unhooked, n)
         if closed_loops.polygon_left_open(work, diag):
             closed, loop = True, work
         else:  # a box left open by part of a side (that part may be short enough to be cut as a hook)
-            left_open = next((w for w in (work, hooked) if open_boxes.box_left_open(w, diag)), None)
+            ways = (work, hooked) if len(unhooked) != len(hooked) else (work,)
+            left_open = next((w for w in ways if open_boxes.box_left_open(w, diag)), None)
             if left_open is not None:
                 closed, loop = True, left_open
     if not closed:
