@@ -141,3 +141,14 @@ def test_a_scribble_whose_first_loop_comes_back_is_no_lap() -> None:
     if file is None:
         pytest.skip("the squiggle is not in the cached quickdraw set")
     assert recognize_stroke(*_stroke(rows[file])).kind == "curve"
+
+
+def test_a_square_spiral_is_no_box_gone_round_twice() -> None:
+    """A tutorboard sample labelled "negative" (fourth group: design material): a spiral drawn square, two and a quarter
+    laps inward, each beside the last. A curve at main 40b8114; the two-laps rule read it as a box until it stopped at
+    `closed_loops.SPIRAL_TURN`."""
+    rows = cached_rows("public-sets/tutorboard.jsonl")
+    file = next((f for f in rows if f.endswith("captured-chromium-v1/corpus.json.gz#168")), None)
+    if file is None:
+        pytest.skip("the square spiral is not in the cached tutorboard set")
+    assert recognize_stroke(*_stroke(rows[file])).kind != "box"

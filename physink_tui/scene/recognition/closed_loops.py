@@ -205,7 +205,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         once = loop if back else None
     if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
-    if (once is not None and abs(float(th.sum())) > TWICE_ROUND and self_crossings(work) < STAR_CROSSINGS
+    if (once is not None and TWICE_ROUND < abs(float(th.sum())) < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
             and _beside(work, once, diag)):
         return True, once, None  # gone round again beside the first lap, not over it: the first lap is the shape
     n = len(work)
@@ -294,6 +294,10 @@ its size out: hcira shriyansnidhish s02 rectangle01, `penmodels.box_slips` ``lap
 the first is `stroke_features.retraced`, a spiral is `coils.helix_or_scribble`'s before this is asked, a star drawn
 crossing itself crosses itself `STAR_CROSSINGS` times or more (people's pentagrams come back once round, and lie
 within `CLOSED_GAP` of it), and the second lap must lie beside the first (`_beside`)."""
+SPIRAL_TURN = 4.5 * math.pi
+"""A stroke turning one way this far is past two laps and a quarter of a third: a spiral drawn square (a tutorboard
+sample labelled "negative" turns 4.58 pi, each lap inside the last), not a box gone round twice (`TWICE_ROUND`; the
+pen models' ``laps-apart`` boxes turn 3.0-4.3 pi, hooks and all)."""
 CLOSED_GAP = 0.2
 """A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
 
