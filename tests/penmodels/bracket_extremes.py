@@ -1,6 +1,6 @@
 """Square brackets at the edges of how people draw them (issue 25: the held-back people read brackets 89-90 %), the
 habits `bracket_habits` and `mouse_habits` leave out: both arms leaning in past square (the heading sweeps 207-243
-degrees), both leaning out as a trapezoid's sides do, corners rounded over the whole arm, tiny brackets, a kinked
+degrees), sharp or swung round, both leaning out as a trapezoid's sides do, corners rounded over the whole arm, tiny brackets, a kinked
 spine, arms of very unequal length; in canvas pixels, seeded; no motion, no noise (the pens draw them:
 `benchmarks/bench_bracket_extremes.py`)."""
 
@@ -13,7 +13,7 @@ from collections.abc import Callable
 from penmodels.bracket_habits import _bracket, _corner_radii, _frame, _verts
 from penmodels.open_marks import Mark, Point, _placed
 
-EXPECTED = {"swept-past-bracket": "polyline", "splayed-trapezoid-bracket": "polyline",
+EXPECTED = {"swept-past-bracket": "polyline", "swept-round-bracket": "polyline", "splayed-trapezoid-bracket": "polyline",
             "whole-arm-rounded-bracket": "polyline", "tiny-bracket": "polyline", "kinked-spine-bracket": "polyline",
             "lopsided-arm-bracket": "polyline"}
 """The kind each family is read as (benchmarks/label_kinds.tsv: a square bracket is three straight sides, a
@@ -29,6 +29,18 @@ def swept_past_bracket(seed: int) -> Mark:
     tilts = (rng.uniform(14, 31), rng.uniform(14, 31))
     pts = _bracket(_verts(h, a1, a2, *tilts), _corner_radii(rng, a1, a2, 0.4), (0.0, rng.uniform(-0.02, 0.02), 0.0))
     return Mark("swept-past-bracket", _placed(rng, pts, rng.random() < 0.5), True)
+
+
+def swept_round_bracket(seed: int) -> Mark:
+    """A bracket whose arms both lean in 14-31 degrees past square and whose corners a mouse or a hurried hand swings
+    round over 0.4-0.8 of each arm (the heading sweeps 207-243 degrees, on the smoothed stroke 200-240, with no sharp
+    corner to find), arms 0.2-0.45 of the spine."""
+    rng = random.Random(f"swept-round-bracket:{seed}")
+    h, a1, a2 = _frame(rng, (0.2, 0.45))
+    tilts = (rng.uniform(14, 31), rng.uniform(14, 31))
+    radii = (rng.uniform(0.4, 0.8) * a1, rng.uniform(0.4, 0.8) * a2)
+    pts = _bracket(_verts(h, a1, a2, *tilts), radii, (0.0, rng.uniform(-0.02, 0.02), 0.0))
+    return Mark("swept-round-bracket", _placed(rng, pts, rng.random() < 0.5), True)
 
 
 def splayed_trapezoid_bracket(seed: int) -> Mark:
@@ -95,6 +107,7 @@ def lopsided_arm_bracket(seed: int) -> Mark:
 
 
 FAMILIES: dict[str, Callable[[int], Mark]] = {
-    "swept-past-bracket": swept_past_bracket, "splayed-trapezoid-bracket": splayed_trapezoid_bracket,
+    "swept-past-bracket": swept_past_bracket, "swept-round-bracket": swept_round_bracket,
+    "splayed-trapezoid-bracket": splayed_trapezoid_bracket,
     "whole-arm-rounded-bracket": whole_arm_rounded_bracket, "tiny-bracket": tiny_bracket,
     "kinked-spine-bracket": kinked_spine_bracket, "lopsided-arm-bracket": lopsided_arm_bracket}
