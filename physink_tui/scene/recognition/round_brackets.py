@@ -25,9 +25,10 @@ from physink_tui.scene.recognition.primitives import Polyline, Recognition
 
 POINTS = 64
 """The stroke is judged resampled to this many points, lightly smoothed (`stroke_geometry.smooth`)."""
-HALF_TURN = (145.0, float(__import__("os").environ.get("HT", "245")))
+HALF_TURN = (145.0, 245.0)
 """A bracket's heading turns by half a turn from its first arm to its last (degrees; as `bracket_marks.HALF_TURN_SLACK`:
-a hand slants its arms)."""
+a hand slants its arms; up to 245 where a hand swinging round both corners carries each arm on 14-31 degrees in past
+square, 207-243 in all, session 24's `tests/penmodels/bracket_extremes`: each bend still turns `BEND_DEG`)."""
 SPLAYED_TURN = 120.0
 """...or by as little as this when a wrist swinging a mouse splays its arms out (8-20 degrees each: such a bracket turns
 140-164 degrees, measured on the smoothed stroke 120-145; session 22's `tests/penmodels/mouse_habits` splayed
@@ -48,11 +49,11 @@ BEND_DEG = (50.0, 130.0)
 degrees and more before its stem)."""
 ARM_FLAT = 0.4
 """Each arm keeps a straight run of at least this share of the arm (the run, plus the bend up to the spine)..."""
-ROUND_ARM_FLAT = float(__import__("os").environ.get("RAF", "0.25"))
+ROUND_ARM_FLAT = 0.25
 """...or of this share, when the spine is straight to its middle: a corner rounded over the whole arm, as a mouse
 swings round it (a quarter round's last third lies within `FLAT_DEG`), keeps no more, and its spine has no point
 (`ROUND_ARM_POINT_DEG`) nor bows as much as a parenthesis (`SPLAYED_SPINE_BOW`)..."""
-ROUND_ARM_POINT_DEG = float(__import__("os").environ.get("RAP", "6"))
+ROUND_ARM_POINT_DEG = 6.0
 """...its spine's middle three fifths turning by less than this within `stroke_geometry.POINT_SPAN` (degrees: such
 brackets' spines 1-6 by the hurried hand, a flat-pointed brace's rounded point 5-19, `tests/penmodels/brace_habits`)."""
 ARM_SHARE = 0.04
