@@ -52,7 +52,8 @@ ARM_FLAT = 0.4
 ROUND_ARM_FLAT = 0.25
 """...or of this share, when the spine is straight to its middle: a corner rounded over the whole arm, as a mouse
 swings round it (a quarter round's last third lies within `FLAT_DEG`), keeps no more, and its spine has no point
-(`ROUND_ARM_POINT_DEG`) nor bows as much as a parenthesis (`SPLAYED_SPINE_BOW`)..."""
+(`ROUND_ARM_POINT_DEG`) nor bows as much as a parenthesis (`SPLAYED_SPINE_BOW`), and each arm with its bend is
+shorter than the spine (a brace's half, point and curl taken for an arm by a device's few events is longer)..."""
 ROUND_ARM_POINT_DEG = 6.0
 """...its spine's middle three fifths turning by less than this within `stroke_geometry.POINT_SPAN` (degrees: such
 brackets' spines 1-6 by the hurried hand, a flat-pointed brace's rounded point 5-19, `tests/penmodels/brace_habits`)."""
@@ -213,9 +214,9 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
         return None  # short of half a turn: only long arms splayed off a straight spine
     cut = len(spine) // 5
     point = sg.sharpest_turn(spine[cut:len(spine) - cut], sg.POINT_SPAN * sg.path_length(pts))
-    if point >= sg.POINT_TURN_DEG or (weakest_arm < ARM_FLAT and (point >= ROUND_ARM_POINT_DEG
-                                                                  or sg.chord_deviation(spine) >= SPLAYED_SPINE_BOW)):
-        return None  # an arm rounded over its whole length: only off a spine straight to its middle
+    if point >= sg.POINT_TURN_DEG or (weakest_arm < ARM_FLAT and (
+            point >= ROUND_ARM_POINT_DEG or sg.chord_deviation(spine) >= SPLAYED_SPINE_BOW or max(a, n - b) >= b - a)):
+        return None  # an arm rounded over its whole length: only off a longer spine straight to its middle
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     margin = MARGIN * sg.bbox_diagonal(pts)
     spine_line = _side(pts, drawn, a, b)
