@@ -1,8 +1,8 @@
 """Square brackets at the edges of how people draw them (issue 25: the held-back people read brackets 89-90 %), the
 habits `bracket_habits` and `mouse_habits` leave out: both arms leaning in past square (the heading sweeps 207-243
-degrees), sharp or swung round, both leaning out as a trapezoid's sides do, corners rounded over the whole arm, tiny brackets, a kinked
-spine, arms of very unequal length; in canvas pixels, seeded; no motion, no noise (the pens draw them:
-`benchmarks/bench_bracket_extremes.py`)."""
+degrees), sharp or swung round, both leaning out as a trapezoid's sides do, corners rounded over the whole arm, tiny
+brackets, a kinked spine, arms of very unequal length; in canvas pixels, seeded; no motion, no noise (the pens draw
+them: `benchmarks/bench_bracket_extremes.py`)."""
 
 from __future__ import annotations
 
@@ -13,9 +13,9 @@ from collections.abc import Callable
 from penmodels.bracket_habits import _bracket, _corner_radii, _frame, _verts
 from penmodels.open_marks import Mark, Point, _placed
 
-EXPECTED = {"swept-past-bracket": "polyline", "swept-round-bracket": "polyline", "splayed-trapezoid-bracket": "polyline",
-            "whole-arm-rounded-bracket": "polyline", "tiny-bracket": "polyline", "kinked-spine-bracket": "polyline",
-            "lopsided-arm-bracket": "polyline"}
+EXPECTED = {"swept-past-bracket": "polyline", "swept-round-bracket": "polyline",
+            "splayed-trapezoid-bracket": "polyline", "whole-arm-rounded-bracket": "polyline",
+            "tiny-bracket": "polyline", "kinked-spine-bracket": "polyline", "lopsided-arm-bracket": "polyline"}
 """The kind each family is read as (benchmarks/label_kinds.tsv: a square bracket is three straight sides, a
 polyline, however its corners are turned)."""
 
