@@ -27,6 +27,7 @@ from bench_math_marks import read
 from bench_open_marks import HELD_SEEDS, PENS
 
 from physink_tui.scene.components import Rope
+from physink_tui.scene.recognition import hooked_ticks
 
 HELD_FLOORS = {
     "radical": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
@@ -58,9 +59,15 @@ def test_radicals_are_polylines_and_parentheses_bows(family: str, pen: str) -> N
     "degrees or more) for a tick with a bowed long arm: the pen-model ticks it was made for "
     "(hurried_marks.hooked_tick, bowed 7-11 %) are the same stroke, and their floors (test_hooked_ticks) leave no "
     "room to tell them apart"))
-def test_flicked_parentheses_read_as_before_hooked_ticks() -> None:
-    """Without `hooked_ticks` the held flicked parentheses read 186 of 240 as bows (arc or curve); with it 180."""
-    assert sum(_right("flicked-parenthesis", pen)[0] for pen in PENS) >= 186
+def test_flicked_parentheses_read_as_before_hooked_ticks(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The held flicked parentheses read as many bows (arc or curve) with `hooked_ticks` as without it. Session 20:
+    186 of 240 without it, 180 with it; main 40b8114: 190 and 184; session 24's wt-parens (fewer small bows taken for
+    swung lines) 192 and 186, which passed the fixed 186 this test asked for: it now asks for the figure without the
+    rule, read on the same tree."""
+    with_rule = sum(_right("flicked-parenthesis", pen)[0] for pen in PENS)
+    monkeypatch.setattr(hooked_ticks, "hooked_tick", lambda unit, noise: None)
+    without_rule = sum(_right("flicked-parenthesis", pen)[0] for pen in PENS)
+    assert with_rule >= without_rule
 
 
 @pytest.mark.parametrize("seed", (6, 19))

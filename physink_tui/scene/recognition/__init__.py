@@ -97,17 +97,19 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    turning each way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
    by running back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed
-   one way and back (turning both ways, no point, no circle fitting its bow, straying under 9 % of its length) is a
-   line (`open_marks.swung_line`). Beside a really sharp corner, a bend under `open_shapes.SHARP_CORNER` is an arm's
-   wobble whose roundness does not make the mark round (`open_shapes._roundest_corner`). Marks these rules misjudge
-   (`bracket_marks`): a square bracket with one corner rounded off (one sharp corner, half a turn one way, a straight
-   spine) is a polyline through its rounded corner too; a brace whose point is a small loop, or whose curls or point
-   were taken for corners between straight sides (its farthest point from its ends' line a shallow point about
-   halfway along, the stroke on one side of that line), is not a polyline; a tick, check or v swung round its point
+   one way and back (turning both ways, no point, no circle fitting its bow beyond the pen's own wobble, straying under
+   9 % of its length) is a line (`open_marks.swung_line`). Beside a really sharp corner, a bend under
+   `open_shapes.SHARP_CORNER` is an arm's wobble whose roundness does not make the mark round
+   (`open_shapes._roundest_corner`). Marks these rules misjudge (`bracket_marks`): a square bracket with one corner
+   rounded off (one sharp corner, half a turn one way, a straight spine) is a polyline through its rounded corner
+   too; a brace whose point is a small loop, or whose curls or point were taken for corners between straight sides
+   (its farthest point from its ends' line a shallow point about halfway along, the stroke on one side of that
+   line), is not a polyline; a tick, check or v swung round its point
    (one bend, turning one way, between a straight long arm and a short arm, the finder finding no corner) is a
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`), also once a hook where
    the pen landed or lifted, found as a corner within a tenth of the path from an end, is cut
-   (`bracket_marks.unhooked_point`). A polyline so read that
+   (`bracket_marks.unhooked_point`; not where its long arm curls on round the bend all along it, as a lopsided
+   parenthesis' long side does: `bracket_marks.curling_arm`). A polyline so read that
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
    of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).
@@ -141,7 +143,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    lobes, or two corners of which the point holds a third of all the turning: `ranker.checked_point`), and the rules'
    zig-zag (its polyline's vertices are a sawtooth: `ranker.zigzag_teeth`) and a tick swung round its point (on the
    model's own points, no corner found there, or none but a hook's, cut: `bracket_marks.swung_tick`,
-   `bracket_marks.unhooked_point`).
+   `bracket_marks.unhooked_point`; a lopsided parenthesis whose long side curls on round its bend is asked:
+   `bracket_marks.curling_arm`).
 
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)

@@ -198,6 +198,33 @@ def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[
     return [0, k, len(work) - 1]
 
 
+CURLING_DEG = 2.5
+"""A parenthesis curling tightly near one end and sweeping on gently the rest of the way
+(`penmodels.paren_habits.lopsided_paren`) passes `rounded_point`: its long side is the rest of its bow. That side turns
+the bend's way all along it: each of the turns between its four quarters' chords is 4-14 degrees that way on the
+pen models' parentheses the rules so read. A tick's long arm is straight: it turns less than this (degrees) between
+two of its quarters at least (the pen models' hurried swung ticks, `penmodels.mark_habits`: the least of the three
+turns -5 to 1), however it is hooked or curled at its far end (pixelfac/user02's check7: 5, 0 and 16 degrees)."""
+
+
+def curling_arm(work: np.ndarray, point: list[int]) -> bool:
+    """Whether the longer arm of ``work`` (start, point and end at the indices ``point``, as `rounded_point` gives them)
+    turns the way the stroke bends at the point all along it (`CURLING_DEG` or more between each two of its quarters'
+    chords): the rest of a parenthesis' bow, not a tick's arm."""
+    k = point[1]
+    u, v = work[k] - work[0], work[-1] - work[k]
+    way = math.copysign(1.0, float(u[0] * v[1] - u[1] * v[0]))
+    first, second = work[:k + 1], work[k:]
+    long = second if sg.path_length(second) >= sg.path_length(first) else first  # in drawing order
+    quarters = long[np.round(np.linspace(0, len(long) - 1, 5)).astype(int)]
+    chords = np.diff(quarters, axis=0)
+    if len(long) < 5 or not np.hypot(*chords.T).all():
+        return False
+    headings = np.arctan2(chords[:, 1], chords[:, 0])
+    turns = (np.diff(headings) + math.pi) % (2 * math.pi) - math.pi
+    return bool((way * turns >= math.radians(CURLING_DEG)).all())
+
+
 HOOK_SHARE = 0.1
 """A hook where the pen landed or lifted is at most this share of the path (`stroke_geometry.remove_hooks`'
 ``max_fraction``)."""
@@ -229,8 +256,8 @@ def unhooked_point(work: np.ndarray, corners: list[int], noise: float) -> tuple[
         return None  # no hook to cut (`rounded_point` judges the stroke as it is), or hardly a stroke left
     kept = sg.resample(kept, len(work))
     point = rounded_point(kept, sg.turning(kept), sf.turn_lobes(sg.coarse_turning(kept, noise)))
-    if point is None:
-        return None
+    if point is None or curling_arm(kept, point):
+        return None  # no tick, or a parenthesis' bow curling on round its tight end
     return tuple((float(kept[i][0]), float(kept[i][1])) for i in point)
 
 
@@ -240,12 +267,14 @@ def swung_tick(work: np.ndarray, th: np.ndarray, lobes: list[float], noise: floa
     its point (`rounded_point`) as drawn or, as the rules judge it, once a hook where the pen landed or lifted is cut
     (`stroke_geometry.remove_hooks`): a hook curling back at an end adds its own turn to the lobe (pixelfac/user02's
     check7: 241 degrees with its hooks, 116 without), and the rules' tick is then re-read as a curve. The ranker does
-    not ask its model about such a tick."""
-    if rounded_point(work, th, lobes) is not None:
-        return True
+    not ask its model about such a tick, but for one whose long arm curls on round the bend (`curling_arm`: a lopsided
+    parenthesis, a curve)."""
+    point = rounded_point(work, th, lobes)
+    if point is not None:
+        return not curling_arm(work, point)
     unhooked = sg.remove_hooks(work)
     if len(unhooked) == len(work):
         return False  # no hook cut: the same stroke, already judged
     unhooked = sg.resample(unhooked, len(work))
-    return rounded_point(unhooked, sg.turning(unhooked),
-                         sf.turn_lobes(sg.coarse_turning(unhooked, noise))) is not None
+    point = rounded_point(unhooked, sg.turning(unhooked), sf.turn_lobes(sg.coarse_turning(unhooked, noise)))
+    return point is not None and not curling_arm(unhooked, point)

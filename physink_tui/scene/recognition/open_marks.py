@@ -51,6 +51,12 @@ SWUNG_ARC = 0.15
 """... and a circle explains its bow no better than this share of the line's error (`fit_circle`'s farthest point
 against the fitted line's): a bow a circle fits closer is an arc drawn so (arcs of 40-60 degrees by the stroke
 generator: 0.03-0.09 at the 10th-90th percentile; gtiwari's mouse-swung lines 0.16-0.78)."""
+SWUNG_WOBBLE = 1.5
+"""... nor, whatever the bow's size, by less than this many of the pen's noise widths (its stated noise): a circle
+missing a bow by no more than the pen's own wobble explains it. Parentheses 15-60 px tall bow a few pixels, and the
+circle misses the hurried hand's by 0.5-2 px, most under 1.5 (`benchmarks/bench_paren_habits.py`); of the 53 design
+and fourth-group strokes `swung_line` takes, the circle misses every one by 2.4 noise widths or more (mmg:10's fast
+stylus line 2.4, gtiwari's mouse lines 3.1 and more)."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
@@ -167,10 +173,10 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
     its fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's
     swing bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink, turns both ways (one way round, it
     would be an arc: `ONE_WAY`), its heading turns less than `SWUNG_TURN_DEG` end to end, its middle has no point
-    (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`). What a person does: a long diagonal drawn with a
-    mouse, or a quick stroke of a wrist, pivots and corrects; a reader still sees a line, not a curve. A hook where the
-    pen landed or lifted (its reach in the pen's stated noise ``pen``, ``noise`` where not given) is left out of the
-    circle's fit (`lines.without_hooked_ends`)."""
+    (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`, and beyond the pen's own wobble: `SWUNG_WOBBLE`).
+    What a person does: a long diagonal drawn with a mouse, or a quick stroke of a wrist, pivots and corrects; a
+    reader still sees a line, not a curve. A hook where the pen landed or lifted (its reach in the pen's stated noise
+    ``pen``, ``noise`` where not given) is left out of the circle's fit (`lines.without_hooked_ends`)."""
     if stray >= SWUNG_STRAY or ink >= SWUNG_INK:
         return False  # checked first: most strokes are far from straight
     th = sg.coarse_turning(coarse, noise)
@@ -181,8 +187,10 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
     middle = coarse[len(coarse) // 5: len(coarse) - len(coarse) // 5]
     if sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= SWUNG_POINT_DEG:
         return False
-    bow = lines.without_hooked_ends(coarse, noise if pen is None else pen)  # a hook where the pen landed is no swing
+    own = noise if pen is None else pen
+    bow = lines.without_hooked_ends(coarse, own)  # a hook where the pen landed is no swing
     centre, radius, _ = fit_circle(bow)
     if not math.isfinite(radius):
         return True  # straight enough that no circle fits
-    return float(np.abs(np.hypot(*(bow - centre).T) - radius).max()) >= SWUNG_ARC * stray * length
+    miss = float(np.abs(np.hypot(*(bow - centre).T) - radius).max())
+    return miss >= SWUNG_ARC * stray * length and miss >= SWUNG_WOBBLE * own  # the pen's own wobble is no swing
