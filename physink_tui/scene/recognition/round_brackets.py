@@ -53,7 +53,8 @@ ROUND_ARM_FLAT = 0.25
 """...or of this share, when the spine is straight to its middle: a corner rounded over the whole arm, as a mouse
 swings round it (a quarter round's last third lies within `FLAT_DEG`), keeps no more, and its spine has no point
 (`ROUND_ARM_POINT_DEG`) nor bows as much as a parenthesis (`SPLAYED_SPINE_BOW`), and each arm with its bend is
-shorter than the spine (a brace's half, point and curl taken for an arm by a device's few events is longer)..."""
+shorter than the spine (a brace's half, point and curl taken for an arm by a device's few events is longer), and it
+turns a full `HALF_TURN` (a small parenthesis through a coarse device's few straight pieces turns 135)..."""
 ROUND_ARM_POINT_DEG = 6.0
 """...its spine's middle three fifths turning by less than this within `stroke_geometry.POINT_SPAN` (degrees: such
 brackets' spines 1-6 by the hurried hand, a flat-pointed brace's rounded point 5-19, `tests/penmodels/brace_habits`)."""
@@ -215,7 +216,8 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
     cut = len(spine) // 5
     point = sg.sharpest_turn(spine[cut:len(spine) - cut], sg.POINT_SPAN * sg.path_length(pts))
     if point >= sg.POINT_TURN_DEG or (weakest_arm < ARM_FLAT and (
-            point >= ROUND_ARM_POINT_DEG or sg.chord_deviation(spine) >= SPLAYED_SPINE_BOW or max(a, n - b) >= b - a)):
+            point >= ROUND_ARM_POINT_DEG or sg.chord_deviation(spine) >= SPLAYED_SPINE_BOW or max(a, n - b) >= b - a
+            or heading[-1] < HALF_TURN[0])):
         return None  # an arm rounded over its whole length: only off a longer spine straight to its middle
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     margin = MARGIN * sg.bbox_diagonal(pts)
