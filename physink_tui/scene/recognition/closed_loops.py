@@ -194,6 +194,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     th = sg.turning(work)
     coarse = sg.coarse_turning(work, sigma)
     limit = max(CLOSED_GAP * diag, 4 * sigma)
+    once: np.ndarray | None = None  # the stroke once round where it came back to its start, going round one way
     if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
         loop, back = _once_round(work, th, limit)  # round and round one way: once round is the shape, if round
         # not a lead-in drawn out and back along itself, nor a hook's small loop at an end
@@ -201,8 +202,12 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         ellipse = fit_ellipse(loop) if back else None  # fitted only where it may be kept
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop, ellipse
+        once = loop if back else None
     if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
+    if (once is not None and TWICE_ROUND < abs(float(th.sum())) < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
+            and _beside(work, once, diag)):
+        return True, once, None  # gone round again beside the first lap, not over it: the first lap is the shape
     n = len(work)
     gap = float(np.hypot(*(raw[-1] - raw[0])))
     tail, head = work[n // 2:], work[: max(2, n // 2)]
@@ -266,6 +271,11 @@ end is no crossing)."""
 
 def crosses_itself(work: np.ndarray) -> bool:
     """Whether an open path crosses itself (judged on `CROSSING_POINTS` points along it)."""
+    return self_crossings(work) > 0
+
+
+def self_crossings(work: np.ndarray) -> int:
+    """How many times an open path crosses itself (judged on `CROSSING_POINTS` points along it)."""
     a = sg.resample(work, CROSSING_POINTS)
     i, j = np.triu_indices(len(a) - 1, 2)
     p, r, q, s = a[i], a[i + 1] - a[i], a[j], a[j + 1] - a[j]
@@ -274,9 +284,20 @@ def crosses_itself(work: np.ndarray) -> bool:
     with np.errstate(divide="ignore", invalid="ignore"):
         t = (qp[:, 0] * s[:, 1] - qp[:, 1] * s[:, 0]) / den
         u = (qp[:, 0] * r[:, 1] - qp[:, 1] * r[:, 0]) / den
-    return bool(np.any((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1)))
+    return int(np.count_nonzero((den != 0) & (t > 0) & (t < 1) & (u > 0) & (u < 1)))
 
 
+TWICE_ROUND = 3.0 * math.pi
+"""A stroke turning one way more than this (half way round a second time) whose first lap came back to its start
+(`_once_round`) is that lap, the rest a second lap drawn beside it (a box gone round twice, the second lap a tenth of
+its size out: hcira shriyansnidhish s02 rectangle01, `penmodels.box_slips` ``laps-apart``); a second lap drawn over
+the first is `stroke_features.retraced`, a spiral is `coils.helix_or_scribble`'s before this is asked, a star drawn
+crossing itself crosses itself `STAR_CROSSINGS` times or more (people's pentagrams come back once round, and lie
+within `CLOSED_GAP` of it), and the second lap must lie beside the first (`_beside`)."""
+SPIRAL_TURN = 4.5 * math.pi
+"""A stroke turning one way this far is past two laps and a quarter of a third: a spiral drawn square (a tutorboard
+sample labelled "negative" turns 4.58 pi, each lap inside the last), not a box gone round twice (`TWICE_ROUND`; the
+pen models' ``laps-apart`` boxes turn 3.0-4.3 pi, hooks and all)."""
 CLOSED_GAP = 0.2
 """A stroke whose ends are closer than this share of its size (or a few noise widths) is closed."""
 
@@ -289,6 +310,13 @@ def hook_kept_apart(work: np.ndarray, unhooked: np.ndarray, diag: float, sigma: 
         return False
     gap = float(np.hypot(*(unhooked[-1] - unhooked[0])))
     return gap <= max(CLOSED_GAP * diag, 4 * sigma) and not crosses_itself(unhooked)
+
+
+def _beside(work: np.ndarray, lap: np.ndarray, diag: float) -> bool:
+    """Whether nine points in ten of ``work`` lie within `CLOSED_GAP` of its size (``diag``) of ``lap``: a second lap
+    drawn beside the first, not a scribble's loops wandering off (a Quick, Draw! squiggle's first loop comes back)."""
+    d = np.hypot(work[:, None, 0] - lap[None, :, 0], work[:, None, 1] - lap[None, :, 1]).min(axis=1)
+    return float(np.quantile(d, 0.9)) < CLOSED_GAP * diag
 
 
 def ends_cross(work: np.ndarray, diag: float) -> bool:

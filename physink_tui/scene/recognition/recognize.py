@@ -29,6 +29,7 @@ from physink_tui.scene.recognition import (
     landing,
     loop_ends,
     lopsided_braces,
+    open_boxes,
     open_shapes,
     pen_lifts,
     pen_noise,
@@ -303,12 +304,17 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     if not closed:
-        unhooked = sg.remove_hooks(work)
-        if closed_loops.hook_kept_apart(work, unhooked, diag, sigma):
+        hooked, unhooked = work, sg.remove_hooks(work)
+        if closed_loops.hook_kept_apart(hooked, unhooked, diag, sigma):
             closed, loop, ellipse = closed_loops.closed_loop(unhooked, sg.resample(unhooked, n), diag, sigma)
         work = sg.resample(unhooked, n)
         if not closed and closed_loops.polygon_left_open(work, diag):
             closed, loop = True, work
+        elif not closed:  # a box left open by part of a side (that part may be short enough to be cut as a hook)
+            ways = (work, hooked) if len(unhooked) != len(hooked) else (work,)
+            left_open = next((w for w in ways if open_boxes.box_left_open(w, diag)), None)
+            if left_open is not None:
+                closed, loop = True, left_open
     if not closed:
         return _open_reading(raw, work, n, noise, sigma, weights, diag)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)

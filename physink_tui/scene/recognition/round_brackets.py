@@ -25,9 +25,10 @@ from physink_tui.scene.recognition.primitives import Polyline, Recognition
 
 POINTS = 64
 """The stroke is judged resampled to this many points, lightly smoothed (`stroke_geometry.smooth`)."""
-HALF_TURN = (145.0, 215.0)
+HALF_TURN = (145.0, 245.0)
 """A bracket's heading turns by half a turn from its first arm to its last (degrees; as `bracket_marks.HALF_TURN_SLACK`:
-a hand slants its arms)."""
+a hand slants its arms; up to 245 where a hand swinging round both corners carries each arm on 14-31 degrees in past
+square, 207-243 in all, session 24's `tests/penmodels/bracket_extremes`: each bend still turns `BEND_DEG`)."""
 SPLAYED_TURN = 120.0
 """...or by as little as this when a wrist swinging a mouse splays its arms out (8-20 degrees each: such a bracket turns
 140-164 degrees, measured on the smoothed stroke 120-145; session 22's `tests/penmodels/mouse_habits` splayed
@@ -47,8 +48,16 @@ BEND_DEG = (50.0, 130.0)
 """Each bend, from an arm's heading to the spine's, turns by about a right angle (a question mark's hook turns 150
 degrees and more before its stem)."""
 ARM_FLAT = 0.4
-"""Each arm keeps a straight run of at least this share of the arm (the run, plus the bend up to the spine): a corner
-rounded over the whole arm makes a parenthesis, not a bracket."""
+"""Each arm keeps a straight run of at least this share of the arm (the run, plus the bend up to the spine)..."""
+ROUND_ARM_FLAT = 0.25
+"""...or of this share, when the spine is straight to its middle: a corner rounded over the whole arm, as a mouse
+swings round it (a quarter round's last third lies within `FLAT_DEG`), keeps no more, and its spine has no point
+(`ROUND_ARM_POINT_DEG`) nor bows as much as a parenthesis (`SPLAYED_SPINE_BOW`), and each arm with its bend is
+shorter than the spine (a brace's half, point and curl taken for an arm by a device's few events is longer), and it
+turns a full `HALF_TURN` (a small parenthesis through a coarse device's few straight pieces turns 135)..."""
+ROUND_ARM_POINT_DEG = 6.0
+"""...its spine's middle three fifths turning by less than this within `stroke_geometry.POINT_SPAN` (degrees: such
+brackets' spines 1-6 by the hurried hand, a flat-pointed brace's rounded point 5-19, `tests/penmodels/brace_habits`)."""
 ARM_SHARE = 0.04
 """... and that run is at least this share of the path (a hook where the pen landed is no arm)."""
 MARGIN = 0.05
@@ -191,7 +200,8 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
         return None
     first = _flat_end(listed[:a])
     last = _flat_end(listed[b:][::-1])
-    if min(first / a, last / (n - b)) < ARM_FLAT or min(first, last) < ARM_SHARE * n:
+    weakest_arm = min(first / a, last / (n - b))
+    if weakest_arm < ROUND_ARM_FLAT or min(first, last) < ARM_SHARE * n:
         return None
     spine_heading = statistics.median(listed[a:b])
     bends = (spine_heading - statistics.median(listed[:first]), statistics.median(listed[n - last:]) - spine_heading)
@@ -204,8 +214,11 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
                                        or sg.chord_deviation(spine) >= SPLAYED_SPINE_BOW):
         return None  # short of half a turn: only long arms splayed off a straight spine
     cut = len(spine) // 5
-    if sg.sharpest_turn(spine[cut:len(spine) - cut], sg.POINT_SPAN * sg.path_length(pts)) >= sg.POINT_TURN_DEG:
-        return None
+    point = sg.sharpest_turn(spine[cut:len(spine) - cut], sg.POINT_SPAN * sg.path_length(pts))
+    if point >= sg.POINT_TURN_DEG or (weakest_arm < ARM_FLAT and (
+            point >= ROUND_ARM_POINT_DEG or sg.chord_deviation(spine) >= SPLAYED_SPINE_BOW or max(a, n - b) >= b - a
+            or heading[-1] < HALF_TURN[0])):
+        return None  # an arm rounded over its whole length: only off a longer spine straight to its middle
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     margin = MARGIN * sg.bbox_diagonal(pts)
     spine_line = _side(pts, drawn, a, b)
