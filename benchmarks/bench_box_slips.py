@@ -58,10 +58,7 @@ def main() -> None:
     bench_boxes.PENS = PENS  # the report's columns
     print("\n".join(bench_boxes.report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}")))
     if args.misread:
-        for (family, pen), got in results.items():
-            for seed, kind in zip(seeds, got, strict=True):
-                if kind != "box":
-                    print(f"{family} {pen} {seed} {kind}")
+        print("\n".join(bench_boxes.misread(results, seeds)))
 
 
 if __name__ == "__main__":

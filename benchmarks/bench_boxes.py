@@ -81,6 +81,12 @@ def report(results: dict[tuple[str, str], list[str | None]], title: str) -> list
     return lines
 
 
+def misread(results: dict[tuple[str, str], list[str | None]], seeds: range) -> list[str]:
+    """One line per reading other than a box: family, pen, seed, the kind read."""
+    return [f"{family} {pen} {seed} {kind}" for (family, pen), got in results.items()
+            for seed, kind in zip(seeds, got, strict=True) if kind != "box"]
+
+
 def main() -> None:
     args = family_bench_parser(__doc__ or "").parse_args()
     families = args.families.split(",") if args.families else list(FAMILIES)
@@ -88,10 +94,7 @@ def main() -> None:
     results = run(families, seeds, learned=not args.rules)
     print("\n".join(report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}")))
     if args.misread:
-        for (family, pen), got in results.items():
-            for seed, kind in zip(seeds, got, strict=True):
-                if kind != "box":
-                    print(f"{family} {pen} {seed} {kind}")
+        print("\n".join(misread(results, seeds)))
 
 
 if __name__ == "__main__":

@@ -217,10 +217,15 @@ def start_mid_wall(rng: random.Random) -> Path:
 
 
 def side_bowed(rng: random.Random) -> Path:
+    return bowed_side(rng, 0.06, 0.12)
+
+
+def bowed_side(rng: random.Random, least: float, most: float) -> Path:
+    """A box with one side bowed out or in by ``least``-``most`` of its length (a sine's half wave)."""
     c = _corners(rng)
     k = rng.randrange(4)
     a, b = c[k], c[(k + 1) % 4]
-    bow = rng.choice((-1.0, 1.0)) * rng.uniform(0.06, 0.12) * _side(a, b)
+    bow = rng.choice((-1.0, 1.0)) * rng.uniform(least, most) * _side(a, b)
     pts: list[Point] = []
     for i in range(4):
         pts.append(c[i])

@@ -27,7 +27,7 @@ import math
 import random
 from collections.abc import Callable
 
-from penmodels.box_habits import _along, _corners, _placed, _side, _swung, _upright
+from penmodels.box_habits import _along, _corners, _placed, _side, _swung, _upright, bowed_side
 from penmodels.shapes import Path
 
 Point = tuple[float, float]
@@ -86,16 +86,7 @@ def laps_apart(rng: random.Random) -> Path:
 
 
 def side_bowed_deep(rng: random.Random) -> Path:
-    c = _corners(rng)
-    k = rng.randrange(4)
-    a, b = c[k], c[(k + 1) % 4]
-    bow = rng.choice((-1.0, 1.0)) * rng.uniform(0.12, 0.2) * _side(a, b)
-    pts: list[Point] = []
-    for i in range(4):
-        pts.append(c[i])
-        if i == k:
-            pts += [_along(a, b, j / 10, bow * math.sin(math.pi * j / 10)) for j in range(1, 10)]
-    return _placed([*pts, c[0]], _upright(rng))
+    return bowed_side(rng, 0.12, 0.2)
 
 
 def corner_cut(rng: random.Random) -> Path:
