@@ -105,6 +105,14 @@ def test_lines_drawn_by_the_pen_models_read_as_lines(family: str, pen: str) -> N
     assert sum(k == "line" for k in got) >= READ_FLOORS[(family, pen)], got
 
 
+@pytest.mark.xfail(strict=True, reason="open_marks.SWUNG_WOBBLE (session 24, wt-parens) keeps a bow the circle misses "
+                   "by under 1.5 of the pen's noise widths from the swung-line rule; this 46 px line hooked at its "
+                   "ends, drawn by the hurried hand through a coarse device (held seed 1010), has such a bow and reads "
+                   "as a polyline, where 40b8114 read a line (SWUNG_WOBBLE = 0 reads it as a line again)")
+def test_a_short_hooked_line_through_a_coarse_device_stays_a_line() -> None:
+    assert [read("hooked", "hurried-coarse", 1010, timed)[0] for timed in (True, False)] == ["line", "line"]
+
+
 @pytest.mark.parametrize("pen", list(ARC_AS_LINE_CEILING))
 def test_arcs_of_40_degrees_and_more_are_no_lines(pen: str) -> None:
     seeds = [s for s in TUNING_SEEDS if _sweep(s) >= 40.0]
