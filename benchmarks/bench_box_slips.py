@@ -28,8 +28,6 @@ from bench_device_stress import chain
 from penmodels.box_slips import FAMILIES, drawn
 from penmodels.shapes import Shape
 
-from physink_tui.scene.recognition.recognize import recognize_stroke
-
 _TRACKPAD = chain(device_habits.acceleration, device_habits.lift_hook)
 
 
@@ -46,8 +44,7 @@ PENS = {**bench_boxes.PENS, "hurried-trackpad": hurried_trackpad}
 
 def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:
     """The kind read from ``family``'s box for ``seed`` drawn by ``pen``, with its times."""
-    points = PENS[pen](drawn(family, seed), seed)
-    return recognize_stroke([p[:2] for p in points], [p[2] for p in points], learned=learned).kind
+    return bench_boxes.read_drawn(PENS[pen], drawn(family, seed), seed, learned)
 
 
 def main() -> None:
@@ -55,8 +52,8 @@ def main() -> None:
     families = args.families.split(",") if args.families else list(FAMILIES)
     seeds, name = chosen_seeds(args)
     results = {(f, p): [read(f, p, s, not args.rules) for s in seeds] for f in families for p in PENS}
-    bench_boxes.PENS = PENS  # the report's columns
-    print("\n".join(bench_boxes.report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}")))
+    title = f"{name}, {'rules' if args.rules else 'shipped recogniser'}"
+    print("\n".join(bench_boxes.report(results, title, PENS)))
     if args.misread:
         print("\n".join(bench_boxes.misread(results, seeds)))
 

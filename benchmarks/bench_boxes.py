@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import sys
 from collections import Counter
+from collections.abc import Callable, Mapping
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
@@ -51,7 +52,13 @@ PENS = {"careful": careful, "hurried": hurried, "hurried-coarse": hurried_coarse
 
 def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:
     """The kind read from ``family``'s box for ``seed`` drawn by ``pen``, with its times."""
-    points = PENS[pen](drawn(family, seed), seed)
+    return read_drawn(PENS[pen], drawn(family, seed), seed, learned)
+
+
+def read_drawn(pen: Callable[[Shape, int], list[tuple[float, float, float]]], shape: Shape, seed: int,
+               learned: bool = True) -> str | None:
+    """The kind read from ``shape`` drawn by ``pen`` for ``seed``, with its times (every closed-shape family bench)."""
+    points = pen(shape, seed)
     return recognize_stroke([p[:2] for p in points], [p[2] for p in points], learned=learned).kind
 
 
@@ -59,13 +66,15 @@ def run(families: list[str], seeds: range, learned: bool) -> dict[tuple[str, str
     return {(f, p): [read(f, p, s, learned) for s in seeds] for f in families for p in PENS}
 
 
-def report(results: dict[tuple[str, str], list[str | None]], title: str) -> list[str]:
-    lines = [f"#### {title}", "", "| family | " + " | ".join(PENS) + " | readings other than box |",
-             "|---|" + "---:|" * len(PENS) + "---|"]
+def report(results: dict[tuple[str, str], list[str | None]], title: str,
+           pens: Mapping[str, object] = PENS) -> list[str]:
+    """The table of ``results``: a row per family, a column per pen of ``pens``, and the pooled figures."""
+    lines = [f"#### {title}", "", "| family | " + " | ".join(pens) + " | readings other than box |",
+             "|---|" + "---:|" * len(pens) + "---|"]
     pooled: Counter[str] = Counter()
     for family in dict.fromkeys(f for f, _ in results):
         cells, others = [], Counter[str]()
-        for pen in PENS:
+        for pen in pens:
             got = results[(family, pen)]
             right = sum(k == "box" for k in got)
             cells.append(f"{right}/{len(got)}")
@@ -74,9 +83,9 @@ def report(results: dict[tuple[str, str], list[str | None]], title: str) -> list
             pooled[f"{pen} n"] += len(got)
         lines.append(f"| {family} | " + " | ".join(cells) + " | "
                      + ", ".join(f"{k} {n}" for k, n in others.most_common()) + " |")
-    total = sum(pooled[p] for p in PENS)
-    n = sum(pooled[f"{p} n"] for p in PENS)
-    lines += ["", "- " + ", ".join(f"{p} {pooled[p]}/{pooled[p + ' n']}" for p in PENS)
+    total = sum(pooled[p] for p in pens)
+    n = sum(pooled[f"{p} n"] for p in pens)
+    lines += ["", "- " + ", ".join(f"{p} {pooled[p]}/{pooled[p + ' n']}" for p in pens)
               + f"; all {total}/{n} = {100 * total / n:.1f} %"]
     return lines
 

@@ -17,19 +17,16 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from bench_boxes import PENS
+from bench_boxes import PENS, read_drawn
 from bench_closed_shapes import chosen_seeds, family_bench_parser
 from penmodels.triangle_habits import FAMILIES, drawn
-
-from physink_tui.scene.recognition.recognize import recognize_stroke
 
 EXPECTED = "polygon"
 
 
 def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:
     """The kind read from ``family``'s triangle for ``seed`` drawn by ``pen``, with its times."""
-    points = PENS[pen](drawn(family, seed), seed)
-    return recognize_stroke([p[:2] for p in points], [p[2] for p in points], learned=learned).kind
+    return read_drawn(PENS[pen], drawn(family, seed), seed, learned)
 
 
 def main() -> None:

@@ -10,7 +10,7 @@ import math
 import random
 from collections.abc import Callable
 
-from penmodels.bracket_habits import _bracket, _corner_radii, _frame, _verts
+from penmodels.bracket_habits import _bracket, _corner_radii, _frame, _verts, sized_bracket
 from penmodels.open_marks import Mark, Point, _placed
 
 EXPECTED = {"swept-past-bracket": "polyline", "swept-round-bracket": "polyline",
@@ -67,12 +67,7 @@ def whole_arm_rounded_bracket(seed: int) -> Mark:
 def tiny_bracket(seed: int) -> Mark:
     """A tiny bracket, 18-40 px tall (text-sized beside a formula, a finger on a phone), arms 0.3-0.5 of the spine;
     corners sharp or rounded over up to 0.3 of the arm: a pixel of the pen's tremor is a tenth of an arm."""
-    rng = random.Random(f"tiny-bracket:{seed}")
-    h = rng.uniform(18, 40)
-    a1 = rng.uniform(0.3, 0.5) * h
-    a2 = a1 * rng.uniform(0.85, 1.15)
-    pts = _bracket(_verts(h, a1, a2), _corner_radii(rng, a1, a2, 0.3), (0.0, rng.uniform(-0.02, 0.02), 0.0))
-    return Mark("tiny-bracket", _placed(rng, pts, rng.random() < 0.5), True)
+    return sized_bracket("tiny-bracket", seed, (18, 40), (0.3, 0.5))
 
 
 def kinked_spine_bracket(seed: int) -> Mark:

@@ -174,12 +174,18 @@ def closing_bracket(seed: int) -> Mark:
 def small_bracket(seed: int) -> Mark:
     """A small bracket, 40-90 px tall (a finger or a mouse on a small canvas, text-sized), arms 0.25-0.5 of the spine:
     the pen's hooks and tremor are a larger share of it; corners sharp or rounded over up to 0.3 of the arm."""
-    rng = random.Random(f"small-bracket:{seed}")
-    h = rng.uniform(40, 90)
-    a1 = rng.uniform(0.25, 0.5) * h
+    return sized_bracket("small-bracket", seed, (40, 90), (0.25, 0.5))
+
+
+def sized_bracket(name: str, seed: int, height: tuple[float, float], arm: tuple[float, float]) -> Mark:
+    """A bracket ``height`` px tall, its arms ``arm`` of the spine (the two within 15 % of each other), its corners
+    sharp or rounded over up to 0.3 of the arm, its spine bowed up to 2 %: the plain bracket at a chosen size."""
+    rng = random.Random(f"{name}:{seed}")
+    h = rng.uniform(*height)
+    a1 = rng.uniform(*arm) * h
     a2 = a1 * rng.uniform(0.85, 1.15)
     pts = _bracket(_verts(h, a1, a2), _corner_radii(rng, a1, a2, 0.3), (0.0, rng.uniform(-0.02, 0.02), 0.0))
-    return Mark("small-bracket", _placed(rng, pts, rng.random() < 0.5), True)
+    return Mark(name, _placed(rng, pts, rng.random() < 0.5), True)
 
 
 def swept_arm_bracket(seed: int) -> Mark:
