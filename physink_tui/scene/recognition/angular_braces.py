@@ -19,6 +19,7 @@ import numpy as np
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Recognition
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 POINT_AT = (0.3, 0.7)
 """The point (the stroke's farthest from the line joining its ends) lies this far along the path (shares of it)."""
@@ -57,15 +58,24 @@ point by one or two, and the stroke then turns out towards it by only 20-35 degr
 braces by 8-25 events evenly in time, `bench_device_stress`); a parenthesis or an arc laid out so turns one way."""
 
 
-def angular_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0) -> bool:
+def point_lobes(work: np.ndarray, noise: float, coarse: np.ndarray | None = None) -> list[float]:
+    """`stroke_features.lobes` of ``work`` down to `POINT_LOBE_DEG`; ``coarse``: its `stroke_geometry.coarse_turning`
+    at ``noise``, where already known (the same lobes, not measured again)."""
+    if coarse is None:
+        return sf.lobes(work, POINT_LOBE_DEG, noise=noise)
+    return sf.turn_lobes(coarse, POINT_LOBE_DEG)
+
+
+def angular_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0, coarse: np.ndarray | None = None) -> bool:
     """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes``
     its `stroke_features.lobes`) is a curly brace by its layout: on one side of the line joining its ends
     (`ONE_SIDE`) and running along it (`NO_RETURN`), its point about halfway (`POINT_AT`) standing out less than
     `MAX_DEPTH` of it and `PAST_ARMS` as far as the arms, which run on (`ARM_INK`), parallel to it
     (`ARM_DEG`) and off it (`ARM_OFF`) -- or so against its arms' own line where it was drawn askew (`laid_out`) --
     and turning both ways (two lobes or more: its curls the other way from its point; `POINT_LOBE_DEG` where the
-    point was sampled by few events); ``noise``: the pen's, in ``work``'s units."""
-    if len(lobes) < 2 and len(sf.lobes(work, POINT_LOBE_DEG, noise=noise)) < 2:
+    point was sampled by few events); ``noise``: the pen's, in ``work``'s units; ``coarse``: its
+    `stroke_geometry.coarse_turning` at that noise, where already known."""
+    if len(lobes) < 2 and len(point_lobes(work, noise, coarse)) < 2:
         return False  # turning both ways first: most open strokes turn one way, and the layout costs more
     return laid_out(work, noise)
 
@@ -185,11 +195,14 @@ JUDGED_POINTS = 128
 open stroke)."""
 
 
-def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
+def kept_brace(found: Recognition, unit: np.ndarray, noise: float, views: StrokeViews | None = None) -> bool:
     """Whether the rules read a curve from a stroke (``unit``: its points at unit size, ``noise`` the pen's in those
     units) that is an `angular_brace`: not asked of the learned ranker (`recognize`), whose features see a mouse's
-    brace as straight runs and sharp corners, a polyline's."""
+    brace as straight runs and sharp corners, a polyline's. ``views``: the stroke's `stroke_views.StrokeViews`,
+    where made."""
     if found.kind != "curve":
         return False
-    work = sg.hooks_cut(unit, JUDGED_POINTS)
-    return laid_out(work, noise) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more
+    views = StrokeViews(unit) if views is None else views
+    work = views.hooks_cut(JUDGED_POINTS)
+    # the layout first: the lobes cost more
+    return laid_out(work, noise) and len(views.cut_lobes(JUDGED_POINTS, noise)) >= 2

@@ -19,6 +19,7 @@ from physink_tui.scene.recognition import lines, open_shapes
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Polyline, Recognition
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 READ_AS = frozenset({"curve", "arc", "polyline"})
 """The rules' readings this test is asked of: a curve or an arc (the long arm's bow), or a polyline, which the learned
@@ -40,17 +41,17 @@ REACH = 6
 as a hand rounds a short arm into the long one."""
 
 
-def hooked_tick(unit: np.ndarray, noise: float) -> Recognition | None:
+def hooked_tick(unit: np.ndarray, noise: float, views: StrokeViews | None = None) -> Recognition | None:
     """A tick drawn with a short first (or last) arm (``unit``: the stroke at unit size, ``noise``: the pen's jitter in
     those units) as the polyline start, point, end; None when it is not one: the sharpest turn within `END_SHARE` of an
     end turns by `CORNER_DEG` or more, the piece from that end to it is straight (`stroke_geometry.ARM_STRAIGHT`) and
     at least `ARM_REACH` noise widths long, the rest is a straight side (`open_shapes.straight`) with no point in its
     middle (`stroke_geometry.POINT_TURN_DEG`), and the stroke turns one way at the coarse scale (one lobe, or none where
     the short arm is too short to make one: `stroke_features.turn_lobes`), a hook's reach (`lines.HOOK_REACH`) left
-    out at each end."""
+    out at each end. ``views``: the stroke's `stroke_views.StrokeViews`, where made."""
     if len(unit) < 3 or not noise > 0:
         return None
-    pts = sg.smooth(sg.resample(unit, POINTS))
+    pts = (StrokeViews(unit) if views is None else views).smoothed(POINTS)
     length = sg.path_length(pts)
     if not length > 0:
         return None

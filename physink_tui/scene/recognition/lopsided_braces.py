@@ -18,9 +18,9 @@ import math
 import numpy as np
 
 from physink_tui.scene.recognition import angular_braces
-from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Recognition
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 SHORT_HALF = (0.1, 0.4)
 """The short half, from the point (the stroke's farthest from the line joining its ends) to its end, is this share of
@@ -45,12 +45,13 @@ running along the line is `angular_braces`' case), less than square to the spine
 `angular_braces.ARM_DEG` of the line): a square bracket's arm turns off the spine at a right angle."""
 
 
-def lopsided_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0) -> bool:
+def lopsided_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0, coarse: np.ndarray | None = None,
+                   ) -> bool:
     """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes`` its
     `stroke_features.lobes`) is a lopsided brace with a straight short half, by its layout (`laid_out`) and turning
     both ways (two lobes or more; `angular_braces.POINT_LOBE_DEG` where few events sampled the point); ``noise``: the
-    pen's, in ``work``'s units."""
-    if len(lobes) < 2 and len(sf.lobes(work, angular_braces.POINT_LOBE_DEG, noise=noise)) < 2:
+    pen's, in ``work``'s units; ``coarse``: its `stroke_geometry.coarse_turning` at that noise, where already known."""
+    if len(lobes) < 2 and len(angular_braces.point_lobes(work, noise, coarse)) < 2:
         return False
     return laid_out(work)
 
@@ -116,14 +117,17 @@ def laid_out(work: np.ndarray) -> bool:
     return abs(end_off) >= END_OFF * chord and past >= POINT_PAST * chord
 
 
-def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
+def kept_brace(found: Recognition, unit: np.ndarray, noise: float, views: StrokeViews | None = None) -> bool:
     """Whether the rules read a curve from a stroke (``unit``: its points at unit size, ``noise`` the pen's in those
     units) laid out as a lopsided brace (`laid_out`, judged as `angular_braces.kept_brace` judges its own): not asked of
-    the learned ranker (`recognize`), which sees its square corner and straight runs as a polyline's."""
+    the learned ranker (`recognize`), which sees its square corner and straight runs as a polyline's. ``views``: the
+    stroke's `stroke_views.StrokeViews`, where made."""
     if found.kind != "curve" or not _roughly_lopsided(unit):
         return False
-    work = sg.hooks_cut(unit, angular_braces.JUDGED_POINTS)
-    return laid_out(work) and len(sf.lobes(work, noise=noise)) >= 2  # the layout first: the lobes cost more
+    views = StrokeViews(unit) if views is None else views
+    work = views.hooks_cut(angular_braces.JUDGED_POINTS)
+    # the layout first: the lobes cost more
+    return laid_out(work) and len(views.cut_lobes(angular_braces.JUDGED_POINTS, noise)) >= 2
 
 
 def _roughly_lopsided(pts: np.ndarray) -> bool:

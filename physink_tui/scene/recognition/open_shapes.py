@@ -170,6 +170,13 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     coarse = sg.coarse_turning(work, noise)
     lobes = sf.turn_lobes(coarse)  # `stroke_features.lobes`, once for every rule below
     concentration = sf.turn_concentration(coarse)
+    bracket_found: list[tuple[tuple[float, float], ...] | None] = []
+
+    def rounded_bracket() -> tuple[tuple[float, float], ...] | None:  # measured once, where first asked
+        if not bracket_found:
+            bracket_found.append(round_brackets.rounded_bracket(work, lobes))
+        return bracket_found[0]
+
     smooth = concentration < SMOOTH  # a polyline turning the same way at sharp corners is not round
     if (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
             and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum())):
@@ -177,13 +184,13 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         # rounded at both corners, which turns that far only with its hooks and has a straight spine
         open_ellipse = fit_ellipse(work)
         if (open_ellipse is not None and open_ellipse[4] < 0.6 * round_error(open_ellipse, noise)
-                and round_brackets.rounded_bracket(work, lobes) is None):
+                and rounded_bracket() is None):
             geom, kind = round_geometry(open_ellipse)
             return Recognition(kind, 0.7, geom, (("arc", 0.5),))
         # a lead in from inside, or an end curled in past the start: the round core with a stroke inside it
         core = round_cores.round_core(work, lambda e: e[4] < 0.6 * round_error(e, noise), NEARLY_ROUND * math.pi,
                                       open_ellipse)
-        if core is not None and round_brackets.rounded_bracket(work, lobes) is None:
+        if core is not None and rounded_bracket() is None:
             geom, kind = round_geometry(core)
             return Recognition(kind, 0.65, geom, (("curve", 0.5),))
     roundness = sf.corner_roundness(work, corners, th=th)
@@ -193,19 +200,19 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             and not _brace_tip(work, corners) and not _tip_in_line(work, corners, lobes)
             and not bracket_marks.looped_point(th, corners, lobes)
             and not bracket_marks.brace_point(work, corners, lobes)
-            and not angular_braces.angular_brace(work, lobes, noise)
-            and not lopsided_braces.lopsided_brace(work, lobes, noise)
+            and not angular_braces.angular_brace(work, lobes, noise, coarse)
+            and not lopsided_braces.lopsided_brace(work, lobes, noise, coarse)
             and (all(straight_runs) or _bent_polyline(th, corners, lobes, bows)
                  or _tick_into_bend(work, corners, straight_runs, roundness, lobes))):
         return Recognition("polyline", 0.85, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     if (len(corners) >= open_marks.SAW_TEETH + 2 and open_marks.sawtooth(work, th, corners, straight_runs, roundness)
-            and not _brace_tip(work, corners) and not angular_braces.angular_brace(work, lobes, noise)):
+            and not _brace_tip(work, corners) and not angular_braces.angular_brace(work, lobes, noise, coarse)):
         # a zig-zag's sharp teeth between a loose lead-in and a curled tail (`open_marks.sawtooth`)
         return Recognition("polyline", 0.8, Polyline(tuple(_pt(work[c]) for c in corners)), (("curve", 0.3),))
     bracket = bracket_marks.rounded_bracket_corners(work, th, corners, lobes)
     if bracket is not None:  # one corner rounded off: a square bracket still
         return Recognition("polyline", 0.75, Polyline(tuple(_pt(work[c]) for c in bracket)), (("curve", 0.4),))
-    rounded = round_brackets.rounded_bracket(work, lobes)
+    rounded = rounded_bracket()
     if rounded is not None:  # both corners rounded off: a square bracket still
         return Recognition("polyline", 0.75, Polyline(rounded), (("curve", 0.4),))
     point = bracket_marks.rounded_point(work, th, lobes) if len(corners) <= 3 else None

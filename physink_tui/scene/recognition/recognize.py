@@ -63,6 +63,7 @@ from physink_tui.scene.recognition.ranking import (
 )
 from physink_tui.scene.recognition.round_or_cornered import cornered_after_all
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 TOO_SHORT = "too short to recognise"
 MAX_COORDINATE = 1e150  # beyond this, fitting squares coordinates past what a float holds
@@ -200,16 +201,18 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
                                                 f"({noise:.3g} units)")
     unit_noise = noise / scale
     unit = (pts - origin) / scale
+    unit.flags.writeable = False
+    views = StrokeViews(unit)  # the resampled copies the checks below share, each made once for this stroke
     with np.errstate(all="ignore"):  # degenerate shapes make NaN fits, which the ranking then drops
         rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale,
-                          (given if given > 0 else noise) / scale, _kept_times(times, keep, len(pts)))
-        result = waves.as_curve(rules, unit)  # a wave's round bends are no zig-zag's teeth
+                          (given if given > 0 else noise) / scale, _kept_times(times, keep, len(pts)), views)
+        result = waves.as_curve(rules, unit, views)  # a wave's round bends are no zig-zag's teeth
         wavy = result is not rules
         # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
         # (`sparse_bends`: a device's few events make any stroke straight runs joined at sharp turns)
-        chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise)
+        chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise, views)
         # a tick whose short arm the rules cut as a hook (under a tenth of the path, longer than a hook reaches)
-        tick = (hooked_ticks.hooked_tick(unit, unit_noise)
+        tick = (hooked_ticks.hooked_tick(unit, unit_noise, views)
                 if chain is None and not wavy and result.kind in hooked_ticks.READ_AS else None)
     if chain is not None:
         result = chain
@@ -224,10 +227,10 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     # drawn as straight runs, lopsided with a straight short half or square-cornered the rules read as a curve
     if (not learned or wavy or chain is not None or tick is not None
             or open_shapes.straight_armed_mark(result, pts, noise)
-            or round_brackets.kept_bracket(result, unit, unit_noise)
-            or angular_braces.kept_brace(result, unit, unit_noise)
-            or lopsided_braces.kept_brace(result, unit, unit_noise)
-            or square_braces.kept_brace(result, unit, unit_noise)):
+            or round_brackets.kept_bracket(result, unit, unit_noise, views)
+            or angular_braces.kept_brace(result, unit, unit_noise, views)
+            or lopsided_braces.kept_brace(result, unit, unit_noise, views)
+            or square_braces.kept_brace(result, unit, unit_noise, views)):
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
@@ -280,9 +283,10 @@ short pokes out by about 15 % of the stroke's diagonal)."""
 
 
 def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float,
-              pen: float, times: np.ndarray | None = None) -> Recognition:
+              pen: float, times: np.ndarray | None = None, views: StrokeViews | None = None) -> Recognition:
     """``raw`` at unit size; ``diag`` its `stroke_geometry.bbox_diagonal`, ``noise`` in the same units (the stroke's
-    measured jitter where worse than the pen's stated ``pen``); ``times`` one a point of ``raw`` (seconds) or None."""
+    measured jitter where worse than the pen's stated ``pen``); ``times`` one a point of ``raw`` (seconds) or None;
+    ``views``: ``raw``'s `stroke_views.StrokeViews`, where made."""
     found = open_shapes.line(raw, noise, diag, pen)
     if found is not None:
         return found
@@ -316,7 +320,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
             if left_open is not None:
                 closed, loop = True, left_open
     if not closed:
-        return _open_reading(raw, work, n, noise, sigma, weights, diag)
+        return _open_reading(raw, work, n, noise, sigma, weights, diag, views)
     polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
     if ellipse is None:  # not already fitted to this loop by `closed_loops.closed_loop`
         ellipse = fit_ellipse(loop)
@@ -337,7 +341,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     ranked = rounded_boxes.box_rounded_all_round(ranked, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
-        return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag)
+        return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag, views)
     return _or_freeform(ranked, loop, closed=True, sigma=sigma)
 
 
@@ -364,12 +368,12 @@ def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray,
 
 
 def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,
-                  diag: float) -> Recognition:
+                  diag: float, views: StrokeViews | None = None) -> Recognition:
     """An open stroke, judged by how it turns: on points a few noise widths apart, jitter makes no corners."""
     coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
     found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
                                       weights.round_corner)
-    if found.kind == "polyline" and square_braces.square_brace(raw, noise):
+    if found.kind == "polyline" and square_braces.square_brace(raw, noise, views):
         # a brace drawn square-cornered, whose small point these coarse points smoothed away
         found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
     round_left_open = found.kind in ("circle", "ellipse")

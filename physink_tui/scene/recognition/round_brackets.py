@@ -19,9 +19,9 @@ import statistics
 
 import numpy as np
 
-from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Polyline, Recognition
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 POINTS = 64
 """The stroke is judged resampled to this many points, lightly smoothed (`stroke_geometry.smooth`)."""
@@ -171,7 +171,9 @@ def _half_turn(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, in
     return pts, drawn, heading, (lead > 0) + (tail > 0)
 
 
-def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, float], ...] | None:
+def rounded_bracket(work: np.ndarray, lobes: list[float],
+                    turned: tuple[np.ndarray, np.ndarray, np.ndarray, int] | None = None,
+                    ) -> tuple[tuple[float, float], ...] | None:
     """The four vertices (start, corner, corner, end) of a square bracket whose corners are rounded off, or None.
 
     ``work``: the open stroke (hooks and corner loops removed, as `open_shapes.classify_open` judges it); ``lobes``:
@@ -181,10 +183,10 @@ def rounded_bracket(work: np.ndarray, lobes: list[float]) -> tuple[tuple[float, 
     about a right angle (`BEND_DEG`), both the same way, half a turn in all (`HALF_TURN`; less, `SPLAYED_TURN`, for
     long arms splayed off a straight spine); the spine's middle
     three fifths have no point (`stroke_geometry.POINT_TURN_DEG` within `stroke_geometry.POINT_SPAN`: a brace's tip,
-    small, between arms drawn straight)."""
+    small, between arms drawn straight). ``turned``: ``work``'s `_half_turn`, where already found (not None)."""
     if not 1 <= len(lobes) <= 3 or len(work) < 8:
         return None
-    found = _half_turn(work)
+    found = _half_turn(work) if turned is None else turned
     if found is None or len(lobes) > 1 + found[3]:
         return None
     pts, drawn, heading, _ = found
@@ -239,18 +241,20 @@ JUDGED_POINTS = 128
 an open stroke)."""
 
 
-def kept_bracket(found: Recognition, unit: np.ndarray, noise: float) -> bool:
+def kept_bracket(found: Recognition, unit: np.ndarray, noise: float, views: StrokeViews | None = None) -> bool:
     """Whether the rules read a polyline of four vertices from a stroke (``unit``: its points at unit size, ``noise``
     the pen's in those units) that is a `rounded_bracket`: not asked of the learned ranker (`recognize`), which was
     fitted on people whose round-cornered strokes were mostly curves and takes a bracket's rounded corners for a
-    curve's bends."""
+    curve's bends. ``views``: the stroke's `stroke_views.StrokeViews`, where made."""
     if found.kind != "polyline" or not isinstance(found.geometry, Polyline) or len(found.geometry.points) != 4:
         return False
     v = np.diff(np.asarray(found.geometry.points, dtype=float), axis=0)
     turns = np.degrees(np.arctan2(v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0], (v[:-1] * v[1:]).sum(axis=1)))
     if not (turns[0] * turns[1] > 0 and all(VERTEX_BEND[0] <= abs(t) <= VERTEX_BEND[1] for t in turns)):
         return False  # checked first, on the polyline's own vertices: no bracket's two bends (an N, a zig-zag)
-    work = sg.hooks_cut(unit, JUDGED_POINTS)
-    if _half_turn(work) is None:
+    views = StrokeViews(unit) if views is None else views
+    work = views.hooks_cut(JUDGED_POINTS)
+    turned = _half_turn(work)
+    if turned is None:
         return False  # checked first: the lobes cost more
-    return rounded_bracket(work, sf.lobes(work, noise=noise)) is not None
+    return rounded_bracket(work, views.cut_lobes(JUDGED_POINTS, noise), turned) is not None

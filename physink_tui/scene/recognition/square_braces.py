@@ -20,6 +20,7 @@ import numpy as np
 
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Recognition
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 JUDGED_POINTS = 160
 """The stroke is judged on this many points equally spaced, lightly smoothed (`stroke_geometry.smooth`): a point a
@@ -95,18 +96,25 @@ def _piece(sharp: np.ndarray, cum: np.ndarray, k: int, way: int) -> tuple[int, i
     return None
 
 
-def square_brace(raw: np.ndarray, noise: float) -> bool:
+def square_brace(raw: np.ndarray, noise: float, views: StrokeViews | None = None) -> bool:
     """Whether the open stroke ``raw`` (its points as drawn; ``noise`` the pen's, in their units) is a brace drawn
     square-cornered: a sharp point about halfway (`POINT_AT`) between two straight pieces of spine (`PIECE_SHARE`,
     `PIECE_STRAIGHT`) in line with each other (`IN_LINE_DEG`, `IN_LINE_OFF`), standing out of each piece's line
     (`POINT_NOISE`, `POINT_OUT`, `POINT_DEEP`) away from the ends (`END_OFF`, `END_NOISE`), the stroke running along
-    the line joining its ends (`NO_RETURN`). The same whichever end it was drawn from, whichever way it faces."""
+    the line joining its ends (`NO_RETURN`). The same whichever end it was drawn from, whichever way it faces.
+    ``views``: ``raw``'s `stroke_views.StrokeViews`, where made (the answer then found once for each ``noise``)."""
+    if views is not None:
+        return views.once(("square_brace", noise), lambda: _square_brace(raw, noise, views))
+    return _square_brace(raw, noise, None)
+
+
+def _square_brace(raw: np.ndarray, noise: float, views: StrokeViews | None) -> bool:
     if len(raw) < 8:
         return False
     n = JUDGED_POINTS
     if noise > 0:
         n = int(min(JUDGED_POINTS, max(MIN_POINTS, sg.path_length(raw) / (SPACING * noise))))
-    pts = sg.smooth(sg.resample(raw, n))
+    pts = sg.smooth(sg.resample(raw, n)) if views is None else views.smoothed(n)
     start, end = pts[0], pts[-1]
     chord = float(np.hypot(*(end - start)))
     if chord == 0.0:
@@ -153,8 +161,8 @@ def square_brace(raw: np.ndarray, noise: float) -> bool:
                for (end_off, mid_off), own in zip(offs, depths, strict=True))
 
 
-def kept_brace(found: Recognition, unit: np.ndarray, noise: float) -> bool:
+def kept_brace(found: Recognition, unit: np.ndarray, noise: float, views: StrokeViews | None = None) -> bool:
     """Whether the rules read a curve from a stroke (``unit``: its points at unit size, ``noise`` the pen's in those
     units) that is a `square_brace`: not asked of the learned ranker (`recognize`), which sees its square corners and
     straight runs as a bracket's, a polyline."""
-    return found.kind == "curve" and square_brace(unit, noise)
+    return found.kind == "curve" and square_brace(unit, noise, views)

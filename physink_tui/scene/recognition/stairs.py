@@ -25,6 +25,7 @@ import numpy as np
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Polyline, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_line
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 SPACING = 1.5
 """The stroke is resampled to points this many of the pen's noise widths apart (at least `MIN_POINTS`, at most
@@ -71,15 +72,15 @@ END_STUB = 0.3
 chain starts (or ends) at its corner."""
 
 
-def corner_chain(unit: np.ndarray, noise: float) -> np.ndarray | None:
+def corner_chain(unit: np.ndarray, noise: float, views: StrokeViews | None = None) -> np.ndarray | None:
     """The chain's corners, ends included (points of the resampled stroke; a hook at an end left out), when ``unit``
     (the stroke at unit size; ``noise``, the pen's jitter in the same units) is a chain of sharp corners joined by
-    straight sides; else None."""
+    straight sides; else None. ``views``: the stroke's `stroke_views.StrokeViews`, where made."""
     length = sg.path_length(unit)
     if not noise > 0 or not length > 0:
         return None
     n = int(min(MAX_POINTS, max(MIN_POINTS, length / (SPACING * noise))))
-    work = sg.smooth(sg.resample(unit, n))
+    work = (StrokeViews(unit) if views is None else views).smoothed(n)
     th = sg.turning(work)
     corners = _corners(th, len(work))
     if len(corners) < MIN_CORNERS + 2:
@@ -212,14 +213,15 @@ def _stubs_dropped(work: np.ndarray, corners: list[int]) -> list[int]:
     return corners
 
 
-def chain_reading(found: Recognition, unit: np.ndarray, noise: float) -> Recognition | None:
+def chain_reading(found: Recognition, unit: np.ndarray, noise: float, views: StrokeViews | None = None,
+                  ) -> Recognition | None:
     """None unless ``found`` (the rules' reading of the stroke, at unit size) is a curve, a line or a polyline and the
     stroke is a `corner_chain`; then the reading to keep, which the learned ranker is not asked about: the rules'
     polyline where it has as many corners as the chain, else the polyline through the chain's corners (instead of a
     curve or a line, that kind the alternative)."""
     if found.kind not in ("curve", "line", "polyline"):
         return None
-    chain = corner_chain(unit, noise)
+    chain = corner_chain(unit, noise, views)
     if chain is None:
         return None
     if isinstance(found.geometry, Polyline) and len(found.geometry.points) >= len(chain):

@@ -21,6 +21,7 @@ from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry
 from physink_tui.scene.recognition.primitives import Polyline, Recognition
+from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 WAVE_POINTS = 128
 """The stroke is judged resampled to this many points (a wave of 3.5 periods: 18 a half-period, enough to see a bend's
@@ -51,17 +52,19 @@ REACH = 3
 """A bend's direction is the sign of the turning summed over this many points either side of it."""
 
 
-def wave(unit: np.ndarray) -> tuple[np.ndarray, list[int]] | None:
+def wave(unit: np.ndarray, views: StrokeViews | None = None) -> tuple[np.ndarray, list[int]] | None:
     """The stroke (its points at unit size) resampled (`WAVE_POINTS`) and its bends, ends included, when it is a
     wave: at least `MIN_BENDS` inner bends, each turning the other way from the one before, every one round
-    (`MIN_ROUNDNESS`), the sides between them curved (`SIDE_BOW`); else None."""
+    (`MIN_ROUNDNESS`), the sides between them curved (`SIDE_BOW`); else None. ``views``: the stroke's
+    `stroke_views.StrokeViews`, where made."""
     if len(unit) < 3 or sg.bbox_diagonal(unit) == 0.0:
         return None
-    work, corners = _bends(unit, WAVE_POINTS)
+    views = StrokeViews(unit) if views is None else views
+    work, corners = _bends(views, WAVE_POINTS)
     if len(corners) < MIN_BENDS + 2:
         return None
     if SIDE_POINTS * (len(corners) - 1) > WAVE_POINTS:  # small teeth: judged on enough points to see them sharp
-        work, corners = _bends(unit, SIDE_POINTS * (len(corners) - 1))
+        work, corners = _bends(views, SIDE_POINTS * (len(corners) - 1))
         if len(corners) < MIN_BENDS + 2:
             return None
     th = sg.turning(work)  # th[k] is the turn at point k + 1
@@ -83,9 +86,9 @@ def _long_straight_piece(work: np.ndarray, corners: list[int]) -> bool:
     return m > a and b > m and max(sg.chord_deviation(work[a:m + 1]), sg.chord_deviation(work[m:b + 1])) < SIDE_BOW
 
 
-def _bends(unit: np.ndarray, n: int) -> tuple[np.ndarray, list[int]]:
+def _bends(views: StrokeViews, n: int) -> tuple[np.ndarray, list[int]]:
     """The stroke resampled to ``n`` points, lightly smoothed, and its bends there, ends included."""
-    work = sg.smooth(sg.resample(unit, n))
+    work = views.smoothed(n)
     return work, sf.drop_end_stubs(work, sg.find_corners(work, every_dip=True), sg.path_length(work))
 
 
@@ -101,13 +104,13 @@ def side_bow(work: np.ndarray, corners: list[int]) -> float:
     return min(float(np.median(halves)), 1.0) if halves else 0.0
 
 
-def as_curve(found: Recognition, unit: np.ndarray) -> Recognition:
+def as_curve(found: Recognition, unit: np.ndarray, views: StrokeViews | None = None) -> Recognition:
     """``found`` (the rules' reading of the stroke, at unit size), or, when the rules read a polyline and the stroke
     is a `wave`, the curve through it, the polyline the alternative. Only a polyline with a vertex at `MIN_BENDS`
     bends or more is looked at (the rules put one at each bend they saw): a tick, a v, a caret, a bracket is not."""
     if not isinstance(found.geometry, Polyline) or len(found.geometry.points) < MIN_BENDS + 2:
         return found
-    seen = wave(unit)
+    seen = wave(unit, views)
     if seen is None:
         return found
     work, corners = seen
