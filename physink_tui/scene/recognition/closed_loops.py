@@ -90,11 +90,12 @@ def polygon_left_open(work: np.ndarray, diag: float) -> bool:
     closure = sf.closure(work, diag)
     if closure >= LEFT_OPEN_CLOSURE:
         return False
-    turned = abs(float(sg.turning(work).sum()))
+    th = sg.turning(work)
+    turned = abs(float(th.sum()))
     if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
         return False
     if closure < 0.42:
-        corners = sf.drop_end_stubs(work, sg.find_corners(work), length)
+        corners = sf.drop_end_stubs(work, sg.find_corners(work, th=th), length)
         runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
         if ((turned >= LEFT_OPEN_TURN or abs(sides_turning(work[corners])) >= LEFT_OPEN_TURN)
                 and len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])

@@ -80,7 +80,7 @@ def _arm_corner(pts: np.ndarray, within: int, noise: float) -> int | None:
     more."""
     steps = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts[:within + REACH + 1], axis=0).T))])
     best, best_turn = None, CORNER_DEG
-    for c in range(1, within + 1):
+    for c in _may_turn(pts, within):
         if steps[c] < ARM_REACH * noise:
             continue
         u, v = pts[c] - pts[max(0, c - REACH)], pts[c + REACH] - pts[c]
@@ -91,6 +91,22 @@ def _arm_corner(pts: np.ndarray, within: int, noise: float) -> int | None:
         if turned >= best_turn:
             best, best_turn = c, turned
     return best
+
+
+FIRST_LOOK_SLACK = 1e-6
+"""`_may_turn` keeps a point whose chords' cosine is up to this much over `CORNER_DEG`'s: far more than the rounding by
+which its arithmetic, done for all points at once, may differ from `_arm_corner`'s own, one point at a time."""
+
+
+def _may_turn(pts: np.ndarray, within: int) -> list[int]:
+    """The points from 1 to ``within`` where the path may turn by `CORNER_DEG` between the chords `REACH` points either
+    side (as `_arm_corner` measures it), in order: a first look at all of them at once, with room to spare
+    (`FIRST_LOOK_SLACK`), so that `_arm_corner` measures only these, and finds what it would find measuring all."""
+    c = np.arange(1, within + 1)
+    u, v = pts[c] - pts[np.maximum(c - REACH, 0)], pts[c + REACH] - pts[c]
+    norms = np.hypot(u[:, 0], u[:, 1]) * np.hypot(v[:, 0], v[:, 1])
+    dots = u[:, 0] * v[:, 0] + u[:, 1] * v[:, 1]
+    return (c[dots <= (math.cos(math.radians(CORNER_DEG)) + FIRST_LOOK_SLACK) * norms]).tolist()
 
 
 def _tick(arm: np.ndarray, rest: np.ndarray, noise: float, length: float) -> bool:

@@ -161,7 +161,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     length = sg.path_length(work)
     th = sg.turning(work)
     total_turn = float(th.sum())
-    found = sg.find_corners(work, every_dip=True)
+    found = sg.find_corners(work, every_dip=True, th=th)
     corners = _kept_arm(work, found, length)
     runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
     bows = [sg.chord_deviation(run) for run in runs]  # each side's, for the tests below

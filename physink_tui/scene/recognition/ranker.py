@@ -177,12 +177,13 @@ CHECK_FEATURES = tuple(FEATURES.index(f) for f in ("corners", "abs_turn", "max_c
 """The features `checked_point` reads."""
 
 
-def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np.ndarray | None:
+def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed: bool = True) -> np.ndarray | None:
     """`features` of a stroke already prepared by `_unit_work`. With ``polyline`` (the rules read one), None as soon
     as the features `checked_point` reads show a hurried check, which `choose` does not ask the model about, or the
     stroke is a tick swung round its point (`bracket_marks.rounded_point`, no corner found, or
     `bracket_marks.unhooked_point`, a corner found only where a hook is cut), which `rerank` does not ask it about
-    either: the others (fits, corner shapes, the rules' tests) are not computed."""
+    either: the others (fits, corner shapes, the rules' tests) are not computed. Without ``timed`` (a model that
+    weighs neither `TIMED_FEATURES` at all: `reads_times`), those are left 0."""
     out = np.zeros(len(FEATURES))
     if found is None:
         return out
@@ -190,7 +191,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
     noise = max(noise, pen_noise.jitter(raw) if jitter is None else jitter) / diag
     length = sg.path_length(work)
     th = sg.turning(work)
-    found_corners = sg.find_corners(work)
+    found_corners = sg.find_corners(work, th=th)
     corners = sf.drop_end_stubs(work, found_corners, length)
     abs_th = np.abs(th)
     coarse = sg.coarse_turning(work, noise)
@@ -229,13 +230,25 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False) -> np
         float(open_shapes._brace_tip(work, corners)),
         float(open_shapes._bowed_between_corners(work, corners, length, deviation)),
         float(open_shapes._rounded_bracket(corners, straights, lobes)), 0.0, 0.0, checks[4]]
-    slow = corner_slowdown(raw, times, corners, len(work))
+    slow = corner_slowdown(raw, times, corners, len(work)) if timed else None
     if slow is not None:
         at = FEATURES.index("has_times")
         out[at:at + 2] = [1.0, slow]
     if not np.isfinite(out).all():  # as np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0), only where needed
         out = np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)
     return out
+
+
+TIMED_FEATURES = ("has_times", "corner_slowdown")
+"""The features only a stroke's times give (`corner_slowdown`)."""
+
+
+def reads_times(model: Model) -> bool:
+    """Whether ``model`` weighs `TIMED_FEATURES` for any kind: if not, what they are changes no score (a weight of 0
+    times a finite feature adds exactly nothing), and `rerank` does not measure them."""
+    width = len(FEATURES) + 1
+    columns = [k * width + FEATURES.index(f) for k in range(len(KINDS)) for f in TIMED_FEATURES]
+    return bool(np.any(model.theta[columns] != 0.0))
 
 
 def point_balance(work: np.ndarray, corners: list[int], turns: list[float]) -> float:
@@ -342,7 +355,7 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     unit = _unit_work(points, times, drawn)
     if found.kind == "polygon" and (unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
         return found
-    phi = _features(unit, noise, polyline=found.kind == "polyline")
+    phi = _features(unit, noise, polyline=found.kind == "polyline", timed=reads_times(model))
     if phi is None:
         return found  # a hurried check: the model is not asked (`choose`)
     kind, chance = choose(found.kind, phi, model)

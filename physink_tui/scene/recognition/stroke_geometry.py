@@ -111,7 +111,7 @@ def chord_deviation(pts: np.ndarray) -> float:
 
 
 def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *, every_dip: bool = False,
-                 ) -> list[int]:
+                 th: np.ndarray | None = None) -> list[int]:
     """Corner indices of a resampled stroke (equal spacing), endpoints included.
 
     A candidate is a local minimum of the straw ``|p[i+w] - p[i-w]|`` below 95 % of the median
@@ -120,7 +120,7 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *
     small teeth, whose sides are shorter than the straw, make one run of short straws with a dip at each sharp corner;
     a brace's tip, one run too, turns less where it leaves and rejoins the stroke). It is kept only if the path turns
     by at least ``min_turn_deg`` across it (so gentle curves make no corners), and corners closer than ``window``
-    points merge.
+    points merge. ``th``: the `turning` of ``pts``, where already measured.
     """
     n = len(pts)
     w = window
@@ -146,7 +146,7 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *
             i = j
         else:
             i += 1
-    th = turning(pts)  # th[k] is the turn at vertex k + 1
+    th = turning(pts) if th is None else th  # th[k] is the turn at vertex k + 1
     corners = [0]
     reach = max(w, 2)
     for c, least in sorted(candidates):
