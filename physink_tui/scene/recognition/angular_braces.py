@@ -117,7 +117,7 @@ def _chord_layout(work: np.ndarray) -> bool:
     along = rel @ unit
     if float(np.max(np.maximum.accumulate(along) - along)) >= NO_RETURN * chord:
         return False
-    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    cum = sg.along(work)
     length = float(cum[-1])
     at = float(cum[k])
     if not POINT_AT[0] * length <= at <= POINT_AT[1] * length:
@@ -159,7 +159,7 @@ def _arms_layout(work: np.ndarray, noise: float = 0.0) -> bool:
     if frame is None:
         return False
     across = frame[2]
-    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    cum = sg.along(work)
     length = float(cum[-1])
     middle = np.flatnonzero((cum >= POINT_AT[0] * length) & (cum <= POINT_AT[1] * length))
     if len(middle) == 0:

@@ -122,7 +122,7 @@ def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> boo
     along = rel @ (end - start) / chord
     if float(np.max(np.maximum.accumulate(along) - along)) >= NO_RETURN * chord:
         return False
-    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    cum = sg.along(work)
     length = float(cum[-1])
     if min(float(cum[k]), length - float(cum[k])) < POINT_FROM_ENDS * length:
         return False
@@ -241,7 +241,7 @@ def unhooked_point(work: np.ndarray, corners: list[int], noise: float) -> tuple[
     last = len(work) - 1
     if len(corners) < 3:
         return None
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    along = sg.along(work)
     reach = HOOK_SHARE * along[-1]
     first, final = 0, last
     for c in corners[1:-1]:

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from physink_tui.scene.recognition import stroke_geometry as sg
+
 SLOW_CORNER = 0.55
 """A closed polygon's vertices were meant when the pen's pace near them (`CORNER_REACH`) is, at the median vertex, under
 this share of the stroke's mean pace. Measured where `round_or_cornered.slowed_corners` asks it (a loop read round, a
@@ -29,7 +31,7 @@ def pace_at_vertices(vertices: np.ndarray, drawn: np.ndarray, times: np.ndarray)
     t = np.asarray(times, dtype=float)
     if not np.isfinite(t).all() or (np.diff(t) < 0).any() or t[-1] <= t[0]:
         return None
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(drawn, axis=0).T))])
+    along = sg.along(drawn)
     length = float(along[-1])
     if length == 0.0:
         return None

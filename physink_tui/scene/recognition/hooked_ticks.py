@@ -63,7 +63,7 @@ def hooked_tick(unit: np.ndarray, noise: float, views: StrokeViews | None = None
         if c is None:
             continue
         if lobes is None:  # without a hook where the pen landed or lifted, which turns back against the mark
-            along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+            along = sg.along(pts)
             cut = lines.HOOK_REACH * noise
             lobes = sf.turn_lobes(sg.coarse_turning(pts[(along >= cut) & (along <= length - cut)], noise))
         if len(lobes) <= 1 and _tick(ordered[:c + 1], ordered[c:], noise, length):
@@ -78,7 +78,7 @@ def _arm_corner(pts: np.ndarray, within: int, noise: float) -> int | None:
     the path turns most between the chords `REACH` points either side of it (on the arm's side, from the start at
     most: a hook where the pen landed bends the arm's chord by less than it turns), when that is `CORNER_DEG` or
     more."""
-    steps = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts[:within + REACH + 1], axis=0).T))])
+    steps = sg.along(pts[:within + REACH + 1])
     best, best_turn = None, CORNER_DEG
     for c in _may_turn(pts, within):
         if steps[c] < ARM_REACH * noise:
@@ -114,7 +114,7 @@ def _tick(arm: np.ndarray, rest: np.ndarray, noise: float, length: float) -> boo
     `lines.HOOK_REACH` noise widths at most, is left out of it, half the arm at most) and ``rest`` (on from the corner)
     a straight side with no point, their chords (the arm's without the hook) not in line: a hook and the first few
     noise widths of a line are no arm, their chord running on along the line."""
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(arm, axis=0).T))])
+    along = sg.along(arm)
     core = arm[along >= min(lines.HOOK_REACH * noise, along[-1] / 2)]  # without a hook where the pen landed
     if len(core) > 2 and sg.chord_deviation(core) >= sg.ARM_STRAIGHT:
         return False

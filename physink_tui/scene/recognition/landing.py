@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from physink_tui.scene.recognition import stroke_geometry as sg
+
 DWELL_RADIUS = 0.06
 """A dwell stays within this share of the stroke's diagonal of its end point (or two noise widths, if more)."""
 DWELL_PATH = 3.5
@@ -34,7 +36,7 @@ def _dwell(pts: np.ndarray, radius: float) -> int:
     if out < DWELL_POINTS:
         return 0
     extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
-    path = float(np.hypot(*np.diff(pts[:out], axis=0).T).sum())
+    path = float(sg.step_lengths(pts[:out]).sum())
     if path < DWELL_PATH * extent:
         return 0
     spread = np.linalg.eigvalsh(np.cov((pts[:out] - pts[:out].mean(axis=0)).T))

@@ -63,8 +63,8 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     `stroke_geometry.remove_hooks` cuts (a tenth of the path). Not both ends at once: short pieces standing off both
     ends are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px spine), and a hand hooks one end far more
     often than both (mmg's lines: the start 2 %, the end 13 %)."""
-    steps = np.hypot(*np.diff(raw, axis=0).T)
-    along = np.concatenate([[0.0], np.cumsum(steps)])
+    steps = sg.step_lengths(raw)
+    along = np.concatenate([[0.0], np.add.accumulate(steps)])
     length = float(along[-1])
     cut = min(HOOK_REACH * noise, HOOK_SHARE * length)
     if not cut > 0 or sharp_corner(raw, noise):
@@ -101,7 +101,7 @@ def beyond_wobble(raw: np.ndarray, noise: float, pen: float) -> bool:
     steps of h, `line_test_points`, and smoothed: `stroke_geometry.smooth` averages five of them) come within 2.5 h of
     each point of the piece's path, so they stray by that less at least (a hair's margin for rounding)."""
     d = raw[1:] - raw[:-1]
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(d[:, 0], d[:, 1]))])  # as `unhooked` measures it
+    along = np.concatenate([[0.0], np.add.accumulate(np.hypot(d[:, 0], d[:, 1]))])  # as `unhooked` measures it
     length = float(along[-1])
     cut = min(HOOK_REACH * pen, HOOK_SHARE * length)
     inner = raw[(along > cut) & (along < length - cut)]
@@ -167,7 +167,7 @@ def ink(pts: np.ndarray, noise: float) -> float:
     >>> round(ink(zigzag, 1.0), 1), round(float(np.hypot(*np.diff(zigzag, axis=0).T).sum()), 1)
     (30.1, 33.5)
     """
-    steps = np.hypot(*np.diff(pts, axis=0).T)
+    steps = sg.step_lengths(pts)
     length = float(steps.sum())
     k = int(min(len(pts), max(2, length / (INK_STEP * noise) + 1))) if noise > 0 else len(pts)
     return length if k >= len(pts) else float(np.hypot(*np.diff(sg.resample(pts, k), axis=0).T).sum())
@@ -200,7 +200,7 @@ def sharp_corner(pts: np.ndarray, noise: float) -> bool:
     >>> sharp_corner(tick, 1.0), sharp_corner(np.column_stack([np.arange(30.0), np.zeros(30)]), 1.0)
     (True, False)
     """
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    along = sg.along(pts)
     reach = HOOK_REACH * noise
     back = _at_each(pts, along, np.maximum(along - reach, 0.0))
     ahead = _at_each(pts, along, np.minimum(along + reach, along[-1]))
@@ -234,7 +234,7 @@ def without_hooked_ends(pts: np.ndarray, noise: float) -> np.ndarray:
     >>> len(without_hooked_ends(hooked, 1.0)) < len(hooked), len(without_hooked_ends(arc, 1.0)) == len(arc)
     (True, True)
     """
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    along = sg.along(pts)
     reach = HOOK_REACH * noise
     head = int(np.count_nonzero(along <= reach))
     tail = int(np.count_nonzero(along >= along[-1] - reach))

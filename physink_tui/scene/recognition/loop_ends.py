@@ -55,8 +55,8 @@ def retraced_lead(work: np.ndarray, diag: float) -> int:
     (`LEAD_REACH`, `LEAD_BACK`, `LEAD_ALONG`) and drew the shape from there: a box's first side or a circle's first arc
     drawn twice over. Cut, the shape is read as drawn once; ``work`` is the stroke resampled evenly along its path."""
     n = len(work)
-    steps = np.hypot(*np.diff(work, axis=0).T)
-    along = np.concatenate([[0.0], np.cumsum(steps)])
+    steps = sg.step_lengths(work)
+    along = np.concatenate([[0.0], np.add.accumulate(steps)])
     if n < 8 or along[-1] <= 0.0:
         return 0
     head = int(np.searchsorted(along, LEAD_SHARE * along[-1], side="right"))

@@ -76,7 +76,7 @@ def laid_out(work: np.ndarray) -> bool:
     along = (work - work[0]) @ unit
     if float(np.max(np.maximum.accumulate(along) - along)) >= angular_braces.NO_RETURN * chord:
         return False
-    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(work, axis=0).T))])
+    cum = sg.along(work)
     length = float(cum[-1])
     at = float(cum[k])
     long_first = 2 * at >= length
@@ -146,7 +146,7 @@ def _roughly_lopsided(pts: np.ndarray) -> bool:
     k = int(np.argmax(np.abs(across)))
     if float(np.max(-math.copysign(1.0, float(across[k])) * across)) > 2 * angular_braces.ONE_SIDE * chord:
         return False
-    steps = np.hypot(*np.diff(pts, axis=0).T)
+    steps = sg.step_lengths(pts)
     length = float(steps.sum())
     short = min(float(steps[:k].sum()), length - float(steps[:k].sum()))
     return SHORT_HALF[0] / 2 * length <= short <= min(0.5, 2 * SHORT_HALF[1]) * length

@@ -23,6 +23,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from physink_tui.scene.recognition import stroke_geometry as sg
+
 LIFT_PAUSE = 1.0
 """Seconds without an event before a far landing counts as a lift: a person re-aiming takes 1.5-5 s (shriyansnidhish's
 recorder in hcira: 10th percentile 1.5 s of 284 lifts); reports dropped while a finger moved on lasted 0.3-0.76 s
@@ -50,7 +52,7 @@ def last_attempt(points: Sequence[Sequence[float]], times: Sequence[float] | Non
         return None  # the recogniser says what is wrong with such points
     if pts.ndim != 2 or pts.shape[1] != 2 or not np.isfinite(pts).all():
         return None
-    steps = np.hypot(*np.diff(pts, axis=0).T)
+    steps = sg.step_lengths(pts)
     moving = steps[steps > 0]
     diag = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
     if len(moving) < 4 or diag == 0.0:

@@ -78,7 +78,7 @@ def path_step(steps: np.ndarray) -> float:
     steps = np.asarray(steps, dtype=float)
     if len(steps) == 0:
         return 0.0
-    middle = np.cumsum(steps) - steps / 2
+    middle = np.add.accumulate(steps) - steps / 2
     length = float(middle[-1] + steps[-1] / 2)
     body = steps[(middle >= END_PATH * length) & (middle <= (1 - END_PATH) * length)]
     short = steps < CLUSTER_STEP * median(body if len(body) else steps)

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, run_lines
 from physink_tui.scene.recognition.stroke_features import roundness_along, walk
 
@@ -223,10 +224,10 @@ def typical_step(drawn: np.ndarray) -> float:
     """The step between the stroke's points that half its length is drawn in steps at least as long as (a median
     weighted by length: events in bursts, a few points close together then a long gap, have short steps but draw
     the path in the gaps' long ones)."""
-    steps = np.sort(np.hypot(*np.diff(drawn, axis=0).T))
+    steps = np.sort(sg.step_lengths(drawn))
     if not len(steps) or steps[-1] == 0.0:
         return math.inf
-    covered = np.cumsum(steps[::-1])  # the longest first
+    covered = np.add.accumulate(steps[::-1])  # the longest first
     return float(steps[::-1][int(np.searchsorted(covered, covered[-1] / 2))])
 
 

@@ -123,7 +123,7 @@ def line_costs(pts: np.ndarray, cand: np.ndarray, sums: np.ndarray | None = None
     """``C[a, b]``: summed squared distance of ``pts[cand[a]..cand[b]]`` to their own best-fitting line (total
     least squares; inf for ``a >= b``), so where exactly a corner's apex point lies costs nothing."""
     sx, sy, sxx, syy, sxy = sums if sums is not None else moments(pts)
-    i, j = np.meshgrid(cand, cand, indexing="ij")
+    i, j = cand[:, None], cand[None, :]  # `np.meshgrid(cand, cand, indexing="ij")`, broadcast instead of copied
     ok = j > i
     lo, hi = i, np.where(ok, j + 1, i + 1)
     m = (hi - lo).astype(float)
@@ -218,7 +218,7 @@ def moments(pts: np.ndarray) -> np.ndarray:
     x, y = pts[:, 0], pts[:, 1]
     out = np.zeros((5, len(pts) + 1))
     for row, values in zip(out, (x, y, x * x, y * y, x * y), strict=True):
-        np.cumsum(values, out=row[1:])
+        np.add.accumulate(values, out=row[1:])
     return out
 
 

@@ -275,7 +275,7 @@ def corner_slowdown(raw: np.ndarray, times: Sequence[float] | None, corners: lis
         return None
     s = np.empty(len(raw))
     s[0] = 0.0
-    np.cumsum(seg, out=s[1:])
+    np.add.accumulate(seg, out=s[1:])
     mid = (s[:-1] + s[1:])[ok] / 2 / max(s[-1], 1e-12)
     speed = seg[ok] / dt[ok]
     overall = sg.median(speed)

@@ -126,7 +126,7 @@ def fit_cubic(pts: np.ndarray) -> tuple[np.ndarray, float]:
     seg = np.hypot(d[:, 0], d[:, 1])
     u = np.empty(n)
     u[0] = 0.0
-    np.cumsum(seg, out=u[1:])
+    np.add.accumulate(seg, out=u[1:])
     u = u / u[-1] if u[-1] else np.linspace(0, 1, n)
     b0, b1, b2, b3 = (1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3
     start, end = b0[:, None] * p0, b3[:, None] * p3  # np.outer(b0, p0), np.outer(b3, p3): made once, used twice

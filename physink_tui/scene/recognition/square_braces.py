@@ -69,7 +69,7 @@ def _sharp(pts: np.ndarray, length: float) -> np.ndarray:
     """Each point's turn (degrees, net) within `stroke_geometry.POINT_SPAN` of the path round it."""
     step = length / (len(pts) - 1)
     w = max(1, round(sg.POINT_SPAN * length / step))
-    done = np.concatenate([[0.0], np.cumsum(np.degrees(sg.turning(pts)))])
+    done = np.concatenate([[0.0], np.add.accumulate(np.degrees(sg.turning(pts)))])
     sharp = np.zeros(len(pts))
     sharp[(w + 1) // 2:(w + 1) // 2 + len(done) - w] = np.abs(done[w:] - done[:-w])
     return sharp
@@ -122,7 +122,7 @@ def _square_brace(raw: np.ndarray, noise: float, views: StrokeViews | None) -> b
     along = (pts - start) @ ((end - start) / chord)
     if float(np.max(np.maximum.accumulate(along) - along)) >= NO_RETURN * chord:
         return False  # checked first: most strokes are no brace
-    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    cum = sg.along(pts)
     length = float(cum[-1])
     middle = np.flatnonzero((cum >= POINT_AT[0] * length) & (cum <= POINT_AT[1] * length))
     if len(middle) == 0 or length == 0.0:

@@ -157,14 +157,14 @@ def _corners(th: np.ndarray, n: int) -> list[int]:
     where it turns most sharply first (over a point either side), each counting only turning that no corner taken
     before it counted (a corner spread over a few points is one corner; two corners a few points apart are two, each
     where it turns); the ends included."""
-    cum = np.concatenate([[0.0], np.cumsum(th)])  # cum[k]: turning done before point k + 1
+    cum = np.concatenate([[0.0], np.add.accumulate(th)])  # cum[k]: turning done before point k + 1
     idx = np.arange(1, n - 1)
     sharpness = np.abs(cum[np.minimum(idx + 1, n - 2)] - cum[np.maximum(idx - 1, 1) - 1])
     least = math.radians(MIN_TURN_DEG)
     # only points turning sharply enough over a point either side, whose window turns by `least` or more all told
     # (whichever of its points are free, their net turn is no more): at this fine scale most points of a smooth or
     # jittery path turn a little, and few can be corners (a hair's margin for rounding: the rest fail the test anyway)
-    whole = np.concatenate([[0.0], np.cumsum(np.abs(th))])
+    whole = np.concatenate([[0.0], np.add.accumulate(np.abs(th))])
     lo, hi = np.maximum(idx - REACH, 1) - 1, np.minimum(idx + REACH, n - 2)
     may = (sharpness >= least / (2 * REACH + 1)) & (whole[hi] - whole[lo] >= least * (1 - 1e-9))
     free = np.ones(len(th), dtype=bool)  # turning not yet counted by a corner (th[k - 1] is point k's)

@@ -119,7 +119,7 @@ def closure(work: np.ndarray, diag: float) -> float:
 def retraced(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
     """Whether what comes after the first time round runs back over it (a shape drawn twice),
     rather than on new ground (a star turns twice round on different sides)."""
-    end = int(np.searchsorted(np.abs(np.cumsum(th)), 2 * math.pi)) + 2
+    end = int(np.searchsorted(np.abs(np.add.accumulate(th)), 2 * math.pi)) + 2
     first, rest = work[:end], work[end:]
     if len(rest) < 4 or len(first) < 4:
         return False
@@ -137,7 +137,7 @@ def retraced(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
 def one_loop(work: np.ndarray, th: np.ndarray) -> np.ndarray:
     """The stroke once round: up to where it comes closest to its start while its turning is
     between 1.5 and 2.5 pi (robust to where exactly a corner completes the turn), resampled."""
-    cum = np.abs(np.concatenate([[0.0, 0.0], np.cumsum(th)]))  # turning done on reaching each point
+    cum = np.abs(np.concatenate([[0.0, 0.0], np.add.accumulate(th)]))  # turning done on reaching each point
     window = np.flatnonzero((cum >= 1.5 * math.pi) & (cum <= 2.5 * math.pi))
     if not len(window):
         return work
@@ -171,9 +171,9 @@ def walk(work: np.ndarray, th: np.ndarray | None = None) -> tuple[list[float], l
     floats (each corner's walk looks at a few of them one at a time)."""
     if th is None:
         th = sg.turning(work)  # th[k] is the turn at point k + 1
-    cum_turn = [0.0, *np.cumsum(th).tolist()]  # cum_turn[k]: turning done before point k + 1
+    cum_turn = [0.0, *np.add.accumulate(th).tolist()]  # cum_turn[k]: turning done before point k + 1
     d = work[1:] - work[:-1]
-    cum_len = [0.0, *np.cumsum(np.hypot(d[:, 0], d[:, 1])).tolist()]
+    cum_len = [0.0, *np.add.accumulate(np.hypot(d[:, 0], d[:, 1])).tolist()]
     return cum_turn, cum_len
 
 

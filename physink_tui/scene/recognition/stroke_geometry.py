@@ -33,12 +33,31 @@ def path_length(pts: np.ndarray) -> float:
     return float(np.hypot(d[:, 0], d[:, 1]).sum())
 
 
+def step_lengths(pts: np.ndarray) -> np.ndarray:
+    """The length of each step between neighbouring points: ``np.hypot(*np.diff(pts, axis=0).T)`` to the bit, without
+    ``np.diff``'s per-call overhead."""
+    d = pts[1:] - pts[:-1]
+    return np.hypot(d[:, 0], d[:, 1])
+
+
+def along(pts: np.ndarray) -> np.ndarray:
+    """The path's length from its start to each point: ``np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts,
+    axis=0).T))])`` to the bit, without those calls' per-call overhead (this is asked thousands of times a stroke)."""
+    if len(pts) == 0:
+        return np.zeros(1)
+    d = pts[1:] - pts[:-1]
+    out = np.empty(len(pts))
+    out[0] = 0.0
+    np.add.accumulate(np.hypot(d[:, 0], d[:, 1]), out=out[1:])  # `np.cumsum`'s own sums
+    return out
+
+
 def resample(pts: np.ndarray, n: int) -> np.ndarray:
     """``n`` points equally spaced along the path (first and last kept)."""
     d = pts[1:] - pts[:-1]
     cum = np.empty(len(pts))
     cum[0] = 0.0
-    np.cumsum(np.hypot(d[:, 0], d[:, 1]), out=cum[1:])
+    np.add.accumulate(np.hypot(d[:, 0], d[:, 1]), out=cum[1:])  # `np.cumsum`'s own sums
     total = cum[-1]
     if total == 0.0 or n < 2:
         return np.repeat(pts[:1], max(n, 1), axis=0)
@@ -268,7 +287,7 @@ def sharpest_turn(run: np.ndarray, span: float) -> float:
         return 0.0
     step = path_length(run) / (len(run) - 1)
     w = max(1, round(span / step)) if step > 0 else 1
-    done = np.concatenate([[0.0], np.cumsum(np.degrees(turning(run)))])
+    done = np.concatenate([[0.0], np.add.accumulate(np.degrees(turning(run)))])
     if w >= len(done):
         return abs(float(done[-1]))
     return float(np.abs(done[w:] - done[:-w]).max())
@@ -295,7 +314,7 @@ def end_arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
 def _hook_end(th_head: np.ndarray, min_turn_deg: float) -> int | None:
     """Index of the vertex where a hook at the start of ``th_head`` (degrees) has done its turning:
     the first point where the cumulative turn is within 15 % of its extreme, if that is large."""
-    cum = np.abs(np.cumsum(th_head))
+    cum = np.abs(np.add.accumulate(th_head))
     peak = float(cum.max()) if len(cum) else 0.0
     if peak < min_turn_deg:
         return None

@@ -52,7 +52,7 @@ def thin_brace(raw: np.ndarray, noise: float) -> bool:
     along = rel @ unit
     if float(np.max(np.maximum.accumulate(along) - along)) >= NO_RETURN * chord:
         return False  # checked first, with the point below: most strokes the line test passes are lines
-    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    cum = sg.along(pts)
     length = float(cum[-1])
     middle = np.flatnonzero((cum >= POINT_AT[0] * length) & (cum <= POINT_AT[1] * length))
     if len(middle) == 0:
@@ -61,7 +61,7 @@ def thin_brace(raw: np.ndarray, noise: float) -> bool:
     # unlike width tilt it is a curl's foot, not the point)
     step = length / (len(pts) - 1)
     w = max(1, round(sg.POINT_SPAN * length / step))
-    done = np.concatenate([[0.0], np.cumsum(np.degrees(sg.turning(pts)))])  # done[j]: turned at points 1 .. j
+    done = np.concatenate([[0.0], np.add.accumulate(np.degrees(sg.turning(pts)))])  # done[j]: turned at points 1 .. j
     sharp = np.zeros(len(pts))  # each point's turn within `stroke_geometry.POINT_SPAN` round it (`sharpest_turn`'s)
     sharp[(w + 1) // 2:(w + 1) // 2 + len(done) - w] = np.abs(done[w:] - done[:-w])
     k = int(middle[np.argmax(sharp[middle])])
