@@ -246,9 +246,12 @@ TIMED_FEATURES = ("has_times", "corner_slowdown")
 def reads_times(model: Model) -> bool:
     """Whether ``model`` weighs `TIMED_FEATURES` for any kind: if not, what they are changes no score (a weight of 0
     times a finite feature adds exactly nothing), and `rerank` does not measure them."""
-    width = len(FEATURES) + 1
-    columns = [k * width + FEATURES.index(f) for k in range(len(KINDS)) for f in TIMED_FEATURES]
-    return bool(np.any(model.theta[columns] != 0.0))
+    return bool(model.theta[_TIMED_COLUMNS].any())
+
+
+_TIMED_COLUMNS = np.array([k * (len(FEATURES) + 1) + FEATURES.index(f) for k in range(len(KINDS))
+                           for f in TIMED_FEATURES])
+"""Where `design` puts `TIMED_FEATURES` for each kind (the weights `reads_times` looks at)."""
 
 
 def point_balance(work: np.ndarray, corners: list[int], turns: list[float]) -> float:
