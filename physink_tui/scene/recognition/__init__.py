@@ -197,6 +197,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   tenth the rules cut as one), read as a tick (a polyline)
 - `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
   ShortStraw/IStraw corners, hooks, small loops at corners
+- `stroke_views.py`: one stroke's resampled, smoothed and hook-cut copies that the checks after the rules (waves,
+  stairs, ticks, brackets, braces) share, each made once a recognition (read-only, never shared between strokes)
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points (their step
   judged along the stroke's body, not a landing's cluster), and whether a few sparse events turn at every one (a
   round shape sampled, not a polygon's sides)
@@ -208,7 +210,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
 - `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;
-  a hurried check's stop once `checked_point` can tell), its model (read once from the package's data), its choice
+  a hurried check's stop once `checked_point` can tell; the timed ones only where the model weighs them), its model
+  (read once from the package's data), its choice; `ranker_pace.py` two of its features (where the sharpest corner
+  falls along the path, how the pen slowed at corners)
 - `shape_fits.py`: total-least-squares line, Kasa circle, Fitzgibbon direct ellipse, cubic Bézier fits
 - `beautify.py`: the clean geometry of each kind, points on it (`shape_points`, for the bounds check), mapping back
   to the stroke's units

@@ -327,8 +327,7 @@ def ends_cross(work: np.ndarray, diag: float) -> bool:
     an x's first and last strokes cross at their middles, far from the ends; a pigtail's crossing is between long
     tails."""
     k = max(2, int(END_SHARE * len(work)))
-    steps = sg.step_lengths(work)
-    along = np.concatenate([[0.0], np.add.accumulate(steps)])
+    along = sg.along(work)
     head_n = int(np.searchsorted(along, CLOSED_GAP * diag, side="right"))
     tail_n = int(np.searchsorted(along[-1] - along[::-1], CLOSED_GAP * diag, side="right"))
     head, tail = work[:min(head_n + 1, k)], work[len(work) - min(tail_n + 1, k):]

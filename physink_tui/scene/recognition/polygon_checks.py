@@ -134,19 +134,21 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: f
     hairpins: list[int] = []
     if closed:
         m = len(lengths)
-        for v in np.flatnonzero(degrees >= HAIRPIN_DEG):  # the turn at the end of side v, i.e. at vertex v + 1
+        # the same numbers as Python floats: the walks below compare them one at a time
+        side, turned = lengths.tolist(), degrees.tolist()
+        for v in np.flatnonzero(degrees >= HAIRPIN_DEG).tolist():  # the turn at the end of side v: at vertex v + 1
             apart = float(np.hypot(*(verts[v] - verts[(v + 2) % m])))  # the far ends of the sides meeting there
-            if apart < HAIRPIN_GAP * min(lengths[v], lengths[(v + 1) % m]):
-                hairpins.append(int(v + 1) % m)
+            if apart < HAIRPIN_GAP * min(side[v], side[(v + 1) % m]):
+                hairpins.append((v + 1) % m)
         for s in range(m):  # a short side between two gentle turns is a rounded corner cut off
-            shorter = min(lengths[s - 1], lengths[(s + 1) % m])
-            longer = max(lengths[s - 1], lengths[(s + 1) % m])
-            short = lengths[s] < CHAMFER * shorter or lengths[s] < CHAMFER_OF_LONGER * longer
-            if (short and max(degrees[s - 1], degrees[s]) < CHAMFER_TURN_DEG
-                    and 60.0 <= degrees[s - 1] + degrees[s] <= 120.0):  # together, about a right angle's turn
+            shorter = min(side[s - 1], side[(s + 1) % m])
+            longer = max(side[s - 1], side[(s + 1) % m])
+            short = side[s] < CHAMFER * shorter or side[s] < CHAMFER_OF_LONGER * longer
+            if (short and max(turned[s - 1], turned[s]) < CHAMFER_TURN_DEG
+                    and 60.0 <= turned[s - 1] + turned[s] <= 120.0):  # together, about a right angle's turn
                 return None
-            ends = sorted((float(degrees[s - 1]), float(degrees[s])))
-            if (lengths[s] < SPUR * longer and ends[1] > SPUR_TURN_DEG and ends[0] < 90.0
+            ends = sorted((turned[s - 1], turned[s]))
+            if (side[s] < SPUR * longer and ends[1] > SPUR_TURN_DEG and ends[0] < 90.0
                     and float(np.hypot(*(corners[(s - 1) % m] - corners[(s + 2) % m]))) > shorter):
                 return None  # a hook: the pen doubled back and went on round (a thin box's end is no hook)
     if _bowed(pts, np.asarray(idx), lengths, noise, fit.sums):
