@@ -148,7 +148,7 @@ def _segmentations(cost: np.ndarray, max_segments: int) -> list[tuple[float, lis
     columns = np.arange(c)
     for _ in range(max_segments):
         total = best[:, None] + cost  # total[a, b]: reach a in k-1 chords, then chord a -> b
-        arg = np.argmin(total, axis=0)
+        arg = total.argmin(axis=0)
         best = total[arg, columns]
         back.append(arg.tolist())
         if not math.isfinite(best[-1]):
