@@ -333,8 +333,8 @@ def ends_cross(work: np.ndarray, diag: float) -> bool:
     head, tail = work[:min(head_n + 1, k)], work[len(work) - min(tail_n + 1, k):]
     if len(head) < 2 or len(tail) < 2:
         return False
-    p, r = head[:-1, None, :], np.diff(head, axis=0)[:, None, :]
-    q, s = tail[None, :-1, :], np.diff(tail, axis=0)[None, :, :]
+    p, r = head[:-1, None, :], (head[1:] - head[:-1])[:, None, :]  # as np.diff, without its per-call overhead
+    q, s = tail[None, :-1, :], (tail[1:] - tail[:-1])[None, :, :]
     den = r[..., 0] * s[..., 1] - r[..., 1] * s[..., 0]
     qp = q - p
     with np.errstate(divide="ignore", invalid="ignore"):

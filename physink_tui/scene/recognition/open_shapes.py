@@ -308,7 +308,8 @@ def _tip_in_line(work: np.ndarray, corners: list[int], lobes: list[float]) -> bo
 
 def _brace_tip(work: np.ndarray, corners: list[int]) -> bool:
     """Whether the stroke runs on in line through a short pointed excursion of one to three sides (`BRACE_TIP`)."""
-    sides = np.diff(work[corners], axis=0)
+    vertices = work[corners]
+    sides = vertices[1:] - vertices[:-1]  # as np.diff, without its per-call overhead
     lengths = np.hypot(*sides.T)
     for i, j in ((i, i + k) for k in (2, 3, 4) for i in range(len(sides) - k)):
         shorter = min(lengths[i], lengths[j])

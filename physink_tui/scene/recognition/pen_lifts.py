@@ -45,7 +45,8 @@ def last_attempt(points: Sequence[Sequence[float]], times: Sequence[float] | Non
         return None
     try:
         at = np.asarray(times, dtype=float)
-        if at.ndim != 1 or not np.isfinite(at).all() or not (np.diff(at) >= LIFT_PAUSE).any():
+        # (``at[1:] - at[:-1]``: np.diff's differences, without its per-call overhead: every stroke is asked)
+        if at.ndim != 1 or not np.isfinite(at).all() or not (at[1:] - at[:-1] >= LIFT_PAUSE).any():
             return None  # no pause long enough for a lift: the common stroke, told without reading its points
         pts = np.asarray([p[:2] for p in points], dtype=float)
     except (TypeError, ValueError, IndexError):
@@ -57,7 +58,7 @@ def last_attempt(points: Sequence[Sequence[float]], times: Sequence[float] | Non
     diag = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
     if len(moving) < 4 or diag == 0.0:
         return None
-    jumps = np.flatnonzero((np.diff(at) >= LIFT_PAUSE) & (steps >= LIFT_STEPS * float(np.median(moving)))
+    jumps = np.flatnonzero((at[1:] - at[:-1] >= LIFT_PAUSE) & (steps >= LIFT_STEPS * float(np.median(moving)))
                            & (steps >= LIFT_SHARE * diag))
     lifts = [int(j) for j in jumps]
     if not lifts:

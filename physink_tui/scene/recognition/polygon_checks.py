@@ -121,14 +121,14 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: f
     pts, idx = fit.points, fit.indices
     corners = fit.vertices
     verts = np.concatenate([corners, corners[:1]]) if closed else corners
-    sides = np.diff(verts, axis=0)
+    sides = verts[1:] - verts[:-1]  # as np.diff, without its per-call overhead (every fit is judged)
     lengths = np.hypot(*sides.T)
     if (lengths == 0).any():
         return None
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     if closed:
         heading = np.append(heading, heading[0])
-    degrees = np.degrees(np.abs((np.diff(heading) + np.pi) % (2 * np.pi) - np.pi))
+    degrees = np.degrees(np.abs((heading[1:] - heading[:-1] + np.pi) % (2 * np.pi) - np.pi))
     if len(degrees) and float(degrees.min()) < min_corner_deg:
         return None
     hairpins: list[int] = []

@@ -186,7 +186,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return Recognition("line", 1.0, Line(_point(pts[0]), _point(pts[-1])))
     # judge the shape at unit size round the origin (no overflow, no underflow), answer in its own units
     with np.errstate(over="ignore", invalid="ignore"):
-        origin = pts.mean(axis=0)
+        origin = np.add.reduce(pts, axis=0) / len(pts)  # `pts.mean(axis=0)` to the bit
         scale = float(np.abs(pts - origin).max())
     if not math.isfinite(scale) or scale == 0.0:
         return Recognition(None, 0.0, None, (), "coordinates too large to recognise")
