@@ -106,7 +106,8 @@ def _may_turn(pts: np.ndarray, within: int) -> list[int]:
     u, v = pts[c] - pts[np.maximum(c - REACH, 0)], pts[c + REACH] - pts[c]
     norms = np.hypot(u[:, 0], u[:, 1]) * np.hypot(v[:, 0], v[:, 1])
     dots = u[:, 0] * v[:, 0] + u[:, 1] * v[:, 1]
-    return (c[dots <= (math.cos(math.radians(CORNER_DEG)) + FIRST_LOOK_SLACK) * norms]).tolist()
+    may: list[int] = c[dots <= (math.cos(math.radians(CORNER_DEG)) + FIRST_LOOK_SLACK) * norms].tolist()
+    return may
 
 
 def _tick(arm: np.ndarray, rest: np.ndarray, noise: float, length: float) -> bool:

@@ -195,7 +195,8 @@ def _turns(pts: np.ndarray, indices: tuple[int, ...]) -> np.ndarray:
     verts = pts[list(indices)]
     heading = np.arctan2(*(verts[1:] - verts[:-1])[:, ::-1].T)  # as np.diff, without its per-call overhead
     heading = np.append(heading, heading[0])
-    return np.abs((heading[1:] - heading[:-1] + np.pi) % (2 * np.pi) - np.pi)
+    turns: np.ndarray = np.abs((heading[1:] - heading[:-1] + np.pi) % (2 * np.pi) - np.pi)
+    return turns
 
 
 def _chains(pts: np.ndarray, max_segments: int, tolerance: float, *, closed: bool) -> dict[int, PolygonFit]:

@@ -37,7 +37,8 @@ def step_lengths(pts: np.ndarray) -> np.ndarray:
     """The length of each step between neighbouring points: ``np.hypot(*np.diff(pts, axis=0).T)`` to the bit, without
     ``np.diff``'s per-call overhead."""
     d = pts[1:] - pts[:-1]
-    return np.hypot(d[:, 0], d[:, 1])
+    out: np.ndarray = np.hypot(d[:, 0], d[:, 1])
+    return out
 
 
 def along(pts: np.ndarray) -> np.ndarray:
