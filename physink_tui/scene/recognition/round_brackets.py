@@ -237,16 +237,6 @@ VERTEX_BEND = (30.0, 150.0)
 JUDGED_POINTS = 128
 """`kept_bracket` judges the stroke resampled to this many points, smoothed, its end hooks cut (as `recognize` judges
 an open stroke)."""
-LOBE_STEP = 6.0
-"""`kept_bracket` counts a bracket's lobes on steps at least this many of the pen's noise widths long, as
-`stroke_geometry.coarse_turning` means to: a hand's tremor of amplitude A (about the pen's noise) bends two steps s
-apart by up to 2 atan(2A / s), which stays under `stroke_features.lobes`' 35 degrees only where s > 6.3 A. On a short
-stroke `coarse_turning` keeps 32 points at least, steps of 1-2.5 px on the 18-40 px brackets of
-`tests/penmodels/bracket_extremes` (a path of 40-80 px), where the hurried hand's 0.5-0.9 px tremor makes lobes of
-35-50 degrees between a bracket's two corners and the gate took it for a brace or an S."""
-LOBE_POINTS = 16
-"""...on at least this many points (steps of a sixteenth of the path: a bracket's arm of a fifth of it keeps a step
-or more, each corner's turn stays whole)."""
 
 
 def kept_bracket(found: Recognition, unit: np.ndarray, noise: float) -> bool:
@@ -263,11 +253,7 @@ def kept_bracket(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     work = sg.hooks_cut(unit, JUDGED_POINTS)
     if _half_turn(work) is None:
         return False  # checked first: the lobes cost more
-    return rounded_bracket(work, _lobes_beyond_tremor(work, noise)) is not None
-
-
-def _lobes_beyond_tremor(work: np.ndarray, noise: float) -> list[float]:
-    """`stroke_features.lobes` of ``work`` on steps `LOBE_STEP` noise widths long (`LOBE_POINTS` to 40 points): as
-    `stroke_geometry.coarse_turning` judges a long stroke, without its floor of 32 points on a short one."""
-    n = 40 if noise <= 0 else int(min(40, max(LOBE_POINTS, sg.path_length(work) / (LOBE_STEP * noise))))
-    return sf.turn_lobes(sg.turning(sg.resample(work, n)))
+    # its lobes counted on steps beyond the pen's tremor (`stroke_geometry.turning_beyond_tremor`): on the 32 points
+    # `stroke_features.lobes` keeps at least, the hurried hand's tremor made lobes of 35-50 degrees between the corners
+    # of 18-40 px brackets (`tests/penmodels/bracket_extremes`' tiny ones) and the gate took them for braces or S's
+    return rounded_bracket(work, sf.turn_lobes(sg.turning_beyond_tremor(work, noise))) is not None
