@@ -216,13 +216,17 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         return Recognition("polyline", 0.7, Polyline(hooked), (("curve", 0.4),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
-        # no S-bends, judged on steps beyond the hand's tremor (`stroke_geometry.turning_beyond_tremor`: on a bow
-        # 15-60 px tall `coarse`'s steps of 1-2 px turn both ways with the tremor)
-        beyond = sg.turning_beyond_tremor(work, noise)
-        one_way = abs(float(beyond.sum())) > 0.8 * float(np.abs(beyond).sum())
-        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
+        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and _one_way(work, noise):
             return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius), (("curve", 0.5),))
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
+
+
+def _one_way(work: np.ndarray, noise: float) -> bool:
+    """Whether ``work`` turns one way, without S-bends, judged on steps beyond the hand's tremor
+    (`stroke_geometry.turning_beyond_tremor`: on a bow 15-60 px tall `coarse_turning`'s steps of 1-2 px turn both ways
+    with a hurried hand's tremor of about a pixel)."""
+    beyond = sg.turning_beyond_tremor(work, noise)
+    return abs(float(beyond.sum())) > 0.8 * float(np.abs(beyond).sum())
 
 
 def _roundest_corner(th: np.ndarray, corners: list[int], roundness: list[float]) -> float:
