@@ -9,7 +9,8 @@ by 30-60 degrees each way between steps. There it made lobes between a tiny brac
 `open_shapes.classify_open` then read a curve, which the learned ranker read as a polyline). Both are now judged on
 `stroke_geometry.turning_beyond_tremor` (steps six noise widths long down to 16 points).
 
-Where a mark cannot be read at all is proved on the pen model itself: `test_a_bow_no_more_bowed_than_the_hands_lines_is_a_line`.
+Where a mark cannot be read at all is proved on the pen model itself
+(`test_a_bow_no_more_bowed_than_the_hands_lines_is_a_line`).
 The held seeds' floors are in `tests/test_bracket_extremes.py` and `tests/test_paren_habits.py`.
 """
 
