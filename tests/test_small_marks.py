@@ -4,10 +4,11 @@ through coarse devices, where the hand's tremor is a large share of the mark.
 The hurried hand (`tests/penmodels/hurried`) trembles 0.5-0.9 px (two sines each way, up to 1.35 px) with 0.3 px of
 sensor noise a report. `stroke_geometry.coarse_turning` judges a stroke on steps six noise widths long, but on 32
 points at least: on a mark of under 192 noise widths of path its steps are 1-2 px, where the tremor turns the heading
-by 30-60 degrees each way between steps. There it made lobes between a tiny bracket's corners (the ranker's gate,
-`round_brackets.kept_bracket`, then took the bracket for a brace) and made a small bow turn both ways (the arc test in
-`open_shapes.classify_open` then read a curve, which the learned ranker read as a polyline). Both are now judged on
-`stroke_geometry.turning_beyond_tremor` (steps six noise widths long down to 16 points).
+by 30-60 degrees each way between steps. There it made lobes between a tiny bracket's corners, and the ranker's gate
+(`round_brackets.kept_bracket`) took the bracket for a brace or an S and let the learned ranker read a curve; the gate
+now counts lobes on `stroke_geometry.turning_beyond_tremor` (steps six noise widths long down to 16 points). (The same
+made small bows turn both ways for `open_shapes.classify_open`'s arc test; judging that on the same turning gained
+small parentheses and arcs but cost tiny braces on the held seeds, and was withdrawn: docs/BENCHMARKS.md.)
 
 Where a mark cannot be read at all is proved on the pen model itself
 (`test_a_bow_no_more_bowed_than_the_hands_lines_is_a_line`).
@@ -36,9 +37,7 @@ from physink_tui.scene.recognition.shape_fits import fit_line
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_bracket_habits import reading
 from bench_mouse_habits import PENS as BRACKET_PENS
-from bench_lines import HELD_SEEDS as LINE_HELD_SEEDS
-from bench_lines import read as read_line
-from bench_open_marks import PENS, read
+from bench_open_marks import PENS
 
 
 def _trembling_line(length: float, amplitude: float, wavelength: float) -> np.ndarray:
@@ -72,28 +71,6 @@ def test_a_tiny_bracket_the_tremor_wobbled_is_kept_from_the_ranker(pen: str, see
     assert reading(stroke, True, learned=False) == "polyline"
     assert reading(stroke, True) == "polyline"
     assert reading(stroke, False) == "polyline"
-
-
-def test_a_small_bow_the_tremor_wobbled_is_an_arc() -> None:
-    """A parenthesis 54 px tall sweeping 70 degrees (`paren_habits` small-paren, tuning seed 3) drawn by the hurried
-    hand: its circle misses it by half a percent of the radius, and on steps beyond the tremor it turns one way (on
-    `coarse_turning`'s 32 points it turned back by 43 % of its turning): an arc, where main 2ff28bf read a curve that
-    the ranker read as a polyline. The careful pen's reads as an arc too."""
-    for pen in ("hurried", "careful"):
-        for timed in (True, False):
-            assert read("small-paren", pen, 3, timed, families=FAMILIES) == "arc", (pen, timed)
-
-
-ARCS_READ_AS_ARCS = {"careful": 48, "hurried": 14, "hurried-coarse": 24}
-"""pen -> of the 60 readings of `bench_lines`' arcs (40-90 degrees on purpose) on its held seeds, how many are arcs, as
-measured on this branch (main 2ff28bf: 48, 8, 24); the rest are curves (the hand's hook or tremor breaks the arc
-test) and lines (`tests/test_lines_drawn.py` bounds those)."""
-
-
-@pytest.mark.parametrize("pen", list(ARCS_READ_AS_ARCS))
-def test_an_arc_the_hand_trembled_along_is_an_arc(pen: str) -> None:
-    got = [read_line("arc", pen, seed, timed)[0] for seed in LINE_HELD_SEEDS for timed in (True, False)]
-    assert got.count("arc") >= ARCS_READ_AS_ARCS[pen], got
 
 
 def _stray(points: np.ndarray) -> float:
@@ -146,10 +123,13 @@ def test_a_bow_no_more_bowed_than_the_hands_lines_is_a_line() -> None:
 def test_a_bow_beyond_the_hands_lines_is_read_as_a_bow() -> None:
     """The other side of that limit: the small parentheses (tuning seeds 0-29) the hurried hand draws straying off
     their best line farther than every one of 200 of its straight lines of the same length (26 of 30, measured) are
-    read as arcs or curves, with and without times, but one: seed 28 (16 px tall, sweeping 108 degrees, straying 2.74
-    px against the lines' 2.47) is read as a line once `lines.unhooked` cuts a third of its path as a landing hook (a
-    short hooked line against a small bow: left to that question, `open_marks.swung_line`'s). Of the four within the
-    lines' reach, seeds 8 and 27 are read as lines, 5 and 13 as curves (nothing in the stroke decides)."""
+    read as arcs or curves, with and without times, but two, both the recogniser's, not the limit's: seed 28 (16 px
+    tall, sweeping 108 degrees, straying 2.74 px against the lines' 2.47) is read as a line once `lines.unhooked` cuts a
+    third of its path as a landing hook (the short hooked line against the small bow: `open_marks.swung_line`'s
+    question, left to it), and seed 3 (54 px, 70 degrees), a curve to the rules whose tremor makes it turn both ways on
+    `coarse_turning`'s steps, is read by the learned ranker as a polyline (left: docs/BENCHMARKS.md, session 25,
+    wt-small). Of the four within the lines' reach, seeds 8 and 27 are read as lines, 5 and 13 as curves: nothing in
+    the stroke decides."""
     beyond = right = 0
     for seed in range(30):
         mark = FAMILIES["small-paren"](seed)
@@ -161,4 +141,4 @@ def test_a_bow_beyond_the_hands_lines_is_read_as_a_bow() -> None:
         beyond += 1
         right += all(recognize_stroke(drawn.tolist(), times).kind in EXPECTED
                      for times in ([p[2] for p in stroke], None))
-    assert beyond == 26 and right >= 25
+    assert beyond == 26 and right >= 24

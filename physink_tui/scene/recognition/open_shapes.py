@@ -216,27 +216,10 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         return Recognition("polyline", 0.7, Polyline(hooked), (("curve", 0.4),))
     if len(corners) <= 3 or concentration < 0.5:
         centre, radius, circle_err = fit_circle(work)
-        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and _one_way(work, noise, coarse):
+        one_way = abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum())  # no S-bends
+        if circle_err < 0.06 and 0.35 < abs(total_turn) < 1.8 * math.pi and one_way:
             return Recognition("arc", 1.0 - circle_err * 5, arc_geometry(work, centre, radius), (("curve", 0.5),))
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
-
-
-EVEN_TURN = 0.4
-"""A stroke turns evenly, as an arc does, when its sharpest fifth does less than this share of its turning (twice an
-even share; `stroke_features.turn_concentration`, on steps beyond the tremor: the pen models' arcs and small
-parentheses 0.20-0.41, braces whose curls the hooks' cut took, leaving a wide chevron, 0.39-0.52)."""
-
-
-def _one_way(work: np.ndarray, noise: float, coarse: np.ndarray) -> bool:
-    """Whether ``work`` turns one way, without S-bends: on its ``coarse`` turning (`stroke_geometry.coarse_turning`),
-    or else, evenly (`EVEN_TURN`: no corner), on steps beyond the hand's tremor (`stroke_geometry.turning_beyond_tremor`:
-    on a bow 15-60 px tall `coarse_turning`'s steps of 1-2 px turn both ways with a hurried hand's tremor of about a
-    pixel; a thin V's or a tick's point turns a right angle and more in one such step)."""
-    if abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
-        return True
-    beyond = sg.turning_beyond_tremor(work, noise)
-    return (abs(float(beyond.sum())) > 0.8 * float(np.abs(beyond).sum())
-            and sf.turn_concentration(beyond) < EVEN_TURN)
 
 
 def _roundest_corner(th: np.ndarray, corners: list[int], roundness: list[float]) -> float:
