@@ -16,6 +16,7 @@ readings; "readings other than box" lists the others for both). Seeds 0-29 are t
 from __future__ import annotations
 
 import sys
+from collections import Counter
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
@@ -43,16 +44,18 @@ def main() -> None:
     seeds, name = chosen_seeds(args)
     results = {(f, p): [read(f, p, s, not args.rules) for s in seeds] for f in families for p in PENS}
     title = f"{name}, {'rules' if args.rules else 'shipped recogniser'}"
-    print(f"#### {title}\n\n| family | " + " | ".join(PENS) + " | other readings |\n|---|" + "---:|" * len(PENS) + "---|")
+    print(f"#### {title}\n\n| family | " + " | ".join(PENS) + " | other readings |")
+    print("|---|" + "---:|" * len(PENS) + "---|")
     for family in families:
-        cells, others = [], {}
+        cells, others = [], Counter[str]()
         for pen in PENS:
             got = results[(family, pen)]
             cells.append(f"{sum(right(family, k) for k in got)}/{len(got)}")
             for k in got:
                 if not right(family, k):
-                    others[str(k)] = others.get(str(k), 0) + 1
-        print(f"| {family} | " + " | ".join(cells) + " | " + ", ".join(f"{k} {v}" for k, v in sorted(others.items())) + " |")
+                    others[str(k)] += 1
+        told = ", ".join(f"{k} {v}" for k, v in sorted(others.items()))
+        print(f"| {family} | " + " | ".join(cells) + f" | {told} |")
     if args.misread:
         for (family, pen), got in results.items():
             for seed, kind in zip(seeds, got, strict=True):

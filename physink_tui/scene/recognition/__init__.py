@@ -74,8 +74,11 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    more, or a loop read round with two sharp corners, is the box drawn with a corner or two rounded off
    (`rounded_corners`) when four sides of its fit run straight for most of their length, meet near right angles, and
    only bows or sharp turns lie between them (a straight stretch between two sides is a side: a pentagon's, a
-   hexagon's, a cut corner's). A loop still read round is the box round it when every one of its four corners
-   reaches at least 0.78 of the way towards the corner of the smallest rectangle round it (`rounded_boxes`: an
+   hexagon's, a cut corner's). A polygon of five or six sides is the box one of whose sides a hand bowed out or in
+   (`bowed_sides`) when three of its sides run straight and square and the rest of the loop is one round bow: on one
+   side of its chord, at most a quarter of it deep, filling its strip as a bow does and bending round, not at a
+   roof's corner (a low pentagon's, a swallowtail's, a deep cut's). A loop still read round is the box round it
+   when every one of its four corners reaches at least 0.78 of the way towards the corner of the smallest rectangle round it (`rounded_boxes`: an
    ellipse reaches 0.707, a box whose every corner is rounded by 0.375 of its side 0.78; people's circles at most
    0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that
    turns back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse
@@ -170,6 +173,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `corner_pace.py`: the pen's pace at a closed polygon's vertices against its mean pace (a hand slows at the corners
   it means, keeps its pace round a circle)
 - `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box
+- `bowed_sides.py`: a box with one side bowed out or in (read as a polygon), read as the box of the loop's area
 - `rounded_boxes.py`: a box with all four corners rounded (read round), read as the box by how far its corners reach
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off; a lead drawn
   out and back and drawn again by the shape)

@@ -6,20 +6,20 @@ bow deeper than about 15 % of its chord is no side to the polygonal fits (`polyg
 fifth or sixth side on it and read a low pentagon, and the box of its corners covers it by too little for
 `recognize._box_as_drawn` (a side bowed by 0.2 changes a 2.5:1 box's area by a fifth). What tells such a bow from a
 pentagon's roof or a notch is its shape across the chord between the walls it joins (`bow_of`): it stays on one
-side of that chord, runs along it without turning back, reaches no further from it than `MAX_BOW` of it, and fills
-the span between the chord and its deepest point as a round bow does, not as a roof's two straight sides meeting at a
-sharp corner do (`ROUND_FILL`).
+side of that chord, runs along it without turning back, reaches no further from it than `MAX_BOW` of it, fills the
+strip between the chord and its deepest point as a round bow does, not as a roof's two straight sides do
+(`ROUND_FILL`), and bends round at its deepest point, not at a corner (`ROUND_BEND`).
 
 The loop is that box when three consecutive sides of a fit of five or six sides run straight for `STRAIGHT_SHARE` of
-the box's sides (`rounded_corners.straight_part`), the box of their lines and the bow's chord meets near right angles
-(`beautify.box_geometry`), and the rest of the loop between the first and third side's straight parts is such a bow.
+the box's sides (`rounded_corners.straight_part`), the two corners between them are turned sharply
+(`polygon_checks.SHARP_CORNER`: a box's corners drawn, not a round loop's or an octagon's cut corners), the box of
+their lines and the bow's chord meets near right angles (`beautify.box_geometry`), and the rest of the loop between
+the first and third sides' straight parts is such a bow.
 The box keeps the loop's own area: its fourth side lies parallel to the chord, where the area the bow adds (or takes)
 is given back (a bow's middle, not its corners: the box a person sees in it).
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
@@ -30,7 +30,7 @@ from physink_tui.scene.recognition.polygon_checks import BOW_SHARE, SHARP_CORNER
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Box, Polygon, Recognition
 from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside
-from physink_tui.scene.recognition.rounded_corners import STRAIGHT_SHARE, Part, straight_parts
+from physink_tui.scene.recognition.rounded_corners import STRAIGHT_SHARE, Part, lines_meet, straight_parts
 
 MAX_BOW = 0.25
 """A bow reaches at most this share of its chord from it: a round bow so deep leaves the walls it joins 45-53 degrees
@@ -42,16 +42,13 @@ of its depth over the chord, over its greatest depth): a round bow 2/pi (a sine'
 circle's arc), more where the hand swings its corners round too; a roof's two straight sides meeting at a corner fill
 half of it, a notch less."""
 ROUND_BEND = 0.45
+"""A bow does 80 % of the turning between the midpoints of its halves over at least this share of half its length
+(`stroke_features.corner_roundness` at its deepest point, measured against half the bow rather than its shorter half,
+which a cut corner's short stretch would make look round): a round bow 0.7 (a sine's half wave) to 0.8 (a parabola, a
+circle's arc); a drawn corner within a tenth or two, a hurried hand's rounded corner within a third
+(`polygon_checks.SHARP_CORNER`)."""
 SIDES = (5, 6)
 """Fits of these many sides are judged: three kept as the box's straight sides, the others taken for the bow."""
-
-
-def _line_meet(p: np.ndarray, d: np.ndarray, q: np.ndarray, e: np.ndarray) -> np.ndarray | None:
-    det = float(e[0] * d[1] - d[0] * e[1])
-    if abs(det) < 1e-9:
-        return None
-    t = float(e[0] * (q - p)[1] - (q - p)[0] * e[1]) / det
-    return p + t * d
 
 
 def _area(ring: np.ndarray) -> float:
@@ -61,9 +58,10 @@ def _area(ring: np.ndarray) -> float:
 
 def bow_of(run: np.ndarray, noise: float) -> tuple[float, float, float] | None:
     """How deep the bow ``run`` (the loop's points between two walls' straight parts, in order) reaches from its own
-    chord, as a share of the chord, and how much of the strip to its deepest point it fills (`ROUND_FILL`); None where
-    it is no bow: it crosses its chord by more than a side may bow (`polygon_checks.BOW_SHARE` of the chord and twice
-    the ``noise``), turns back along it by as much, or is too short to tell."""
+    chord, as a share of the chord, how much of the strip to its deepest point it fills (`ROUND_FILL`) and how round it
+    bends there (`ROUND_BEND`); None where it is no bow: it crosses its chord by more than a side may bow
+    (`polygon_checks.BOW_SHARE` of the chord and twice the ``noise``), turns back along it by as much, is deepest at
+    an end, or is too short to tell."""
     if len(run) < 5:
         return None
     chord = run[-1] - run[0]
@@ -112,8 +110,8 @@ def _bowed_box(fit: PolygonFit, first: int, parts: list[Part], loop_area: float,
         return None
     chord = run[-1] - run[0]
     d = chord / float(np.hypot(*chord))
-    q1, q2 = _line_meet(a[0], a[1], b[0], b[1]), _line_meet(b[0], b[1], c[0], c[1])
-    q3, q0 = _line_meet(c[0], c[1], run[0], d), _line_meet(run[0], d, a[0], a[1])
+    q1, q2 = lines_meet(a[0], a[1], b[0], b[1]), lines_meet(b[0], b[1], c[0], c[1])
+    q3, q0 = lines_meet(c[0], c[1], run[0], d), lines_meet(run[0], d, a[0], a[1])
     if q0 is None or q1 is None or q2 is None or q3 is None:
         return None
     quad = np.array([q0, q1, q2, q3])
@@ -129,7 +127,7 @@ def _bowed_box(fit: PolygonFit, first: int, parts: list[Part], loop_area: float,
     normal = np.array([-d[1], d[0]])
     normal = normal if float((run[0] - b[0]) @ normal) > 0 else -normal
     base = run[0] + normal * (abs(loop_area) - abs(_area(quad))) / width
-    q3, q0 = _line_meet(c[0], c[1], base, d), _line_meet(base, d, a[0], a[1])
+    q3, q0 = lines_meet(c[0], c[1], base, d), lines_meet(base, d, a[0], a[1])
     if q0 is None or q3 is None:
         return None
     quad = np.array([q0, q1, q2, q3])
