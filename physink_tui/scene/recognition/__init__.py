@@ -76,14 +76,14 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    only bows or sharp turns lie between them (a straight stretch between two sides is a side: a pentagon's, a
    hexagon's, a cut corner's). A polygon of five or six sides is the box one of whose sides a hand bowed out or in
    (`bowed_sides`) when three of its sides run straight and square and the rest of the loop is one round bow: on one
-   side of its chord, at most a quarter of it deep, filling its strip as a bow does and bending round, not at a
-   roof's corner (a low pentagon's, a swallowtail's, a deep cut's). A loop still read round is the box round it
-   when every one of its four corners reaches at least 0.78 of the way towards the corner of the smallest rectangle round it (`rounded_boxes`: an
-   ellipse reaches 0.707, a box whose every corner is rounded by 0.375 of its side 0.78; people's circles at most
-   0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that
-   turns back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse
-   misses it by more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a
-   circle back too), is offered no circle or ellipse
+   side of its chord, at most a quarter of it deep, filling its strip as a bow does and bending round, not at a roof's
+   corner (a low pentagon's, a swallowtail's, a deep cut's). A loop still read round is the box round it when every one
+   of its four corners reaches at least 0.78 of the way towards the corner of the smallest rectangle round it
+   (`rounded_boxes`: an ellipse reaches 0.707, a box whose every corner is rounded by 0.375 of its side 0.78; people's
+   circles at most 0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that turns
+   back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse misses it by
+   more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a circle back too),
+   is offered no circle or ellipse
    (`closed_loops.no_round_shape`); a stroke whose tails cross each other near its ends is closed however far apart
    its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner), and one whose ends a hook
    where the pen landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px
