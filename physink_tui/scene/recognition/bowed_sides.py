@@ -10,16 +10,19 @@ side of that chord, runs along it without turning back, reaches no further from 
 strip between the chord and its deepest point as a round bow does, not as a roof's two straight sides do
 (`ROUND_FILL`), and bends round at its deepest point, not at a corner (`ROUND_BEND`).
 
-The loop is that box when three consecutive sides of a fit of five or six sides run straight for `STRAIGHT_SHARE` of
-the box's sides (`rounded_corners.straight_part`), the two corners between them are turned sharply
-(`polygon_checks.SHARP_CORNER`: a box's corners drawn, not a round loop's or an octagon's cut corners), the box of
-their lines and the bow's chord meets near right angles (`beautify.box_geometry`), and the rest of the loop between
-the first and third sides' straight parts is such a bow.
+The loop is that box when three consecutive sides of a fit of five or six sides run straight for `STRAIGHT_SHARE` of the
+box's sides (`rounded_corners.straight_part`), the middle one stands square to both others (`quads.SQUARE_WALL`: a
+regular pentagon's sides turn 18 degrees off square, the pen models' trapezoids' legs 13 or more: `quads.LEG_INWARD`),
+the two corners between them are turned sharply (`polygon_checks.SHARP_CORNER`: a box's corners drawn, not a round
+loop's or an octagon's cut corners), the box of their lines and the bow's chord meets near right angles
+(`beautify.box_geometry`), and the rest of the loop between the first and third sides' straight parts is such a bow.
 The box keeps the loop's own area: its fourth side lies parallel to the chord, where the area the bow adds (or takes)
 is given back (a bow's middle, not its corners: the box a person sees in it).
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -29,6 +32,7 @@ from physink_tui.scene.recognition.candidates import Pending
 from physink_tui.scene.recognition.polygon_checks import BOW_SHARE, SHARP_CORNER, corner_roundness_closed, crossings
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Box, Polygon, Recognition
+from physink_tui.scene.recognition.quads import SQUARE_WALL
 from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside
 from physink_tui.scene.recognition.rounded_corners import STRAIGHT_SHARE, Part, lines_meet, straight_parts
 
@@ -54,6 +58,11 @@ SIDES = (5, 6)
 def _area(ring: np.ndarray) -> float:
     x, y = ring[:, 0], ring[:, 1]
     return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def _off_square(d: np.ndarray, e: np.ndarray) -> float:
+    """Degrees two unit directions are off square."""
+    return 90.0 - math.degrees(math.acos(min(1.0, abs(float(d @ e)))))
 
 
 def bow_of(run: np.ndarray, noise: float) -> tuple[float, float, float] | None:
@@ -100,6 +109,8 @@ def _bowed_box(fit: PolygonFit, first: int, parts: list[Part], loop_area: float,
     ring = pts[:-1]
     m, k = len(ring), len(idx) - 1
     a, b, c = parts
+    if max(_off_square(a[1], b[1]), _off_square(b[1], c[1])) > SQUARE_WALL:
+        return None  # the side between the walls not square to both: a pentagon's, a trapezoid's leg
     start, end = idx[(first + 2) % k] + c[4], idx[first] + a[3]
     run = ring[np.arange(start, end + (m if end < start else 0) + 1) % m]
     roundness = corner_roundness_closed(fit)
