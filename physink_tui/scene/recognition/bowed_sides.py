@@ -11,10 +11,11 @@ strip between the chord and its deepest point as a round bow does, not as a roof
 (`ROUND_FILL`), and bends round at its deepest point, not at a corner (`ROUND_BEND`).
 
 The loop is that box when three consecutive sides of a fit of five or six sides run straight for `STRAIGHT_SHARE` of the
-box's sides (`rounded_corners.straight_part`), the middle one stands square to both others (`SQUARE_TO_WALLS`),
-the two corners between them are turned sharply (`polygon_checks.SHARP_CORNER`: a box's corners drawn, not a round
-loop's or an octagon's cut corners), the box of their lines and the bow's chord meets near right angles
-(`beautify.box_geometry`), and the rest of the loop between the first and third sides' straight parts is such a bow.
+box's sides (`rounded_corners.straight_part`), the middle one stands square to both others (`quads.SQUARE_WALL`, 12
+degrees, as an askew box's square wall: a regular pentagon's sides turn 18 off square), the two corners between them are
+turned sharply (`polygon_checks.SHARP_CORNER`: a box's corners drawn, not a round loop's or an octagon's cut corners),
+the box of their lines and the bow's chord meets near right angles (`beautify.box_geometry`), and the rest of the loop
+between the first and third sides' straight parts is such a bow.
 The box keeps the loop's own area: its fourth side lies parallel to the chord, where the area the bow adds (or takes)
 is given back (a bow's middle, not its corners: the box a person sees in it).
 """
@@ -31,6 +32,7 @@ from physink_tui.scene.recognition.candidates import Pending
 from physink_tui.scene.recognition.polygon_checks import BOW_SHARE, SHARP_CORNER, corner_roundness_closed, crossings
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Box, Polygon, Recognition
+from physink_tui.scene.recognition.quads import SQUARE_WALL
 from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside
 from physink_tui.scene.recognition.rounded_corners import STRAIGHT_SHARE, Part, lines_meet, straight_parts
 
@@ -38,9 +40,6 @@ SHALLOWEST = 2 * BOW_SHARE
 """A bow reaches more than this share of its chord from it (0.12): a shallower one is a side to the box rules already
 (`recognize._box_as_drawn`; `box_habits` side-bowed, 6-12 %: every one a box), and a straight side a device's few
 events bend (a trapezoid's leg through a coarse device: 0.11) is no bow."""
-SQUARE_TO_WALLS = 15.0
-"""Degrees: the side between the two walls stands this near square to both (a regular pentagon's sides turn 18 off
-square; the pen models' bowed boxes stand within 10, quickdraw BG square #4526069946253312 within 12.9)."""
 MAX_BOW = 0.25
 """A bow reaches at most this share of its chord from it: a round bow so deep leaves the walls it joins 45-53 degrees
 off its chord's line (a parabola's, a circle's), half way from a side to a wall; deeper, it is a D's half round or an
@@ -114,7 +113,7 @@ def _bowed_box(fit: PolygonFit, first: int, parts: list[Part], loop_area: float,
     ring = pts[:-1]
     m, k = len(ring), len(idx) - 1
     a, b, c = parts
-    if max(_off_square(a[1], b[1]), _off_square(b[1], c[1])) > SQUARE_TO_WALLS:
+    if max(_off_square(a[1], b[1]), _off_square(b[1], c[1])) > SQUARE_WALL:
         return None  # the side between the walls not square to both: a pentagon's, a trapezoid's leg
     start, end = idx[(first + 2) % k] + c[4], idx[first] + a[3]
     run = ring[np.arange(start, end + (m if end < start else 0) + 1) % m]
