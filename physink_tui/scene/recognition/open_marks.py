@@ -62,8 +62,8 @@ HOOKED_STRAIGHT = SWUNG_WOBBLE
 end curls as a hook where the pen landed or lifted does (`lines.HOOK_CURL_DEG`): then there is no bow for the circle to
 explain, only a line whose hooks the cut left part of (`hooked_straight`). A short line hooked at both ends, the hurried
 hand's through a coarse device among them, lost to `SWUNG_WOBBLE` (issue 25, session 25: `benchmarks/bench_lines.py`'s
-short-hooked family): a line misses its middle by 0.3-1.5 noise widths, the small parentheses `SWUNG_WOBBLE` keeps by
-1.5 or more, or, straighter (flat in the middle), their ends bend off by 31 degrees or less."""
+short-hooked family). What the cuts leave of such lines strays 0.3-2.2 noise widths from its line, of the pen models'
+parentheses 0.13-10; those under 1.5 (a small bow flat in the middle) bend off at their ends by 31 degrees or less."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
