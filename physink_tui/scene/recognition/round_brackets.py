@@ -253,4 +253,7 @@ def kept_bracket(found: Recognition, unit: np.ndarray, noise: float) -> bool:
     work = sg.hooks_cut(unit, JUDGED_POINTS)
     if _half_turn(work) is None:
         return False  # checked first: the lobes cost more
-    return rounded_bracket(work, sf.lobes(work, noise=noise)) is not None
+    # its lobes counted on steps beyond the pen's tremor (`stroke_geometry.turning_beyond_tremor`): on the 32 points
+    # `stroke_features.lobes` keeps at least, the hurried hand's tremor made lobes of 35-50 degrees between the corners
+    # of 18-40 px brackets (`tests/penmodels/bracket_extremes`' tiny ones) and the gate took them for braces or S's
+    return rounded_bracket(work, sf.turn_lobes(sg.turning_beyond_tremor(work, noise))) is not None
