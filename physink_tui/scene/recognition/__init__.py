@@ -107,7 +107,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
    by running back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed
    one way and back (turning both ways, no point, no circle fitting its bow beyond the pen's own wobble, straying under
-   9 % of its length) is a line (`open_marks.swung_line`). Beside a really sharp corner, a bend under
+   9 % of its length) is a line (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely
+   as a circle, an end curling as a hook does (`open_marks.hooked_straight`). Beside a really sharp corner, a bend under
    `open_shapes.SHARP_CORNER` is an arm's wobble whose roundness does not make the mark round
    (`open_shapes._roundest_corner`). Marks these rules misjudge (`bracket_marks`): a square bracket with one corner
    rounded off (one sharp corner, half a turn one way, a straight spine) is a polyline through its rounded corner
