@@ -10,6 +10,9 @@ A line is the commonest part of a machine sketch (a rod, a ground, a ramp). The 
 - **hooked**: the same with a hook where the pen lands, where it lifts, or both: 2-8 px (a person's hook is the pen's
   landing or flick, as long on a short line as on a long one; at most a third of the line), turned back 100-160 deg;
 - **bowed**: the same bowed to one side, its sag 0-4 % of its length (a hurried or swung hand), hooks as the pen's;
+- **short-hooked**: a line 25-90 px long (log-uniform) hooked at both ends as the hooked family is (issue 25, session
+  25: such a line, the hurried hand's through a coarse device, lost to `open_marks.SWUNG_WOBBLE`; `open_marks.
+  hooked_straight` gives it back);
 - **arc**: part of a circle swept 20-90 deg on purpose, its chord 40-500 px; expected an arc (a curve is counted apart:
   not a line, but not the arc drawn either).
 
@@ -45,8 +48,10 @@ from physink_tui.scene.recognition.recognize import recognize_stroke
 TUNING_SEEDS = range(30)
 HELD_SEEDS = range(1000, 1030)
 Point = tuple[float, float]
-FAMILIES = ("straight", "hooked", "bowed", "arc")
-EXPECTED = {"straight": "line", "hooked": "line", "bowed": "line", "arc": "arc"}
+FAMILIES = ("straight", "hooked", "bowed", "arc", "short-hooked")
+EXPECTED = {"straight": "line", "hooked": "line", "bowed": "line", "arc": "arc", "short-hooked": "line"}
+HOOKED = ("hooked", "short-hooked")
+"""The families drawn with their own hooks (the hurried hand draws none of its own on them)."""
 LENGTH_BINS = ((15.0, 40.0), (40.0, 150.0), (150.0, 800.0))
 
 
@@ -84,6 +89,8 @@ def shape(family: str, seed: int) -> tuple[list[Point], float]:
             x, y = radius * math.sin(a), radius * (math.cos(a) - math.cos(sweep / 2))
             keys.append((cx + x * d[0] - y * d[1], cy + x * d[1] + y * d[0]))
         return keys, chord
+    if family == "short-hooked":
+        return _short_hooked(rng, cx, cy, d)
     length = math.exp(rng.uniform(math.log(15.0), math.log(800.0)))
     sag = rng.uniform(0.0, 0.04) * rng.choice((-1, 1)) if family == "bowed" else 0.0
     n = max(8, int(length / 3))
@@ -104,6 +111,20 @@ def shape(family: str, seed: int) -> tuple[list[Point], float]:
     return keys, length
 
 
+def _short_hooked(rng: random.Random, cx: float, cy: float, d: Point) -> tuple[list[Point], float]:
+    """A line 25-90 px long centred on (``cx``, ``cy``) along ``d``, hooked where the pen lands and where it lifts, each
+    hook 2-8 px (at most a third of the line) turned back 100-160 degrees to either side (`_hook`)."""
+    length = math.exp(rng.uniform(math.log(25.0), math.log(90.0)))
+    n = max(8, int(length / 3))
+    keys = [(cx + (k / n - 0.5) * length * d[0], cy + (k / n - 0.5) * length * d[1]) for k in range(n + 1)]
+    keys = _hook(keys[0], d, min(rng.uniform(2.0, 8.0), length / 3), rng.choice((-1, 1))
+                 * rng.uniform(100.0, 160.0)) + keys
+    back = (-d[0], -d[1])
+    keys = keys + _hook(keys[-1], back, min(rng.uniform(2.0, 8.0), length / 3), rng.choice((-1, 1))
+                        * rng.uniform(100.0, 160.0))[::-1]
+    return keys, length
+
+
 LAND = 0.3
 """When the hurried hand lands, seconds (its tremor runs on the session's clock): as in a session's journal
 (`tests/test_lines_drawn.py`), so a seed draws there the stroke it draws here."""
@@ -116,9 +137,9 @@ def hurried_reports(points: list[Point], seed: int, habits: Habits | None) -> li
 
 def habits_of(pen: str, family: str) -> Habits | None:
     """The hurried hand's habits for ``pen`` (the slow shaky hand's, or the default) without its own hooks on the
-    hooked family, which has its own."""
+    hooked families, which have their own (`HOOKED`)."""
     habits = SHAKY_SLOW if pen == "shaky" else Habits()
-    return replace(habits, hook=0.0) if family == "hooked" else habits
+    return replace(habits, hook=0.0) if family in HOOKED else habits
 
 
 def _hurried(points: list[Point], seed: int, habits: Habits | None) -> list[tuple[float, float, float]]:
@@ -126,7 +147,7 @@ def _hurried(points: list[Point], seed: int, habits: Habits | None) -> list[tupl
 
 
 def hurried(points: list[Point], family: str, seed: int) -> list[tuple[float, float, float]]:
-    """The hurried hand along ``points`` (its own hooks, but not on the hooked family, which has its own)."""
+    """The hurried hand along ``points`` (its own hooks, but not on the hooked families, which have their own)."""
     return _hurried(points, seed, habits_of("hurried", family))
 
 
@@ -139,7 +160,7 @@ def hurried_coarse(points: list[Point], family: str, seed: int) -> list[tuple[fl
 
 
 def shaky(points: list[Point], family: str, seed: int) -> list[tuple[float, float, float]]:
-    """The slow shaky hand (`penmodels.hurried.SHAKY_SLOW`; its own hooks, but not on the hooked family)."""
+    """The slow shaky hand (`penmodels.hurried.SHAKY_SLOW`; its own hooks, but not on the hooked families)."""
     return _hurried(points, seed, habits_of("shaky", family))
 
 

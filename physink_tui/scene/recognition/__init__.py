@@ -74,13 +74,16 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    more, or a loop read round with two sharp corners, is the box drawn with a corner or two rounded off
    (`rounded_corners`) when four sides of its fit run straight for most of their length, meet near right angles, and
    only bows or sharp turns lie between them (a straight stretch between two sides is a side: a pentagon's, a
-   hexagon's, a cut corner's). A loop still read round is the box round it when every one of its four corners
-   reaches at least 0.78 of the way towards the corner of the smallest rectangle round it (`rounded_boxes`: an
-   ellipse reaches 0.707, a box whose every corner is rounded by 0.375 of its side 0.78; people's circles at most
-   0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that
-   turns back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse
-   misses it by more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a
-   circle back too), is offered no circle or ellipse
+   hexagon's, a cut corner's). A polygon of five or six sides is the box one of whose sides a hand bowed out or in
+   (`bowed_sides`) when three of its sides run straight and square and the rest of the loop is one round bow: on one
+   side of its chord, at most a quarter of it deep, filling its strip as a bow does and bending round, not at a roof's
+   corner (a low pentagon's, a swallowtail's, a deep cut's). A loop still read round is the box round it when every one
+   of its four corners reaches at least 0.78 of the way towards the corner of the smallest rectangle round it
+   (`rounded_boxes`: an ellipse reaches 0.707, a box whose every corner is rounded by 0.375 of its side 0.78; people's
+   circles at most 0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that turns
+   back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse misses it by
+   more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a circle back too),
+   is offered no circle or ellipse
    (`closed_loops.no_round_shape`); a stroke whose tails cross each other near its ends is closed however far apart
    its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner), and one whose ends a hook
    where the pen landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px
@@ -104,7 +107,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
    by running back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed
    one way and back (turning both ways, no point, no circle fitting its bow beyond the pen's own wobble, straying under
-   9 % of its length) is a line (`open_marks.swung_line`). Beside a really sharp corner, a bend under
+   9 % of its length) is a line (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely
+   as a circle, an end curling as a hook does (`open_marks.hooked_straight`). Beside a really sharp corner, a bend under
    `open_shapes.SHARP_CORNER` is an arm's wobble whose roundness does not make the mark round
    (`open_shapes._roundest_corner`). Marks these rules misjudge (`bracket_marks`): a square bracket with one corner
    rounded off (one sharp corner, half a turn one way, a straight spine) is a polyline through its rounded corner
@@ -170,6 +174,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `corner_pace.py`: the pen's pace at a closed polygon's vertices against its mean pace (a hand slows at the corners
   it means, keeps its pace round a circle)
 - `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box
+- `bowed_sides.py`: a box with one side bowed out or in (read as a polygon), read as the box of the loop's area
 - `rounded_boxes.py`: a box with all four corners rounded (read round), read as the box by how far its corners reach
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off; a lead drawn
   out and back and drawn again by the shape)

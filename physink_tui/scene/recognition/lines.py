@@ -252,3 +252,36 @@ def _turns_off(pts: np.ndarray, k: int) -> bool:
     if norms == 0.0:
         return False
     return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms)))) >= HOOK_TURN_DEG
+
+
+HOOK_CURL_DEG = 35.0
+"""A hook where the pen landed or lifted curls: near an end (within `HOOK_REACH` noise widths and a chord of
+`CORNER_CHORD` more) the path turns by this much or more between chords `CORNER_CHORD` noise widths long either side
+of a point. A parenthesis bends off at its ends more gently (the pen models' small bows whose middle a line explains:
+18-31 degrees there; short lines hooked at both ends: 34-78, `open_marks.hooked_straight`)."""
+
+
+def end_curl(pts: np.ndarray, noise: float) -> float:
+    """The sharpest turn (degrees) between chords `CORNER_CHORD` noise widths long either side of a point of ``pts``
+    near an end (`HOOK_CURL_DEG`), 0 where the stroke is too short to have such a point.
+
+    >>> line = np.column_stack([np.linspace(0.0, 40.0, 41), np.zeros(41)])
+    >>> hooked = np.vstack([[[-3.0, 3.0], [-2.0, 1.0], [-1.0, 0.2]], line])
+    >>> round(end_curl(line, 1.0)), end_curl(hooked, 1.0) > HOOK_CURL_DEG
+    (0, True)
+    """
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    length, span = float(along[-1]), CORNER_CHORD * noise
+    near = ((np.minimum(along, length - along) <= (HOOK_REACH + CORNER_CHORD) * noise)
+            & (along >= span) & (along <= length - span))
+    if not near.any():
+        return 0.0
+    at = along[near]
+    u = pts[near] - _at_each(pts, along, at - span)
+    v = _at_each(pts, along, at + span) - pts[near]
+    norms = np.hypot(*u.T) * np.hypot(*v.T)
+    ok = norms > 0
+    if not ok.any():
+        return 0.0
+    cos = (u[ok] * v[ok]).sum(axis=1) / norms[ok]
+    return math.degrees(math.acos(float(np.clip(cos.min(), -1.0, 1.0))))

@@ -17,7 +17,7 @@ import numpy as np
 
 from physink_tui.scene.recognition import lines
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.shape_fits import fit_circle
+from physink_tui.scene.recognition.shape_fits import fit_circle, fit_line
 
 SAW_TEETH = 4
 """A zig-zag has at least this many sharp corners in a row, joined by even sides: three teeth (two corners make an N,
@@ -57,6 +57,13 @@ missing a bow by no more than the pen's own wobble explains it. Parentheses 15-6
 circle misses the hurried hand's by 0.5-2 px, most under 1.5 (`benchmarks/bench_paren_habits.py`); of the 53 design
 and fourth-group strokes `swung_line` takes, the circle misses every one by 2.4 noise widths or more (mmg:10's fast
 stylus line 2.4, gtiwari's mouse lines 3.1 and more)."""
+HOOKED_STRAIGHT = SWUNG_WOBBLE
+"""... unless a line explains the bow as closely, within this many of the pen's noise widths (the same floor), and an
+end curls as a hook where the pen landed or lifted does (`lines.HOOK_CURL_DEG`): then there is no bow for the circle to
+explain, only a line whose hooks the cut left part of (`hooked_straight`). A short line hooked at both ends, the hurried
+hand's through a coarse device among them, lost to `SWUNG_WOBBLE` (issue 25, session 25: `benchmarks/bench_lines.py`'s
+short-hooked family). What the cuts leave of such lines strays 0.3-2.2 noise widths from its line, of the pen models'
+parentheses 0.13-10; those under 1.5 (a small bow flat in the middle) bend off at their ends by 31 degrees or less."""
 SAW_REACH = 3
 """A corner's turn is summed over this many resampled points either side of it (`stroke_features.corner_turns`)."""
 
@@ -173,7 +180,8 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
     its fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's
     swing bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink, turns both ways (one way round, it
     would be an arc: `ONE_WAY`), its heading turns less than `SWUNG_TURN_DEG` end to end, its middle has no point
-    (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`, and beyond the pen's own wobble: `SWUNG_WOBBLE`).
+    (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`, and beyond the pen's own wobble: `SWUNG_WOBBLE`, unless
+    a line fits it as well and a hook curls at an end: `hooked_straight`).
     What a person does: a long diagonal drawn with a mouse, or a quick stroke of a wrist, pivots and corrects; a
     reader still sees a line, not a curve. A hook where the pen landed or lifted (its reach in the pen's stated noise
     ``pen``, ``noise`` where not given) is left out of the circle's fit (`lines.without_hooked_ends`)."""
@@ -193,4 +201,17 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
     if not math.isfinite(radius):
         return True  # straight enough that no circle fits
     miss = float(np.abs(np.hypot(*(bow - centre).T) - radius).max())
-    return miss >= SWUNG_ARC * stray * length and miss >= SWUNG_WOBBLE * own  # the pen's own wobble is no swing
+    if miss < SWUNG_ARC * stray * length:
+        return False
+    return miss >= SWUNG_WOBBLE * own or hooked_straight(coarse, bow, own)  # the pen's own wobble is no swing
+
+
+def hooked_straight(coarse: np.ndarray, bow: np.ndarray, noise: float) -> bool:
+    """Whether ``bow`` (``coarse`` without the hooks `lines.without_hooked_ends` cut; ``noise``: the pen's stated
+    noise) is straight within `HOOKED_STRAIGHT` noise widths of its line and an end of ``coarse`` curls as a hook does
+    (`lines.end_curl`, `lines.HOOK_CURL_DEG`): a line hooked at its ends, not a bow a circle explains."""
+    centre, direction, _ = fit_line(bow)
+    rel = bow - centre
+    if float(np.abs(rel[:, 0] * direction[1] - rel[:, 1] * direction[0]).max()) >= HOOKED_STRAIGHT * noise:
+        return False
+    return lines.end_curl(coarse, noise) >= lines.HOOK_CURL_DEG

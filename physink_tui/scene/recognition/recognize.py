@@ -24,6 +24,7 @@ import numpy as np
 
 from physink_tui.scene.recognition import (
     angular_braces,
+    bowed_sides,
     closed_loops,
     hooked_ticks,
     landing,
@@ -338,6 +339,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
+    ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
     ranked = rounded_boxes.box_rounded_all_round(ranked, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline

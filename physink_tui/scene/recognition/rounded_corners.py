@@ -112,7 +112,8 @@ def straight_part(run: np.ndarray, noise: float) -> Part | None:
     return centre, direction, float(along.max() - along.min()), a, b
 
 
-def _meet(p: np.ndarray, d: np.ndarray, q: np.ndarray, e: np.ndarray) -> np.ndarray | None:
+def lines_meet(p: np.ndarray, d: np.ndarray, q: np.ndarray, e: np.ndarray) -> np.ndarray | None:
+    """Where the line through ``p`` along ``d`` meets the line through ``q`` along ``e`` (None where parallel)."""
     det = float(e[0] * d[1] - d[0] * e[1])
     if abs(det) < 1e-9:
         return None
@@ -173,7 +174,7 @@ def box_of(fit: PolygonFit, kept: tuple[int, ...], loop: np.ndarray, noise: floa
         return None
     corners = []
     for (p, d, *_), (q, e, *_) in zip(lines[-1:] + lines[:-1], lines, strict=True):
-        corner = _meet(p, d, q, e)
+        corner = lines_meet(p, d, q, e)
         if corner is None:
             return None
         corners.append(corner)
