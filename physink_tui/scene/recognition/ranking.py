@@ -1,6 +1,7 @@
 """Ranks a stroke's candidate shapes: each scored by fit error against complexity (BIC-style), the best whose shape
 stays within the stroke's bounds and follows its outline wins, the best of each other kind become alternatives;
-`recognize` decides which candidates compete and on what points.
+when none fits, keeps the stroke as drawn (`or_freeform`); `recognize` decides which candidates compete and on
+what points.
 """
 
 from __future__ import annotations
@@ -15,7 +16,8 @@ import numpy as np
 from physink_tui.scene.recognition.beautify import shape_points
 from physink_tui.scene.recognition.candidates import Candidate, Pending
 from physink_tui.scene.recognition.polygon_checks import follows_the_outline
-from physink_tui.scene.recognition.primitives import Geometry, Recognition
+from physink_tui.scene.recognition.polygon_fit import candidate_vertices
+from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
 
 
 @dataclass(frozen=True, slots=True)
@@ -120,3 +122,21 @@ def inside(g: Geometry | None, lo: np.ndarray, hi: np.ndarray) -> bool:
         return False
     pts = np.asarray(shape_points(g), dtype=float)
     return bool(np.isfinite(pts).all() and (pts >= lo).all() and (pts <= hi).all())
+
+
+FREEFORM_CONFIDENCE = 0.3
+"""The confidence of a stroke kept as drawn because no shape fits it."""
+
+
+def or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: float) -> Recognition:
+    """``found``, or when no shape fits, the stroke as it was drawn: a freeform polygon (closed) or polyline
+    through its own most telling points, with a low confidence (never a shape outside the stroke)."""
+    if found.kind is not None:
+        return found
+    keep = candidate_vertices(work[:-1] if closed else work, sigma, limit=16)
+    points = tuple((float(x), float(y)) for x, y in work[keep])
+    if closed and len(points) >= 3:
+        return Recognition("polygon", FREEFORM_CONFIDENCE, Polygon(points), ())
+    if len(points) >= 3:
+        return Recognition("polyline", FREEFORM_CONFIDENCE, Polyline(points), ())
+    return Recognition("line", FREEFORM_CONFIDENCE, Line(points[0], points[-1]), ())

@@ -49,8 +49,7 @@ from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometr
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import COILED, helix_or_scribble
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
-from physink_tui.scene.recognition.polygon_fit import candidate_vertices
-from physink_tui.scene.recognition.primitives import Line, Polygon, Polyline, Recognition
+from physink_tui.scene.recognition.primitives import Line, Polygon, Recognition
 from physink_tui.scene.recognition.quads import four_sides_cover
 from physink_tui.scene.recognition.ranking import (
     BOUNDS_MARGIN,
@@ -60,6 +59,7 @@ from physink_tui.scene.recognition.ranking import (
     bounds,
     inside,
     keeps_the_outline,
+    or_freeform,
     rank,
 )
 from physink_tui.scene.recognition.round_or_cornered import cornered_after_all
@@ -344,7 +344,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
         return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag, views)
-    return _or_freeform(ranked, loop, closed=True, sigma=sigma)
+    return or_freeform(ranked, loop, closed=True, sigma=sigma)
 
 
 def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray, noise: float, diag: float,
@@ -384,19 +384,5 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
         return found
     ranked = rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
                    weights, raw, noise, diag)
-    return _or_freeform(ranked, work, closed=False, sigma=sigma)
+    return or_freeform(ranked, work, closed=False, sigma=sigma)
 
-
-FREEFORM_CONFIDENCE = 0.3
-def _or_freeform(found: Recognition, work: np.ndarray, *, closed: bool, sigma: float) -> Recognition:
-    """``found``, or when no shape fits, the stroke as it was drawn: a freeform polygon (closed) or polyline
-    through its own most telling points, with a low confidence (never a shape outside the stroke)."""
-    if found.kind is not None:
-        return found
-    keep = candidate_vertices(work[:-1] if closed else work, sigma, limit=16)
-    points = tuple((float(x), float(y)) for x, y in work[keep])
-    if closed and len(points) >= 3:
-        return Recognition("polygon", FREEFORM_CONFIDENCE, Polygon(points), ())
-    if len(points) >= 3:
-        return Recognition("polyline", FREEFORM_CONFIDENCE, Polyline(points), ())
-    return Recognition("line", FREEFORM_CONFIDENCE, Line(points[0], points[-1]), ())
