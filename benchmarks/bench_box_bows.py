@@ -9,14 +9,13 @@ Each family draws its shape from its own seeded generator (`box_bows.drawn`) and
 the careful virtual pen (windows-ink), the hurried hand, the hurried hand through a device sending an event every
 15-30 ms, through a mouse and through a trackpad (`bench_box_slips.PENS`). Every stroke is read with its times. A box
 family is right when it reads as a box; a polygon family when it reads as a polygon (the table counts the right
-readings; "readings other than box" lists the others for both). Seeds 0-29 are the tuning range; seeds 1000-1029
+readings; "other readings" lists the others for both). Seeds 0-29 are the tuning range; seeds 1000-1029
 (``--held-back``) are never looked at while tuning and reported apart. Deterministic.
 """
 
 from __future__ import annotations
 
 import sys
-from collections import Counter
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
@@ -24,7 +23,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import bench_boxes
 from bench_box_slips import PENS
-from bench_closed_shapes import chosen_seeds, family_bench_parser
 from penmodels.box_bows import BOXES, FAMILIES, drawn
 
 
@@ -33,34 +31,13 @@ def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:
     return bench_boxes.read_drawn(PENS[pen], drawn(family, seed), seed, learned)
 
 
-def right(family: str, kind: str | None) -> bool:
-    """Whether ``kind`` is what a person means by ``family``'s shape."""
-    return kind == ("box" if family in BOXES else "polygon")
+def meant(family: str) -> str:
+    """The kind a person means by ``family``'s shape."""
+    return "box" if family in BOXES else "polygon"
 
 
 def main() -> None:
-    args = family_bench_parser(__doc__ or "").parse_args()
-    families = args.families.split(",") if args.families else list(FAMILIES)
-    seeds, name = chosen_seeds(args)
-    results = {(f, p): [read(f, p, s, not args.rules) for s in seeds] for f in families for p in PENS}
-    title = f"{name}, {'rules' if args.rules else 'shipped recogniser'}"
-    print(f"#### {title}\n\n| family | " + " | ".join(PENS) + " | other readings |")
-    print("|---|" + "---:|" * len(PENS) + "---|")
-    for family in families:
-        cells, others = [], Counter[str]()
-        for pen in PENS:
-            got = results[(family, pen)]
-            cells.append(f"{sum(right(family, k) for k in got)}/{len(got)}")
-            for k in got:
-                if not right(family, k):
-                    others[str(k)] += 1
-        told = ", ".join(f"{k} {v}" for k, v in sorted(others.items()))
-        print(f"| {family} | " + " | ".join(cells) + f" | {told} |")
-    if args.misread:
-        for (family, pen), got in results.items():
-            for seed, kind in zip(seeds, got, strict=True):
-                if not right(family, kind):
-                    print(family, pen, seed, kind)
+    bench_boxes.family_main(__doc__ or "", list(FAMILIES), PENS, read, meant)
 
 
 if __name__ == "__main__":

@@ -23,7 +23,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_boxes
 import device_habits
 import numpy as np
-from bench_closed_shapes import chosen_seeds, family_bench_parser, hurried
+from bench_closed_shapes import hurried
 from bench_device_stress import chain
 from penmodels.box_slips import FAMILIES, drawn
 from penmodels.shapes import Shape
@@ -48,14 +48,7 @@ def read(family: str, pen: str, seed: int, learned: bool = True) -> str | None:
 
 
 def main() -> None:
-    args = family_bench_parser(__doc__ or "").parse_args()
-    families = args.families.split(",") if args.families else list(FAMILIES)
-    seeds, name = chosen_seeds(args)
-    results = {(f, p): [read(f, p, s, not args.rules) for s in seeds] for f in families for p in PENS}
-    title = f"{name}, {'rules' if args.rules else 'shipped recogniser'}"
-    print("\n".join(bench_boxes.report(results, title, PENS)))
-    if args.misread:
-        print("\n".join(bench_boxes.misread(results, seeds)))
+    bench_boxes.family_main(__doc__ or "", list(FAMILIES), PENS, read)
 
 
 if __name__ == "__main__":

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import sys
 from collections import Counter
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
@@ -62,23 +62,25 @@ def read_drawn(pen: Callable[[Shape, int], list[tuple[float, float, float]]], sh
     return recognize_stroke([p[:2] for p in points], [p[2] for p in points], learned=learned).kind
 
 
-def run(families: list[str], seeds: range, learned: bool) -> dict[tuple[str, str], list[str | None]]:
-    return {(f, p): [read(f, p, s, learned) for s in seeds] for f in families for p in PENS}
+def a_box(family: str) -> str:
+    """The kind every family of the box benches means."""
+    return "box"
 
 
 def report(results: dict[tuple[str, str], list[str | None]], title: str,
-           pens: Mapping[str, object] = PENS) -> list[str]:
-    """The table of ``results``: a row per family, a column per pen of ``pens``, and the pooled figures."""
-    lines = [f"#### {title}", "", "| family | " + " | ".join(pens) + " | readings other than box |",
+           pens: Mapping[str, object] = PENS, meant: Callable[[str], str] = a_box) -> list[str]:
+    """The table of ``results``: a row per family, a column per pen of ``pens`` counting the readings of the kind the
+    family means (``meant``), and the pooled figures."""
+    lines = [f"#### {title}", "", "| family | " + " | ".join(pens) + " | other readings |",
              "|---|" + "---:|" * len(pens) + "---|"]
     pooled: Counter[str] = Counter()
     for family in dict.fromkeys(f for f, _ in results):
         cells, others = [], Counter[str]()
         for pen in pens:
             got = results[(family, pen)]
-            right = sum(k == "box" for k in got)
+            right = sum(k == meant(family) for k in got)
             cells.append(f"{right}/{len(got)}")
-            others.update(str(k) for k in got if k != "box")
+            others.update(str(k) for k in got if k != meant(family))
             pooled[pen] += right
             pooled[f"{pen} n"] += len(got)
         lines.append(f"| {family} | " + " | ".join(cells) + " | "
@@ -90,20 +92,28 @@ def report(results: dict[tuple[str, str], list[str | None]], title: str,
     return lines
 
 
-def misread(results: dict[tuple[str, str], list[str | None]], seeds: range) -> list[str]:
-    """One line per reading other than a box: family, pen, seed, the kind read."""
+def misread(results: dict[tuple[str, str], list[str | None]], seeds: range,
+            meant: Callable[[str], str] = a_box) -> list[str]:
+    """One line per reading other than the kind the family means: family, pen, seed, the kind read."""
     return [f"{family} {pen} {seed} {kind}" for (family, pen), got in results.items()
-            for seed, kind in zip(seeds, got, strict=True) if kind != "box"]
+            for seed, kind in zip(seeds, got, strict=True) if kind != meant(family)]
+
+
+def family_main(doc: str, families: Sequence[str], pens: Mapping[str, object],
+                read_one: Callable[[str, str, int, bool], str | None], meant: Callable[[str], str] = a_box) -> None:
+    """A closed-shape family bench's command line: read ``families`` by ``pens`` on the chosen seeds (``read_one``:
+    family, pen, seed, learned -> the kind read) and print the table, and with ``--misread`` every misreading."""
+    args = family_bench_parser(doc).parse_args()
+    chosen = args.families.split(",") if args.families else list(families)
+    seeds, name = chosen_seeds(args)
+    results = {(f, p): [read_one(f, p, s, not args.rules) for s in seeds] for f in chosen for p in pens}
+    print("\n".join(report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}", pens, meant)))
+    if args.misread:
+        print("\n".join(misread(results, seeds, meant)))
 
 
 def main() -> None:
-    args = family_bench_parser(__doc__ or "").parse_args()
-    families = args.families.split(",") if args.families else list(FAMILIES)
-    seeds, name = chosen_seeds(args)
-    results = run(families, seeds, learned=not args.rules)
-    print("\n".join(report(results, f"{name}, {'rules' if args.rules else 'shipped recogniser'}")))
-    if args.misread:
-        print("\n".join(misread(results, seeds)))
+    family_main(__doc__ or "", list(FAMILIES), PENS, read)
 
 
 if __name__ == "__main__":

@@ -32,7 +32,7 @@ from physink_tui.scene.recognition.bowed_sides import MAX_BOW, ROUND_FILL, bow_o
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_box_bows import read, right
+from bench_box_bows import meant, read
 from bench_closed_shapes import HELD_BACK_SEEDS
 
 Point = tuple[float, float]
@@ -55,7 +55,7 @@ def test_every_family_has_a_floor() -> None:
 def test_bowed_boxes_read_as_boxes_and_roofs_as_polygons(family: str) -> None:
     for pen, floor in zip(("careful", "hurried"), FLOORS[family], strict=True):
         got = [read(family, pen, seed) for seed in HELD_BACK_SEEDS]
-        assert sum(right(family, k) for k in got) >= floor, (pen, got)
+        assert sum(k == meant(family) for k in got) >= floor, (pen, got)
 
 
 def _profile(shape: str, n: int = 41) -> np.ndarray:

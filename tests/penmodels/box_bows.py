@@ -28,7 +28,7 @@ import math
 import random
 from collections.abc import Callable
 
-from penmodels.box_habits import _along, _bend, _corners, _placed, _side, _upright
+from penmodels.box_habits import _along, _bend, _corners, _placed, _side, _upright, cut_corner
 from penmodels.shapes import Path
 
 Point = tuple[float, float]
@@ -112,15 +112,7 @@ def house_in(rng: random.Random) -> Path:
 def cut_deep(rng: random.Random) -> Path:
     c = _corners(rng)
     k = rng.choice((1, 2))
-    shorter = min(_side(c[0], c[1]), _side(c[1], c[2]))
-    cut = rng.uniform(0.5, 0.7) * shorter
-    pts: list[Point] = []
-    for i, corner in enumerate(c):
-        if i == k:
-            pts += [_along(corner, c[i - 1], cut / _side(corner, c[i - 1])),
-                    _along(corner, c[i + 1], cut / _side(corner, c[i + 1]))]
-        else:
-            pts.append(corner)
+    pts = cut_corner(c, k, rng.uniform(0.5, 0.7))
     return _placed([*pts, c[0]], _upright(rng))
 
 

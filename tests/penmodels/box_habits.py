@@ -82,6 +82,19 @@ def _side(a: Point, b: Point) -> float:
     return math.dist(a, b)
 
 
+def cut_corner(c: list[Point], k: int, share: float) -> list[Point]:
+    """The four corners ``c`` with corner ``k`` cut off ``share`` of the shorter side along both its sides."""
+    cut = share * min(_side(c[0], c[1]), _side(c[1], c[2]))
+    pts: list[Point] = []
+    for i, corner in enumerate(c):
+        if i == k:
+            pts += [_along(corner, c[i - 1], cut / _side(corner, c[i - 1])),
+                    _along(corner, c[(i + 1) % 4], cut / _side(corner, c[(i + 1) % 4]))]
+        else:
+            pts.append(corner)
+    return pts
+
+
 def plain(rng: random.Random) -> Path:
     c = _corners(rng)
     return _placed([*c, c[0]], _upright(rng))

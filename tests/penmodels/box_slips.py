@@ -27,7 +27,7 @@ import math
 import random
 from collections.abc import Callable
 
-from penmodels.box_habits import _along, _corners, _placed, _side, _swung, _upright, bowed_side
+from penmodels.box_habits import _along, _corners, _placed, _side, _swung, _upright, bowed_side, cut_corner
 from penmodels.shapes import Path
 
 Point = tuple[float, float]
@@ -92,15 +92,7 @@ def side_bowed_deep(rng: random.Random) -> Path:
 def corner_cut(rng: random.Random) -> Path:
     c = _corners(rng)
     k = rng.randrange(1, 4)
-    shorter = min(_side(c[0], c[1]), _side(c[1], c[2]))
-    cut = rng.uniform(0.15, 0.3) * shorter
-    pts: list[Point] = []
-    for i, corner in enumerate(c):
-        if i == k:
-            pts += [_along(corner, c[i - 1], cut / _side(corner, c[i - 1])),
-                    _along(corner, c[(i + 1) % 4], cut / _side(corner, c[(i + 1) % 4]))]
-        else:
-            pts.append(corner)
+    pts = cut_corner(c, k, rng.uniform(0.15, 0.3))
     return _placed([*pts, c[0]], _upright(rng))
 
 
