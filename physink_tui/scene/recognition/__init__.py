@@ -161,7 +161,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above
 - `closed_loops.py`: closure (a gap or an overshoot at the ends, a polygon left open, a lumpy circle's lumps)
 - `ranking.py`: the candidates scored (fit error against complexity, `Weights`, `DEFAULT_WEIGHTS`) and ranked: the
-  best whose shape stays within the stroke's bounds and follows its outline, with the alternatives
+  best whose shape stays within the stroke's bounds and follows its outline, with the alternatives; where none
+  fits, the stroke kept as drawn (`or_freeform`)
 - `coils.py`: strokes that wind or scrub rather than outline: a spring drawn as one coil (a helix), a scribble
 - `candidates.py`: the competing interpretations of a closed stroke with their fit error and complexity: polygonal
   ones (built only when the ranking reaches them), a circle or ellipse; a box placed where its four sides were drawn
