@@ -51,7 +51,7 @@ measured on this branch. Main 40b8114 read the swept-round brackets 54, 42, 36, 
 rounded ones 60, 56, 54, 48, 54, 52, 56 (the rest curves, arcs, a few ellipses), the other rows as here. The tiny
 brackets (18-40 px) the hurried pens leave as curves are a few pixels of tremor and hook on arms of 6-20 px; session 25
 (wt-small) raised the hurried hand's 54 to 56: the ranker's gate counts a bracket's lobes beyond the tremor
-(`stroke_geometry.turning_beyond_tremor`, `tests/test_small_marks.py`)."""
+(`shape_turning.turning_beyond_tremor`, `tests/test_small_marks.py`)."""
 
 
 @pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])

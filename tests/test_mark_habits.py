@@ -24,7 +24,7 @@ from penmodels.mark_habits import hooked_swung_tick
 from test_hooked_ticks import session_tick_bodies
 from test_open_marks import cached_rows
 
-from physink_tui.scene.recognition import bracket_marks
+from physink_tui.scene.recognition import bracket_marks, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -113,7 +113,7 @@ def test_unhooked_point_finds_a_ticks_point_behind_a_hook_but_no_arc_or_line() -
     and a straight line with a 20 px landing hook: none."""
     for seed in range(10):
         work, noise = _unit(np.asarray(hooked_swung_tick(seed).points))
-        lobes = sf.turn_lobes(sg.coarse_turning(work, noise))
+        lobes = sf.turn_lobes(shape_turning.coarse_turning(work, noise))
         assert bracket_marks.rounded_point(work, sg.turning(work), lobes) is None, seed
         point = bracket_marks.unhooked_point(work, sg.find_corners(work, every_dip=True), noise)
         assert point is not None, seed

@@ -26,7 +26,7 @@ import pytest
 from penmodels.mark_habits import hooked_swung_tick
 from penmodels.paren_habits import EXPECTED, FAMILIES, lopsided_paren
 
-from physink_tui.scene.recognition import bracket_marks, lines, open_marks, ranker
+from physink_tui.scene.recognition import bracket_marks, lines, open_marks, ranker, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -76,7 +76,7 @@ def test_a_lopsided_parenthesis_taken_for_a_tick_curls_on_round_its_bend(pen: st
         stroke = PENS[pen](lopsided_paren(seed), seed)
         work, noise = _work(np.asarray([p[:2] for p in stroke]))
         th = sg.turning(work)
-        lobes = sf.turn_lobes(sg.coarse_turning(work, noise))
+        lobes = sf.turn_lobes(shape_turning.coarse_turning(work, noise))
         point = bracket_marks.rounded_point(work, th, lobes)
         if point is None:
             continue
@@ -94,7 +94,8 @@ def test_a_swung_ticks_long_arm_does_not_curl() -> None:
     for seed in range(30):
         work, noise = _work(np.asarray(hooked_swung_tick(seed).points))
         work = sg.resample(sg.remove_hooks(work), len(work))
-        point = bracket_marks.rounded_point(work, sg.turning(work), sf.turn_lobes(sg.coarse_turning(work, noise)))
+        lobes = sf.turn_lobes(shape_turning.coarse_turning(work, noise))
+        point = bracket_marks.rounded_point(work, sg.turning(work), lobes)
         if point is None:
             continue
         ticks += 1

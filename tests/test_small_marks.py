@@ -2,11 +2,11 @@
 through coarse devices, where the hand's tremor is a large share of the mark.
 
 The hurried hand (`tests/penmodels/hurried`) trembles 0.5-0.9 px (two sines each way, up to 1.35 px) with 0.3 px of
-sensor noise a report. `stroke_geometry.coarse_turning` judges a stroke on steps six noise widths long, but on 32
+sensor noise a report. `shape_turning.coarse_turning` judges a stroke on steps six noise widths long, but on 32
 points at least: on a mark of under 192 noise widths of path its steps are 1-2 px, where the tremor turns the heading
 by 30-60 degrees each way between steps. There it made lobes between a tiny bracket's corners, and the ranker's gate
 (`round_brackets.kept_bracket`) took the bracket for a brace or an S and let the learned ranker read a curve; the gate
-now counts lobes on `stroke_geometry.turning_beyond_tremor` (steps six noise widths long down to 16 points). (The same
+now counts lobes on `shape_turning.turning_beyond_tremor` (steps six noise widths long down to 16 points). (The same
 made small bows turn both ways for `open_shapes.classify_open`'s arc test; judging that on the same turning gained
 small parentheses and arcs but cost tiny braces on the held seeds, and was withdrawn: docs/BENCHMARKS.md.)
 
@@ -29,8 +29,8 @@ from penmodels.hurried import HurriedPen, touching
 from penmodels.paren_habits import EXPECTED, FAMILIES
 from penmodels.shapes import Path as PenPath
 
+from physink_tui.scene.recognition import shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
-from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.recognize import recognize_stroke
 from physink_tui.scene.recognition.shape_fits import fit_line
 
@@ -53,12 +53,12 @@ def test_turning_beyond_tremor_sees_no_lobes_in_a_trembling_line() -> None:
     widths long it swings by under half of that, and no lobe is left. A bracket of the same path keeps its two corners
     as one lobe of half a turn either way."""
     line = _trembling_line(60.0, 0.8, 12.0)
-    assert len(sf.turn_lobes(sg.coarse_turning(line, 1.0))) >= 2
-    assert sf.turn_lobes(sg.turning_beyond_tremor(line, 1.0)) == []
+    assert len(sf.turn_lobes(shape_turning.coarse_turning(line, 1.0))) >= 2
+    assert sf.turn_lobes(shape_turning.turning_beyond_tremor(line, 1.0)) == []
     bracket = np.vstack([np.column_stack([np.linspace(15, 0, 20), np.zeros(20)]),
                          np.column_stack([np.zeros(30), np.linspace(1, 30, 30)]),
                          np.column_stack([np.linspace(1, 15, 15), np.full(15, 30.0)])])
-    lobes = sf.turn_lobes(sg.turning_beyond_tremor(bracket, 1.0))
+    lobes = sf.turn_lobes(shape_turning.turning_beyond_tremor(bracket, 1.0))
     assert len(lobes) == 1 and abs(abs(lobes[0]) - 180.0) < 20.0
 
 

@@ -59,7 +59,7 @@ braces by 8-25 events evenly in time, `bench_device_stress`); a parenthesis or a
 
 
 def point_lobes(work: np.ndarray, noise: float, coarse: np.ndarray | None = None) -> list[float]:
-    """`stroke_features.lobes` of ``work`` down to `POINT_LOBE_DEG`; ``coarse``: its `stroke_geometry.coarse_turning`
+    """`stroke_features.lobes` of ``work`` down to `POINT_LOBE_DEG`; ``coarse``: its `shape_turning.coarse_turning`
     at ``noise``, where already known (the same lobes, not measured again)."""
     if coarse is None:
         return sf.lobes(work, POINT_LOBE_DEG, noise=noise)
@@ -74,7 +74,7 @@ def angular_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0, coar
     (`ARM_DEG`) and off it (`ARM_OFF`) -- or so against its arms' own line where it was drawn askew (`laid_out`) --
     and turning both ways (two lobes or more: its curls the other way from its point; `POINT_LOBE_DEG` where the
     point was sampled by few events); ``noise``: the pen's, in ``work``'s units; ``coarse``: its
-    `stroke_geometry.coarse_turning` at that noise, where already known."""
+    `shape_turning.coarse_turning` at that noise, where already known."""
     if len(lobes) < 2 and len(point_lobes(work, noise, coarse)) < 2:
         return False  # turning both ways first: most open strokes turn one way, and the layout costs more
     return laid_out(work, noise)

@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition import shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 
@@ -255,7 +256,7 @@ def unhooked_point(work: np.ndarray, corners: list[int], noise: float) -> tuple[
     if (first == 0 and final == last) or len(kept) < 8:
         return None  # no hook to cut (`rounded_point` judges the stroke as it is), or hardly a stroke left
     kept = sg.resample(kept, len(work))
-    point = rounded_point(kept, sg.turning(kept), sf.turn_lobes(sg.coarse_turning(kept, noise)))
+    point = rounded_point(kept, sg.turning(kept), sf.turn_lobes(shape_turning.coarse_turning(kept, noise)))
     if point is None or curling_arm(kept, point):
         return None  # no tick, or a parenthesis' bow curling on round its tight end
     return tuple((float(kept[i][0]), float(kept[i][1])) for i in point)
@@ -276,5 +277,5 @@ def swung_tick(work: np.ndarray, th: np.ndarray, lobes: list[float], noise: floa
     if len(unhooked) == len(work):
         return False  # no hook cut: the same stroke, already judged
     unhooked = sg.resample(unhooked, len(work))
-    point = rounded_point(unhooked, sg.turning(unhooked), sf.turn_lobes(sg.coarse_turning(unhooked, noise)))
+    point = rounded_point(unhooked, sg.turning(unhooked), sf.turn_lobes(shape_turning.coarse_turning(unhooked, noise)))
     return point is not None and not curling_arm(unhooked, point)

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes, pen_noise
+from physink_tui.scene.recognition import open_shapes, pen_noise, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
@@ -17,7 +17,7 @@ from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 LUMPY_SIDES = 4
 """A closed stroke that turns smoothly all round (`open_shapes.SMOOTH`, judged as open strokes are, on 32 to 40
-points a few noise widths apart: `stroke_geometry.coarse_turning`) is offered
+points a few noise widths apart: `shape_turning.coarse_turning`) is offered
 no polygon of `LUMPY_SIDES` sides or more: a lumpy circle drawn with a mouse (sparse points, flat stretches) fits
 a quad, pentagon or hexagon closely, but a drawn polygon turns at its corners."""
 LUMPY_ASPECT = 0.5
@@ -34,7 +34,7 @@ star's outline with deep points misses its ellipse by 2.7-3.2 of it (a regular t
 about 2)."""
 TURNS_BACK = 180.0
 """A closed loop that turns back against its own sense by this many degrees in all (on its coarse turning,
-`stroke_geometry.coarse_turning`: 32-40 points a few noise widths apart) is no circle or ellipse: a star's outline turns
+`shape_turning.coarse_turning`: 32-40 points a few noise widths apart) is no circle or ellipse: a star's outline turns
 back at each inner corner (a regular star's outline, whatever its points and depth, by 360 degrees in all, less the
 rounding its corners get), while an oval turns one way all round; a six- or seven-pointed star fits an ellipse within
 `FAR_FROM_ROUND` (a hexagram's inner corners are at 0.58 of its tips' radius) and needs more sides than
@@ -64,7 +64,7 @@ slow hand's round shapes 0.05-0.71, the stars 0.79-2.49 (one six-pointed star th
 
 def turned_back(loop: np.ndarray, noise: float) -> float:
     """How far (degrees, in all) a closed loop turns against the sense it turns round in, on its coarse turning."""
-    th = sg.coarse_turning(loop, noise)
+    th = shape_turning.coarse_turning(loop, noise)
     sense = 1.0 if float(th.sum()) >= 0.0 else -1.0
     return float(np.degrees(-sense * th[th * sense < 0].sum()))
 
@@ -77,7 +77,7 @@ def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw:
     corners)."""
     if ellipse is None or not ellipse[2] >= LUMPY_ASPECT * ellipse[1]:
         return False
-    return (sf.turn_concentration(sg.coarse_turning(loop, noise)) < open_shapes.SMOOTH
+    return (sf.turn_concentration(shape_turning.coarse_turning(loop, noise)) < open_shapes.SMOOTH
             or pen_noise.turns_at_every_event(raw, diag))
 
 
@@ -193,7 +193,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     if sg.path_length(work) < 1.75 * diag:  # the smoothed path: jitter lengthens the raw one
         return False, work, None
     th = sg.turning(work)
-    coarse = sg.coarse_turning(work, sigma)
+    coarse = shape_turning.coarse_turning(work, sigma)
     limit = max(CLOSED_GAP * diag, 4 * sigma)
     once: np.ndarray | None = None  # the stroke once round where it came back to its start, going round one way
     if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import lines, open_shapes
+from physink_tui.scene.recognition import lines, open_shapes, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Polyline, Recognition
@@ -65,7 +65,7 @@ def hooked_tick(unit: np.ndarray, noise: float, views: StrokeViews | None = None
         if lobes is None:  # without a hook where the pen landed or lifted, which turns back against the mark
             along = sg.along(pts)
             cut = lines.HOOK_REACH * noise
-            lobes = sf.turn_lobes(sg.coarse_turning(pts[(along >= cut) & (along <= length - cut)], noise))
+            lobes = sf.turn_lobes(shape_turning.coarse_turning(pts[(along >= cut) & (along <= length - cut)], noise))
         if len(lobes) <= 1 and _tick(ordered[:c + 1], ordered[c:], noise, length):
             at = len(pts) - 1 - c if flip else c
             points = tuple((float(p[0]), float(p[1])) for p in (pts[0], pts[at], pts[-1]))

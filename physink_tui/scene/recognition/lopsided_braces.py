@@ -50,7 +50,7 @@ def lopsided_brace(work: np.ndarray, lobes: list[float], noise: float = 0.0, coa
     """Whether the open stroke ``work`` (resampled, hooks cut, as `open_shapes.classify_open` judges it; ``lobes`` its
     `stroke_features.lobes`) is a lopsided brace with a straight short half, by its layout (`laid_out`) and turning
     both ways (two lobes or more; `angular_braces.POINT_LOBE_DEG` where few events sampled the point); ``noise``: the
-    pen's, in ``work``'s units; ``coarse``: its `stroke_geometry.coarse_turning` at that noise, where already known."""
+    pen's, in ``work``'s units; ``coarse``: its `shape_turning.coarse_turning` at that noise, where already known."""
     if len(lobes) < 2 and len(angular_braces.point_lobes(work, noise, coarse)) < 2:
         return False
     return laid_out(work)

@@ -15,7 +15,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from physink_tui.scene.recognition import lines
+from physink_tui.scene.recognition import lines, shape_turning
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.shape_fits import fit_circle, fit_line
 
@@ -187,7 +187,7 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
     ``pen``, ``noise`` where not given) is left out of the circle's fit (`lines.without_hooked_ends`)."""
     if stray >= SWUNG_STRAY or ink >= SWUNG_INK:
         return False  # checked first: most strokes are far from straight
-    th = sg.coarse_turning(coarse, noise)
+    th = shape_turning.coarse_turning(coarse, noise)
     net, every = abs(float(th.sum())), float(np.abs(th).sum())
     if net > ONE_WAY * every or math.degrees(net) >= SWUNG_TURN_DEG:
         return False

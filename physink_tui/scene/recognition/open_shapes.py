@@ -22,6 +22,7 @@ from physink_tui.scene.recognition import (
     open_marks,
     round_brackets,
     round_cores,
+    shape_turning,
     thin_braces,
 )
 from physink_tui.scene.recognition import stroke_features as sf
@@ -167,7 +168,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     bows = [sg.chord_deviation(run) for run in runs]  # each side's, for the tests below
     straight_runs = [straight(run, noise, bow) or sg.path_length(run) < 0.06 * length
                      for run, bow in zip(runs, bows, strict=True)]
-    coarse = sg.coarse_turning(work, noise)
+    coarse = shape_turning.coarse_turning(work, noise)
     lobes = sf.turn_lobes(coarse)  # `stroke_features.lobes`, once for every rule below
     concentration = sf.turn_concentration(coarse)
     bracket_found: list[tuple[tuple[float, float], ...] | None] = []

@@ -22,7 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, pen_noise, ranker_model
+from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, pen_noise, ranker_model, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
@@ -195,7 +195,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
     found_corners = sg.find_corners(work, th=th)
     corners = sf.drop_end_stubs(work, found_corners, length)
     abs_th = np.abs(th)
-    coarse = sg.coarse_turning(work, noise)
+    coarse = shape_turning.coarse_turning(work, noise)
     turns = sf.corner_turns(th, corners)
     lobes = sf.turn_lobes(coarse)
     checks = ((len(corners) - 2) / 8.0, float(abs_th.sum()) / (2 * math.pi), max(turns) / 180.0, len(lobes) / 4.0,

@@ -19,6 +19,7 @@ import statistics
 
 import numpy as np
 
+from physink_tui.scene.recognition import shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Polyline, Recognition
@@ -258,7 +259,7 @@ def kept_bracket(found: Recognition, unit: np.ndarray, noise: float, views: Stro
     turned = _half_turn(work)
     if turned is None:
         return False  # checked first: the lobes cost more
-    # its lobes counted on steps beyond the pen's tremor (`stroke_geometry.turning_beyond_tremor`): on the 32 points
+    # its lobes counted on steps beyond the pen's tremor (`shape_turning.turning_beyond_tremor`): on the 32 points
     # `stroke_features.lobes` keeps at least, the hurried hand's tremor made lobes of 35-50 degrees between the corners
     # of 18-40 px brackets (`tests/penmodels/bracket_extremes`' tiny ones) and the gate took them for braces or S's
-    return rounded_bracket(work, sf.turn_lobes(sg.turning_beyond_tremor(work, noise)), turned) is not None
+    return rounded_bracket(work, sf.turn_lobes(shape_turning.turning_beyond_tremor(work, noise)), turned) is not None

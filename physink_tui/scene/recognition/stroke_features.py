@@ -9,6 +9,7 @@ import math
 import numpy as np
 from shapely.geometry import MultiPoint
 
+from physink_tui.scene.recognition import shape_turning
 from physink_tui.scene.recognition import stroke_geometry as sg
 
 
@@ -26,11 +27,11 @@ def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[f
     """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke (coarser
     when the pen's ``noise`` is large), ignoring runs under ``min_deg``: a brace has five such lobes, a check
     mark one or two."""
-    return turn_lobes(sg.coarse_turning(work, noise), min_deg)
+    return turn_lobes(shape_turning.coarse_turning(work, noise), min_deg)
 
 
 def turn_lobes(coarse: np.ndarray, min_deg: float = 35.0) -> list[float]:
-    """`lobes` of a stroke whose coarse turning (`stroke_geometry.coarse_turning`, radians) is already known."""
+    """`lobes` of a stroke whose coarse turning (`shape_turning.coarse_turning`, radians) is already known."""
     runs: list[float] = []
     for v in np.degrees(coarse).tolist():
         if runs and (v >= 0) == (runs[-1] >= 0):

@@ -3,7 +3,8 @@
 Everything works on numpy arrays of shape (n, 2) in the stroke's own units, so recognition is the
 same at any scale. Corners are found in the ShortStraw way (Wolin et al. 2008: short "straws"
 between resampled points mark corners) with IStraw's refinements (Xiong & LaViola 2009: a corner
-must turn the path by a real angle, and near-collinear corners are merged).
+must turn the path by a real angle, and near-collinear corners are merged). Turning at the scale of the shape,
+beyond the pen's tremor, is `shape_turning`'s.
 """
 
 from __future__ import annotations
@@ -378,27 +379,3 @@ def median(values: np.ndarray) -> float:
         return float(np.partition(values, h)[h])
     part = np.partition(values, (h - 1, h))
     return float((part[h - 1] + part[h]) / 2)
-
-
-def coarse_turning(pts: np.ndarray, noise: float, most: int = 40) -> np.ndarray:
-    """`turning` on the path resampled to ``most`` points, or fewer when the pen's ``noise`` would make steps
-    that short wobble (steps at least six noise widths long, and at least 16 points): how the stroke turns at
-    the scale of its shape."""
-    n = most if noise <= 0 else int(min(most, max(32, path_length(pts) / (6 * noise))))
-    return turning(resample(pts, n))
-
-
-TREMOR_STEP = 6.0
-"""`turning_beyond_tremor` steps at least this many of the pen's noise widths: a hand's tremor of amplitude A (about
-the pen's noise) bends two steps s long by up to 2 atan(2A / s), under the 35 degrees of a lobe
-(`stroke_features.lobes`) only where s > 6.3 A."""
-TREMOR_FEWEST = 16
-"""...on at least this many points (a sixteenth of the path a step: a bracket's arm of a fifth of it keeps a step)."""
-
-
-def turning_beyond_tremor(pts: np.ndarray, noise: float, most: int = 40) -> np.ndarray:
-    """`coarse_turning` on steps `TREMOR_STEP` noise widths long down to `TREMOR_FEWEST` points, where
-    `coarse_turning` keeps 32 at least: on a stroke of under 192 noise widths of path (a mark 15-60 px tall) its steps
-    of 1-2 px let the hand's tremor of about a pixel turn the heading by 30-60 degrees each way between them."""
-    n = most if noise <= 0 else int(min(most, max(TREMOR_FEWEST, path_length(pts) / (TREMOR_STEP * noise))))
-    return turning(resample(pts, n))
