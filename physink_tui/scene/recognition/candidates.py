@@ -148,15 +148,21 @@ def _box_from_sides(box: Box, fit: PolygonFit) -> Box:
 
 
 def ellipse_distances(pts: np.ndarray, centre: np.ndarray, rx: float, ry: float, angle: float) -> np.ndarray:
-    """Distance of each point to the ellipse along the ray from its centre (exact for a circle)."""
+    """Distance of each point to the ellipse across it: from the point to the ellipse's tangent where the ray from its
+    centre through the point crosses it (exact for a circle; as close as the point lies to the ellipse). The distance
+    along that ray alone (until session 26) overstates an elongated ellipse's miss where the ray runs slantwise
+    through it, by up to ``1 / cos`` of the angle between the ray and the ellipse's normal (an ellipse 4 times as long
+    as wide: about 2x at its shoulders), while a polygon's sides are judged square across them: a hand's flat oval
+    (3-4 times as long as wide) lost to a triangle through its two ends)."""
     c, s = math.cos(angle), math.sin(angle)
     rel = pts - centre
     u = rel[:, 0] * c + rel[:, 1] * s
     v = -rel[:, 0] * s + rel[:, 1] * c
     r = np.sqrt((u / rx) ** 2 + (v / ry) ** 2)
-    dist = np.hypot(u, v)
+    # the gradient of (u/rx)^2 + (v/ry)^2 (halved): the ellipse's normal at the crossing, scaled by 1 / r there
+    normal = np.hypot(u / (rx * rx), v / (ry * ry))
     with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(r > 0, np.abs(dist - dist / np.where(r > 0, r, 1.0)), min(rx, ry))
+        return np.where(r > 0, np.abs(r - 1.0) * r / np.where(r > 0, normal, 1.0), min(rx, ry))
 
 
 def round_shape(work: np.ndarray, ellipse: EllipseFit | None) -> Candidate | None:
