@@ -29,13 +29,16 @@ HELD_FLOORS = {
     "open-spiral-turn": _ALL,
     "pointed-join": _ALL,
     "flat-sided-circle": {**_ALL, "hurried-finger": 58},
+    "lopsided-long-oval": _ALL,
 }
 """family -> pen -> of the 60 readings on the held seeds (30 marks, with and without times), how many are circles or
 ellipses, measured on this branch; main 40b8114 read 10 fewer in all (4,716 of 4,800 against 4,726): small circles
 through whole pixels 58, overtraced circles through a finger 58, open spiral turns and flat-sided circles through a
 trackpad 56 and 58 (curves where a lift hook kept a small loop's ends apart, helices where a finger's landing curled).
 The small circles through the busy-event-loop mouse (8 of 60) come as 3-7 bursts of events for the whole circle: a
-polygon of 3-7 chords, which the same device makes of a small pentagon, hexagon or octagon too (docs/BENCHMARKS.md)."""
+polygon of 3-7 chords, which the same device makes of a small pentagon, hexagon or octagon too (docs/BENCHMARKS.md).
+Lopsided long ovals (session 26, wt-fourth): 600 of 600 (main 7111cdc 588: polygons where the ellipse's miss was
+measured along the ray from its centre, `candidates.ellipse_distances`)."""
 
 
 def reading(stroke: list[tuple[float, float, float]], timed: bool) -> str | None:

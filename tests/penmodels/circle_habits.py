@@ -185,8 +185,29 @@ def flat_sided_circle(seed: int) -> Mark:
     return Mark("flat-sided-circle", _placed(rng, pts), True)
 
 
+def lopsided_long_oval(seed: int) -> Mark:
+    """An oval 2.5-4.5 times as long as it is wide, 150-700 px long, as a hand draws a long one in one sweep (issue 25,
+    session 26: the fourth group's pen ellipses, tutorboard captured-chromium): one end blunter than the other (the
+    half width 10-30 % larger towards it, an egg laid flat), its long sides wandering by the 2nd to 4th harmonics round
+    it (2-5 % of its half width each), closing 345-380 degrees. Its miss from any one ellipse is a few per cent of its
+    length: measured along the ray from the centre, slantwise through its shoulders, twice what it is across."""
+    rng = random.Random(f"lopsided-long-oval:{seed}")
+    rx = rng.uniform(75, 350)
+    ry = rx / rng.uniform(2.5, 4.5)
+    egg = rng.uniform(0.1, 0.3) * rng.choice((-1.0, 1.0))
+    waves = [(k, rng.uniform(0.02, 0.05), rng.uniform(0, 2 * math.pi)) for k in (2, 3, 4)]
+    start, sweep = rng.uniform(0, 2 * math.pi), _way(rng) * _closing_sweep(rng)
+    n = max(24, int(abs(math.degrees(sweep)) / 2))
+    pts = []
+    for i in range(n + 1):
+        a = start + sweep * i / n
+        wander = 1.0 + sum(size * math.sin(k * a + phase) for k, size, phase in waves)
+        pts.append((rx * math.cos(a), ry * wander * (1.0 + egg * math.cos(a)) * math.sin(a)))
+    return Mark("lopsided-long-oval", _placed(rng, pts), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "small-circle": small_circle, "flat-oval": flat_oval, "wobbly-circle": wobbly_circle,
     "overtraced-circle": overtraced_circle, "tailed-circle": tailed_circle, "open-spiral-turn": open_spiral_turn,
-    "pointed-join": pointed_join, "flat-sided-circle": flat_sided_circle}
+    "pointed-join": pointed_join, "flat-sided-circle": flat_sided_circle, "lopsided-long-oval": lopsided_long_oval}
 """Every family; each is read as a circle or an ellipse (`EXPECTED`)."""
