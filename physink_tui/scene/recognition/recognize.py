@@ -335,7 +335,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     candidates: list[Candidate | Pending | None] = [*sided, round_fit]
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
-    if ranked.kind in ("circle", "ellipse") and round_fit is not None:
+    if ranked.kind in ("circle", "ellipse") and round_fit is not None and ellipse is not None:
         ranked = cornered_after_all(ranked, polygons, ray_rss(loop, ellipse), raw, noise, diag, sigma, weights, times)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
