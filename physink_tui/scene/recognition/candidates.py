@@ -165,22 +165,6 @@ def ellipse_distances(pts: np.ndarray, centre: np.ndarray, rx: float, ry: float,
         return np.where(r > 0, np.abs(r - 1.0) * r / np.where(r > 0, normal, 1.0), min(rx, ry))
 
 
-def ray_rss(pts: np.ndarray, ellipse: EllipseFit) -> float:
-    """The sum of squared distances of ``pts`` from the ellipse along the ray from its centre through each (farther
-    than `ellipse_distances` where the ray runs slantwise through it): the round shape's error that
-    `round_or_cornered.CORNERS_EXPLAIN` was measured against."""
-    centre, rx, ry, angle, _ = ellipse
-    c, s = math.cos(angle), math.sin(angle)
-    rel = pts - centre
-    u = rel[:, 0] * c + rel[:, 1] * s
-    v = -rel[:, 0] * s + rel[:, 1] * c
-    r = np.sqrt((u / rx) ** 2 + (v / ry) ** 2)
-    dist = np.hypot(u, v)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        along = np.where(r > 0, np.abs(dist - dist / np.where(r > 0, r, 1.0)), min(rx, ry))
-    return float(np.sum(along ** 2))
-
-
 def round_shape(work: np.ndarray, ellipse: EllipseFit | None) -> Candidate | None:
     """A circle or an ellipse through the stroke (closed, or most of the way round), from its `fit_ellipse`."""
     if ellipse is None:

@@ -46,7 +46,7 @@ from physink_tui.scene.recognition import (
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry, shape_points, x_symbol
-from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, ray_rss, round_shape
+from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import COILED, helix_or_scribble
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
 from physink_tui.scene.recognition.primitives import Line, Polygon, Recognition
@@ -335,8 +335,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     candidates: list[Candidate | Pending | None] = [*sided, round_fit]
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
-    if ranked.kind in ("circle", "ellipse") and round_fit is not None and ellipse is not None:
-        ranked = cornered_after_all(ranked, polygons, ray_rss(loop, ellipse), raw, noise, diag, sigma, weights, times)
+    if ranked.kind in ("circle", "ellipse") and round_fit is not None:
+        ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
