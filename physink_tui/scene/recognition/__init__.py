@@ -87,10 +87,11 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (`closed_loops.no_round_shape`), nor is one whose ends, cut off to leave its loop, run off the loop's ellipse by
    more than its half width (`closed_loops.tail_runs_off`: a pigtail's tail, not an overshoot, which hugs the loop);
    an ellipse's miss is measured square across it, as a polygon's sides' are (`candidates.ellipse_distances`: along
-   the ray from its centre, a long oval's miss at its shoulders doubles, and its triangle through its ends won); a stroke whose tails cross each other near its ends is closed however far apart
-   its ends lifted (`closed_loops.ends_cross`: a triangle closed past its first corner), and one whose ends a hook
-   where the pen landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px
-   circle's hook of a few pixels is a fifth of its size; a pigtail's tails cross).
+   the ray from its centre, a long oval's miss at its shoulders doubles, and its triangle through its ends won); a
+   stroke whose tails cross each other near its ends is closed however far apart its ends lifted
+   (`closed_loops.ends_cross`: a triangle closed past its first corner), and one whose ends a hook where the pen
+   landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px circle's hook of
+   a few pixels is a fifth of its size; a pigtail's tails cross).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse; or fitting one once a lead from inside or an end curled in
    past the start, lying inside it, is cut: `round_cores`), a polyline (straight sides, or bowed sides meeting at
