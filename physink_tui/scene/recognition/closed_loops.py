@@ -349,10 +349,11 @@ TAIL_RUNS_OFF = 1.0
 """A closed stroke's ends cut off to leave its loop (an overshoot past its start, a lead before it:
 `loop_ends.cut_ends`) that run off that loop's ellipse by more than this many times its half width have left the loop:
 a pigtail's tail, not a round shape's overshoot. A hand that closes a circle or an oval and lifts carries on round it,
-so an overshoot hugs the shape: of the design sources' loops read round whose ends were cut (132), the farthest
-cut-off point lies 0.46 of the half width off the ellipse (hcira jonathanzhang53/s01's circle), of the fourth group's
-(42) 0.41; the two pigtails among them whose tail (a third of the path) was cut as an overshoot, 3.1 and 3.8
-(hcira klarubbio/s02, s07). Measured square across the ellipse (`candidates.ellipse_distances`)."""
+so an overshoot hugs the shape: of the design sources' loops read round whose ends were cut and labelled round, the
+farthest cut-off point lies 0.46 of the half width off the ellipse (hcira jonathanzhang53/s01's circle), of the fourth
+group's 0.41 (and a 20-point Quick, Draw! line read as an ellipse, 1.29); the two pigtails whose tail (a third of the
+path) was cut as an overshoot, 3.1 and 3.8 (hcira klarubbio/s02, s07). Measured square across the ellipse
+(`candidates.ellipse_distances`), session 26."""
 
 
 def tail_runs_off(work: np.ndarray, loop: np.ndarray, ellipse: EllipseFit | None) -> bool:
