@@ -32,9 +32,17 @@ RIDGE_LOW = 0.11
 """A ridge stands more than this share of its chord off it (its chord: the side of the box it stands on): a roof 12 %
 of the side high leans each half 13-14 degrees off the side's line and turns 27 degrees or more at its ridge, as a
 drawn corner; a regripping hand's kink (`box_habits` side-kinked, 4-9 %: 8-20 degrees) is a box's side."""
+DRAWN_CORNER = 0.3
+"""The box's two corners beside a roof are drawn, not swung round: the path does 80 % of their turning within this share
+of the shorter side beside them (`polygon_checks.corner_roundness_closed`; a drawn corner a tenth or two, a hurried
+hand's rounded one up to a third, `polygon_checks.SHARP_CORNER` 0.4 taking both). A hand swinging a bowed side round
+with its corners (`box_bows` bow-swung, 0.15-0.3 of the shorter side) leaves them at 0.36-0.75."""
 RIDGE_PLACE = 0.2
 """A ridge stands at least this share of its chord from either end (a roof's halves both sides of the box's side: a
 vertex next to a corner is a hook or a spur there)."""
+RIDGE_LEAN = 0.2
+"""Each half of a roof leans off the box's side by at least this share of the ridge's turn (a ridge 0.2 along its
+chord: 0.26 of it; 0.35 along: 0.35): a half running on along the side is the side, and the other half a corner cut."""
 RIDGE_TURN = 65.0
 """A ridge turns at most this many degrees (a roof 25 % of its side high: 53-57; a box's own corner 90)."""
 RIDGE_HIGH = 0.4
@@ -62,10 +70,15 @@ def ridge_of(fit: PolygonFit, noise: float) -> tuple[int, float] | None:
     roundness = corner_roundness_closed(fit)
     for i in range(k):
         before, ridge, after = verts[(i - 1) % k], verts[i], verts[(i + 1) % k]
-        if _turn(before, ridge, after) > RIDGE_TURN:
+        turn = _turn(before, ridge, after)
+        if turn > RIDGE_TURN:
             continue  # a box's own corner (beside a cut, or at a bow's end)
-        if max(roundness[(i - 1) % k], roundness[i], roundness[(i + 1) % k]) >= SHARP_CORNER:
-            continue  # a corner swung round, or a bow's vertex: no roof drawn
+        # how far each half leans off the box's side (square to the wall it meets): a roof's both, by a share
+        leans = (abs(90.0 - _turn(verts[(i - 2) % k], before, ridge)), abs(90.0 - _turn(ridge, after, verts[(i + 2) % k])))
+        if min(leans) < RIDGE_LEAN * turn:
+            continue  # one half runs on along the side: a corner cut beside it
+        if roundness[i] >= SHARP_CORNER or max(roundness[(i - 1) % k], roundness[(i + 1) % k]) >= DRAWN_CORNER:
+            continue  # a bow's vertex, or the box's corners beside it swung round with it: no roof drawn
         chord = after - before
         length = float(np.hypot(*chord))
         if length <= 0.0:
