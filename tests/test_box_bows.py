@@ -39,12 +39,13 @@ Point = tuple[float, float]
 
 FLOORS: dict[str, tuple[int, int]] = {
     "bowed-out": (30, 30), "bowed-in": (28, 29), "bow-swung": (27, 26),
-    "house": (13, 12), "house-in": (11, 11), "cut-deep": (28, 25),
+    "house": (23, 20), "house-in": (27, 23), "cut-deep": (28, 25),
 }
 """family -> of the 30 held-back seeds, how many read as a box (the first three families) or as a polygon (the others)
 drawn by the careful virtual pen and by the hurried hand (with their times), measured on wt-sides (session 25). At
 main 2ff28bf: bowed-out 23/20, bowed-in 16/15, bow-swung 19/20; house 13/12, house-in 11/12, cut-deep 28/25 (main
-reads most low roofs and swallowtails, 12-25 % of the side, as boxes already: `recognize._box_as_drawn`)."""
+reads most low roofs and swallowtails, 12-25 % of the side, as boxes already: `recognize._box_as_drawn`). house and
+house-in raised on wt-roof (session 26: `recognition.roofs` gives the pentagon back; main 7111cdc 13/12 and 11/11)."""
 
 
 def test_every_family_has_a_floor() -> None:
