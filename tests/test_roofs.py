@@ -6,6 +6,7 @@ corner the rule reached stays a box."""
 
 from __future__ import annotations
 
+import itertools
 import math
 import sys
 from pathlib import Path
@@ -48,7 +49,7 @@ def _outline(corners: list[Point], per_side: int = 40) -> list[Point]:
     """A closed stroke through ``corners`` (drawn round and back to the first), ``per_side`` points a side."""
     ring = [*corners, corners[0]]
     pts = [(a[0] + (b[0] - a[0]) * j / per_side, a[1] + (b[1] - a[1]) * j / per_side)
-           for a, b in zip(ring, ring[1:], strict=False) for j in range(per_side)]
+           for a, b in itertools.pairwise(ring) for j in range(per_side)]
     return [*pts, ring[-1]]
 
 
@@ -65,8 +66,8 @@ def test_a_long_box_with_a_low_roof_on_its_short_side_is_a_pentagon(rise: float)
     """A 2.5:1 box whose 100 px short side rises to a ridge 18-20 % of it out (each half 20-22 degrees off the side:
     a house, a home plate) or is notched 18-25 % in (a swallowtail): its box covers it by 0.95 or more, so main 7111cdc
     read every one as a box (`recognize._box_as_drawn`); the corner is drawn, sharp, between two straight halves, as no
-    hurried bow is. (At 13-16 % out, on so short a side, the judged points smooth the ridge over half of each 52 px half:
-    still a box, as at main.)"""
+    hurried bow is. (At 13-16 % out, on so short a side, the judged points smooth the ridge over half of each 52 px
+    half: still a box, as at main.)"""
     got = recognize_stroke(_box_with_a_point(250, 100, rise))
     assert got.kind == "polygon" and got.geometry is not None and len(got.geometry.points) == 5, got
 

@@ -6,12 +6,14 @@ side's two halves run straight and meet at one sharp turn, where a hurried hand'
 side (`bowed_sides`). A roof on a long box's short side changes the box's area by a few per cent, so the box rules
 (`recognize._box_as_drawn`: overlap 0.92) and the ranker take it for a box; this module gives the pentagon back.
 
-The loop is that pentagon when a fit of five sides has a vertex (the ridge) whose four others make a box
-(`beautify.box_geometry`), and the loop between the ridge's two neighbours is one bend across their chord
-(`bowed_sides.bow_of`): deeper than `RIDGE_LOW` of the chord, no deeper than `RIDGE_HIGH`, and not a bow (it fills the
-strip to its deepest point by less than `bowed_sides.ROUND_FILL`, or it turns there within less than
-`bowed_sides.ROUND_BEND` of half its length: a corner, not a round bend). A box whose side a regripping hand kinked a
-little (`box_habits` side-kinked: 4-9 % of the side, a fifth corner of 8-20 degrees) stays a box.
+The loop is that pentagon when the best fit of five sides has a vertex (the ridge) whose four others make a box with
+corners within `quads.SQUARE_WALL` of square (`beautify.box_geometry`), standing `RIDGE_LOW` to `RIDGE_HIGH` of the
+chord between its neighbours off that chord and `RIDGE_PLACE` or more from either end of it, turning at most
+`RIDGE_TURN` with each half leaning off the box's side by `RIDGE_LEAN` of that turn (a half running on along the side
+makes a cut corner of the other), turned sharply (`polygon_checks.SHARP_CORNER`) between corners drawn, not swung
+round (`DRAWN_CORNER`), and the loop between its neighbours one bend across their chord that turns at the ridge, not
+all along (`bowed_sides.bow_of` under `bowed_sides.ROUND_BEND`). A box whose side a regripping hand kinked a little
+(`box_habits` side-kinked: 4-9 % of the side, a fifth corner of 8-20 degrees) stays a box, and so does a bowed one.
 """
 
 from __future__ import annotations
@@ -25,8 +27,8 @@ from physink_tui.scene.recognition.bowed_sides import ROUND_BEND, bow_of
 from physink_tui.scene.recognition.candidates import Pending
 from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, corner_roundness_closed
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
-from physink_tui.scene.recognition.quads import SQUARE_WALL
 from physink_tui.scene.recognition.primitives import Polygon, Recognition
+from physink_tui.scene.recognition.quads import SQUARE_WALL
 
 RIDGE_LOW = 0.11
 """A ridge stands more than this share of its chord off it (its chord: the side of the box it stands on): a roof 12 %
@@ -74,7 +76,8 @@ def ridge_of(fit: PolygonFit, noise: float) -> tuple[int, float] | None:
         if turn > RIDGE_TURN:
             continue  # a box's own corner (beside a cut, or at a bow's end)
         # how far each half leans off the box's side (square to the wall it meets): a roof's both, by a share
-        leans = (abs(90.0 - _turn(verts[(i - 2) % k], before, ridge)), abs(90.0 - _turn(ridge, after, verts[(i + 2) % k])))
+        leans = (abs(90.0 - _turn(verts[(i - 2) % k], before, ridge)),
+                 abs(90.0 - _turn(ridge, after, verts[(i + 2) % k])))
         if min(leans) < RIDGE_LEAN * turn:
             continue  # one half runs on along the side: a corner cut beside it
         if roundness[i] >= SHARP_CORNER or max(roundness[(i - 1) % k], roundness[(i + 1) % k]) >= DRAWN_CORNER:
