@@ -10,8 +10,8 @@ The loop is that pentagon when the best fit of five sides has a vertex (the ridg
 corners within `quads.SQUARE_WALL` of square (`beautify.box_geometry`), standing `RIDGE_LOW` to `RIDGE_HIGH` of the
 chord between its neighbours off that chord and `RIDGE_PLACE` or more from either end of it, turning at most
 `RIDGE_TURN` with each half leaning off the box's side by `RIDGE_LEAN` of that turn (a half running on along the side
-makes a cut corner of the other), turned sharply (`polygon_checks.SHARP_CORNER`) between corners drawn, not swung
-round (`DRAWN_CORNER`), and the loop between its neighbours one bend across their chord that turns at the ridge, not
+makes a cut corner of the other), drawn as sharply as the box's corners beside it, none swung round
+(`DRAWN_CORNER`), and the loop between its neighbours one bend across their chord that turns at the ridge, not
 all along (`bowed_sides.bow_of` under `bowed_sides.ROUND_BEND`). A box whose side a regripping hand kinked a little
 (`box_habits` side-kinked: 4-9 % of the side, a fifth corner of 8-20 degrees) stays a box, and so does a bowed one.
 """
@@ -25,7 +25,7 @@ import numpy as np
 from physink_tui.scene.recognition.beautify import box_geometry
 from physink_tui.scene.recognition.bowed_sides import ROUND_BEND, bow_of
 from physink_tui.scene.recognition.candidates import Pending
-from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, corner_roundness_closed
+from physink_tui.scene.recognition.polygon_checks import corner_roundness_closed
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Polygon, Recognition
 from physink_tui.scene.recognition.quads import SQUARE_WALL
@@ -35,10 +35,11 @@ RIDGE_LOW = 0.11
 of the side high leans each half 13-14 degrees off the side's line and turns 27 degrees or more at its ridge, as a
 drawn corner; a regripping hand's kink (`box_habits` side-kinked, 4-9 %: 8-20 degrees) is a box's side."""
 DRAWN_CORNER = 0.3
-"""The box's two corners beside a roof are drawn, not swung round: the path does 80 % of their turning within this share
-of the shorter side beside them (`polygon_checks.corner_roundness_closed`; a drawn corner a tenth or two, a hurried
-hand's rounded one up to a third, `polygon_checks.SHARP_CORNER` 0.4 taking both). A hand swinging a bowed side round
-with its corners (`box_bows` bow-swung, 0.15-0.3 of the shorter side) leaves them at 0.36-0.75."""
+"""The ridge and the box's two corners beside it are drawn, not swung round: the path does 80 % of their turning within
+this share of the shorter side beside them (`polygon_checks.corner_roundness_closed`; a drawn corner a tenth or two, a
+hurried hand's rounded one up to a third, `polygon_checks.SHARP_CORNER` 0.4 taking both). A hand swinging a bowed side
+round with its corners (`box_bows` bow-swung, 0.15-0.3 of the shorter side) leaves them at 0.36-0.75, and a hurried
+bow drawn lopsided its middle at 0.37-0.40 (`box_bows` bowed-in)."""
 RIDGE_PLACE = 0.2
 """A ridge stands at least this share of its chord from either end (a roof's halves both sides of the box's side: a
 vertex next to a corner is a hook or a spur there)."""
@@ -80,7 +81,7 @@ def ridge_of(fit: PolygonFit, noise: float) -> tuple[int, float] | None:
                  abs(90.0 - _turn(ridge, after, verts[(i + 2) % k])))
         if min(leans) < RIDGE_LEAN * turn:
             continue  # one half runs on along the side: a corner cut beside it
-        if roundness[i] >= SHARP_CORNER or max(roundness[(i - 1) % k], roundness[(i + 1) % k]) >= DRAWN_CORNER:
+        if max(roundness[(i - 1) % k], roundness[i], roundness[(i + 1) % k]) >= DRAWN_CORNER:
             continue  # a bow's vertex, or the box's corners beside it swung round with it: no roof drawn
         chord = after - before
         length = float(np.hypot(*chord))
