@@ -70,7 +70,6 @@ def ridge_of(fit: PolygonFit, noise: float) -> tuple[int, float] | None:
     k = len(idx)
     if k != 5 or len(verts) < k:
         return None
-    roundness = corner_roundness_closed(fit)
     for i in range(k):
         before, ridge, after = verts[(i - 1) % k], verts[i], verts[(i + 1) % k]
         turn = _turn(before, ridge, after)
@@ -81,8 +80,6 @@ def ridge_of(fit: PolygonFit, noise: float) -> tuple[int, float] | None:
                  abs(90.0 - _turn(ridge, after, verts[(i + 2) % k])))
         if min(leans) < RIDGE_LEAN * turn:
             continue  # one half runs on along the side: a corner cut beside it
-        if max(roundness[(i - 1) % k], roundness[i], roundness[(i + 1) % k]) >= DRAWN_CORNER:
-            continue  # a bow's vertex, or the box's corners beside it swung round with it: no roof drawn
         chord = after - before
         length = float(np.hypot(*chord))
         if length <= 0.0:
@@ -94,6 +91,9 @@ def ridge_of(fit: PolygonFit, noise: float) -> tuple[int, float] | None:
             continue
         if box_geometry(np.array([verts[(i + j) % k] for j in range(1, k)]), SQUARE_WALL) is None:
             continue
+        roundness = corner_roundness_closed(fit)  # measured once a fit, and only for a ridge standing so far
+        if max(roundness[(i - 1) % k], roundness[i], roundness[(i + 1) % k]) >= DRAWN_CORNER:
+            continue  # a bow's vertex, or the box's corners beside it swung round with it: no roof drawn
         start, end = idx[(i - 1) % k], idx[(i + 1) % k]
         bend = bow_of(ring[np.arange(start, end + (m if end < start else 0) + 1) % m], noise)
         if bend is None or bend[2] >= ROUND_BEND:
