@@ -1,7 +1,8 @@
 """Issue 25: rectangles one side of which a hurried hand bowed out or in, or swung round with its two corners
 (`penmodels.box_bows`), read as boxes by both pen models at least as often as measured on the held-back seeds
 1000-1029 (`benchmarks/bench_box_bows.py --held-back`), and the low pentagons, swallowtails and deeply cut boxes beside
-them stay polygons as often as at main; a box with a side bowed by a fifth is a box body through a whole session
+them stay polygons at least as often as measured (houses and swallowtails on wt-roof, session 26:
+`recognition.roofs`); a box with a side bowed by a fifth is a box body through a whole session
 (journal -> replay -> project); a person's polygons square on one side that reach the rule stay polygons
 (`recognition.bowed_sides`); a person's square whose side and its corners were swung round in one sweep, with a wall
 13 degrees askew, is a strict xfail.
