@@ -60,17 +60,7 @@ circles' 0.68 or more: `corner_pace` cannot tell them); the slow hand's polygons
 `closed_loops.WITHIN_ROUND` (its tremor's turning back had refused them round, as it refused its circles)."""
 
 
-LOST_TO_THE_ELLIPSE = {
-    ("hexagon-irregular", "hurried-coarse"): "session 26 (wt-fourth): 25 of 30; tuning seeds 11 and 18 read as "
-    "ellipses since an ellipse's miss is measured square across it (`candidates.ellipse_distances`): the hexagon "
-    "scores best but its corners fail the checks on the coarse device's points, and the ellipse (seed 11: RMS 0.065 "
-    "of its size) now beats the pentagon and heptagon that stood in. bench_closed_shapes held, all pens: +4."}
-"""Floors this branch misses, each a strict xfail naming its cause (a floor is never lowered)."""
-
-
-@pytest.mark.parametrize(("family", "pen"), [
-    pytest.param(f, p, marks=pytest.mark.xfail(strict=True, reason=LOST_TO_THE_ELLIPSE[(f, p)]))
-    if (f, p) in LOST_TO_THE_ELLIPSE else (f, p) for f, p in CORNERED_FLOORS])
+@pytest.mark.parametrize(("family", "pen"), list(CORNERED_FLOORS))
 def test_a_cornered_closed_shape_keeps_its_corners(family: str, pen: str) -> None:
     got = [read(family, pen, seed, timed=True)[0] for seed in TUNING_SEEDS]
     assert sum(class_right(family, k) for k in got) >= CORNERED_FLOORS[(family, pen)], got

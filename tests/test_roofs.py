@@ -35,16 +35,7 @@ boxes); bowed-out 30/30/30/29/29 (seed 27 by the hurried hand, a bow whose middl
 is a pentagon now), bowed-in, bow-swung and cut-deep as here."""
 
 
-LOST_TO_THE_ELLIPSE = {
-    "bow-swung": "session 26, wt-fourth merged with wt-roof: the hurried pen's bow-swung boxes 23 of 30 on the tuning "
-    "seeds (floor 24): one more reads as an ellipse since an ellipse's miss is measured square across it "
-    "(`candidates.ellipse_distances`), no longer along the ray from its centre"}
-"""Families whose floor the merged tree misses, each a strict xfail naming its cause (a floor is never lowered)."""
-
-
-@pytest.mark.parametrize("family", [
-    pytest.param(f, marks=pytest.mark.xfail(strict=True, reason=LOST_TO_THE_ELLIPSE[f])) if f in LOST_TO_THE_ELLIPSE
-    else f for f in FLOORS])
+@pytest.mark.parametrize("family", list(FLOORS))
 def test_roofs_and_notches_read_as_pentagons_and_bowed_boxes_as_boxes(family: str) -> None:
     for pen, floor in zip(PENS, FLOORS[family], strict=True):
         got = [read(family, pen, seed) for seed in TUNING]
