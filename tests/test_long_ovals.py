@@ -1,6 +1,7 @@
-"""Issue 25, session 26: a long ellipse's miss (2.62 times as long as wide or more, `candidates.ACROSS_RATIO`) is measured
-square across it (`candidates.ellipse_distances`), so a person's long, lopsided oval is an ellipse rather than the triangle or box through its ends; and a loop whose cut-off end runs
-off its ellipse (a pigtail's tail, `closed_loops.tail_runs_off`) is offered no round shape.
+"""Issue 25, session 26: a long ellipse's miss (2.62 times as long as wide or more, `candidates.ACROSS_RATIO`) is
+measured square across it (`candidates.ellipse_distances`), so a person's long, lopsided oval is an ellipse rather than
+the triangle or box through its ends, while a rounder one's is measured along the ray from its centre as before (an
+irregular hexagon or a bowed box near round keeps its corners); and a loop whose cut-off end runs off its ellipse (a pigtail's tail, `closed_loops.tail_runs_off`) is offered no round shape.
 
 People's strokes are read from the public-set caches (`benchmarks/public_sets.py`; no licence: never committed) and
 skip without them."""
@@ -13,7 +14,7 @@ import numpy as np
 import pytest
 from test_open_marks import _stroke, cached_rows
 
-from physink_tui.scene.recognition.candidates import ellipse_distances
+from physink_tui.scene.recognition.candidates import ACROSS_RATIO, ellipse_distances, ray_distances, round_shape
 from physink_tui.scene.recognition.closed_loops import TAIL_RUNS_OFF, tail_runs_off
 from physink_tui.scene.recognition.recognize import recognize_stroke
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
@@ -41,6 +42,20 @@ def test_a_point_beside_a_long_ellipse_is_as_far_as_it_lies_across_it(at: float)
 def test_a_point_off_a_circle_is_as_far_as_it_lies_from_the_rim() -> None:
     pts = np.array([[3.0, 4.0], [0.0, 2.5], [-0.3, 0.4]])
     assert ellipse_distances(pts, np.zeros(2), 2.0, 2.0, 0.7) == pytest.approx([3.0, 0.5, 1.5])
+
+
+@pytest.mark.parametrize(("long", "across"), [(1.6, False), (2.1, False), (3.0, True), (4.0, True)])
+def test_only_a_long_ellipse_has_its_miss_measured_across_it(long: float, across: bool) -> None:
+    """The same points off an ellipse ``long`` times as long as wide at its shoulders: a round shape's miss is the
+    distance across it where the ellipse is at least `ACROSS_RATIO` (2.62) times as long, along the ray below."""
+    pts = np.concatenate([_off_ellipse(long, 1.0, at, 0.05) for at in (0.5, 2.5, 3.8, 5.5)])
+    ellipse = (np.zeros(2), long, 1.0, 0.0, 0.0)
+    measure = ellipse_distances if across else ray_distances
+    want = float(np.sum(measure(pts, np.zeros(2), long, 1.0, 0.0) ** 2))
+    got = round_shape(pts, ellipse)
+    assert got is not None and got.rss == pytest.approx(want)
+    assert (long >= ACROSS_RATIO) is across
+    assert float(np.sum(ray_distances(pts, np.zeros(2), long, 1.0, 0.0) ** 2)) > want or not across
 
 
 def _loop_with_tail(tail: float, hugging: bool) -> list[tuple[float, float]]:
