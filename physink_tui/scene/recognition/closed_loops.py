@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes, pen_noise, shape_turning
+from physink_tui.scene.recognition import open_shapes, pen_noise, shape_corners, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
@@ -102,7 +102,7 @@ def polygon_left_open(work: np.ndarray, diag: float) -> bool:
                 and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
                 and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners))):
             return True
-    return many_sided_left_open(work, length)
+    return many_sided_left_open(work, length) or shape_corners.rounded_many_sided_left_open(work)
 
 
 LEFT_OPEN_CLOSURE = 0.75
