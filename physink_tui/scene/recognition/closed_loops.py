@@ -83,7 +83,8 @@ def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw:
 
 def polygon_left_open(work: np.ndarray, diag: float) -> bool:
     """Straight sides turning most of the way round, the last one heading for the start: a polygon the pen
-    left before closing it (or a many-sided one left open by a side, `many_sided_left_open`)."""
+    left before closing it (or a many-sided one left open by a side, `many_sided_left_open`, or such a one whose
+    corners the hand rounded, `shape_corners.rounded_many_sided_left_open`)."""
     length = sg.path_length(work)
     if length < 1.75 * diag:
         return False
