@@ -57,3 +57,18 @@ def test_a_polygon_missing_two_sides_is_not_closed_by_its_gap() -> None:
     full = _left_open_polygon(8, 0.1)
     half = full[: int(len(full) * 5 / 7)]
     assert not rounded_many_sided_left_open(half)
+
+
+def test_a_circle_left_open_sampled_by_a_few_events_is_no_polygon() -> None:
+    """Eight events evenly round 300 degrees: straight chords and a turn at every event, the device's corners, not the
+    hand's; with the stroke's own points given, no point lies between two corners."""
+    a = np.radians(np.linspace(0.0, 300.0, 8))
+    drawn = np.column_stack([np.cos(a), np.sin(a)])
+    work = sg.resample(drawn, 200)
+    assert not rounded_many_sided_left_open(work, drawn)
+
+
+def test_a_polygon_left_open_drawn_through_its_sides_keeps_its_corners() -> None:
+    """The same outline as a hand draws it, points all along its sides: the corners are the hand's."""
+    work = _left_open_polygon(8, 0.1)
+    assert rounded_many_sided_left_open(work, work[::5])

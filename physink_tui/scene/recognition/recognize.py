@@ -315,8 +315,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         if closed_loops.hook_kept_apart(hooked, unhooked, diag, sigma):
             closed, loop, ellipse = closed_loops.closed_loop(unhooked, sg.resample(unhooked, n), diag, sigma)
         work = sg.resample(unhooked, n)
-        if not closed and closed_loops.polygon_left_open(work, diag):
-            closed, loop, corners_told = True, work, shape_corners.rounded_many_sided_left_open(work)
+        if not closed and closed_loops.polygon_left_open(work, diag, raw):
+            closed, loop, corners_told = True, work, shape_corners.rounded_many_sided_left_open(work, raw)
         elif not closed:  # a box left open by part of a side (that part may be short enough to be cut as a hook)
             ways = (work, hooked) if len(unhooked) != len(hooked) else (work,)
             left_open = next((w for w in ways if open_boxes.box_left_open(w, diag)), None)

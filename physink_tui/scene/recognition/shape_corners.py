@@ -80,12 +80,24 @@ GAP_SIDES = 1.5
 """...and its gap is no longer than this many times its longest side drawn (`closed_loops.LEFT_OPEN_GAP`)."""
 
 
-def rounded_many_sided_left_open(work: np.ndarray) -> bool:
+def drawn_through(corners: np.ndarray, drawn: np.ndarray) -> bool:
+    """Whether the stroke's own points (``drawn``) hold one or more between each two neighbouring ``corners`` (each
+    taken at the drawn point nearest it): a polygon's side is drawn straight through the device's events between its
+    corners, while a round shape sampled by a few events (8-12 over a circle, evenly in time) turns at every one of
+    them, its chords from event to event the device's, not sides (`pen_noise.turns_at_every_event`, for closed
+    loops)."""
+    d = np.hypot(drawn[None, :, 0] - corners[:, None, 0], drawn[None, :, 1] - corners[:, None, 1])
+    at = np.argmin(d, axis=1)
+    return bool((np.abs(np.diff(at)) >= 2).all())
+
+
+def rounded_many_sided_left_open(work: np.ndarray, drawn: np.ndarray | None = None) -> bool:
     """Whether an open stroke is a many-sided polygon left open by one side whose corners the hand rounded: it does
     `AT_CORNERS` of its turning at `LEAST_CORNERS` corners or more (`corner_bends`), and its sides through those
     corners (each corner at the middle of its bend) and the gap close a convex outline turning the same way at every
     vertex once round, the gap no longer than `GAP_SIDES` of its longest side; and its sides run straight between
-    (`STRAIGHT_SHARE`) and its corners turn as many sides' do (`CORNER_TURN`)."""
+    (`STRAIGHT_SHARE`) and its corners turn as many sides' do (`CORNER_TURN`). ``drawn``, the stroke's own points where
+    given, must hold a point between each two corners (`drawn_through`)."""
     pts, th, found = bends(work)
     corners = corner_bends(found)
     total = float(np.abs(th).sum())
@@ -102,4 +114,6 @@ def rounded_many_sided_left_open(work: np.ndarray) -> bool:
         return False
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     turns = (np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi
-    return bool(((turns > 0).all() or (turns < 0).all()) and abs(abs(float(turns.sum())) - 2 * math.pi) <= 0.1)
+    if not (((turns > 0).all() or (turns < 0).all()) and abs(abs(float(turns.sum())) - 2 * math.pi) <= 0.1):
+        return False
+    return drawn is None or drawn_through(pts[at[1:-1]], drawn)
