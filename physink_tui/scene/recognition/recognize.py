@@ -35,6 +35,7 @@ from physink_tui.scene.recognition import (
     pen_lifts,
     pen_noise,
     ranker,
+    roofs,
     round_brackets,
     rounded_boxes,
     rounded_corners,
@@ -343,6 +344,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
+    ranked = roofs.pentagon_on_a_box(ranked, polygons, noise)
     ranked = rounded_boxes.box_rounded_all_round(ranked, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
