@@ -1,7 +1,8 @@
 """Issue 25, session 26: a long ellipse's miss (2.62 times as long as wide or more, `candidates.ACROSS_RATIO`) is
 measured square across it (`candidates.ellipse_distances`), so a person's long, lopsided oval is an ellipse rather than
 the triangle or box through its ends, while a rounder one's is measured along the ray from its centre as before (an
-irregular hexagon or a bowed box near round keeps its corners); and a loop whose cut-off end runs off its ellipse (a pigtail's tail, `closed_loops.tail_runs_off`) is offered no round shape.
+irregular hexagon or a bowed box near round keeps its corners); and a loop whose cut-off end runs off its ellipse (a
+pigtail's tail, `closed_loops.tail_runs_off`) is offered no round shape.
 
 People's strokes are read from the public-set caches (`benchmarks/public_sets.py`; no licence: never committed) and
 skip without them."""
