@@ -74,8 +74,12 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     tail = np.vstack([raw[along > length - cut][::-1], at_tail])
     after_head = np.vstack([at_head, raw[along > cut]])
     before_tail = np.vstack([raw[along < length - cut], at_tail])
-    return [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
-            if len(rest) >= 2 and not _arm(piece, inward)]
+    pieces = [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
+              if len(rest) >= 2 and not _arm(piece, inward)]
+    middle = np.vstack([at_head, raw[(along > cut) & (along < length - cut)], at_tail])
+    if len(middle) >= 2 and _hooked_both(head, tail, middle):
+        pieces.append(middle)
+    return pieces
 
 
 LINE_TEST_POINTS = (48, 160)
@@ -125,10 +129,22 @@ def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
     """Whether a piece `unhooked` leaves of ``raw`` (``diag``: its `stroke_geometry.bbox_diagonal`; ``noise`` as
     `unhooked`'s) could have its ends half its own diagonal apart, which the line test asks first
     (`open_shapes._line`): cutting c of path from an end moves that end by c at most and shrinks the diagonal by c at
-    most (what is cut lies along c of path from the new end), and no cut is longer than `HOOK_REACH` noise widths, so
-    the ends must be at least half the diagonal less 1.5 c apart. Asked before `unhooked`, whose corner test costs more
-    (a closed shape's or a curl's ends are close); a hair's margin for rounding."""
-    return float(np.hypot(*(raw[-1] - raw[0]))) + 1.5 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
+    most (what is cut lies along c of path from the new end), and no cut is longer than `HOOK_REACH` noise widths; a
+    piece may be cut at both ends (`_hooked_both`), so the ends must be at least half the diagonal less 3 c apart.
+    Asked before `unhooked`, whose corner test costs more (a closed shape's or a curl's ends are close); a hair's
+    margin for rounding."""
+    return float(np.hypot(*(raw[-1] - raw[0]))) + 3.0 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
+
+
+def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray) -> bool:
+    """Whether ``head`` and ``tail`` (each from an end of the stroke inwards) are hooks both, not a bracket's arms:
+    neither is a mark's short arm (`_arm`), or they stand off ``middle``'s chord to opposite sides (a bracket's arms
+    stand off to the same side)."""
+    if not _arm(head, middle) and not _arm(tail, middle[::-1]):
+        return True
+    chord = middle[-1] - middle[0]
+    sides = [float(chord[0] * (p[1] - middle[0][1]) - chord[1] * (p[0] - middle[0][0])) for p in (head[0], tail[0])]
+    return sides[0] * sides[1] < 0
 
 
 def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
