@@ -136,15 +136,24 @@ def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
     return float(np.hypot(*(raw[-1] - raw[0]))) + 3.0 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
 
 
+HOOK_BACK_DEG = 110.0
+"""Where the pen lands or lifts with a hook at both ends of a short line, each hook may be straight enough for a mark's
+arm (`_arm`) but comes in from behind the line's end: the cut piece leaves the rest at this angle or more (the pen
+models' hooks turned back 100-160 degrees: 90-133 where `_arm` takes them for arms, 12 of 16 at 110 or more), where a
+bracket's arm stands square to its spine (the pen models' tiny, small and short-arm brackets: 57-100 degrees, 10 of
+319 arms over 105; `benchmarks/bench_lines.py`'s short-hooked family, issue 25, session 26)."""
+
+
 def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray) -> bool:
-    """Whether ``head`` and ``tail`` (each from an end of the stroke inwards) are hooks both, not a bracket's arms:
-    neither is a mark's short arm (`_arm`), or they stand off ``middle``'s chord to opposite sides (a bracket's arms
-    stand off to the same side)."""
-    if not _arm(head, middle) and not _arm(tail, middle[::-1]):
-        return True
+    """Whether ``head`` and ``tail`` (each from an end of the stroke inwards) are both hooks where the pen landed and
+    lifted, not a bracket's arms: they stand off ``middle``'s chord to opposite sides (a bracket's arms stand off to
+    the same side), or neither is a mark's short arm (`_arm`) unless turned back past square (`HOOK_BACK_DEG`)."""
     chord = middle[-1] - middle[0]
     sides = [float(chord[0] * (p[1] - middle[0][1]) - chord[1] * (p[0] - middle[0][0])) for p in (head[0], tail[0])]
-    return sides[0] * sides[1] < 0
+    if sides[0] * sides[1] < 0:
+        return True
+    return all(angle is None or not _arm_angle(angle) or angle >= HOOK_BACK_DEG
+               for angle in (_stand_off(head, middle), _stand_off(tail, middle[::-1])))
 
 
 def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
@@ -157,16 +166,27 @@ def _arm(piece: np.ndarray, rest: np.ndarray) -> bool:
     straight (`stroke_geometry.ARM_STRAIGHT`) and standing off the rest's chord at `stroke_geometry.ARM_ANGLE_DEG`
     (a tiny check's first arm, 10 px on a 20 px mark, itt lvht1203's check04, or a square bracket's); a hook curls
     back or runs on nearly in line."""
+    angle = _stand_off(piece, rest)
+    return angle is not None and _arm_angle(angle)
+
+
+def _arm_angle(angle: float) -> bool:
+    """Whether a straight end piece standing off the rest at ``angle`` (degrees) does so as a mark's arm does."""
+    return sg.ARM_ANGLE_DEG[0] <= angle <= sg.ARM_ANGLE_DEG[1]
+
+
+def _stand_off(piece: np.ndarray, rest: np.ndarray) -> float | None:
+    """The angle (degrees) between ``piece``'s chord, from where ``rest`` runs on to the stroke's end, and the way
+    ``rest`` runs on; None where ``piece`` is not straight (`stroke_geometry.ARM_STRAIGHT`) or either has no length."""
     if len(piece) < 2:
-        return False
+        return None
     if len(piece) > 2 and sg.chord_deviation(piece) >= sg.ARM_STRAIGHT:
-        return False
+        return None
     u, v = piece[0] - piece[-1], rest[-1] - rest[0]
     norms = float(np.hypot(*u) * np.hypot(*v))
     if norms == 0.0:
-        return False
-    angle = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
-    return sg.ARM_ANGLE_DEG[0] <= angle <= sg.ARM_ANGLE_DEG[1]
+        return None
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
 
 
 INK_STEP = 3.0
