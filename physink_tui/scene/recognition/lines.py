@@ -60,9 +60,12 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     """``raw`` without a hook's length (`HOOK_REACH`, `HOOK_SHARE`) of path at its start, and without one at its end
     (``noise`` in ``raw``'s units), each to be judged by the line test again; none where the stroke is too short, nor
     an end whose cut piece is a mark's arm (`_arm`). A short line's hook is a large share of it, more than
-    `stroke_geometry.remove_hooks` cuts (a tenth of the path). Not both ends at once: short pieces standing off both
-    ends are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px spine), and a hand hooks one end far more
-    often than both (mmg's lines: the start 2 %, the end 13 %)."""
+    `stroke_geometry.remove_hooks` cuts (a tenth of the path). Both ends at once only where both pieces are hooks
+    (`_hooked_both`: to opposite sides, or neither standing square off the rest as an arm does): short pieces
+    standing square off both ends to one side are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px
+    spine; the pen models' tiny brackets), and a hand hooks one end far more often than both (mmg's lines: the start
+    2 %, the end 13 %), but a short line hooked at both ends is read as a polyline otherwise (`benchmarks/
+    bench_lines.py`' short-hooked family: 14-18 of 60 by the careful pen, issue 25, session 26)."""
     steps = sg.step_lengths(raw)
     along = np.concatenate([[0.0], np.add.accumulate(steps)])
     length = float(along[-1])
@@ -77,7 +80,7 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     pieces = [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
               if len(rest) >= 2 and not _arm(piece, inward)]
     middle = np.vstack([at_head, raw[(along > cut) & (along < length - cut)], at_tail])
-    if len(middle) >= 2 and _hooked_both(head, tail, middle):
+    if len(middle) >= 2 and _hooked_both(head, tail, middle, noise):
         pieces.append(middle)
     return pieces
 
@@ -144,13 +147,22 @@ bracket's arm stands square to its spine (the pen models' tiny, small and short-
 319 arms over 105; `benchmarks/bench_lines.py`'s short-hooked family, issue 25, session 26)."""
 
 
-def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray) -> bool:
+def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: float) -> bool:
     """Whether ``head`` and ``tail`` (each from an end of the stroke inwards) are both hooks where the pen landed and
-    lifted, not a bracket's arms: they stand off ``middle``'s chord to opposite sides (a bracket's arms stand off to
-    the same side), or neither is a mark's short arm (`_arm`) unless turned back past square (`HOOK_BACK_DEG`)."""
+    lifted, not a bracket's arms: each stands off ``middle``'s chord farther than the pen's own wobble reaches
+    (`wobble_reach`, ``noise`` in their units: an end running on straight is no hook, and cutting it would move the
+    line's end), and they stand off to opposite sides (a bracket's arms stand off to the same side), or neither is a
+    mark's short arm (`_arm`) unless turned back past square (`HOOK_BACK_DEG`)."""
     chord = middle[-1] - middle[0]
-    sides = [float(chord[0] * (p[1] - middle[0][1]) - chord[1] * (p[0] - middle[0][0])) for p in (head[0], tail[0])]
-    if sides[0] * sides[1] < 0:
+    norm = float(np.hypot(*chord))
+    if norm == 0.0:
+        return False
+    offs = [(piece[:, 1] - middle[0][1]) * chord[0] / norm - (piece[:, 0] - middle[0][0]) * chord[1] / norm
+            for piece in (head, tail)]
+    far = [float(off[int(np.argmax(np.abs(off)))]) for off in offs]
+    if any(abs(f) <= wobble_reach(len(piece)) * noise for f, piece in zip(far, (head, tail), strict=True)):
+        return False
+    if far[0] * far[1] < 0:
         return True
     return all(angle is None or not _arm_angle(angle) or angle >= HOOK_BACK_DEG
                for angle in (_stand_off(head, middle), _stand_off(tail, middle[::-1])))
