@@ -79,9 +79,10 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     before_tail = np.vstack([raw[along < length - cut], at_tail])
     pieces = [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
               if len(rest) >= 2 and not _arm(piece, inward)]
-    middle = np.vstack([at_head, raw[(along > cut) & (along < length - cut)], at_tail])
-    if len(middle) >= 2 and _hooked_both(head, tail, middle, noise):
-        pieces.append(middle)
+    if cut <= BOTH_HOOKS_SHARE * length:
+        middle = np.vstack([at_head, raw[(along > cut) & (along < length - cut)], at_tail])
+        if len(middle) >= 2 and _hooked_both(head, tail, middle, noise) and end_curl(raw, noise) >= HOOK_CURL_DEG:
+            pieces.append(middle)
     return pieces
 
 
@@ -139,6 +140,13 @@ def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
     return float(np.hypot(*(raw[-1] - raw[0]))) + 3.0 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
 
 
+BOTH_HOOKS_SHARE = 0.25
+"""Hooks are cut at both ends of a stroke (`unhooked`) only where each cut is at most this share of its path: the line
+left is at least half the stroke. A small parenthesis, 16-20 px tall, would lose 60 % of its path to the cuts and
+leave a straight bit of its bow (`tests/test_small_marks.py`' small-paren seed 24: 0.39 left); the short-hooked
+lines of `benchmarks/bench_lines.py` keep 0.63-0.81. Such a cut must also find an end curling as a hook does
+(`end_curl`, `HOOK_CURL_DEG`: a parenthesis bends off at its ends more gently, small-paren seed 5 by 29 and 25 degrees
+with 0.53 left)."""
 HOOK_BACK_DEG = 110.0
 """Where the pen lands or lifts with a hook at both ends of a short line, each hook may be straight enough for a mark's
 arm (`_arm`) but comes in from behind the line's end: the cut piece leaves the rest at this angle or more (the pen
