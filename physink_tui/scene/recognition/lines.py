@@ -79,7 +79,7 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     before_tail = np.vstack([raw[along < length - cut], at_tail])
     pieces = [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
               if len(rest) >= 2 and not _arm(piece, inward)]
-    if cut <= BOTH_HOOKS_SHARE * length:
+    if cut <= BOTH_HOOKS_SHARE * length and length - 2 * cut >= BOTH_HOOKS_MIDDLE * noise:
         middle = np.vstack([at_head, raw[(along > cut) & (along < length - cut)], at_tail])
         if len(middle) >= 2 and _hooked_both(head, tail, middle, noise) and end_curl(raw, noise) >= HOOK_CURL_DEG:
             pieces.append(middle)
@@ -147,6 +147,17 @@ leave a straight bit of its bow (`tests/test_small_marks.py`' small-paren seed 2
 lines of `benchmarks/bench_lines.py` keep 0.63-0.81. Such a cut must also find an end curling as a hook does
 (`end_curl`, `HOOK_CURL_DEG`: a parenthesis bends off at its ends more gently, small-paren seed 5 by 29 and 25 degrees
 with 0.53 left)."""
+BRACE_BOW = 1.5
+"""... and only where the line left between them does not bow away from the side both hooks stand off to (either way,
+where they stand off to opposite sides) by this many of the pen's noise widths (`open_marks.HOOKED_STRAIGHT`'s floor):
+a small curly brace's ends curl to one side and its point stands off to the other (`benchmarks/bench_brace_habits.py`,
+20-40 px braces through whole pixels: 1.2-4.8 noise widths; tall thin braces by a mouse: 2-12), where the middle of a
+line hooked at both ends strays by the pen's noise alone (0-1.4 for the careful and hurried pens)."""
+BOTH_HOOKS_MIDDLE = 3 * HOOK_REACH
+"""... and where at least this many noise widths of path are left between the cuts: between two curls closer together,
+the mark is as likely a tiny curly brace, 20-40 px, whose flat point is lost in whole pixels (`benchmarks/
+bench_brace_habits.py`' flat-point braces through whole pixels: 15-28 left, 14 of 240 tuning readings lost without
+this floor), or a small parenthesis; the short-hooked lines of `benchmarks/bench_lines.py` leave 27-75."""
 HOOK_BACK_DEG = 110.0
 """Where the pen lands or lifts with a hook at both ends of a short line, each hook may be straight enough for a mark's
 arm (`_arm`) but comes in from behind the line's end: the cut piece leaves the rest at this angle or more (the pen
@@ -157,18 +168,27 @@ bracket's arm stands square to its spine (the pen models' tiny, small and short-
 
 def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: float) -> bool:
     """Whether ``head`` and ``tail`` (each from an end of the stroke inwards) are both hooks where the pen landed and
-    lifted, not a bracket's arms: each stands off ``middle``'s chord farther than the pen's own wobble reaches
-    (`wobble_reach`, ``noise`` in their units: an end running on straight is no hook, and cutting it would move the
-    line's end), and they stand off to opposite sides (a bracket's arms stand off to the same side), or neither is a
-    mark's short arm (`_arm`) unless turned back past square (`HOOK_BACK_DEG`)."""
+    lifted, not a bracket's arms nor a brace's curls: each stands off ``middle``'s chord farther than the pen's own
+    wobble reaches (`wobble_reach`, ``noise`` in their units: an end running on straight is no hook, and cutting it
+    would move the line's end), the middle does not bow away from them (`BRACE_BOW`), and they stand off to opposite
+    sides (a bracket's arms stand off to the same side), or neither is a mark's short arm (`_arm`) unless turned back
+    past square (`HOOK_BACK_DEG`)."""
     chord = middle[-1] - middle[0]
     norm = float(np.hypot(*chord))
     if norm == 0.0:
         return False
-    offs = [(piece[:, 1] - middle[0][1]) * chord[0] / norm - (piece[:, 0] - middle[0][0]) * chord[1] / norm
-            for piece in (head, tail)]
+    unit = chord / norm
+
+    def left_of_chord(pts: np.ndarray) -> np.ndarray:
+        return (pts[:, 1] - middle[0][1]) * unit[0] - (pts[:, 0] - middle[0][0]) * unit[1]
+
+    offs = [left_of_chord(piece) for piece in (head, tail)]
     far = [float(off[int(np.argmax(np.abs(off)))]) for off in offs]
     if any(abs(f) <= wobble_reach(len(piece)) * noise for f, piece in zip(far, (head, tail), strict=True)):
+        return False
+    bow = left_of_chord(middle)
+    away = np.abs(bow) if far[0] * far[1] < 0 else -np.sign(far[0]) * bow  # off the line, away from the hooks
+    if float(away.max()) >= BRACE_BOW * noise:
         return False
     if far[0] * far[1] < 0:
         return True
