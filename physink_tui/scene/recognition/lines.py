@@ -180,7 +180,8 @@ def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: 
     unit = chord / norm
 
     def left_of_chord(pts: np.ndarray) -> np.ndarray:
-        return (pts[:, 1] - middle[0][1]) * unit[0] - (pts[:, 0] - middle[0][0]) * unit[1]
+        off: np.ndarray = (pts[:, 1] - middle[0][1]) * unit[0] - (pts[:, 0] - middle[0][0]) * unit[1]
+        return off
 
     offs = [left_of_chord(piece) for piece in (head, tail)]
     far = [float(off[int(np.argmax(np.abs(off)))]) for off in offs]
