@@ -56,17 +56,7 @@ rounded brackets through the coarse device 58 -> 60, short-armed ones through th
 the mouse and the fast device 58 -> 60."""
 
 
-BOTH_ENDS_CUT = pytest.mark.xfail(strict=True, reason=(
-    "session 26, wt-ends: `lines.unhooked` cuts both ends of a short line hooked where the pen lands and lifts; held "
-    "seed 1027's bracket through the mouse (64 px, arms 5-7 px after the stairs, no corner the corner test sees) is "
-    "then a line with and without times (54 of 60): its arms stand off to one side like a C's hooks and, cut with a "
-    "piece of the spine, are not straight for `lines._arm`"))
-"""The one held floor the both-ends hook cut costs, a strict xfail naming its cause (the floor is not lowered)."""
-
-
-@pytest.mark.parametrize(("family", "pen"), [
-    pytest.param(f, p, marks=BOTH_ENDS_CUT) if (f, p) == ("short-arm-bracket", "hurried-mouse") else (f, p)
-    for f in HELD_FLOORS for p in PENS])
+@pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])
 def test_brackets_drawn_with_unseen_habits_read_as_brackets(family: str, pen: str) -> None:
     got = [reading(drawn(family, pen, seed), timed) for seed in HELD_SEEDS for timed in (True, False)]
     assert sum(k == EXPECTED[family] for k in got) >= HELD_FLOORS[family][pen], got

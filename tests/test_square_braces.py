@@ -31,15 +31,7 @@ SQUARE_CORNERED_FLOORS = {"careful": 60, "hurried": 58, "hurried-fast": 44, "hur
 (the rest polylines, a few tiny ones lines; docs/BENCHMARKS.md, session 23)."""
 
 
-BOTH_ENDS_CUT = pytest.mark.xfail(strict=True, reason=(
-    "session 26, wt-ends: `lines.unhooked` cuts both ends of a short line hooked where the pen lands and lifts; a "
-    "square-cornered brace 20-40 px drawn through whole pixels, its point lost in them, is then a line (45 -> 44): its "
-    "curls at both ends are a short line's hooks to any test there"))
-"""The held floor the both-ends hook cut costs, a strict xfail naming its cause (the floor is not lowered)."""
-
-
-@pytest.mark.parametrize("pen", [pytest.param(p, marks=BOTH_ENDS_CUT) if p == "hurried-tiny" else p
-                                 for p in SQUARE_CORNERED_FLOORS])
+@pytest.mark.parametrize("pen", list(SQUARE_CORNERED_FLOORS))
 def test_a_square_cornered_brace_is_a_curve(pen: str) -> None:
     strokes = [drawn("square-cornered", way, pen, seed) for seed in HELD[:15] for way in WAYS]
     read = [recognize_stroke([p[:2] for p in s], [p[2] for p in s]).kind for s in strokes]

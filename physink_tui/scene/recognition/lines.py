@@ -164,6 +164,18 @@ arm (`_arm`) but comes in from behind the line's end: the cut piece leaves the r
 models' hooks turned back 100-160 degrees: 90-133 where `_arm` takes them for arms, 12 of 16 at 110 or more), where a
 bracket's arm stands square to its spine (the pen models' tiny, small and short-arm brackets: 57-100 degrees, 10 of
 319 arms over 105; `benchmarks/bench_lines.py`'s short-hooked family, issue 25, session 26)."""
+HOOKS_SPLAY_DEG = 50.0
+"""Where both hooks stand off to one side, their chords (each from where it is cut out to the stroke's end) must also
+splay apart by this angle or more (`_splay`): a hook where the pen lands and one where it lifts each come in from
+behind the line's end, so they open away from each other like a C's (the pen models' same-side hooks on tuning seeds:
+60-118 degrees where the cut gave a line back), where a square bracket's arms run about parallel off its spine, a
+cut piece of spine tilting them a little (`tests/test_bracket_habits.py`' short-armed bracket through the mouse)."""
+MIDDLE_SPREAD = 2.0
+"""... and the line left between two hooks to one side must lie within this many noise widths across its chord, both
+sides together: a line's middle strays by the pen's noise alone (the tuning gains 0.0-1.7), where a tiny square-cornered
+brace drawn through whole pixels keeps its lost point as a bow both ways (2.2, `benchmarks/bench_brace_habits.py`,
+`tests/test_square_braces.py`)."""
+
 
 
 def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: float) -> bool:
@@ -171,8 +183,9 @@ def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: 
     lifted, not a bracket's arms nor a brace's curls: each stands off ``middle``'s chord farther than the pen's own
     wobble reaches (`wobble_reach`, ``noise`` in their units: an end running on straight is no hook, and cutting it
     would move the line's end), the middle does not bow away from them (`BRACE_BOW`), and they stand off to opposite
-    sides (a bracket's arms stand off to the same side), or neither is a mark's short arm (`_arm`) unless turned back
-    past square (`HOOK_BACK_DEG`)."""
+    sides (a bracket's arms stand off to the same side), or splay apart (`HOOKS_SPLAY_DEG`) about a middle straight
+    within the pen's noise (`MIDDLE_SPREAD`), neither a mark's short arm (`_arm`) unless turned back past square
+    (`HOOK_BACK_DEG`)."""
     chord = middle[-1] - middle[0]
     norm = float(np.hypot(*chord))
     if norm == 0.0:
@@ -193,8 +206,22 @@ def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: 
         return False
     if far[0] * far[1] < 0:
         return True
+    if _splay(head, tail) < HOOKS_SPLAY_DEG:
+        return False
+    if float(np.ptp(bow)) >= MIDDLE_SPREAD * noise:
+        return False
     return all(angle is None or not _arm_angle(angle) or angle >= HOOK_BACK_DEG
                for angle in (_stand_off(head, middle), _stand_off(tail, middle[::-1])))
+
+
+def _splay(head: np.ndarray, tail: np.ndarray) -> float:
+    """The angle (degrees) between ``head``'s and ``tail``'s chords, each from where it was cut out to the stroke's
+    end: 0 where they run parallel."""
+    u, v = head[0] - head[-1], tail[0] - tail[-1]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return 0.0
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
 
 
 def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
