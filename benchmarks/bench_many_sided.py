@@ -7,7 +7,8 @@ Issue 25, session 23: the fourth group's hexagons (10/24) and octagons (19/31) w
 ellipses, its squiggles (87/110) as polylines and helices. The marks are drawn by the pens of `bench_open_marks` (the
 careful virtual pen, the hurried hand, the hurried hand through a coarse device and through a mouse), each read with
 its times and without. Seeds 0-29 (`TUNING_SEEDS`) were looked at while designing; 1000-1029 (`HELD_SEEDS`) were read
-once, at the end.
+once, at the end. Session 26 added hexagons to octagons left open with every corner rounded (`shape_corners`) and
+lumpy circles left open, which must stay round.
 """
 
 from __future__ import annotations

@@ -1,7 +1,8 @@
 """Issue 25: rectangles one side of which a hurried hand bowed out or in, or swung round with its two corners
 (`penmodels.box_bows`), read as boxes by both pen models at least as often as measured on the held-back seeds
 1000-1029 (`benchmarks/bench_box_bows.py --held-back`), and the low pentagons, swallowtails and deeply cut boxes beside
-them stay polygons as often as at main; a box with a side bowed by a fifth is a box body through a whole session
+them stay polygons at least as often as measured (houses and swallowtails on wt-roof, session 26:
+`recognition.roofs`); a box with a side bowed by a fifth is a box body through a whole session
 (journal -> replay -> project); a person's polygons square on one side that reach the rule stay polygons
 (`recognition.bowed_sides`); a person's square whose side and its corners were swung round in one sweep, with a wall
 13 degrees askew, is a strict xfail.
@@ -39,12 +40,13 @@ Point = tuple[float, float]
 
 FLOORS: dict[str, tuple[int, int]] = {
     "bowed-out": (30, 30), "bowed-in": (28, 29), "bow-swung": (27, 26),
-    "house": (13, 12), "house-in": (11, 11), "cut-deep": (28, 25),
+    "house": (23, 20), "house-in": (25, 21), "cut-deep": (28, 25),
 }
 """family -> of the 30 held-back seeds, how many read as a box (the first three families) or as a polygon (the others)
 drawn by the careful virtual pen and by the hurried hand (with their times), measured on wt-sides (session 25). At
 main 2ff28bf: bowed-out 23/20, bowed-in 16/15, bow-swung 19/20; house 13/12, house-in 11/12, cut-deep 28/25 (main
-reads most low roofs and swallowtails, 12-25 % of the side, as boxes already: `recognize._box_as_drawn`)."""
+reads most low roofs and swallowtails, 12-25 % of the side, as boxes already: `recognize._box_as_drawn`). house and
+house-in raised on wt-roof (session 26: `recognition.roofs` gives the pentagon back; main 7111cdc 13/12 and 11/11)."""
 
 
 def test_every_family_has_a_floor() -> None:

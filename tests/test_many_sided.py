@@ -1,8 +1,10 @@
-"""Issue 25, session 23: many-sided outlines drawn in a hurry keep their corners. An irregular octagon one or two of
+"""Issue 25, sessions 23 and 26: many-sided outlines drawn in a hurry keep their corners. An irregular octagon one or two of
 whose shallow corners were swept round is read as the polygon drawn where its polygon explains nine tenths of the
 round shape's error and two thirds of its corners are sharp (`round_or_cornered.mostly_sharp`), by the pen models
 (`tests/penmodels/many_sided`, `benchmarks/bench_many_sided.py`) and on the Quick, Draw! players' octagons; people's
-circles whose wobbly polygon explains as much stay round.
+circles whose wobbly polygon explains as much stay round. A hexagon or octagon left open by one side, its corners
+rounded, is a polygon where its turning is gathered at short bends between straight runs (`shape_corners`); circles
+left open, lumpy or drawn as a few chords, stay round.
 
 Floors were measured on the held seeds (1000-1029), read once, at the end; each is this branch's figure. People's
 strokes are read from ../shared/data and the caches `benchmarks/public_sets.py` and `benchmarks/student_sets.py`
@@ -11,12 +13,14 @@ write; without a cache that test skips, saying so.
 
 from __future__ import annotations
 
+import json
 import sys
 from pathlib import Path
 
 import pytest
 from penmodels.many_sided import EXPECTED, FAMILIES
 from shapely.geometry import Polygon as ShapelyPolygon
+from shared_data import shared_path
 from test_open_marks import _stroke, cached_rows
 
 from physink_tui.scene.recognition.beautify import shape_points
@@ -28,20 +32,25 @@ from bench_open_marks import HELD_SEEDS, PENS, read
 HELD_FLOORS = {
     "irregular-hexagon": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 48},
     "swept-octagon": {"careful": 56, "hurried": 54, "hurried-coarse": 40, "hurried-mouse": 6},
-    "left-open": {"careful": 8, "hurried": 16, "hurried-coarse": 16, "hurried-mouse": 6},
+    "left-open": {"careful": 46, "hurried": 56, "hurried-coarse": 52, "hurried-mouse": 46},
     "uneven-squiggle": {"careful": 32, "hurried": 38, "hurried-coarse": 36, "hurried-mouse": 34},
+    "rounded-left-open": {"careful": 56, "hurried": 52, "hurried-coarse": 48, "hurried-mouse": 38},
+    "round-left-open": {"careful": 60, "hurried": 60, "hurried-coarse": 58, "hurried-mouse": 60},
 }
 """family -> pen -> of the 60 readings on the held seeds (30 marks, with and without times), how many are read as
 `EXPECTED`, measured on this branch; main 6b543d7 read 60, 60, 60, 48 (hexagons), 48, 40, 32, 2 (octagons), 0, 0, 0,
-0 (left open) and the squiggles as here. Left open: the octagons through a mouse (read round), the polygons left open
-whose corner finder misses a corner (read as curves and polylines), and the squiggles read as polylines (their tall
-humps turn within 0.1-0.2 of a side, as sharp as a zig-zag's teeth to `waves.MIN_ROUNDNESS`)."""
+0 (left open) and the squiggles as here. Left open: the octagons through a mouse (read round) and the squiggles read
+as polylines (their tall humps turn within 0.1-0.2 of a side, as sharp as a zig-zag's teeth to `waves.MIN_ROUNDNESS`).
+Session 26 (`shape_corners`, main 7111cdc -> this branch): left-open 8, 16, 16, 6 -> 46, 56, 52, 46; rounded-left-open
+(new) 2, 2, 0, 2 -> 56, 52, 48, 38; round-left-open (new; lumpy circles left open, which must stay round) 60, 60, 58,
+60 at both."""
 
 
 @pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])
 def test_a_hurried_many_sided_outline_or_squiggle_reads_as_drawn(family: str, pen: str) -> None:
     got = [read(family, pen, seed, timed, families=FAMILIES) for seed in HELD_SEEDS for timed in (True, False)]
-    assert sum(k == EXPECTED[family] for k in got) >= HELD_FLOORS[family][pen], got
+    want = EXPECTED[family]
+    assert sum(k in ((want,) if isinstance(want, str) else want) for k in got) >= HELD_FLOORS[family][pen], got
 
 
 OUTLINES = (
@@ -92,3 +101,53 @@ def test_a_persons_wobbly_circle_stays_round(name: str, file: str) -> None:
     assert row is not None, f"{file} is not in {name}"
     points, times = _stroke(row)
     assert recognize_stroke(points, times).kind in ("circle", "ellipse")
+
+
+LEFT_OPEN_ROUNDED = {
+    "borismus/exupery@5ab788c:docs/sketches/hexagon.ndjson#5724753627185152": 0.95,
+    "borismus/exupery@5ab788c:docs/sketches/hexagon.ndjson#5210692967727104": 0.98,
+    "borismus/exupery@5ab788c:docs/sketches/hexagon.ndjson#5564563560857600": 0.98,
+    "borismus/exupery@5ab788c:docs/sketches/octagon.ndjson#5178504989638656": 0.97,
+    "borismus/exupery@5ab788c:docs/sketches/octagon.ndjson#6178885219647488": 0.97,
+    "borismus/exupery@5ab788c:docs/sketches/octagon.ndjson#5032903316602880": 0.98,
+    "borismus/exupery@5ab788c:docs/sketches/octagon.ndjson#6654824772796416": 0.98,
+    "borismus/exupery@5ab788c:docs/sketches/octagon.ndjson#5697908470972416": 0.89,
+}
+"""Quick, Draw! hexagons and octagons left open by one side, their corners rounded, misread at main 7111cdc (as curves,
+polylines and circles: the corner finder missed the rounded corners); session 26 (`shape_corners`). Each with the
+IoU its polygon keeps with the drawn outline closed across the gap, as measured on this branch (the last, an octagon
+read with five vertices, its sides' rounded corners cut: 0.8998)."""
+
+
+@pytest.mark.parametrize("file", list(LEFT_OPEN_ROUNDED), ids=[f.rsplit("#", 1)[-1] for f in LEFT_OPEN_ROUNDED])
+@pytest.mark.parametrize("timed", [True, False], ids=["timed", "untimed"])
+def test_a_many_sided_outline_left_open_with_rounded_corners_is_a_polygon(file: str, timed: bool) -> None:
+    """Read, with its times or without, as a polygon of five sides or more whose outline overlaps the drawn one
+    (closed across its gap) as closely as measured (`LEFT_OPEN_ROUNDED`)."""
+    row = cached_rows("public-sets/quickdraw.jsonl").get(file)
+    assert row is not None, f"{file} is not in quickdraw"
+    points, times = _stroke(row)
+    found = recognize_stroke(points, times if timed else None)
+    assert found.kind == "polygon" and found.geometry is not None
+    corners = shape_points(found.geometry)
+    assert len(corners) >= 5
+    drawn, read_as = ShapelyPolygon(points).buffer(0), ShapelyPolygon(corners).buffer(0)
+    assert drawn.intersection(read_as).area / drawn.union(read_as).area >= LEFT_OPEN_ROUNDED[file]
+
+
+FAST_CIRCLES = ("s04/fast/circle05.xml", "s04/medium/circle02.xml", "s04/medium/circle08.xml", "s04/slow/circle01.xml")
+"""The $1 set's circles nearest `shape_corners.rounded_many_sided_left_open`: left open, drawn as a few chords, four
+to eight short bends doing 0.64-0.75 of the turning on a convex outline the gap would close; but their steps run
+straight only 0.29-0.37 of the way (`STRAIGHT_SHARE` asks 0.45) and their bends turn 0.75-0.82 of a regular polygon's
+for their number."""
+
+
+@pytest.mark.parametrize("file", FAST_CIRCLES)
+def test_a_fast_circle_drawn_as_chords_and_left_open_stays_round(file: str) -> None:
+    rows = (json.loads(line) for line in shared_path("strokes", "dollar1-dev.jsonl").read_text(encoding="utf-8")
+            .splitlines() if line.strip())
+    row = next((r for r in rows if r["file"] == file), None)
+    assert row is not None, f"{file} is not in the $1 set"
+    points, times = _stroke(row)
+    assert recognize_stroke(points, times).kind in ("circle", "ellipse")
+    assert recognize_stroke(points).kind in ("circle", "ellipse")

@@ -11,10 +11,11 @@ from collections.abc import Callable
 
 from penmodels.open_marks import Mark, Point
 
-EXPECTED = {"irregular-hexagon": "polygon", "swept-octagon": "polygon", "left-open": "polygon",
-            "uneven-squiggle": "curve"}
-"""The kind each family is read as (benchmarks/label_kinds.tsv: quickdraw hexagons and octagons are polygons,
-squiggles curves)."""
+EXPECTED: dict[str, str | tuple[str, ...]] = {
+    "irregular-hexagon": "polygon", "swept-octagon": "polygon", "left-open": "polygon", "uneven-squiggle": "curve",
+    "rounded-left-open": "polygon", "round-left-open": ("circle", "ellipse", "arc")}
+"""The kind (or kinds) each family is read as (benchmarks/label_kinds.tsv: quickdraw hexagons and octagons are
+polygons, squiggles curves; a circle left open is round, or the arc drawn, never a polygon)."""
 
 
 def _placed(rng: random.Random, pts: list[Point]) -> tuple[Point, ...]:
@@ -117,7 +118,38 @@ def uneven_squiggle(seed: int) -> Mark:
     return Mark("uneven-squiggle", _placed(rng, pts), True)
 
 
+def rounded_left_open(seed: int) -> Mark:
+    """A hexagon, heptagon or octagon (`irregular_hexagon`'s corners, up to a fifth of the spacing off even) every
+    corner of which the hand swept round over 0.15-0.35 of the sides meeting there (`_swept`), drawn round to its last
+    corner and left open there (Quick, Draw! hexagons and octagons: the game ended as it guessed, the corners rounded
+    in the hurry)."""
+    rng = random.Random(f"rounded-left-open:{seed}")
+    sides = rng.choice((6, 7, 8))
+    corners = _corners(rng, sides, 0.2)[::rng.choice((1, -1))]
+    pts: list[Point] = [corners[0]]
+    for k in range(1, sides - 1):
+        pts += _swept(corners[k], corners[k - 1], corners[k + 1], rng.uniform(0.08, 0.2))
+    pts.append(corners[-1])
+    return Mark("rounded-left-open", _placed(rng, pts), False)
+
+
+def round_left_open(seed: int) -> Mark:
+    """A circle or an oval (up to a fifth flatter one way, 60-200 px in radius) drawn lumpily (its radius wandering by
+    up to 8 % in its 2nd-5th harmonics) round 250-330 degrees and left open: what `rounded_left_open` must not take
+    for a polygon."""
+    rng = random.Random(f"round-left-open:{seed}")
+    radius, flat = rng.uniform(60, 200), rng.uniform(0.8, 1.0)
+    lumps = [(h, rng.uniform(0.0, 0.08 / h), rng.uniform(0, 2 * math.pi)) for h in range(2, 6)]
+    sweep, start, way = math.radians(rng.uniform(250, 330)), rng.uniform(0, 2 * math.pi), rng.choice((1, -1))
+    pts: list[Point] = []
+    for k in range(int(math.degrees(sweep) / 2) + 1):
+        a = start + way * math.radians(2 * k)
+        r = radius * (1 + sum(amp * math.cos(h * a + phase) for h, amp, phase in lumps))
+        pts.append((r * math.cos(a), r * flat * math.sin(a)))
+    return Mark("round-left-open", _placed(rng, pts), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "irregular-hexagon": irregular_hexagon, "swept-octagon": swept_octagon, "left-open": left_open,
-    "uneven-squiggle": uneven_squiggle}
+    "uneven-squiggle": uneven_squiggle, "rounded-left-open": rounded_left_open, "round-left-open": round_left_open}
 """Every family; each is read as `EXPECTED` says."""

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes, pen_noise, shape_turning
+from physink_tui.scene.recognition import open_shapes, pen_noise, shape_corners, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
@@ -81,9 +81,11 @@ def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw:
             or pen_noise.turns_at_every_event(raw, diag))
 
 
-def polygon_left_open(work: np.ndarray, diag: float) -> bool:
+def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = None) -> bool:
     """Straight sides turning most of the way round, the last one heading for the start: a polygon the pen
-    left before closing it (or a many-sided one left open by a side, `many_sided_left_open`)."""
+    left before closing it (or a many-sided one left open by a side, `many_sided_left_open`, or such a one whose
+    corners the hand rounded, `shape_corners.rounded_many_sided_left_open`, asked of ``drawn``, the stroke's own
+    points, where given)."""
     length = sg.path_length(work)
     if length < 1.75 * diag:
         return False
@@ -102,7 +104,7 @@ def polygon_left_open(work: np.ndarray, diag: float) -> bool:
                 and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
                 and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners))):
             return True
-    return many_sided_left_open(work, length)
+    return many_sided_left_open(work, length) or shape_corners.rounded_many_sided_left_open(work, drawn)
 
 
 LEFT_OPEN_CLOSURE = 0.75

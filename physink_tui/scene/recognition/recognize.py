@@ -35,9 +35,11 @@ from physink_tui.scene.recognition import (
     pen_lifts,
     pen_noise,
     ranker,
+    roofs,
     round_brackets,
     rounded_boxes,
     rounded_corners,
+    shape_corners,
     square_braces,
     stairs,
     units,
@@ -308,13 +310,14 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     work = sg.resample(sg.remove_small_loops(work), n)  # loops at corners are flourishes, not coils
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
+    corners_told = False  # a polygon left open whose rounded corners its turning tells (`shape_corners`)
     if not closed:
         hooked, unhooked = work, sg.remove_hooks(work)
         if closed_loops.hook_kept_apart(hooked, unhooked, diag, sigma):
             closed, loop, ellipse = closed_loops.closed_loop(unhooked, sg.resample(unhooked, n), diag, sigma)
         work = sg.resample(unhooked, n)
-        if not closed and closed_loops.polygon_left_open(work, diag):
-            closed, loop = True, work
+        if not closed and closed_loops.polygon_left_open(work, diag, raw):
+            closed, loop, corners_told = True, work, shape_corners.rounded_many_sided_left_open(work, raw)
         elif not closed:  # a box left open by part of a side (that part may be short enough to be cut as a hook)
             ways = (work, hooked) if len(unhooked) != len(hooked) else (work,)
             left_open = next((w for w in ways if open_boxes.box_left_open(w, diag)), None)
@@ -336,10 +339,12 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
                    round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
-        ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times)
+        ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times,
+                                    corners_told)
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
+    ranked = roofs.pentagon_on_a_box(ranked, polygons, noise)
     ranked = rounded_boxes.box_rounded_all_round(ranked, loop)
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline

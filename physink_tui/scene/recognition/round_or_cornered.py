@@ -45,10 +45,11 @@ under 0.1 of the round error at most 0.62 (the design sources: hcira jonathanzha
 
 def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: float, raw: np.ndarray,
                        noise: float, diag: float, sigma: float, weights: Weights,
-                       times: np.ndarray | None = None) -> Recognition:
+                       times: np.ndarray | None = None, corners_told: bool = False) -> Recognition:
     """A loop read round whose polygon of four sides or more explains most of the round shape's error
     (`CORNERS_EXPLAIN`) and turns at its corners (`polygon_checks.sharp_corners`, or, where ``times`` show the pen
-    slowed at them, `slowed_corners`): a hexagon, an octagon or a rounded rectangle drawn, whose every vertex the
+    slowed at them, `slowed_corners`, or where ``corners_told``: the loop's turning, gathered at rounded corners,
+    already told them, `shape_corners`): a hexagon, an octagon or a rounded rectangle drawn, whose every vertex the
     complexity penalty charges as if it might be noise on a round shape. The best-scored such polygon (a box where
     squaring it stays within the stroke); ``ranked`` when there is none. ``polygons``: every closed polygonal fit
     (`candidates.polygonal`), ``raw``: the stroke's own points, ``times``: one a point of ``raw`` (seconds) or None."""
@@ -63,7 +64,7 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
                           key=lambda p: bic_score(p, n, sigma, weights)):
         # only the best fit of that many sides is judged, before building (which judges every corner: the costlier)
         best = pending.fits[0] if pending.fits else None
-        if best is None or best.rss > explained or not (sharp_corners(best, step)
+        if best is None or best.rss > explained or not (corners_told or sharp_corners(best, step)
                                                          or slowed_corners(best, step, raw, times)
                                                          or mostly_sharp(best, step, round_rss)):
             continue
