@@ -60,9 +60,12 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     """``raw`` without a hook's length (`HOOK_REACH`, `HOOK_SHARE`) of path at its start, and without one at its end
     (``noise`` in ``raw``'s units), each to be judged by the line test again; none where the stroke is too short, nor
     an end whose cut piece is a mark's arm (`_arm`). A short line's hook is a large share of it, more than
-    `stroke_geometry.remove_hooks` cuts (a tenth of the path). Not both ends at once: short pieces standing off both
-    ends are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px spine), and a hand hooks one end far more
-    often than both (mmg's lines: the start 2 %, the end 13 %)."""
+    `stroke_geometry.remove_hooks` cuts (a tenth of the path). Both ends at once only where both pieces are hooks
+    (`_hooked_both`: to opposite sides, or neither standing square off the rest as an arm does): short pieces
+    standing square off both ends to one side are a square bracket's arms (hcira Subject3's, 5-12 px on a 215 px
+    spine; the pen models' tiny brackets), and a hand hooks one end far more often than both (mmg's lines: the start
+    2 %, the end 13 %), but a short line hooked at both ends is read as a polyline otherwise (`benchmarks/
+    bench_lines.py`' short-hooked family: 14-18 of 60 by the careful pen, issue 25, session 26)."""
     steps = sg.step_lengths(raw)
     along = np.concatenate([[0.0], np.add.accumulate(steps)])
     length = float(along[-1])
@@ -74,8 +77,13 @@ def unhooked(raw: np.ndarray, noise: float) -> list[np.ndarray]:
     tail = np.vstack([raw[along > length - cut][::-1], at_tail])
     after_head = np.vstack([at_head, raw[along > cut]])
     before_tail = np.vstack([raw[along < length - cut], at_tail])
-    return [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
-            if len(rest) >= 2 and not _arm(piece, inward)]
+    pieces = [rest for piece, rest, inward in ((head, after_head, after_head), (tail, before_tail, before_tail[::-1]))
+              if len(rest) >= 2 and not _arm(piece, inward)]
+    if cut <= BOTH_HOOKS_SHARE * length and length - 2 * cut >= BOTH_HOOKS_MIDDLE * noise:
+        middle = np.vstack([at_head, raw[(along > cut) & (along < length - cut)], at_tail])
+        if len(middle) >= 2 and _hooked_both(head, tail, middle, noise) and end_curl(raw, noise) >= HOOK_CURL_DEG:
+            pieces.append(middle)
+    return pieces
 
 
 LINE_TEST_POINTS = (48, 160)
@@ -125,10 +133,95 @@ def ends_may_span(raw: np.ndarray, noise: float, diag: float) -> bool:
     """Whether a piece `unhooked` leaves of ``raw`` (``diag``: its `stroke_geometry.bbox_diagonal`; ``noise`` as
     `unhooked`'s) could have its ends half its own diagonal apart, which the line test asks first
     (`open_shapes._line`): cutting c of path from an end moves that end by c at most and shrinks the diagonal by c at
-    most (what is cut lies along c of path from the new end), and no cut is longer than `HOOK_REACH` noise widths, so
-    the ends must be at least half the diagonal less 1.5 c apart. Asked before `unhooked`, whose corner test costs more
-    (a closed shape's or a curl's ends are close); a hair's margin for rounding."""
-    return float(np.hypot(*(raw[-1] - raw[0]))) + 1.5 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
+    most (what is cut lies along c of path from the new end), and no cut is longer than `HOOK_REACH` noise widths; a
+    piece may be cut at both ends (`_hooked_both`), so the ends must be at least half the diagonal less 3 c apart.
+    Asked before `unhooked`, whose corner test costs more (a closed shape's or a curl's ends are close); a hair's
+    margin for rounding."""
+    return float(np.hypot(*(raw[-1] - raw[0]))) + 3.0 * HOOK_REACH * noise >= 0.5 * diag * (1 - 1e-6)
+
+
+BOTH_HOOKS_SHARE = 0.25
+"""Hooks are cut at both ends of a stroke (`unhooked`) only where each cut is at most this share of its path: the line
+left is at least half the stroke. A small parenthesis, 16-20 px tall, would lose 60 % of its path to the cuts and
+leave a straight bit of its bow (`tests/test_small_marks.py`' small-paren seed 24: 0.39 left); the short-hooked
+lines of `benchmarks/bench_lines.py` keep 0.63-0.81. Such a cut must also find an end curling as a hook does
+(`end_curl`, `HOOK_CURL_DEG`: a parenthesis bends off at its ends more gently, small-paren seed 5 by 29 and 25 degrees
+with 0.53 left)."""
+BRACE_BOW = 1.5
+"""... and only where the line left between them does not bow away from the side both hooks stand off to (either way,
+where they stand off to opposite sides) by this many of the pen's noise widths (`open_marks.HOOKED_STRAIGHT`'s floor):
+a small curly brace's ends curl to one side and its point stands off to the other (`benchmarks/bench_brace_habits.py`,
+20-40 px braces through whole pixels: 1.2-4.8 noise widths; tall thin braces by a mouse: 2-12), where the middle of a
+line hooked at both ends strays by the pen's noise alone (0-1.4 for the careful and hurried pens)."""
+BOTH_HOOKS_MIDDLE = 3 * HOOK_REACH
+"""... and where at least this many noise widths of path are left between the cuts: between two curls closer together,
+the mark is as likely a tiny curly brace, 20-40 px, whose flat point is lost in whole pixels (`benchmarks/
+bench_brace_habits.py`' flat-point braces through whole pixels: 15-28 left, 14 of 240 tuning readings lost without
+this floor), or a small parenthesis; the short-hooked lines of `benchmarks/bench_lines.py` leave 27-75."""
+HOOK_BACK_DEG = 110.0
+"""Where the pen lands or lifts with a hook at both ends of a short line, each hook may be straight enough for a mark's
+arm (`_arm`) but comes in from behind the line's end: the cut piece leaves the rest at this angle or more (the pen
+models' hooks turned back 100-160 degrees: 90-133 where `_arm` takes them for arms, 12 of 16 at 110 or more), where a
+bracket's arm stands square to its spine (the pen models' tiny, small and short-arm brackets: 57-100 degrees, 10 of
+319 arms over 105; `benchmarks/bench_lines.py`'s short-hooked family, issue 25, session 26)."""
+HOOKS_SPLAY_DEG = 50.0
+"""Where both hooks stand off to one side, their chords (each from where it is cut out to the stroke's end) must also
+splay apart by this angle or more (`_splay`): a hook where the pen lands and one where it lifts each come in from
+behind the line's end, so they open away from each other like a C's (the pen models' same-side hooks on tuning seeds:
+60-118 degrees where the cut gave a line back), where a square bracket's arms run about parallel off its spine, a
+cut piece of spine tilting them a little (`tests/test_bracket_habits.py`' short-armed bracket through the mouse)."""
+MIDDLE_SPREAD = 2.0
+"""... and the line left between two hooks to one side must lie within this many noise widths across its chord, both
+sides together: a line's middle strays by the pen's noise alone (the tuning gains 0.0-1.7), where a tiny square-cornered
+brace drawn through whole pixels keeps its lost point as a bow both ways (2.2, `benchmarks/bench_brace_habits.py`,
+`tests/test_square_braces.py`)."""
+
+
+
+def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: float) -> bool:
+    """Whether ``head`` and ``tail`` (each from an end of the stroke inwards) are both hooks where the pen landed and
+    lifted, not a bracket's arms nor a brace's curls: each stands off ``middle``'s chord farther than the pen's own
+    wobble reaches (`wobble_reach`, ``noise`` in their units: an end running on straight is no hook, and cutting it
+    would move the line's end), the middle does not bow away from them (`BRACE_BOW`), and they stand off to opposite
+    sides (a bracket's arms stand off to the same side), or splay apart (`HOOKS_SPLAY_DEG`) about a middle straight
+    within the pen's noise (`MIDDLE_SPREAD`), neither a mark's short arm (`_arm`) unless turned back past square
+    (`HOOK_BACK_DEG`)."""
+    chord = middle[-1] - middle[0]
+    norm = float(np.hypot(*chord))
+    if norm == 0.0:
+        return False
+    unit = chord / norm
+
+    def left_of_chord(pts: np.ndarray) -> np.ndarray:
+        off: np.ndarray = (pts[:, 1] - middle[0][1]) * unit[0] - (pts[:, 0] - middle[0][0]) * unit[1]
+        return off
+
+    offs = [left_of_chord(piece) for piece in (head, tail)]
+    far = [float(off[int(np.argmax(np.abs(off)))]) for off in offs]
+    if any(abs(f) <= wobble_reach(len(piece)) * noise for f, piece in zip(far, (head, tail), strict=True)):
+        return False
+    bow = left_of_chord(middle)
+    away = np.abs(bow) if far[0] * far[1] < 0 else -np.sign(far[0]) * bow  # off the line, away from the hooks
+    if float(away.max()) >= BRACE_BOW * noise:
+        return False
+    if far[0] * far[1] < 0:
+        return True
+    if _splay(head, tail) < HOOKS_SPLAY_DEG:
+        return False
+    if float(np.ptp(bow)) >= MIDDLE_SPREAD * noise:
+        return False
+    return all(angle is None or not _arm_angle(angle) or angle >= HOOK_BACK_DEG
+               for angle in (_stand_off(head, middle), _stand_off(tail, middle[::-1])))
+
+
+def _splay(head: np.ndarray, tail: np.ndarray) -> float:
+    """The angle (degrees) between ``head``'s and ``tail``'s chords, each from where it was cut out to the stroke's
+    end: 0 where they run parallel."""
+    u, v = head[0] - head[-1], tail[0] - tail[-1]
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return 0.0
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
 
 
 def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
@@ -141,16 +234,27 @@ def _arm(piece: np.ndarray, rest: np.ndarray) -> bool:
     straight (`stroke_geometry.ARM_STRAIGHT`) and standing off the rest's chord at `stroke_geometry.ARM_ANGLE_DEG`
     (a tiny check's first arm, 10 px on a 20 px mark, itt lvht1203's check04, or a square bracket's); a hook curls
     back or runs on nearly in line."""
+    angle = _stand_off(piece, rest)
+    return angle is not None and _arm_angle(angle)
+
+
+def _arm_angle(angle: float) -> bool:
+    """Whether a straight end piece standing off the rest at ``angle`` (degrees) does so as a mark's arm does."""
+    return sg.ARM_ANGLE_DEG[0] <= angle <= sg.ARM_ANGLE_DEG[1]
+
+
+def _stand_off(piece: np.ndarray, rest: np.ndarray) -> float | None:
+    """The angle (degrees) between ``piece``'s chord, from where ``rest`` runs on to the stroke's end, and the way
+    ``rest`` runs on; None where ``piece`` is not straight (`stroke_geometry.ARM_STRAIGHT`) or either has no length."""
     if len(piece) < 2:
-        return False
+        return None
     if len(piece) > 2 and sg.chord_deviation(piece) >= sg.ARM_STRAIGHT:
-        return False
+        return None
     u, v = piece[0] - piece[-1], rest[-1] - rest[0]
     norms = float(np.hypot(*u) * np.hypot(*v))
     if norms == 0.0:
-        return False
-    angle = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
-    return sg.ARM_ANGLE_DEG[0] <= angle <= sg.ARM_ANGLE_DEG[1]
+        return None
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
 
 
 INK_STEP = 3.0

@@ -109,7 +109,7 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
     n = lines.line_test_points(sg.path_length(raw), noise)
     coarse = sg.smooth(sg.resample(raw, n))
-    if bow:  # else a hook is cut from one end already (`lines.unhooked`): the rest is judged as drawn
+    if bow:  # else hooks are cut from one end or both already (`lines.unhooked`): the rest is judged as drawn
         coarse = sg.resample(sg.remove_hooks(coarse), n)
     _, direction, off = fit_line(coarse)
     along = float(np.ptp(coarse @ direction)) or 1e-12  # the extent `fit_line`'s stray is a share of
