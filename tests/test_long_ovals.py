@@ -1,8 +1,10 @@
 """Issue 25, session 26: a long ellipse's miss (2.62 times as long as wide or more, `candidates.ACROSS_RATIO`) is
 measured square across it (`candidates.ellipse_distances`), so a person's long, lopsided oval is an ellipse rather than
 the triangle or box through its ends, while a rounder one's is measured along the ray from its centre as before (an
-irregular hexagon or a bowed box near round keeps its corners); and a loop whose cut-off end runs off its ellipse (a
-pigtail's tail, `closed_loops.tail_runs_off`) is offered no round shape.
+irregular hexagon or a bowed box near round keeps its corners). The branch's second rule, no round shape for a loop
+whose cut-off end runs off its ellipse by more than its half width (a pigtail's tail), was withdrawn by the lead: an
+oval closed with a flick of up to its own half-length off the loop (a hand lifting fast) lost its round reading to it
+(`test_an_oval_closed_with_a_flick_off_the_loop_reads_round`).
 
 People's strokes are read from the public-set caches (`benchmarks/public_sets.py`; no licence: never committed) and
 skip without them."""
@@ -16,9 +18,7 @@ import pytest
 from test_open_marks import _stroke, cached_rows
 
 from physink_tui.scene.recognition.candidates import ACROSS_RATIO, ellipse_distances, ray_distances, round_shape
-from physink_tui.scene.recognition.closed_loops import TAIL_RUNS_OFF, tail_runs_off
 from physink_tui.scene.recognition.recognize import recognize_stroke
-from physink_tui.scene.recognition.shape_fits import fit_ellipse
 
 ROUND = ("circle", "ellipse")
 
@@ -59,34 +59,36 @@ def test_only_a_long_ellipse_has_its_miss_measured_across_it(long: float, across
     assert float(np.sum(ray_distances(pts, np.zeros(2), long, 1.0, 0.0) ** 2)) > want or not across
 
 
-def _loop_with_tail(tail: float, hugging: bool) -> list[tuple[float, float]]:
-    """A circle of radius 100 drawn once round from the top, then on: round the rim again for ``tail`` of the radius
-    (``hugging``: a hand closing a circle carries on round it) or straight off, 23 degrees out from the tangent (a
-    pigtail's tail)."""
-    pts = [(100 * math.sin(a), 100 * math.cos(a)) for a in np.linspace(0.0, 2 * math.pi, 90)]
-    if hugging:
-        pts += [(100 * math.sin(a), 100 * math.cos(a)) for a in np.linspace(0.0, tail, 20)[1:]]
-    else:
-        pts += [(t * 100 * math.cos(0.4), 100 + t * 100 * math.sin(0.4)) for t in np.linspace(0.0, tail, 30)[1:]]
-    return pts
+def _oval_closed_with_a_flick(rng: np.random.Generator) -> list[list[float]]:
+    """An oval 16-80 px long, up to 2.2 times as long as wide, drawn 1.02-1.25 times round from anywhere on it either
+    way, then a flick straight off the loop (bent outwards) of up to 1.2 of its half-length; the hand's jitter 0.4
+    px."""
+    rx = rng.uniform(8, 40)
+    ry = rx / rng.uniform(1.0, 2.2)
+    turns, tilt = rng.uniform(1.02, 1.25), rng.uniform(-0.6, 0.6)
+    flick = rng.uniform(0.0, 1.2) * rx
+    start, way = rng.uniform(0, 2 * math.pi), rng.choice([-1, 1])
+    at = start + way * np.linspace(0, 2 * math.pi * turns, int(60 + rx * 2))
+    pts = np.stack([rx * np.cos(at), ry * np.sin(at)], 1)
+    heading = (pts[-1] - pts[-2]) / np.linalg.norm(pts[-1] - pts[-2])
+    off = heading + 0.8 * pts[-1] / np.linalg.norm(pts[-1])
+    off /= np.linalg.norm(off)
+    steps = max(2, int(flick / 1.5))
+    if flick > 1:
+        pts = np.vstack([pts, pts[-1] + np.outer(np.arange(1, steps + 1) * flick / steps, off)])
+    c, s = math.cos(tilt), math.sin(tilt)
+    pts = pts @ np.array([[c, -s], [s, c]]).T + rng.normal(0, 0.4, pts.shape) + 200
+    return pts.tolist()
 
 
-def test_a_loop_whose_tail_runs_off_is_offered_no_round_shape() -> None:
-    """A circle closed at its start whose pen then runs off for 1.5 radii (a pigtail drawn from its crossing): its tail
-    ends far outside the loop's ellipse; a circle whose overshoot carries on round the rim does not."""
-    for hugging, runs_off in ((False, True), (True, False)):
-        work = np.asarray(_loop_with_tail(1.5, hugging))
-        loop = work[:90]
-        ellipse = fit_ellipse(loop)
-        assert ellipse is not None and ellipse[2] == pytest.approx(100.0, rel=0.01)
-        assert tail_runs_off(work, loop, ellipse) is runs_off
-    assert not tail_runs_off(work, work, fit_ellipse(work)), "nothing cut: nothing ran off"
-    assert TAIL_RUNS_OFF == 1.0
-
-
-def test_a_circle_drawn_on_round_its_rim_reads_round_and_one_with_a_tail_running_off_does_not() -> None:
-    assert recognize_stroke(_loop_with_tail(0.6, hugging=True)).kind in ROUND
-    assert recognize_stroke(_loop_with_tail(2.0, hugging=False)).kind not in ROUND
+def test_an_oval_closed_with_a_flick_off_the_loop_reads_round() -> None:
+    """Ovals closed with a flick off the loop (`_oval_closed_with_a_flick`, 120 of them) read as circles or ellipses,
+    every one, as on main 7111cdc. The withdrawn pigtail rule took 114 of 400 such ovals (the flick straying 1.05-2.4
+    of the oval's half width off it, 0.55-1.04 of its half-length) to polygons and curves; the same session's fifth
+    held-back group lost 18 round shapes (homus Whole-Note -8, sign circle_left -9, lowvision circle -1)."""
+    rng = np.random.default_rng(26)
+    kinds = [recognize_stroke(_oval_closed_with_a_flick(rng)).kind for _ in range(120)]
+    assert [k for k in kinds if k not in ROUND] == []
 
 
 CAPTURED = "ArtemLevin/tutorboard@3b27669:tests/fixtures/smart-ink-corpus/captured-chromium-v1/corpus.json.gz#"
@@ -112,10 +114,16 @@ def test_a_persons_flat_oval_pointed_at_one_end_reads_as_an_ellipse() -> None:
     assert recognize_stroke(*_stroke(rows[CAPTURED + "72"])).kind == "ellipse"
 
 
-@pytest.mark.parametrize("name", ["xml/s02/pigtail04.xml", "xml/s07/pigtail03.xml"])
+S07_TAIL = pytest.mark.xfail(strict=True, reason="its loop begins at its crossing and a third of the path is a tail "
+                             "running off 1.75-2.1 of the loop's half-length: without the withdrawn pigtail rule its "
+                             "loop reads as an ellipse (as on main 7111cdc)")
+
+
+@pytest.mark.parametrize("name", ["xml/s02/pigtail04.xml", pytest.param("xml/s07/pigtail03.xml", marks=S07_TAIL)])
 def test_a_persons_pigtail_drawn_from_its_crossing_is_no_ellipse(name: str) -> None:
     """hcira klarubbio's pigtails whose loop begins at its crossing, a third of the path a tail running off (main
-    7111cdc: s02 a curve, s07 an ellipse; with the ellipse's miss measured across it both would be ellipses)."""
+    7111cdc: s02 a curve, s07 an ellipse; with the ellipse's miss measured across it everywhere both would be
+    ellipses: only a long ellipse's is)."""
     rows = cached_rows("public-sets/hcira.jsonl")
     file = next((f for f in rows if f.endswith("klarubbio/hcira_p1@e8eb332:" + name)
                  or f.endswith("@e8eb332:" + name)), None)

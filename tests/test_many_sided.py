@@ -1,10 +1,10 @@
-"""Issue 25, sessions 23 and 26: many-sided outlines drawn in a hurry keep their corners. An irregular octagon one or two of
-whose shallow corners were swept round is read as the polygon drawn where its polygon explains nine tenths of the
+"""Issue 25, sessions 23 and 26: many-sided outlines drawn in a hurry keep their corners. An irregular octagon one or
+two of whose shallow corners were swept round is read as the polygon drawn where its polygon explains nine tenths of the
 round shape's error and two thirds of its corners are sharp (`round_or_cornered.mostly_sharp`), by the pen models
 (`tests/penmodels/many_sided`, `benchmarks/bench_many_sided.py`) and on the Quick, Draw! players' octagons; people's
 circles whose wobbly polygon explains as much stay round. A hexagon or octagon left open by one side, its corners
-rounded, is a polygon where its turning is gathered at short bends between straight runs (`shape_corners`); circles
-left open, lumpy or drawn as a few chords, stay round.
+rounded, is a polygon where its turning is gathered at short bends between straight runs (`shape_corners`); circles left
+open, lumpy or drawn as a few chords, stay round.
 
 Floors were measured on the held seeds (1000-1029), read once, at the end; each is this branch's figure. People's
 strokes are read from ../shared/data and the caches `benchmarks/public_sets.py` and `benchmarks/student_sets.py`

@@ -83,12 +83,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    circles at most 0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that turns
    back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse misses it by
    more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a circle back too),
-   is offered no circle or ellipse
-   (`closed_loops.no_round_shape`), nor is one whose ends, cut off to leave its loop, run off the loop's ellipse by
-   more than its half width (`closed_loops.tail_runs_off`: a pigtail's tail, not an overshoot, which hugs the loop);
-   a long ellipse's miss (2.62 times as long as wide or more, `candidates.ACROSS_RATIO`) is measured square across
-   it, as a polygon's sides' are (`candidates.ellipse_distances`: along the ray from its centre, a long oval's miss at
-   its shoulders doubles, and its triangle through its ends won), a rounder one's along that ray as before; a
+   is offered no circle or ellipse (`closed_loops.no_round_shape`); a long ellipse's miss (2.62 times as long as
+   wide or more, `candidates.ACROSS_RATIO`) is measured square across it, as a polygon's sides' are
+   (`candidates.ellipse_distances`: along the ray from its centre, a long oval's miss at its shoulders doubles, and
+   its triangle through its ends won), a rounder one's along that ray as before; a
    stroke whose tails cross each other near its ends is closed however far apart its ends lifted
    (`closed_loops.ends_cross`: a triangle closed past its first corner), and one whose ends a hook where the pen
    landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px circle's hook of

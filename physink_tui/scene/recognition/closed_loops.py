@@ -11,7 +11,6 @@ import numpy as np
 from physink_tui.scene.recognition import open_shapes, pen_noise, shape_corners, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.candidates import ellipse_distances
 from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
 from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, SHARP_SHARE, crossings
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
@@ -344,30 +343,3 @@ def ends_cross(work: np.ndarray, diag: float) -> bool:
         t = (qp[..., 0] * s[..., 1] - qp[..., 1] * s[..., 0]) / den
         u = (qp[..., 0] * r[..., 1] - qp[..., 1] * r[..., 0]) / den
     return bool(np.any((den != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)))
-
-
-
-TAIL_RUNS_OFF = 1.0
-"""A closed stroke's ends cut off to leave its loop (an overshoot past its start, a lead before it:
-`loop_ends.cut_ends`) that run off that loop's ellipse by more than this many times its half width have left the loop:
-a pigtail's tail, not a round shape's overshoot. A hand that closes a circle or an oval and lifts carries on round it,
-so an overshoot hugs the shape: of the design sources' loops read round whose ends were cut and labelled round, the
-farthest cut-off point lies 0.46 of the half width off the ellipse (hcira jonathanzhang53/s01's circle), of the fourth
-group's 0.41 (and a 20-point Quick, Draw! line read as an ellipse, 1.29); the two pigtails whose tail (a third of the
-path) was cut as an overshoot, 3.1 and 3.8 (hcira klarubbio/s02, s07). Measured square across the ellipse
-(`candidates.ellipse_distances`), session 26."""
-
-
-def tail_runs_off(work: np.ndarray, loop: np.ndarray, ellipse: EllipseFit | None) -> bool:
-    """Whether the ends cut off ``work`` (the stroke) to leave ``loop`` (a run of its points) lie farther from the
-    ellipse fitted to the loop than `TAIL_RUNS_OFF` of its half width: the pen ran off the loop (a pigtail's tail).
-    False where nothing was cut or ``loop`` is not a run of ``work``'s points."""
-    if ellipse is None or len(loop) >= len(work) or not len(loop):
-        return False
-    starts = np.flatnonzero((work == loop[0]).all(axis=1))
-    start = next((int(i) for i in starts if np.array_equal(work[i:i + len(loop)], loop)), None)
-    if start is None:
-        return False
-    cut = np.concatenate([work[:start], work[start + len(loop):]])
-    centre, rx, ry, angle, _ = ellipse
-    return bool(len(cut)) and float(ellipse_distances(cut, centre, rx, ry, angle).max()) > TAIL_RUNS_OFF * ry
