@@ -166,6 +166,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
 - `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above
 - `closed_loops.py`: closure (a gap or an overshoot at the ends, a polygon left open, a lumpy circle's lumps)
+- `shape_corners.py`: corners at the shape's scale (turning gathered at short bends between straight runs): a
+  many-sided outline left open by one side, its corners rounded by a hurried hand
 - `ranking.py`: the candidates scored (fit error against complexity, `Weights`, `DEFAULT_WEIGHTS`) and ranked: the
   best whose shape stays within the stroke's bounds and follows its outline, with the alternatives; where none
   fits, the stroke kept as drawn (`or_freeform`)
@@ -182,6 +184,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   it means, keeps its pace round a circle)
 - `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box
 - `bowed_sides.py`: a box with one side bowed out or in (read as a polygon), read as the box of the loop's area
+- `roofs.py`: a box read where one sharp corner stands off a side (a house roof) or is pushed in (a swallowtail
+  notch), read as the pentagon drawn
 - `rounded_boxes.py`: a box with all four corners rounded (read round), read as the box by how far its corners reach
 - `loop_ends.py`: where a closed stroke's loop begins and ends (hooks, lead-ins, overshoots cut off; a lead drawn
   out and back and drawn again by the shape)
@@ -207,8 +211,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   sharp point between arms and its ends curling back behind them
 - `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the
   tenth the rules cut as one), read as a tick (a polyline)
-- `stroke_geometry.py`: resampling, smoothing, turning angles (also at the noise's scale), rotation-invariant size,
-  ShortStraw/IStraw corners, hooks, small loops at corners
+- `stroke_geometry.py`: resampling, smoothing, turning angles, rotation-invariant size, ShortStraw/IStraw corners,
+  hooks, small loops at corners
+- `shape_turning.py`: turning at the shape's scale, on steps a few noise widths long (`coarse_turning`,
+  `turning_beyond_tremor`)
 - `stroke_views.py`: one stroke's resampled, smoothed and hook-cut copies that the checks after the rules (waves,
   stairs, ticks, brackets, braces) share, each made once a recognition (read-only, never shared between strokes)
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points (their step
