@@ -3,6 +3,7 @@ closing it, a lumpy circle whose lumps are not sides; the fitting and ranking ar
 
 from __future__ import annotations
 
+import enum
 import itertools
 import math
 
@@ -81,21 +82,29 @@ def lumpy_round(loop: np.ndarray, noise: float, ellipse: EllipseFit | None, raw:
             or pen_noise.turns_at_every_event(raw, diag))
 
 
-def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = None) -> bool:
+class LeftOpen(enum.Enum):
+    """Which test found a polygon the pen left open (`polygon_left_open`)."""
+
+    SIDES = "straight sides turning most of the way round, the last heading home"
+    MANY_SIDES = "many sharp corners, one side missing"  # `many_sided_left_open`
+    ROUNDED_CORNERS = "many corners the hand rounded, one side missing"  # `shape_corners`
+
+
+def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = None) -> LeftOpen | None:
     """Straight sides turning most of the way round, the last one heading for the start: a polygon the pen
     left before closing it (or a many-sided one left open by a side, `many_sided_left_open`, or such a one whose
     corners the hand rounded, `shape_corners.rounded_many_sided_left_open`, asked of ``drawn``, the stroke's own
-    points, where given)."""
+    points, where given). Says which of the three closed it, or None: none did."""
     length = sg.path_length(work)
     if length < 1.75 * diag:
-        return False
+        return None
     closure = sf.closure(work, diag)
     if closure >= LEFT_OPEN_CLOSURE:
-        return False
+        return None
     th = sg.turning(work)
     turned = abs(float(th.sum()))
     if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
-        return False
+        return None
     if closure < 0.42:
         corners = sf.drop_end_stubs(work, sg.find_corners(work, th=th), length)
         runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
@@ -103,8 +112,12 @@ def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = 
                 and len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
                 and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
                 and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners))):
-            return True
-    return many_sided_left_open(work, length) or shape_corners.rounded_many_sided_left_open(work, drawn)
+            return LeftOpen.SIDES
+    if many_sided_left_open(work, length):
+        return LeftOpen.MANY_SIDES
+    if shape_corners.rounded_many_sided_left_open(work, drawn):
+        return LeftOpen.ROUNDED_CORNERS
+    return None
 
 
 LEFT_OPEN_CLOSURE = 0.75

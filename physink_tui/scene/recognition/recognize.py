@@ -39,7 +39,6 @@ from physink_tui.scene.recognition import (
     round_brackets,
     rounded_boxes,
     rounded_corners,
-    shape_corners,
     square_braces,
     stairs,
     units,
@@ -316,8 +315,9 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         if closed_loops.hook_kept_apart(hooked, unhooked, diag, sigma):
             closed, loop, ellipse = closed_loops.closed_loop(unhooked, sg.resample(unhooked, n), diag, sigma)
         work = sg.resample(unhooked, n)
-        if not closed and closed_loops.polygon_left_open(work, diag, raw):
-            closed, loop, corners_told = True, work, shape_corners.rounded_many_sided_left_open(work, raw)
+        how_left_open = closed_loops.polygon_left_open(work, diag, raw) if not closed else None
+        if how_left_open is not None:
+            closed, loop, corners_told = True, work, how_left_open is closed_loops.LeftOpen.ROUNDED_CORNERS
         elif not closed:  # a box left open by part of a side (that part may be short enough to be cut as a hook)
             ways = (work, hooked) if len(unhooked) != len(hooked) else (work,)
             left_open = next((w for w in ways if open_boxes.box_left_open(w, diag)), None)
