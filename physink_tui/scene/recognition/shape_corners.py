@@ -80,15 +80,33 @@ GAP_SIDES = 1.5
 """...and its gap is no longer than this many times its longest side drawn (`closed_loops.LEFT_OPEN_GAP`)."""
 
 
+SIDE_CLEAR = 0.2
+"""A side is drawn through the device's events where one of them lies at least this share of the side from both its
+corners (`drawn_through`): the hand rounds a corner over up to a fifth of each side meeting there (`BEND_STEPS`), so an
+event nearer a corner may be the corner's own. A round stroke sampled in bursts (a busy event loop's 2-5 events a few
+ms apart, then a gap) or with repeated events turns at each burst, and its chords hold no event clear of their ends
+(issue 25, session 27: `benchmarks/bench_circle_gestures.py`' open circles through a mouse, 0.04-0.21 at the side
+least drawn through, were polygons), where a polygon's side drawn through the same mouse holds one 0.25 or more of it
+from both ends (`benchmarks/bench_many_sided.py`, tuning seeds), and Quick, Draw! hexagons and octagons 0.41-0.5."""
+
+
 def drawn_through(corners: np.ndarray, drawn: np.ndarray) -> bool:
     """Whether the stroke's own points (``drawn``) hold one or more between each two neighbouring ``corners`` (each
-    taken at the drawn point nearest it): a polygon's side is drawn straight through the device's events between its
-    corners, while a round shape sampled by a few events (8-12 over a circle, evenly in time) turns at every one of
-    them, its chords from event to event the device's, not sides (`pen_noise.turns_at_every_event`, for closed
-    loops)."""
+    taken at the drawn point nearest it) standing clear of both (`SIDE_CLEAR`): a polygon's side is drawn straight
+    through the device's events between its corners, while a round stroke sampled by a few events (8-12 over a circle,
+    evenly in time, or in bursts, or repeated) turns at every one of them, its chords from event to event the device's,
+    not sides (`pen_noise.turns_at_every_event`, for closed loops)."""
     d = np.hypot(drawn[None, :, 0] - corners[:, None, 0], drawn[None, :, 1] - corners[:, None, 1])
     at = np.argmin(d, axis=1)
-    return bool((np.abs(np.diff(at)) >= 2).all())
+    for k in range(len(corners) - 1):
+        lo, hi = sorted((int(at[k]), int(at[k + 1])))
+        side = float(np.hypot(*(corners[k + 1] - corners[k])))
+        if hi - lo < 2 or side == 0.0:
+            return False
+        clear = np.minimum(d[k, lo + 1:hi], d[k + 1, lo + 1:hi])
+        if float(clear.max()) < SIDE_CLEAR * side:
+            return False
+    return True
 
 
 def rounded_many_sided_left_open(work: np.ndarray, drawn: np.ndarray | None = None) -> bool:
