@@ -85,13 +85,13 @@ def why(stroke: Drawn, timed: bool) -> tuple[str | None, str]:
     def spy(*args: object, **kwargs: object) -> closed_loops.LeftOpen | None:
         found = asked(*args, **kwargs)  # type: ignore[arg-type]
         if found:
-            told.append(getattr(found, "name", "LEFT_OPEN"))
+            told.append(getattr(found, "name", "LEFT_OPEN"))  # a bool before session 27: "LEFT_OPEN"
         return found
-    closed_loops.polygon_left_open = spy  # type: ignore[assignment]
+    closed_loops.polygon_left_open = spy
     try:
         kind = reading(stroke, timed)
     finally:
-        closed_loops.polygon_left_open = asked  # type: ignore[assignment]
+        closed_loops.polygon_left_open = asked
     return kind, ",".join(told)
 
 
