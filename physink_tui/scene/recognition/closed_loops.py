@@ -120,6 +120,14 @@ def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = 
     return None
 
 
+
+def corners_told(how: LeftOpen, work: np.ndarray, drawn: np.ndarray) -> bool:
+    """Whether a polygon left open (closed by ``how``) has its rounded corners told by its turning
+    (`shape_corners.rounded_many_sided_left_open`, asked of ``drawn``): known where that test closed it, asked where an
+    earlier one did (its straight sides or sharp corners found first; as until main 9f69154, which read 4 of 60 held
+    hexagons to octagons left open through a mouse as circles, `tests/test_many_sided.py`)."""
+    return how is LeftOpen.ROUNDED_CORNERS or shape_corners.rounded_many_sided_left_open(work, drawn)
+
 LEFT_OPEN_CLOSURE = 0.75
 """A polygon left open has a gap under this share of its diagonal (`stroke_features.closure`); under 0.42 it may have
 any number of sides, from 0.42 on only many sides (`many_sided_left_open`: one side of an irregular hexagon drawn

@@ -317,7 +317,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         work = sg.resample(unhooked, n)
         how_left_open = closed_loops.polygon_left_open(work, diag, raw) if not closed else None
         if how_left_open is not None:
-            closed, loop, corners_told = True, work, how_left_open is closed_loops.LeftOpen.ROUNDED_CORNERS
+            closed, loop, corners_told = True, work, closed_loops.corners_told(how_left_open, work, raw)
         elif not closed:  # a box left open by part of a side (that part may be short enough to be cut as a hook)
             ways = (work, hooked) if len(unhooked) != len(hooked) else (work,)
             left_open = next((w for w in ways if open_boxes.box_left_open(w, diag)), None)
