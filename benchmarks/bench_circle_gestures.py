@@ -2,7 +2,7 @@
 the pen models through a tablet and through a device sending few events, read as circles or ellipses; each stroke is
 read as drawn and mirrored top to bottom (the same stroke the other way round), and the two ways are counted apart.
 
-Usage: .venv/bin/python benchmarks/bench_circle_gestures.py [--seeds tune|held|all] [--family NAME] [--why]
+Usage: .venv/bin/python benchmarks/bench_circle_gestures.py [--seeds tune|held|all] [--family NAME] [--pen NAME] [--why]
 
 Issue 25, session 27: after session 26 the lead's held scoring lost 9 counter-clockwise circles of one held set (its
 clockwise ones none) and 8 whole notes (small ovals) of a music set. The pens: the careful virtual pen, the hurried
