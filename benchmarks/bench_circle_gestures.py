@@ -8,7 +8,9 @@ Issue 25, session 27: after session 26 the lead's held scoring lost 9 counter-cl
 clockwise ones none) and 8 whole notes (small ovals) of a music set. The pens: the careful virtual pen, the hurried
 hand, the hurried hand through a tablet sending an event every 15-30 ms (`bench_device_stress.coarse`), and both pens
 through a device sending 8-40 events evenly in time over the whole stroke (a mouse or a touch screen drawn fast: a
-round stroke of chords); each read with its times and without. ``--why`` names, for every stroke not read round, the
+round stroke of chords) and through whole pixels at the drawing's own size (`bench_circle_habits.whole_pixels`), and
+the hurried hand through `bench_open_marks`' mouse (stair steps, bursts of events, repeated points); each read with
+its times and without. ``--why`` names, for every stroke not read round, the
 test of `closed_loops.polygon_left_open` that closed it as a polygon left open (if one did). Seeds 0-29
 (`TUNING_SEEDS`) were looked at while designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
 """
