@@ -23,6 +23,11 @@ def drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fraction
     return corners
 
 
+NO_TURN_DEG = 1e-6
+"""A step of a stroke's coarse turning under this (degrees) is straight on: the float rounding of a straight run's
+headings (a mouse's or a lattice's points along one row: exactly 0 drawn one way, about 1e-15 mirrored)."""
+
+
 def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[float]:
     """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke (coarser
     when the pen's ``noise`` is large), ignoring runs under ``min_deg``: a brace has five such lobes, a check
@@ -31,10 +36,13 @@ def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[f
 
 
 def turn_lobes(coarse: np.ndarray, min_deg: float = 35.0) -> list[float]:
-    """`lobes` of a stroke whose coarse turning (`shape_turning.coarse_turning`, radians) is already known."""
+    """`lobes` of a stroke whose coarse turning (`shape_turning.coarse_turning`, radians) is already known. A step
+    turning by no more than `NO_TURN_DEG` either way joins the run it is in, whichever way that turns: it neither ends a
+    run turning one way nor starts one (a zero once counted as turning left: it broke a run turning right into pieces
+    each under ``min_deg``, so a stroke and its mirror image had different lobes)."""
     runs: list[float] = []
     for v in np.degrees(coarse).tolist():
-        if runs and (v >= 0) == (runs[-1] >= 0):
+        if runs and (abs(v) <= NO_TURN_DEG or abs(runs[-1]) <= NO_TURN_DEG or (v > 0) == (runs[-1] > 0)):
             runs[-1] += v
         else:
             runs.append(v)
@@ -184,8 +192,8 @@ def roundness_along(walked: tuple[list[float], list[float]], corners: list[int],
     n = len(cum_len)
     out = []
     for a, c, b in zip(corners, corners[1:], corners[2:], strict=False):
-        lo, hi = (a + c) // 2, (c + b) // 2
-        total = abs(cum_turn[max(hi - 1, 0)] - cum_turn[max(lo - 1, 0)])
+        lo, hi = -(-(a + c) // 2), (c + b) // 2  # the points from one side's midpoint to the other's, both held
+        total = abs(cum_turn[max(min(hi, n - 2), 0)] - cum_turn[max(lo - 1, 0)])
         shorter = min(cum_len[c] - cum_len[a], cum_len[b] - cum_len[c])
         if total == 0.0 or shorter <= 0.0:
             out.append(0.0)
