@@ -7,6 +7,7 @@ public-set caches (design sources only); without them that test skips."""
 
 from __future__ import annotations
 
+import itertools
 import sys
 from pathlib import Path
 
@@ -89,7 +90,7 @@ def test_a_zigzags_teeth_count_the_same_from_either_end() -> None:
     th = sg.turning(path)
     corners = sg.find_corners(path, every_dip=True, th=th)
     assert len(corners) == len(UNEVEN_ZIGZAG)
-    runs = [path[a:b + 1] for a, b in zip(corners, corners[1:], strict=False)]
+    runs = [path[a:b + 1] for a, b in itertools.pairwise(corners)]
     straight = [True] * len(runs)
     rev = path[::-1].copy()
     rev_corners = [len(path) - 1 - c for c in reversed(corners)]
