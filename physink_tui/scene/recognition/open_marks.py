@@ -91,25 +91,16 @@ def sawtooth(work: np.ndarray, th: np.ndarray, corners: list[int], straight_runs
 
 def teeth_run(work: np.ndarray, th: np.ndarray, corners: list[int], straight_runs: list[bool],
               roundness: list[float]) -> int:
-    """The longest run of a zig-zag's teeth points (`sawtooth`). Where a side is unlike the one two before it, a run
-    starts again from the tooth two back (its first two sides are compared with none): the longest run, the same
-    whichever end the stroke was drawn from (restarting at the tooth itself counted a run one tooth shorter drawn
-    one way than the other: hcira klarubbio/s06's left brace 03, three teeth as drawn and four reversed)."""
+    """The longest run of a zig-zag's teeth points (`sawtooth`)."""
     turns = signed_turns(th, corners)
     sides = [sg.path_length(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
     run = best = 0
     for i, t in enumerate(turns):
         tooth = abs(t) >= SAW_TURN_DEG and roundness[i] <= SAW_ROUND
         # side i runs from inner corner i - 1 to inner corner i; side i - 1 is the tooth side before it
-        follows = run > 0 and (t > 0) != (turns[i - 1] > 0) and straight_runs[i]
-        if not tooth:
-            run = 0
-        elif not follows:
-            run = 1
-        elif run < 3 or _like(sides[i], sides[i - 2]):
-            run += 1
-        else:
-            run = 3  # the teeth two back, the one before and this one: their sides are compared with none before
+        follows = (run > 0 and (t > 0) != (turns[i - 1] > 0) and straight_runs[i]
+                   and (run < 3 or _like(sides[i], sides[i - 2])))
+        run = run + 1 if tooth and follows else (1 if tooth else 0)
         best = max(best, run)
     return best
 
@@ -127,13 +118,10 @@ def sawtooth_vertices(points: Sequence[tuple[float, float]]) -> bool:
     turns = np.degrees(np.arctan2(v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0], (v[:-1] * v[1:]).sum(axis=1)))
     run = 0
     for i, t in enumerate(turns.tolist()):
-        follows = run > 0 and (t > 0) != (turns[i - 1] > 0)
-        if abs(t) < SAW_TURN_DEG:
-            run = 0
-        elif not follows:
-            run = 1
-        else:  # a side unlike the one two before starts the run again two teeth back (`teeth_run`)
-            run = run + 1 if run < 3 or _like(sides[i], sides[i - 2]) else 3
+        tooth = abs(t) >= SAW_TURN_DEG
+        follows = (run > 0 and (t > 0) != (turns[i - 1] > 0)
+                   and (run < 3 or _like(sides[i], sides[i - 2])))
+        run = run + 1 if tooth and follows else (1 if tooth else 0)
         if run >= SAW_TEETH:
             return True
     return False

@@ -211,7 +211,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
     deviation = [sg.chord_deviation(r) for r in runs]
     straights = [open_shapes.straight(r, noise, d) for r, d in zip(runs, deviation, strict=True)]
     bows = [min(d, 1.0) for d in deviation] or [0.0]
-    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners, th=th, as_fitted=True)] or [0.0]
+    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners, th=th)] or [0.0]
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)

@@ -166,13 +166,12 @@ def turn_concentration(th: np.ndarray) -> float:
 
 
 def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8, *, th: np.ndarray | None = None,
-                     as_fitted: bool = False) -> list[float]:
+                     ) -> list[float]:
     """How round each inner corner is: the length of path, centred on the corner, over which the stroke does
     ``share`` of the turning it does between the midpoints of its neighbouring sides, over the shorter of those
     two sides. A drawn corner turns within a tenth or two of its sides; a brace's or a question mark's bend
-    takes as long as a side. ``th``: `stroke_geometry.turning` of ``work`` where already known; ``as_fitted``: the
-    midpoints as the learned ranker's features were measured when it was fitted (`roundness_along`)."""
-    return roundness_along(walk(work, th), corners, share, as_fitted)
+    takes as long as a side. ``th``: `stroke_geometry.turning` of ``work`` where already known."""
+    return roundness_along(walk(work, th), corners, share)
 
 
 def walk(work: np.ndarray, th: np.ndarray | None = None) -> tuple[list[float], list[float]]:
@@ -187,25 +186,14 @@ def walk(work: np.ndarray, th: np.ndarray | None = None) -> tuple[list[float], l
     return cum_turn, cum_len
 
 
-def roundness_along(walked: tuple[list[float], list[float]], corners: list[int], share: float = 0.8,
-                    as_fitted: bool = False) -> list[float]:
-    """`corner_roundness` of the stroke whose `walk` is ``walked``: the turning between the sides' midpoints is taken
-    over the points from one midpoint to the other, both held where a midpoint falls on a point, the same whichever
-    end the stroke was drawn from. Until session 27 it held the first midpoint's point and not the last's, and a
-    midpoint between two points fell on the earlier one: a corner measured rounder one way (hcira pixelfac/user04's
-    left brace 10, 0.53 as drawn and 0.26 reversed, read a curve one way and a polyline the other). ``as_fitted``
-    keeps that measure for the learned ranker, whose shipped weights were fitted on it (no refit: its features stay
-    as they were measured)."""
+def roundness_along(walked: tuple[list[float], list[float]], corners: list[int], share: float = 0.8) -> list[float]:
+    """`corner_roundness` of the stroke whose `walk` is ``walked``."""
     cum_turn, cum_len = walked
     n = len(cum_len)
     out = []
     for a, c, b in zip(corners, corners[1:], corners[2:], strict=False):
-        if as_fitted:
-            lo, hi = (a + c) // 2, (c + b) // 2
-            total = abs(cum_turn[max(hi - 1, 0)] - cum_turn[max(lo - 1, 0)])
-        else:  # the points from one side's midpoint to the other's, both held
-            lo, hi = -(-(a + c) // 2), (c + b) // 2
-            total = abs(cum_turn[max(min(hi, n - 2), 0)] - cum_turn[max(lo - 1, 0)])
+        lo, hi = (a + c) // 2, (c + b) // 2
+        total = abs(cum_turn[max(hi - 1, 0)] - cum_turn[max(lo - 1, 0)])
         shorter = min(cum_len[c] - cum_len[a], cum_len[b] - cum_len[c])
         if total == 0.0 or shorter <= 0.0:
             out.append(0.0)
