@@ -66,9 +66,12 @@ NO_RETURN = 0.1
 
 
 def _sharp(pts: np.ndarray, length: float) -> np.ndarray:
-    """Each point's turn (degrees, net) within `stroke_geometry.POINT_SPAN` of the path round it."""
+    """Each point's turn (degrees, net) within `stroke_geometry.POINT_SPAN` of the path round it: over an odd number of
+    turning points centred on it (an even window would lean one point toward the stroke's end, and the point and the
+    spine's pieces then fall one point apart drawn from the other end: hcira jonathanzhang53/s01's right brace 1 read
+    a brace as drawn and a bracket reversed)."""
     step = length / (len(pts) - 1)
-    w = max(1, round(sg.POINT_SPAN * length / step))
+    w = max(1, round(sg.POINT_SPAN * length / step)) | 1
     done = np.concatenate([[0.0], np.add.accumulate(np.degrees(sg.turning(pts)))])
     sharp = np.zeros(len(pts))
     sharp[(w + 1) // 2:(w + 1) // 2 + len(done) - w] = np.abs(done[w:] - done[:-w])

@@ -23,6 +23,11 @@ def drop_end_stubs(work: np.ndarray, corners: list[int], length: float, fraction
     return corners
 
 
+NO_TURN_DEG = 1e-6
+"""A step of a stroke's coarse turning under this (degrees) is straight on: the float rounding of a straight run's
+headings (a mouse's or a lattice's points along one row: exactly 0 drawn one way, about 1e-15 mirrored)."""
+
+
 def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[float]:
     """Net turning (degrees) of each run of same-direction turning on a coarse copy of the stroke (coarser
     when the pen's ``noise`` is large), ignoring runs under ``min_deg``: a brace has five such lobes, a check
@@ -31,10 +36,13 @@ def lobes(work: np.ndarray, min_deg: float = 35.0, noise: float = 0.0) -> list[f
 
 
 def turn_lobes(coarse: np.ndarray, min_deg: float = 35.0) -> list[float]:
-    """`lobes` of a stroke whose coarse turning (`shape_turning.coarse_turning`, radians) is already known."""
+    """`lobes` of a stroke whose coarse turning (`shape_turning.coarse_turning`, radians) is already known. A step
+    turning by no more than `NO_TURN_DEG` either way joins the run it is in, whichever way that turns: it neither ends a
+    run turning one way nor starts one (a zero once counted as turning left: it broke a run turning right into pieces
+    each under ``min_deg``, so a stroke and its mirror image had different lobes)."""
     runs: list[float] = []
     for v in np.degrees(coarse).tolist():
-        if runs and (v >= 0) == (runs[-1] >= 0):
+        if runs and (abs(v) <= NO_TURN_DEG or abs(runs[-1]) <= NO_TURN_DEG or (v > 0) == (runs[-1] > 0)):
             runs[-1] += v
         else:
             runs.append(v)
