@@ -330,7 +330,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         ellipse = fit_ellipse(loop)
     # a loop far from any ellipse, or turning back as a star's outline does, is not read round (a star whose
     # shallow inner corners no polygon fit passes, or whose points are more than `candidates.MAX_SIDES` can follow)
-    never_round = closed_loops.no_round_shape(loop, noise, ellipse)
+    never_round = closed_loops.no_round_shape(loop, noise, ellipse) or closed_loops.tail_runs_off(work, loop, ellipse)
     lumpy = not never_round and closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
     # a lumpy circle's lumps are not sides
     sided = [p for p in polygons if p.params < 2 * closed_loops.LUMPY_SIDES] if lumpy else polygons
