@@ -359,26 +359,23 @@ def ends_cross(work: np.ndarray, diag: float) -> bool:
     return bool(np.any((den != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)))
 
 
+
 TAIL_RUNS_OFF = 1.2
-"""A closed stroke's ends cut off to leave its loop (`loop_ends.cut_ends`) that run off that loop's ellipse by more
-than this many times its half-length (its longer half-axis) are a pigtail's tail, not a round shape's overshoot or
-flick. Measured square across the ellipse (`candidates.ellipse_distances`), session 27: hcira klarubbio's two pigtails
-drawn loop first 1.75 and 2.12; the loop-first pigtails of `tests/penmodels/pigtail_habits` (tails 1.6-3 half-lengths)
-1.28 and more; ovals closed with a flick of up to 1.2 half-lengths off the loop (`tests/penmodels/circle_habits`
-flicked-oval) at most 1.04. Session 26's rule measured the same stray against the half width (1 of it) and took
-those ovals for pigtails (a flick leaves a long oval by more than its half width)."""
+"""A closed stroke whose points run off the ellipse fitted to its loop (once round, its ends cut off:
+`loop_ends.cut_ends`, `_once_round`) by more than this many times that ellipse's half-length (its longer half-axis)
+has a pigtail's tail, not a round shape's overshoot or flick: the loop itself hugs its ellipse. Measured square across
+the ellipse (`candidates.ellipse_distances`), session 27: hcira klarubbio's two pigtails drawn loop first 1.75 and
+2.12; the loop-first pigtails of `tests/penmodels/pigtail_habits` (tails 1.6-3 half-lengths) 1.28 and more on the
+tuning seeds; ovals closed with a flick of up to 1.2 half-lengths off the loop (`tests/penmodels/circle_habits`
+flicked-oval) at most 1.06. Session 26's rule measured the same stray against the half width (1 of it) and took those
+ovals for pigtails (a flick leaves a long oval by more than its half width)."""
 
 
 def tail_runs_off(work: np.ndarray, loop: np.ndarray, ellipse: EllipseFit | None) -> bool:
-    """Whether the ends cut off ``work`` (the stroke) to leave ``loop`` (a run of its points) lie farther from the
-    ellipse fitted to the loop than `TAIL_RUNS_OFF` of its half-length: the pen ran off the loop (a pigtail's tail).
-    False where nothing was cut or ``loop`` is not a run of ``work``'s points."""
-    if ellipse is None or len(loop) >= len(work) or not len(loop):
+    """Whether ``work`` (the stroke) runs off the ellipse fitted to ``loop`` (the stroke once round) farther than
+    `TAIL_RUNS_OFF` of its half-length: the pen ran on off the loop (a pigtail's tail). False where the loop is the
+    whole stroke."""
+    if ellipse is None or loop is work or (loop.shape == work.shape and np.array_equal(loop, work)):
         return False
-    starts = np.flatnonzero((work == loop[0]).all(axis=1))
-    start = next((int(i) for i in starts if np.array_equal(work[i:i + len(loop)], loop)), None)
-    if start is None:
-        return False
-    cut = np.concatenate([work[:start], work[start + len(loop):]])
     centre, rx, ry, angle, _ = ellipse
-    return bool(len(cut)) and float(ellipse_distances(cut, centre, rx, ry, angle).max()) > TAIL_RUNS_OFF * max(rx, ry)
+    return float(ellipse_distances(work, centre, rx, ry, angle).max()) > TAIL_RUNS_OFF * max(rx, ry)

@@ -330,7 +330,9 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         ellipse = fit_ellipse(loop)
     # a loop far from any ellipse, or turning back as a star's outline does, is not read round (a star whose
     # shallow inner corners no polygon fit passes, or whose points are more than `candidates.MAX_SIDES` can follow)
-    never_round = closed_loops.no_round_shape(loop, noise, ellipse) or closed_loops.tail_runs_off(work, loop, ellipse)
+    if closed_loops.tail_runs_off(work, loop, ellipse):  # a pigtail drawn loop first: an open mark, not round
+        return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)
+    never_round = closed_loops.no_round_shape(loop, noise, ellipse)
     lumpy = not never_round and closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
     # a lumpy circle's lumps are not sides
     sided = [p for p in polygons if p.params < 2 * closed_loops.LUMPY_SIDES] if lumpy else polygons
@@ -375,8 +377,9 @@ def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray,
 
 
 def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,
-                  diag: float, views: StrokeViews | None = None) -> Recognition:
-    """An open stroke, judged by how it turns: on points a few noise widths apart, jitter makes no corners."""
+                  diag: float, views: StrokeViews | None = None, round_too: bool = True) -> Recognition:
+    """An open stroke, judged by how it turns: on points a few noise widths apart, jitter makes no corners; where it
+    would be read as a circle or an ellipse left open, a curve instead unless ``round_too``."""
     coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
     found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
                                       weights.round_corner)
@@ -384,6 +387,8 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
         # a brace drawn square-cornered, whose small point these coarse points smoothed away
         found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
     round_left_open = found.kind in ("circle", "ellipse")
+    if round_left_open and not round_too:  # a loop the pen ran on off: a curve round it and away
+        return Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), ((found.kind, 0.3),))
     share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
     if inside(found.geometry, *bounds(raw, noise, diag, share)):
         return found
