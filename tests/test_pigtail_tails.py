@@ -1,0 +1,59 @@
+"""Issue 25, session 27: a closed stroke that runs off the ellipse of its loop by more than 1.2 of that ellipse's
+half-length (`closed_loops.tail_runs_off`) is a pigtail drawn loop first, read as an open mark and never round, while
+an oval closed with a flick of up to its own half-length off the loop stays round (session 26 measured the same stray
+against the half width and lost such ovals: the rule was withdrawn)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from physink_tui.scene.recognition.closed_loops import tail_runs_off
+from physink_tui.scene.recognition.recognize import recognize_stroke
+from physink_tui.scene.recognition.shape_fits import fit_ellipse
+
+ROUND = ("circle", "ellipse")
+
+
+def _oval_with_tail(rx: float, ry: float, tail: float, hugging: bool = False) -> list[tuple[float, float]]:
+    """An oval of half-axes ``rx`` (its half-length) and ``ry`` drawn once round from the end of its long axis, then
+    on for ``tail`` of its half-length: round the rim again (``hugging``: a hand closing an oval carries on round it)
+    or straight off, 23 degrees out from the tangent (a flick, or a pigtail's tail)."""
+    pts = [(rx * math.cos(a), ry * math.sin(a)) for a in np.linspace(0.0, 2 * math.pi, 90)]
+    if hugging:
+        return pts + [(rx * math.cos(a), ry * math.sin(a)) for a in np.linspace(0.0, tail, 20)[1:]]
+    return pts + [(rx + t * rx * math.sin(0.4), t * rx * math.cos(0.4)) for t in np.linspace(0.0, tail, 30)[1:]]
+
+
+@pytest.mark.parametrize(("rx", "ry", "tail", "hugging", "runs_off"), [
+    (100, 100, 2.0, False, True), (100, 50, 2.0, False, True),  # a pigtail's tail: twice the half-length
+    (100, 100, 1.0, False, False), (100, 50, 1.0, False, False),  # a flick of the half-length
+    (100, 100, 1.0, True, False),  # an overshoot round the rim
+])
+def test_only_a_tail_longer_than_the_loops_half_length_runs_off_it(rx: float, ry: float, tail: float, hugging: bool,
+                                                                  runs_off: bool) -> None:
+    """The flick of a 2:1 oval's half-length lies farther off it than its half width (session 26's rule took it for a
+    tail) but within `TAIL_RUNS_OFF` (1.2) of its half-length."""
+    work = np.asarray(_oval_with_tail(rx, ry, tail, hugging))
+    loop = work[:90]
+    ellipse = fit_ellipse(loop)
+    assert ellipse is not None and max(ellipse[1], ellipse[2]) == pytest.approx(rx, rel=0.01)
+    assert tail_runs_off(work, loop, ellipse) is runs_off
+
+
+def test_nothing_runs_off_a_loop_that_is_the_whole_stroke() -> None:
+    work = np.asarray(_oval_with_tail(100, 50, 2.0))
+    assert not tail_runs_off(work, work, fit_ellipse(work[:90]))
+    assert not tail_runs_off(work, work.copy(), fit_ellipse(work[:90]))
+
+
+@pytest.mark.parametrize("ry", [100, 70, 50])
+def test_an_oval_with_a_long_tail_reads_as_a_curve_and_one_with_a_flick_reads_round(ry: float) -> None:
+    """Drawn either way: a pigtail drawn loop first (tail 2.2 half-lengths) is a curve, an oval with a flick of 0.9 of
+    its half-length or an overshoot round its rim is a circle or an ellipse."""
+    for pts, want in ((_oval_with_tail(100, ry, 2.2), ("curve",)), (_oval_with_tail(100, ry, 0.9), ROUND),
+                      (_oval_with_tail(100, ry, 0.8, hugging=True), ROUND)):
+        assert recognize_stroke(pts).kind in want
+        assert recognize_stroke(pts[::-1]).kind in want
