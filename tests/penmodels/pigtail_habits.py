@@ -1,7 +1,7 @@
 """A pigtail (the $1 set's loop in an open stroke) drawn as people we have not seen draw it (issue 25: held-back people
 read pigtails 94 %): its loop round and big between short tails, tall and narrow, or small between long tails of their
-own lengths, or drawn first from where the tail will cross it and left by one long tail; in canvas pixels, seeded; no motion, no noise (the pens draw them, fast too:
-`benchmarks/bench_bracket_habits.py --marks pigtail`)."""
+own lengths, or drawn first and left by one long tail; in canvas pixels, seeded; no motion, no noise (the pens draw
+them, fast too: `benchmarks/bench_bracket_habits.py --marks pigtail`)."""
 
 from __future__ import annotations
 

@@ -388,7 +388,7 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
         found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
     round_left_open = found.kind in ("circle", "ellipse")
     if round_left_open and not round_too:  # a loop the pen ran on off: a curve round it and away
-        return Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), ((found.kind, 0.3),))
+        return Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), ((str(found.kind), 0.3),))
     share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
     if inside(found.geometry, *bounds(raw, noise, diag, share)):
         return found
