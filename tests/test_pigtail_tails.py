@@ -1,7 +1,9 @@
-"""Issue 25, session 27: a closed stroke that runs off the ellipse of its loop by more than 1.2 of that ellipse's
-half-length (`closed_loops.tail_runs_off`) is a pigtail drawn loop first, read as an open mark and never round, while
-an oval closed with a flick of up to its own half-length off the loop stays round (session 26 measured the same stray
-against the half width and lost such ovals: the rule was withdrawn)."""
+"""Issue 25, session 27: a closed stroke whose loop is round and which runs off that loop's ellipse by more than 1.2
+of the ellipse's half-length (`closed_loops.round_loop_with_a_tail`, `tail_runs_off`) is a pigtail drawn loop first,
+read as an open mark and never round, while an oval closed with a flick of up to its own half-length off the loop
+stays round (session 26 measured the same stray against the half width and lost such ovals: the rule was withdrawn),
+and a polygon's loop with an overshoot running off past a corner keeps its polygon. People's strokes are read from
+the public-set caches (design sources only); without them those tests skip."""
 
 from __future__ import annotations
 
@@ -9,6 +11,7 @@ import math
 
 import numpy as np
 import pytest
+from test_open_marks import _stroke, cached_rows
 
 from physink_tui.scene.recognition.closed_loops import tail_runs_off
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -57,3 +60,17 @@ def test_an_oval_with_a_long_tail_reads_as_a_curve_and_one_with_a_flick_reads_ro
                       (_oval_with_tail(100, ry, 0.8, hugging=True), ROUND)):
         assert recognize_stroke(pts).kind in want
         assert recognize_stroke(pts[::-1]).kind in want
+
+
+OVERSHOT = {"xml/s06/triangle05.xml": "polygon", "xml/s06/rectangle06.xml": "box", "xml/s02/star08.xml": "polygon"}
+"""hcira klarubbio's outlines closed past a corner, the overshoot running off their loop's ellipse by 1.4-1.7 of its
+half-length (the loops miss their ellipses by 0.12-0.38 of their radius: no round loop): read as on main 9f69154.
+Read as open marks whenever the tail runs off, they were polylines."""
+
+
+@pytest.mark.parametrize("name", list(OVERSHOT))
+def test_a_persons_outline_closed_past_a_corner_keeps_its_corners(name: str) -> None:
+    rows = cached_rows("public-sets/hcira.jsonl")
+    file = next((f for f in rows if f.endswith("klarubbio/hcira_p1@e8eb332:" + name)), None)
+    assert file is not None, f"{name} is not in the cached hcira set"
+    assert recognize_stroke(*_stroke(rows[file])).kind == OVERSHOT[name]

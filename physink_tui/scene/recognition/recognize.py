@@ -330,7 +330,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         ellipse = fit_ellipse(loop)
     # a loop far from any ellipse, or turning back as a star's outline does, is not read round (a star whose
     # shallow inner corners no polygon fit passes, or whose points are more than `candidates.MAX_SIDES` can follow)
-    if closed_loops.tail_runs_off(work, loop, ellipse):  # a pigtail drawn loop first: an open mark, not round
+    if closed_loops.round_loop_with_a_tail(work, loop, ellipse, noise):  # a pigtail drawn loop first: not round
         return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)
     never_round = closed_loops.no_round_shape(loop, noise, ellipse)
     lumpy = not never_round and closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
