@@ -379,11 +379,3 @@ def tail_runs_off(work: np.ndarray, loop: np.ndarray, ellipse: EllipseFit | None
         return False
     centre, rx, ry, angle, _ = ellipse
     return float(ellipse_distances(work, centre, rx, ry, angle).max()) > TAIL_RUNS_OFF * max(rx, ry)
-
-
-def round_loop_with_a_tail(work: np.ndarray, loop: np.ndarray, ellipse: EllipseFit | None, noise: float) -> bool:
-    """Whether ``loop`` is round (its ellipse misses it by less than `open_shapes.round_error`) and the stroke runs off
-    it (`tail_runs_off`): a pigtail drawn loop first. A polygon's loop with an overshoot running on past a corner (a
-    triangle, a star, a box closed past its start) is left to its polygons."""
-    return (ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, noise)
-            and tail_runs_off(work, loop, ellipse))

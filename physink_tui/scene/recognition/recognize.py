@@ -330,8 +330,6 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         ellipse = fit_ellipse(loop)
     # a loop far from any ellipse, or turning back as a star's outline does, is not read round (a star whose
     # shallow inner corners no polygon fit passes, or whose points are more than `candidates.MAX_SIDES` can follow)
-    if closed_loops.round_loop_with_a_tail(work, loop, ellipse, noise):  # a pigtail drawn loop first: not round
-        return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)
     never_round = closed_loops.no_round_shape(loop, noise, ellipse)
     lumpy = not never_round and closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
     # a lumpy circle's lumps are not sides
@@ -343,6 +341,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times,
                                     corners_told)
+    if ranked.kind in ("circle", "ellipse") and closed_loops.tail_runs_off(work, loop, ellipse):
+        return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
