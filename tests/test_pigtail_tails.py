@@ -1,9 +1,9 @@
-"""Issue 25, session 27: a closed stroke whose loop is round and which runs off that loop's ellipse by more than 1.2
-of the ellipse's half-length (`closed_loops.round_loop_with_a_tail`, `tail_runs_off`) is a pigtail drawn loop first,
-read as an open mark and never round, while an oval closed with a flick of up to its own half-length off the loop
-stays round (session 26 measured the same stray against the half width and lost such ovals: the rule was withdrawn),
-and a polygon's loop with an overshoot running off past a corner keeps its polygon. People's strokes are read from
-the public-set caches (design sources only); without them those tests skip."""
+"""Issue 25, session 27: a closed stroke read round that runs off its loop's ellipse by more than 1.2 of the
+ellipse's half-length (`closed_loops.tail_runs_off`) is a pigtail drawn loop first, read as an open mark and never
+round, while an oval closed with a flick of up to its own half-length off the loop stays round (session 26 measured
+the same stray against the half width and lost such ovals: the rule was withdrawn), and a polygon's loop with an
+overshoot running off past a corner keeps its polygon. People's strokes are read from the public-set caches (design
+sources only); without them those tests skip."""
 
 from __future__ import annotations
 
@@ -64,8 +64,8 @@ def test_an_oval_with_a_long_tail_reads_as_a_curve_and_one_with_a_flick_reads_ro
 
 OVERSHOT = {"xml/s06/triangle05.xml": "polygon", "xml/s06/rectangle06.xml": "box", "xml/s02/star08.xml": "polygon"}
 """hcira klarubbio's outlines closed past a corner, the overshoot running off their loop's ellipse by 1.4-1.7 of its
-half-length (the loops miss their ellipses by 0.12-0.38 of their radius: no round loop): read as on main 9f69154.
-Read as open marks whenever the tail runs off, they were polylines."""
+half-length (their loops miss their ellipses by 0.12-0.38 of their radius): read as on main 9f69154. Read as open
+marks wherever the tail runs off (not only where the loop is read round), they were polylines."""
 
 
 @pytest.mark.parametrize("name", list(OVERSHOT))
@@ -74,3 +74,14 @@ def test_a_persons_outline_closed_past_a_corner_keeps_its_corners(name: str) -> 
     file = next((f for f in rows if f.endswith("klarubbio/hcira_p1@e8eb332:" + name)), None)
     assert file is not None, f"{name} is not in the cached hcira set"
     assert recognize_stroke(*_stroke(rows[file])).kind == OVERSHOT[name]
+
+
+def test_a_square_with_a_long_swoop_off_its_top_stays_a_box() -> None:
+    """A Quick, Draw! square (fourth group, open design material) whose pen ran on along its top far past the corner
+    and swept back across it: its loop fits an ellipse within the round limit (0.096 against 0.097) and the swoop runs
+    1.68 half-lengths off; main reads a box, and so does this branch, which asks only of loops read round. Its first
+    version (every round-fitting loop with a tail read open) made it a polyline."""
+    rows = cached_rows("public-sets/quickdraw.jsonl")
+    file = next((f for f in rows if f.endswith("quickdraw.seed-90210.json.gz#238")), None)
+    assert file is not None, "square #238 is not in the cached quickdraw set"
+    assert recognize_stroke(*_stroke(rows[file])).kind == "box"
