@@ -359,7 +359,6 @@ def ends_cross(work: np.ndarray, diag: float) -> bool:
     return bool(np.any((den != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)))
 
 
-
 TAIL_RUNS_OFF = 1.2
 """A closed stroke whose points run off the ellipse fitted to its loop (once round, its ends cut off:
 `loop_ends.cut_ends`, `_once_round`) by more than this many times that ellipse's half-length (its longer half-axis)
