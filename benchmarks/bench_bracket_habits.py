@@ -14,8 +14,8 @@ With ``--symmetry`` each stroke is also read mirrored left to right and reversed
 readings that differ from the stroke's own are counted. ``--marks x`` reads one-stroke x's instead
 (`tests/penmodels/x_habits`: diagonals crossing off their middles, a loop or a round bend at a turn, long tails, a
 hooked second diagonal, unequal arms tilted), ``--marks pigtail`` pigtails (`tests/penmodels/pigtail_habits`: a
-big round loop, a narrow loop, long tails). Seeds 0-29 (`TUNING_SEEDS`) were looked at while
-designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
+big round loop, a narrow loop, long tails, drawn loop first and left by one long tail). Seeds 0-29 (`TUNING_SEEDS`)
+were looked at while designing; 1000-1029 (`HELD_SEEDS`) were read once, at the end.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Benchmark: circles and ovals drawn small, flat, lumpy, gone round again, with a tail, left open as a spiral's turn,
-pointed where the ends meet or flat on one side (`tests/penmodels/circle_habits`), drawn by the pen models through poor
-devices, read as circles or ellipses.
+pointed where the ends meet, flat on one side or closed with a flick off the loop (`tests/penmodels/circle_habits`),
+drawn by the pen models through poor devices, read as circles or ellipses.
 
 Usage: .venv/bin/python benchmarks/bench_circle_habits.py [--seeds tune|held|all] [--rules] [--family NAME]
 

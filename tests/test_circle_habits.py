@@ -30,6 +30,8 @@ HELD_FLOORS = {
     "pointed-join": _ALL,
     "flat-sided-circle": {**_ALL, "hurried-finger": 58},
     "lopsided-long-oval": _ALL,
+    "flicked-oval": {**_ALL, "hurried-coarse": 58, "hurried-mouse": 52, "hurried-fast": 58, "hurried-accel": 58,
+                     "hurried-chords-accel": 56, "hurried-trackpad": 56},
 }
 """family -> pen -> of the 60 readings on the held seeds (30 marks, with and without times), how many are circles or
 ellipses, measured on this branch; main 40b8114 read 10 fewer in all (4,716 of 4,800 against 4,726): small circles
@@ -38,7 +40,9 @@ trackpad 56 and 58 (curves where a lift hook kept a small loop's ends apart, hel
 The small circles through the busy-event-loop mouse (8 of 60) come as 3-7 bursts of events for the whole circle: a
 polygon of 3-7 chords, which the same device makes of a small pentagon, hexagon or octagon too (docs/BENCHMARKS.md).
 Lopsided long ovals (session 26, wt-fourth): 600 of 600 (main 7111cdc 588: polygons where the ellipse's miss was
-measured along the ray from its centre, `candidates.ellipse_distances`)."""
+measured along the ray from its centre, `candidates.ellipse_distances`). Ovals closed with a flick off the loop of up
+to 1.2 of their half-length (session 27): 578 of 600, as main 9f69154 (polygons and a box through a mouse, chords
+and a trackpad); session 26's `tail_runs_off`, measured against the half width, took such ovals for pigtails."""
 
 
 def reading(stroke: list[tuple[float, float, float]], timed: bool) -> str | None:

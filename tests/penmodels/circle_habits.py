@@ -206,8 +206,31 @@ def lopsided_long_oval(seed: int) -> Mark:
     return Mark("lopsided-long-oval", _placed(rng, pts), True)
 
 
+def flicked_oval(seed: int) -> Mark:
+    """An oval 16-260 px long, up to 2.2 times as long as wide, drawn 1.02-1.25 times round from anywhere on it either
+    way and closed with a flick straight off the loop, bent 0-0.8 of a radian's worth outwards, of 0-1.2 of its
+    half-length (a hand lifting fast: a whole note, a quick circle; issue 25, session 27, after session 26's
+    `tail_runs_off` took such ovals for pigtails); drawn flick first half the time (a lead in from off the rim)."""
+    rng = random.Random(f"flicked-oval:{seed}")
+    rx = rng.uniform(8, 130)
+    ry = rx / rng.uniform(1.0, 2.2)
+    pts = _round(rx, ry, rng.uniform(0, 2 * math.pi), _way(rng) * 2 * math.pi * rng.uniform(1.02, 1.25))
+    flick, bend = rng.uniform(0.0, 1.2) * rx, rng.uniform(0.0, 0.8)
+    (x0, y0), (x1, y1) = pts[-2], pts[-1]
+    d, r = math.hypot(x1 - x0, y1 - y0) or 1.0, math.hypot(x1, y1) or 1.0
+    dx, dy = (x1 - x0) / d + bend * x1 / r, (y1 - y0) / d + bend * y1 / r
+    dn = math.hypot(dx, dy)
+    n = max(2, int(flick / 1.5))
+    if flick > 1.0:
+        pts += [(x1 + dx / dn * flick * k / n, y1 + dy / dn * flick * k / n) for k in range(1, n + 1)]
+    if rng.random() < 0.5:
+        pts = pts[::-1]
+    return Mark("flicked-oval", _placed(rng, pts), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "small-circle": small_circle, "flat-oval": flat_oval, "wobbly-circle": wobbly_circle,
     "overtraced-circle": overtraced_circle, "tailed-circle": tailed_circle, "open-spiral-turn": open_spiral_turn,
-    "pointed-join": pointed_join, "flat-sided-circle": flat_sided_circle, "lopsided-long-oval": lopsided_long_oval}
+    "pointed-join": pointed_join, "flat-sided-circle": flat_sided_circle, "lopsided-long-oval": lopsided_long_oval,
+    "flicked-oval": flicked_oval}
 """Every family; each is read as a circle or an ellipse (`EXPECTED`)."""

@@ -1,7 +1,7 @@
 """A pigtail (the $1 set's loop in an open stroke) drawn as people we have not seen draw it (issue 25: held-back people
 read pigtails 94 %): its loop round and big between short tails, tall and narrow, or small between long tails of their
-own lengths; in canvas pixels, seeded; no motion, no noise (the pens draw them, fast too:
-`benchmarks/bench_bracket_habits.py --marks pigtail`)."""
+own lengths, or drawn first and left by one long tail; in canvas pixels, seeded; no motion, no noise (the pens draw
+them, fast too: `benchmarks/bench_bracket_habits.py --marks pigtail`)."""
 
 from __future__ import annotations
 
@@ -11,7 +11,8 @@ from collections.abc import Callable
 
 from penmodels.open_marks import Mark, Point, _placed
 
-EXPECTED = {"round-loop-pigtail": "curve", "narrow-loop-pigtail": "curve", "long-tail-pigtail": "curve"}
+EXPECTED = {"round-loop-pigtail": "curve", "narrow-loop-pigtail": "curve", "long-tail-pigtail": "curve",
+            "loop-first-pigtail": "curve"}
 """A pigtail is a loop in an open smooth stroke: a curve (benchmarks/label_kinds.tsv)."""
 
 
@@ -56,6 +57,30 @@ def long_tail_pigtail(seed: int) -> Mark:
     return _sized(rng, raw, "long-tail-pigtail")
 
 
+def loop_first_pigtail(seed: int) -> Mark:
+    """A pigtail drawn loop first (issue 25, session 27: hcira klarubbio/s02 pigtail04, s07 pigtail03): the pen lands
+    on an oval 1-2 times as long as wide, goes once round it and 0-40 degrees on past where it landed, and leaves by a
+    tail bent 10-40 degrees outwards off the rim, gently curving (up to 25 degrees either way over its length), that
+    runs 1.6-3 times the oval's half-length; drawn tail first half the time (`_placed`)."""
+    rng = random.Random(f"loop-first-pigtail:{seed}")
+    rx, start, way = 1.0, rng.uniform(0, 2 * math.pi), rng.choice((-1.0, 1.0))
+    ry = rx / rng.uniform(1.0, 2.0)
+    sweep = 2 * math.pi + math.radians(rng.uniform(0, 40))
+    n = 90
+    raw = [(rx * math.cos(start + way * sweep * k / n), ry * math.sin(start + way * sweep * k / n))
+           for k in range(n + 1)]
+    (x0, y0), (x1, y1) = raw[-2], raw[-1]
+    heading = math.atan2(y1 - y0, x1 - x0)
+    outwards = -way * math.radians(rng.uniform(10, 40))  # away from the centre: the loop turns the other way
+    bend, length = math.radians(rng.uniform(-25, 25)), rng.uniform(1.6, 3.0) * rx
+    steps = 40
+    for k in range(1, steps + 1):
+        a = heading + outwards + bend * k / steps
+        x1, y1 = x1 + length / steps * math.cos(a), y1 + length / steps * math.sin(a)
+        raw.append((x1, y1))
+    return _sized(rng, raw, "loop-first-pigtail")
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "round-loop-pigtail": round_loop_pigtail, "narrow-loop-pigtail": narrow_loop_pigtail,
-    "long-tail-pigtail": long_tail_pigtail}
+    "long-tail-pigtail": long_tail_pigtail, "loop-first-pigtail": loop_first_pigtail}

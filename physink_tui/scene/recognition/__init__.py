@@ -83,7 +83,11 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    circles at most 0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that turns
    back against its own direction by half a turn or more in all (a star's inner corners) while its ellipse misses it by
    more than a round stroke may (`closed_loops.WITHIN_ROUND`: a slow, unsteady hand's tremor turns a circle back too),
-   is offered no circle or ellipse (`closed_loops.no_round_shape`); a long ellipse's miss (2.62 times as long as
+   is offered no circle or ellipse (`closed_loops.no_round_shape`); a stroke read round that runs off its loop's
+   ellipse by more than 1.2 of that ellipse's half-length (`closed_loops.tail_runs_off`: a pigtail drawn loop first,
+   its tail 1.6-3 half-lengths; a flick closing an oval, up to its half-length, strays at most 1.06) is read as an
+   open mark, and as a curve where that reading would be round too (a polygon's loop with an overshoot past a corner,
+   read as a polygon, is not asked); a long ellipse's miss (2.62 times as long as
    wide or more, `candidates.ACROSS_RATIO`) is measured square across it, as a polygon's sides' are
    (`candidates.ellipse_distances`: along the ray from its centre, a long oval's miss at its shoulders doubles, and
    its triangle through its ends won), a rounder one's along that ray as before; a

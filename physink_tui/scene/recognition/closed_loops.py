@@ -12,6 +12,7 @@ import numpy as np
 from physink_tui.scene.recognition import open_shapes, pen_noise, shape_corners, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
+from physink_tui.scene.recognition.candidates import ellipse_distances
 from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
 from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, SHARP_SHARE, crossings
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
@@ -364,3 +365,24 @@ def ends_cross(work: np.ndarray, diag: float) -> bool:
         t = (qp[..., 0] * s[..., 1] - qp[..., 1] * s[..., 0]) / den
         u = (qp[..., 0] * r[..., 1] - qp[..., 1] * r[..., 0]) / den
     return bool(np.any((den != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)))
+
+
+TAIL_RUNS_OFF = 1.2
+"""A closed stroke whose points run off the ellipse fitted to its loop (once round, its ends cut off:
+`loop_ends.cut_ends`, `_once_round`) by more than this many times that ellipse's half-length (its longer half-axis)
+has a pigtail's tail, not a round shape's overshoot or flick: the loop itself hugs its ellipse. Measured square across
+the ellipse (`candidates.ellipse_distances`), session 27: hcira klarubbio's two pigtails drawn loop first 1.75 and
+2.12; the loop-first pigtails of `tests/penmodels/pigtail_habits` (tails 1.6-3 half-lengths) 1.28 and more on the
+tuning seeds; ovals closed with a flick of up to 1.2 half-lengths off the loop (`tests/penmodels/circle_habits`
+flicked-oval) at most 1.06. Session 26's rule measured the same stray against the half width (1 of it) and took those
+ovals for pigtails (a flick leaves a long oval by more than its half width)."""
+
+
+def tail_runs_off(work: np.ndarray, loop: np.ndarray, ellipse: EllipseFit | None) -> bool:
+    """Whether ``work`` (the stroke) runs off the ellipse fitted to ``loop`` (the stroke once round) farther than
+    `TAIL_RUNS_OFF` of its half-length: the pen ran on off the loop (a pigtail's tail). False where the loop is the
+    whole stroke."""
+    if ellipse is None or loop is work or (loop.shape == work.shape and np.array_equal(loop, work)):
+        return False
+    centre, rx, ry, angle, _ = ellipse
+    return float(ellipse_distances(work, centre, rx, ry, angle).max()) > TAIL_RUNS_OFF * max(rx, ry)

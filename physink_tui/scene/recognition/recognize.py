@@ -341,6 +341,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times,
                                     corners_told)
+    if ranked.kind in ("circle", "ellipse") and closed_loops.tail_runs_off(work, loop, ellipse):
+        return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
     ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
@@ -375,8 +377,9 @@ def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray,
 
 
 def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,
-                  diag: float, views: StrokeViews | None = None) -> Recognition:
-    """An open stroke, judged by how it turns: on points a few noise widths apart, jitter makes no corners."""
+                  diag: float, views: StrokeViews | None = None, round_too: bool = True) -> Recognition:
+    """An open stroke, judged by how it turns: on points a few noise widths apart, jitter makes no corners; where it
+    would be read as a circle or an ellipse left open, a curve instead unless ``round_too``."""
     coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
     found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
                                       weights.round_corner)
@@ -384,6 +387,8 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
         # a brace drawn square-cornered, whose small point these coarse points smoothed away
         found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
     round_left_open = found.kind in ("circle", "ellipse")
+    if round_left_open and not round_too:  # a loop the pen ran on off: a curve round it and away
+        return Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), ((str(found.kind), 0.3),))
     share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
     if inside(found.geometry, *bounds(raw, noise, diag, share)):
         return found
