@@ -209,7 +209,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale,
                           (given if given > 0 else noise) / scale, _kept_times(times, keep, len(pts)), views)
         result = waves.as_curve(rules, unit, views)  # a wave's round bends are no zig-zag's teeth
-        wavy = result is not rules
+        wavy = result is not rules or waves.kept_curve(rules, unit, views)
         # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
         # (`sparse_bends`: a device's few events make any stroke straight runs joined at sharp turns)
         chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise, views)
