@@ -67,9 +67,9 @@ def _unit(drawn: list[tuple[float, float, float]]) -> np.ndarray:
 
 
 def test_the_round_s_is_a_wave_only_on_the_rules_points() -> None:
-    """The careful pen's S of seed 0: no two bends on `waves.WAVE_POINTS` (the reason it was an N), a wave once they
+    """The careful pen's S of seed 1: no two bends on `waves.WAVE_POINTS` (the reason it was an N), a wave once they
     are looked for on `waves.ROUND_BEND_POINTS`; a zig-zag with rounded points is no wave either way."""
-    unit = _unit(PENS["careful"](round_s(0), 0))
+    unit = _unit(PENS["careful"](round_s(1), 1))
     views = waves.StrokeViews(unit)
     assert len(waves._bends(views, waves.WAVE_POINTS)[1]) < waves.MIN_BENDS + 2
     assert waves.wave(unit) is not None
@@ -79,7 +79,7 @@ def test_the_round_s_is_a_wave_only_on_the_rules_points() -> None:
 
 
 def test_only_a_curve_of_the_rules_is_kept_from_the_ranker() -> None:
-    unit = _unit(PENS["careful"](round_s(0), 0))
+    unit = _unit(PENS["careful"](round_s(1), 1))
     assert waves.kept_curve(Recognition("curve", 0.7, None), unit)
     assert not waves.kept_curve(Recognition("polyline", 0.85, None), unit)
     zigzag = _unit(PENS["careful"](round_peaked_zigzag(0), 0))
@@ -88,13 +88,13 @@ def test_only_a_curve_of_the_rules_is_kept_from_the_ranker() -> None:
 
 SQUIGGLE54 = ("ArtemLevin/tutorboard@3b27669:tests/fixtures/smart-ink-corpus/external-v3/"
               "negative-holdout.seed-260730.json.gz#54")
-"""tutorboard seed260730's squiggle #54 (the fourth group, open design material): an S whose tail runs on long and
-straight; the rules read a curve, the ranker re-read it as a polyline on main 9f69154."""
+"""tutorboard seed260730's squiggle #54 (the fourth group, open design material; stored with the quickdraw set): an
+S whose tail runs on long and straight; the rules read a curve, the ranker re-read it as a polyline on main 9f69154."""
 
 
 def test_a_persons_squiggle_the_ranker_took_for_an_n_is_a_curve() -> None:
-    row = cached_rows("public-sets/tutorboard.jsonl").get(SQUIGGLE54)
-    assert row is not None, f"{SQUIGGLE54} is not in tutorboard"
+    row = cached_rows("public-sets/quickdraw.jsonl").get(SQUIGGLE54)
+    assert row is not None, f"{SQUIGGLE54} is not in the quickdraw set"
     points = [p[:2] for p in row["strokes"][0]]
     assert recognize_stroke(points, learned=False).kind == "curve"
     assert recognize_stroke(points).kind == "curve"
