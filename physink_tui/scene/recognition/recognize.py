@@ -209,13 +209,15 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         rules = _classify(unit, unit_noise, weights or DEFAULT_WEIGHTS, shaky, size / scale,
                           (given if given > 0 else noise) / scale, _kept_times(times, keep, len(pts)), views)
         result = waves.as_curve(rules, unit, views)  # a wave's round bends are no zig-zag's teeth
-        wavy = result is not rules or waves.kept_curve(rules, unit, views)
+        wavy = result is not rules
         # steps judged at their own scale; not on points so far apart that their jitter is the shape's own bends
         # (`sparse_bends`: a device's few events make any stroke straight runs joined at sharp turns)
         chain = None if wavy or not seen else stairs.chain_reading(result, unit, unit_noise, views)
         # a tick whose short arm the rules cut as a hook (under a tenth of the path, longer than a hook reaches)
         tick = (hooked_ticks.hooked_tick(unit, unit_noise, views)
                 if chain is None and not wavy and result.kind in hooked_ticks.READ_AS else None)
+        # a wave the rules read as a curve, and no steps or tick: not asked of the model either (`waves.kept_curve`)
+        kept_wave = chain is None and tick is None and not wavy and waves.kept_curve(rules, unit, views)
     if chain is not None:
         result = chain
     if tick is not None:
@@ -227,7 +229,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     # 64 points smooth small steps away), nor a tick whose short arm is a few percent of it (the model takes it for a
     # curve), nor a mark straight-armed as drawn, nor a square bracket whose corners were rounded off, nor a brace
     # drawn as straight runs, lopsided with a straight short half or square-cornered the rules read as a curve
-    if (not learned or wavy or chain is not None or tick is not None
+    if (not learned or wavy or kept_wave or chain is not None or tick is not None
             or open_shapes.straight_armed_mark(result, pts, noise)
             or round_brackets.kept_bracket(result, unit, unit_noise, views)
             or angular_braces.kept_brace(result, unit, unit_noise, views)
