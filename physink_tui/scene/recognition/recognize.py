@@ -216,8 +216,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         # a tick whose short arm the rules cut as a hook (under a tenth of the path, longer than a hook reaches)
         tick = (hooked_ticks.hooked_tick(unit, unit_noise, views)
                 if chain is None and not wavy and result.kind in hooked_ticks.READ_AS else None)
-        # a wave the rules read as a curve, and no steps or tick: not asked of the model either (`waves.kept_curve`)
-        kept_wave = chain is None and tick is None and not wavy and waves.kept_curve(rules, unit, views)
+        # a curve of the rules no steps or tick read: kept from the model where it is a wave (`waves.kept_curve`, asked
+        # below only where the model would change the reading)
+        may_be_wave = chain is None and tick is None and not wavy and rules.kind == "curve"
     if chain is not None:
         result = chain
     if tick is not None:
@@ -229,7 +230,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     # 64 points smooth small steps away), nor a tick whose short arm is a few percent of it (the model takes it for a
     # curve), nor a mark straight-armed as drawn, nor a square bracket whose corners were rounded off, nor a brace
     # drawn as straight runs, lopsided with a straight short half or square-cornered the rules read as a curve
-    if (not learned or wavy or kept_wave or chain is not None or tick is not None
+    if (not learned or wavy or chain is not None or tick is not None
             or open_shapes.straight_armed_mark(result, pts, noise)
             or round_brackets.kept_bracket(result, unit, unit_noise, views)
             or angular_braces.kept_brace(result, unit, unit_noise, views)
@@ -238,8 +239,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
-        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn,
-                             not seen)
+        reranked = ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(),
+                                 drawn, not seen)
+        if reranked != result and may_be_wave and waves.kept_curve(rules, unit, views):
+            return result  # a wave (the people the model was fitted on drew none)
+    return reranked
 
 
 def _kept_times(times: Sequence[float] | None, keep: np.ndarray | None, n: int) -> np.ndarray | None:
