@@ -133,6 +133,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
    of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).
+   Bends too round to be found on the wave's 128 points are looked for on the rules' 64 (an S drawn slowly), and a
+   curve the rules read that is such a wave (two bends found in a row the same way taken as one round bend, unless
+   together they turn a half turn: an arrow's barb) is not asked of the ranker either (`waves.kept_curve`).
    Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.

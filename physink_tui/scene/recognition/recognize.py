@@ -216,6 +216,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         # a tick whose short arm the rules cut as a hook (under a tenth of the path, longer than a hook reaches)
         tick = (hooked_ticks.hooked_tick(unit, unit_noise, views)
                 if chain is None and not wavy and result.kind in hooked_ticks.READ_AS else None)
+        # a curve of the rules no steps or tick read: kept from the model where it is a wave (`waves.kept_curve`, asked
+        # below only where the model would change the reading)
+        may_be_wave = chain is None and tick is None and not wavy and rules.kind == "curve"
     if chain is not None:
         result = chain
     if tick is not None:
@@ -236,8 +239,11 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
-        return ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(), drawn,
-                             not seen)
+        reranked = ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(),
+                                 drawn, not seen)
+        if reranked != result and may_be_wave and waves.kept_curve(rules, unit, views):
+            return result  # a wave (the people the model was fitted on drew none)
+    return reranked
 
 
 def _kept_times(times: Sequence[float] | None, keep: np.ndarray | None, n: int) -> np.ndarray | None:

