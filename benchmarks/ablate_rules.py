@@ -41,6 +41,7 @@ from physink_tui.scene.recognition import (
     polygon_checks,
     ranker,
     ranking,
+    rounded_corners,
 )
 from physink_tui.scene.recognition import recognize as rz
 from physink_tui.scene.recognition import stroke_features as sf
@@ -141,10 +142,11 @@ RULES: tuple[Rule, ...] = (
          lambda: [(closed_loops, "cut_ends", _cut_ends_without_sixths)]),
     Rule("small_loop", "loop_ends.SMALL_LOOP", "fourth pass: pixelfac/user02, 03, jonathanzhang53/s05, "
          "klarubbio/s06", lambda: [(closed_loops, "SMALL_LOOP", 0.0)]),
-    Rule("box_as_drawn", "recognize._box_as_drawn (BOX_OVERLAP)", "fourth pass: the design sources' rectangles",
-         lambda: [(rz, "_box_as_drawn", _as_ranked)]),
+    Rule("box_as_drawn", "rounded_corners.box_as_drawn (BOX_OVERLAP)", "fourth pass: the design sources' rectangles",
+         lambda: [(rounded_corners, "box_as_drawn", _as_ranked)]),
     Rule("box_margin", "ranking.BOX_MARGIN", "fifth pass: geometry only (no source)",
-         lambda: [(ranking, "BOX_MARGIN", ranking.BOUNDS_MARGIN), (rz, "BOX_MARGIN", ranking.BOUNDS_MARGIN)]),
+         lambda: [(ranking, "BOX_MARGIN", ranking.BOUNDS_MARGIN),
+                  (rounded_corners, "BOX_MARGIN", ranking.BOUNDS_MARGIN)]),
     Rule("left_open_wobble", "closed_loops.LEFT_OPEN_WOBBLE", "fifth pass: klarubbio/s06, dollar1:s03",
          lambda: [(closed_loops, "LEFT_OPEN_WOBBLE", 0.0)]),
     Rule("last_side_bow", "closed_loops.LAST_SIDE_BOW", "fifth pass: klarubbio/s06",

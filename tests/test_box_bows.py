@@ -45,7 +45,7 @@ FLOORS: dict[str, tuple[int, int]] = {
 """family -> of the 30 held-back seeds, how many read as a box (the first three families) or as a polygon (the others)
 drawn by the careful virtual pen and by the hurried hand (with their times), measured on wt-sides (session 25). At
 main 2ff28bf: bowed-out 23/20, bowed-in 16/15, bow-swung 19/20; house 13/12, house-in 11/12, cut-deep 28/25 (main
-reads most low roofs and swallowtails, 12-25 % of the side, as boxes already: `recognize._box_as_drawn`). house and
+reads most low roofs and swallowtails, 12-25 % of the side, as boxes already: `rounded_corners.box_as_drawn`). house and
 house-in raised on wt-roof (session 26: `recognition.roofs` gives the pentagon back; main 7111cdc 13/12 and 11/11)."""
 
 
@@ -109,8 +109,8 @@ def _drawn(pen: str, vertices: list[Point], seed: int):
 @pytest.mark.parametrize("out", (0.2, -0.2))
 def test_a_box_with_a_side_bowed_by_a_fifth_is_a_box_through_a_session(pen: str, out: float, tmp_path) -> None:
     """At main 2ff28bf the hurried hand's boxes, bowed either way, and the virtual pen's bowed in are polygons (a low
-    pentagon: the bow changes the box's area by an eighth, past what `recognize._box_as_drawn` lets a box cover); the
-    virtual pen's bowed out was a box already."""
+    pentagon: the bow changes the box's area by an eighth, past what `rounded_corners.box_as_drawn` lets a box cover);
+    the virtual pen's bowed out was a box already."""
     for scale in (0.75, 1.0):
         for seed in (1, 2):
             folder = tmp_path / f"{scale}-{seed}"

@@ -64,10 +64,10 @@ def _box_with_a_point(width: float, height: float, rise: float, at: float = 0.5)
 @pytest.mark.parametrize("rise", (0.18, 0.2, -0.18, -0.2, -0.25))
 def test_a_long_box_with_a_low_roof_on_its_short_side_is_a_pentagon(rise: float) -> None:
     """A 2.5:1 box whose 100 px short side rises to a ridge 18-20 % of it out (each half 20-22 degrees off the side:
-    a house, a home plate) or is notched 18-25 % in (a swallowtail): its box covers it by 0.95 or more, so main 7111cdc
-    read every one as a box (`recognize._box_as_drawn`); the corner is drawn, sharp, between two straight halves, as no
-    hurried bow is. (At 13-16 % out, on so short a side, the judged points smooth the ridge over half of each 52 px
-    half: still a box, as at main.)"""
+    a house, a home plate) or is notched 18-25 % in (a swallowtail): its box covers it by 0.95 or more, so main
+    7111cdc read every one as a box (`rounded_corners.box_as_drawn`); the corner is drawn, sharp, between two straight
+    halves, as no hurried bow is. (At 13-16 % out, on so short a side, the judged points smooth the ridge over half of
+    each 52 px half: still a box, as at main.)"""
     got = recognize_stroke(_box_with_a_point(250, 100, rise))
     assert got.kind == "polygon" and got.geometry is not None and len(got.geometry.points) == 5, got
 

@@ -189,7 +189,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   or the pen slowed at them
 - `corner_pace.py`: the pen's pace at a closed polygon's vertices against its mean pace (a hand slows at the corners
   it means, keeps its pace round a circle)
-- `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box
+- `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box; a
+  polygon of five sides or more its best four sides cover nearly as drawn, read as that box (`box_as_drawn`)
 - `bowed_sides.py`: a box with one side bowed out or in (read as a polygon), read as the box of the loop's area
 - `roofs.py`: a box read where one sharp corner stands off a side (a house roof) or is pushed in (a swallowtail
   notch), read as the pentagon drawn

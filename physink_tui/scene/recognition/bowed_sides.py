@@ -4,7 +4,7 @@ A hurried hand draws three sides of a box straight and square and swings the fou
 swings round the fourth side's two corners and the side between them in one sweep (a D drawn square on one side). A
 bow deeper than about 15 % of its chord is no side to the polygonal fits (`polygon_checks.BOW_SHARE`), which spend a
 fifth or sixth side on it and read a low pentagon, and the box of its corners covers it by too little for
-`recognize._box_as_drawn` (a side bowed by 0.2 changes a 2.5:1 box's area by a fifth). What tells such a bow from a
+`rounded_corners.box_as_drawn` (a side bowed by 0.2 changes a 2.5:1 box's area by a fifth). What tells such a bow from a
 pentagon's roof or a notch is its shape across the chord between the walls it joins (`bow_of`): it stays on one
 side of that chord, runs along it without turning back, reaches no further from it than `MAX_BOW` of it, fills the
 strip between the chord and its deepest point as a round bow does, not as a roof's two straight sides do
@@ -38,7 +38,7 @@ from physink_tui.scene.recognition.rounded_corners import STRAIGHT_SHARE, Part, 
 
 SHALLOWEST = 2 * BOW_SHARE
 """A bow reaches more than this share of its chord from it (0.12): a shallower one is a side to the box rules already
-(`recognize._box_as_drawn`; `box_habits` side-bowed, 6-12 %: every one a box), and a straight side a device's few
+(`rounded_corners.box_as_drawn`; `box_habits` side-bowed, 6-12 %: every one a box), and a straight side a device's few
 events bend (a trapezoid's leg through a coarse device: 0.11) is no bow."""
 MAX_BOW = 0.25
 """A bow reaches at most this share of its chord from it: a round bow so deep leaves the walls it joins 45-53 degrees

@@ -46,20 +46,16 @@ from physink_tui.scene.recognition import (
 )
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry, shape_points, x_symbol
+from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import COILED, helix_or_scribble
-from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, crossings, overlap
 from physink_tui.scene.recognition.primitives import Line, Polygon, Recognition
-from physink_tui.scene.recognition.quads import four_sides_cover
 from physink_tui.scene.recognition.ranking import (
     BOUNDS_MARGIN,
-    BOX_MARGIN,
     DEFAULT_WEIGHTS,
     Weights,
     bounds,
     inside,
-    keeps_the_outline,
     or_freeform,
     rank,
 )
@@ -349,7 +345,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
                                     corners_told)
     if ranked.kind in ("circle", "ellipse") and closed_loops.tail_runs_off(work, loop, ellipse):
         return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
-    ranked = _box_as_drawn(ranked, polygons, raw, noise, diag, loop)
+    ranked = rounded_corners.box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
     ranked = roofs.pentagon_on_a_box(ranked, polygons, noise)
@@ -358,28 +354,6 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
         return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag, views)
     return or_freeform(ranked, loop, closed=True, sigma=sigma)
-
-
-def _box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray, noise: float, diag: float,
-                  loop: np.ndarray) -> Recognition:
-    """A polygon of five sides or more that its best four sides cover nearly as drawn (`polygon_checks.BOX_OVERLAP`,
-    `quads.four_sides_cover`), when those four make a box that covers it as nearly (or their quad does): a box with a
-    hook, a bowed side or a cut corner, read as the box."""
-    if not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 5:
-        return ranked
-    drawn = ranked.geometry.points
-    if crossings(drawn) > 1:
-        return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
-    fours = [p for p in polygons if p.params == 8 and any(four_sides_cover(f, drawn) for f in p.fits)]
-    # built only where a four-sided fit covers it (judging corners costs more)
-    lo, hi = bounds(raw, noise, diag, BOX_MARGIN)
-    for box in (c for p in fours for c in p.build() if c.kind == "box"):
-        if (inside(box.geometry, lo, hi) and keeps_the_outline(box, loop)
-                and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
-                and max(overlap(box.fallback.geometry.points, drawn), overlap(shape_points(box.geometry), drawn))
-                >= BOX_OVERLAP):
-            return Recognition("box", ranked.confidence, box.geometry, (("polygon", 1.0 - ranked.confidence),))
-    return ranked
 
 
 def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,

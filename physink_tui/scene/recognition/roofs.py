@@ -4,7 +4,7 @@ A box's four corners with a fifth corner on one side, out of the box (a house's 
 or into it (a swallowtail flag, a notch), is a pentagon to any reader once that corner stands clear of the side: the
 side's two halves run straight and meet at one sharp turn, where a hurried hand's bow turns gradually along the whole
 side (`bowed_sides`). A roof on a long box's short side changes the box's area by a few per cent, so the box rules
-(`recognize._box_as_drawn`: overlap 0.92) and the ranker take it for a box; this module gives the pentagon back.
+(`rounded_corners.box_as_drawn`: overlap 0.92) and the ranker take it for a box; this module gives the pentagon back.
 
 The loop is that pentagon when the best fit of five sides has a vertex (the ridge) whose four others make a box with
 corners within `quads.SQUARE_WALL` of square (`beautify.box_geometry`), standing `RIDGE_LOW` to `RIDGE_HIGH` of the

@@ -16,6 +16,9 @@ parts' lines meet. It stands for the loop when:
   hexagon's, a corner cut short), and the polygon's rules stand (a loop read round also needs two sharp corners);
 - the loop leaves the box's outline only inside it, at no more than `MAX_CUT` corners, and the quad covers it nearly as
   drawn (`polygon_checks.BOX_OVERLAP`, intersection over union); a trapezoid or a rhombus is kept as `quads` keeps it.
+
+A polygon of five sides or more whose best four sides cover it as nearly is that box too (`box_as_drawn`: a hook, a
+bowed side or a cut corner).
 """
 
 from __future__ import annotations
@@ -38,7 +41,7 @@ from physink_tui.scene.recognition.polygon_checks import (
 )
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
 from physink_tui.scene.recognition.primitives import Box, Polygon, Recognition
-from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside
+from physink_tui.scene.recognition.ranking import BOX_MARGIN, bounds, inside, keeps_the_outline
 
 STRAIGHT_SHARE = 0.5
 """Each side of the box runs straight on the drawn points for at least this share of its length (a regular octagon's
@@ -254,4 +257,26 @@ def box_after_all(ranked: Recognition, polygons: list[Pending], loop: np.ndarray
                 box = box_of(fit, kept, loop, noise, SHARP_IF_READ_ROUND if round_reading else 0, parts)
                 if box is not None and inside(box, lo, hi):
                     return Recognition("box", ranked.confidence, box, ((str(ranked.kind), 1.0 - ranked.confidence),))
+    return ranked
+
+
+def box_as_drawn(ranked: Recognition, polygons: list[Pending], raw: np.ndarray, noise: float, diag: float,
+                 loop: np.ndarray) -> Recognition:
+    """A polygon of five sides or more that its best four sides cover nearly as drawn (`polygon_checks.BOX_OVERLAP`,
+    `quads.four_sides_cover`), when those four make a box that covers it as nearly (or their quad does): a box with a
+    hook, a bowed side or a cut corner, read as the box."""
+    if not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 5:
+        return ranked
+    drawn = ranked.geometry.points
+    if crossings(drawn) > 1:
+        return ranked  # a star, or a mark crossing itself: no box (a hook's spike may cross a side once)
+    fours = [p for p in polygons if p.params == 8 and any(quads.four_sides_cover(f, drawn) for f in p.fits)]
+    # built only where a four-sided fit covers it (judging corners costs more)
+    lo, hi = bounds(raw, noise, diag, BOX_MARGIN)
+    for box in (c for p in fours for c in p.build() if c.kind == "box"):
+        if (inside(box.geometry, lo, hi) and keeps_the_outline(box, loop)
+                and box.fallback is not None and isinstance(box.fallback.geometry, Polygon)
+                and max(overlap(box.fallback.geometry.points, drawn), overlap(shape_points(box.geometry), drawn))
+                >= BOX_OVERLAP):
+            return Recognition("box", ranked.confidence, box.geometry, (("polygon", 1.0 - ranked.confidence),))
     return ranked
