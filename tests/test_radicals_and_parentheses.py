@@ -47,18 +47,7 @@ def _right(family: str, pen: str) -> tuple[int, list[str | None]]:
     return sum(k in EXPECTED[family] for k in got), got
 
 
-ROUND_RADICAL_AS_WAVE = (
-    "session 27 (wt-marks): `waves` looks again for an S's two round bends on the rules' 64 points, and held seed "
-    "1029's round radical by the careful pen (with and without times) is such a two-bend wave, a curve: 58 of 60. "
-    "Kept at its floor of 60 until the S's second look tells a radical's bends from an S's.")
-
-
-def _cases() -> list[object]:
-    return [pytest.param(f, p, marks=pytest.mark.xfail(strict=True, reason=ROUND_RADICAL_AS_WAVE))
-            if (f, p) == ("round-radical", "careful") else (f, p) for f in HELD_FLOORS for p in PENS]
-
-
-@pytest.mark.parametrize(("family", "pen"), _cases())
+@pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])
 def test_radicals_are_polylines_and_parentheses_bows(family: str, pen: str) -> None:
     right, got = _right(family, pen)
     assert right >= HELD_FLOORS[family][pen], got
