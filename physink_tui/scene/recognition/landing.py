@@ -29,6 +29,9 @@ end goes out and back along one line, and stays (`stroke_geometry.remove_hooks` 
 
 def _dwell(pts: np.ndarray, radius: float) -> int:
     """How many points from ``pts[0]`` on stay within ``radius`` of it, wandering there (`DWELL_PATH`), or 0."""
+    head = pts[:DWELL_POINTS] - pts[0]
+    if (np.hypot(head[:, 0], head[:, 1]) > radius).any():
+        return 0  # away within `DWELL_POINTS`, as most strokes are (the same distances as below, for fewer points)
     away = np.hypot(*(pts - pts[0]).T) > radius
     if not away.any():
         return 0

@@ -97,14 +97,17 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
     n = len(pts)
     chosen = [0, n - 1]
     heap: list[tuple[float, int, int, int]] = []
+    xs, ys = pts[:, 0].copy(), pts[:, 1].copy()  # each column once, contiguous
+    x, y = xs.tolist(), ys.tolist()  # and as Python floats: the same numbers
 
     def push(a: int, b: int) -> None:
         if b - a < 2:
             return
-        rel = pts[a + 1:b + 1] - pts[a]
-        d, rel = rel[-1], rel[:-1]  # the chord, and the points between its ends
-        norm = float(np.hypot(d[0], d[1]))
-        dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]) / norm if norm > 0 else np.hypot(rel[:, 0], rel[:, 1])
+        # the points between the chord's ends less its start, and the chord: ``pts[a + 1:b] - pts[a]`` and
+        # ``pts[b] - pts[a]`` a column at a time, the same subtractions
+        rx, ry, dx, dy = xs[a + 1:b] - x[a], ys[a + 1:b] - y[a], x[b] - x[a], y[b] - y[a]
+        norm = float(np.hypot(dx, dy))
+        dist = np.abs(rx * dy - ry * dx) / norm if norm > 0 else np.hypot(rx, ry)
         k = int(dist.argmax())
         far = float(dist[k])
         if far > tolerance:
