@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import heapq
+import itertools
 import math
 
 import numpy as np
 
 from physink_tui.scene.recognition import landing, polygon_fit, ranker
+from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import shape_points, within
 from physink_tui.scene.recognition.primitives import Arc, Box, Circle, Curve, Ellipse, Geometry, Line, Polygon, Polyline
 
@@ -143,3 +146,34 @@ def test_the_rankers_mean_is_numpys() -> None:
         assert ranker._mean(values) == float(np.mean(values))
         flags = (rng.random(n) < 0.5).tolist()
         assert sum(flags) / len(flags) == float(np.mean(flags))
+
+
+def _plain_retraced(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
+    """`stroke_features.retraced` as it was: the quantile worked out wherever the box does not decide."""
+    end = int(np.searchsorted(np.abs(np.add.accumulate(th)), 2 * math.pi)) + 2
+    first, rest = work[:end], work[end:]
+    if len(rest) < 4 or len(first) < 4:
+        return False
+    d = np.hypot(rest[:, None, 0] - first[None, :, 0], rest[:, None, 1] - first[None, :, 1]).min(axis=1)
+    return float(np.quantile(d, 0.9)) < 0.06 * diag
+
+
+def test_a_retraced_loop_is_told_as_by_the_quantile() -> None:
+    """`stroke_features.retraced` (the quantile's two order statistics first) answers as the quantile does: loops
+    drawn twice over with the pen's wobble, stars turning twice round, and spirals, at limits either side."""
+    rng = np.random.default_rng(5)
+    cases = []
+    for _ in range(150):
+        a = np.linspace(0, 2 * math.pi * rng.uniform(1.2, 2.5), int(rng.integers(60, 300)))
+        wobble = rng.normal(0, rng.choice([0.001, 0.02, 0.1]), (len(a), 2))
+        grow = 1 + rng.uniform(0, 0.3) * a / a[-1]
+        cases.append(np.column_stack([np.cos(a) * grow, np.sin(a) * grow]) + wobble)
+    star = np.array([[math.cos(k * 4 * math.pi / 5), math.sin(k * 4 * math.pi / 5)] for k in range(11)])
+    cases.append(np.concatenate([np.linspace(p, q, 20, endpoint=False) for p, q in itertools.pairwise(star)]))
+    told = set()
+    for work in cases:
+        th = sg.turning(work)
+        for diag in (0.1, 0.5, 1.0, 2.0, 2.8, 5.0):
+            assert sf.retraced(work, th, diag) == _plain_retraced(work, th, diag)
+            told.add(_plain_retraced(work, th, diag))
+    assert told == {True, False}

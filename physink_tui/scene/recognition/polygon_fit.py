@@ -253,7 +253,7 @@ def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, re
     idx = np.asarray(indices)
     a, b = idx[:-1], idx[1:]
     size = b - a + 1
-    trim = np.where(size >= 6, size // 6, 0)
+    trim = size // 6  # none under six points (as ``np.where(size >= 6, size // 6, 0)``: a run has two or more)
     centres, dirs = run_lines(pts, a + trim, b + 1 - trim, sums)
     chords = np.hypot(*(pts[b] - pts[a]).T)
     runs = len(a)
