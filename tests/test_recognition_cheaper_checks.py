@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import landing, polygon_fit, ranker
+from physink_tui.scene.recognition import landing, polygon_checks, polygon_fit, ranker
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import shape_points, within
@@ -177,3 +177,37 @@ def test_a_retraced_loop_is_told_as_by_the_quantile() -> None:
             assert sf.retraced(work, th, diag) == _plain_retraced(work, th, diag)
             told.add(_plain_retraced(work, th, diag))
     assert told == {True, False}
+
+
+def _plain_crossings(vertices: np.ndarray) -> int:
+    """`polygon_checks.crossings` as it was (its pairs of sides made afresh each time)."""
+    a = np.asarray(vertices, dtype=float)
+    b = np.roll(a, -1, axis=0)
+    m = len(a)
+    i, j = np.triu_indices(m, 2)
+    keep = ~((i == 0) & (j == m - 1))
+    i, j = i[keep], j[keep]
+
+    def side(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> np.ndarray:
+        u, w = q - p, r - p
+        turn: np.ndarray = np.sign(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
+        return turn
+
+    apart_j = side(a[i], b[i], a[j]) * side(a[i], b[i], b[j]) < 0
+    apart_i = side(a[j], b[j], a[i]) * side(a[j], b[j], b[i]) < 0
+    return int(np.count_nonzero(apart_i & apart_j))
+
+
+def test_crossings_with_pairs_made_once_count_as_before() -> None:
+    """`polygon_checks.crossings` (its pairs of sides made once for each number of sides) counts as before: stars,
+    random outlines of 3-12 vertices, twice over each (the pairs read again)."""
+    rng = np.random.default_rng(9)
+    star = np.array([[math.cos(k * 4 * math.pi / 5), math.sin(k * 4 * math.pi / 5)] for k in range(5)])
+    outlines = [star, *(rng.normal(0, 1, (int(rng.integers(3, 13)), 2)) for _ in range(400))]
+    counts = set()
+    for _ in range(2):
+        for v in outlines:
+            assert polygon_checks.crossings(v) == _plain_crossings(v)
+            assert polygon_checks.crossings([tuple(p) for p in v.tolist()]) == _plain_crossings(v)
+            counts.add(_plain_crossings(v))
+    assert 0 in counts and 5 in counts

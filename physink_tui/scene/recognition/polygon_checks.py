@@ -9,6 +9,7 @@ these a fit passes; `split_hairpins` turns each doubled-back vertex into that fl
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -54,11 +55,8 @@ def crossings(vertices: Sequence[tuple[float, float]] | np.ndarray) -> int:
     """How many times a closed outline's sides cross one another (a star drawn in one stroke: five times; a box
     whose hook's spike crosses a side: once)."""
     a = np.asarray(vertices, dtype=float)
-    b = np.roll(a, -1, axis=0)
-    m = len(a)
-    i, j = np.triu_indices(m, 2)
-    keep = ~((i == 0) & (j == m - 1))  # the last side meets the first at a vertex
-    i, j = i[keep], j[keep]
+    b = np.concatenate([a[1:], a[:1]])  # `np.roll(a, -1, axis=0)`, without its per-call overhead
+    i, j = _side_pairs(len(a))
 
     def side(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> np.ndarray:
         u, w = q - p, r - p
@@ -68,6 +66,18 @@ def crossings(vertices: Sequence[tuple[float, float]] | np.ndarray) -> int:
     apart_j = side(a[i], b[i], a[j]) * side(a[i], b[i], b[j]) < 0
     apart_i = side(a[j], b[j], a[i]) * side(a[j], b[j], b[i]) < 0
     return int(np.count_nonzero(apart_i & apart_j))
+
+
+@functools.lru_cache(maxsize=64)
+def _side_pairs(m: int) -> tuple[np.ndarray, np.ndarray]:
+    """The pairs of an ``m``-sided outline's sides that `crossings` tests: not neighbours (the same for every outline of
+    that many sides: made once, read only)."""
+    i, j = np.triu_indices(m, 2)
+    keep = ~((i == 0) & (j == m - 1))  # the last side meets the first at a vertex
+    i, j = i[keep], j[keep]
+    i.flags.writeable = False
+    j.flags.writeable = False
+    return i, j
 
 
 def overlap(a: Sequence[tuple[float, float]] | np.ndarray, b: Sequence[tuple[float, float]] | np.ndarray) -> float:

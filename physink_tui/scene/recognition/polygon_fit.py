@@ -105,11 +105,15 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
             return
         # the points between the chord's ends less its start, and the chord: ``pts[a + 1:b] - pts[a]`` and
         # ``pts[b] - pts[a]`` a column at a time, the same subtractions
-        rx, ry, dx, dy = xs[a + 1:b] - x[a], ys[a + 1:b] - y[a], x[b] - x[a], y[b] - y[a]
+        xa, ya = x[a], y[a]
+        dx, dy = x[b] - xa, y[b] - ya
         norm = float(np.hypot(dx, dy))
-        dist = np.abs(rx * dy - ry * dx) / norm if norm > 0 else np.hypot(rx, ry)
-        k = int(dist.argmax())
-        far = float(dist[k])
+        k, far = _farthest(x, y, a, b, dx, dy, norm) if b - a <= SHORT_RUN and norm > 0 else (-1, math.nan)
+        if k < 0:  # a long run (or a NaN, or a chord of nothing): numpy's, the same arithmetic
+            rx, ry = xs[a + 1:b] - xa, ys[a + 1:b] - ya
+            dist = np.abs(rx * dy - ry * dx) / norm if norm > 0 else np.hypot(rx, ry)
+            k = int(dist.argmax())
+            far = float(dist[k])
         if far > tolerance:
             heapq.heappush(heap, (-far, a + 1 + k, a, b))
 
@@ -120,6 +124,27 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
         push(a, k)
         push(k, b)
     return chosen
+
+
+SHORT_RUN = 24
+"""`_douglas_peucker` measures a run of up to this many points one point at a time in Python floats (numpy's per-call
+cost is more than the arithmetic on so few)."""
+
+
+def _farthest(x: list[float], y: list[float], a: int, b: int, dx: float, dy: float, norm: float) -> tuple[int, float]:
+    """Which point strictly between ``a`` and ``b`` lies farthest from the chord (``dx``, ``dy``: from ``a`` to ``b``,
+    ``norm`` its length, not 0), and how far: ``np.abs(rx * dy - ry * dx) / norm`` and its first greatest, a point at a
+    time (each operation alone, rounded as numpy rounds it); (-1, nan) where a distance is NaN (numpy's argmax takes
+    the first NaN: left to it)."""
+    xa, ya = x[a], y[a]
+    best, far = -1, -1.0
+    for m in range(a + 1, b):
+        d = abs((x[m] - xa) * dy - (y[m] - ya) * dx) / norm
+        if d > far:
+            best, far = m - a - 1, d
+        elif d != d:
+            return -1, math.nan
+    return best, far
 
 
 def line_costs(pts: np.ndarray, cand: np.ndarray, sums: np.ndarray | None = None) -> np.ndarray:
