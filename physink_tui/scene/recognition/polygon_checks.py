@@ -55,7 +55,7 @@ def crossings(vertices: Sequence[tuple[float, float]] | np.ndarray) -> int:
     """How many times a closed outline's sides cross one another (a star drawn in one stroke: five times; a box
     whose hook's spike crosses a side: once)."""
     a = np.asarray(vertices, dtype=float)
-    b = np.concatenate([a[1:], a[:1]])  # `np.roll(a, -1, axis=0)`, without its per-call overhead
+    b = sg.succ(a)
     i, j = _side_pairs(len(a))
 
     def side(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> np.ndarray:
@@ -100,7 +100,7 @@ def follows_the_outline(corners: Sequence[tuple[float, float]] | np.ndarray, dra
     `OUTLINE_LEFT_OUT`)."""
     diag = float(np.hypot(*(drawn.max(axis=0) - drawn.min(axis=0))))
     a = np.asarray(corners, dtype=float)
-    b = np.roll(a, -1, axis=0)
+    b = sg.succ(a)
     ab = b - a
     rel = drawn[:, None, :] - a[None, :, :]  # each point against each side
     u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
@@ -280,7 +280,8 @@ def sharp_corners(fit: PolygonFit, step: float) -> bool:
     sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
     roundness = corner_roundness_closed(fit)
     heading = np.arctan2(sides[:, 1], sides[:, 0])
-    turns = np.degrees(np.abs((heading - np.roll(heading, 1) + np.pi) % (2 * np.pi) - np.pi))  # at each vertex
+    before = np.concatenate([heading[-1:], heading[:-1]])  # `np.roll(heading, 1)`: the side before each vertex
+    turns = np.degrees(np.abs((heading - before + np.pi) % (2 * np.pi) - np.pi))  # at each vertex
     shallow = turns < MIN_CORNER_DEG
     round_ones = int(np.count_nonzero(roundness >= SHARP_CORNER))
     return round_ones <= (1.0 - SHARP_SHARE) * len(roundness) and bool((roundness[shallow] < SHARP_CORNER).all())

@@ -202,7 +202,7 @@ def best_polygons(pts: np.ndarray, *, closed: bool, max_sides: int, tolerance: f
         start = int(np.argmax(np.hypot(*(pts - centre).T)))
         fits: dict[int, list[PolygonFit]] = {}
         for attempt in range(2):
-            loop = np.concatenate([np.roll(pts, -start, axis=0), pts[start:start + 1]])
+            loop = np.concatenate([pts[start:], pts[:start], pts[start:start + 1]])  # rolled to start there
             found = _chains(loop, max_sides, tolerance, closed=True)
             for k, fit in found.items():
                 if k >= 3:

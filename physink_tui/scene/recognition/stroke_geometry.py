@@ -59,6 +59,12 @@ def along(pts: np.ndarray) -> np.ndarray:
     return out
 
 
+def succ(a: np.ndarray) -> np.ndarray:
+    """Each element's (row's) successor round a closed outline, the first after the last: ``np.roll(a, -1, axis=0)``,
+    the same array, without its per-call overhead."""
+    return np.concatenate([a[1:], a[:1]])
+
+
 def resample(pts: np.ndarray, n: int) -> np.ndarray:
     """``n`` points equally spaced along the path (first and last kept)."""
     d = pts[1:] - pts[:-1]
