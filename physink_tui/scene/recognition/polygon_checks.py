@@ -137,7 +137,7 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: f
         return None
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     if closed:
-        heading = np.append(heading, heading[0])
+        heading = np.concatenate([heading, heading[:1]])  # `np.append(heading, heading[0])`
     degrees = np.degrees(np.abs((heading[1:] - heading[:-1] + np.pi) % (2 * np.pi) - np.pi))
     if len(degrees) and float(degrees.min()) < min_corner_deg:
         return None

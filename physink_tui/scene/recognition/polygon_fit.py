@@ -222,7 +222,7 @@ def _turns(pts: np.ndarray, indices: tuple[int, ...]) -> np.ndarray:
     """Turning (radians, absolute) at each inner index of a closed chain, and at its start last."""
     verts = pts[list(indices)]
     heading = np.arctan2(*(verts[1:] - verts[:-1])[:, ::-1].T)  # as np.diff, without its per-call overhead
-    heading = np.append(heading, heading[0])
+    heading = np.concatenate([heading, heading[:1]])  # `np.append(heading, heading[0])`
     turns: np.ndarray = np.abs((heading[1:] - heading[:-1] + np.pi) % (2 * np.pi) - np.pi)
     return turns
 

@@ -202,7 +202,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
               point_balance(work, corners, turns))  # `CHECK_FEATURES`, in that order
     if polyline:
         out[list(CHECK_FEATURES)] = checks
-        if checked_point(np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
+        if checked_point(out if np.isfinite(out).all() else np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
             return None
         if ((len(corners) == 2 and bracket_marks.swung_tick(work, th, lobes, noise))
                 or (len(found_corners) <= 4 and bracket_marks.unhooked_point(work, found_corners, noise) is not None)):
