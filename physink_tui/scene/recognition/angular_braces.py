@@ -127,7 +127,7 @@ def _chord_layout(work: np.ndarray) -> bool:
     if any(len(arm) < 3 or not arm_heading_ok(arm, unit)
            or sg.path_length(arm) > ARM_INK * float(np.hypot(*(arm[-1] - arm[0]))) for arm in arms):
         return False
-    stand = [float(np.median(sign * (arm[:, 0] - start[0]) * unit[1] - sign * (arm[:, 1] - start[1]) * unit[0]))
+    stand = [float(sg.median(sign * (arm[:, 0] - start[0]) * unit[1] - sign * (arm[:, 1] - start[1]) * unit[0]))
              for arm in arms]
     return min(stand) >= ARM_OFF * chord and abs(depth) >= PAST_ARMS * max(stand)
 

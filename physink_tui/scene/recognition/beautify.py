@@ -188,14 +188,52 @@ def shape_points(g: Geometry, per_piece: int = 12) -> list[tuple[float, float]]:
                  g.center[1] + g.radius * math.sin(g.start_angle + g.sweep * k / per_piece))
                 for k in range(per_piece + 1)]
     if isinstance(g, Curve):
-        ctrl = np.asarray(g.control_points, dtype=float)
-        ts = np.linspace(0.0, 1.0, per_piece + 1)[:, None]
+        ctrl, pts = _curve_points(g, per_piece)
         out = [(float(ctrl[0][0]), float(ctrl[0][1]))]
-        at = np.arange(0, len(ctrl) - 3, 3)[:, None, None]  # every piece at once, each point as a piece at a time
-        p0, p1, p2, p3 = (ctrl[at + k, np.arange(2)] for k in range(4))
-        pts = (1 - ts) ** 3 * p0 + 3 * ts * (1 - ts) ** 2 * p1 + 3 * ts * ts * (1 - ts) * p2 + ts ** 3 * p3
-        out += map(tuple, pts[:, 1:].reshape(-1, 2).tolist())  # the same floats as float(x), float(y) a row
+        out += map(tuple, pts.tolist())  # the same floats as float(x), float(y) a row
         return out
     if isinstance(g, Helix):
         return [g.start, g.end]
     return [(float(p[0]), float(p[1])) for p in g.points]  # Polyline, Polygon
+
+
+def _curve_points(g: Curve, per_piece: int, pieces: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """A curve's control points as an array, and its `shape_points` after the first, as an array (rows of x, y); with
+    ``pieces`` (indices), those pieces' points only (each point is worked out alone: the same floats)."""
+    ctrl = np.asarray(g.control_points, dtype=float)
+    ts = np.linspace(0.0, 1.0, per_piece + 1)[:, None]
+    at = (np.arange(0, len(ctrl) - 3, 3) if pieces is None else 3 * pieces)[:, None, None]  # every piece at once
+    p0, p1, p2, p3 = (ctrl[at + k, np.arange(2)] for k in range(4))
+    pts = (1 - ts) ** 3 * p0 + 3 * ts * (1 - ts) ** 2 * p1 + 3 * ts * ts * (1 - ts) * p2 + ts ** 3 * p3
+    return ctrl, pts[:, 1:].reshape(-1, 2)
+
+
+def within(g: Geometry, lo: np.ndarray, hi: np.ndarray, per_piece: int = 12) -> bool:
+    """Whether every one of ``g``'s `shape_points` is finite and within the box from ``lo`` to ``hi`` (x, y each):
+    ``np.asarray(shape_points(g))`` tested against them, the same comparisons of the same floats, without making the
+    array. A curve whose control points lie within the box less a hair is within it (each Bézier piece lies in its
+    control points' hull; the hair, a billionth of the coordinates, is far more than the evaluation rounds by), a
+    circle or an ellipse whose bounding box does: neither is then evaluated."""
+    x0, y0, x1, y1 = float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])
+    hair = 1e-9 * (1.0 + max(abs(x0), abs(y0), abs(x1), abs(y1)))
+    if isinstance(g, Curve) and len(g.control_points) >= 4:
+        lo_x, lo_y, hi_x, hi_y = x0 + hair, y0 + hair, x1 - hair, y1 - hair
+        held = [lo_x <= float(x) <= hi_x and lo_y <= float(y) <= hi_y for x, y in g.control_points]
+        out = [k for k in range((len(held) - 1) // 3) if not all(held[3 * k:3 * k + 4])]  # (NaN is held by none)
+        if not out:
+            return True
+        ctrl, pts = _curve_points(g, per_piece, np.array(out))
+        if out[0] == 0:  # the first point too, as `shape_points` gives it
+            pts = np.concatenate([ctrl[:1], pts])
+        return bool(np.isfinite(pts).all() and (pts >= lo).all() and (pts <= hi).all())
+    if isinstance(g, Circle | Ellipse):
+        rx, ry, angle = (g.radius, g.radius, 0.0) if isinstance(g, Circle) else (g.rx, g.ry, g.angle)
+        c, s = math.cos(angle), math.sin(angle)
+        reach_x, reach_y = math.hypot(rx * c, ry * s), math.hypot(rx * s, ry * c)  # the outline's extent either way
+        cx, cy = float(g.center[0]), float(g.center[1])
+        slack = 1e-9 * (1.0 + abs(cx) + abs(cy) + abs(rx) + abs(ry))
+        if (x0 + hair <= cx - reach_x - slack and cx + reach_x + slack <= x1 - hair
+                and y0 + hair <= cy - reach_y - slack and cy + reach_y + slack <= y1 - hair):
+            return True
+    return all(math.isfinite(x) and math.isfinite(y) and x0 <= x <= x1 and y0 <= y <= y1
+               for x, y in ((float(p[0]), float(p[1])) for p in shape_points(g, per_piece)))

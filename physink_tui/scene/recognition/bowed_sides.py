@@ -27,6 +27,7 @@ import math
 import numpy as np
 
 from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import box_geometry
 from physink_tui.scene.recognition.candidates import Pending
 from physink_tui.scene.recognition.polygon_checks import BOW_SHARE, SHARP_CORNER, corner_roundness_closed, crossings
@@ -61,7 +62,7 @@ SIDES = (5, 6)
 
 def _area(ring: np.ndarray) -> float:
     x, y = ring[:, 0], ring[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    return 0.5 * float(np.dot(x, sg.succ(y)) - np.dot(y, sg.succ(x)))
 
 
 def _off_square(d: np.ndarray, e: np.ndarray) -> float:
@@ -132,7 +133,7 @@ def _bowed_box(fit: PolygonFit, first: int, parts: list[Part], loop_area: float,
     quad = np.array([q0, q1, q2, q3])
     if box_geometry(quad) is None:
         return None
-    sides = np.hypot(*(np.roll(quad, -1, axis=0) - quad).T)
+    sides = np.hypot(*(sg.succ(quad) - quad).T)
     if any(part[2] < STRAIGHT_SHARE * side for part, side in zip(parts, sides[:3], strict=True)):
         return None
     # the fourth side moved parallel to the chord, away from the second side or towards it, to keep the loop's area

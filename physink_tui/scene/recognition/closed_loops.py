@@ -265,7 +265,7 @@ def encloses(loop: np.ndarray) -> bool:
     """Whether a closed path encloses an area (`ENCLOSES`), not a sliver drawn out and back along itself."""
     length = sg.path_length(loop) + float(np.hypot(*(loop[-1] - loop[0])))
     x, y = loop[:, 0], loop[:, 1]
-    area = 0.5 * abs(float(x @ np.roll(y, -1) - y @ np.roll(x, -1)))
+    area = 0.5 * abs(float(x @ sg.succ(y) - y @ sg.succ(x)))
     return length > 0.0 and 4 * math.pi * area / (length * length) >= ENCLOSES
 
 

@@ -51,4 +51,4 @@ def slowed_at_corners(vertices: np.ndarray, drawn: np.ndarray, times: np.ndarray
     if times is None:
         return False
     pace = pace_at_vertices(vertices, drawn, times)
-    return pace is not None and float(np.median(pace)) < SLOW_CORNER
+    return pace is not None and sg.median(pace) < SLOW_CORNER

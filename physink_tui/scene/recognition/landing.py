@@ -27,11 +27,18 @@ DWELL_BREADTH = 0.4
 end goes out and back along one line, and stays (`stroke_geometry.remove_hooks` judges it)."""
 
 
+HEAD_POINTS = 16
+"""`_dwell` looks for the first point away among this many first: most strokes depart within them."""
+
+
 def _dwell(pts: np.ndarray, radius: float) -> int:
     """How many points from ``pts[0]`` on stay within ``radius`` of it, wandering there (`DWELL_PATH`), or 0."""
-    away = np.hypot(*(pts - pts[0]).T) > radius
-    if not away.any():
-        return 0
+    head = pts[:HEAD_POINTS] - pts[0]
+    away = np.hypot(head[:, 0], head[:, 1]) > radius  # where the first point away lies, as for most strokes
+    if not away.any():  # else every point, the same distances
+        away = np.hypot(*(pts - pts[0]).T) > radius
+        if not away.any():
+            return 0
     out = int(np.argmax(away))
     if out < DWELL_POINTS:
         return 0

@@ -102,7 +102,7 @@ def laid_out(work: np.ndarray) -> bool:
     if not SHORT_SLANT_DEG[0] <= slant <= SHORT_SLANT_DEG[1]:
         return False
     off_line = sign * across[on_spine]
-    stand = float(np.median(off_line))
+    stand = sg.median(off_line)
     if (stand < angular_braces.ARM_OFF * chord or float(off_line.min()) < SPINE_OFF * chord
             or abs(depth) < angular_braces.PAST_ARMS * stand):
         return False

@@ -112,7 +112,8 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
     if bow:  # else hooks are cut from one end or both already (`lines.unhooked`): the rest is judged as drawn
         coarse = sg.resample(sg.remove_hooks(coarse), n)
     _, direction, off = fit_line(coarse)
-    along = float(np.ptp(coarse @ direction)) or 1e-12  # the extent `fit_line`'s stray is a share of
+    on_line = coarse @ direction
+    along = float(on_line.max() - on_line.min()) or 1e-12  # (`np.ptp`) the extent `fit_line`'s stray is a share of
     length = sg.path_length(coarse)
     chord = float(np.hypot(*(coarse[-1] - coarse[0])))
     if chord == 0.0:

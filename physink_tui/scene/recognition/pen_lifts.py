@@ -58,7 +58,7 @@ def last_attempt(points: Sequence[Sequence[float]], times: Sequence[float] | Non
     diag = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
     if len(moving) < 4 or diag == 0.0:
         return None
-    jumps = np.flatnonzero((at[1:] - at[:-1] >= LIFT_PAUSE) & (steps >= LIFT_STEPS * float(np.median(moving)))
+    jumps = np.flatnonzero((at[1:] - at[:-1] >= LIFT_PAUSE) & (steps >= LIFT_STEPS * sg.median(moving))
                            & (steps >= LIFT_SHARE * diag))
     lifts = [int(j) for j in jumps]
     if not lifts:

@@ -28,7 +28,8 @@ def jitter(pts: np.ndarray) -> float:
     ok = norm > 0
     if np.count_nonzero(ok) < 3:
         return 0.0
-    t, d2, norm = t[ok], d2[ok], norm[ok]
+    if not ok.all():  # (where every step moves, the arrays as they are: the same numbers)
+        t, d2, norm = t[ok], d2[ok], norm[ok]
     # the bend across the path, d2 . (-t_y, t_x) / |t| (white noise: successive bends anticorrelated, var 6 s^2 each)
     bend = d2[:, 0] * (-t[:, 1] / norm) + d2[:, 1] * (t[:, 0] / norm)
     return float(1.4826 * median(np.abs(bend[1:] - bend[:-1])) / math.sqrt(20))

@@ -9,6 +9,7 @@ these a fit passes; `split_hairpins` turns each doubled-back vertex into that fl
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -54,11 +55,8 @@ def crossings(vertices: Sequence[tuple[float, float]] | np.ndarray) -> int:
     """How many times a closed outline's sides cross one another (a star drawn in one stroke: five times; a box
     whose hook's spike crosses a side: once)."""
     a = np.asarray(vertices, dtype=float)
-    b = np.roll(a, -1, axis=0)
-    m = len(a)
-    i, j = np.triu_indices(m, 2)
-    keep = ~((i == 0) & (j == m - 1))  # the last side meets the first at a vertex
-    i, j = i[keep], j[keep]
+    b = sg.succ(a)
+    i, j = _side_pairs(len(a))
 
     def side(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> np.ndarray:
         u, w = q - p, r - p
@@ -68,6 +66,18 @@ def crossings(vertices: Sequence[tuple[float, float]] | np.ndarray) -> int:
     apart_j = side(a[i], b[i], a[j]) * side(a[i], b[i], b[j]) < 0
     apart_i = side(a[j], b[j], a[i]) * side(a[j], b[j], b[i]) < 0
     return int(np.count_nonzero(apart_i & apart_j))
+
+
+@functools.lru_cache(maxsize=64)
+def _side_pairs(m: int) -> tuple[np.ndarray, np.ndarray]:
+    """The pairs of an ``m``-sided outline's sides that `crossings` tests: not neighbours (the same for every outline of
+    that many sides: made once, read only)."""
+    i, j = np.triu_indices(m, 2)
+    keep = ~((i == 0) & (j == m - 1))  # the last side meets the first at a vertex
+    i, j = i[keep], j[keep]
+    i.flags.writeable = False
+    j.flags.writeable = False
+    return i, j
 
 
 def overlap(a: Sequence[tuple[float, float]] | np.ndarray, b: Sequence[tuple[float, float]] | np.ndarray) -> float:
@@ -90,7 +100,7 @@ def follows_the_outline(corners: Sequence[tuple[float, float]] | np.ndarray, dra
     `OUTLINE_LEFT_OUT`)."""
     diag = float(np.hypot(*(drawn.max(axis=0) - drawn.min(axis=0))))
     a = np.asarray(corners, dtype=float)
-    b = np.roll(a, -1, axis=0)
+    b = sg.succ(a)
     ab = b - a
     rel = drawn[:, None, :] - a[None, :, :]  # each point against each side
     u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
@@ -127,7 +137,7 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: f
         return None
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     if closed:
-        heading = np.append(heading, heading[0])
+        heading = np.concatenate([heading, heading[:1]])  # `np.append(heading, heading[0])`
     degrees = np.degrees(np.abs((heading[1:] - heading[:-1] + np.pi) % (2 * np.pi) - np.pi))
     if len(degrees) and float(degrees.min()) < min_corner_deg:
         return None
@@ -270,7 +280,8 @@ def sharp_corners(fit: PolygonFit, step: float) -> bool:
     sides = np.diff(np.concatenate([verts, verts[:1]]), axis=0)
     roundness = corner_roundness_closed(fit)
     heading = np.arctan2(sides[:, 1], sides[:, 0])
-    turns = np.degrees(np.abs((heading - np.roll(heading, 1) + np.pi) % (2 * np.pi) - np.pi))  # at each vertex
+    before = np.concatenate([heading[-1:], heading[:-1]])  # `np.roll(heading, 1)`: the side before each vertex
+    turns = np.degrees(np.abs((heading - before + np.pi) % (2 * np.pi) - np.pi))  # at each vertex
     shallow = turns < MIN_CORNER_DEG
     round_ones = int(np.count_nonzero(roundness >= SHARP_CORNER))
     return round_ones <= (1.0 - SHARP_SHARE) * len(roundness) and bool((roundness[shallow] < SHARP_CORNER).all())

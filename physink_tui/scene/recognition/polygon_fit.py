@@ -97,16 +97,23 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
     n = len(pts)
     chosen = [0, n - 1]
     heap: list[tuple[float, int, int, int]] = []
+    xs, ys = pts[:, 0].copy(), pts[:, 1].copy()  # each column once, contiguous
+    x, y = xs.tolist(), ys.tolist()  # and as Python floats: the same numbers
 
     def push(a: int, b: int) -> None:
         if b - a < 2:
             return
-        rel = pts[a + 1:b + 1] - pts[a]
-        d, rel = rel[-1], rel[:-1]  # the chord, and the points between its ends
-        norm = float(np.hypot(d[0], d[1]))
-        dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]) / norm if norm > 0 else np.hypot(rel[:, 0], rel[:, 1])
-        k = int(dist.argmax())
-        far = float(dist[k])
+        # the points between the chord's ends less its start, and the chord: ``pts[a + 1:b] - pts[a]`` and
+        # ``pts[b] - pts[a]`` a column at a time, the same subtractions
+        xa, ya = x[a], y[a]
+        dx, dy = x[b] - xa, y[b] - ya
+        norm = float(np.hypot(dx, dy))
+        k, far = _farthest(x, y, a, b, dx, dy, norm) if b - a <= SHORT_RUN and norm > 0 else (-1, math.nan)
+        if k < 0:  # a long run (or a NaN, or a chord of nothing): numpy's, the same arithmetic
+            rx, ry = xs[a + 1:b] - xa, ys[a + 1:b] - ya
+            dist = np.abs(rx * dy - ry * dx) / norm if norm > 0 else np.hypot(rx, ry)
+            k = int(dist.argmax())
+            far = float(dist[k])
         if far > tolerance:
             heapq.heappush(heap, (-far, a + 1 + k, a, b))
 
@@ -117,6 +124,27 @@ def _douglas_peucker(pts: np.ndarray, tolerance: float, limit: int) -> list[int]
         push(a, k)
         push(k, b)
     return chosen
+
+
+SHORT_RUN = 24
+"""`_douglas_peucker` measures a run of up to this many points one point at a time in Python floats (numpy's per-call
+cost is more than the arithmetic on so few)."""
+
+
+def _farthest(x: list[float], y: list[float], a: int, b: int, dx: float, dy: float, norm: float) -> tuple[int, float]:
+    """Which point strictly between ``a`` and ``b`` lies farthest from the chord (``dx``, ``dy``: from ``a`` to ``b``,
+    ``norm`` its length, not 0), and how far: ``np.abs(rx * dy - ry * dx) / norm`` and its first greatest, a point at a
+    time (each operation alone, rounded as numpy rounds it); (-1, nan) where a distance is NaN (numpy's argmax takes
+    the first NaN: left to it)."""
+    xa, ya = x[a], y[a]
+    best, far = -1, -1.0
+    for m in range(a + 1, b):
+        d = abs((x[m] - xa) * dy - (y[m] - ya) * dx) / norm
+        if d > far:
+            best, far = m - a - 1, d
+        elif d != d:
+            return -1, math.nan
+    return best, far
 
 
 def line_costs(pts: np.ndarray, cand: np.ndarray, sums: np.ndarray | None = None) -> np.ndarray:
@@ -174,7 +202,7 @@ def best_polygons(pts: np.ndarray, *, closed: bool, max_sides: int, tolerance: f
         start = int(np.argmax(np.hypot(*(pts - centre).T)))
         fits: dict[int, list[PolygonFit]] = {}
         for attempt in range(2):
-            loop = np.concatenate([np.roll(pts, -start, axis=0), pts[start:start + 1]])
+            loop = np.concatenate([pts[start:], pts[:start], pts[start:start + 1]])  # rolled to start there
             found = _chains(loop, max_sides, tolerance, closed=True)
             for k, fit in found.items():
                 if k >= 3:
@@ -194,7 +222,7 @@ def _turns(pts: np.ndarray, indices: tuple[int, ...]) -> np.ndarray:
     """Turning (radians, absolute) at each inner index of a closed chain, and at its start last."""
     verts = pts[list(indices)]
     heading = np.arctan2(*(verts[1:] - verts[:-1])[:, ::-1].T)  # as np.diff, without its per-call overhead
-    heading = np.append(heading, heading[0])
+    heading = np.concatenate([heading, heading[:1]])  # `np.append(heading, heading[0])`
     turns: np.ndarray = np.abs((heading[1:] - heading[:-1] + np.pi) % (2 * np.pi) - np.pi)
     return turns
 
@@ -250,7 +278,7 @@ def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, re
     idx = np.asarray(indices)
     a, b = idx[:-1], idx[1:]
     size = b - a + 1
-    trim = np.where(size >= 6, size // 6, 0)
+    trim = size // 6  # none under six points (as ``np.where(size >= 6, size // 6, 0)``: a run has two or more)
     centres, dirs = run_lines(pts, a + trim, b + 1 - trim, sums)
     chords = np.hypot(*(pts[b] - pts[a]).T)
     runs = len(a)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from physink_tui.scene.recognition.beautify import shape_points
+from physink_tui.scene.recognition.beautify import shape_points, within
 from physink_tui.scene.recognition.candidates import Candidate, Pending
 from physink_tui.scene.recognition.polygon_checks import follows_the_outline
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
@@ -51,9 +51,12 @@ upright sides by up to 20 degrees (a parallelogram sheared so, squared, pokes ou
 its aspect; at `BOUNDS_MARGIN` a box sheared by more than about 11 degrees fell back to the quad drawn)."""
 
 def bounds(raw: np.ndarray, noise: float, diag: float, share: float = BOUNDS_MARGIN,
-            ) -> tuple[np.ndarray, np.ndarray]:
+           extent: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The stroke's bounding box grown by ``share`` of its diagonal and the noise; ``extent``: ``raw``'s least and
+    greatest x and y, where already found."""
     margin = share * diag + noise
-    return raw.min(axis=0) - margin, raw.max(axis=0) + margin
+    low, high = (raw.min(axis=0), raw.max(axis=0)) if extent is None else extent
+    return low - margin, high + margin
 
 
 def bic_score(c: Candidate | Pending, n: int, sigma: float, weights: Weights) -> float:
@@ -73,9 +76,10 @@ def rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weight
     for c in candidates:
         if math.isfinite(c.rss):
             heapq.heappush(heap, (bic_score(c, n, sigma, weights), len(heap), c))
-    lo, hi = bounds(raw, noise, diag)
-    round_lo, round_hi = bounds(raw, noise, diag, round_share)
-    box_lo, box_hi = bounds(raw, noise, diag, BOX_MARGIN)
+    extent = raw.min(axis=0), raw.max(axis=0)  # found once for the three
+    lo, hi = bounds(raw, noise, diag, extent=extent)
+    round_lo, round_hi = bounds(raw, noise, diag, round_share, extent)
+    box_lo, box_hi = bounds(raw, noise, diag, BOX_MARGIN, extent)
     kept: list[tuple[float, Candidate]] = []
     seq = len(heap)
     while heap:
@@ -118,10 +122,8 @@ CONFIDENCE_SCALE = 6.0
 
 
 def inside(g: Geometry | None, lo: np.ndarray, hi: np.ndarray) -> bool:
-    if g is None:
-        return False
-    pts = np.asarray(shape_points(g), dtype=float)
-    return bool(np.isfinite(pts).all() and (pts >= lo).all() and (pts <= hi).all())
+    """Whether the shape ``g`` stays within the box from ``lo`` to ``hi`` (each of its `shape_points`: `within`)."""
+    return g is not None and within(g, lo, hi)
 
 
 FREEFORM_CONFIDENCE = 0.3

@@ -24,6 +24,7 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon as ShapelyPolygon
 
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Box, Recognition
 
 CORNER_REACH = 0.78
@@ -41,7 +42,7 @@ def smallest_rectangle(loop: np.ndarray) -> tuple[np.ndarray, float, np.ndarray,
     if not isinstance(hull, ShapelyPolygon) or hull.area <= 0.0:
         return None
     ring = np.asarray(hull.exterior.coords)[:-1]
-    edges = np.roll(ring, -1, axis=0) - ring
+    edges = sg.succ(ring) - ring
     angles = np.mod(np.arctan2(edges[:, 1], edges[:, 0]), math.pi / 2)
     c, s = np.cos(angles), np.sin(angles)
     along = ring[None, :, 0] * c[:, None] + ring[None, :, 1] * s[:, None]  # edges by hull points

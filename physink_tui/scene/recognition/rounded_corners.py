@@ -29,6 +29,7 @@ import math
 import numpy as np
 
 from physink_tui.scene.recognition import quads
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import box_geometry, shape_points
 from physink_tui.scene.recognition.candidates import Pending
 from physink_tui.scene.recognition.polygon_checks import (
@@ -126,7 +127,7 @@ def lines_meet(p: np.ndarray, d: np.ndarray, q: np.ndarray, e: np.ndarray) -> np
 
 def _inside(points: np.ndarray, corners: np.ndarray) -> np.ndarray:
     """Whether each point lies inside the convex outline through ``corners``."""
-    a, b = corners, np.roll(corners, -1, axis=0)
+    a, b = corners, sg.succ(corners)
     cross = ((b - a)[None, :, 0] * (points[:, None, 1] - a[None, :, 1])
              - (b - a)[None, :, 1] * (points[:, None, 0] - a[None, :, 0]))
     return np.asarray((cross >= 0).all(axis=1) | (cross <= 0).all(axis=1))
@@ -134,7 +135,7 @@ def _inside(points: np.ndarray, corners: np.ndarray) -> np.ndarray:
 
 def _gaps(points: np.ndarray, corners: np.ndarray) -> np.ndarray:
     """Each point's distance to each side of the closed outline through ``corners`` (points by sides)."""
-    a, b = corners, np.roll(corners, -1, axis=0)
+    a, b = corners, sg.succ(corners)
     ab = b - a
     rel = points[:, None, :] - a[None, :, :]
     u = np.clip((rel * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300), 0.0, 1.0)
@@ -185,7 +186,7 @@ def box_of(fit: PolygonFit, kept: tuple[int, ...], loop: np.ndarray, noise: floa
     box = box_geometry(quad)
     if box is None:
         return None
-    sides = np.hypot(*(np.roll(quad, -1, axis=0) - quad).T)
+    sides = np.hypot(*(sg.succ(quad) - quad).T)
     if any(part[2] < STRAIGHT_SHARE * side for part, side in zip(lines, sides, strict=True)):
         return None
     ring = pts[:-1]  # the loop from the fit's start, not repeated

@@ -152,7 +152,7 @@ def side_bow(work: np.ndarray, corners: list[int]) -> float:
         m = (a + b) // 2
         if m > a and b > m:
             halves.append(max(sg.chord_deviation(work[a:m + 1]), sg.chord_deviation(work[m:b + 1])))
-    return min(float(np.median(halves)), 1.0) if halves else 0.0
+    return min(sg.median(np.asarray(halves, dtype=float)), 1.0) if halves else 0.0
 
 
 def as_curve(found: Recognition, unit: np.ndarray, views: StrokeViews | None = None) -> Recognition:
