@@ -26,6 +26,7 @@ from physink_tui.scene.recognition import (
     angular_braces,
     bowed_sides,
     closed_loops,
+    dented_spines,
     hooked_ticks,
     landing,
     loop_ends,
@@ -229,6 +230,7 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     if (not learned or wavy or chain is not None or tick is not None
             or open_shapes.straight_armed_mark(result, pts, noise)
             or round_brackets.kept_bracket(result, unit, unit_noise, views)
+            or dented_spines.kept_bracket(result, unit, unit_noise, views, (origin, scale))
             or angular_braces.kept_brace(result, unit, unit_noise, views)
             or lopsided_braces.kept_brace(result, unit, unit_noise, views)
             or square_braces.kept_brace(result, unit, unit_noise, views)):
