@@ -155,8 +155,10 @@ MOST_BURSTS = 8
 BURST_ROUND = 0.05
 """The stroke's own points (not the chords between them) miss the ellipse fitted to them by at most this (normalised
 RMS radial error, `shape_fits.fit_ellipse`)."""
-BURST_SWEEP = 1.25 * math.pi
-"""... and go round its centre one way by at least this much, ..."""
+BURST_SWEEP = 1.5 * math.pi
+"""... and go round its centre one way by at least this much (the pen models' small parentheses through the mouse,
+whose few bursts an ellipse fits, go round one 227-247 degrees; their whole notes that the rule reads round, 244-411,
+five of 129 under 270: tuning seeds), ..."""
 BURST_GAP = 0.75 * math.pi
 """... leaving no gap round it wider than this."""
 
