@@ -22,6 +22,7 @@ from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+import bench_bracket_habits
 from bench_circle_gestures import EXPECTED, drawn, reading
 
 Points = list[tuple[float, float]]
@@ -72,7 +73,7 @@ def test_a_c_or_a_u_with_a_flick_stays_open(turn: float) -> None:
 
 @pytest.mark.parametrize(("family", "seed"), [
     ("whole-note-closed", 2), ("whole-note-closed", 10), ("whole-note-closed", 11),
-    ("whole-note-open", 0), ("whole-note-open", 2), ("whole-note-open", 3)])
+    ("whole-note-open", 0), ("whole-note-open", 2), ("whole-note-open", 9)])
 def test_a_whole_note_through_a_busy_mouse_reads_round(family: str, seed: int) -> None:
     """A 20-40 px note the mouse sampled in 3-7 bursts of events (main 0ca43a2: a polygon or a polyline of the chords
     between bursts)."""
@@ -101,3 +102,14 @@ def test_bursts_round_an_ellipse_but_not_a_square_at_its_corners() -> None:
     assert recognize_stroke(square).kind == "box"
     dense = _bursts(_square, [k / 40 for k in range(41)], 0.02)  # no jumps: a box drawn slowly
     assert pen_noise.round_in_bursts(np.array(dense), sg.bbox_diagonal(np.array(dense))) is None
+
+
+@pytest.mark.parametrize("family", ["small-bracket", "bowed-spine-bracket", "mouse-rounded-bracket"])
+def test_a_square_bracket_through_a_busy_mouse_stays_a_polyline(family: str) -> None:
+    """An ellipse fits a small bracket's few bursts of events and goes round them by up to 265 degrees (tuning seeds):
+    open, a stroke in bursts must go round 300 (`pen_noise.BURST_SWEEP_OPEN`); at 225 these read 32 ellipses."""
+    for seed in range(30):
+        stroke = bench_bracket_habits.drawn(family, "hurried-mouse", seed)
+        for timed in (True, False):
+            assert recognize_stroke([p[:2] for p in stroke], [p[2] for p in stroke] if timed else None).kind \
+                == "polyline", (seed, timed)

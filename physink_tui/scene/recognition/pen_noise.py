@@ -159,14 +159,18 @@ BURST_SWEEP = 1.5 * math.pi
 """... and go round its centre one way by at least this much (the pen models' small parentheses through the mouse,
 whose few bursts an ellipse fits, go round one 227-247 degrees; their whole notes that the rule reads round, 244-411,
 five of 129 under 270: tuning seeds), ..."""
+BURST_SWEEP_OPEN = 5 / 3 * math.pi
+"""... by this much where the stroke was not closed (`recognize._open_reading`): the pen models' square brackets through
+the mouse go round their points' ellipse by up to 265 degrees (tuning seeds), their open whole notes 244-340."""
 BURST_GAP = 0.75 * math.pi
 """... leaving no gap round it wider than this."""
 
 
-def round_in_bursts(pts: np.ndarray, diag: float) -> EllipseFit | None:
+def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP) -> EllipseFit | None:
     """The ellipse of a stroke whose points come in a few bursts joined by long jumps (`BURST_JUMP`, `BURST_PATH`,
     `MOST_BURSTS`: a busy mouse's events, whose chords are the device's, not the hand's path) and lie on an ellipse
-    (`BURST_ROUND`) going round it one way (`BURST_SWEEP`, `BURST_GAP`); else None."""
+    (`BURST_ROUND`) going round it one way by ``sweep`` radians or more, no gap round it wider than `BURST_GAP`; else
+    None."""
     if len(pts) < 8 or diag <= 0:
         return None
     d = pts[1:] - pts[:-1]
@@ -182,8 +186,8 @@ def round_in_bursts(pts: np.ndarray, diag: float) -> EllipseFit | None:
     c, s = math.cos(angle), math.sin(angle)
     at = np.arctan2((-rel[:, 0] * s + rel[:, 1] * c) / ry, (rel[:, 0] * c + rel[:, 1] * s) / rx)
     moved = (at[1:] - at[:-1] + math.pi) % (2 * math.pi) - math.pi
-    sweep = abs(float(moved.sum()))
-    if sweep < BURST_SWEEP or sweep < 0.9 * float(np.abs(moved).sum()):
+    went = abs(float(moved.sum()))
+    if went < sweep or went < 0.9 * float(np.abs(moved).sum()):
         return None  # not round one way
     around = np.sort(at % (2 * math.pi))
     gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
