@@ -11,6 +11,7 @@ import numpy as np
 
 from physink_tui.scene.recognition import shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 HOOK_SHARE = 0.08
@@ -18,6 +19,9 @@ HOOK_SHARE = 0.08
 path; a question mark's or a pigtail's tail is a third or more)."""
 HOOK_TURN = math.radians(45.0)
 """... and turns off the round path's own steady turning by at least this much in all."""
+ROUGH_SHARE = 0.6
+"""`round_flicked` fits nothing to a rest whose own turning (on ``work``'s points) is under this share of the turn it
+must make on its coarse turning (a quick refusal; the coarse turning of a round rest is within a few degrees of it)."""
 HOOK_DONE = 0.85
 """Where the flick begins: the first point from the end at which its turn off the path has reached this share of all
 it turns (`stroke_geometry._hook_end`'s rule)."""
@@ -58,8 +62,10 @@ def round_flicked(work: np.ndarray, th: np.ndarray, noise: float, fits: Callable
     (`without_flicks`), where the rest is a round shape left open: it turns ``min_turn`` radians or more, smoothly
     (`stroke_features.turn_concentration` under ``smooth``) and one way, and ``fits`` (an ellipse fit -> bool) says an
     ellipse fits it; else None."""
+    if float(np.abs(th).sum()) < min_turn:
+        return None  # turns too little in all for any part of it to go round (most open strokes: asked no more)
     rest = without_flicks(work, th)
-    if rest is None or len(rest) < 16:
+    if rest is None or len(rest) < 16 or abs(float(sg.turning(rest).sum())) < ROUGH_SHARE * min_turn:
         return None
     coarse = shape_turning.coarse_turning(rest, noise)
     turned = abs(float(coarse.sum()))
