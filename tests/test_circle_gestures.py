@@ -43,7 +43,7 @@ HELD_FLOORS: dict[str, dict[str, int]] = {
     "whole-note-closed": {**_ALL, "hurried-mouse": 34},
     "whole-note-closed-hooked": {**_ALL, "hurried-mouse": 38},
     "whole-note-open": {**_ALL, "hurried": 54, "hurried-sparse": 54, "hurried-mouse": 24},
-    "whole-note-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 56, "hurried-mouse": 20},
+    "whole-note-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 54, "hurried-mouse": 20},
     "whole-note-over": {**_ALL, "hurried-mouse": 32},
     "whole-note-over-hooked": {**_ALL, "hurried-mouse": 34},
 }

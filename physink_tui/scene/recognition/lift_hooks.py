@@ -41,8 +41,8 @@ def without_flicks(work: np.ndarray, th: np.ndarray) -> np.ndarray | None:
     # the round path's own turning a step just inside each end (an oval turns faster at its tips than along its sides)
     start = _flick(th[:k] - float(np.mean(th[k:2 * k])))
     end = _flick(th[::-1][:k] - float(np.mean(th[::-1][k:2 * k])))
-    if start == 0 and end == 0:
-        return None
+    if start == 0 and end == 0 or start + end > k:
+        return None  # no flick; or flicks at both ends together longer than one may be (a small parenthesis' hooks)
     return work[start:n - end]
 
 
