@@ -16,7 +16,8 @@ from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
 HOOK_SHARE = 0.08
 """A flick at an end is at most this share of the stroke's path (a hook a tenth of a circle's size is 3 % of its
-path; a question mark's or a pigtail's tail is a third or more)."""
+path; a question mark's or a pigtail's tail is a third or more), and so are both ends' flicks together (a small
+parenthesis hooked where the pen landed and where it lifted, 11 % of its path, is no circle once both are cut)."""
 HOOK_TURN = math.radians(45.0)
 """... and turns off the round path's own steady turning by at least this much in all."""
 ROUGH_SHARE = 0.6
@@ -41,7 +42,7 @@ def without_flicks(work: np.ndarray, th: np.ndarray) -> np.ndarray | None:
     # the round path's own turning a step just inside each end (an oval turns faster at its tips than along its sides)
     start = _flick(th[:k] - float(np.mean(th[k:2 * k])))
     end = _flick(th[::-1][:k] - float(np.mean(th[::-1][k:2 * k])))
-    if start == 0 and end == 0 or start + end > k:
+    if (start == 0 and end == 0) or start + end > k:
         return None  # no flick; or flicks at both ends together longer than one may be (a small parenthesis' hooks)
     return work[start:n - end]
 
