@@ -33,9 +33,14 @@ ROOT = Path(__file__).resolve().parents[1]
 MODES = ("as drawn", "200 points")
 
 
-def strokes(paths: list[Path], fourth: bool = False) -> list[tuple[str, list[list[float]], list[float] | None, str]]:
-    """Each kept single-stroke sample as (set, points, times or None, where: its person, file and label), the held-back
-    groups left out (the fourth too unless ``fourth``)."""
+def strokes(paths: list[Path], fourth: bool = False) -> list[tuple[str, list[list[float]], list[float] | None]]:
+    """Each kept single-stroke sample as (set, points, times or None), the held-back groups left out (the fourth too
+    unless ``fourth``)."""
+    return [(source, points, times) for source, points, times, _ in _kept(paths, fourth)]
+
+
+def _kept(paths: list[Path], fourth: bool = False) -> list[tuple[str, list[list[float]], list[float] | None, str]]:
+    """`strokes`, each with where it is from: its person, file and label (for ``--list``)."""
     from bench_generalisation import held_back_set, is_held_back_new
     from stroke_sets import read_set, source_of
 
@@ -76,7 +81,7 @@ def worker(paths: list[Path], out: Path, auto: bool = False, fourth: bool = Fals
 
     with out.open("w", encoding="utf-8") as f:
         f.write(json.dumps({"package": __import__("physink_tui").__file__}) + "\n")
-        for _, points, times, _ in strokes(paths, fourth):
+        for _, points, times in strokes(paths, fourth):
             f.write(json.dumps(_plain(recognize_stroke(points, times))) + "\n")
             pts = np.asarray(points, dtype=float)
             when = np.asarray(times, dtype=float) if times is not None else np.arange(len(pts)) / 100.0
@@ -125,7 +130,7 @@ def main() -> None:
         return
     from bench_side_by_side import export
 
-    kept = strokes(args.sets, args.fourth)
+    kept = _kept(args.sets, args.fourth)
     sets, wheres = [s for s, _, _, _ in kept], [w for _, _, _, w in kept]
     with tempfile.TemporaryDirectory() as tmp:
         base = run(export(args.baseline, Path(tmp)), args.sets, Path(tmp) / "baseline.jsonl", fourth=args.fourth)
