@@ -1,7 +1,7 @@
 """Benchmark: whether this tree reads strokes exactly as another revision does: a speed change must change no reading.
 
 Usage: .venv/bin/python benchmarks/compare_readings.py SET [SET ...] [--baseline main] [--tolerance 0] [--noise auto]
-       [--fourth]
+       [--fourth] [--list]
 
 Every single-stroke sample of each SET (a .jsonl file or a folder `stroke_sets` reads) is recognised twice by each
 tree: as recorded (times in seconds where the set has them, as `bench_generalisation` passes them) and resampled to
@@ -36,6 +36,11 @@ MODES = ("as drawn", "200 points")
 def strokes(paths: list[Path], fourth: bool = False) -> list[tuple[str, list[list[float]], list[float] | None]]:
     """Each kept single-stroke sample as (set, points, times or None), the held-back groups left out (the fourth too
     unless ``fourth``)."""
+    return [(source, points, times) for source, points, times, _ in _kept(paths, fourth)]
+
+
+def _kept(paths: list[Path], fourth: bool = False) -> list[tuple[str, list[list[float]], list[float] | None, str]]:
+    """`strokes`, each with where it is from: its person, file and label (for ``--list``)."""
     from bench_generalisation import held_back_set, is_held_back_new
     from stroke_sets import read_set, source_of
 
@@ -49,7 +54,8 @@ def strokes(paths: list[Path], fourth: bool = False) -> list[tuple[str, list[lis
             stroke = row["strokes"][0]
             times = ([p[2] / 1000 for p in stroke] if stroke and all(len(p) > 2 and p[2] is not None for p in stroke)
                      else None)
-            out.append((str(row["source"]), [[float(v) for v in p[:2]] for p in stroke], times))
+            where = f"{source_of(row, 'person')} {row.get('file', '')} \"{row.get('label', '')}\""
+            out.append((str(row["source"]), [[float(v) for v in p[:2]] for p in stroke], times, where))
     return out
 
 
@@ -116,6 +122,7 @@ def main() -> None:
                     help="auto: this tree reads with noise=None (judged from the stroke)")
     ap.add_argument("--fourth", action="store_true",
                     help="read the fourth group's sets too (opened as design material; the third and fifth never)")
+    ap.add_argument("--list", action="store_true", help="name every stroke whose kind differs, and both kinds")
     ap.add_argument("--worker", type=Path, help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.worker is not None:
@@ -123,17 +130,22 @@ def main() -> None:
         return
     from bench_side_by_side import export
 
-    sets = [s for s, _, _ in strokes(args.sets, args.fourth)]
+    kept = _kept(args.sets, args.fourth)
+    sets, wheres = [s for s, _, _, _ in kept], [w for _, _, _, w in kept]
     with tempfile.TemporaryDirectory() as tmp:
         base = run(export(args.baseline, Path(tmp)), args.sets, Path(tmp) / "baseline.jsonl", fourth=args.fourth)
         this = run(ROOT, args.sets, Path(tmp) / "this.jsonl", args.noise == "auto", args.fourth)
     if len(base) != len(this) or len(base) != len(MODES) * len(sets):
         raise SystemExit(f"{len(base)} baseline readings, {len(this)} here, for {len(sets)} strokes")
     total, kind, any_diff = Counter(), Counter(), Counter()
+    changed: list[str] = []
     for i, (a, b) in enumerate(zip(base, this, strict=True)):
         key = (sets[i // len(MODES)], MODES[i % len(MODES)])
         total[key] += 1
         kind[key] += (a or {}).get("kind") != (b or {}).get("kind")
+        if args.list and (a or {}).get("kind") != (b or {}).get("kind"):
+            changed.append(f"- {key[0]} {wheres[i // len(MODES)]} ({key[1]}): {(a or {}).get('kind')} -> "
+                           f"{(b or {}).get('kind')}")
         any_diff[key] += not _close(a, b, args.tolerance)
     print(f"Readings of this tree (noise: {args.noise}) against {args.baseline} (geometry tolerance "
           f"{args.tolerance:g}):\n")
@@ -141,6 +153,8 @@ def main() -> None:
     for key in sorted(total):
         print(f"| {key[0]} | {key[1]} | {total[key]} | {kind[key]} | {any_diff[key]} |")
     print(f"| all | both | {sum(total.values())} | {sum(kind.values())} | {sum(any_diff.values())} |")
+    if changed:
+        print("\nKinds changed (set, person, file, label, mode: baseline -> this tree):\n" + "\n".join(changed))
     if sum(any_diff.values()):
         raise SystemExit(1)
 

@@ -46,7 +46,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    not a box the size of the stem). A circle rounded off from an egg-shaped loop that pokes out of the bounds gives way
    to the ellipse drawn (`Candidate.fallback` again), and a loop about as wide as long turning smoothly all round (under
    `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
-   (`closed_loops.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners.
+   (`closed_loops.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners;
+   a loop whose points come in three to eight bursts joined by long jumps and lie on an ellipse, going round it one
+   way (`pen_noise.round_in_bursts`: a busy mouse's events round a small note), is offered no polygon at all.
    A short side where the outline turns back sharply at one end and gently at the other, its neighbours' far ends
    apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
    winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
@@ -97,7 +99,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    a few pixels is a fifth of its size; a pigtail's tails cross).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse; or fitting one once a lead from inside or an end curled in
-   past the start, lying inside it, is cut: `round_cores`), a polyline (straight sides, or bowed sides meeting at
+   past the start, lying inside it, is cut: `round_cores`; or once a flick where the pen lifted or landed, at most
+   8 % of the path turning 45 degrees or more off the round path's own turning, is cut: `lift_hooks`; or whose points
+   a busy mouse sent in a few bursts lie on an ellipse going round it: `pen_noise.round_in_bursts`), a polyline
+   (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
    curve's, but three straight sides turning one way, a square bracket, may round theirs,
    `open_shapes._rounded_bracket`; with two or more corners, no main side bowed like a quarter circle,

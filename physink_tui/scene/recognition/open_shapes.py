@@ -17,6 +17,7 @@ import numpy as np
 from physink_tui.scene.recognition import (
     angular_braces,
     bracket_marks,
+    lift_hooks,
     lines,
     lopsided_braces,
     open_marks,
@@ -180,8 +181,9 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         return bracket_found[0]
 
     smooth = concentration < SMOOTH  # a polyline turning the same way at sharp corners is not round
-    if (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
-            and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum())):
+    round_enough = (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
+                    and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()))
+    if round_enough:
         # most of a turn, smoothly: a round shape left open (people often stop short of the start); not a bracket
         # rounded at both corners, which turns that far only with its hooks and has a straight spine
         open_ellipse = fit_ellipse(work)
@@ -195,6 +197,12 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if core is not None and rounded_bracket() is None:
             geom, kind = round_geometry(core)
             return Recognition(kind, 0.65, geom, (("curve", 0.5),))
+    flicked = None if round_enough else lift_hooks.round_flicked(
+        work, th, noise, lambda e: e[4] < 0.6 * round_error(e, noise), NEARLY_ROUND * math.pi, SMOOTH)
+    if flicked is not None and rounded_bracket() is None:
+        # a round stroke left open that flicks off its path where the pen lifted (or landed): round without the flick
+        geom, kind = round_geometry(flicked)
+        return Recognition(kind, 0.65, geom, (("curve", 0.5),))
     roundness = sf.corner_roundness(work, corners, th=th)
     sharp = (_roundest_corner(th, corners, roundness) <= round_corner or _rounded_bracket(corners, straight_runs, lobes)
              or _short_bend(work, corners, roundness, lobes))

@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 from physink_tui.scene.recognition.stroke_geometry import bbox_diagonal, median
 
 
@@ -141,3 +142,54 @@ def turns_at_every_event(pts: np.ndarray, diag: float) -> bool:
     if not 1.5 * math.pi <= abs(float(signed.sum())) <= 2.6 * math.pi or float(turn.sum()) > 2.75 * math.pi:
         return False  # not once round one way: a star (twice round) or a figure eight
     return bool(np.mean(turn >= 0.5 * turn.mean()) >= EVEN_TURNS)
+
+
+
+BURST_JUMP = 4.0
+"""A step between bursts of events (`round_in_bursts`) is at least this many times the stroke's median step..."""
+BURST_JUMP_SHARE = 0.08
+"""... and this share of its diagonal."""
+BURST_PATH = 0.6
+"""Such jumps are at least this share of the path (the pen's path between bursts is not known)."""
+MOST_BURSTS = 8
+"""... and at most this many: a round shape sampled in a few bursts."""
+BURST_ROUND = 0.05
+"""The stroke's own points (not the chords between them) miss the ellipse fitted to them by at most this (normalised
+RMS radial error, `shape_fits.fit_ellipse`)."""
+BURST_SWEEP = 1.5 * math.pi
+"""... and go round its centre one way by at least this much (the pen models' small parentheses through the mouse,
+whose few bursts an ellipse fits, go round one 227-247 degrees; their whole notes that the rule reads round, 244-411,
+five of 129 under 270: tuning seeds), ..."""
+BURST_SWEEP_OPEN = 5 / 3 * math.pi
+"""... by this much where the stroke was not closed (`recognize._open_reading`): the pen models' square brackets through
+the mouse go round their points' ellipse by up to 265 degrees (tuning seeds), their open whole notes 244-340."""
+BURST_GAP = 0.75 * math.pi
+"""... leaving no gap round it wider than this."""
+
+
+def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP) -> EllipseFit | None:
+    """The ellipse of a stroke whose points come in a few bursts joined by long jumps (`BURST_JUMP`, `BURST_PATH`,
+    `MOST_BURSTS`: a busy mouse's events, whose chords are the device's, not the hand's path) and lie on an ellipse
+    (`BURST_ROUND`) going round it one way by ``sweep`` radians or more, no gap round it wider than `BURST_GAP`; else
+    None."""
+    if len(pts) < 8 or diag <= 0:
+        return None
+    d = pts[1:] - pts[:-1]
+    step = np.hypot(d[:, 0], d[:, 1])
+    jumps = step >= max(BURST_JUMP * median(step), BURST_JUMP_SHARE * diag)
+    if not 3 <= int(jumps.sum()) <= MOST_BURSTS or float(step[jumps].sum()) < BURST_PATH * float(step.sum()):
+        return None
+    ellipse = fit_ellipse(pts)
+    if ellipse is None or not ellipse[4] <= BURST_ROUND or not (ellipse[1] > 0 and ellipse[2] > 0):
+        return None
+    centre, rx, ry, angle, _ = ellipse
+    rel = pts - np.asarray(centre)
+    c, s = math.cos(angle), math.sin(angle)
+    at = np.arctan2((-rel[:, 0] * s + rel[:, 1] * c) / ry, (rel[:, 0] * c + rel[:, 1] * s) / rx)
+    moved = (at[1:] - at[:-1] + math.pi) % (2 * math.pi) - math.pi
+    went = abs(float(moved.sum()))
+    if went < sweep or went < 0.9 * float(np.abs(moved).sum()):
+        return None  # not round one way
+    around = np.sort(at % (2 * math.pi))
+    gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
+    return ellipse if float(gaps.max()) <= BURST_GAP else None

@@ -47,7 +47,7 @@ from physink_tui.scene.recognition import (
 )
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry, x_symbol
+from physink_tui.scene.recognition.beautify import curve_geometry, round_geometry, scale_geometry, x_symbol
 from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
 from physink_tui.scene.recognition.coils import COILED, helix_or_scribble
 from physink_tui.scene.recognition.primitives import Line, Polygon, Recognition
@@ -336,12 +336,13 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     # shallow inner corners no polygon fit passes, or whose points are more than `candidates.MAX_SIDES` can follow)
     never_round = closed_loops.no_round_shape(loop, noise, ellipse)
     lumpy = not never_round and closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
-    # a lumpy circle's lumps are not sides
-    sided = [p for p in polygons if p.params < 2 * closed_loops.LUMPY_SIDES] if lumpy else polygons
+    # a lumpy circle's lumps are not sides, nor are the chords between a busy mouse's bursts of events round a loop
+    in_bursts = not never_round and pen_noise.round_in_bursts(raw, diag) is not None
+    sided = [] if in_bursts else [p for p in polygons if p.params < 2 * closed_loops.LUMPY_SIDES] if lumpy else polygons
     round_fit = None if never_round else round_shape(loop, ellipse)
     candidates: list[Candidate | Pending | None] = [*sided, round_fit]
     ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
-                   round_share=OPEN_ROUND_MARGIN if lumpy else BOUNDS_MARGIN)
+                   round_share=OPEN_ROUND_MARGIN if lumpy or in_bursts else BOUNDS_MARGIN)
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times,
                                     corners_told)
@@ -368,6 +369,11 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
     if found.kind == "polyline" and square_braces.square_brace(raw, noise, views):
         # a brace drawn square-cornered, whose small point these coarse points smoothed away
         found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
+    if round_too and found.kind not in ("circle", "ellipse"):
+        bursts = pen_noise.round_in_bursts(raw, diag, pen_noise.BURST_SWEEP_OPEN)
+        if bursts is not None:  # a round stroke left open, sampled in a few bursts: its chords are the device's
+            geom, kind = round_geometry(bursts)
+            found = Recognition(kind, 0.65, geom, ((str(found.kind), 0.35),))
     round_left_open = found.kind in ("circle", "ellipse")
     if round_left_open and not round_too:  # a loop the pen ran on off: a curve round it and away
         return Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), ((str(found.kind), 0.3),))
