@@ -18,6 +18,10 @@ way round, and changes one thing about it:
   first: the two sides cross at the corner as an X;
 - ``start-short-run-past`` (session 27, tutorboard seed90210's triangle #309): the pen lands 0.1-0.35 along the first
   side and the last side runs 10-30 % past the corner, so the end passes the start outside the triangle;
+- ``start-short-overshoot`` (session 28, tutorboard seed90210's triangle #309 measured again: the pen lands 0.18 along
+  the first side, and the last side runs on past the corner by 0.43 of its length up to it): the pen lands 0.1-0.35
+  along the first side and the last side runs 30-70 % past the corner, its end far from the start and not pointing
+  home;
 - ``start-mid-side``: the pen starts 0.2-0.8 along a side and stops within 5 % of that side of the start;
 - ``first-side-redrawn``: the pen runs 0.2-0.6 along the first side, back to the corner and along it again;
 - ``start-inside``: the pen lands 0.05-0.25 along the first side, 5-12 % of the shortest side off it.
@@ -104,6 +108,12 @@ def start_short_run_past(rng: random.Random) -> Path:
                     _along(c[2], c[0], 1.0 + rng.uniform(0.1, 0.3))])
 
 
+def start_short_overshoot(rng: random.Random) -> Path:
+    c = _corners(rng)
+    return _placed([_along(c[0], c[1], rng.uniform(0.1, 0.35)), c[1], c[2],
+                    _along(c[2], c[0], 1.0 + rng.uniform(0.3, 0.7))])
+
+
 def start_mid_side(rng: random.Random) -> Path:
     c = _corners(rng)
     f = rng.uniform(0.2, 0.8)
@@ -126,8 +136,8 @@ def start_inside(rng: random.Random) -> Path:
 FAMILIES: dict[str, Callable[[random.Random], Path]] = {
     "plain": plain, "gap-at-close": gap_at_close, "start-short": start_short, "tail-past-close": tail_past_close,
     "crossing-close": crossing_close, "both-ends-past": both_ends_past, "start-short-run-past": start_short_run_past,
-    "start-mid-side": start_mid_side, "first-side-redrawn": first_side_redrawn,
-    "start-inside": start_inside,
+    "start-short-overshoot": start_short_overshoot, "start-mid-side": start_mid_side,
+    "first-side-redrawn": first_side_redrawn, "start-inside": start_inside,
 }
 """Every family, by name; each is read as a polygon (benchmarks/label_kinds.tsv: a triangle is a polygon)."""
 

@@ -112,7 +112,8 @@ def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = 
         if ((turned >= LEFT_OPEN_TURN or abs(sides_turning(work[corners])) >= LEFT_OPEN_TURN)
                 and len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
                 and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
-                and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners))):
+                and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners)
+                     or sf.ran_through_first_corner(work, corners))):
             return LeftOpen.SIDES
     if many_sided_left_open(work, length):
         return LeftOpen.MANY_SIDES

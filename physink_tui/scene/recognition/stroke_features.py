@@ -112,6 +112,31 @@ def heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) ->
     return angle(work[-1] - work[corners[-2]]) <= max_deg or first <= max_deg or first >= 180.0 - max_deg
 
 
+RUN_PAST_START = 0.45
+"""The pen landed up to this share of the first side along it from the polygon's first corner, the corner its last
+side ran through (`ran_through_first_corner`; `penmodels.triangle_habits`' start-short families land 0.1-0.45 along)."""
+
+
+def ran_through_first_corner(work: np.ndarray, corners: list[int]) -> bool:
+    """Whether the last side ran through the polygon's first corner and on past it, the pen having landed up to
+    `RUN_PAST_START` along the first side: the first side's line, drawn back from the start, meets the last side's
+    line within the last side as drawn, in its second half (the run past the corner no longer than the side up to it).
+    Such an end, however far it ran, need not point home nor come back near the start, as `heading_home` and `closure`
+    ask (quickdraw's triangles begun along a side and overshot at the close: tutorboard seed90210 #309)."""
+    if len(corners) < 4:
+        return False
+    p, q = work[0], work[corners[1]]
+    a, b = work[corners[-2]], work[-1]
+    r, s = q - p, b - a
+    den = float(r[0] * s[1] - r[1] * s[0])
+    if abs(den) < 1e-12:
+        return False
+    w = a - p
+    t = float(w[0] * s[1] - w[1] * s[0]) / den  # along the first side from the start (0) to its corner (1)
+    u = float(w[0] * r[1] - w[1] * r[0]) / den  # along the last side from its corner (0) to the end (1)
+    return -RUN_PAST_START / (1.0 - RUN_PAST_START) <= t <= 0.0 and 0.5 <= u <= 1.0
+
+
 def closure(work: np.ndarray, diag: float) -> float:
     """How nearly the stroke returns to its start, over its size: the gap between its ends, or, for a
     stroke drawn past its start (or started before it), twice the closest approach of one end to
