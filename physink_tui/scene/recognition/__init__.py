@@ -138,16 +138,19 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
    of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).
-   Bends too round to be found on the wave's 128 points are looked for on the rules' 64 (an S drawn slowly), and a
-   curve the rules read that is such a wave (two bends found in a row the same way taken as one round bend, unless
-   together they turn a half turn: an arrow's barb) is not asked of the ranker either (`waves.kept_curve`).
+   Bends too round to be found on the wave's 128 points are looked for on the rules' 64 (an S drawn slowly; both its
+   bends round there, `waves.ROUND_S_ROUNDNESS`), and a curve the rules read that is such a wave (two bends found in
+   a row the same way taken as one round bend, unless together they turn a half turn: an arrow's barb), its longest
+   side between bends curving (a radical with a start hook has a straight rise), is not asked of the ranker either
+   (`waves.kept_curve`).
    Any other curve, line or polyline so read that, looked at on points 1.5 of the pen's noise widths apart, is a
    chain of four or more sharp corners joined by straight sides that repeat (a staircase, a square wave, a zig-zag,
    however small its steps against the stroke) is a polyline through those corners (`stairs`), not asked either.
    A square bracket with both corners rounded off (a long straight spine, a straight arm at each end, each joined to
    it by a bend of about a right angle, 120-215 degrees in all (a mouse's wrist splays the arms), the spine with no
    brace's point in its middle, judged without a hook where the pen landed or lifted) is
-   a polyline with its corners where its sides meet (`round_brackets`), not an ellipse left open; a brace drawn as
+   a polyline with its corners where its sides meet (`round_brackets`), not an ellipse left open, and the rules'
+   square bracket whose spine turns back toward its opening halfway is kept so (`dented_spines`); a brace drawn as
    straight runs between cusps (running along its ends' line on one side of it, its arms parallel to it and off it,
    its point about halfway sticking out past them) is not a polyline (`angular_braces`), nor is a lopsided brace
    whose short half runs straight from its point back to its end (a bracket's square end and spine on the long half,
@@ -214,6 +217,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   judged at its sides' scale, read as a polyline through its corners
 - `round_brackets.py`: a square bracket whose two corners a hand rounded off, read as the bracket (a polyline),
   judged without the pen's hooks at its ends, the same whichever end it was drawn from
+- `dented_spines.py`: the rules' square bracket whose spine dents, bulges or steps back toward the opening about
+  halfway (a brace's point turns with its curls instead), kept from the learned ranker
+- `lift_hooks.py`: a round stroke left open whose end flicks off where the pen lifted or landed, judged round without
+  the flick
 - `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), or askew (laid out against its
   arms' own line), read as a brace (a curve)
 - `lopsided_braces.py`: a lopsided curly brace whose short half is a straight slant back from its point, its long
