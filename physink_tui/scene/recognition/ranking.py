@@ -17,7 +17,7 @@ from physink_tui.scene.recognition.beautify import shape_points, within
 from physink_tui.scene.recognition.candidates import Candidate, Pending
 from physink_tui.scene.recognition.polygon_checks import follows_the_outline
 from physink_tui.scene.recognition.polygon_fit import candidate_vertices
-from physink_tui.scene.recognition.primitives import Geometry, Line, Polygon, Polyline, Recognition
+from physink_tui.scene.recognition.primitives import Ellipse, Geometry, Line, Polygon, Polyline, Recognition
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,9 +92,10 @@ def rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weight
                 heapq.heappush(heap, (bic_score(built, n, sigma, weights), seq, built))
         elif not inside(c.geometry, *((round_lo, round_hi) if c.kind == "ellipse" else
                                       (box_lo, box_hi) if c.kind == "box" else (lo, hi))):
-            if c.fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
+            fallback = c.fallback if c.kind != "ellipse" else long_ellipse_as_drawn(c, raw)
+            if fallback is not None:  # the quad drawn, where squaring it into a box pokes out of the stroke
                 seq += 1
-                heapq.heappush(heap, (score, seq, c.fallback))
+                heapq.heappush(heap, (score, seq, fallback))
         elif keeps_the_outline(c, raw if fitted is None else fitted):
             kept.append((score, c))
     if not kept:
@@ -107,6 +108,29 @@ def rank(candidates: Sequence[Candidate | Pending], n: int, sigma: float, weight
     best = kept[0][1]
     alternatives = tuple((k, round(w / total, 4)) for k, w in weight.items() if k != best.kind)
     return Recognition(best.kind, round(weight[best.kind] / total, 4), best.geometry, alternatives[:3])
+
+
+LONG_ELLIPSE = 2.5
+"""An ellipse this many times as long as it is wide is a long one (`long_ellipse_as_drawn`)."""
+END_SLIDE = 0.15
+"""How far (a share of its half-length) a long ellipse's fit may have slid or grown past the stroke's own ends."""
+
+
+def long_ellipse_as_drawn(c: Candidate, raw: np.ndarray) -> Candidate | None:
+    """A long ellipse ``c`` whose ends the fit put past the stroke's (a hand draws one end blunter or more pointed
+    than an ellipse's, and the fit slides along the long axis towards the blunt end): the same ellipse, its long
+    axis spanning the stroke's extent along it, at most `END_SLIDE` of its half-length away; None for any other."""
+    g = c.geometry
+    if not isinstance(g, Ellipse) or g.rx < LONG_ELLIPSE * g.ry:
+        return None
+    axis = np.array([math.cos(g.angle), math.sin(g.angle)])
+    along = (raw - np.asarray(g.center)) @ axis
+    lo, hi = float(along.min()), float(along.max())
+    if max(abs(lo + g.rx), abs(hi - g.rx)) > END_SLIDE * g.rx:
+        return None
+    mid = 0.5 * (lo + hi)
+    centre = (g.center[0] + mid * axis[0], g.center[1] + mid * axis[1])
+    return Candidate(c.kind, Ellipse(centre, 0.5 * (hi - lo), g.ry, g.angle), c.rss, c.params)
 
 
 def keeps_the_outline(c: Candidate, drawn: np.ndarray) -> bool:
