@@ -161,21 +161,40 @@ def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: f
             if (side[s] < SPUR * longer and ends[1] > SPUR_TURN_DEG and ends[0] < 90.0
                     and float(np.hypot(*(corners[(s - 1) % m] - corners[(s + 2) % m]))) > shorter):
                 return None  # a hook: the pen doubled back and went on round (a thin box's end is no hook)
-    if _bowed(pts, np.asarray(idx), lengths, noise, fit.sums):
+    if _bowed(pts, np.asarray(idx), lengths, noise, fit.sums, closed):
         return None
     return Corners(tuple(hairpins), corners)
 
 
+FEW_POINTS = 16
+THIN_END = 0.2
+"""A closed outline's side of fewer than `FEW_POINTS` points and under this share of both sides beside it (a thin
+shape's end: a box 5 or more times as long as wide, `penmodels.box_habits` ``thin``) is judged for a bow without the
+points at its two corners (`_bowed`): smoothing rounds a corner over its own point, and two such points are more than
+the fifth of a short end's points a bow may leave out (TutorBoard's captured 8:1 rectangle #95: its 9-point ends
+straight, both corner points 0.01-0.03 of its size off them, ends 0.10-0.13 of its long sides). A round end (a
+stadium's) stays bowed without them; a side nearer its neighbours' length, or of more points, is judged whole (an egg's
+blunt end cut as a pentagon's short side still bows: the captured ellipse #72; hcira shriyansnidhish s02's brace drawn
+twice over, resampled to 200 points, has curled ends 0.24 of its sides that a box would square)."""
+
+
 def _bowed(pts: np.ndarray, idx: np.ndarray, chords: np.ndarray, noise: float,
-           sums: np.ndarray | None = None) -> bool:
+           sums: np.ndarray | None = None, closed: bool = False) -> bool:
     """Whether a side's points stray from the side's own line: four in five of them by more than `BOW_SHARE`
     of its length plus twice the noise (a hook is a few points; a short side's bow is only where its corners'
-    points fell, so sides under 10 noise widths or 6 points are not judged)."""
+    points fell, so sides under 10 noise widths or 6 points are not judged, and a thin outline's end of few points
+    without its corners' own: `THIN_END`)."""
     a, b = idx[:-1], idx[1:]
     judged = (b - a > 5) & (chords > 10 * noise)
     if not judged.any():
         return False
-    a, b, chords = a[judged], b[judged], chords[judged]
+    few = judged & (b - a < FEW_POINTS)
+    if closed and len(chords) >= 4 and few.any():
+        beside = np.minimum(np.concatenate([chords[-1:], chords[:-1]]), sg.succ(chords))  # the shorter neighbour
+        end = (few & (chords < THIN_END * beside))[judged]
+        a, b, chords = a[judged] + end, b[judged] - end, chords[judged]
+    else:
+        a, b, chords = a[judged], b[judged], chords[judged]
     centres, dirs = run_lines(pts, a, b + 1, sums)
     sizes = b - a + 1
     run = np.repeat(np.arange(len(a)), sizes)
