@@ -14,11 +14,6 @@ import math
 
 import numpy as np
 
-try:  # `np.interp`'s compiled core, which it calls on real points without a period once it has checked their type
-    from numpy._core.multiarray import interp as _interp
-except ImportError:  # another numpy: the public function, the same numbers
-    _interp = np.interp
-
 MAX_WORKING_POINTS = 4000
 """Longer strokes are thinned by arc length first, so recognition time stays bounded."""
 
@@ -76,8 +71,8 @@ def resample(pts: np.ndarray, n: int) -> np.ndarray:
         return np.repeat(pts[:1], max(n, 1), axis=0)
     targets = spaced(float(total), n)
     out = np.empty((n, 2))
-    out[:, 0] = _interp(targets, cum, pts[:, 0])  # (``np.interp``'s own numbers: float points, no period)
-    out[:, 1] = _interp(targets, cum, pts[:, 1])
+    out[:, 0] = np.interp(targets, cum, pts[:, 0])
+    out[:, 1] = np.interp(targets, cum, pts[:, 1])
     return out
 
 
@@ -109,6 +104,23 @@ def turning(pts: np.ndarray) -> np.ndarray:
     heading = np.arctan2(d[:, 1], d[:, 0])
     dth: np.ndarray = heading[1:] - heading[:-1]
     return (dth + np.pi) % (2 * np.pi) - np.pi
+
+
+def line_meet(p: np.ndarray, r: np.ndarray, q: np.ndarray, s: np.ndarray,
+              min_sine: float = 1e-9) -> tuple[np.ndarray, float, float] | None:
+    """Where the line ``p + t r`` meets the line ``q + u s``: ``(point, t, u)``, each parameter in [0, 1] within the
+    segment its line spans from ``p`` to ``p + r`` (``q`` to ``q + s``); None where the lines are parallel, the sine of
+    the angle between them ``min_sine`` or less (or a direction has no length).
+
+    >>> line_meet(np.array([0.0, 0.0]), np.array([2.0, 0.0]), np.array([1.0, -1.0]), np.array([0.0, 4.0]))
+    (array([1., 0.]), 0.5, 0.25)
+    """
+    den = float(r[0] * s[1] - r[1] * s[0])
+    if abs(den) <= min_sine * math.hypot(float(r[0]), float(r[1])) * math.hypot(float(s[0]), float(s[1])):
+        return None
+    w = q - p
+    t = float(w[0] * s[1] - w[1] * s[0]) / den
+    return p + t * r, t, float(w[0] * r[1] - w[1] * r[0]) / den
 
 
 _DIRECTIONS = np.array([[math.cos(a), math.sin(a)] for a in np.linspace(0.0, math.pi, 32, endpoint=False)])
