@@ -107,9 +107,11 @@ def turning(pts: np.ndarray) -> np.ndarray:
     the stroke turns round it (`_turn_back`), so a stroke and its mirror image turn by opposite angles."""
     d = pts[1:] - pts[:-1]
     heading = np.arctan2(d[:, 1], d[:, 0])
-    dth: np.ndarray = heading[1:] - heading[:-1]
-    th: np.ndarray = (dth + np.pi) % (2 * np.pi) - np.pi
-    if len(th) and th.min() == -np.pi:
+    th: np.ndarray = heading[1:] - heading[:-1]
+    th += np.pi  # ``(dth + pi) % (2 pi) - pi`` to the bit, in place
+    np.remainder(th, 2 * np.pi, out=th)
+    th -= np.pi
+    if len(th) and np.minimum.reduce(th) == -np.pi:  # (`.min()`'s own reduction, without its per-call overhead)
         _turn_back(th)
     return th
 
