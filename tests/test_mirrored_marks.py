@@ -169,3 +169,23 @@ def test_mouse_braces_read_alike_mirrored_turned_and_reversed() -> None:
             if len(set(kinds.values())) > 1:
                 changed.append((family, seed, kinds))
     assert len(changed) <= MOUSE_ASYMMETRY_MOST, changed
+
+
+def test_a_turn_straight_back_turns_opposite_ways_mirrored_and_reversed() -> None:
+    """`stroke_geometry.turning` wraps an exact turn back to -180 degrees whichever way round it comes: it takes the
+    sign of the turns beside it (session 29), so a stroke mirrored or drawn from its other end turns by the opposite
+    angles, the turn back too; a stroke that turns nowhere else keeps -180."""
+    pts = np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.5], [1.0, 0.0], [0.0, 1.0], [-1.0, 1.5]])
+    th = sg.turning(pts)
+    assert abs(th[1]) == np.pi
+    np.testing.assert_allclose(sg.turning(pts * [-1.0, 1.0]), -th, atol=1e-12)
+    np.testing.assert_allclose(sg.turning(pts[::-1].copy())[::-1], -th, atol=1e-12)
+    assert list(sg.turning(np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 0.0]]))) == [-np.pi]
+
+
+def test_a_tiny_mouse_brace_reads_alike_mirrored_and_upside_down() -> None:
+    """brace_habits square-cornered through the tiny mouse, tuning seed 9: a curve as drawn, a polyline mirrored, upside
+    down and reversed on 821c642, its pixel retrace at the point turning -180 degrees every way (the ranker's net turn
+    1.0 as drawn, 0.0 mirrored); a curve all four ways with the turn back turning as the stroke does."""
+    stroke = drawn("square-cornered", "left-down", "hurried-tiny", 9)
+    assert {way: _kind(make(stroke)) for way, make in WAYS.items()} == dict.fromkeys(WAYS, "curve")

@@ -232,7 +232,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the
   tenth the rules cut as one), read as a tick (a polyline)
 - `stroke_geometry.py`: resampling, smoothing, turning angles, rotation-invariant size, ShortStraw/IStraw corners,
-  hooks, small loops at corners
+  hooks, where two lines meet (`line_meet`)
+- `small_loops.py`: small loops at corners (the path crossing itself), cut out before the coil test
 - `shape_turning.py`: turning at the shape's scale, on steps a few noise widths long (`coarse_turning`,
   `turning_beyond_tremor`)
 - `stroke_views.py`: one stroke's resampled, smoothed and hook-cut copies that the checks after the rules (waves,

@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Arc, Box, Circle, Curve, Ellipse, Geometry, Helix, Line, XSymbol
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_cubic
 
@@ -124,21 +125,19 @@ def x_symbol(a: Line, b: Line) -> tuple[XSymbol, float] | None:
     perpendicular (thesis 3.2.1): ``(symbol, confidence)`` or None."""
     p, r = np.array(a.start), np.array(a.end) - np.array(a.start)
     q, s = np.array(b.start), np.array(b.end) - np.array(b.start)
-    denom = r[0] * s[1] - r[1] * s[0]
-    la, lb = float(np.hypot(*r)), float(np.hypot(*s))
-    if denom == 0.0 or la == 0.0 or lb == 0.0:
-        return None
-    t = ((q - p)[0] * s[1] - (q - p)[1] * s[0]) / denom
-    u = ((q - p)[0] * r[1] - (q - p)[1] * r[0]) / denom
+    met = sg.line_meet(p, r, q, s)
+    if met is None:
+        return None  # parallel (or a line of no length); lines this near parallel fail the angle test below anyway
+    centre, t, u = met
     if not (0.0 <= t <= 1.0 and 0.0 <= u <= 1.0):
         return None
+    la, lb = float(np.hypot(*r)), float(np.hypot(*s))
     mid_gap = float(np.hypot(*((p + r / 2) - (q + s / 2))))
     if mid_gap > 0.4 * (la + lb) / 2:
         return None
     angle = math.degrees(math.acos(min(1.0, abs(float(r @ s)) / (la * lb))))
     if angle < 45.0:
         return None
-    centre = p + t * r
     confidence = 0.5 + 0.5 * min(1.0, (angle - 45.0) / 40.0) * (1.0 - mid_gap / (0.4 * (la + lb) / 2))
     return XSymbol(_pt(centre), a, b), confidence
 

@@ -11,6 +11,7 @@ from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import helix_geometry
 from physink_tui.scene.recognition.primitives import Recognition
+from physink_tui.scene.recognition.small_loops import remove_small_loops
 
 COILED = 3.5 * math.pi
 """A stroke turning this far one way in all (radians) may be a spring: more than once round and most of a second."""
@@ -22,11 +23,11 @@ their turning in the sharpest fifth)."""
 def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
                       th: np.ndarray | None = None) -> Recognition | None:
     """A spring (loops advancing along an axis, turning smoothly, `COILED` far without its small loops:
-    `stroke_geometry.remove_small_loops`) or a scribble back and forth, else None (``th``: the path's turning,
+    `small_loops.remove_small_loops`) or a scribble back and forth, else None (``th``: the path's turning,
     `stroke_geometry.turning`, where already measured)."""
     th = sg.turning(work) if th is None else th
     total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
-    if abs(total_turn) > COILED and abs(float(sg.turning(sg.remove_small_loops(work)).sum())) > COILED:
+    if abs(total_turn) > COILED and abs(float(sg.turning(remove_small_loops(work)).sum())) > COILED:
         # a finger's or pen's small loop where it landed or lifted (or at a corner) is no loop of the spring
         coil = sg.resample(sg.remove_hooks(work), n)
         coil_turn = sg.turning(coil)

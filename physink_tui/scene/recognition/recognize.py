@@ -62,6 +62,7 @@ from physink_tui.scene.recognition.ranking import (
 )
 from physink_tui.scene.recognition.round_or_cornered import cornered_after_all
 from physink_tui.scene.recognition.shape_fits import fit_ellipse
+from physink_tui.scene.recognition.small_loops import remove_small_loops
 from physink_tui.scene.recognition.stroke_views import StrokeViews
 
 TOO_SHORT = "too short to recognise"
@@ -310,7 +311,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     special = helix_or_scribble(work, n, diag, sg.path_length(work), th)
     if special is not None:
         return special
-    work = sg.resample(sg.remove_small_loops(work), n)  # loops at corners are flourishes, not coils
+    work = sg.resample(remove_small_loops(work), n)  # loops at corners are flourishes, not coils
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     corners_told = False  # a polygon left open whose rounded corners its turning tells (`shape_corners`)

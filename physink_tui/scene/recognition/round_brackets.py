@@ -115,15 +115,6 @@ def _flat_end(run: list[float], start: int = 0) -> int:
     return len(run) - start
 
 
-def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
-    """Where the line through ``p`` along ``u`` meets the line through ``q`` along ``v`` (None when parallel)."""
-    cross = float(u[0] * v[1] - u[1] * v[0])
-    if abs(cross) < 1e-9:
-        return None
-    w = q - p
-    return p + u * float(w[0] * v[1] - w[1] * v[0]) / cross
-
-
 def _side(pts: np.ndarray, drawn: np.ndarray, lo: int, hi: int) -> tuple[np.ndarray, np.ndarray]:
     """A straight run's line, from its segments ``[lo, hi)``: through their points' centroid along their median
     heading (``drawn``: each segment's heading, radians; a bend's few segments at its ends do not tilt it)."""
@@ -228,7 +219,8 @@ def rounded_bracket(work: np.ndarray, lobes: list[float],
     spine_line = _side(pts, drawn, a, b)
     corners = []
     for (lo_seg, hi_seg), bend_mid in (((0, first), (first + a) // 2), ((n - last, n), (b + n - last) // 2)):
-        at = _meet(*_side(pts, drawn, lo_seg, hi_seg), *spine_line)
+        met = sg.line_meet(*_side(pts, drawn, lo_seg, hi_seg), *spine_line)
+        at = None if met is None else met[0]
         if at is None or (at < lo - margin).any() or (at > hi + margin).any():
             at = pts[bend_mid]
         corners.append(at)

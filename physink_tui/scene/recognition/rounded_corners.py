@@ -118,11 +118,8 @@ def straight_part(run: np.ndarray, noise: float) -> Part | None:
 
 def lines_meet(p: np.ndarray, d: np.ndarray, q: np.ndarray, e: np.ndarray) -> np.ndarray | None:
     """Where the line through ``p`` along ``d`` meets the line through ``q`` along ``e`` (None where parallel)."""
-    det = float(e[0] * d[1] - d[0] * e[1])
-    if abs(det) < 1e-9:
-        return None
-    t = float(e[0] * (q - p)[1] - (q - p)[0] * e[1]) / det
-    return p + t * d
+    met = sg.line_meet(p, d, q, e)
+    return None if met is None else met[0]
 
 
 def _inside(points: np.ndarray, corners: np.ndarray) -> np.ndarray:

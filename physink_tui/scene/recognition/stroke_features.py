@@ -125,15 +125,11 @@ def ran_through_first_corner(work: np.ndarray, corners: list[int]) -> bool:
     ask (quickdraw's triangles begun along a side and overshot at the close: tutorboard seed90210 #309)."""
     if len(corners) < 4:
         return False
-    p, q = work[0], work[corners[1]]
-    a, b = work[corners[-2]], work[-1]
-    r, s = q - p, b - a
-    den = float(r[0] * s[1] - r[1] * s[0])
-    if abs(den) < 1e-12:
+    p, a = work[0], work[corners[-2]]
+    met = sg.line_meet(p, work[corners[1]] - p, a, work[-1] - a)
+    if met is None:
         return False
-    w = a - p
-    t = float(w[0] * s[1] - w[1] * s[0]) / den  # along the first side from the start (0) to its corner (1)
-    u = float(w[0] * r[1] - w[1] * r[0]) / den  # along the last side from its corner (0) to the end (1)
+    _, t, u = met  # t along the first side from the start (0) to its corner (1), u the last from its corner to the end
     return -RUN_PAST_START / (1.0 - RUN_PAST_START) <= t <= 0.0 and 0.5 <= u <= 1.0
 
 

@@ -9,13 +9,12 @@ beyond the pen's tremor, is `shape_turning`'s.
 
 from __future__ import annotations
 
-import functools
 import math
 
 import numpy as np
 
 try:  # `np.interp`'s compiled core, which it calls on real points without a period once it has checked their type
-    from numpy._core.multiarray import interp as _interp
+    from numpy._core.multiarray import interp as _interp  # (tests/test_private_interp.py: still there, same numbers)
 except ImportError:  # another numpy: the public function, the same numbers
     _interp = np.interp
 
@@ -104,11 +103,46 @@ def smooth(pts: np.ndarray, passes: int = 2) -> np.ndarray:
 
 
 def turning(pts: np.ndarray) -> np.ndarray:
-    """Signed turning angle at each interior vertex (radians, wrapped to -pi..pi)."""
+    """Signed turning angle at each interior vertex (radians, wrapped to -pi..pi); a step straight back turns the way
+    the stroke turns round it (`_turn_back`), so a stroke and its mirror image turn by opposite angles."""
     d = pts[1:] - pts[:-1]
     heading = np.arctan2(d[:, 1], d[:, 0])
-    dth: np.ndarray = heading[1:] - heading[:-1]
-    return (dth + np.pi) % (2 * np.pi) - np.pi
+    th: np.ndarray = heading[1:] - heading[:-1]
+    th += np.pi  # ``(dth + pi) % (2 pi) - pi`` to the bit, in place
+    np.remainder(th, 2 * np.pi, out=th)
+    th -= np.pi
+    if len(th) and np.minimum.reduce(th) == -np.pi:  # (`.min()`'s own reduction, without its per-call overhead)
+        _turn_back(th)
+    return th
+
+
+def _turn_back(th: np.ndarray) -> None:
+    """Give each exact turn back (wrapped to -pi whichever way a mirror image turns) the sign of the turns next to it,
+    else of the stroke's other turns, in place: -pi only where nothing else turns (a line drawn back over itself)."""
+    back = th == -np.pi
+    rest = np.where(back, 0.0, th)
+    total = float(rest.sum())
+    for k in np.flatnonzero(back):
+        way = float(rest[max(int(k) - 1, 0)] + (rest[k + 1] if k + 1 < len(th) else 0.0)) or total
+        if way > 0.0:
+            th[k] = np.pi
+
+
+def line_meet(p: np.ndarray, r: np.ndarray, q: np.ndarray, s: np.ndarray,
+              min_sine: float = 1e-9) -> tuple[np.ndarray, float, float] | None:
+    """Where the line ``p + t r`` meets the line ``q + u s``: ``(point, t, u)``, each parameter in [0, 1] within the
+    segment its line spans from ``p`` to ``p + r`` (``q`` to ``q + s``); None where the lines are parallel, the sine of
+    the angle between them ``min_sine`` or less (or a direction has no length).
+
+    >>> line_meet(np.array([0.0, 0.0]), np.array([2.0, 0.0]), np.array([1.0, -1.0]), np.array([0.0, 4.0]))
+    (array([1., 0.]), 0.5, 0.25)
+    """
+    den = float(r[0] * s[1] - r[1] * s[0])
+    if abs(den) <= min_sine * math.hypot(float(r[0]), float(r[1])) * math.hypot(float(s[0]), float(s[1])):
+        return None
+    w = q - p
+    t = float(w[0] * s[1] - w[1] * s[0]) / den
+    return p + t * r, t, float(w[0] * r[1] - w[1] * r[0]) / den
 
 
 _DIRECTIONS = np.array([[math.cos(a), math.sin(a)] for a in np.linspace(0.0, math.pi, 32, endpoint=False)])
@@ -332,52 +366,6 @@ def _hook_end(th_head: np.ndarray, min_turn_deg: float) -> int | None:
     if peak < min_turn_deg:
         return None
     return int(np.argmax(cum >= 0.85 * peak))
-
-
-def remove_small_loops(pts: np.ndarray, max_fraction: float = 0.08, max_size: float = 0.08) -> np.ndarray:
-    """Cut out small loops where the path crosses itself within ``max_fraction`` of its points and the
-    loop spans at most ``max_size`` of the stroke's size (a pen circling at a corner), keeping the
-    crossing point; big loops (a pigtail's, a spring's) stay."""
-    n = len(pts)
-    if n < 8:
-        return pts
-    span = max(3, int(max_fraction * n))
-    i, j = _pairs(n, span)
-    step = pts[1:] - pts[:-1]
-    p, r = pts[i], step[i]
-    q, s = pts[j], step[j]
-    denom = r[:, 0] * s[:, 1] - r[:, 1] * s[:, 0]
-    qp = q - p
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = (qp[:, 0] * s[:, 1] - qp[:, 1] * s[:, 0]) / denom
-        u = (qp[:, 0] * r[:, 1] - qp[:, 1] * r[:, 0]) / denom
-    hit = (denom != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)
-    if not hit.any():
-        return pts
-    diag = bbox_diagonal(pts)
-    keep = np.ones(n, dtype=bool)
-    out = pts.copy()
-    for k in np.flatnonzero(hit)[np.argsort(i[hit], kind="stable")]:
-        a, b = int(i[k]), int(j[k])
-        if not keep[a] or not keep[b]:
-            continue
-        loop = pts[a + 1:b + 1]
-        if bbox_diagonal(loop) > max_size * diag:
-            continue  # a real loop (a pigtail's, a spring's), not a flourish at a corner
-        out[a + 1] = p[k] + t[k] * r[k]  # the crossing point replaces the loop
-        keep[a + 2:b + 1] = False
-    return out[keep]
-
-
-@functools.lru_cache(maxsize=64)
-def _pairs(n: int, span: int) -> tuple[np.ndarray, np.ndarray]:
-    """The segments (i, j) of an ``n``-point path that `remove_small_loops` tests for crossing: j - i from 2 to
-    ``span``, by gap then by i (the same for every stroke of that many points: made once, read only)."""
-    i = np.concatenate([np.arange(0, n - 1 - gap) for gap in range(2, span + 1)])
-    j = np.concatenate([np.arange(gap, n - 1) for gap in range(2, span + 1)])
-    i.flags.writeable = False
-    j.flags.writeable = False
-    return i, j
 
 
 def median(values: np.ndarray) -> float:
