@@ -193,3 +193,35 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP) ->
     around = np.sort(at % (2 * math.pi))
     gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
     return ellipse if float(gaps.max()) <= BURST_GAP else None
+
+
+def turn_at_events(pts: np.ndarray, diag: float) -> float | None:
+    """Where ``pts`` are a few events far apart (`SPARSE_STEP_OF_DIAGONAL`: a tablet's event every 15-30 ms under a
+    small stroke drawn fast, 7-16 events round a whole note), the share of its turning done at its sharpest fifth of
+    events (a fifth rounded up: at least two of them); else None. A round stroke so sampled turns at every event, by
+    more where the device happened to leave a longer gap (uneven sampling); the chords between them are the device's,
+    so a turning resampled along them (`stroke_features.turn_concentration`) takes each event for a corner. A bracket
+    or a tick so sampled turns at its two or three corners alone.
+
+    >>> a = np.linspace(0, 1.6 * np.pi, 9)
+    >>> round(turn_at_events(np.column_stack([np.cos(a), np.sin(a)]), 2.8), 2)
+    0.29
+    >>> turn_at_events(np.array([[3, 0], [0, 0], [0, 2], [0, 4], [0, 6], [3, 6.]]), 6.7)
+    1.0
+    """
+    if len(pts) < 5 or diag <= 0:
+        return None
+    d = np.diff(pts, axis=0)
+    step = np.hypot(d[:, 0], d[:, 1])
+    typical = path_step(step)
+    if typical < SPARSE_STEP_OF_DIAGONAL * diag:
+        return None
+    sides = d[step >= typical / 4]  # not a repeated event or a dwell's jitter between two
+    if len(sides) < 4:
+        return None
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    turn = np.abs((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi)
+    total = float(turn.sum())
+    if total <= 0:
+        return None
+    return float(np.sort(turn)[-max(2, math.ceil(len(turn) / 5)):].sum()) / total

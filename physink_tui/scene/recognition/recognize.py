@@ -365,7 +365,7 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
     would be read as a circle or an ellipse left open, a curve instead unless ``round_too``."""
     coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
     found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
-                                      weights.round_corner)
+                                      weights.round_corner, (raw, diag))
     if found.kind == "polyline" and square_braces.square_brace(raw, noise, views):
         # a brace drawn square-cornered, whose small point these coarse points smoothed away
         found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
