@@ -223,6 +223,13 @@ def _closer_to_ellipse(pts: np.ndarray, ellipse: EllipseFit, closed: bool) -> bo
     return least >= BURST_CLOSER * off
 
 
+MERGED_STEP = 0.5
+"""`turn_at_events` takes events nearer each other than this share of the stroke's step (`path_step`) for one: the
+pen slowing into a hook or a corner sends its events close together, and the turn it makes there is one turn, the
+hand's (a parenthesis hooked at its ends, whose hooks' turns spread over a few close events would pass for a round
+stroke's even turning; `penmodels.paren_habits`, tuning seeds)."""
+
+
 def turn_at_events(pts: np.ndarray, diag: float) -> float | None:
     """Where ``pts`` are a few events far apart (`SPARSE_STEP_OF_DIAGONAL`: a tablet's event every 15-30 ms under a
     small stroke drawn fast, 7-16 events round a whole note), the share of its turning done at its sharpest fifth of
@@ -244,7 +251,13 @@ def turn_at_events(pts: np.ndarray, diag: float) -> float | None:
     typical = path_step(step)
     if typical < SPARSE_STEP_OF_DIAGONAL * diag:
         return None
-    sides = d[step >= typical / 4]  # not a repeated event or a dwell's jitter between two
+    kept = [pts[0]]  # events nearer the last one kept than half the step are one with it: a hook's or a dwell's
+    for p in pts[1:-1]:
+        if math.dist(p, kept[-1]) >= MERGED_STEP * typical:
+            kept.append(p)
+    if math.dist(pts[-1], kept[-1]) >= MERGED_STEP * typical:
+        kept.append(pts[-1])
+    sides = np.diff(np.asarray(kept), axis=0)
     if len(sides) < 4:
         return None
     heading = np.arctan2(sides[:, 1], sides[:, 0])
