@@ -21,6 +21,7 @@ from penmodels.paren_habits import FAMILIES as PAREN_FAMILIES
 from physink_tui.scene.recognition import pen_noise, shape_corners
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+import bench_brace_habits
 import bench_open_marks
 from bench_circle_gestures import EXPECTED, drawn, reading, why
 from bench_open_marks import HELD_SEEDS
@@ -131,7 +132,7 @@ def test_a_round_strokes_chords_between_bursts_are_not_drawn_through() -> None:
 def test_a_small_note_through_few_events_reads_round_either_way_round(family: str, pen: str, seed: int) -> None:
     """Session 29 (wt-marks), tuning seeds, curves or polygons on main 821c642: a whole note left open through a tablet
     sending an event every 15-30 ms (7-11 events, unevenly spaced) turns at every event, its chords the device's
-    (`pen_noise.turn_at_events`); a wobbly whole note through the mouse lies 5-10 % of its size off its ellipse, yet
+    (`pen_noise.turns_evenly_at_events`); a wobbly whole note through the mouse lies 5-10 % of its size off its ellipse, yet
     clearly closer to it than to any outline of three or four sides through its points (`pen_noise.BURST_CLOSER`)."""
     for mirror in (False, True):
         stroke = drawn(family, pen, seed, mirror)
@@ -139,11 +140,14 @@ def test_a_small_note_through_few_events_reads_round_either_way_round(family: st
 
 
 def test_a_bracket_or_a_hooked_parenthesis_by_few_events_turns_at_few_of_them() -> None:
-    """A bracket sampled by six events turns at two (`pen_noise.turn_at_events` 1.0: not smooth); parentheses hooked
-    at an end through the same tablet (`penmodels.paren_habits`, tuning seeds), the pen's events close together where
-    it slowed into the hook, turn there as at one place (`pen_noise.MERGED_STEP`) and stay curves."""
+    """A bracket sampled by six events turns at two (not `pen_noise.turns_evenly_at_events`); parentheses hooked at an
+    end through the same tablet (`penmodels.paren_habits`, tuning seeds), the pen's events close together where it
+    slowed into the hook, turn there as at one place (`pen_noise.MERGED_STEP`) and stay curves; a hooked brace by 10
+    events turns at its curls alone (`pen_noise.EVENT_TURNS`) and stays a curve."""
     bracket = np.array([[3, 0], [0, 0], [0, 2], [0, 4], [0, 6], [3, 6.0]])
-    assert pen_noise.turn_at_events(bracket, 6.7) == 1.0
+    assert not pen_noise.turns_evenly_at_events(bracket, 6.7, 0.55)
     for family, seed in (("hooked-paren", 16), ("small-hooked-paren", 29)):
         stroke = bench_open_marks.PENS["hurried-coarse"](PAREN_FAMILIES[family](seed), seed)
         assert all(reading(stroke, timed) in PAREN_EXPECTED for timed in (True, False))
+    for way in ("left-down", "right-down", "right-up"):
+        assert all(bench_brace_habits.read("hooked", way, "hurried-fast", 14, timed) == "curve" for timed in (True, False))

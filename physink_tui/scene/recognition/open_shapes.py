@@ -184,8 +184,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         return bracket_found[0]
 
     # a polyline turning the same way at sharp corners is not round; a few far-apart events' chords are not corners
-    at_events = pen_noise.turn_at_events(*events) if events is not None and concentration >= SMOOTH else None
-    smooth = concentration < SMOOTH or (at_events is not None and at_events < SMOOTH)
+    smooth = concentration < SMOOTH or (events is not None and pen_noise.turns_evenly_at_events(*events, SMOOTH))
     round_enough = (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
                     and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()))
     if round_enough:

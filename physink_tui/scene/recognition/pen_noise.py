@@ -224,34 +224,38 @@ def _closer_to_ellipse(pts: np.ndarray, ellipse: EllipseFit, closed: bool) -> bo
 
 
 MERGED_STEP = 0.5
-"""`turn_at_events` takes events nearer each other than this share of the stroke's step (`path_step`) for one: the
-pen slowing into a hook or a corner sends its events close together, and the turn it makes there is one turn, the
-hand's (a parenthesis hooked at its ends, whose hooks' turns spread over a few close events would pass for a round
-stroke's even turning; `penmodels.paren_habits`, tuning seeds)."""
+"""`turns_evenly_at_events` takes events nearer each other than this share of the stroke's step (`path_step`) for
+one: the pen slowing into a hook or a corner sends its events close together, and the turn it makes there is one turn,
+the hand's (a parenthesis hooked at its ends, whose hooks' turns spread over a few close events would pass for a round
+stroke's even turning; `penmodels.paren_habits` through the tablet, tuning seeds)."""
+EVENT_TURNS = 2 / 3
+"""A round stroke of a few events turns at this share of them or more by at least half its mean turn (the pen models'
+whole notes left open through a tablet, read round, 0.62-1.0, all but one 0.67 or more; a hooked brace by 10 events
+whose curls hold the turning, 0.5-0.62: tuning seeds); an open stroke's ends and uneven sampling keep it under the
+closed loop's `EVEN_TURNS`."""
 
 
-def turn_at_events(pts: np.ndarray, diag: float) -> float | None:
-    """Where ``pts`` are a few events far apart (`SPARSE_STEP_OF_DIAGONAL`: a tablet's event every 15-30 ms under a
-    small stroke drawn fast, 7-16 events round a whole note), the share of its turning done at its sharpest fifth of
-    events (a fifth rounded up: at least two of them); else None. A round stroke so sampled turns at every event, by
-    more where the device happened to leave a longer gap (uneven sampling); the chords between them are the device's,
-    so a turning resampled along them (`stroke_features.turn_concentration`) takes each event for a corner. A bracket
-    or a tick so sampled turns at its two or three corners alone.
+def turns_evenly_at_events(pts: np.ndarray, diag: float, smooth: float) -> bool:
+    """Whether ``pts`` are a few events far apart (`SPARSE_STEP_OF_DIAGONAL`: a tablet's event every 15-30 ms under a
+    small stroke drawn fast, 7-16 events round a whole note) turning at most of them (`EVENT_TURNS`), under ``smooth``
+    of the turning done at the sharpest fifth of them (a fifth rounded up, two at least; as
+    `stroke_features.turn_concentration`). A round stroke so sampled turns at every event, more where the device
+    happened to leave a longer gap (uneven sampling); the chords between are the device's, so a turning resampled along
+    them takes each event for a corner. A bracket or a brace so sampled turns at its corners or curls alone.
 
     >>> a = np.linspace(0, 1.6 * np.pi, 9)
-    >>> round(turn_at_events(np.column_stack([np.cos(a), np.sin(a)]), 2.8), 2)
-    0.29
-    >>> turn_at_events(np.array([[3, 0], [0, 0], [0, 2], [0, 4], [0, 6], [3, 6.]]), 6.7)
-    1.0
+    >>> turns_evenly_at_events(np.column_stack([np.cos(a), np.sin(a)]), 2.8, 0.55)
+    True
+    >>> turns_evenly_at_events(np.array([[3, 0], [0, 0], [0, 2], [0, 4], [0, 6], [3, 6.]]), 6.7, 0.55)
+    False
     """
     if len(pts) < 5 or diag <= 0:
-        return None
+        return False
     d = np.diff(pts, axis=0)
-    step = np.hypot(d[:, 0], d[:, 1])
-    typical = path_step(step)
+    typical = path_step(np.hypot(d[:, 0], d[:, 1]))
     if typical < SPARSE_STEP_OF_DIAGONAL * diag:
-        return None
-    kept = [pts[0]]  # events nearer the last one kept than half the step are one with it: a hook's or a dwell's
+        return False
+    kept = [pts[0]]  # events nearer the last one kept than `MERGED_STEP` of the step are one with it
     for p in pts[1:-1]:
         if math.dist(p, kept[-1]) >= MERGED_STEP * typical:
             kept.append(p)
@@ -259,10 +263,10 @@ def turn_at_events(pts: np.ndarray, diag: float) -> float | None:
         kept.append(pts[-1])
     sides = np.diff(np.asarray(kept), axis=0)
     if len(sides) < 4:
-        return None
+        return False
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     turn = np.abs((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi)
     total = float(turn.sum())
-    if total <= 0:
-        return None
-    return float(np.sort(turn)[-max(2, math.ceil(len(turn) / 5)):].sum()) / total
+    if total <= 0 or float(np.mean(turn >= 0.5 * turn.mean())) < EVENT_TURNS:
+        return False
+    return float(np.sort(turn)[-max(2, math.ceil(len(turn) / 5)):].sum()) < smooth * total
