@@ -132,8 +132,9 @@ def test_a_round_strokes_chords_between_bursts_are_not_drawn_through() -> None:
 def test_a_small_note_through_few_events_reads_round_either_way_round(family: str, pen: str, seed: int) -> None:
     """Session 29 (wt-marks), tuning seeds, curves or polygons on main 821c642: a whole note left open through a tablet
     sending an event every 15-30 ms (7-11 events, unevenly spaced) turns at every event, its chords the device's
-    (`pen_noise.turns_evenly_at_events`); a wobbly whole note through the mouse lies 5-10 % of its size off its ellipse, yet
-    clearly closer to it than to any outline of three or four sides through its points (`pen_noise.BURST_CLOSER`)."""
+    (`pen_noise.turns_evenly_at_events`); a wobbly whole note through the mouse lies 5-10 % of its size off its
+    ellipse, yet clearly closer to it than to any outline of three or four sides through its points
+    (`pen_noise.BURST_CLOSER`)."""
     for mirror in (False, True):
         stroke = drawn(family, pen, seed, mirror)
         assert all(reading(stroke, timed) in EXPECTED for timed in (True, False))

@@ -103,9 +103,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    past the start, lying inside it, is cut: `round_cores`; or once a flick where the pen lifted or landed, at most
    8 % of the path turning 45 degrees or more off the round path's own turning, is cut: `lift_hooks`; or whose points
    a busy mouse sent in a few bursts lie on an ellipse going round it: `pen_noise.round_in_bursts`; a stroke of a few
-   far-apart events is judged smooth by the turns at its events, not along its chords: `pen_noise.turns_evenly_at_events`),
-   a polyline
-   (straight sides, or bowed sides meeting at
+   far-apart events is judged smooth by the turns at its events, not along its chords:
+   `pen_noise.turns_evenly_at_events`), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
    curve's, but three straight sides turning one way, a square bracket, may round theirs,
    `open_shapes._rounded_bracket`; with two or more corners, no main side bowed like a quarter circle,
