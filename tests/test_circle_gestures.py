@@ -151,4 +151,5 @@ def test_a_bracket_or_a_hooked_parenthesis_by_few_events_turns_at_few_of_them() 
         stroke = bench_open_marks.PENS["hurried-coarse"](PAREN_FAMILIES[family](seed), seed)
         assert all(reading(stroke, timed) in PAREN_EXPECTED for timed in (True, False))
     for way in ("left-down", "right-down", "right-up"):
-        assert all(bench_brace_habits.read("hooked", way, "hurried-fast", 14, timed) == "curve" for timed in (True, False))
+        assert all(bench_brace_habits.read("hooked", way, "hurried-fast", 14, timed) == "curve"
+                   for timed in (True, False))
