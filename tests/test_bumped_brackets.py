@@ -83,6 +83,28 @@ def test_a_curl_as_short_as_a_braces_is_no_arm() -> None:
     assert not dented_spines.kept_bracket(found, (a - origin) / scale, 1.0 / scale, None, (origin, scale))
 
 
+def _kept_with_arms(arm: float) -> bool:
+    """Whether a left bracket 200 tall, its spine dented 12 toward the opening halfway, its arms ``arm`` long, is kept
+    from the ranker."""
+    n = int(arm / 4)
+    pts = [(arm - 4.0 * k, -100.0) for k in range(n)] + [(12.0 * (1 - abs(y) / 100.0), float(y))
+                                                          for y in range(-100, 101, 4)]
+    pts += [(4.0 * k, 100.0) for k in range(1, n + 1)]
+    a = np.asarray(pts)
+    origin, scale = a.mean(axis=0), float(np.abs(a - a.mean(axis=0)).max())
+    found = Recognition("polyline", 0.7, Polyline(((arm, -100.0), (0.0, -100.0), (0.0, 100.0), (arm, 100.0))))
+    return dented_spines.kept_bracket(found, (a - origin) / scale, 1.0 / scale, None, (origin, scale))
+
+
+def test_a_spine_no_longer_than_its_arms_is_a_braces_half() -> None:
+    """Session 29 (wt-marks): a brace the rules cut at its point and at one curl makes one half its "spine" and the
+    other an "arm" as long (`brace_habits`' wide chevron through the tiny mouse, held seed 1024, kept on main 821c642):
+    a spine under `dented_spines.SPINE_OVER_ARM` times its longer arm is not kept; a bracket's spine 1.7 times its arms
+    and more is."""
+    assert _kept_with_arms(80.0) and _kept_with_arms(120.0)
+    assert not _kept_with_arms(160.0) and not _kept_with_arms(200.0)
+
+
 HCIRA = "public-sets/hcira.jsonl"
 PEOPLE = {
     (HCIRA, "pixelfac/hcira-project-23@80d4cc7:src/dataset/user01/left square bracket5.xml"): "polyline",

@@ -15,10 +15,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from penmodels.paren_habits import EXPECTED as PAREN_EXPECTED
+from penmodels.paren_habits import FAMILIES as PAREN_FAMILIES
 
-from physink_tui.scene.recognition import shape_corners
+from physink_tui.scene.recognition import pen_noise, shape_corners
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+import bench_brace_habits
+import bench_open_marks
 from bench_circle_gestures import EXPECTED, drawn, reading, why
 from bench_open_marks import HELD_SEEDS
 
@@ -29,23 +33,23 @@ more."""
 _ALL = dict.fromkeys(PENS, 60)
 HELD_FLOORS: dict[str, dict[str, int]] = {
     "circle-closed": _ALL,
-    "circle-closed-hooked": {**_ALL, "hurried-mouse": 58},
-    "circle-open": {**_ALL, "hurried": 56, "hurried-sparse": 54, "hurried-mouse": 52},
-    "circle-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 56, "hurried-mouse": 58},
+    "circle-closed-hooked": _ALL,
+    "circle-open": {**_ALL, "hurried": 56, "hurried-sparse": 56, "hurried-mouse": 52},
+    "circle-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 58, "hurried-mouse": 58},
     "circle-over": _ALL,
     "circle-over-hooked": _ALL,
     "oval-closed": _ALL,
     "oval-closed-hooked": _ALL,
-    "oval-open": {**_ALL, "careful": 58, "hurried": 52, "hurried-sparse": 48, "hurried-mouse": 50},
+    "oval-open": {**_ALL, "careful": 58, "hurried": 52, "hurried-sparse": 50, "hurried-mouse": 50},
     "oval-open-hooked": {**_ALL, "careful": 58, "hurried": 54, "hurried-sparse": 50, "hurried-mouse": 52},
     "oval-over": _ALL,
     "oval-over-hooked": _ALL,
-    "whole-note-closed": {**_ALL, "hurried-mouse": 34},
-    "whole-note-closed-hooked": {**_ALL, "hurried-mouse": 38},
-    "whole-note-open": {**_ALL, "hurried": 54, "hurried-sparse": 54, "hurried-mouse": 24},
-    "whole-note-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 54, "hurried-mouse": 20},
-    "whole-note-over": {**_ALL, "hurried-mouse": 32},
-    "whole-note-over-hooked": {**_ALL, "hurried-mouse": 34},
+    "whole-note-closed": {**_ALL, "hurried-mouse": 40},
+    "whole-note-closed-hooked": {**_ALL, "hurried-mouse": 44},
+    "whole-note-open": {**_ALL, "hurried": 54, "hurried-sparse": 54, "hurried-mouse": 26},
+    "whole-note-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 56, "hurried-mouse": 24},
+    "whole-note-over": {**_ALL, "hurried-mouse": 46},
+    "whole-note-over-hooked": {**_ALL, "hurried-mouse": 42},
 }
 """family -> pen -> of the 60 readings on the held seeds (30 gestures each way round: as drawn and mirrored, which
 turns it the other way), how many are circles or ellipses, each way (a stroke and its mirror read alike); measured on
@@ -56,7 +60,11 @@ events: a polygon of 3-7 chords, as `tests/test_circle_habits.py`' small circles
 them so too. Session 28 (wt-hooks) raised the floors to that branch's held figures: a flick at the lift cut before a
 stroke left open is judged round (`lift_hooks`: circle-open-hooked by the careful pen 58 -> 60, oval-open-hooked 48 ->
 58, whole-note-open-hooked by the hurried hand 40 -> 56) and a note's points in a mouse's few bursts read by their
-ellipse, not the chords between bursts (`pen_noise.round_in_bursts`: whole notes through the mouse 4-22 -> 20-38)."""
+ellipse, not the chords between bursts (`pen_noise.round_in_bursts`: whole notes through the mouse 4-22 -> 20-38).
+Session 29 (wt-marks) raised them again: a wobbly note's points in bursts off their ellipse by up to a tenth, clearly
+nearer it than any outline of three or four sides, are round (`pen_noise.BURST_CLOSER`: whole notes through the mouse
+20-38 -> 24-46), and a stroke left open by a few far-apart events is judged smooth at its events
+(`pen_noise.turns_evenly_at_events`: circles, ovals and notes left open by 8-40 events up by 2 each)."""
 
 
 def _both_ways(family: str, pen: str) -> tuple[list[str | None], list[str | None]]:
@@ -120,3 +128,32 @@ def test_a_round_strokes_chords_between_bursts_are_not_drawn_through() -> None:
     assert not shape_corners.drawn_through(corners, _drawn(events, 3, 0.0))
     assert not shape_corners.drawn_through(corners, _drawn(events, 1, 0.1))
     assert shape_corners.drawn_through(corners, _drawn(events, 1, 0.5))
+
+
+@pytest.mark.parametrize(("family", "pen", "seed"), [
+    ("whole-note-open", "hurried-coarse", 6), ("whole-note-open", "hurried-coarse", 23),
+    ("whole-note-closed", "hurried-mouse", 4), ("whole-note-closed", "hurried-mouse", 8)])
+def test_a_small_note_through_few_events_reads_round_either_way_round(family: str, pen: str, seed: int) -> None:
+    """Session 29 (wt-marks), tuning seeds, curves or polygons on main 821c642: a whole note left open through a tablet
+    sending an event every 15-30 ms (7-11 events, unevenly spaced) turns at every event, its chords the device's
+    (`pen_noise.turns_evenly_at_events`); a wobbly whole note through the mouse lies 5-10 % of its size off its
+    ellipse, yet clearly closer to it than to any outline of three or four sides through its points
+    (`pen_noise.BURST_CLOSER`)."""
+    for mirror in (False, True):
+        stroke = drawn(family, pen, seed, mirror)
+        assert all(reading(stroke, timed) in EXPECTED for timed in (True, False))
+
+
+def test_a_bracket_or_a_hooked_parenthesis_by_few_events_turns_at_few_of_them() -> None:
+    """A bracket sampled by six events turns at two (not `pen_noise.turns_evenly_at_events`); parentheses hooked at an
+    end through the same tablet (`penmodels.paren_habits`, tuning seeds), the pen's events close together where it
+    slowed into the hook, turn there as at one place (`pen_noise.MERGED_STEP`) and stay curves; a hooked brace by 10
+    events turns at its curls alone (`pen_noise.EVENT_TURNS`) and stays a curve."""
+    bracket = np.array([[3, 0], [0, 0], [0, 2], [0, 4], [0, 6], [3, 6.0]])
+    assert not pen_noise.turns_evenly_at_events(bracket, 6.7, 0.55)
+    for family, seed in (("hooked-paren", 16), ("small-hooked-paren", 29)):
+        stroke = bench_open_marks.PENS["hurried-coarse"](PAREN_FAMILIES[family](seed), seed)
+        assert all(reading(stroke, timed) in PAREN_EXPECTED for timed in (True, False))
+    for way in ("left-down", "right-down", "right-up"):
+        assert all(bench_brace_habits.read("hooked", way, "hurried-fast", 14, timed) == "curve"
+                   for timed in (True, False))

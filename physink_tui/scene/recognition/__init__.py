@@ -48,7 +48,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    `open_shapes.SMOOTH` of its coarse turning in its sharpest fifth) is offered no polygon of four sides or more
    (`closed_loops.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners;
    a loop whose points come in three to eight bursts joined by long jumps and lie on an ellipse, going round it one
-   way (`pen_noise.round_in_bursts`: a busy mouse's events round a small note), is offered no polygon at all.
+   way (`pen_noise.round_in_bursts`: a busy mouse's events round a small note; a wobbly one's points off it by up to a
+   tenth, where they lie clearly closer to it than to any outline of three or four sides), is offered no polygon.
    A short side where the outline turns back sharply at one end and gently at the other, its neighbours' far ends
    apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
    winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
@@ -101,8 +102,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    open (more than 225 degrees one way, fitting an ellipse; or fitting one once a lead from inside or an end curled in
    past the start, lying inside it, is cut: `round_cores`; or once a flick where the pen lifted or landed, at most
    8 % of the path turning 45 degrees or more off the round path's own turning, is cut: `lift_hooks`; or whose points
-   a busy mouse sent in a few bursts lie on an ellipse going round it: `pen_noise.round_in_bursts`), a polyline
-   (straight sides, or bowed sides meeting at
+   a busy mouse sent in a few bursts lie on an ellipse going round it: `pen_noise.round_in_bursts`; a stroke of a few
+   far-apart events is judged smooth by the turns at its events, not along its chords:
+   `pen_noise.turns_evenly_at_events`), a polyline (straight sides, or bowed sides meeting at
    really sharp corners; and no corner rounder than `Weights.round_corner` of its shorter side: a brace's bend is a
    curve's, but three straight sides turning one way, a square bracket, may round theirs,
    `open_shapes._rounded_bracket`; with two or more corners, no main side bowed like a quarter circle,

@@ -32,6 +32,12 @@ ARM_SHARE = 0.12
 the corners, the most): a brace's curl, which the rules may take for an arm, holds 8-10 % of it
 (`tests/penmodels/brace_habits`' flat-pointed braces through a mouse; hat359/user2's right braces), a bracket's arm
 with its bend 13 % and more (as `round_brackets.SPLAYED_ARM_SHARE`: a curl is no arm)."""
+SPINE_OVER_ARM = 1.3
+"""...and the spine is at least this many times as long as the longer arm along the stroke: a square bracket's spine
+is its long side (the pen models' dented, bumped and jogged brackets 1.69 times their longer arm and more, people's
+kept brackets 1.57 and 1.61), while a brace the rules cut at its point and at one curl makes one of its halves the
+"spine" and the other the "arm", about as long (`tests/penmodels/brace_habits`' wide chevrons through the mouse and
+the tiny mouse, 0.8-1.12 on tuning seeds)."""
 MIDDLE_CUT = 0.2
 """The spine's middle is judged without this share of it at each end (its bends into the arms)."""
 DENT_DEG = (10.0, 90.0)
@@ -81,8 +87,8 @@ def kept_bracket(found: Recognition, unit: np.ndarray, noise: float, views: Stro
     at = sorted(int(np.argmin(np.hypot(*(work - v).T))) for v in vertices[1:3])
     steps = np.hypot(*np.diff(work, axis=0).T)
     sides = (steps[:at[0]].sum(), steps[at[0]:at[1]].sum(), steps[at[1]:].sum())
-    if sides[1] <= max(sides[0], sides[2]) or min(sides[0], sides[2]) < ARM_SHARE * sum(sides):
-        return False  # a brace the rules cut at its point (a half and a curl longer than the rest), or at its curls
+    if sides[1] < SPINE_OVER_ARM * max(sides[0], sides[2]) or min(sides[0], sides[2]) < ARM_SHARE * sum(sides):
+        return False  # a brace the rules cut at its point (its halves as long as each other), or at its curls
     spine = work[at[0]:at[1] + 1]
     cut = round(MIDDLE_CUT * len(spine))
     middle = spine[cut:len(spine) - cut]

@@ -21,6 +21,7 @@ from physink_tui.scene.recognition import (
     lines,
     lopsided_braces,
     open_marks,
+    pen_noise,
     round_brackets,
     round_cores,
     shape_turning,
@@ -158,9 +159,11 @@ def straight(run: np.ndarray, noise: float, bow: float | None = None) -> bool:
     return (sg.chord_deviation(run) if bow is None else bow) * chord < max(STRAIGHT * chord, 1.5 * noise)
 
 
-def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf) -> Recognition:
+def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf,
+                  events: tuple[np.ndarray, float] | None = None) -> Recognition:
     """An open stroke (resampled, hooks and corner loops removed) as a round shape left open, a polyline (whose
-    corners are no rounder than ``round_corner``, see `stroke_features.corner_roundness`), an arc or a curve."""
+    corners are no rounder than ``round_corner``, see `stroke_features.corner_roundness`), an arc or a curve.
+    ``events``: the stroke's points as the device sent them and their bounding-box diagonal, where known."""
     length = sg.path_length(work)
     th = sg.turning(work)
     total_turn = float(th.sum())
@@ -180,7 +183,8 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
             bracket_found.append(round_brackets.rounded_bracket(work, lobes))
         return bracket_found[0]
 
-    smooth = concentration < SMOOTH  # a polyline turning the same way at sharp corners is not round
+    # a polyline turning the same way at sharp corners is not round; a few far-apart events' chords are not corners
+    smooth = concentration < SMOOTH or (events is not None and pen_noise.turns_evenly_at_events(*events, SMOOTH))
     round_enough = (smooth and abs(total_turn) >= NEARLY_ROUND * math.pi
                     and abs(float(coarse.sum())) > 0.75 * float(np.abs(coarse).sum()))
     if round_enough:

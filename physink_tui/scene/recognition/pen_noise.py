@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition.polygon_fit import best_polygons
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 from physink_tui.scene.recognition.stroke_geometry import bbox_diagonal, median
 
@@ -155,7 +156,16 @@ MOST_BURSTS = 8
 """... and at most this many: a round shape sampled in a few bursts."""
 BURST_ROUND = 0.05
 """The stroke's own points (not the chords between them) miss the ellipse fitted to them by at most this (normalised
-RMS radial error, `shape_fits.fit_ellipse`)."""
+RMS radial error, `shape_fits.fit_ellipse`)..."""
+BURST_ROUND_MOST = 0.1
+"""... or by at most this where they lie clearly closer to that ellipse than to any outline of three or four sides
+(`BURST_CLOSER`): a whole note 20-40 px across drawn by a hurried hand wobbles off its ellipse by 5-10 % of its size
+(the pen models' whole notes through the mouse, tuning seeds), as much as a small box's or a rounded box's points miss
+theirs; a box's points lie on its four sides, a note's on its ellipse."""
+BURST_CLOSER = 1.3
+"""The best polygon of three or four sides through the points (a polyline of two to four where the stroke was left
+open) leaves at least this many times the squared distance the ellipse leaves (the pen models' small boxes through the
+mouse 0.01-1.25, their whole notes 0.4-6.8, most over 1.3: tuning seeds)."""
 BURST_SWEEP = 1.5 * math.pi
 """... and go round its centre one way by at least this much (the pen models' small parentheses through the mouse,
 whose few bursts an ellipse fits, go round one 227-247 degrees; their whole notes that the rule reads round, 244-411,
@@ -167,11 +177,12 @@ BURST_GAP = 0.75 * math.pi
 """... leaving no gap round it wider than this."""
 
 
-def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP) -> EllipseFit | None:
+def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, closed: bool = True,
+                    ) -> EllipseFit | None:
     """The ellipse of a stroke whose points come in a few bursts joined by long jumps (`BURST_JUMP`, `BURST_PATH`,
     `MOST_BURSTS`: a busy mouse's events, whose chords are the device's, not the hand's path) and lie on an ellipse
-    (`BURST_ROUND`) going round it one way by ``sweep`` radians or more, no gap round it wider than `BURST_GAP`; else
-    None."""
+    (`BURST_ROUND`, or `BURST_ROUND_MOST` and `BURST_CLOSER`) going round it one way by ``sweep`` radians or more, no
+    gap round it wider than `BURST_GAP`; else None. ``closed``: whether the stroke was read closed."""
     if len(pts) < 8 or diag <= 0:
         return None
     d = pts[1:] - pts[:-1]
@@ -180,7 +191,7 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP) ->
     if not 3 <= int(jumps.sum()) <= MOST_BURSTS or float(step[jumps].sum()) < BURST_PATH * float(step.sum()):
         return None
     ellipse = fit_ellipse(pts)
-    if ellipse is None or not ellipse[4] <= BURST_ROUND or not (ellipse[1] > 0 and ellipse[2] > 0):
+    if ellipse is None or not ellipse[4] <= BURST_ROUND_MOST or not (ellipse[1] > 0 and ellipse[2] > 0):
         return None
     centre, rx, ry, angle, _ = ellipse
     rel = pts - np.asarray(centre)
@@ -192,4 +203,70 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP) ->
         return None  # not round one way
     around = np.sort(at % (2 * math.pi))
     gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
-    return ellipse if float(gaps.max()) <= BURST_GAP else None
+    if float(gaps.max()) > BURST_GAP:
+        return None
+    return ellipse if ellipse[4] <= BURST_ROUND or _closer_to_ellipse(pts, ellipse, closed) else None
+
+
+def _closer_to_ellipse(pts: np.ndarray, ellipse: EllipseFit, closed: bool) -> bool:
+    """Whether ``pts`` lie clearly closer to ``ellipse`` than to the best polygon of three or four sides through them
+    (polyline of two to four where not ``closed``): `BURST_CLOSER`, on summed squared distances."""
+    (cx, cy), rx, ry, angle, _ = ellipse
+    t = np.linspace(0.0, 2 * math.pi, 360, endpoint=False)
+    c, s = math.cos(angle), math.sin(angle)
+    ex, ey = cx + rx * np.cos(t) * c - ry * np.sin(t) * s, cy + rx * np.cos(t) * s + ry * np.sin(t) * c
+    near = np.min((pts[:, 0, None] - ex[None]) ** 2 + (pts[:, 1, None] - ey[None]) ** 2, axis=1)
+    off = float(near.sum())
+    fits = best_polygons(pts, closed=closed, max_sides=4, tolerance=0.0)
+    sides = (3, 4) if closed else (2, 3, 4)
+    least = min((fits[k][0].rss for k in sides if fits.get(k)), default=math.inf)
+    return least >= BURST_CLOSER * off
+
+
+MERGED_STEP = 0.5
+"""`turns_evenly_at_events` takes events nearer each other than this share of the stroke's step (`path_step`) for
+one: the pen slowing into a hook or a corner sends its events close together, and the turn it makes there is one turn,
+the hand's (a parenthesis hooked at its ends, whose hooks' turns spread over a few close events would pass for a round
+stroke's even turning; `penmodels.paren_habits` through the tablet, tuning seeds)."""
+EVENT_TURNS = 2 / 3
+"""A round stroke of a few events turns at this share of them or more by at least half its mean turn (the pen models'
+whole notes left open through a tablet, read round, 0.62-1.0, all but one 0.67 or more; a hooked brace by 10 events
+whose curls hold the turning, 0.5-0.62: tuning seeds); an open stroke's ends and uneven sampling keep it under the
+closed loop's `EVEN_TURNS`."""
+
+
+def turns_evenly_at_events(pts: np.ndarray, diag: float, smooth: float) -> bool:
+    """Whether ``pts`` are a few events far apart (`SPARSE_STEP_OF_DIAGONAL`: a tablet's event every 15-30 ms under a
+    small stroke drawn fast, 7-16 events round a whole note) turning at most of them (`EVENT_TURNS`), under ``smooth``
+    of the turning done at the sharpest fifth of them (a fifth rounded up, two at least; as
+    `stroke_features.turn_concentration`). A round stroke so sampled turns at every event, more where the device
+    happened to leave a longer gap (uneven sampling); the chords between are the device's, so a turning resampled along
+    them takes each event for a corner. A bracket or a brace so sampled turns at its corners or curls alone.
+
+    >>> a = np.linspace(0, 1.6 * np.pi, 9)
+    >>> turns_evenly_at_events(np.column_stack([np.cos(a), np.sin(a)]), 2.8, 0.55)
+    True
+    >>> turns_evenly_at_events(np.array([[3, 0], [0, 0], [0, 2], [0, 4], [0, 6], [3, 6.]]), 6.7, 0.55)
+    False
+    """
+    if len(pts) < 5 or diag <= 0:
+        return False
+    d = np.diff(pts, axis=0)
+    typical = path_step(np.hypot(d[:, 0], d[:, 1]))
+    if typical < SPARSE_STEP_OF_DIAGONAL * diag:
+        return False
+    kept = [pts[0]]  # events nearer the last one kept than `MERGED_STEP` of the step are one with it
+    for p in pts[1:-1]:
+        if math.dist(p, kept[-1]) >= MERGED_STEP * typical:
+            kept.append(p)
+    if math.dist(pts[-1], kept[-1]) >= MERGED_STEP * typical:
+        kept.append(pts[-1])
+    sides = np.diff(np.asarray(kept), axis=0)
+    if len(sides) < 4:
+        return False
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    turn = np.abs((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi)
+    total = float(turn.sum())
+    if total <= 0 or float(np.mean(turn >= 0.5 * turn.mean())) < EVENT_TURNS:
+        return False
+    return float(np.sort(turn)[-max(2, math.ceil(len(turn) / 5)):].sum()) < smooth * total

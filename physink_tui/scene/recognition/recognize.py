@@ -366,12 +366,12 @@ def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma
     would be read as a circle or an ellipse left open, a curve instead unless ``round_too``."""
     coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
     found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
-                                      weights.round_corner)
+                                      weights.round_corner, (raw, diag))
     if found.kind == "polyline" and square_braces.square_brace(raw, noise, views):
         # a brace drawn square-cornered, whose small point these coarse points smoothed away
         found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
     if round_too and found.kind not in ("circle", "ellipse"):
-        bursts = pen_noise.round_in_bursts(raw, diag, pen_noise.BURST_SWEEP_OPEN)
+        bursts = pen_noise.round_in_bursts(raw, diag, pen_noise.BURST_SWEEP_OPEN, closed=False)
         if bursts is not None:  # a round stroke left open, sampled in a few bursts: its chords are the device's
             geom, kind = round_geometry(bursts)
             found = Recognition(kind, 0.65, geom, ((str(found.kind), 0.35),))
