@@ -125,7 +125,7 @@ ONE_CORNER_UNDER_DEVICES_FLOOR = 6949
 """dollar1's checks, v's and carets (270 strokes), each under every device transform of `bench_device_stress`
 (`TRANSFORMS`, `COMBINED`, `MORE`: 26), read right: 6,949 of 7,020 today, 6,934 at main cb69115 (none fewer in any
 transform; transformed strokes, not people). 6,948 at main 821c642 (session 27's joined flat steps lost one); 6,951
-since session 29's `landing.DWELL_PATH_CENTRED` cuts three start blobs centred on where the finger landed."""
+since session 29's `landing.DWELL_PATH_CENTRED` cuts two start blobs and a lift pause centred on their end point."""
 
 
 def test_peoples_one_corner_marks_under_device_transforms() -> None:

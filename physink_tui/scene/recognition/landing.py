@@ -22,10 +22,10 @@ end point (a stroke that departs straight away travels that far once; a hook out
 pixels' stair steps: `tests/test_swung_lines.py`'s arc that lands with a hook)..."""
 DWELL_PATH_CENTRED = 3.0
 """...or at least this many times where they are centred on the end point (their mean within `DWELL_CENTRE` of its
-reach of it): a fingertip's contact settling about where it landed (`benchmarks/device_habits.start_blob`: 3.2-3.4
-times its reach), where a pen that creeps off along the stroke, densely sampled, wanders as far by its jitter but puts
-its points' mean about halfway out (`tests/test_swung_lines.py`'s arc of 50 degrees, seed 19: 3.1 times, the mean
-0.47 of its reach out)..."""
+reach of it): a fingertip's contact settling about where it landed or lifted (`benchmarks/device_habits.start_blob`,
+`lift_pause`: 3.2-3.4 times its reach), where a pen that creeps off along the stroke, densely sampled, wanders as far
+by its jitter but puts its points' mean about halfway out (`tests/test_swung_lines.py`'s arc of 50 degrees, seed 19:
+3.1 times, the mean 0.47 of its reach out)..."""
 DWELL_CENTRE = 0.3
 """...(`DWELL_PATH_CENTRED`'s share of the dwell's reach)..."""
 DWELL_POINTS = 4
