@@ -26,7 +26,7 @@ reach of it): a fingertip's contact settling about where it landed or lifted (`b
 `lift_pause`: 3.2-3.4 times its reach), where a pen that creeps off along the stroke, densely sampled, wanders as far
 by its jitter but puts its points' mean about halfway out (`tests/test_swung_lines.py`'s arc of 50 degrees, seed 19:
 3.1 times, the mean 0.47 of its reach out)..."""
-DWELL_CENTRE = 0.3
+DWELL_CENTRE = 0.25
 """...(`DWELL_PATH_CENTRED`'s share of the dwell's reach)..."""
 DWELL_POINTS = 4
 """...over at least this many points..."""
