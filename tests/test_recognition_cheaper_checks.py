@@ -117,7 +117,10 @@ def _plain_dwell(pts: np.ndarray, radius: float) -> int:
         return 0
     extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
     path = float(np.hypot(*np.diff(pts[:out], axis=0).T).sum())
-    if path < landing.DWELL_PATH * extent:
+    if path < landing.DWELL_PATH_CENTRED * extent:
+        return 0
+    centre = float(np.hypot(*(pts[:out] - pts[0]).mean(axis=0)))
+    if path < landing.DWELL_PATH * extent and centre > landing.DWELL_CENTRE * extent:
         return 0
     spread = np.linalg.eigvalsh(np.cov((pts[:out] - pts[:out].mean(axis=0)).T))
     return out if spread[0] >= landing.DWELL_BREADTH**2 * spread[1] else 0

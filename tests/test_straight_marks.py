@@ -124,16 +124,10 @@ def test_a_persons_one_corner_mark_is_read_as_what_it_is(file: str) -> None:
 ONE_CORNER_UNDER_DEVICES_FLOOR = 6949
 """dollar1's checks, v's and carets (270 strokes), each under every device transform of `bench_device_stress`
 (`TRANSFORMS`, `COMBINED`, `MORE`: 26), read right: 6,949 of 7,020 today, 6,934 at main cb69115 (none fewer in any
-transform; transformed strokes, not people)."""
+transform; transformed strokes, not people). 6,948 at main 821c642 (session 27's joined flat steps lost one); 6,951
+since session 29's `landing.DWELL_PATH_CENTRED` cuts two start blobs and a lift pause centred on their end point."""
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "session 27 (wt-brackets) joined `stroke_features.turn_lobes`' flat steps (a mark reads the same mirrored): "
-    "dollar1 s04 medium check09 under 'trackpad 2' (a start blob, a lift hook, a long arm bending 61 degrees in all) "
-    "was read a polyline only because a step of -2.5e-14 degrees (float rounding along a straight run) split that "
-    "bend into two runs under 35 degrees; joined, it is a fourth lobe and `open_shapes._bent_polyline` takes at most "
-    "three. 6,948 of 7,020, one under the floor of 6,949; the start blob the rules keep (`landing.settled` misses it: "
-    "its path is 3.44 times its reach, `DWELL_PATH` 3.5) is the cause left to fix."))
 def test_peoples_one_corner_marks_under_device_transforms() -> None:
     rows = [r for r in dollar1_rows().values() if r["label"] in ("check", "v", "caret")]
     assert len(rows) == 270

@@ -20,6 +20,14 @@ DWELL_PATH = 3.5
 """...and wanders there: its points' path is at least this many times as long as the farthest of them is from the
 end point (a stroke that departs straight away travels that far once; a hook out and back twice, three times in whole
 pixels' stair steps: `tests/test_swung_lines.py`'s arc that lands with a hook)..."""
+DWELL_PATH_CENTRED = 3.0
+"""...or at least this many times where they are centred on the end point (their mean within `DWELL_CENTRE` of its
+reach of it): a fingertip's contact settling about where it landed or lifted (`benchmarks/device_habits.start_blob`,
+`lift_pause`: 3.2-3.4 times its reach), where a pen that creeps off along the stroke, densely sampled, wanders as far
+by its jitter but puts its points' mean about halfway out (`tests/test_swung_lines.py`'s arc of 50 degrees, seed 19:
+3.1 times, the mean 0.47 of its reach out)..."""
+DWELL_CENTRE = 0.25
+"""...(`DWELL_PATH_CENTRED`'s share of the dwell's reach)..."""
 DWELL_POINTS = 4
 """...over at least this many points..."""
 DWELL_BREADTH = 0.4
@@ -32,7 +40,8 @@ HEAD_POINTS = 16
 
 
 def _dwell(pts: np.ndarray, radius: float) -> int:
-    """How many points from ``pts[0]`` on stay within ``radius`` of it, wandering there (`DWELL_PATH`), or 0."""
+    """How many points from ``pts[0]`` on stay within ``radius`` of it, wandering there (`DWELL_PATH`, or
+    `DWELL_PATH_CENTRED` about it), or 0."""
     head = pts[:HEAD_POINTS] - pts[0]
     away = np.hypot(head[:, 0], head[:, 1]) > radius  # where the first point away lies, as for most strokes
     if not away.any():  # else every point, the same distances
@@ -44,8 +53,10 @@ def _dwell(pts: np.ndarray, radius: float) -> int:
         return 0
     extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
     path = float(sg.step_lengths(pts[:out]).sum())
-    if path < DWELL_PATH * extent:
+    if path < DWELL_PATH_CENTRED * extent:
         return 0
+    if path < DWELL_PATH * extent and np.hypot(*(pts[:out] - pts[0]).mean(axis=0)) > DWELL_CENTRE * extent:
+        return 0  # not about the end point: a pen already moving along the stroke
     spread = np.linalg.eigvalsh(np.cov((pts[:out] - pts[:out].mean(axis=0)).T))
     return out if spread[0] >= DWELL_BREADTH**2 * spread[1] else 0  # about as wide as long: not a hook
 
