@@ -174,8 +174,9 @@ BURST_SWEEP_OPEN = 5 / 3 * math.pi
 """... by this much where the stroke was not closed (`recognize._open_reading`): the pen models' square brackets through
 the mouse go round their points' ellipse by up to 265 degrees (tuning seeds), their open whole notes 244-340."""
 BURST_SWEEP_NEAR = 4 / 3 * math.pi
-"""... or this much where its ends lie within `BURST_ENDS_NEAR` of each other: a round mark nearly closed (the pen models'
-whole notes left open through the mouse go round their ellipse 243-366 degrees, ends 0.08-0.71 of the diagonal apart;
+"""... or this much where its ends lie within `BURST_ENDS_NEAR` of each other: a round mark nearly closed (the pen
+models' whole notes left open through the mouse go round their ellipse 243-366 degrees, ends 0.08-0.71 of the diagonal
+apart;
 the brackets, parentheses, braces and C's of `bracket_habits`, `bracket_extremes`, `paren_habits`, `mouse_habits`,
 `brace_habits` through the mouse whose points an ellipse fits go round it 219-271 degrees with their ends 0.79-1.0 of
 the diagonal apart: tuning seeds)."""
