@@ -176,10 +176,9 @@ the mouse go round their points' ellipse by up to 265 degrees (tuning seeds), th
 BURST_SWEEP_NEAR = 4 / 3 * math.pi
 """... or this much where its ends lie within `BURST_ENDS_NEAR` of each other: a round mark nearly closed (the pen
 models' whole notes left open through the mouse go round their ellipse 243-366 degrees, ends 0.08-0.71 of the diagonal
-apart;
-the brackets, parentheses, braces and C's of `bracket_habits`, `bracket_extremes`, `paren_habits`, `mouse_habits`,
-`brace_habits` through the mouse whose points an ellipse fits go round it 219-271 degrees with their ends 0.79-1.0 of
-the diagonal apart: tuning seeds)."""
+apart; the brackets, parentheses, braces and C's of `bracket_habits`, `bracket_extremes`, `paren_habits`,
+`mouse_habits`, `brace_habits` through the mouse whose points an ellipse fits go round it 219-271 degrees with their
+ends 0.79-1.0 of the diagonal apart: tuning seeds)."""
 BURST_ENDS_NEAR = 0.75
 """The share of the stroke's diagonal within which the ends of a round mark left open lie (`BURST_SWEEP_NEAR`)."""
 BURST_GAP = 0.75 * math.pi
