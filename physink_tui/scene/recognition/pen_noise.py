@@ -173,6 +173,14 @@ five of 129 under 270: tuning seeds), ..."""
 BURST_SWEEP_OPEN = 5 / 3 * math.pi
 """... by this much where the stroke was not closed (`recognize._open_reading`): the pen models' square brackets through
 the mouse go round their points' ellipse by up to 265 degrees (tuning seeds), their open whole notes 244-340."""
+BURST_SWEEP_NEAR = 4 / 3 * math.pi
+"""... or this much where its ends lie within `BURST_ENDS_NEAR` of each other: a round mark nearly closed (the pen
+models' whole notes left open through the mouse go round their ellipse 243-366 degrees, ends 0.08-0.71 of the diagonal
+apart; the brackets, parentheses, braces and C's of `bracket_habits`, `bracket_extremes`, `paren_habits`,
+`mouse_habits`, `brace_habits` through the mouse whose points an ellipse fits go round it 219-271 degrees with their
+ends 0.79-1.0 of the diagonal apart: tuning seeds)."""
+BURST_ENDS_NEAR = 0.75
+"""The share of the stroke's diagonal within which the ends of a round mark left open lie (`BURST_SWEEP_NEAR`)."""
 BURST_GAP = 0.75 * math.pi
 """... leaving no gap round it wider than this."""
 
@@ -182,7 +190,8 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     """The ellipse of a stroke whose points come in a few bursts joined by long jumps (`BURST_JUMP`, `BURST_PATH`,
     `MOST_BURSTS`: a busy mouse's events, whose chords are the device's, not the hand's path) and lie on an ellipse
     (`BURST_ROUND`, or `BURST_ROUND_MOST` and `BURST_CLOSER`) going round it one way by ``sweep`` radians or more, no
-    gap round it wider than `BURST_GAP`; else None. ``closed``: whether the stroke was read closed."""
+    gap round it wider than `BURST_GAP`; else None. ``closed``: whether the stroke was read closed (where not, ends
+    within `BURST_ENDS_NEAR` of each other need go round no more than `BURST_SWEEP_NEAR`)."""
     if len(pts) < 8 or diag <= 0:
         return None
     d = pts[1:] - pts[:-1]
@@ -193,6 +202,8 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     ellipse = fit_ellipse(pts)
     if ellipse is None or not ellipse[4] <= BURST_ROUND_MOST or not (ellipse[1] > 0 and ellipse[2] > 0):
         return None
+    if not closed and math.dist(pts[0], pts[-1]) <= BURST_ENDS_NEAR * diag:
+        sweep = min(sweep, BURST_SWEEP_NEAR)  # nearly closed
     centre, rx, ry, angle, _ = ellipse
     rel = pts - np.asarray(centre)
     c, s = math.cos(angle), math.sin(angle)
