@@ -6,8 +6,10 @@ A person may start a shape anywhere and go either way round; a stroke's reading 
 stroke of each SET (`bench_generalisation.scored_rows`: one stroke, a mapped label; the held-back groups left out, the
 fourth group's sets read alone with ``--fourth``) is recognised as drawn and reversed (`reversed_stroke`: its points in
 reverse order, its times running forward from its start), with the shipped recogniser. Prints, per source (a set, or
-``--by person`` a set's person), how many strokes read another kind reversed and how many are right each way; with
-``--list`` every stroke whose kind differs (set, person, file, label, kind as drawn -> reversed, which way is right).
+``--by person`` a set's person), how many strokes read another kind reversed, how many of those hold a lift the device
+missed (`pen_lifts.last_attempt`, as drawn or reversed: the stroke is read by its last attempt, and which attempt is
+last is the time order's, meant to change reversed), and how many are right each way; with ``--list`` every stroke
+whose kind differs (set, person, file, label, kind as drawn -> reversed, which way is right, "lifted").
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from pathlib import Path
 from bench_generalisation import held_back_new, scored_rows
 from stroke_sets import Row, read_sets, source_of
 
+from physink_tui.scene.recognition import pen_lifts
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
 Points = list[list[float]]
@@ -45,6 +48,12 @@ def readings(row: Row) -> tuple[str, str]:
     return recognize_stroke(points, times).kind, recognize_stroke(*reversed_stroke(points, times)).kind
 
 
+def lifted(row: Row) -> bool:
+    """Whether a row's stroke is read by its last attempt (`pen_lifts.last_attempt`) as drawn or reversed."""
+    points, times = stroke_of(row)
+    return any(pen_lifts.last_attempt(p, t) is not None for p, t in ((points, times), reversed_stroke(points, times)))
+
+
 def rows_of(paths: list[Path], fourth: bool) -> list[Row]:
     """The scored rows of the sets at ``paths`` (the fourth group's alone with ``fourth``), the held back left out."""
     kept, _ = scored_rows(read_sets(paths, "bench_reversed"), fourth=fourth)
@@ -59,7 +68,7 @@ def main() -> None:
     ap.add_argument("--by", choices=("set", "person"), default="set")
     ap.add_argument("--list", action="store_true", help="name every stroke whose kind differs reversed")
     args = ap.parse_args()
-    n, differs, fwd, rev = Counter(), Counter(), Counter(), Counter()
+    n, differs, lifts, fwd, rev = Counter(), Counter(), Counter(), Counter(), Counter()
     listed = []
     for row in rows_of(args.sets, args.fourth):
         key = source_of(row, args.by)
@@ -69,16 +78,19 @@ def main() -> None:
         fwd[key] += ahead in row["accepts"]
         rev[key] += back in row["accepts"]
         if ahead != back:
-            right = {(True, True): "both", (True, False): "as drawn", (False, True): "reversed"}.get(
+            lifts[key] += lifted(row)
+            which = {(True, True): "both", (True, False): "as drawn", (False, True): "reversed"}.get(
                 (ahead in row["accepts"], back in row["accepts"]), "neither")
             listed.append(f"- {source_of(row, 'person')} {row.get('file', '')} \"{row['label']}\": {ahead} -> {back}"
-                          f" (right: {right})")
-    print("| source | strokes | kind differs reversed | right as drawn | right reversed |\n|---|---:|---:|---:|---:|")
+                          f" (right: {which}{', lifted' if lifted(row) else ''})")
+    print("| source | strokes | kind differs reversed | of which lifted | right as drawn | right reversed |\n"
+          "|---|---:|---:|---:|---:|---:|")
     for key in sorted(n):
-        print(f"| {key} | {n[key]} | {differs[key]} | {fwd[key]} | {rev[key]} |")
+        print(f"| {key} | {n[key]} | {differs[key]} | {lifts[key]} | {fwd[key]} | {rev[key]} |")
     total = sum(n.values())
-    print(f"| all | {total} | {sum(differs.values())} | {sum(fwd.values())} ({100 * sum(fwd.values()) / total:.2f} %)"
-          f" | {sum(rev.values())} ({100 * sum(rev.values()) / total:.2f} %) |")
+    right, back = sum(fwd.values()), sum(rev.values())
+    print(f"| all | {total} | {sum(differs.values())} | {sum(lifts.values())} | {right} ({100 * right / total:.2f} %) "
+          f"| {back} ({100 * back / total:.2f} %) |")
     if args.list and listed:
         print("\nKinds that differ reversed (person, file, label: as drawn -> reversed):\n" + "\n".join(listed))
 
