@@ -66,15 +66,13 @@ def corner_turns(th: np.ndarray, corners: list[int], reach: int = 3) -> list[flo
     return out or [0.0]
 
 
-def bends(th: np.ndarray, corners: list[int], reach: int = 3, *, either_way: bool = False) -> list[float]:
-    """Net turning (degrees) along each segment, away from its corners. With ``either_way`` the last segment runs to
-    the last point that turns, as the first runs from the first (without it the last point's turn is left out, so a
-    stroke drawn backwards, whose first turn is then its last, may measure its end bends otherwise)."""
+def bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
+    """Net turning (degrees) along each segment, away from its corners."""
     n = len(th) + 2
     out = []
     for a, b in itertools.pairwise(corners):
         lo = a + reach if a > 0 else 0
-        hi = b - reach if b < n - 1 else n - 1 if either_way else n - 2
+        hi = b - reach if b < n - 1 else n - 2
         out.append(abs(math.degrees(float(th[lo:max(hi - 1, lo)].sum()))))
     return out
 
@@ -197,13 +195,12 @@ def turn_concentration(th: np.ndarray) -> float:
 
 
 def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8, *, th: np.ndarray | None = None,
-                     either_way: bool = False) -> list[float]:
+                     ) -> list[float]:
     """How round each inner corner is: the length of path, centred on the corner, over which the stroke does
     ``share`` of the turning it does between the midpoints of its neighbouring sides, over the shorter of those
     two sides. A drawn corner turns within a tenth or two of its sides; a brace's or a question mark's bend
-    takes as long as a side. ``th``: `stroke_geometry.turning` of ``work`` where already known; ``either_way``:
-    as `roundness_along`."""
-    return roundness_along(walk(work, th), corners, share, either_way=either_way)
+    takes as long as a side. ``th``: `stroke_geometry.turning` of ``work`` where already known."""
+    return roundness_along(walk(work, th), corners, share)
 
 
 def walk(work: np.ndarray, th: np.ndarray | None = None) -> tuple[list[float], list[float]]:
@@ -218,17 +215,13 @@ def walk(work: np.ndarray, th: np.ndarray | None = None) -> tuple[list[float], l
     return cum_turn, cum_len
 
 
-def roundness_along(walked: tuple[list[float], list[float]], corners: list[int], share: float = 0.8, *,
-                    either_way: bool = False) -> list[float]:
-    """`corner_roundness` of the stroke whose `walk` is ``walked``. With ``either_way`` the turning between the
-    midpoints of the neighbouring sides is that of the points from the first midpoint to the second, both rounded
-    inwards, which are the same points whichever way the stroke was drawn (without it, both midpoints rounded down,
-    the points from the first to before the second: one point off at each end drawn backwards)."""
+def roundness_along(walked: tuple[list[float], list[float]], corners: list[int], share: float = 0.8) -> list[float]:
+    """`corner_roundness` of the stroke whose `walk` is ``walked``."""
     cum_turn, cum_len = walked
     n = len(cum_len)
     out = []
     for a, c, b in zip(corners, corners[1:], corners[2:], strict=False):
-        lo, hi = ((a + c + 1) // 2, (c + b) // 2 + 1) if either_way else ((a + c) // 2, (c + b) // 2)
+        lo, hi = (a + c) // 2, (c + b) // 2
         total = abs(cum_turn[max(hi - 1, 0)] - cum_turn[max(lo - 1, 0)])
         shorter = min(cum_len[c] - cum_len[a], cum_len[b] - cum_len[c])
         if total == 0.0 or shorter <= 0.0:
