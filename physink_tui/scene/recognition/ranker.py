@@ -343,9 +343,12 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
 def zigzag_teeth(found: Recognition) -> bool:
     """Whether the rules' polyline has a zig-zag's teeth (`open_marks.sawtooth_vertices`, on the corners the rules
     found, which see small teeth the model's 64 points smooth away): not asked of the model, whose features (fitted
-    on few zig-zags) take a curled tail's bow for a curve's."""
+    on few zig-zags) take a curled tail's bow for a curve's. Asked of the vertices in both orders (a tooth's sides
+    are compared with the sides two before it, so one order weighs the side leading into the teeth, the other the
+    side leading out): a stroke is the same zig-zag whichever end it was drawn from (issue 25, session 30)."""
     return (found.kind == "polyline" and isinstance(found.geometry, Polyline)
-            and open_marks.sawtooth_vertices(found.geometry.points))
+            and open_marks.sawtooth_vertices(found.geometry.points)
+            and open_marks.sawtooth_vertices(found.geometry.points[::-1]))
 
 
 def kept_curve(found: Recognition, sparse: bool) -> bool:
