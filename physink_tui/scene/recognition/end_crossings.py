@@ -10,6 +10,7 @@ import numpy as np
 from physink_tui.scene.recognition import open_shapes
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.loop_ends import END_SHARE
+from physink_tui.scene.recognition.polygon_checks import crossings
 
 RUN_ON = 0.5
 """A many-sided outline (`RUN_ON_CORNERS`) closed in a hurry may run one end on past the crossing by up to this share
@@ -63,7 +64,9 @@ def crossed_close(work: np.ndarray, diag: float, near: float, run_on: float) -> 
 
 def many_sided(loop: np.ndarray) -> bool:
     """Whether a loop (from a crossing round to it) turns at `RUN_ON_CORNERS` corners or more besides the crossing,
-    its sides straight (`open_shapes.STRAIGHT`)."""
+    its sides straight (`open_shapes.STRAIGHT`) and its outline through them crossing itself nowhere
+    (`polygon_checks.crossings`: a star's does, and is judged as before, `closed_loops.star_run_past_its_start`)."""
     corners = sg.find_corners(loop)
-    return len(corners) - 2 >= RUN_ON_CORNERS and all(
-        sg.chord_deviation(loop[c:d + 1]) < open_shapes.STRAIGHT for c, d in itertools.pairwise(corners))
+    return (len(corners) - 2 >= RUN_ON_CORNERS
+            and all(sg.chord_deviation(loop[c:d + 1]) < open_shapes.STRAIGHT for c, d in itertools.pairwise(corners))
+            and crossings(loop[corners[:-1]]) == 0)
