@@ -29,17 +29,37 @@ one end and 0.15-0.16 from the other; tutorboard seed90210's triangle #247 0.33 
 def crossed_close(work: np.ndarray, diag: float, near: float, run_on: float) -> bool:
     """Whether ``work``'s first and last stretches of path cross, each (at most `loop_ends.END_SHARE` of its points)
     within ``near`` of its size (``diag``) of its end; or, where ``run_on`` is longer, one within ``run_on`` of its end
-    and the other within ``near``, the loop between the crossing many-sided (`RUN_ON_CORNERS`)."""
+    and the other within ``near``, the loop between the crossing many-sided (`many_sided`)."""
     n = len(work)
     k = max(2, int(END_SHARE * n))
     along = sg.along(work)
     back = along[-1] - along[::-1]
-    reach = [(int(np.searchsorted(along, f * diag, side="right")), int(np.searchsorted(back, f * diag, side="right")))
-             for f in dict.fromkeys((near, run_on))]
-    head_n, tail_n = min(reach[-1][0] + 1, k), min(reach[-1][1] + 1, k)  # points
-    head, tail = work[:head_n], work[n - tail_n:]
-    if len(head) < 2 or len(tail) < 2:
+
+    def reach(f: float) -> tuple[int, int]:  # how many points from each end lie within ``f`` of the size, and one more
+        return (min(int(np.searchsorted(along, f * diag, side="right")) + 1, k),
+                min(int(np.searchsorted(back, f * diag, side="right")) + 1, k))
+
+    head_n, tail_n = reach(near)
+    if _crossing(work[:head_n], work[n - tail_n:]) is not None:
+        return True
+    if run_on <= near:
         return False
+    far_head, far_tail = reach(run_on)
+    for h, t in ((head_n, far_tail), (far_head, tail_n)):
+        head, tail = work[:h], work[n - t:]
+        if (head.min(axis=0) > tail.max(axis=0)).any() or (tail.min(axis=0) > head.max(axis=0)).any():
+            continue  # their boxes do not meet
+        found = _crossing(head, tail)
+        if found is not None and found[1] + n - t - found[0] >= 8:
+            return many_sided(work[found[0] + 1: n - t + found[1] + 1])
+    return False
+
+
+def _crossing(head: np.ndarray, tail: np.ndarray) -> tuple[int, int] | None:
+    """The first step of ``head`` (by its index) that a step of ``tail`` crosses, and the last such step of ``tail``;
+    None where none does."""
+    if len(head) < 2 or len(tail) < 2:
+        return None
     p, r = head[:-1, None, :], (head[1:] - head[:-1])[:, None, :]  # as np.diff, without its per-call overhead
     q, s = tail[None, :-1, :], (tail[1:] - tail[:-1])[None, :, :]
     den = r[..., 0] * s[..., 1] - r[..., 1] * s[..., 0]
@@ -49,17 +69,10 @@ def crossed_close(work: np.ndarray, diag: float, near: float, run_on: float) -> 
         u = (qp[..., 0] * r[..., 1] - qp[..., 1] * r[..., 0]) / den
     hits = (den != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)
     if not hits.any():
-        return False
-    i, j = np.nonzero(hits)  # steps i of the head, j of the tail (j = 0 starts at work[n - tail_n])
-    near_head = i < min(reach[0][0] + 1, k) - 1  # the steps within ``near`` of the start ...
-    near_tail = j >= tail_n - min(reach[0][1] + 1, k)  # ... and of the end
-    if bool(np.any(near_head & near_tail)):
-        return True
-    for a, b in zip(i[near_head | near_tail], j[near_head | near_tail], strict=True):
-        loop = work[a + 1: n - tail_n + b + 1]
-        if len(loop) >= 8:
-            return many_sided(loop)
-    return False
+        return None
+    i, j = np.nonzero(hits)
+    first = int(i[0])
+    return first, int(j[i == first][-1])
 
 
 def many_sided(loop: np.ndarray) -> bool:
