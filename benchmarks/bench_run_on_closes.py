@@ -6,8 +6,9 @@ Usage: .venv/bin/python benchmarks/bench_run_on_closes.py [--seeds tune|held|all
        [--tails A:B] [--misread]
 
 Issue 25, session 30: tutorboard seed90210's triangle #247 (fourth group) runs on past its first corner, its ends
-crossing 0.17 and 0.33 of its size from them, and is read as a polyline. The shapes are drawn by the pens of `bench_open_marks` (the careful virtual pen, the
-hurried hand, the hurried hand through a coarse device and through a mouse), each read with its times and without.
+crossing 0.17 and 0.33 of its size from them, and is read as a polyline. The shapes are drawn by the pens of
+`bench_open_marks` (the careful virtual pen, the hurried hand, the hurried hand through a coarse device and through a
+mouse), each read with its times and without.
 Besides the table per family and pen, a table by the tail's share of the last side (in five bins of ``--tails``, the
 same shapes with their tails scaled: straight or hooked, the pen landing near the corner or not) shows where the closed
 reading stops. Seeds 0-29 (`TUNING_SEEDS`) were looked at while tuning; 1000-1029 (`HELD_SEEDS`) read once.
