@@ -95,7 +95,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (`candidates.ellipse_distances`: along the ray from its centre, a long oval's miss at its shoulders doubles, and
    its triangle through its ends won), a rounder one's along that ray as before; a
    stroke whose tails cross each other near its ends is closed however far apart its ends lifted
-   (`closed_loops.ends_cross`: a triangle closed past its first corner), and one whose ends a hook where the pen
+   (`closed_loops.ends_cross`: a triangle closed past its first corner), or one end within that gap and the other
+   up to half its size past the crossing where the loop between is a polygon of four sides or more
+   (`end_crossings.crossed_close`: a box or a diamond whose last side runs on past its first corner), and one whose
+   ends a hook where the pen
    landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px circle's hook of
    a few pixels is a fifth of its size; a pigtail's tails cross).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left

@@ -9,11 +9,11 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import open_shapes, pen_noise, shape_corners, shape_turning
+from physink_tui.scene.recognition import end_crossings, open_shapes, pen_noise, shape_corners, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.candidates import ellipse_distances
-from physink_tui.scene.recognition.loop_ends import END_SHARE, SMALL_LOOP, cut_ends
+from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
 from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, SHARP_SHARE, crossings
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
@@ -239,7 +239,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     tail, head = work[n // 2:], work[: max(2, n // 2)]
     d_tail = np.hypot(*(tail - work[0]).T)
     d_head = np.hypot(*(head - work[-1]).T)
-    if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit and not ends_cross(work, diag):
+    if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit and not ends_cross_or_run_on(work, diag):
         return False, work, None
     loop = cut_ends(work, gap, d_tail, d_head)
     if len(loop) < 8:
@@ -351,21 +351,13 @@ def ends_cross(work: np.ndarray, diag: float) -> bool:
     a triangle closed in a hurry, its tails crossing at a corner, however far apart the ends lifted. A delete mark's or
     an x's first and last strokes cross at their middles, far from the ends; a pigtail's crossing is between long
     tails."""
-    k = max(2, int(END_SHARE * len(work)))
-    along = sg.along(work)
-    head_n = int(np.searchsorted(along, CLOSED_GAP * diag, side="right"))
-    tail_n = int(np.searchsorted(along[-1] - along[::-1], CLOSED_GAP * diag, side="right"))
-    head, tail = work[:min(head_n + 1, k)], work[len(work) - min(tail_n + 1, k):]
-    if len(head) < 2 or len(tail) < 2:
-        return False
-    p, r = head[:-1, None, :], (head[1:] - head[:-1])[:, None, :]  # as np.diff, without its per-call overhead
-    q, s = tail[None, :-1, :], (tail[1:] - tail[:-1])[None, :, :]
-    den = r[..., 0] * s[..., 1] - r[..., 1] * s[..., 0]
-    qp = q - p
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = (qp[..., 0] * s[..., 1] - qp[..., 1] * s[..., 0]) / den
-        u = (qp[..., 0] * r[..., 1] - qp[..., 1] * r[..., 0]) / den
-    return bool(np.any((den != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)))
+    return end_crossings.crossed_close(work, diag, CLOSED_GAP, CLOSED_GAP)
+
+
+def ends_cross_or_run_on(work: np.ndarray, diag: float) -> bool:
+    """`ends_cross`, or a polygon of four sides or more closed by crossing its ends, one of them run on past the
+    crossing by up to `end_crossings.RUN_ON` of its size (`end_crossings.crossed_close`)."""
+    return end_crossings.crossed_close(work, diag, CLOSED_GAP, end_crossings.RUN_ON)
 
 
 TAIL_RUNS_OFF = 1.2
