@@ -10,9 +10,10 @@ import random
 from collections.abc import Callable
 
 from penmodels.open_marks import Mark, Point, _placed
+from penmodels.x_habits import _cut_corners, _run
 
 EXPECTED = {"round-loop-pigtail": "curve", "narrow-loop-pigtail": "curve", "long-tail-pigtail": "curve",
-            "loop-first-pigtail": "curve"}
+            "loop-first-pigtail": "curve", "straight-arm-pigtail": "curve"}
 """A pigtail is a loop in an open smooth stroke: a curve (benchmarks/label_kinds.tsv)."""
 
 
@@ -81,6 +82,30 @@ def loop_first_pigtail(seed: int) -> Mark:
     return _sized(rng, raw, "loop-first-pigtail")
 
 
+def straight_arm_pigtail(seed: int) -> Mark:
+    """A pigtail drawn as a ribbon (session 30: hcira hat359 user1 pigtail05, user3 pigtail10, klarubbio s06
+    pigtail05): straight tails crossing at 70-110 degrees, each running on straight past the crossing for 0.6-1 of its
+    own length before the loop, a round cap bowed out by 0.3-0.6 of the arms' spread, rounded into both arms from
+    0.75-0.9 of their length on; the geometry of an x with a round side (`x_habits.round_side_x`), which people also
+    draw as a pigtail."""
+    rng = random.Random(f"straight-arm-pigtail:{seed}")
+    half = math.radians(rng.uniform(35, 55))
+    u1, u2 = (math.sin(half), -math.cos(half)), (-math.sin(half), -math.cos(half))  # up the page (y down)
+    tail1, tail2 = rng.uniform(0.8, 1.2), rng.uniform(0.8, 1.2)
+    run1, run2 = tail1 * rng.uniform(0.6, 1.0), tail2 * rng.uniform(0.6, 1.0)
+    a, p = (-u1[0] * tail1, -u1[1] * tail1), (u1[0] * run1, u1[1] * run1)
+    q, d = (u2[0] * run2, u2[1] * run2), (-u2[0] * tail2, -u2[1] * tail2)
+    r1, r2 = rng.uniform(0.75, 0.9), rng.uniform(0.75, 0.9)
+    start = (a[0] + (p[0] - a[0]) * r1, a[1] + (p[1] - a[1]) * r1)
+    end = (q[0] + (d[0] - q[0]) * (1 - r2), q[1] + (d[1] - q[1]) * (1 - r2))
+    bow = rng.uniform(0.3, 0.6) * math.dist(p, q)
+    cap = [start, p, (p[0], p[1] - bow), (q[0], q[1] - bow), q, end]
+    step = 0.02
+    raw = [a, *_run(a, start, step)[:-1], *_cut_corners(cap, 4), *_run(end, d, step)]
+    return _sized(rng, raw, "straight-arm-pigtail")
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "round-loop-pigtail": round_loop_pigtail, "narrow-loop-pigtail": narrow_loop_pigtail,
-    "long-tail-pigtail": long_tail_pigtail, "loop-first-pigtail": loop_first_pigtail}
+    "long-tail-pigtail": long_tail_pigtail, "loop-first-pigtail": loop_first_pigtail,
+    "straight-arm-pigtail": straight_arm_pigtail}

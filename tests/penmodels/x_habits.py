@@ -6,6 +6,7 @@ draw them: `penmodels.hurried`, the virtual pen; `benchmarks/bench_bracket_habit
 
 from __future__ import annotations
 
+import itertools
 import math
 import random
 from collections.abc import Callable
@@ -13,7 +14,7 @@ from collections.abc import Callable
 from penmodels.open_marks import Mark, Point, _arc, _placed
 
 EXPECTED = {"offset-x": "polyline", "looped-turn-x": "polyline", "rounded-turn-x": "polyline",
-            "long-tail-x": "polyline", "hooked-x": "polyline", "unequal-x": "polyline"}
+            "long-tail-x": "polyline", "hooked-x": "polyline", "unequal-x": "polyline", "round-side-x": "polyline"}
 """An x in one stroke is straight sides joined by a diagonal: a polyline (benchmarks/label_kinds.tsv), whatever its
 turns look like."""
 
@@ -171,6 +172,41 @@ def unequal_x(seed: int) -> Mark:
     return Mark("unequal-x", _placed(rng, pts, False), False)
 
 
+def _cut_corners(pts: list[Point], times: int) -> list[Point]:
+    """``pts`` with every inner vertex cut (Chaikin: each side replaced by its points a quarter and three quarters
+    along), ``times`` over; the first and last points kept."""
+    for _ in range(times):
+        cut = [pts[0]]
+        for p, q in itertools.pairwise(pts):
+            cut += [(0.75 * p[0] + 0.25 * q[0], 0.75 * p[1] + 0.25 * q[1]),
+                    (0.25 * p[0] + 0.75 * q[0], 0.25 * p[1] + 0.75 * q[1])]
+        pts = [*cut[:1], *cut[2:-1], pts[-1]]
+    return pts
+
+
+def round_side_x(seed: int) -> Mark:
+    """An x 120-300 px tall whose side is one round loop (hcira jd4386 User05's x's, 7 of 10: an alpha or fish): the
+    diagonals straight and crossing at 0.4-0.6 of each, the side bowed out by 0.1-0.35 of its length and rounded into
+    both diagonals from 0.65-0.85 of their length on, so that no corner is left; either way round, from either end,
+    turned half the time (session 30: today's rules read it as a curve, as they read a pigtail, whose loop it is)."""
+    rng = random.Random(f"round-side-x:{seed}")
+    h = rng.uniform(120, 300)
+    w = h * rng.uniform(0.6, 1.2)
+    c1, c2 = rng.uniform(0.4, 0.6), rng.uniform(0.4, 0.6)  # where each diagonal crosses the other, along it
+    p, q = (w / 2, h / 2), (w / 2, -h / 2)  # the side's ends; the crossing at the origin
+    a, d = (-p[0] * c1 / (1 - c1), -p[1] * c1 / (1 - c1)), (-q[0] * c2 / (1 - c2), -q[1] * c2 / (1 - c2))
+    r1, r2 = rng.uniform(0.65, 0.85), rng.uniform(0.65, 0.85)  # where the round part starts along each diagonal
+    start, end = (a[0] + (p[0] - a[0]) * r1, a[1] + (p[1] - a[1]) * r1), (q[0] + (d[0] - q[0]) * (1 - r2),
+                                                                        q[1] + (d[1] - q[1]) * (1 - r2))
+    bow = rng.uniform(0.1, 0.35) * h
+    side = [start, p, (p[0] + bow, p[1] * 0.5), (q[0] + bow, q[1] * 0.5), q, end]
+    step = h / 60
+    pts = [a, *_run(a, start, step)[:-1], *_cut_corners(side, 4), *_run(end, d, step)]
+    mid = (sum(x for x, _ in (a, p, q, d)) / 4, sum(y for _, y in (a, p, q, d)) / 4)
+    pts = [(x - mid[0], y - mid[1]) for x, y in pts]
+    return Mark("round-side-x", _placed(rng, pts, rng.random() < 0.5), True)
+
+
 FAMILIES: dict[str, Callable[[int], Mark]] = {
     "offset-x": offset_x, "looped-turn-x": looped_turn_x, "rounded-turn-x": rounded_turn_x,
-    "long-tail-x": long_tail_x, "hooked-x": hooked_x, "unequal-x": unequal_x}
+    "long-tail-x": long_tail_x, "hooked-x": hooked_x, "unequal-x": unequal_x, "round-side-x": round_side_x}
