@@ -21,6 +21,7 @@ import math
 import random
 from collections.abc import Callable
 
+from penmodels.many_sided import _placed  # the same placement on the canvas
 from penmodels.open_marks import Mark, Point
 
 EXPECTED: dict[str, str | tuple[str, ...]] = {
@@ -32,14 +33,6 @@ TAIL = (0.0, 0.5)
 """How far the pen runs on past the first corner, as a share of the last side (of the radius, round)."""
 LEAD = (0.0, 0.25)
 """How far before the first corner the pen lands, as a share of the first side (of the radius, round)."""
-
-
-def _placed(rng: random.Random, pts: list[Point]) -> tuple[Point, ...]:
-    """``pts`` (round the origin) turned a random angle and moved to a random place on the 1600 x 1000 canvas."""
-    angle = rng.uniform(0, 2 * math.pi)
-    c, s = math.cos(angle), math.sin(angle)
-    cx, cy = rng.uniform(500, 1100), rng.uniform(350, 650)
-    return tuple((cx + x * c - y * s, cy + x * s + y * c) for x, y in pts)
 
 
 def _regular(rng: random.Random, sides: int, jitter: float) -> list[Point]:
