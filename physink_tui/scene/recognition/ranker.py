@@ -211,7 +211,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
     deviation = [sg.chord_deviation(r) for r in runs]
     straights = [open_shapes.straight(r, noise, d) for r, d in zip(runs, deviation, strict=True)]
     bows = [min(d, 1.0) for d in deviation] or [0.0]
-    roundness = [min(r, 2.0) for r in sf.roundness_either_way(work, corners, th=th)] or [0.0]
+    roundness = [min(r, 2.0) for r in sf.corner_roundness(work, corners, th=th)] or [0.0]
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)
@@ -224,7 +224,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
         min(ellipse[4], 1.0) if ellipse is not None else 1.0, min(circle_err, 1.0),
         ellipse[2] / max(ellipse[1], 1e-12) if ellipse is not None else 0.0, min(line_err, 1.0),
         sf.corner_share(th, corners) if len(corners) > 2 else 0.0,
-        abs(coarse_sum) / max(coarse_abs, 1e-12), max(sf.bends_either_way(th, corners)) / 180.0,
+        abs(coarse_sum) / max(coarse_abs, 1e-12), max(sf.bends(th, corners)) / 180.0,
         math.log(max(len(raw), 2)) / 5.0, float(len(corners) == 3), float(len(corners) == 4),
         float(bool(runs) and all(straights)),
         float(len(corners) > 2 and open_shapes._bent_polyline(th, corners, lobes, deviation)),

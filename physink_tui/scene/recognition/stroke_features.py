@@ -77,19 +77,6 @@ def bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
     return out
 
 
-def bends_either_way(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
-    """`bends` measured alike from either end: the last segment's turning runs to the last point that turns, as the
-    first's runs from the first (`bends` leaves out the last point's turn), so a stroke and its reverse give the same
-    bends, in reverse order (the learned ranker's ``max_bend``, issue 25, session 31)."""
-    n = len(th) + 2
-    out = []
-    for a, b in itertools.pairwise(corners):
-        lo = a + reach if a > 0 else 0
-        hi = b - reach if b < n - 1 else n - 1
-        out.append(abs(math.degrees(float(th[lo:max(hi - 1, lo)].sum()))))
-    return out
-
-
 def corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
     """Share of the turning done at the corners rather than along the segments between them.
 
@@ -274,29 +261,3 @@ def _signed_area(v: np.ndarray) -> float:
 def _hull_area(v: np.ndarray) -> float:
     """Area of the convex hull (0 for fewer than three points or points in a line)."""
     return float(MultiPoint(v).convex_hull.area)
-
-
-def roundness_either_way(work: np.ndarray, corners: list[int], share: float = 0.8, *,
-                         th: np.ndarray | None = None) -> list[float]:
-    """`corner_roundness` measured alike from either end (the learned ranker's, issue 25, session 31): the turning
-    between the sides' midpoints is taken over the points from the first midpoint to the second, both ends in and a
-    midpoint between two points rounded inwards (`roundness_along` rounds both down and leaves out the last point's
-    turn), so a stroke and its reverse give the same roundness, in reverse order. The rules keep `corner_roundness`."""
-    cum_turn, cum_len = walk(work, th)
-    n = len(cum_len)
-    out = []
-    for a, c, b in zip(corners, corners[1:], corners[2:], strict=False):
-        lo, hi = (a + c + 1) // 2, (c + b) // 2
-        total = abs(cum_turn[min(hi, n - 2)] - cum_turn[max(lo - 1, 0)])
-        shorter = min(cum_len[c] - cum_len[a], cum_len[b] - cum_len[c])
-        if total == 0.0 or shorter <= 0.0:
-            out.append(0.0)
-            continue
-        need = share * total
-        r = max(hi - lo, 1) - 1
-        for k in range(r + 1):
-            if abs(cum_turn[min(c + k, n - 2)] - cum_turn[max(c - 1 - k, 0)]) >= need:
-                r = k
-                break
-        out.append((cum_len[min(c + r, n - 1)] - cum_len[max(c - r, 0)]) / shorter)
-    return out
