@@ -41,8 +41,8 @@ def accepted(family: str) -> tuple[str, ...]:
 
 def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True,
          tails: tuple[float, float] | None = None) -> str | None:
-    """The kind the ``family``'s shape of ``seed`` (its tail drawn from ``tails``, the family's own range where None) drawn by ``pen`` is read as (with
-    its times where ``timed``)."""
+    """The kind the ``family``'s shape of ``seed`` (its tail drawn from ``tails``, the family's own range where None)
+    drawn by ``pen`` is read as (with its times where ``timed``)."""
     stroke = PENS[pen](run_on(family, seed, tails)[0], seed)
     return recognize_stroke([p[:2] for p in stroke], [p[2] for p in stroke] if timed else None, learned=learned).kind
 
@@ -53,8 +53,8 @@ def main() -> None:
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
     ap.add_argument("--family", choices=tuple(FAMILIES), action="append", help="only these families")
     ap.add_argument("--misread", action="store_true", help="list every misreading (family, pen, seed, timed, kind)")
-    ap.add_argument("--tails", default=None, help="the tails' shares of the last side, A:B (default: each family's own, "
-                    "0:0.5 but for the families of `run_on_closes.TAILS`)")
+    ap.add_argument("--tails", default=None, help="the tails' shares of the last side, A:B (default: each "
+                    "family's own, 0:0.5 but for the families of `run_on_closes.TAILS`)")
     args = ap.parse_args()
     given = tuple(float(v) for v in args.tails.split(":")) if args.tails else None
     assert given is None or len(given) == 2
