@@ -149,8 +149,8 @@ def loso(tri: list[tuple[str, float]], marks: list[tuple[str, float]]) -> tuple[
             if len(above) > best[0]:
                 best = (len(above), sign, (top + float(above.min())) / 2 if len(above) else math.inf)
         _, sign, cut = best
-        closed_tri += sum(sign * v > cut for p, v in tri if p == person)
-        closed_marks += sum(sign * v > cut for p, v in marks if p == person)
+        closed_tri += int(sum(sign * v > cut for p, v in tri if p == person))
+        closed_marks += int(sum(sign * v > cut for p, v in marks if p == person))
     return closed_tri, closed_marks
 
 
