@@ -12,6 +12,8 @@ mouse), each read with its times and without.
 Besides the table per family and pen, a table by the tail's share of the last side (in five bins of ``--tails``, the
 same shapes with their tails scaled: straight or hooked, the pen landing near the corner or not) shows where the closed
 reading stops. Seeds 0-29 (`TUNING_SEEDS`) were looked at while tuning; 1000-1029 (`HELD_SEEDS`) read once.
+Session 31 (wt-tails) added ``triangle-long-tail`` (read closed) and ``x-run-past`` (an x or a delete mark whose start
+lies at its crossing, read open), each with its own range of tails; they are counted per family, not by the tail.
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from bench_open_marks import HELD_SEEDS, PENS, TUNING_SEEDS
-from penmodels.run_on_closes import EXPECTED, FAMILIES, TAIL, run_on
+from penmodels.run_on_closes import EXPECTED, FAMILIES, TAIL, TAILS, run_on
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
@@ -38,9 +40,9 @@ def accepted(family: str) -> tuple[str, ...]:
 
 
 def read(family: str, pen: str, seed: int, timed: bool, learned: bool = True,
-         tails: tuple[float, float] = TAIL) -> str | None:
-    """The kind the ``family``'s shape of ``seed`` (its tail drawn from ``tails``) drawn by ``pen`` is read as (with
-    its times where ``timed``)."""
+         tails: tuple[float, float] | None = None) -> str | None:
+    """The kind the ``family``'s shape of ``seed`` (its tail drawn from ``tails``, the family's own range where None)
+    drawn by ``pen`` is read as (with its times where ``timed``)."""
     stroke = PENS[pen](run_on(family, seed, tails)[0], seed)
     return recognize_stroke([p[:2] for p in stroke], [p[2] for p in stroke] if timed else None, learned=learned).kind
 
@@ -51,10 +53,12 @@ def main() -> None:
     ap.add_argument("--rules", action="store_true", help="the rules alone, without the learned ranker")
     ap.add_argument("--family", choices=tuple(FAMILIES), action="append", help="only these families")
     ap.add_argument("--misread", action="store_true", help="list every misreading (family, pen, seed, timed, kind)")
-    ap.add_argument("--tails", default="0:0.5", help="the tails' shares of the last side, A:B (default 0:0.5)")
+    ap.add_argument("--tails", default=None, help="the tails' shares of the last side, A:B (default: each "
+                    "family's own, 0:0.5 but for the families of `run_on_closes.TAILS`)")
     args = ap.parse_args()
-    tails = tuple(float(v) for v in args.tails.split(":"))
-    assert len(tails) == 2
+    given = tuple(float(v) for v in args.tails.split(":")) if args.tails else None
+    assert given is None or len(given) == 2
+    tails = given or TAIL  # the bins' range (a family of `TAILS` falls in the first or the last bin)
     bins = [tails[0] + (tails[1] - tails[0]) * (k + 1) / 5 for k in range(5)]
     groups = {"tune": [("tune 0-29", TUNING_SEEDS)], "held": [("held 1000-1029", HELD_SEEDS)]}
     groups["all"] = groups["tune"] + groups["held"]
@@ -68,14 +72,15 @@ def main() -> None:
             for pen in PENS:
                 right = 0
                 for seed in seeds:
-                    _, tail, hooked, lead = run_on(family, seed, tails)
+                    _, tail, hooked, lead = run_on(family, seed, given)
                     b = next((i for i, top in enumerate(bins) if tail <= top), 4)
                     for timed in (True, False):
-                        kind = read(family, pen, seed, timed, not args.rules, tails)
+                        kind = read(family, pen, seed, timed, not args.rules, given)
                         ok = kind in accepted(family)
                         right += ok
-                        by_bin[("n", b, hooked, lead >= LEAD_SPLIT)] += 1
-                        by_bin[("ok", b, hooked, lead >= LEAD_SPLIT)] += ok
+                        if given or family not in TAILS:  # the families of `TAILS` are counted by family only
+                            by_bin[("n", b, hooked, lead >= LEAD_SPLIT)] += 1
+                            by_bin[("ok", b, hooked, lead >= LEAD_SPLIT)] += ok
                         if not ok:
                             others[str(kind)] += 1
                             misread.append(f"{family} {pen} {seed} {'timed' if timed else 'untimed'} {kind} "

@@ -34,12 +34,15 @@ HELD_FLOORS = {
     "pentagon-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
     "hexagon-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 48},
     "ellipse-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
+    "triangle-long-tail": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
+    "x-run-past": {"careful": 60, "hurried": 60, "hurried-coarse": 58, "hurried-mouse": 56},
 }
 """family -> pen -> of the 60 readings on the held seeds (30 shapes, with and without times), how many are read as
 `EXPECTED`, measured on this branch; main 3b9e40f read 54, 54, 54, 56 (triangles), 58, 58, 58, 56 (boxes), 60, 58, 58,
-58 (diamonds), 60, 58, 58, 58 (pentagons) and the hexagons and ellipses as here. Left: triangles whose pen lands 0.2
-of a side before the first corner and runs on 0.36-0.4 of a side past it (a delete mark's shape), and hexagons through
-a mouse read as circles (lumpy, whatever their ends)."""
+58 (diamonds), 60, 58, 58, 58 (pentagons) and the hexagons and ellipses as here; session 31 (wt-tails) added
+``triangle-long-tail`` (main 54414db: 60 each) and ``x-run-past`` (main 30, 8, 6, 8). Left: triangles whose pen
+lands 0.2 of a side before the first corner and runs on 0.36-0.4 of a side past it (a delete mark's shape), and
+hexagons through a mouse read as circles (lumpy, whatever their ends)."""
 
 
 @pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])
@@ -91,3 +94,39 @@ def test_a_persons_delete_mark_whose_ends_cross_and_run_on_stays_open(name: str,
     if file is None:
         pytest.skip(f"{tail} is not in the cached {name}")
     assert recognize_stroke(*_stroke(rows[file])).kind == "polyline"
+
+
+X_RUN_PAST = (
+    ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s07/x05.xml"),
+    ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s02/delete_mark02.xml"),
+)
+"""People's x and delete mark whose start lies on the path by the crossing and whose last arm runs on past it by
+1.13-1.14 times itself (`end_crossings.RUN_PAST`): polygons on main 54414db (session 31, wt-tails)."""
+LONG_TAILED_TRIANGLES = (
+    ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s02/triangle06.xml"),
+    ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/triangle05.xml"),
+    ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s02/triangle02.xml"),
+)
+"""People's triangles whose last side runs on past the crossing by 0.85, 0.68 and 0.51 of itself, their starts on the
+path: the longest run-on tails of people's triangles read as polygons, kept so by `end_crossings.RUN_PAST`."""
+
+
+@pytest.mark.parametrize(("name", "file", "kind"), [(n, f, "polyline") for n, f in X_RUN_PAST]
+                         + [(n, f, "polygon") for n, f in LONG_TAILED_TRIANGLES],
+                         ids=[f.split("/", 3)[-1] for _, f in X_RUN_PAST + LONG_TAILED_TRIANGLES])
+def test_an_x_whose_arm_runs_past_its_start_is_open_and_a_long_tailed_triangle_closed(
+        name: str, file: str, kind: str) -> None:
+    rows = cached_rows(name)
+    found = next((f for f in rows if f.endswith(file)), None)
+    if found is None:
+        pytest.skip(f"{file} is not in the cached {name}")
+    assert recognize_stroke(*_stroke(rows[found])).kind == kind
+
+
+def test_the_same_triangle_is_closed_or_an_x_by_how_far_its_last_side_runs_on() -> None:
+    """A triangle (corners (0, 0), (160, 0), (80, 160)), the pen landing 10 px before its first corner (so its start
+    lies on the path), its last side (179 px) running on past that corner by 0.75 of itself (a triangle: closed) and
+    by 1.25 (an x's arm: open, `end_crossings.x_run_past`; a polygon on main 54414db)."""
+    for share, kind in ((0.75, "polygon"), (1.25, "polyline")):
+        work = _dense([(-10.0, 0.0), (160.0, 0.0), (80.0, 160.0), (-80.0 * share, -160.0 * share)])
+        assert recognize_stroke(work.tolist()).kind == kind, share

@@ -13,6 +13,16 @@ and hooking off by 20-70 degrees over its length, either way, the other half:
 - ``ellipse-run-on``: a circle or ellipse (up to 2:1) whose pen comes in along the rim's tangent from ``lead`` of the
   radius outside, goes round 360 degrees and leaves along the tangent again for ``tail`` of the radius (the side of
   the hexagon the rim holds), so the two cross where it started.
+
+Two families draw the ends crossing round a triangle, the pen landing 0-0.15 of the first side before the crossing (so
+its start lies on the path; session 31, wt-tails):
+
+- ``triangle-long-tail``: a triangle (as ``triangle-run-on``) whose last side runs on past its first corner by 0.5-0.85
+  of itself (people's triangles run on so far: hcira klarubbio/s02 triangle06 0.85), straight or hooking off; read as
+  a polygon;
+- ``x-run-past``: an x or a delete mark drawn in one stroke, the crossing's angle 50-110 degrees, its arms 0.7-1.4 of
+  each other, the loop's third side across their far ends, the last arm running on past the crossing by 1.05-1.5 of
+  itself (an x's second diagonal out to its far corner: hcira klarubbio/s07 x05 1.14); read as a polyline.
 """
 
 from __future__ import annotations
@@ -26,13 +36,18 @@ from penmodels.open_marks import Mark, Point
 
 EXPECTED: dict[str, str | tuple[str, ...]] = {
     "triangle-run-on": "polygon", "box-run-on": "box", "diamond-run-on": ("box", "polygon"),
-    "pentagon-run-on": "polygon", "hexagon-run-on": "polygon", "ellipse-run-on": ("circle", "ellipse")}
+    "pentagon-run-on": "polygon", "hexagon-run-on": "polygon", "ellipse-run-on": ("circle", "ellipse"),
+    "triangle-long-tail": "polygon", "x-run-past": "polyline"}
 """The kind (or kinds) each family is read as (benchmarks/label_kinds.tsv: a triangle is a polygon, a rectangle a box,
 a diamond a box or a polygon, a circle or oval round)."""
 TAIL = (0.0, 0.5)
 """How far the pen runs on past the first corner, as a share of the last side (of the radius, round)."""
 LEAD = (0.0, 0.25)
 """How far before the first corner the pen lands, as a share of the first side (of the radius, round)."""
+TAILS = {"triangle-long-tail": (0.5, 0.85), "x-run-past": (1.05, 1.5)}
+"""The families whose tails are drawn from their own range (of the last side), not from `TAIL`."""
+LEADS = {"triangle-long-tail": (0.0, 0.15), "x-run-past": (0.0, 0.15)}
+"""The families whose pen lands from their own range (of the first side), not from `LEAD`."""
 
 
 def _regular(rng: random.Random, sides: int, jitter: float) -> list[Point]:
@@ -53,6 +68,15 @@ def _triangle(rng: random.Random) -> list[Point]:
             return c
 
 
+def _x_half(rng: random.Random) -> list[Point]:
+    """An x's or a delete mark's loop: the crossing, then the arms' far ends (the arms 0.7-1.4 of each other, 60-200 px,
+    50-110 degrees apart)."""
+    a = rng.uniform(60, 200)
+    b = a * rng.uniform(0.7, 1.4)
+    turn, at = math.radians(rng.uniform(50, 110)), rng.uniform(0, 2 * math.pi)
+    return [(0.0, 0.0), (a * math.cos(at), a * math.sin(at)), (b * math.cos(at + turn), b * math.sin(at + turn))]
+
+
 def _box(rng: random.Random) -> list[Point]:
     w = rng.uniform(120, 400)
     h = w / rng.uniform(1.0, 2.0)
@@ -67,7 +91,10 @@ def _diamond(rng: random.Random) -> list[Point]:
 
 CORNERS: dict[str, Callable[[random.Random], list[Point]]] = {
     "triangle-run-on": _triangle, "box-run-on": _box, "diamond-run-on": _diamond,
-    "pentagon-run-on": lambda rng: _regular(rng, 5, 0.1), "hexagon-run-on": lambda rng: _regular(rng, 6, 0.1)}
+    "pentagon-run-on": lambda rng: _regular(rng, 5, 0.1), "hexagon-run-on": lambda rng: _regular(rng, 6, 0.1),
+    "triangle-long-tail": _triangle, "x-run-past": _x_half}
+FIXED_START = ("x-run-past",)
+"""Families whose pen starts at the loop's first corner (the crossing), not at a corner drawn at random."""
 
 
 def _tail(rng: random.Random, start: Point, heading: float, length: float, hooked: bool) -> list[Point]:
@@ -87,17 +114,19 @@ def _tail(rng: random.Random, start: Point, heading: float, length: float, hooke
     return pts
 
 
-def run_on(family: str, seed: int, tails: tuple[float, float] = TAIL) -> tuple[Mark, float, bool, float]:
-    """The ``family``'s shape for ``seed``, its tail's share (drawn from ``tails``, `TAIL` unless given: the same
-    shape, its tail scaled), whether the tail hooks, and its lead's share (`LEAD`)."""
+def run_on(family: str, seed: int, tails: tuple[float, float] | None = None) -> tuple[Mark, float, bool, float]:
+    """The ``family``'s shape for ``seed``, its tail's share (drawn from ``tails``, the family's range unless given:
+    the same shape, its tail scaled; `TAIL`, `TAILS`), whether the tail hooks, and its lead's share (`LEAD`,
+    `LEADS`)."""
     rng = random.Random(f"{family}:{seed}")
-    lead, tail, hooked = rng.uniform(*LEAD), rng.uniform(*tails), rng.random() < 0.5
+    lead = rng.uniform(*LEADS.get(family, LEAD))
+    tail, hooked = rng.uniform(*(tails or TAILS.get(family, TAIL))), rng.random() < 0.5
     if family == "ellipse-run-on":
         return _ellipse(rng, lead, tail, hooked), tail, hooked, lead
     c = CORNERS[family](rng)
     if rng.random() < 0.5:
-        c = c[::-1]
-    k = rng.randrange(len(c))
+        c = [c[0], *c[:0:-1]] if family in FIXED_START else c[::-1]
+    k = 0 if family in FIXED_START else rng.randrange(len(c))
     c = c[k:] + c[:k]
     first, last = (c[1][0] - c[0][0], c[1][1] - c[0][1]), (c[0][0] - c[-1][0], c[0][1] - c[-1][1])
     land = (c[0][0] - lead * first[0], c[0][1] - lead * first[1])

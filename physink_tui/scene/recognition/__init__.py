@@ -97,7 +97,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    stroke whose tails cross each other near its ends is closed however far apart its ends lifted
    (`closed_loops.ends_cross`: a triangle closed past its first corner), or one end within that gap and the other
    up to half its size past the crossing where the loop between is a polygon of four sides or more
-   (`end_crossings.crossed_close`: a box or a diamond whose last side runs on past its first corner), and one whose
+   (`end_crossings.crossed_close`: a box or a diamond whose last side runs on past its first corner), but not one
+   whose start lies on its path and whose last arm runs on past the crossing by its own length round a triangle
+   (`end_crossings.x_run_past`: an x's second diagonal), and one whose
    ends a hook where the pen
    landed or lifted kept apart is judged without the hook where it does not cross itself (a 10-30 px circle's hook of
    a few pixels is a fifth of its size; a pigtail's tails cross).

@@ -241,6 +241,8 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     d_head = np.hypot(*(head - work[-1]).T)
     if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit and not ends_cross_or_run_on(work, diag):
         return False, work, None
+    if gap > limit and end_crossings.x_run_past(work, diag, CLOSED_GAP):
+        return False, work, None  # an x's or a delete mark's end runs on past its start (`end_crossings.RUN_PAST`)
     loop = cut_ends(work, gap, d_tail, d_head)
     if len(loop) < 8:
         return True, work, None

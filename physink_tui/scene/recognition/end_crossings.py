@@ -83,3 +83,48 @@ def many_sided(loop: np.ndarray) -> bool:
     return (len(corners) - 2 >= RUN_ON_CORNERS
             and all(sg.chord_deviation(loop[c:d + 1]) < open_shapes.STRAIGHT for c, d in itertools.pairwise(corners))
             and crossings(loop[corners[:-1]]) == 0)
+
+
+RUN_PAST = 1.0
+"""A stroke whose one end lies near its path (`closed_loops.closed_loop`'s gap test) and whose ends cross, one within
+`closed_loops.CLOSED_GAP` of its size of the crossing, is an x or a delete mark, not a closed triangle, where the other
+end runs on past the crossing by this many times the side it continues or more, the loop between a triangle with
+straight sides: an x's second diagonal runs on to its far corner (people's x's and delete marks read as polygons: hcira
+klarubbio/s07 x05 1.14, s02 delete_mark02 1.13; the least of the x's and delete marks whose ends cross so 0.46), a
+run-on triangle's last side stops short of another side's length (people's 0.85 at most, klarubbio/s02 triangle06; the
+pen models' up to half a side). Session 31 (wt-tails)."""
+X_REACH = 1 / 3
+"""The end run on past the crossing is sought among this share of the stroke's points from it."""
+
+
+def x_run_past(work: np.ndarray, diag: float, near: float) -> bool:
+    """Whether ``work``'s ends cross, one within ``near`` of its size (``diag``) of its end and the other among
+    `X_REACH` of its points, that other running on past the crossing by `RUN_PAST` times the side it continues or more,
+    the loop between a triangle with straight sides (`RUN_PAST`); asked from either end alike."""
+    n = len(work)
+    k = max(2, int(X_REACH * n))
+    along = sg.along(work)
+    for pts, dist in ((work, along), (work[::-1], along[-1] - along[::-1])):
+        h = min(int(np.searchsorted(dist, near * diag, side="right")) + 1, k)
+        head, tail = pts[:h], pts[n - k:]
+        if (head.min(axis=0) > tail.max(axis=0)).any() or (tail.min(axis=0) > head.max(axis=0)).any():
+            continue
+        found = _crossing(head, tail)
+        if found is None:
+            continue
+        j = n - k + found[1]  # the tail's step the head crosses
+        loop = pts[found[0] + 1: j + 1]
+        if len(loop) < 8:
+            continue
+        corners = sg.find_corners(loop)
+        if len(corners) != 4 or any(sg.chord_deviation(loop[c:d + 1]) >= open_shapes.STRAIGHT
+                                    for c, d in itertools.pairwise(corners)):
+            continue
+        p, r = pts[found[0]], pts[found[0] + 1] - pts[found[0]]  # where the head's step meets the tail's
+        s = pts[j + 1] - pts[j]
+        den = float(r[0] * s[1] - r[1] * s[0])
+        cross = p + float((pts[j] - p)[0] * s[1] - (pts[j] - p)[1] * s[0]) / den * r
+        run = abs(float(dist[-1] - dist[j + 1])) + float(np.hypot(*(pts[j + 1] - cross)))
+        if run >= RUN_PAST * float(np.hypot(*(cross - loop[corners[-2]]))):
+            return True
+    return False
