@@ -217,42 +217,49 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
     if float(gaps.max()) > BURST_GAP:
         return None
-    if ellipse[4] <= BURST_ROUND or (closed and tangent_to_one_curve(pts, jumps, diag)):
+    if ellipse[4] <= BURST_ROUND or (closed and tangent_to_one_curve(pts, jumps, ellipse)):
         return ellipse
     return ellipse if _closer_to_ellipse(pts, ellipse, closed) else None
 
 
 BURST_HEADING = 0.03
 """`tangent_to_one_curve` takes a burst's heading from its first event to its last where they lie at least this share
-of the stroke's diagonal apart (a mouse's whole pixels at 60-200 px across: a heading over 2-6 px is a guess)."""
+of the diagonal apart (of the stroke's ellipse made a unit circle: a mouse's whole pixels at 60-200 px across make a
+heading over 2-6 px a guess)."""
 TANGENT_TURN = math.radians(150)
 """... and leaves out a jump across which the path turns by more than this in all (a hook or the run-on at the close
 heading off the loop)."""
 EVEN_TANGENTS = 0.4
-"""A stroke in bursts is round where the turns either side of its jumps differ by at most this share of their sum
-(`tangent_to_one_curve`; pen models through the mouse, tuning seeds, the closed strokes the closeness test
-`BURST_CLOSER` refuses: whole notes and small circles 0.1-0.68, median 0.36, 17 of 30 at 0.4 or under; boxes, small
-boxes, rounded boxes, slipped boxes 0.2-0.96, median 0.71, one under 0.53: a small box already read as a polygon)."""
+"""A closed stroke in bursts is round where the turns either side of its jumps differ by at most this share of their
+sum (`tangent_to_one_curve`). The pen models through the mouse, tuning seeds, the closed strokes the closeness test
+(`BURST_CLOSER`) refuses: whole notes and small circles 0.04-0.55, median 0.31, 24 of 30 at 0.4 or under; small,
+thin, rounded and slipped boxes 0.29-0.9, median 0.62, one under 0.5 (a small box read as a polygon before)."""
 
 
-def tangent_to_one_curve(pts: np.ndarray, jumps: np.ndarray, diag: float) -> bool:
+def tangent_to_one_curve(pts: np.ndarray, jumps: np.ndarray, ellipse: EllipseFit) -> bool:
     """Whether the bursts of a closed stroke (``jumps``: which steps between ``pts`` jump between bursts) are tangent
-    to one round curve: across each jump, the path turns from the burst before to the jump's chord about as much as
-    from the chord to the burst after (`EVEN_TANGENTS`). The two tangents from a point to a circle are equal, so a chord
-    between two bursts on one arc makes equal angles with both; a box's bursts lie on its sides, the chord cutting a
-    corner wherever they happened to fall, turning at one end more than the other, and bursts on one side turn neither
-    way. Bursts too short for a heading (`BURST_HEADING`) and jumps that turn back (`TANGENT_TURN`) are left out."""
+    to one round curve, judged with the stroke's ``ellipse`` made a unit circle: across each jump the path turns from
+    the burst before to the jump's chord about as much as from the chord to the burst after (`EVEN_TANGENTS`). The two
+    tangents from a point to a circle are equal, so a chord between two bursts on it makes equal angles with both; a
+    box's bursts lie on its sides, the chord cutting a corner wherever they happened to fall, turning more at one end
+    than the other, and bursts on one side turn neither way. Bursts too short for a heading (`BURST_HEADING`) and
+    jumps that turn back (`TANGENT_TURN`) are left out."""
+    (cx, cy), rx, ry, angle, _ = ellipse
+    c, s = math.cos(angle), math.sin(angle)
+    rel = pts - np.array([cx, cy])
+    unit = np.column_stack([(rel[:, 0] * c + rel[:, 1] * s) / rx, (-rel[:, 0] * s + rel[:, 1] * c) / ry])
     cut = [0, *(int(i) + 1 for i in np.flatnonzero(jumps)), len(pts)]
     heads: list[float | None] = []
     for a, b in itertools.pairwise(cut):
-        chord = pts[b - 1] - pts[a]
-        heads.append(math.atan2(chord[1], chord[0]) if math.hypot(*chord) >= BURST_HEADING * diag else None)
+        chord = unit[b - 1] - unit[a]
+        heads.append(math.atan2(chord[1], chord[0]) if math.hypot(*chord) >= BURST_HEADING * 2 * math.sqrt(2)
+                     else None)
     unequal = total = 0.0
     for k in range(len(heads) - 1):
         before, after = heads[k], heads[k + 1]
         if before is None or after is None:
             continue
-        jump = pts[cut[k + 1]] - pts[cut[k + 1] - 1]
+        jump = unit[cut[k + 1]] - unit[cut[k + 1] - 1]
         chord = math.atan2(jump[1], jump[0])
         first = (chord - before + math.pi) % (2 * math.pi) - math.pi
         second = (after - chord + math.pi) % (2 * math.pi) - math.pi
