@@ -3,11 +3,11 @@ points (`shape_bend`), against which a sparse stroke's jitter is judged; no clas
 
 from __future__ import annotations
 
-import itertools
 import math
 
 import numpy as np
 
+from physink_tui.scene.recognition import burst_tangents
 from physink_tui.scene.recognition.polygon_fit import best_polygons
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 from physink_tui.scene.recognition.stroke_geometry import bbox_diagonal, median
@@ -186,18 +186,36 @@ BURST_GAP = 0.75 * math.pi
 """... leaving no gap round it wider than this."""
 
 
+def burst_jumps(pts: np.ndarray, diag: float) -> tuple[np.ndarray, np.ndarray]:
+    """The steps between ``pts`` and which of them jump between bursts of events (`BURST_JUMP`, `BURST_JUMP_SHARE`)."""
+    d = pts[1:] - pts[:-1]
+    step = np.hypot(d[:, 0], d[:, 1])
+    return step, step >= max(BURST_JUMP * median(step), BURST_JUMP_SHARE * diag)
+
+
+def bursts_on_sides(pts: np.ndarray, diag: float) -> bool:
+    """Whether a closed stroke's points come in bursts that lie on sides with corners between them, not on one round
+    curve (`burst_tangents.on_sides`, judged against the ellipse fitted to the points)."""
+    if len(pts) < 8 or diag <= 0:
+        return False
+    _, jumps = burst_jumps(pts, diag)
+    ellipse = fit_ellipse(pts)
+    if ellipse is None or not (ellipse[1] > 0 and ellipse[2] > 0):
+        return False
+    return burst_tangents.on_sides(pts, jumps, ellipse)
+
+
 def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, closed: bool = True,
                     ) -> EllipseFit | None:
     """The ellipse of a stroke whose points come in a few bursts joined by long jumps (`BURST_JUMP`, `BURST_PATH`,
     `MOST_BURSTS`: a busy mouse's events, whose chords are the device's, not the hand's path) and lie on an ellipse
-    (`BURST_ROUND`, or `BURST_ROUND_MOST` and `BURST_CLOSER`) going round it one way by ``sweep`` radians or more, no
+    (`BURST_ROUND`, or `BURST_ROUND_MOST` and `BURST_CLOSER` or, closed, bursts tangent to it:
+    `burst_tangents.tangent_to_one_curve`) going round it one way by ``sweep`` radians or more, no
     gap round it wider than `BURST_GAP`; else None. ``closed``: whether the stroke was read closed (where not, ends
     within `BURST_ENDS_NEAR` of each other need go round no more than `BURST_SWEEP_NEAR`)."""
     if len(pts) < 8 or diag <= 0:
         return None
-    d = pts[1:] - pts[:-1]
-    step = np.hypot(d[:, 0], d[:, 1])
-    jumps = step >= max(BURST_JUMP * median(step), BURST_JUMP_SHARE * diag)
+    step, jumps = burst_jumps(pts, diag)
     if not 3 <= int(jumps.sum()) <= MOST_BURSTS or float(step[jumps].sum()) < BURST_PATH * float(step.sum()):
         return None
     ellipse = fit_ellipse(pts)
@@ -217,56 +235,9 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
     if float(gaps.max()) > BURST_GAP:
         return None
-    if ellipse[4] <= BURST_ROUND or (closed and tangent_to_one_curve(pts, jumps, ellipse)):
+    if ellipse[4] <= BURST_ROUND or (closed and burst_tangents.tangent_to_one_curve(pts, jumps, ellipse)):
         return ellipse
     return ellipse if _closer_to_ellipse(pts, ellipse, closed) else None
-
-
-BURST_HEADING = 0.03
-"""`tangent_to_one_curve` takes a burst's heading from its first event to its last where they lie at least this share
-of the diagonal apart (of the stroke's ellipse made a unit circle: a mouse's whole pixels at 60-200 px across make a
-heading over 2-6 px a guess)."""
-TANGENT_TURN = math.radians(150)
-"""... and leaves out a jump across which the path turns by more than this in all (a hook or the run-on at the close
-heading off the loop)."""
-EVEN_TANGENTS = 0.4
-"""A closed stroke in bursts is round where the turns either side of its jumps differ by at most this share of their
-sum (`tangent_to_one_curve`). The pen models through the mouse, tuning seeds, the closed strokes the closeness test
-(`BURST_CLOSER`) refuses: whole notes and small circles 0.04-0.55, median 0.31, 24 of 30 at 0.4 or under; small,
-thin, rounded and slipped boxes 0.29-0.9, median 0.62, one under 0.5 (a small box read as a polygon before)."""
-
-
-def tangent_to_one_curve(pts: np.ndarray, jumps: np.ndarray, ellipse: EllipseFit) -> bool:
-    """Whether the bursts of a closed stroke (``jumps``: which steps between ``pts`` jump between bursts) are tangent
-    to one round curve, judged with the stroke's ``ellipse`` made a unit circle: across each jump the path turns from
-    the burst before to the jump's chord about as much as from the chord to the burst after (`EVEN_TANGENTS`). The two
-    tangents from a point to a circle are equal, so a chord between two bursts on it makes equal angles with both; a
-    box's bursts lie on its sides, the chord cutting a corner wherever they happened to fall, turning more at one end
-    than the other, and bursts on one side turn neither way. Bursts too short for a heading (`BURST_HEADING`) and
-    jumps that turn back (`TANGENT_TURN`) are left out."""
-    (cx, cy), rx, ry, angle, _ = ellipse
-    c, s = math.cos(angle), math.sin(angle)
-    rel = pts - np.array([cx, cy])
-    unit = np.column_stack([(rel[:, 0] * c + rel[:, 1] * s) / rx, (-rel[:, 0] * s + rel[:, 1] * c) / ry])
-    cut = [0, *(int(i) + 1 for i in np.flatnonzero(jumps)), len(pts)]
-    heads: list[float | None] = []
-    for a, b in itertools.pairwise(cut):
-        chord = unit[b - 1] - unit[a]
-        heads.append(math.atan2(chord[1], chord[0]) if math.hypot(*chord) >= BURST_HEADING * 2 * math.sqrt(2)
-                     else None)
-    unequal = total = 0.0
-    for k in range(len(heads) - 1):
-        before, after = heads[k], heads[k + 1]
-        if before is None or after is None:
-            continue
-        jump = unit[cut[k + 1]] - unit[cut[k + 1] - 1]
-        chord = math.atan2(jump[1], jump[0])
-        first = (chord - before + math.pi) % (2 * math.pi) - math.pi
-        second = (after - chord + math.pi) % (2 * math.pi) - math.pi
-        if abs(first) + abs(second) <= TANGENT_TURN:
-            unequal += abs(first - second)
-            total += abs(first) + abs(second)
-    return total > 0 and unequal <= EVEN_TANGENTS * total
 
 
 def _closer_to_ellipse(pts: np.ndarray, ellipse: EllipseFit, closed: bool) -> bool:
