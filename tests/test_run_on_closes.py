@@ -32,15 +32,14 @@ HELD_FLOORS = {
     "box-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
     "diamond-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
     "pentagon-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
-    "hexagon-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 58},
+    "hexagon-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 48},
     "ellipse-run-on": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
 }
 """family -> pen -> of the 60 readings on the held seeds (30 shapes, with and without times), how many are read as
 `EXPECTED`, measured on this branch; main 3b9e40f read 54, 54, 54, 56 (triangles), 58, 58, 58, 56 (boxes), 60, 58, 58,
 58 (diamonds), 60, 58, 58, 58 (pentagons) and the hexagons and ellipses as here. Left: triangles whose pen lands 0.2
 of a side before the first corner and runs on 0.36-0.4 of a side past it (a delete mark's shape), and hexagons through
-a mouse read as circles (lumpy, whatever their ends). Session 31 (wt-mouse): hexagons through the mouse 48 -> 58, their
-bursts lying on sides letting their sharp corners tell (`burst_tangents.on_sides`, `round_or_cornered`)."""
+a mouse read as circles (lumpy, whatever their ends)."""
 
 
 @pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])

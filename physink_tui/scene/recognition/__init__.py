@@ -72,9 +72,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its
    vertices turn within 0.4 of their shorter side (`polygon_checks.sharp_corners`; a round loop needs 0.8): a
    hexagon or octagon whose many vertices the complexity penalty outweighed; never on points sparser than four to
-   the shortest side (a circle given as a few points round it), unless its events came in bursts lying on sides, the
-   chords between them turning more out of one burst than into the next (`burst_tangents.on_sides`: a hexagon through
-   a busy mouse). Where the stroke's times are known, a polygon of five
+   the shortest side (a circle given as a few points round it). Where the stroke's times are known, a polygon of five
    sides or more is also read so when the pen slowed at its vertices (`corner_pace`: under 0.55 of its mean pace at the
    median vertex) and its median vertex turns within half its shorter side: a mouse's octagon, its corners blurred by
    sparse points, which a person's mouse circle (drawn at an even pace) fits as closely. A polygon of five sides or
@@ -248,7 +246,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `stroke_views.py`: one stroke's resampled, smoothed and hook-cut copies that the checks after the rules (waves,
   stairs, ticks, brackets, braces) share, each made once a recognition (read-only, never shared between strokes)
 - `burst_tangents.py`: whether a mouse's bursts of events are tangent to one round curve (the chords between them
-  turning equally out of one burst and into the next, on the stroke's ellipse made a unit circle) or lie on sides
+  turning equally out of one burst and into the next, on the stroke's ellipse made a unit circle), not on sides
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points (their step
   judged along the stroke's body, not a landing's cluster), and whether a few sparse events turn at every one (a
   round shape sampled, not a polygon's sides)

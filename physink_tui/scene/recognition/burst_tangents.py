@@ -1,5 +1,5 @@
-"""How the bursts of a mouse's events lie against a round curve: tangent to one (a loop) or on sides with corners
-between them (an outline), judged by the turns either side of the jumps between bursts; no classification, no I/O."""
+"""Whether the bursts of a mouse's events are tangent to one round curve (a loop), not on sides with corners between
+them (an outline), judged by the turns either side of the jumps between bursts; no classification, no I/O."""
 
 from __future__ import annotations
 
@@ -22,16 +22,6 @@ EVEN_TANGENTS = 0.4
 sum (`tangent_to_one_curve`). The pen models through the mouse, tuning seeds, the closed strokes the closeness test
 (`pen_noise.BURST_CLOSER`) refuses: whole notes and small circles 0.04-0.55, median 0.31, 24 of 30 at 0.4 or under;
 small, thin, rounded and slipped boxes 0.29-0.9, median 0.62, one under 0.5 (a small box read as a polygon before)."""
-UNEVEN_TANGENTS = 0.6
-"""A closed stroke in bursts whose turns either side of its jumps differ by at least this share of their sum, over
-`SIDED_JUMPS` jumps or more, has its bursts on sides (`on_sides`): the pen models' hexagons and octagons through the
-mouse read round 0.4-1.0 (tuning seeds; 10 of the 33 read round pass, turned polygons at their sharp corners), their
-circles, ovals and whole notes under 0.5 where they reach `round_or_cornered`'s polygons (a whole note left open at 0.5
-turns a polygon)."""
-SIDED_JUMPS = 3
-"""The jumps (each with a heading either side) `on_sides` asks for at least."""
-
-
 def tangent_turns(pts: np.ndarray, jumps: np.ndarray, ellipse: EllipseFit) -> tuple[float, float, int]:
     """Across each jump between bursts of ``pts`` (``jumps``: which steps jump), with the stroke's ``ellipse`` made a
     unit circle: the turn from the burst before to the jump's chord and from the chord to the burst after. Returns how
@@ -72,9 +62,3 @@ def tangent_to_one_curve(pts: np.ndarray, jumps: np.ndarray, ellipse: EllipseFit
     unequal, total, _ = tangent_turns(pts, jumps, ellipse)
     return total > 0 and unequal <= EVEN_TANGENTS * total
 
-
-def on_sides(pts: np.ndarray, jumps: np.ndarray, ellipse: EllipseFit) -> bool:
-    """Whether the bursts of a closed stroke lie on sides with corners between them: over `SIDED_JUMPS` jumps or more,
-    the turns either side of them unequal (`UNEVEN_TANGENTS`, `tangent_turns`)."""
-    unequal, total, count = tangent_turns(pts, jumps, ellipse)
-    return count >= SIDED_JUMPS and total > 0 and unequal >= UNEVEN_TANGENTS * total

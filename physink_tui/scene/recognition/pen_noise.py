@@ -193,18 +193,6 @@ def burst_jumps(pts: np.ndarray, diag: float) -> tuple[np.ndarray, np.ndarray]:
     return step, step >= max(BURST_JUMP * median(step), BURST_JUMP_SHARE * diag)
 
 
-def bursts_on_sides(pts: np.ndarray, diag: float) -> bool:
-    """Whether a closed stroke's points come in bursts that lie on sides with corners between them, not on one round
-    curve (`burst_tangents.on_sides`, judged against the ellipse fitted to the points)."""
-    if len(pts) < 8 or diag <= 0:
-        return False
-    _, jumps = burst_jumps(pts, diag)
-    ellipse = fit_ellipse(pts)
-    if ellipse is None or not (ellipse[1] > 0 and ellipse[2] > 0):
-        return False
-    return burst_tangents.on_sides(pts, jumps, ellipse)
-
-
 def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, closed: bool = True,
                     ) -> EllipseFit | None:
     """The ellipse of a stroke whose points come in a few bursts joined by long jumps (`BURST_JUMP`, `BURST_PATH`,

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from physink_tui.scene.recognition import pen_noise
 from physink_tui.scene.recognition.candidates import Candidate, Pending
 from physink_tui.scene.recognition.corner_pace import slowed_at_corners
 from physink_tui.scene.recognition.polygon_checks import (
@@ -61,15 +60,13 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
     explained = CORNERS_EXPLAIN * round_rss
     n = len(polygons[0].fits[0].points) if polygons and polygons[0].fits else 1
     step = typical_step(raw)
-    sided: list[bool] = []  # whether the stroke's bursts of events lie on sides (asked once, where needed)
     for pending in sorted((p for p in polygons if p.params >= 2 * 4 and p.rss <= explained),
                           key=lambda p: bic_score(p, n, sigma, weights)):
         # only the best fit of that many sides is judged, before building (which judges every corner: the costlier)
         best = pending.fits[0] if pending.fits else None
         if best is None or best.rss > explained or not (corners_told or sharp_corners(best, step)
                                                          or slowed_corners(best, step, raw, times)
-                                                         or mostly_sharp(best, step, round_rss)
-                                                         or _sharp_between_bursts(best, step, raw, diag, sided)):
+                                                         or mostly_sharp(best, step, round_rss)):
             continue
         for c in [*_built(pending, best), *_shallow(pending, best, noise)]:
             if c.kind == "box" and not inside(c.geometry, box_lo, box_hi) and c.fallback is not None:
@@ -77,17 +74,6 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
             if inside(c.geometry, *((box_lo, box_hi) if c.kind == "box" else (lo, hi))):
                 return Recognition(c.kind, ranked.confidence, c.geometry, ((ranked.kind, 1.0 - ranked.confidence),))
     return ranked
-
-
-def _sharp_between_bursts(fit: PolygonFit, step: float, raw: np.ndarray, diag: float, sided: list[bool]) -> bool:
-    """Whether a fit too sparse for `sharp_corners` to tell (`polygon_checks.dense_enough`: a mouse's events in
-    bursts, their chords long) turns sharply at its vertices all the same, the stroke's bursts lying on sides
-    (`pen_noise.bursts_on_sides`, found once into ``sided``): a hexagon or octagon through a busy mouse."""
-    if dense_enough(fit, step) or not sharp_corners(fit, 0.0):
-        return False
-    if not sided:
-        sided.append(pen_noise.bursts_on_sides(raw, diag))
-    return sided[0]
 
 
 def slowed_corners(fit: PolygonFit, step: float, raw: np.ndarray, times: np.ndarray | None) -> bool:
