@@ -45,12 +45,12 @@ HELD_FLOORS: dict[str, dict[str, int]] = {
     "oval-open-hooked": {**_ALL, "careful": 58, "hurried": 54, "hurried-sparse": 50, "hurried-mouse": 54},
     "oval-over": _ALL,
     "oval-over-hooked": _ALL,
-    "whole-note-closed": {**_ALL, "hurried-mouse": 40},
-    "whole-note-closed-hooked": {**_ALL, "hurried-mouse": 44},
-    "whole-note-open": {**_ALL, "hurried": 54, "hurried-sparse": 54, "hurried-mouse": 44},
-    "whole-note-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 56, "hurried-mouse": 32},
-    "whole-note-over": {**_ALL, "hurried-mouse": 46},
-    "whole-note-over-hooked": {**_ALL, "hurried-mouse": 42},
+    "whole-note-closed": {**_ALL, "hurried-mouse": 48},
+    "whole-note-closed-hooked": {**_ALL, "hurried-mouse": 46},
+    "whole-note-open": {**_ALL, "hurried": 54, "hurried-sparse": 54, "hurried-mouse": 46},
+    "whole-note-open-hooked": {**_ALL, "hurried": 56, "hurried-sparse": 56, "hurried-mouse": 36},
+    "whole-note-over": {**_ALL, "hurried-mouse": 52},
+    "whole-note-over-hooked": {**_ALL, "hurried-mouse": 44},
 }
 """family -> pen -> of the 60 readings on the held seeds (30 gestures each way round: as drawn and mirrored, which
 turns it the other way), how many are circles or ellipses, each way (a stroke and its mirror read alike); measured on
@@ -68,7 +68,10 @@ nearer it than any outline of three or four sides, are round (`pen_noise.BURST_C
 (`pen_noise.turns_evenly_at_events`: circles, ovals and notes left open by 8-40 events up by 2 each). Session 30
 (wt-notes): a round stroke left open in bursts with its ends within 0.75 of its diagonal of each other need go round
 its ellipse 240 degrees, not 300 (`pen_noise.BURST_SWEEP_NEAR`: through the mouse, whole notes left open 26 -> 44,
-hooked 24 -> 32, circles left open 52 -> 58, ovals 50 -> 54 and hooked 52 -> 54)."""
+hooked 24 -> 32, circles left open 52 -> 58, ovals 50 -> 54 and hooked 52 -> 54). Session 31 (wt-mouse): a closed
+stroke in bursts is round where its bursts are tangent to one curve, the chords between them turning as much out of one
+burst as into the next (`burst_tangents.tangent_to_one_curve`): whole notes through the mouse closed 40 -> 48, hooked
+44 -> 46, run on 46 -> 52, hooked 42 -> 44, left open 44 -> 46 and hooked 32 -> 36 (read closed)."""
 
 
 def _both_ways(family: str, pen: str) -> tuple[list[str | None], list[str | None]]:

@@ -49,7 +49,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    (`closed_loops.LUMPY_SIDES`): a lumpy mouse-drawn circle fits a hexagon closely, a drawn polygon turns at corners;
    a loop whose points come in three to eight bursts joined by long jumps and lie on an ellipse, going round it one
    way (`pen_noise.round_in_bursts`: a busy mouse's events round a small note; a wobbly one's points off it by up to a
-   tenth, where they lie clearly closer to it than to any outline of three or four sides), is offered no polygon.
+   tenth, where they lie clearly closer to it than to any outline of three or four sides or, closed, where its
+   bursts are tangent to one round curve, the chords between them turning as much out of one burst as into the next:
+   `burst_tangents.tangent_to_one_curve`), is offered no polygon.
    A short side where the outline turns back sharply at one end and gently at the other, its neighbours' far ends
    apart, is a hook where the pen landed or lifted (`polygon_checks.SPUR`): a box with a hooked start is a box. A
    winning polygon that crosses over itself into cancelling lobes (`stroke_features.figure_eight`: a bow tie, as
@@ -245,6 +247,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   `turning_beyond_tremor`)
 - `stroke_views.py`: one stroke's resampled, smoothed and hook-cut copies that the checks after the rules (waves,
   stairs, ticks, brackets, braces) share, each made once a recognition (read-only, never shared between strokes)
+- `burst_tangents.py`: whether a mouse's bursts of events are tangent to one round curve (the chords between them
+  turning equally out of one burst and into the next, on the stroke's ellipse made a unit circle), not on sides
 - `pen_noise.py`: the stroke's own jitter, the bends a shape its size makes between sparse points (their step
   judged along the stroke's body, not a landing's cluster), and whether a few sparse events turn at every one (a
   round shape sampled, not a polygon's sides)

@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition import burst_tangents
 from physink_tui.scene.recognition.polygon_fit import best_polygons
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 from physink_tui.scene.recognition.stroke_geometry import bbox_diagonal, median
@@ -185,18 +186,24 @@ BURST_GAP = 0.75 * math.pi
 """... leaving no gap round it wider than this."""
 
 
+def burst_jumps(pts: np.ndarray, diag: float) -> tuple[np.ndarray, np.ndarray]:
+    """The steps between ``pts`` and which of them jump between bursts of events (`BURST_JUMP`, `BURST_JUMP_SHARE`)."""
+    d = pts[1:] - pts[:-1]
+    step = np.hypot(d[:, 0], d[:, 1])
+    return step, step >= max(BURST_JUMP * median(step), BURST_JUMP_SHARE * diag)
+
+
 def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, closed: bool = True,
                     ) -> EllipseFit | None:
     """The ellipse of a stroke whose points come in a few bursts joined by long jumps (`BURST_JUMP`, `BURST_PATH`,
     `MOST_BURSTS`: a busy mouse's events, whose chords are the device's, not the hand's path) and lie on an ellipse
-    (`BURST_ROUND`, or `BURST_ROUND_MOST` and `BURST_CLOSER`) going round it one way by ``sweep`` radians or more, no
+    (`BURST_ROUND`, or `BURST_ROUND_MOST` and `BURST_CLOSER` or, closed, bursts tangent to it:
+    `burst_tangents.tangent_to_one_curve`) going round it one way by ``sweep`` radians or more, no
     gap round it wider than `BURST_GAP`; else None. ``closed``: whether the stroke was read closed (where not, ends
     within `BURST_ENDS_NEAR` of each other need go round no more than `BURST_SWEEP_NEAR`)."""
     if len(pts) < 8 or diag <= 0:
         return None
-    d = pts[1:] - pts[:-1]
-    step = np.hypot(d[:, 0], d[:, 1])
-    jumps = step >= max(BURST_JUMP * median(step), BURST_JUMP_SHARE * diag)
+    step, jumps = burst_jumps(pts, diag)
     if not 3 <= int(jumps.sum()) <= MOST_BURSTS or float(step[jumps].sum()) < BURST_PATH * float(step.sum()):
         return None
     ellipse = fit_ellipse(pts)
@@ -216,7 +223,9 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
     if float(gaps.max()) > BURST_GAP:
         return None
-    return ellipse if ellipse[4] <= BURST_ROUND or _closer_to_ellipse(pts, ellipse, closed) else None
+    if ellipse[4] <= BURST_ROUND or (closed and burst_tangents.tangent_to_one_curve(pts, jumps, ellipse)):
+        return ellipse
+    return ellipse if _closer_to_ellipse(pts, ellipse, closed) else None
 
 
 def _closer_to_ellipse(pts: np.ndarray, ellipse: EllipseFit, closed: bool) -> bool:
