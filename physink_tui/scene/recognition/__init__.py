@@ -21,8 +21,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    box's first side or a circle's first arc drawn twice over) is cut (`loop_ends.retraced_lead`).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
    drawn past its start and comes back to it (cut there), or it goes round the same sides twice, or goes round again
-   beside its first lap, which is the shape (`closed_loops.TWICE_ROUND`), or its ends meet once a landing or
-   lifting hook that kept a small loop's ends apart is cut (`closed_loops.hook_kept_apart`). Where neither end
+   beside its first lap, which is the shape (`closed_loops.TWICE_ROUND`; of a stroke gone round more than once, the
+   lap from its start or the one to its end, whichever closes tighter: `closed_loops.tighter_lap`), or its ends
+   meet once a landing or lifting hook that kept a small loop's ends apart is cut (`closed_loops.hook_kept_apart`).
+   Where neither end
    comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook
    and an overshoot both cut off); a loop so cut that is under half the stroke's size is an open mark's (an arrow's
    head closed on its shaft, an x drawn as a loop between crossing tails), and the stroke is judged open.
@@ -63,8 +65,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may; a box may
    reach 10 % (`ranking.BOX_MARGIN`: a box whose upright sides lean, squared, pokes out). A polygon left open (its
    last side heading home, or a star's run on past its start, `closed_loops.STAR_CROSSINGS`) is judged by its sides'
-   turning where an end hook undoes the path's (`closed_loops.LEFT_OPEN_WOBBLE`), and its last side may bow
-   (`closed_loops.LAST_SIDE_BOW`); so is a four-sided outline left open by part of its first or last side, up to
+   turning where an end hook undoes the path's (`closed_loops.LEFT_OPEN_WOBBLE`), and its first and last sides may
+   bow (`closed_loops.LAST_SIDE_BOW`); so is a four-sided outline left open by part of its first or last side, up to
    0.7 of it (`open_boxes.box_left_open`: three corners and the fourth where those sides' lines meet near square).
    A loop read round is read as its polygon of four sides or more after all
    (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its
