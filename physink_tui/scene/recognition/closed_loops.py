@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import end_crossings, open_shapes, pen_noise, shape_corners, shape_turning
+from physink_tui.scene.recognition import end_crossings, loop_ends, open_shapes, pen_noise, shape_corners, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.candidates import ellipse_distances
@@ -231,9 +231,9 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop, ellipse
         once = loop if back else None
-    if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
+    if abs(float(th.sum())) > 2.15 * math.pi and loop_ends.retraced_both_ways(work, th, diag):
         # a shape gone round twice over the same sides: once is enough, the lap that closes tighter
-        return True, tighter_lap(sf.one_loop(work, th), sf.one_loop(work[::-1], -th[::-1])[::-1]), None
+        return True, loop_ends.tighter_lap(sf.one_loop(work, th), sf.one_loop(work[::-1], -th[::-1])[::-1]), None
     if (once is not None and TWICE_ROUND < abs(float(th.sum())) < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
             and _beside(work, once, diag)):
         return True, once, None  # gone round again beside the first lap, not over it: the first lap is the shape
@@ -279,31 +279,21 @@ def _once_round(work: np.ndarray, th: np.ndarray, limit: float) -> tuple[np.ndar
     and whether it came back within ``limit`` of where it began: from both ends where the stroke crosses itself (a
     pigtail's tails cross, and one of them may be short enough to come back), from either end where it does not (a
     circle drawn on past its start and out: once round from its end the overshoot is a lead-in that does not). Asked
-    of both ends alike, so that a stroke reads the same drawn either way; but a stroke whose ends meet is judged from
-    its start alone, as before (once round from one end may stop short where a hook's turn adds to the count). Where
-    both laps come back, the one that closes tighter is the shape (`tighter_lap`), whichever end the pen landed at."""
+    of both ends alike, so that a stroke reads the same drawn either way. Where both laps come back, the one that closes
+    tighter is the shape (`loop_ends.tighter_lap`), whichever end the pen landed at; else a stroke whose ends meet is
+    judged from its start alone, as before (once round from one end may stop short where a hook's turn adds to the
+    count)."""
     loop = sf.one_loop(work, th)
     back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit
     other = sf.one_loop(work[::-1], -th[::-1])[::-1]
     back_other = float(np.hypot(*(other[-1] - other[0]))) <= limit
     if back and back_other:
-        return tighter_lap(loop, other), True
+        return loop_ends.tighter_lap(loop, other), True
     if float(np.hypot(*(work[-1] - work[0]))) <= limit or back == back_other:
         return loop, back
     if crosses_itself(work):
         return loop, False
     return (loop, True) if back else (other, True)
-
-
-def tighter_lap(first: np.ndarray, last: np.ndarray) -> np.ndarray:
-    """Of a stroke gone round more than once, the lap once round from its start (``first``) or the one once round to
-    its end (``last``) whose ends come closer (the pen's start or end lies nearer the path drawn over it): one rule
-    for both, so that the lap kept, and the round shape fitted to it, does not hang on which end the pen landed at (a
-    circle gone round 1.2 times has two laps whose ellipses' aspects differ by a few hundredths: near
-    `beautify.CIRCLE_RATIO`, a circle one way and an ellipse the other)."""
-    gap_first = float(np.hypot(*(first[-1] - first[0])))
-    gap_last = float(np.hypot(*(last[-1] - last[0])))
-    return last if gap_last < gap_first else first
 
 
 CROSSING_POINTS = 48
