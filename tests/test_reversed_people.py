@@ -77,26 +77,19 @@ def test_a_persons_shape_drawn_backwards_becomes_the_same_body(label: str) -> No
         assert shapes[0] == shapes[1], f"{row['file']}: {shapes[0]} as drawn, {shapes[1]} reversed"
 
 
-LAPS = {
-    "public-sets/itt-more.jsonl": ["ITT23/assignment-06-gesture-recognition-sina-sch@8c0dbdb:dataset/circle09.xml"],
+CUTS = {
     "public-sets/hcira.jsonl": [
-        "pixelfac/hcira-project-23@80d4cc7:src/dataset/user03/circle5.xml",
-        "pixelfac/hcira-project-23@80d4cc7:src/dataset/user06/circle2.xml",
-        "sinarest1608/HCIRA-HK@d91ccc6:Project1/usersamples/Subject3/circle10.xml",
-        "jd4386/HCIRA-Project@ff559d7:Part 4/custom_xml_logs/User02/circle04.xml",
-        "jd4386/HCIRA-Project@ff559d7:Part 4/custom_xml_logs/User05/circle07.xml",
         "shriyansnidhish/Dollar-one-recognizer@35d6736:Part-2/Dataset/TouchScreen_without_stylus/s02/circle05.xml",
     ],
 }
-"""People's circles gone round more than once (or overshot past the start) that read a circle one way and an ellipse
-the other until session 31: the lap kept was the one from where the pen landed (`closed_loops._once_round`,
-`stroke_features.one_loop`) or the overshoot cut first at the end (`loop_ends.cut_ends`); now the lap (or the cut)
-that closes tighter, whichever end it is at (`loop_ends.tighter_lap`)."""
+"""A person's circle drawn on past its start, whose ends each come back near the other's path: until session 31 the
+overshoot at the end was cut first (`loop_ends.cut_ends`), so drawn backwards the other end's was, and the loop kept
+read a circle one way and an ellipse the other; now the cut that keeps the shorter loop, whichever end it is at."""
 
 
-@pytest.mark.parametrize(("name", "file"), [(n, f) for n, fs in LAPS.items() for f in fs],
-                         ids=[f.rsplit("/", 2)[-2] + "/" + f.rsplit("/", 1)[-1] for fs in LAPS.values() for f in fs])
-def test_a_persons_circle_gone_round_again_reads_alike_either_way(name: str, file: str) -> None:
+@pytest.mark.parametrize(("name", "file"), [(n, f) for n, fs in CUTS.items() for f in fs],
+                         ids=[f.rsplit("/", 2)[-2] + "/" + f.rsplit("/", 1)[-1] for fs in CUTS.values() for f in fs])
+def test_a_persons_circle_drawn_past_its_start_reads_alike_either_way(name: str, file: str) -> None:
     row = cached_rows(name).get(file)
     assert row is not None, file
     ahead, back = readings(row)

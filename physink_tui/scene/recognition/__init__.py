@@ -21,10 +21,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    box's first side or a circle's first arc drawn twice over) is cut (`loop_ends.retraced_lead`).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
    drawn past its start and comes back to it (cut there), or it goes round the same sides twice, or goes round again
-   beside its first lap, which is the shape (`closed_loops.TWICE_ROUND`; of a stroke gone round more than once, the
-   lap from its start or the one to its end, whichever closes tighter: `loop_ends.tighter_lap`), or its ends
-   meet once a landing or lifting hook that kept a small loop's ends apart is cut (`closed_loops.hook_kept_apart`).
-   Where neither end
+   beside its first lap, which is the shape (`closed_loops.TWICE_ROUND`), or its ends meet once a landing or
+   lifting hook that kept a small loop's ends apart is cut (`closed_loops.hook_kept_apart`). Where neither end
    comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook
    and an overshoot both cut off); a loop so cut that is under half the stroke's size is an open mark's (an arrow's
    head closed on its shaft, an x drawn as a loop between crossing tails), and the stroke is judged open.

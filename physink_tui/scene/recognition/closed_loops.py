@@ -232,8 +232,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
             return True, loop, ellipse
         once = loop if back else None
     if abs(float(th.sum())) > 2.15 * math.pi and loop_ends.retraced_both_ways(work, th, diag):
-        # a shape gone round twice over the same sides: once is enough, the lap that closes tighter
-        return True, loop_ends.tighter_lap(sf.one_loop(work, th), sf.one_loop(work[::-1], -th[::-1])[::-1]), None
+        return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
     if (once is not None and TWICE_ROUND < abs(float(th.sum())) < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
             and _beside(work, once, diag)):
         return True, once, None  # gone round again beside the first lap, not over it: the first lap is the shape
@@ -279,21 +278,19 @@ def _once_round(work: np.ndarray, th: np.ndarray, limit: float) -> tuple[np.ndar
     and whether it came back within ``limit`` of where it began: from both ends where the stroke crosses itself (a
     pigtail's tails cross, and one of them may be short enough to come back), from either end where it does not (a
     circle drawn on past its start and out: once round from its end the overshoot is a lead-in that does not). Asked
-    of both ends alike, so that a stroke reads the same drawn either way. Where both laps come back, the one that closes
-    tighter is the shape (`loop_ends.tighter_lap`), whichever end the pen landed at; else a stroke whose ends meet is
-    judged from its start alone, as before (once round from one end may stop short where a hook's turn adds to the
-    count)."""
+    of both ends alike, so that a stroke reads the same drawn either way; but a stroke whose ends meet is judged from
+    its start alone, as before (once round from one end may stop short where a hook's turn adds to the count)."""
     loop = sf.one_loop(work, th)
     back = float(np.hypot(*(loop[-1] - loop[0]))) <= limit
-    other = sf.one_loop(work[::-1], -th[::-1])[::-1]
+    if float(np.hypot(*(work[-1] - work[0]))) <= limit:
+        return loop, back
+    other = sf.one_loop(work[::-1], -th[::-1])
     back_other = float(np.hypot(*(other[-1] - other[0]))) <= limit
-    if back and back_other:
-        return loop_ends.tighter_lap(loop, other), True
-    if float(np.hypot(*(work[-1] - work[0]))) <= limit or back == back_other:
+    if back == back_other:
         return loop, back
     if crosses_itself(work):
         return loop, False
-    return (loop, True) if back else (other, True)
+    return (loop, True) if back else (other[::-1], True)
 
 
 CROSSING_POINTS = 48

@@ -17,15 +17,16 @@ shaft, an x drawn as a loop with crossing tails."""
 
 def cut_ends(work: np.ndarray, gap: float, d_tail: np.ndarray, d_head: np.ndarray) -> np.ndarray:
     """The stroke once round: an overshoot past the start, or a start before the end, cut at the closest approach
-    (where both are, the closer of the two, so that the cut does not hang on which end the pen landed at);
-    else cut where the first and last `END_SHARE` come closest, when that is much closer than the ends are: a
+    (where both are, the one that keeps the shorter loop, so that the cut does not hang on which end the pen landed
+    at); else cut where the first and last `END_SHARE` come closest, when that is much closer than the ends are: a
     hook where the pen landed and an overshoot where it lifted (neither end alone comes near the other's path)."""
     n = len(work)
     tail_n = len(d_tail)
-    past = float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < tail_n - 2
-    before = float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1
-    if past and before:  # both: the closer closing is cut, whichever end the pen landed at
-        past = float(d_tail.min()) <= float(d_head.min())
+    past = bool(float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < tail_n - 2)
+    before = bool(float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1)
+    if past and before:  # both: the shorter loop is kept (the least that closes), whichever end the pen landed at
+        kept_past, kept_before = n - tail_n + int(d_tail.argmin()) + 1, n - int(d_head.argmin())
+        past = kept_past < kept_before or (kept_past == kept_before and float(d_tail.min()) <= float(d_head.min()))
     if past:
         return work[: n - tail_n + int(d_tail.argmin()) + 1]  # drawn past the start
     if before:
@@ -112,14 +113,3 @@ def retraced_both_ways(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
     (a Quick, Draw! zig-zag turning 2.9 pi, quickdraw TR 4895458323333120) was an outline drawn one way and open the
     other."""
     return sf.retraced(work, th, diag) and sf.retraced(work[::-1], -th[::-1], diag)
-
-
-def tighter_lap(first: np.ndarray, last: np.ndarray) -> np.ndarray:
-    """Of a stroke gone round more than once, the lap once round from its start (``first``) or the one once round to
-    its end (``last``) whose ends come closer (the pen's start or end lies nearer the path drawn over it): one rule
-    for both, so that the lap kept, and the round shape fitted to it, does not hang on which end the pen landed at (a
-    circle gone round 1.2 times has two laps whose ellipses' aspects differ by a few hundredths: near
-    `beautify.CIRCLE_RATIO`, a circle one way and an ellipse the other)."""
-    gap_first = float(np.hypot(*(first[-1] - first[0])))
-    gap_last = float(np.hypot(*(last[-1] - last[0])))
-    return last if gap_last < gap_first else first
