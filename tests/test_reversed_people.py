@@ -75,22 +75,3 @@ def test_a_persons_shape_drawn_backwards_becomes_the_same_body(label: str) -> No
         points = placed(row, size_of(i))
         shapes = [[b.shape for b in drawn(p).scene.bodies()] for p in (points, points[::-1])]
         assert shapes[0] == shapes[1], f"{row['file']}: {shapes[0]} as drawn, {shapes[1]} reversed"
-
-
-CUTS = {
-    "public-sets/hcira.jsonl": [
-        "shriyansnidhish/Dollar-one-recognizer@35d6736:Part-2/Dataset/TouchScreen_without_stylus/s02/circle05.xml",
-    ],
-}
-"""A person's circle drawn on past its start, whose ends each come back near the other's path: until session 31 the
-overshoot at the end was cut first (`loop_ends.cut_ends`), so drawn backwards the other end's was, and the loop kept
-read a circle one way and an ellipse the other; now the cut that keeps the shorter loop, whichever end it is at."""
-
-
-@pytest.mark.parametrize(("name", "file"), [(n, f) for n, fs in CUTS.items() for f in fs],
-                         ids=[f.rsplit("/", 2)[-2] + "/" + f.rsplit("/", 1)[-1] for fs in CUTS.values() for f in fs])
-def test_a_persons_circle_drawn_past_its_start_reads_alike_either_way(name: str, file: str) -> None:
-    row = cached_rows(name).get(file)
-    assert row is not None, file
-    ahead, back = readings(row)
-    assert ahead == back and ahead in ("circle", "ellipse"), (ahead, back)

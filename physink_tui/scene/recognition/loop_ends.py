@@ -16,20 +16,14 @@ shaft, an x drawn as a loop with crossing tails."""
 
 
 def cut_ends(work: np.ndarray, gap: float, d_tail: np.ndarray, d_head: np.ndarray) -> np.ndarray:
-    """The stroke once round: an overshoot past the start, or a start before the end, cut at the closest approach
-    (where both are, the one that keeps the shorter loop, so that the cut does not hang on which end the pen landed
-    at); else cut where the first and last `END_SHARE` come closest, when that is much closer than the ends are: a
+    """The stroke once round: an overshoot past the start, or a start before the end, cut at the closest approach;
+    else cut where the first and last `END_SHARE` come closest, when that is much closer than the ends are: a
     hook where the pen landed and an overshoot where it lifted (neither end alone comes near the other's path)."""
     n = len(work)
     tail_n = len(d_tail)
-    past = bool(float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < tail_n - 2)
-    before = bool(float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1)
-    if past and before:  # both: the shorter loop is kept (the least that closes), whichever end the pen landed at
-        kept_past, kept_before = n - tail_n + int(d_tail.argmin()) + 1, n - int(d_head.argmin())
-        past = kept_past < kept_before or (kept_past == kept_before and float(d_tail.min()) <= float(d_head.min()))
-    if past:
+    if float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < tail_n - 2:
         return work[: n - tail_n + int(d_tail.argmin()) + 1]  # drawn past the start
-    if before:
+    if float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1:
         return work[int(d_head.argmin()):]  # started before where it ends
     k = max(2, int(END_SHARE * n))
     head, tail = work[:k], work[n - k:]
