@@ -139,8 +139,8 @@ def closure(work: np.ndarray, diag: float) -> float:
     the other end's first fifth (a shape closes through its ends, not through its middle)."""
     n = len(work)
     gap = float(np.hypot(*(work[-1] - work[0])))
-    k = max(2, int(n * 0.2))  # as many points at either end, so that the stroke drawn backwards closes alike
-    tail, head = work[n - k:], work[:k]
+    tail = work[int(n * 0.8):]
+    head = work[: max(2, int(n * 0.2))]
     d1 = float(np.hypot(*(tail - work[0]).T).min())
     d2 = float(np.hypot(*(head - work[-1]).T).min())
     return min(gap, 2 * d1, 2 * d2) / diag
