@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import end_crossings, loop_ends, open_shapes, pen_noise, shape_corners, shape_turning
+from physink_tui.scene.recognition import end_crossings, open_shapes, pen_noise, shape_corners, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.candidates import ellipse_distances
@@ -231,7 +231,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop, ellipse
         once = loop if back else None
-    if abs(float(th.sum())) > 2.15 * math.pi and loop_ends.retraced_both_ways(work, th, diag):
+    if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
     if (once is not None and TWICE_ROUND < abs(float(th.sum())) < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
             and _beside(work, once, diag)):

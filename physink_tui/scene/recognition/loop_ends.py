@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 
 SMALL_LOOP = 0.5
@@ -98,12 +97,3 @@ def without_retraced_ends(work: np.ndarray, diag: float) -> np.ndarray:
     if start == 0 and end == len(work):
         return work
     return sg.resample(work[start:end], len(work))
-
-
-def retraced_both_ways(work: np.ndarray, th: np.ndarray, diag: float) -> bool:
-    """Whether the stroke is a shape drawn twice over (`stroke_features.retraced`) read from either end: what comes
-    after its first lap runs back over that lap, and what comes before its last lap runs over that one. Asked from the
-    start alone until session 31, a stroke whose first lap was gone over again but whose last ran on over new ground
-    (a Quick, Draw! zig-zag turning 2.9 pi, quickdraw TR 4895458323333120) was an outline drawn one way and open the
-    other."""
-    return sf.retraced(work, th, diag) and sf.retraced(work[::-1], -th[::-1], diag)
