@@ -30,12 +30,13 @@ measuring them alike without refitting the ranker lost two people's readings as 
 HCIRA_LABELS = ("rectangle", "triangle", "left_curly_brace", "right_curly_brace")
 """hcira's labels where its reversed readings differed at 3b9e40f in another kind than a circle's or an ellipse's
 (both right for a circle; its stars and pigtails differ only by lifts the device missed), 610 strokes each."""
-HCIRA_ALIKE = 2426
+HCIRA_ALIKE = 2427
 """Of hcira's 2,440 strokes of `HCIRA_LABELS`, how many read the same kind reversed: 2,424 at main 3b9e40f, 2,426 since
-the ranker's zig-zag teeth are asked of both vertex orders (`BRACES`). Of the 14 left, 9 are shriyansnidhish's boxes
-and triangles holding a lift the device missed (`pen_lifts`: read by the last attempt, which is another attempt
-reversed, meant to hang on the time order); a box, 2 triangles and 2 braces read at a rule's threshold one way (a
-box or a polygon, closed or open, a curve or a polyline)."""
+the ranker's zig-zag teeth are asked of both vertex orders (`BRACES`), 2,427 since a polygon left open may bow its
+first side as its last (`closed_loops.LAST_SIDE_BOW`, session 31: klarubbio s06 triangle03). Of the 13 left, 9 are
+shriyansnidhish's boxes and triangles holding a lift the device missed (`pen_lifts`: read by the last attempt, which
+is another attempt reversed, meant to hang on the time order); a box, a triangle and 2 braces read at a rule's
+threshold one way (a box or a polygon, closed or open, a curve or a polyline)."""
 
 
 def _alike(rows: list[dict]) -> int:

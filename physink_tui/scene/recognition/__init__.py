@@ -65,8 +65,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    loop's circle or ellipse may reach 20 % of the diagonal past the stroke, as a round shape left open may; a box may
    reach 10 % (`ranking.BOX_MARGIN`: a box whose upright sides lean, squared, pokes out). A polygon left open (its
    last side heading home, or a star's run on past its start, `closed_loops.STAR_CROSSINGS`) is judged by its sides'
-   turning where an end hook undoes the path's (`closed_loops.LEFT_OPEN_WOBBLE`), and its last side may bow
-   (`closed_loops.LAST_SIDE_BOW`); so is a four-sided outline left open by part of its first or last side, up to
+   turning where an end hook undoes the path's (`closed_loops.LEFT_OPEN_WOBBLE`), and its first and last sides may
+   bow (`closed_loops.LAST_SIDE_BOW`); so is a four-sided outline left open by part of its first or last side, up to
    0.7 of it (`open_boxes.box_left_open`: three corners and the fourth where those sides' lines meet near square).
    A loop read round is read as its polygon of four sides or more after all
    (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its

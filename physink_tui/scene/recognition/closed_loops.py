@@ -110,8 +110,8 @@ def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = 
         corners = sf.drop_end_stubs(work, sg.find_corners(work, th=th), length)
         runs = [work[a:b + 1] for a, b in itertools.pairwise(corners)]
         if ((turned >= LEFT_OPEN_TURN or abs(sides_turning(work[corners])) >= LEFT_OPEN_TURN)
-                and len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[:-1])
-                and sg.chord_deviation(runs[-1]) < LAST_SIDE_BOW
+                and len(runs) >= 3 and all(sg.chord_deviation(r) < open_shapes.STRAIGHT for r in runs[1:-1])
+                and max(sg.chord_deviation(runs[0]), sg.chord_deviation(runs[-1])) < LAST_SIDE_BOW
                 and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners)
                      or sf.ran_through_first_corner(work, corners))):
             return LeftOpen.SIDES
@@ -191,7 +191,9 @@ def star_run_past_its_start(work: np.ndarray, corners: list[int]) -> bool:
 
 LAST_SIDE_BOW = 0.2
 """The last side of a polygon left open may bow this much (of its chord): the hand swings home as it lifts, while the
-sides before it are drawn straight (`open_shapes.STRAIGHT`)."""
+sides between are drawn straight (`open_shapes.STRAIGHT`); so may the first, where the hand swings as it lands (the
+last side of the polygon drawn the other way: until session 31 the first was held straight, and hcira klarubbio s06
+triangle03, its last side bowed 0.13, read open drawn backwards)."""
 LEFT_OPEN_TURN = 1.15 * math.pi
 """A polygon left open has turned at least this far round: a triangle short of its last side has turned a half turn
 and the angle of the corner it did not reach (an equilateral one 1.33 pi; one left open at a 30-degree corner, as
@@ -236,7 +238,8 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         return True, once, None  # gone round again beside the first lap, not over it: the first lap is the shape
     n = len(work)
     gap = float(np.hypot(*(raw[-1] - raw[0])))
-    tail, head = work[n // 2:], work[: max(2, n // 2)]
+    half = max(2, n // 2)  # as many points at either end (an odd count's middle point in neither)
+    tail, head = work[n - half:], work[:half]
     d_tail = np.hypot(*(tail - work[0]).T)
     d_head = np.hypot(*(head - work[-1]).T)
     if min(gap, 2 * float(d_tail.min()), 2 * float(d_head.min())) > limit and not ends_cross_or_run_on(work, diag):

@@ -32,8 +32,11 @@ def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
         coil = sg.resample(sg.remove_hooks(work), n)
         coil_turn = sg.turning(coil)
         if sf.turn_concentration(sg.turning(sg.resample(coil, 40))) < COIL_SHARPNESS:  # a star winds twice too
-            helix = helix_geometry(coil, float(coil_turn.sum()), float(np.abs(coil_turn).sum()))
-            if helix is not None:
+            total, spread = float(coil_turn.sum()), float(np.abs(coil_turn).sum())
+            helix = helix_geometry(coil, total, spread)
+            # its loops counted from either end (`beautify.helix_geometry` counts whole turns from the start, so the
+            # part-loop falls at the end one way and at the start the other): a spring drawn from its other end
+            if helix is not None and helix_geometry(coil[::-1], -total, spread) is not None:
                 return Recognition("helix", 0.9, helix, (("curve", 0.1),))
     reversals = int(np.count_nonzero(np.abs(th) > math.radians(150)))
     if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):
