@@ -55,9 +55,9 @@ def crossed_close(work: np.ndarray, diag: float, near: float, run_on: float) -> 
     return False
 
 
-def _crossing(head: np.ndarray, tail: np.ndarray) -> tuple[int, int] | None:
-    """The first step of ``head`` (by its index) that a step of ``tail`` crosses, and the last such step of ``tail``;
-    None where none does."""
+def _crossing(head: np.ndarray, tail: np.ndarray) -> tuple[int, int, float] | None:
+    """The first step of ``head`` (by its index) that a step of ``tail`` crosses, the last such step of ``tail``, and
+    how far along that step of ``head`` (0 to 1) they meet; None where none does."""
     if len(head) < 2 or len(tail) < 2:
         return None
     p, r = head[:-1, None, :], (head[1:] - head[:-1])[:, None, :]  # as np.diff, without its per-call overhead
@@ -72,7 +72,8 @@ def _crossing(head: np.ndarray, tail: np.ndarray) -> tuple[int, int] | None:
         return None
     i, j = np.nonzero(hits)
     first = int(i[0])
-    return first, int(j[i == first][-1])
+    last = int(j[i == first][-1])
+    return first, last, float(t[first, last])
 
 
 def many_sided(loop: np.ndarray) -> bool:
@@ -120,10 +121,7 @@ def x_run_past(work: np.ndarray, diag: float, near: float) -> bool:
         if len(corners) != 4 or any(sg.chord_deviation(loop[c:d + 1]) >= open_shapes.STRAIGHT
                                     for c, d in itertools.pairwise(corners)):
             continue
-        p, r = pts[found[0]], pts[found[0] + 1] - pts[found[0]]  # where the head's step meets the tail's
-        s = pts[j + 1] - pts[j]
-        den = float(r[0] * s[1] - r[1] * s[0])
-        cross = p + float((pts[j] - p)[0] * s[1] - (pts[j] - p)[1] * s[0]) / den * r
+        cross = pts[found[0]] + found[2] * (pts[found[0] + 1] - pts[found[0]])  # where the head's step meets the tail's
         run = abs(float(dist[-1] - dist[j + 1])) + float(np.hypot(*(pts[j + 1] - cross)))
         if run >= RUN_PAST * float(np.hypot(*(cross - loop[corners[-2]]))):
             return True
