@@ -52,3 +52,45 @@ def slowed_at_corners(vertices: np.ndarray, drawn: np.ndarray, times: np.ndarray
         return False
     pace = pace_at_vertices(vertices, drawn, times)
     return pace is not None and sg.median(pace) < SLOW_CORNER
+
+
+PACE_WINDOW = 0.06
+"""The pen's pace along a stroke is taken over this many seconds (a chord between the positions half of it either side;
+a mouse's events come in bursts 25-60 ms apart, so a shorter window sees one jump)."""
+PACE_STEP = 0.01
+"""The pace is taken every this many seconds."""
+DIP = 0.7
+"""The pen slowed into a corner where its pace falls under this share of its median pace, and it has run on at its
+median pace or faster since the last such fall (`slowdowns`)."""
+CORNER_DIPS = 5
+"""A loop in bursts whose pen slowed this many times or more was drawn with corners (`round_or_cornered.paced_corners`).
+Pen models through the mouse, tuning seeds, timed, closed strokes read round: circles, ovals, whole notes, wobbly,
+flat-sided and lopsided circles and the round boxes 0-5 falls (5 in 2 of 1,660, neither with a polygon of five sides
+or more explaining half the round error); hexagons, octagons (and boxes, not asked) 0-8, 120 of 370 at 5 or more."""
+
+
+def slowdowns(drawn: np.ndarray, times: np.ndarray) -> int | None:
+    """How many times the pen's pace (over `PACE_WINDOW`) fell under `DIP` of its median pace, each after running at
+    its median pace or faster; None where the times do not run forward or span under three windows."""
+    t = np.asarray(times, dtype=float)
+    if len(t) != len(drawn) or len(t) < 4 or not np.isfinite(t).all() or (np.diff(t) < 0).any():
+        return None
+    keep = np.concatenate([[True], np.diff(t) > 0])
+    pts, t = np.asarray(drawn, dtype=float)[keep], t[keep]
+    if len(t) < 4 or t[-1] - t[0] < 3 * PACE_WINDOW:
+        return None
+    half = PACE_WINDOW / 2
+    grid = np.arange(t[0] + half, t[-1] - half, PACE_STEP)
+    lo = np.column_stack([np.interp(grid - half, t, pts[:, k]) for k in (0, 1)])
+    hi = np.column_stack([np.interp(grid + half, t, pts[:, k]) for k in (0, 1)])
+    pace = np.hypot(*(hi - lo).T)
+    middle = float(np.median(pace))
+    if middle <= 0.0:
+        return None
+    falls, low = 0, False
+    for v in pace:
+        if not low and v < DIP * middle:
+            falls, low = falls + 1, True
+        elif low and v >= middle:
+            low = False
+    return falls

@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from physink_tui.scene.recognition.candidates import Candidate, Pending
-from physink_tui.scene.recognition.corner_pace import slowed_at_corners
+from physink_tui.scene.recognition.corner_pace import CORNER_DIPS, slowdowns, slowed_at_corners
+from physink_tui.scene.recognition.pen_noise import burst_jumps
 from physink_tui.scene.recognition.polygon_checks import (
     SHALLOW_CORNER_DEG,
     SHARP_CORNER,
@@ -66,7 +67,8 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
         best = pending.fits[0] if pending.fits else None
         if best is None or best.rss > explained or not (corners_told or sharp_corners(best, step)
                                                          or slowed_corners(best, step, raw, times)
-                                                         or mostly_sharp(best, step, round_rss)):
+                                                         or mostly_sharp(best, step, round_rss)
+                                                         or paced_corners(best, raw, times, diag)):
             continue
         for c in [*_built(pending, best), *_shallow(pending, best, noise)]:
             if c.kind == "box" and not inside(c.geometry, box_lo, box_hi) and c.fallback is not None:
@@ -84,6 +86,18 @@ def slowed_corners(fit: PolygonFit, step: float, raw: np.ndarray, times: np.ndar
     if float(np.median(corner_roundness_closed(fit))) >= TURNS_AT_VERTICES:
         return False
     return slowed_at_corners(fit.vertices, raw, times)
+
+
+def paced_corners(fit: PolygonFit, raw: np.ndarray, times: np.ndarray | None, diag: float) -> bool:
+    """Whether a closed fit of five sides or more belongs to a loop whose points came in bursts (a busy mouse's,
+    `pen_noise.burst_jumps`: too sparse for `dense_enough`) and whose pen slowed `corner_pace.CORNER_DIPS` times or
+    more (`corner_pace.slowdowns`): a hand slows into each corner it means and runs along the sides, and keeps an even
+    pace round a circle (an oval's two ends, a lopsided one's three or four, slow it less often). False without
+    times."""
+    if times is None or len(fit.indices) - 1 < 5 or int(np.count_nonzero(burst_jumps(raw, diag)[1])) < 3:
+        return False
+    falls = slowdowns(raw, times)
+    return falls is not None and falls >= CORNER_DIPS
 
 
 def mostly_sharp(fit: PolygonFit, step: float, round_rss: float) -> bool:
