@@ -200,7 +200,8 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     (`BURST_ROUND`, or `BURST_ROUND_MOST` and `BURST_CLOSER` or, closed, bursts tangent to it:
     `burst_tangents.tangent_to_one_curve`) going round it one way by ``sweep`` radians or more, no
     gap round it wider than `BURST_GAP`; else None. ``closed``: whether the stroke was read closed (where not, ends
-    within `BURST_ENDS_NEAR` of each other need go round no more than `BURST_SWEEP_NEAR`)."""
+    within `BURST_ENDS_NEAR` of each other need go round no more than `BURST_SWEEP_NEAR`, and may pass by their bursts
+    tangent to the ellipse as a closed stroke's do: a whole note left open)."""
     if len(pts) < 8 or diag <= 0:
         return None
     step, jumps = burst_jumps(pts, diag)
@@ -209,7 +210,8 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     ellipse = fit_ellipse(pts)
     if ellipse is None or not ellipse[4] <= BURST_ROUND_MOST or not (ellipse[1] > 0 and ellipse[2] > 0):
         return None
-    if not closed and math.dist(pts[0], pts[-1]) <= BURST_ENDS_NEAR * diag:
+    near = not closed and math.dist(pts[0], pts[-1]) <= BURST_ENDS_NEAR * diag
+    if near:
         sweep = min(sweep, BURST_SWEEP_NEAR)  # nearly closed
     centre, rx, ry, angle, _ = ellipse
     rel = pts - np.asarray(centre)
@@ -223,7 +225,7 @@ def round_in_bursts(pts: np.ndarray, diag: float, sweep: float = BURST_SWEEP, cl
     gaps = np.diff(np.concatenate([around, around[:1] + 2 * math.pi]))
     if float(gaps.max()) > BURST_GAP:
         return None
-    if ellipse[4] <= BURST_ROUND or (closed and burst_tangents.tangent_to_one_curve(pts, jumps, ellipse)):
+    if ellipse[4] <= BURST_ROUND or ((closed or near) and burst_tangents.tangent_to_one_curve(pts, jumps, ellipse)):
         return ellipse
     return ellipse if _closer_to_ellipse(pts, ellipse, closed) else None
 
