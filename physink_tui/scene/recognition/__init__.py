@@ -75,7 +75,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    the shortest side (a circle given as a few points round it). Where the stroke's times are known, a polygon of five
    sides or more is also read so when the pen slowed at its vertices (`corner_pace`: under 0.55 of its mean pace at the
    median vertex) and its median vertex turns within half its shorter side: a mouse's octagon, its corners blurred by
-   sparse points, which a person's mouse circle (drawn at an even pace) fits as closely. A polygon of five sides or
+   sparse points, which a person's mouse circle (drawn at an even pace) fits as closely; and where the points came in a
+   busy mouse's bursts (too sparse for either), when the pen's pace fell under 0.7 of its median five times or more
+   (`corner_pace.slowdowns`, `round_or_cornered.paced_corners`: it slowed into the corners). A polygon of five sides or
    more, or a loop read round with two sharp corners, is the box drawn with a corner or two rounded off
    (`rounded_corners`) when four sides of its fit run straight for most of their length, meet near right angles, and
    only bows or sharp turns lie between them (a straight stretch between two sides is a side: a pentagon's, a
@@ -204,8 +206,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   overlap; whether a closed fit's corners are sharp rather than round bends
 - `round_or_cornered.py`: a loop the ranking read round, read as the polygon drawn when its corners are sharp
   or the pen slowed at them
-- `corner_pace.py`: the pen's pace at a closed polygon's vertices against its mean pace (a hand slows at the corners
-  it means, keeps its pace round a circle)
+- `corner_pace.py`: the pen's pace at a closed polygon's vertices against its mean pace, and how many times its
+  pace fell along the stroke (a hand slows at the corners it means, keeps its pace round a circle)
 - `rounded_corners.py`: a box with a corner or two rounded off (read as a polygon or round), read as the box; a
   polygon of five sides or more its best four sides cover nearly as drawn, read as that box (`box_as_drawn`)
 - `bowed_sides.py`: a box with one side bowed out or in (read as a polygon), read as the box of the loop's area
