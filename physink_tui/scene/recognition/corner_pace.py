@@ -62,6 +62,9 @@ PACE_STEP = 0.01
 DIP = 0.7
 """The pen slowed into a corner where its pace falls under this share of its median pace, and it has run on at its
 median pace or faster since the last such fall (`slowdowns`)."""
+LONGEST = 40.0
+"""A stroke drawn over more seconds than this is not judged by its falls (4,000 paces to take: a scribble, or times
+not in seconds)."""
 CORNER_DIPS = 5
 """A loop in bursts whose pen slowed this many times or more was drawn with corners (`round_or_cornered.paced_corners`).
 Pen models through the mouse, tuning seeds, timed, closed strokes read round: circles, ovals, whole notes, wobbly,
@@ -71,13 +74,14 @@ or more explaining half the round error); hexagons, octagons (and boxes, not ask
 
 def slowdowns(drawn: np.ndarray, times: np.ndarray) -> int | None:
     """How many times the pen's pace (over `PACE_WINDOW`) fell under `DIP` of its median pace, each after running at
-    its median pace or faster; None where the times do not run forward or span under three windows."""
+    its median pace or faster; None where the times do not run forward or span under three windows or over
+    `LONGEST`."""
     t = np.asarray(times, dtype=float)
     if len(t) != len(drawn) or len(t) < 4 or not np.isfinite(t).all() or (np.diff(t) < 0).any():
         return None
     keep = np.concatenate([[True], np.diff(t) > 0])
     pts, t = np.asarray(drawn, dtype=float)[keep], t[keep]
-    if len(t) < 4 or t[-1] - t[0] < 3 * PACE_WINDOW:
+    if len(t) < 4 or not 3 * PACE_WINDOW <= t[-1] - t[0] <= LONGEST:
         return None
     half = PACE_WINDOW / 2
     grid = np.arange(t[0] + half, t[-1] - half, PACE_STEP)
@@ -87,10 +91,7 @@ def slowdowns(drawn: np.ndarray, times: np.ndarray) -> int | None:
     middle = float(np.median(pace))
     if middle <= 0.0:
         return None
-    falls, low = 0, False
-    for v in pace:
-        if not low and v < DIP * middle:
-            falls, low = falls + 1, True
-        elif low and v >= middle:
-            low = False
-    return falls
+    # each pace under DIP of the median is +1, each at the median or over -1: a fall is a +1 first or after a -1
+    marks = np.where(pace < DIP * middle, 1, np.where(pace >= middle, -1, 0))
+    marks = marks[marks != 0]
+    return int(np.count_nonzero((marks == 1) & np.concatenate([[True], marks[:-1] == -1])))
