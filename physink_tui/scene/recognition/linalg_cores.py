@@ -11,18 +11,22 @@ functions are used instead: the same numbers, only slower.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-try:  # numpy.linalg's compiled cores and the callbacks that raise its errors (private; tests/test_linalg_cores.py)
-    from numpy.linalg import _umath_linalg as _core
-    from numpy.linalg._linalg import (
-        _raise_linalgerror_eigenvalues_nonconvergence,
-        _raise_linalgerror_lstsq,
-        _raise_linalgerror_singular,
-        _raise_linalgerror_svd_nonconvergence,
-    )
-except ImportError:  # another numpy: the public functions, the same numbers
-    _core = None
+_core: Any = None  # numpy.linalg's compiled cores, where this numpy has them where this code looks (private)
+try:  # and the callbacks that raise numpy.linalg's errors (tests/test_linalg_cores.py)
+    from numpy.linalg import _linalg, _umath_linalg
+
+    _raise_linalgerror_svd_nonconvergence = getattr(_linalg, "_raise_linalgerror_svd_nonconvergence")  # noqa: B009
+    _raise_linalgerror_lstsq = getattr(_linalg, "_raise_linalgerror_lstsq")  # noqa: B009
+    _raise_linalgerror_eigenvalues_nonconvergence = getattr(  # noqa: B009
+        _linalg, "_raise_linalgerror_eigenvalues_nonconvergence")
+    _raise_linalgerror_singular = getattr(_linalg, "_raise_linalgerror_singular")  # noqa: B009
+    _core = _umath_linalg
+except (ImportError, AttributeError):  # another numpy: the public functions, the same numbers
+    pass
 
 _EPS = float(np.finfo(np.float64).eps)
 
@@ -46,15 +50,15 @@ def svd_vt(a: np.ndarray) -> np.ndarray:
 def lstsq_solution(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """``np.linalg.lstsq(a, b, rcond=None)[0]`` (``b`` one column or a 2-D array of columns)."""
     if not _fast(a, b) or b.ndim not in (1, 2) or len(a) != len(b) or (b.ndim == 2 and b.shape[1] == 0):
-        return np.linalg.lstsq(a, b, rcond=None)[0]
+        public: np.ndarray = np.linalg.lstsq(a, b, rcond=None)[0]
+        return public
     m, n = a.shape
     rhs = b[:, np.newaxis] if b.ndim == 1 else b
     with np.errstate(call=_raise_linalgerror_lstsq, invalid="call", over="ignore", divide="ignore", under="ignore"):
-        x, _, _, _ = _core.lstsq(a, rhs, _EPS * max(n, m), signature="ddd->ddid")
+        x: np.ndarray = _core.lstsq(a, rhs, _EPS * max(n, m), signature="ddd->ddid")[0]
     if m == 0:
         x[...] = 0
-    out: np.ndarray = x.squeeze(axis=-1) if b.ndim == 1 else x
-    return out
+    return x.squeeze(axis=-1) if b.ndim == 1 else x
 
 
 def eig_vectors(a: np.ndarray) -> np.ndarray:
