@@ -109,7 +109,7 @@ def _chord_layout(work: np.ndarray) -> bool:
     chord, unit, across = frame
     start = work[0]
     rel = work - start
-    k = int(np.argmax(np.abs(across)))
+    k = int(np.abs(across).argmax())
     depth = float(across[k])
     sign = math.copysign(1.0, depth)
     if abs(depth) >= MAX_DEPTH * chord or float(np.max(-sign * across)) > ONE_SIDE * chord:
@@ -164,7 +164,7 @@ def _arms_layout(work: np.ndarray, noise: float = 0.0) -> bool:
     middle = np.flatnonzero((cum >= POINT_AT[0] * length) & (cum <= POINT_AT[1] * length))
     if len(middle) == 0:
         return False
-    k = int(middle[np.argmax(np.abs(across[middle]))])
+    k = int(middle[np.abs(across[middle]).argmax()])
     at = float(cum[k])
     arms = (work[(cum >= 0.35 * at) & (cum <= 0.8 * at)],
             work[(cum >= at + 0.2 * (length - at)) & (cum <= at + 0.65 * (length - at))])

@@ -116,7 +116,7 @@ def brace_point(work: np.ndarray, corners: list[int], lobes: list[float]) -> boo
         return False
     rel = work - start
     side = (rel[:, 0] * (end - start)[1] - rel[:, 1] * (end - start)[0]) / chord
-    k = int(np.argmax(np.abs(side)))
+    k = int(np.abs(side).argmax())
     depth = float(side[k])
     if abs(depth) >= BRACE_DEPTH * chord or float(np.max(-np.sign(depth) * side)) > ONE_SIDE * chord:
         return False
@@ -177,7 +177,7 @@ def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[
     if chord == 0.0:
         return None
     rel = work - start
-    k = int(np.argmax(np.abs(rel[:, 0] * (end - start)[1] - rel[:, 1] * (end - start)[0])))
+    k = int(np.abs(rel[:, 0] * (end - start)[1] - rel[:, 1] * (end - start)[0]).argmax())
     if k == 0 or k == len(work) - 1:
         return None
     first, second = work[:k + 1], work[k:]

@@ -103,7 +103,7 @@ def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = 
     if closure >= LEFT_OPEN_CLOSURE:
         return None
     th = sg.turning(work)
-    turned = abs(float(th.sum()))
+    turned = abs(float(np.add.reduce(th)))
     if turned < LEFT_OPEN_TURN - LEFT_OPEN_WOBBLE:
         return None
     if closure < 0.42:
@@ -220,10 +220,11 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
     if sg.path_length(work) < 1.75 * diag:  # the smoothed path: jitter lengthens the raw one
         return False, work, None
     th = sg.turning(work)
+    turned = abs(float(np.add.reduce(th)))  # (`.sum()`'s own sum, without its per-call overhead; `th` stays as it is)
     coarse = shape_turning.coarse_turning(work, sigma)
     limit = max(CLOSED_GAP * diag, 4 * sigma)
     once: np.ndarray | None = None  # the stroke once round where it came back to its start, going round one way
-    if abs(float(th.sum())) > 2.0 * math.pi and abs(float(coarse.sum())) > 0.8 * float(np.abs(coarse).sum()):
+    if turned > 2.0 * math.pi and abs(float(np.add.reduce(coarse))) > 0.8 * float(np.add.reduce(np.abs(coarse))):
         loop, back = _once_round(work, th, limit)  # round and round one way: once round is the shape, if round
         # not a lead-in drawn out and back along itself, nor a hook's small loop at an end
         back = back and encloses(loop) and sg.bbox_diagonal(loop) >= SMALL_LOOP * diag
@@ -231,9 +232,9 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
             return True, loop, ellipse
         once = loop if back else None
-    if abs(float(th.sum())) > 2.15 * math.pi and sf.retraced(work, th, diag):
+    if turned > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
-    if (once is not None and TWICE_ROUND < abs(float(th.sum())) < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
+    if (once is not None and TWICE_ROUND < turned < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
             and _beside(work, once, diag)):
         return True, once, None  # gone round again beside the first lap, not over it: the first lap is the shape
     n = len(work)

@@ -26,7 +26,7 @@ def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
     `small_loops.remove_small_loops`) or a scribble back and forth, else None (``th``: the path's turning,
     `stroke_geometry.turning`, where already measured)."""
     th = sg.turning(work) if th is None else th
-    total_turn, abs_turn = float(th.sum()), float(np.abs(th).sum())
+    total_turn, abs_turn = float(np.add.reduce(th)), float(np.add.reduce(np.abs(th)))
     if abs(total_turn) > COILED and abs(float(sg.turning(remove_small_loops(work)).sum())) > COILED:
         # a finger's or pen's small loop where it landed or lifted (or at a corner) is no loop of the spring
         coil = sg.resample(sg.remove_hooks(work), n)

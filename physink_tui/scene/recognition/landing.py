@@ -48,11 +48,11 @@ def _dwell(pts: np.ndarray, radius: float) -> int:
         away = np.hypot(*(pts - pts[0]).T) > radius
         if not away.any():
             return 0
-    out = int(np.argmax(away))
+    out = int(away.argmax())
     if out < DWELL_POINTS:
         return 0
-    extent = float(np.hypot(*(pts[:out] - pts[0]).T).max())
-    path = float(sg.step_lengths(pts[:out]).sum())
+    extent = float(np.maximum.reduce(np.hypot(*(pts[:out] - pts[0]).T)))
+    path = float(np.add.reduce(sg.step_lengths(pts[:out])))
     if path < DWELL_PATH_CENTRED * extent:
         return 0
     if path < DWELL_PATH * extent and np.hypot(*(pts[:out] - pts[0]).mean(axis=0)) > DWELL_CENTRE * extent:
@@ -83,7 +83,7 @@ def settled(pts: np.ndarray, diag: float, noise: float) -> np.ndarray:
         if n == 0 or n > len(pts) // 2:
             continue
         centre = run[:n].mean(axis=0)
-        stay = int(np.argmin(np.hypot(*(run[:n] - centre).T)))
+        stay = int(np.hypot(*(run[:n] - centre).T).argmin())
         drop = np.ones(n, dtype=bool)
         drop[stay] = False
         idx = np.flatnonzero(drop)

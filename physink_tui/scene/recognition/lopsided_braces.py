@@ -67,7 +67,7 @@ def laid_out(work: np.ndarray) -> bool:
     if frame is None:
         return False
     chord, unit, across = frame
-    k = int(np.argmax(np.abs(across)))
+    k = int(np.abs(across).argmax())
     depth = float(across[k])
     sign = math.copysign(1.0, depth)
     if (abs(depth) >= angular_braces.MAX_DEPTH * chord
@@ -143,7 +143,7 @@ def _roughly_lopsided(pts: np.ndarray) -> bool:
     unit = (pts[-1] - pts[0]) / chord
     rel = pts - pts[0]
     across = rel[:, 0] * unit[1] - rel[:, 1] * unit[0]
-    k = int(np.argmax(np.abs(across)))
+    k = int(np.abs(across).argmax())
     if float(np.max(-math.copysign(1.0, float(across[k])) * across)) > 2 * angular_braces.ONE_SIDE * chord:
         return False
     steps = sg.step_lengths(pts)

@@ -56,7 +56,7 @@ def four_sides(work: np.ndarray) -> list[np.ndarray] | None:
 def _farthest_from_chord(run: np.ndarray) -> int:
     rel = run - run[0]
     chord = rel[-1] / max(float(np.hypot(*rel[-1])), 1e-12)
-    return int(np.argmax(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0])))
+    return int(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]).argmax())
 
 
 def _heading(v: np.ndarray) -> float:

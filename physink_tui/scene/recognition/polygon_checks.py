@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
+from physink_tui.scene.recognition import linalg_cores
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.polygon_fit import PolygonFit, run_lines
 from physink_tui.scene.recognition.stroke_features import roundness_along, walk
@@ -120,8 +121,7 @@ class Corners:
 
 def _side_line(run: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     centre = run.mean(axis=0)
-    _, _, vt = np.linalg.svd(run - centre, full_matrices=False)
-    return centre, vt
+    return centre, linalg_cores.svd_vt(run - centre)
 
 
 def corners_of(fit: PolygonFit, *, closed: bool, noise: float, min_corner_deg: float = MIN_CORNER_DEG,

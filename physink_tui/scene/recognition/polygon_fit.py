@@ -199,7 +199,7 @@ def best_polygons(pts: np.ndarray, *, closed: bool, max_sides: int, tolerance: f
         # the loop must start at a vertex: start at the point farthest from the centre (a corner, if the shape
         # has any), then again at the sharpest corner that first pass found, and keep each k's better answer
         centre = pts.mean(axis=0)
-        start = int(np.argmax(np.hypot(*(pts - centre).T)))
+        start = int(np.hypot(*(pts - centre).T).argmax())
         fits: dict[int, list[PolygonFit]] = {}
         for attempt in range(2):
             loop = np.concatenate([pts[start:], pts[:start], pts[start:start + 1]])  # rolled to start there

@@ -31,6 +31,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from physink_tui.scene.recognition import linalg_cores
 from physink_tui.scene.recognition.beautify import box_geometry
 from physink_tui.scene.recognition.polygon_checks import BOX_OVERLAP, overlap
 from physink_tui.scene.recognition.polygon_fit import PolygonFit
@@ -66,7 +67,7 @@ def side_corners(points: np.ndarray, indices: tuple[int, ...]) -> np.ndarray | N
     for a, b in itertools.pairwise(indices):
         run = _core(points[a:b + 1])
         centre = run.mean(axis=0)
-        _, _, vt = np.linalg.svd(run - centre, full_matrices=False)
+        vt = linalg_cores.svd_vt(run - centre)
         lines.append((centre, vt[0]))
     if len(lines) != 4:
         return None
@@ -195,7 +196,7 @@ def _straight_sides(points: np.ndarray, indices: tuple[int, ...]) -> bool:
         run = points[a:b + 1]
         core = _core(run)
         centre = core.mean(axis=0)
-        _, _, vt = np.linalg.svd(core - centre, full_matrices=False)
+        vt = linalg_cores.svd_vt(core - centre)
         rel = run - centre
         off = np.abs(rel[:, 0] * vt[0][1] - rel[:, 1] * vt[0][0])
         if float(np.quantile(off, 0.8)) > STRAIGHT_WALLS * float(np.hypot(*(run[-1] - run[0]))):

@@ -198,8 +198,8 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
     coarse = shape_turning.coarse_turning(work, noise)
     turns = sf.corner_turns(th, corners)
     lobes = sf.turn_lobes(coarse)
-    checks = ((len(corners) - 2) / 8.0, float(abs_th.sum()) / (2 * math.pi), max(turns) / 180.0, len(lobes) / 4.0,
-              point_balance(work, corners, turns))  # `CHECK_FEATURES`, in that order
+    checks = ((len(corners) - 2) / 8.0, float(np.add.reduce(abs_th)) / (2 * math.pi), max(turns) / 180.0,
+              len(lobes) / 4.0, point_balance(work, corners, turns))  # `CHECK_FEATURES`, in that order
     if polyline:
         out[list(CHECK_FEATURES)] = checks
         if checked_point(out if np.isfinite(out).all() else np.nan_to_num(out, nan=0.0, posinf=1.0, neginf=0.0)):
@@ -215,9 +215,9 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
     ellipse = fit_ellipse(work)
     _, _, circle_err = fit_circle(work)
     _, _, line_err = fit_line(work)
-    coarse_sum, coarse_abs = float(coarse.sum()), float(np.abs(coarse).sum())
+    coarse_sum, coarse_abs = float(np.add.reduce(coarse)), float(np.add.reduce(np.abs(coarse)))
     out[:] = [
-        sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(th.sum())) / (2 * math.pi),
+        sf.closure(work, sg.bbox_diagonal(work)), length / 4.0, abs(float(np.add.reduce(th))) / (2 * math.pi),
         checks[1], checks[0], sf.turn_concentration(coarse),
         max(roundness), _mean(roundness), sum(d < 0.12 for d in deviation) / len(deviation) if runs else 0.0,
         max(bows), _mean(bows), checks[2], min(turns) / 180.0, checks[3],
@@ -290,7 +290,7 @@ def choose(rules_kind: str, phi: np.ndarray, model: Model) -> tuple[str, float]:
     scores = np.where(offered(kinds, phi), scores, -np.inf)
     chance = np.exp(scores - scores.max())
     chance /= chance.sum()
-    best = int(np.argmax(scores))  # the first of equals: the family's order
+    best = int(scores.argmax())  # the first of equals: the family's order
     if kinds[best] == rules_kind or chance[best] > model.margin:
         return kinds[best], float(chance[best])
     return rules_kind, float(chance[kinds.index(rules_kind)])

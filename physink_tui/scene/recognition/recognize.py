@@ -304,7 +304,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     # a shaky pen's points are smoothed where they were sampled first, then along the resampled path
     work = sg.smooth(sg.resample(sg.smooth(raw) if shaky else raw, n))
     th = sg.turning(work)
-    if abs(float(th.sum())) > COILED:  # a lead drawn out and back turns a half turn each way
+    if abs(float(np.add.reduce(th))) > COILED:  # a lead drawn out and back turns a half turn each way
         led = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
         if led is not work:
             work, th = led, sg.turning(led)

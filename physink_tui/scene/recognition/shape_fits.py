@@ -12,6 +12,8 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition import linalg_cores
+
 EllipseFit = tuple[np.ndarray, float, float, float, float]
 """An ellipse fitted to points (`fit_ellipse`): its centre, radii rx >= ry, the angle of rx and the RMS error."""
 
@@ -20,12 +22,11 @@ def fit_line(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
     """Total least squares line: ``(point, unit direction, max distance / length)``."""
     c = np.add.reduce(pts, axis=0) / len(pts)  # `pts.mean(axis=0)` to the bit, without its per-call overhead
     rel = pts - c
-    _, _, vt = np.linalg.svd(rel, full_matrices=False)
-    d = vt[0]
+    d = linalg_cores.svd_vt(rel)[0]
     along = rel @ d
-    length = float(along.max() - along.min()) or 1e-12
+    length = float(np.maximum.reduce(along) - np.minimum.reduce(along)) or 1e-12
     dist = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])
-    return c, d, float(dist.max()) / length
+    return c, d, float(np.maximum.reduce(dist)) / length
 
 
 def fit_circle(pts: np.ndarray) -> tuple[np.ndarray, float, float]:
@@ -35,7 +36,7 @@ def fit_circle(pts: np.ndarray) -> tuple[np.ndarray, float, float]:
     a[:, 0], a[:, 1], a[:, 2] = x, y, 1.0
     b = x * x + y * y
     try:
-        sol, *_ = np.linalg.lstsq(a, b, rcond=None)
+        sol = linalg_cores.lstsq_solution(a, b)
     except np.linalg.LinAlgError:
         return pts.mean(axis=0), math.inf, math.inf
     cx, cy = sol[0] / 2, sol[1] / 2
@@ -57,7 +58,7 @@ def fit_ellipse(pts: np.ndarray) -> EllipseFit | None:
         return None
     mean = np.add.reduce(pts, axis=0) / n  # `pts.mean(axis=0)` to the bit, without its per-call overhead
     rel = pts - mean
-    scale = float(np.abs(rel).max()) or 1.0
+    scale = float(np.maximum.reduce(np.abs(rel), axis=None)) or 1.0
     p = rel / scale
     x, y = p[:, 0], p[:, 1]
     d1, d2 = np.empty((n, 3)), np.empty((n, 3))  # as `np.column_stack` lays them out
@@ -67,16 +68,15 @@ def fit_ellipse(pts: np.ndarray) -> EllipseFit | None:
     d2[:, 0], d2[:, 1], d2[:, 2] = x, y, 1.0
     s1, s2, s3 = d1.T @ d1, d1.T @ d2, d2.T @ d2
     try:
-        t = -np.linalg.solve(s3, s2.T)
+        t = -linalg_cores.solve(s3, s2.T)
     except np.linalg.LinAlgError:
         return None
     m = s1 + s2 @ t
     m = np.array([m[2] / 2, -m[1], m[0] / 2])
     try:
-        _evals, evecs = np.linalg.eig(m)
+        evecs = linalg_cores.eig_vectors(m)  # (their real parts)
     except np.linalg.LinAlgError:
         return None
-    evecs = np.real(evecs)
     cond = 4 * evecs[0] * evecs[2] - evecs[1] ** 2
     good = np.flatnonzero(cond > 0)
     if not len(good):
@@ -133,8 +133,8 @@ def fit_cubic(pts: np.ndarray) -> tuple[np.ndarray, float]:
     rhs = pts - start - end
     a = np.empty((n, 2))  # as `np.column_stack` lays it out
     a[:, 0], a[:, 1] = b1, b2
-    sol, *_ = np.linalg.lstsq(a, rhs, rcond=None)
+    sol = linalg_cores.lstsq_solution(a, rhs)
     ctrl = np.array([p0, sol[0], sol[1], p3])
     fitted = start + b1[:, None] * sol[0] + b2[:, None] * sol[1] + end
     chord = float(np.hypot(*(p3 - p0))) or float(seg.sum()) or 1.0
-    return ctrl, float(np.hypot(*(fitted - pts).T).max()) / chord
+    return ctrl, float(np.maximum.reduce(np.hypot(*(fitted - pts).T))) / chord

@@ -147,7 +147,7 @@ def rounding(work: np.ndarray, a: int, c: int, b: int, noise: float) -> float:
     if turn < math.radians(MIN_TURN_DEG) / 2:
         return math.inf
     apex = p + float((q - p)[0] * v[1] - (q - p)[1] * v[0]) / cross * u
-    cut = float(np.hypot(*(work[(a + c) // 2:(c + b) // 2 + 1] - apex).T).min())
+    cut = float(np.minimum.reduce(np.hypot(*(work[(a + c) // 2:(c + b) // 2 + 1] - apex).T)))
     shorter = min(sg.path_length(first), sg.path_length(second))
     return max(cut - CUT_NOISE * noise, 0.0) / (shorter * (1 / math.cos(turn / 2) - 1))
 
@@ -172,7 +172,7 @@ def _corners(th: np.ndarray, n: int) -> list[int]:
     looked = np.flatnonzero(may)
     for k in looked[np.argsort(-sharpness[looked], kind="stable")].tolist():
         c, a, b = k + 1, int(lo[k]), int(hi[k])
-        if free[c - 1] and abs(float(th[a:b][free[a:b]].sum())) >= least:
+        if free[c - 1] and abs(float(np.add.reduce(th[a:b][free[a:b]]))) >= least:
             taken.append(c)
             free[a:b] = False
     return [0, *sorted(taken), n - 1]
@@ -192,8 +192,8 @@ def _joined(work: np.ndarray, th: np.ndarray, corners: list[int]) -> list[int]:
         if gap >= MIN_SIDE_POINTS:
             return corners
         a, b = corners[k], corners[k + 1]
-        first, second = (float(th[max(c - 1 - REACH, 0):c + REACH].sum()) for c in (a, b))
-        together = float(th[max(a - 1 - REACH, 0):b + REACH].sum())
+        first, second = (float(np.add.reduce(th[max(c - 1 - REACH, 0):c + REACH])) for c in (a, b))
+        together = float(np.add.reduce(th[max(a - 1 - REACH, 0):b + REACH]))
         sharper = a if abs(first) >= abs(second) else b
         corners[k:k + 2] = [sharper] if abs(together) >= math.radians(MIN_TURN_DEG) else []
 

@@ -62,7 +62,7 @@ def corner_turns(th: np.ndarray, corners: list[int], reach: int = 3) -> list[flo
     out = []
     for c in corners[1:-1]:
         lo, hi = max(c - reach, 1), min(c + reach, n - 2)
-        out.append(abs(math.degrees(float(th[lo - 1:hi].sum()))))
+        out.append(abs(math.degrees(float(np.add.reduce(th[lo - 1:hi])))))
     return out or [0.0]
 
 
@@ -73,7 +73,7 @@ def bends(th: np.ndarray, corners: list[int], reach: int = 3) -> list[float]:
     for a, b in itertools.pairwise(corners):
         lo = a + reach if a > 0 else 0
         hi = b - reach if b < n - 1 else n - 2
-        out.append(abs(math.degrees(float(th[lo:max(hi - 1, lo)].sum()))))
+        out.append(abs(math.degrees(float(np.add.reduce(th[lo:max(hi - 1, lo)])))))
     return out
 
 
@@ -89,11 +89,11 @@ def corner_share(th: np.ndarray, corners: list[int], reach: int = 3) -> float:
     bounds = [0]
     for c in inner:
         lo, hi = max(c - reach, 1), min(c + reach, n - 2)
-        at_corners += abs(float(th[lo - 1:hi].sum()))
+        at_corners += abs(float(np.add.reduce(th[lo - 1:hi])))
         bounds += [lo - 1, hi]
     bounds.append(n - 2)
     for a, b in zip(bounds[::2], bounds[1::2], strict=True):
-        along += abs(float(th[a:b].sum()))
+        along += abs(float(np.add.reduce(th[a:b])))
     total = at_corners + along
     return at_corners / total if total else 0.0
 
@@ -141,8 +141,8 @@ def closure(work: np.ndarray, diag: float) -> float:
     gap = float(np.hypot(*(work[-1] - work[0])))
     tail = work[int(n * 0.8):]
     head = work[: max(2, int(n * 0.2))]
-    d1 = float(np.hypot(*(tail - work[0]).T).min())
-    d2 = float(np.hypot(*(head - work[-1]).T).min())
+    d1 = float(np.minimum.reduce(np.hypot(*(tail - work[0]).T)))
+    d2 = float(np.minimum.reduce(np.hypot(*(head - work[-1]).T)))
     return min(gap, 2 * d1, 2 * d2) / diag
 
 
@@ -187,11 +187,11 @@ def one_loop(work: np.ndarray, th: np.ndarray) -> np.ndarray:
 def turn_concentration(th: np.ndarray) -> float:
     """Share of all turning done in the sharpest fifth of the stroke (boxes ~0.9, circles ~0.3)."""
     a = np.abs(th)
-    total = float(a.sum())
+    total = float(np.add.reduce(a))
     if total == 0.0:
         return 0.0
     k = max(1, len(a) // 5)
-    return float(np.sort(a)[-k:].sum()) / total
+    return float(np.add.reduce(np.sort(a)[-k:])) / total
 
 
 def corner_roundness(work: np.ndarray, corners: list[int], share: float = 0.8, *, th: np.ndarray | None = None,

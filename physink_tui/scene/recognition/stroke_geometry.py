@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 
+from physink_tui.scene.recognition import linalg_cores
+
 try:  # `np.interp`'s compiled core, which it calls on real points without a period once it has checked their type
     from numpy._core.multiarray import interp as _interp  # (tests/test_private_interp.py: still there, same numbers)
 except ImportError:  # another numpy: the public function, the same numbers
@@ -154,15 +156,14 @@ def bbox_diagonal(pts: np.ndarray) -> float:
     if len(pts) < 2:
         return 0.0
     proj = pts @ _DIRECTIONS.T
-    return float((proj.max(axis=0) - proj.min(axis=0)).max())
+    return float(np.maximum.reduce(proj.max(axis=0) - proj.min(axis=0)))  # (`.max()`'s own reduction, as below)
 
 
 def thickness(pts: np.ndarray) -> float:
     """Extent of the points across their principal axis (rotation-independent; 0 for a straight line)."""
-    centred = pts - pts.mean(axis=0)
-    _, _, vt = np.linalg.svd(centred, full_matrices=False)
-    across = centred @ vt[-1]
-    return float(across.max() - across.min())
+    centred = pts - np.add.reduce(pts, axis=0) / len(pts)  # `pts.mean(axis=0)` to the bit, without its overhead
+    across = centred @ linalg_cores.svd_vt(centred)[-1]
+    return float(np.maximum.reduce(across) - np.minimum.reduce(across))
 
 
 def chord_deviation(pts: np.ndarray) -> float:
@@ -173,7 +174,7 @@ def chord_deviation(pts: np.ndarray) -> float:
     if chord == 0.0:
         return math.inf
     dev = np.abs(rel[:, 0] * (d[1] / chord) - rel[:, 1] * (d[0] / chord))
-    return float(dev.max()) / chord
+    return float(np.maximum.reduce(dev)) / chord
 
 
 def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *, every_dip: bool = False,
@@ -219,7 +220,7 @@ def find_corners(pts: np.ndarray, min_turn_deg: float = 45.0, window: int = 3, *
         lo, hi = max(c - reach, 1), min(c + reach, n - 2)
         if c - corners[-1] < w:
             continue  # too close to the last corner kept, however far it turns
-        turn = abs(float(th[lo - 1:hi].sum()))
+        turn = abs(float(np.add.reduce(th[lo - 1:hi])))
         if math.degrees(turn) >= least:
             corners.append(c)
     if n - 1 - corners[-1] < w and len(corners) > 1:
@@ -258,7 +259,7 @@ def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) 
         for k in range(1, len(corners) - 1):
             a, b = corners[k - 1], corners[k + 1]
             chord = float(np.hypot(*(pts[b] - pts[a])))
-            run = float(seg[a:b].sum())
+            run = float(np.add.reduce(seg[a:b]))
             straightness = chord / run if run else 1.0
             if straightness > ratio and straightness > best:
                 best, best_k = straightness, k
@@ -337,7 +338,7 @@ def sharpest_turn(run: np.ndarray, span: float) -> float:
     done = np.concatenate([[0.0], np.add.accumulate(np.degrees(turning(run)))])
     if w >= len(done):
         return abs(float(done[-1]))
-    return float(np.abs(done[w:] - done[:-w]).max())
+    return float(np.maximum.reduce(np.abs(done[w:] - done[:-w])))
 
 
 def end_arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
@@ -362,16 +363,16 @@ def _hook_end(th_head: np.ndarray, min_turn_deg: float) -> int | None:
     """Index of the vertex where a hook at the start of ``th_head`` (degrees) has done its turning:
     the first point where the cumulative turn is within 15 % of its extreme, if that is large."""
     cum = np.abs(np.add.accumulate(th_head))
-    peak = float(cum.max()) if len(cum) else 0.0
+    peak = float(np.maximum.reduce(cum)) if len(cum) else 0.0
     if peak < min_turn_deg:
         return None
-    return int(np.argmax(cum >= 0.85 * peak))
+    return int((cum >= 0.85 * peak).argmax())
 
 
 def median(values: np.ndarray) -> float:
     """``np.median`` of a 1-D array, to the last bit, without its per-call overhead (NaN when any value is)."""
     n = len(values)
-    if n == 0 or np.isnan(values).any():
+    if n == 0 or np.logical_or.reduce(np.isnan(values)):  # (`.any()`'s own reduction)
         return float(np.median(values))
     h = n // 2
     if n % 2:
