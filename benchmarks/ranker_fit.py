@@ -25,9 +25,9 @@ class Recipe:
     stroke, source, set or device); the features left out (``drop``: their weights stay 0); the margins the
     model's chance may have to pass (``margins``), chosen on ``inner`` folds of whole sources (None: one a source)
     or, with ``inner_by`` "set", one fold a set; the training-only copies' total weight against the people's
-    strokes (``copies_weight``, when ``d`` holds copies); ``fit_unasked``: fit on the strokes the recogniser never
-    asks the model about too (``d["guarded"]``; the training before session 32, whose model then deferred to the
-    rules on what it is asked, `docs/BENCHMARKS.md`, "Why a refit of the ranker loses people's readings")."""
+    strokes (``copies_weight``, when ``d`` holds copies); ``skip_guarded``: fit on no stroke the recogniser never asks
+    the model about (``d["guarded"]``; fitted on, they pull the model towards the rules' answer: docs/BENCHMARKS.md,
+    "Why a refit of the ranker loses people's readings")."""
 
     lam: float = 1e-2
     weigh: str = "stroke"
@@ -36,15 +36,15 @@ class Recipe:
     inner: int | None = None
     inner_by: str = "source"
     copies_weight: float = 1.0
-    fit_unasked: bool = False
+    skip_guarded: bool = False
 
     def name(self) -> str:
         parts = [f"lam {self.lam:g}", f"weigh {self.weigh}", "margins " + "/".join(f"{m:g}" for m in self.margins),
                  f"inner {self.inner_by}" + (f" {self.inner}" if self.inner and self.inner_by == "source" else "")]
         if self.drop:
             parts.append("drop " + ",".join(self.drop))
-        if self.fit_unasked:
-            parts.append("unasked strokes fitted on too")
+        if self.skip_guarded:
+            parts.append("unasked strokes not fitted on")
         return "; ".join(parts)
 
 
@@ -101,11 +101,11 @@ def dropped_columns(drop: tuple[str, ...]) -> list[int]:
 
 
 def model(d: dict, idx: np.ndarray, recipe: Recipe, groups: np.ndarray | None = None) -> dict:
-    """A model fitted on the strokes ``idx`` whose family holds a right kind and that the recogniser asks the model
-    about (not ``d["guarded"]``, unless ``recipe.fit_unasked``), each weighing as ``recipe.weigh`` says (``groups``:
-    one name a stroke, for every weighing but "stroke"); a dropped feature's column is zero, so its weights stay 0."""
+    """A model fitted on the strokes ``idx`` whose family holds a right kind (with ``recipe.skip_guarded``, only those
+    the recogniser asks the model about: not ``d["guarded"]``), each weighing as ``recipe.weigh`` says (``groups``: one
+    name a stroke, for every weighing but "stroke"); a dropped feature's column is zero, so its weights stay 0."""
     fits = d["right"][idx].any(axis=1)
-    if not recipe.fit_unasked:
+    if recipe.skip_guarded:
         fits &= ~d["guarded"][idx]
     use = idx[fits]
     phi = d["phi"][use, :len(ranker.FEATURES)]

@@ -2,7 +2,7 @@
 
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--folds set,device,source,in,shipped] [--brief]
        [--lam L[,L...]] [--weigh W] [--drop F[,F...]] [--margins M[,M...]] [--inner K] [--inner-by source|set]
-       [--augment K] [--augment-seed S] [--events-share E] [--copies-weight A] [--no-gate] [--fit-unasked]
+       [--augment K] [--augment-seed S] [--events-share E] [--copies-weight A] [--no-gate] [--skip-guarded]
        [--heldback] [--write PATH]
 
 For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve, or
@@ -19,7 +19,9 @@ source reads them). ``--augment K`` adds K training-only copies of each training
 scored). Each stroke is described by what the recogniser itself asks the model (`Asked`: its features as
 `ranker.question` computes them at the one place the recogniser asks); strokes it never asks about (a wave, a chain of
 steps, a straight-armed mark, a kept bracket or brace, a zig-zag's teeth, a curve between sparse events, a hurried
-check, ...) keep the rules' kind in every fold, as in the app, and are not fitted on (``--fit-unasked``: they are).
+check, ...) keep the rules' kind in every fold, as in the app; they are fitted on (with the features `ranker.features`
+gives the whole stroke) unless ``--skip-guarded``: docs/BENCHMARKS.md, "Why a refit of the ranker loses people's
+readings".
 Tables per set and device (``--brief``: only these), per source and class; a ``RESULT`` line per run.
 
 The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given;
@@ -152,7 +154,7 @@ def _describe(rows: list[Row]) -> dict:
         found = ask.found or read  # the rules' reading, the model asked or not
         rules.append(found.kind)
         guarded.append(ask.phi is None or read.confidence != ASKED)
-        # a stroke not asked: its features as `ranker.features` gives them (fitted on only with --fit-unasked)
+        # a stroke not asked: its features as `ranker.features` gives the whole stroke (not fitted on: --skip-guarded)
         phi.append(ranker.features(stroke, times) if ask.phi is None else ask.phi)
         kinds = ranker.family(found.kind, phi[-1])
         right.append(np.array([k in row["accepts"] for k in kinds] + [False] * (WIDTH - len(kinds)), dtype=bool))
@@ -220,7 +222,7 @@ def recipe_from(args: argparse.Namespace, lam: float) -> Recipe:
     margins = (0.5,) if args.no_gate else tuple(float(v) for v in args.margins.split(","))
     if not margins or not all(0.0 <= v < 1.0 for v in margins):
         raise SystemExit(f"--margins: {args.margins!r} must be numbers in [0, 1)")
-    return Recipe(lam, args.weigh, drop, margins, args.inner, args.inner_by, args.copies_weight, args.fit_unasked)
+    return Recipe(lam, args.weigh, drop, margins, args.inner, args.inner_by, args.copies_weight, args.skip_guarded)
 
 
 def main() -> None:
@@ -251,8 +253,8 @@ def main() -> None:
     ap.add_argument("--events-share", type=float, default=EVENTS_SHARE, help="the share of the copies a device draws "
                     "again that are sampled by 8-25 events evenly in time (`augment_strokes.SPARSE_EVENTS`)")
     ap.add_argument("--copies-weight", type=float, default=1.0, help="the copies of a stroke weigh this in all")
-    ap.add_argument("--fit-unasked", action="store_true", help="fit on the strokes the recogniser never asks the "
-                    "model about too (`Asked`; the training before session 32)")
+    ap.add_argument("--skip-guarded", action="store_true", help="fit on no stroke the recogniser never asks the "
+                    "model about (`Asked`: a wave, a kept bracket or brace, a zig-zag's teeth, a sparse curve, ...)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     args = ap.parse_args()
     schemes = [f for f in args.folds.split(",") if f]

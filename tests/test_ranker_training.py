@@ -1,8 +1,8 @@
 """The learned ranker is trained on what the recogniser asks it (issue 25, session 32): `train_ranker`'s description
 of a stroke gives the reading the recogniser gives, the model asked or not, and the same strokes fit byte-identical
-weights. A refit on a description of its own (every polyline and curve of the rules, features of the whole stroke)
-deferred to the rules on the strokes it is asked about (docs/BENCHMARKS.md, "Why a refit of the ranker loses people's
-readings").
+weights. Before, the training scored every polyline and curve of the rules by the model, some 5,000 people's strokes
+the recogniser never asks it about, with features of the whole stroke where the recogniser reads a settled stroke or
+its last attempt (docs/BENCHMARKS.md, "Why a refit of the ranker loses people's readings").
 
 People's strokes are read in place from ``../shared/data/strokes/dollar1-dev.jsonl`` (`shared_data`).
 """

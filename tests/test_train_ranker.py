@@ -88,9 +88,7 @@ def test_a_dropped_feature_weighs_nothing_and_the_others_are_fitted() -> None:
 
     rows = _rows()
     d = {**_describe(rows), "real": np.ones(len(rows), dtype=bool)}
-    # the v's and arcs here are strokes the recogniser never asks the model about (straight-armed marks, arcs):
-    # fitted on as they were before session 32 (`Recipe.fit_unasked`)
-    m = model(d, np.arange(len(rows)), Recipe(drop=("sparse", "ink"), fit_unasked=True))
+    m = model(d, np.arange(len(rows)), Recipe(drop=("sparse", "ink")))
     cols = dropped_columns(("sparse", "ink"))
     assert len(cols) == 6 and (m["theta"][cols] == 0.0).all()
     assert np.count_nonzero(m["theta"]) > 20
