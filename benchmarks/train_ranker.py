@@ -39,7 +39,9 @@ sampled by 8-25 events, and L2 0.003, the one setting tried that kept every test
 hurried rounded-corner brackets, `test_device_sampling`'s sparse braces) while beating the fourth pass's recipe (whose
 model, b42c003, it replaces) on the set and device folds (docs/BENCHMARKS.md, "A ranker refit that keeps a sparse
 brace a curve"). ``--folds shipped`` scores the shipped model as it is beside the folds (not held out: it was fitted on
-every design source).
+every design source). That recipe on ef6e8be's tree (`git archive`) writes the shipped module byte for byte; on later
+rules it writes other weights, none reading people's strokes as well so far (docs/BENCHMARKS.md, "Why a refit of the
+ranker loses people's readings").
 """
 
 from __future__ import annotations
