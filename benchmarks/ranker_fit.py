@@ -25,7 +25,9 @@ class Recipe:
     stroke, source, set or device); the features left out (``drop``: their weights stay 0); the margins the
     model's chance may have to pass (``margins``), chosen on ``inner`` folds of whole sources (None: one a source)
     or, with ``inner_by`` "set", one fold a set; the training-only copies' total weight against the people's
-    strokes (``copies_weight``, when ``d`` holds copies)."""
+    strokes (``copies_weight``, when ``d`` holds copies); ``skip_guarded``: fit on no stroke the recogniser never asks
+    the model about (``d["guarded"]``; fitted on, they pull the model towards the rules' answer: docs/BENCHMARKS.md,
+    "Why a refit of the ranker loses people's readings")."""
 
     lam: float = 1e-2
     weigh: str = "stroke"
@@ -42,7 +44,7 @@ class Recipe:
         if self.drop:
             parts.append("drop " + ",".join(self.drop))
         if self.skip_guarded:
-            parts.append("guarded strokes not fitted on")
+            parts.append("unasked strokes not fitted on")
         return "; ".join(parts)
 
 
@@ -99,9 +101,9 @@ def dropped_columns(drop: tuple[str, ...]) -> list[int]:
 
 
 def model(d: dict, idx: np.ndarray, recipe: Recipe, groups: np.ndarray | None = None) -> dict:
-    """A model fitted on the strokes ``idx`` whose family holds a right kind, each weighing as ``recipe.weigh`` says
-    (``groups``: one name a stroke, for every weighing but "stroke"); a dropped feature's column is zero, so its
-    weights stay 0."""
+    """A model fitted on the strokes ``idx`` whose family holds a right kind (with ``recipe.skip_guarded``, only those
+    the recogniser asks the model about: not ``d["guarded"]``), each weighing as ``recipe.weigh`` says (``groups``: one
+    name a stroke, for every weighing but "stroke"); a dropped feature's column is zero, so its weights stay 0."""
     fits = d["right"][idx].any(axis=1)
     if recipe.skip_guarded:
         fits &= ~d["guarded"][idx]
@@ -161,7 +163,7 @@ def inner_folds(names: list[str], k: int | None) -> list[list[str]]:
 
 def answers(d: dict, idx: np.ndarray, m: dict, rows: list[Row], margin: float | None = None) -> np.ndarray:
     """Whether the recogniser with model ``m`` (at ``margin``, or the model's own) reads each stroke ``idx`` right: the
-    rules' kind where the recogniser does not ask the model (``d["guarded"]``: `ranker.zigzag_teeth`), else
+    rules' kind where the recogniser does not ask the model or would not keep its answer (``d["guarded"]``), else
     `ranker.choose`'s."""
     out = np.zeros(len(idx), dtype=bool)
     margin = m["margin"] if margin is None else margin

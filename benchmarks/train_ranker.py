@@ -2,8 +2,8 @@
 
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--folds set,device,source,in,shipped] [--brief]
        [--lam L[,L...]] [--weigh W] [--drop F[,F...]] [--margins M[,M...]] [--inner K] [--inner-by source|set]
-       [--augment K] [--augment-seed S] [--events-share E] [--copies-weight A] [--no-gate] [--heldback]
-       [--write PATH]
+       [--augment K] [--augment-seed S] [--events-share E] [--copies-weight A] [--no-gate] [--skip-guarded]
+       [--heldback] [--write PATH]
 
 For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve, or
 a polygon left open (`ranker.family`), the ranker scores the family's kinds by ``w_kind . phi + a * [the rules'
@@ -16,8 +16,12 @@ fitted without the whole set), **device** (each pen kind where it is known, `dev
 read by a model fitted without that device; strokes of an unknown device are neither fitted on nor scored there),
 **source** (each person read by a model fitted without them) and **in** (in-sample: the model fitted on every design
 source reads them). ``--augment K`` adds K training-only copies of each training stroke (`augment_strokes`; never
-scored). Strokes the recogniser never asks the model about (a polyline with a zig-zag's teeth, a curve read from a few
-far-apart events: `ranker.zigzag_teeth`, `ranker.kept_curve`) keep the rules' kind in every fold, as in the app.
+scored). Each stroke is described by what the recogniser itself asks the model (`Asked`: its features as
+`ranker.question` computes them at the one place the recogniser asks); strokes it never asks about (a wave, a chain of
+steps, a straight-armed mark, a kept bracket or brace, a zig-zag's teeth, a curve between sparse events, a hurried
+check, ...) keep the rules' kind in every fold, as in the app; they are fitted on (with the features `ranker.features`
+gives the whole stroke) unless ``--skip-guarded``: docs/BENCHMARKS.md, "Why a refit of the ranker loses people's
+readings".
 Tables per set and device (``--brief``: only these), per source and class; a ``RESULT`` line per run.
 
 The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given;
@@ -35,7 +39,9 @@ sampled by 8-25 events, and L2 0.003, the one setting tried that kept every test
 hurried rounded-corner brackets, `test_device_sampling`'s sparse braces) while beating the fourth pass's recipe (whose
 model, b42c003, it replaces) on the set and device folds (docs/BENCHMARKS.md, "A ranker refit that keeps a sparse
 brace a curve"). ``--folds shipped`` scores the shipped model as it is beside the folds (not held out: it was fitted on
-every design source).
+every design source). That recipe on ef6e8be's tree (`git archive`) writes the shipped module byte for byte; on later
+rules it writes other weights, none reading people's strokes as well so far (docs/BENCHMARKS.md, "Why a refit of the
+ranker loses people's readings").
 """
 
 from __future__ import annotations
@@ -46,28 +52,30 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # a shared machine; and the same sums in the same order
 import hashlib
 import json
-import pprint
-from collections import Counter
+from collections.abc import Sequence
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 from augment_strokes import EVENTS_SHARE, augmented_rows
 from bench_generalisation import held_back, held_back_new, scored_rows
-from bench_recognition import machine, table
+from bench_recognition import machine
 from ranker_fit import Recipe, answers, gated_model, inner_folds, model
+from ranker_tables import model_module_text, report, summary
 from stroke_sets import Row, read_set, source_of
 
 from physink_tui.scene.recognition import ranker, ranker_model
-from physink_tui.scene.recognition.recognize import recognize_stroke, sampled_sparsely
+from physink_tui.scene.recognition.primitives import Recognition
+from physink_tui.scene.recognition.recognize import recognize_stroke
 
-__all__ = ["inner_folds"]  # the folds' dealing, tested from here
+__all__ = ["inner_folds", "model_module_text"]  # the folds' dealing, tested from here; the module text, as before
 
 LAMBDA = 1e-2
 """The L2 penalty, fixed before any fit was scored (the sixth pass's sensitivity grid: docs/BENCHMARKS.md)."""
 WIDTH = 4  # the largest family
 SETS = ("ahmadosama", "dollar1", "gtiwari", "hcira", "itt", "mmg")
 """The design sets, each held out whole by the set folds."""
-CACHE_FORMAT = b"guarded, sparse curves"
+CACHE_FORMAT = b"asked as the recogniser asks"
 """Bumped when `describe` keeps more per stroke (a key of an older cache would lack it)."""
 DEVICES_UNKNOWN = ("mouse or touch screen",)
 """Devices a set names without saying which (hcira's sinarest1608: a mouse or a touch screen)."""
@@ -95,11 +103,9 @@ def device_known(row: Row) -> str:
 
 def describe(rows: list[Row], salt: bytes = b"") -> dict:
     """Per stroke: the rules' kind (without the learned ranker), the features, which family kinds are right, and
-    whether the recogniser keeps the rules' kind without asking the model (``guarded``: a polyline with a zig-zag's
-    teeth, `ranker.zigzag_teeth`, or a curve read from sparse events, `ranker.kept_curve`); kept in ~/.cache/physink/
-    under a key of the rows, ``salt`` and the recognition
-    package's source (but the written model, `ranker_model`, which neither the rules without it nor the features
-    read)."""
+    whether the recogniser keeps the rules' kind without asking the model or keeping its answer (``guarded``:
+    `Asked`); kept in ~/.cache/physink/ under a key of the rows, ``salt`` and the recognition package's source (but
+    the written model, `ranker_model`, which neither the rules without it nor the features read)."""
     key = hashlib.sha256(json.dumps([r["file"] + r["label"] for r in rows]).encode() + salt + CACHE_FORMAT)
     for f in sorted(Path(ranker.__file__).parent.glob("*.py")):
         if f.name != "ranker_model.py":
@@ -116,16 +122,42 @@ def describe(rows: list[Row], salt: bytes = b"") -> dict:
     return d
 
 
+ASKED = -1.0
+"""The confidence `Asked` answers with (no reading has it): the recogniser's reading has it when it kept the answer."""
+
+
+class Asked:
+    """Stands in for the learned ranker while the recogniser reads a stroke (`ranker.Asker`): keeps the rules' reading
+    it is handed (``found``) and the features the model would be asked (`ranker.question`; None where it is not
+    asked), and answers with a reading of its own (`ASKED`), so that the recogniser's reading tells whether the
+    model's answer would be kept (a wave the rules read is kept from it, `waves.kept_curve`). The model is fitted on
+    and scored by what the recogniser asks it, computed as the recogniser computes it (the stroke settled,
+    `landing`; its last attempt, `pen_lifts`; the pen's noise as the recogniser measures it)."""
+
+    def __init__(self) -> None:
+        self.found: Recognition | None = None
+        self.phi: np.ndarray | None = None
+
+    def __call__(self, points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float,
+                 found: Recognition, drawn: ranker.Drawn | None, sparse: bool) -> Recognition:
+        self.found = found
+        asked = ranker.question(points, times, noise, found, drawn, sparse)
+        self.phi = None if asked is None else asked[0]
+        return replace(found, confidence=ASKED)
+
+
 def _describe(rows: list[Row]) -> dict:
     rules, phi, right, guarded = [], [], [], []
     for row in rows:
         stroke = row["strokes"][0]
         times = stroke_times(stroke)
-        points = [p[:2] for p in stroke]
-        found = recognize_stroke(points, times, learned=False)
+        ask = Asked()
+        read = recognize_stroke([p[:2] for p in stroke], times, learned=ask)
+        found = ask.found or read  # the rules' reading, the model asked or not
         rules.append(found.kind)
-        guarded.append(ranker.zigzag_teeth(found) or ranker.kept_curve(found, sampled_sparsely(points)))
-        phi.append(ranker.features(stroke, times))
+        guarded.append(ask.phi is None or read.confidence != ASKED)
+        # a stroke not asked: its features as `ranker.features` gives the whole stroke (not fitted on: --skip-guarded)
+        phi.append(ranker.features(stroke, times) if ask.phi is None else ask.phi)
         kinds = ranker.family(found.kind, phi[-1])
         right.append(np.array([k in row["accepts"] for k in kinds] + [False] * (WIDTH - len(kinds)), dtype=bool))
     return {"rules": rules, "phi": np.array(phi).reshape(len(rows), len(ranker.FEATURES)),
@@ -167,58 +199,6 @@ def held_out(d: dict, rows: list[Row], design: np.ndarray, keys: np.ndarray, fit
         got[test] = answers(d, test, m, rows)
         margins[k] = f"{m['margin']:g}"
     return got, margins
-
-
-def report(title: str, d: dict, rows: list[Row], sources: np.ndarray, folds: dict[str, np.ndarray]) -> None:
-    labels = sorted({r["label"] for r in rows})
-    label_of = np.array([r["label"] for r in rows])
-    out, pooled = [], Counter()
-    for s, got in folds.items():
-        mine = np.flatnonzero(sources == s)
-        before = d["rules_right"][mine]
-        pooled.update(n=len(mine), before=int(before.sum()), after=int(got.sum()))
-        cells = []
-        for label in labels:
-            sel = label_of[mine] == label
-            cells.append(f"{100 * before[sel].mean():.1f} → {100 * got[sel].mean():.1f} ({int(sel.sum())})"
-                         if sel.any() else "")
-        out.append([s, len(mine), f"{100 * before.mean():.2f}", f"{100 * got.mean():.2f}", *cells])
-    print(f"### {title}\n")
-    print(table(["source", "strokes", "rules %", "ranker %", *labels], out) + "\n")
-    print(f"Pooled: rules {pooled['before']}/{pooled['n']} = {100 * pooled['before'] / pooled['n']:.2f} %, ranker "
-          f"{pooled['after']}/{pooled['n']} = {100 * pooled['after'] / pooled['n']:.2f} %. Cells: rules → ranker "
-          "% right (strokes).\n")
-
-
-def summary(title: str, d: dict, scored: np.ndarray, by: np.ndarray,
-            results: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
-    """Per group of ``by`` (a set or a device) and pooled: the rules and each fold scheme's % right (right), and the
-    strokes each scheme gains and loses against the rules; a scheme's cell counts the strokes it scores (its mask:
-    the device folds score no stroke of an unknown device), the rules' all of them."""
-    out = []
-    rules = d["rules_right"]
-    for g in [*sorted(set(by[scored].tolist())), "all"]:
-        sel = scored & ((by == g) if g != "all" else True)
-        n = int(sel.sum())
-        cells = [f"{100 * rules[sel].mean():.2f} ({int(rules[sel].sum())})"]
-        for got, mask in results.values():
-            s = sel & mask
-            cells.append(f"{100 * got[s].mean():.2f} ({int(got[s].sum())}"
-                         + (f" of {int(s.sum())}" if s.sum() != n else "")
-                         + f"; +{int((got & ~rules)[s].sum())} -{int((rules & ~got)[s].sum())})" if s.any() else "")
-        out.append([f"**{g}**" if g == "all" else g, n, *cells])
-    print(f"### {title}\n")
-    print(table(["group", "strokes", "rules % (right)", *(f"{k} % (right; gained -lost)" for k in results)], out)
-          + "\n")
-
-
-def model_module_text(doc: dict) -> str:
-    """The fitted model as the Python module the recogniser imports (`ranker_model`): a literal, so that reading
-    the shipped weights is an import, not file I/O in the core."""
-    return ('"""The learned ranker\'s fitted weights (issue 25), written by `benchmarks/train_ranker.py --write`; '
-            'data only, not\nedited by hand: `ranker.shipped_model` checks them against the features the code '
-            'computes."""\n\n'
-            f"MODEL = {pprint.pformat(doc, width=116, compact=True, sort_dicts=False)}\n")
 
 
 def rows_read(rows: list[Row], heldback: bool, write: bool) -> tuple[list[Row], set[str], set[str]]:
@@ -276,7 +256,7 @@ def main() -> None:
                     "again that are sampled by 8-25 events evenly in time (`augment_strokes.SPARSE_EVENTS`)")
     ap.add_argument("--copies-weight", type=float, default=1.0, help="the copies of a stroke weigh this in all")
     ap.add_argument("--skip-guarded", action="store_true", help="fit on no stroke the recogniser never asks the "
-                    "model about (a zig-zag's teeth, `ranker.zigzag_teeth`)")
+                    "model about (`Asked`: a wave, a kept bracket or brace, a zig-zag's teeth, a sparse curve, ...)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     args = ap.parse_args()
     schemes = [f for f in args.folds.split(",") if f]

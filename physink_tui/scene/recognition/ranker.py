@@ -18,7 +18,7 @@ import json
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import NamedTuple, Protocol
 
 import numpy as np
 
@@ -319,25 +319,42 @@ def rerank(points: Sequence[Sequence[float]], times: Sequence[float] | None, noi
     the stroke, the rules' kind then the first alternative; ``drawn``, where given, is what recognition already
     measured of ``points`` (`Drawn`); ``sparse``: the points are so far apart that their jitter is the shape's own
     bends (`recognize.sparse_bends`), where a curve the rules read is kept (`kept_curve`)."""
-    if found.kind not in KINDS or zigzag_teeth(found) or kept_curve(found, sparse):
+    asked = question(points, times, noise, found, drawn, sparse, timed=reads_times(model))
+    if asked is None or found.kind is None:
         return found
-    if found.kind == "polygon" and not _ends_apart(points, drawn):
-        return found
-    unit = _unit_work(points, times, drawn)
-    if found.kind == "polygon" and (unit is None or not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
-        return found
-    phi = _features(unit, noise, polyline=found.kind == "polyline", timed=reads_times(model))
-    if phi is None:
-        return found  # a hurried check: the model is not asked (`choose`)
+    phi, unit = asked
     kind, chance = choose(found.kind, phi, model)
     if kind == found.kind:
         return found
-    shape = geometry(kind, unit[1]) if unit is not None else None
-    if unit is None or shape is None:
+    shape = geometry(kind, unit[1])
+    if shape is None:
         return found
     raw, _, _, diag, _ = unit
     return Recognition(kind, round(chance, 4), scale_geometry(shape, raw.mean(axis=0), diag),
                        ((found.kind, round(1.0 - chance, 4)),))
+
+
+def question(points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float, found: Recognition,
+             drawn: Drawn | None = None, sparse: bool = False, *, timed: bool = True) -> tuple[np.ndarray, Unit] | None:
+    """What `rerank` asks the model of the rules' reading ``found`` (the features, the stroke prepared for them), or
+    None where it is not asked (not of `KINDS`, a zig-zag's teeth, a sparse curve, a closed polygon, a hurried check,
+    a swung tick); `benchmarks/train_ranker.py` describes each stroke by it (the model fitted on what it is asked)."""
+    if found.kind not in KINDS or zigzag_teeth(found) or kept_curve(found, sparse):
+        return None
+    if found.kind == "polygon" and not _ends_apart(points, drawn):
+        return None
+    unit = _unit_work(points, times, drawn)
+    if unit is None or (found.kind == "polygon" and not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
+        return None
+    phi = _features(unit, noise, polyline=found.kind == "polyline", timed=timed)
+    return None if phi is None else (phi, unit)  # None: a hurried check, not asked (`choose`)
+
+
+class Asker(Protocol):
+    """What `recognize.recognize_stroke` may ask in `rerank`'s stead (its ``learned``): `rerank` without the model."""
+
+    def __call__(self, points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float,
+                 found: Recognition, drawn: Drawn | None, sparse: bool) -> Recognition: ...
 
 
 def zigzag_teeth(found: Recognition) -> bool:

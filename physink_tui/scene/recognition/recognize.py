@@ -161,7 +161,7 @@ def _settled(pts: np.ndarray, keep: np.ndarray | None, size: float,
 
 def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] | None = None, *,
                      noise: float | None = PEN_NOISE, weights: Weights | None = None,
-                     learned: bool = True) -> Recognition:
+                     learned: bool | ranker.Asker = True) -> Recognition:
     """Recognise one stroke given as (x, y) points (extra columns such as t are ignored).
 
     ``noise`` is the pen's jitter in the points' units (pass it scaled with the coordinates: a canvas in
@@ -170,8 +170,8 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
     a stroke that is visibly shakier is judged with its own, measured jitter (`pen_noise.jitter`). ``times`` (one a
     point, seconds), where given, tell the learned ranker how the pen slowed at corners. ``weights`` override the
     ranking's and ``learned=False`` leaves the rules' reading without the learned ranker (`ranker`; both for
-    evaluation). A stroke whose times show the pen lifted and drew the mark again is read by its last attempt
-    (`pen_lifts`).
+    evaluation); ``learned`` may also be what is asked in the ranker's stead (`ranker.Asker`: its training). A stroke
+    whose times show the pen lifted and drew the mark again is read by its last attempt (`pen_lifts`).
     """
     attempt = pen_lifts.last_attempt(points, times)
     if attempt is not None and times is not None:
@@ -239,8 +239,9 @@ def recognize_stroke(points: Sequence[Sequence[float]], times: Sequence[float] |
         return result
     drawn = ranker.Drawn(pts, keep, origin, size, measured) if keep is not None else None
     with np.errstate(all="ignore"):  # the ranker keeps what is not one of its kinds
-        reranked = ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(),
-                                 drawn, not seen)
+        reranked = (ranker.rerank(points, times, given if given > 0 else PEN_NOISE, result, ranker.shipped_model(),
+                                  drawn, not seen) if learned is True
+                    else learned(points, times, given if given > 0 else PEN_NOISE, result, drawn, not seen))
         if reranked != result and may_be_wave and waves.kept_curve(rules, unit, views):
             return result  # a wave (the people the model was fitted on drew none)
     return reranked
