@@ -34,7 +34,7 @@ def _outline(rng: random.Random, sides: int) -> list[Point]:
 
 def _arc(corner: Point, before: Point, after: Point, share: float) -> list[Point]:
     """The corner rounded by a circular arc tangent to both sides, leaving each ``share`` of the shorter side from the
-    corner; one point every 15 degrees of its turn or closer, its ends included (the pen follows them as short sides)."""
+    corner; a point every 15 degrees of its turn or closer, its ends included (the pen follows them as short sides)."""
     d = share * min(math.dist(corner, before), math.dist(corner, after))
     h0 = math.atan2(corner[1] - before[1], corner[0] - before[0])
     h1 = math.atan2(after[1] - corner[1], after[0] - corner[0])

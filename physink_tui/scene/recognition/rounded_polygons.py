@@ -28,8 +28,10 @@ FEWEST, MOST = 3, 8
 AT_CORNERS = 0.75
 """The loop does this share of its turning (or more) at its corners (short bends, `shape_corners.corner_bends`): a
 polygon drawn straight between rounded corners turns only there, a round shape all along."""
-STRAIGHT_SHARE = 0.4
-"""...and runs straight (`shape_corners.STRAIGHT_STEP_DEG`) for this share of its steps or more."""
+STRAIGHT_SHARE = 0.45
+"""...and runs straight (`shape_corners.STRAIGHT_STEP_DEG`) for this share of its steps or more (as
+`shape_corners.STRAIGHT_SHARE` asks of one left open): at 0.4 a person's lumpy circle (hcira klarubbio/s02 circle10,
+0.425) read as a pentagon and a Quick, Draw! octagon as a heptagon (0.425)."""
 LEAST_TURN = 0.55
 """...and each corner turns at least this share of what a regular polygon's of as many corners does (360 / n degrees):
 a lumpy circle's or an egg's bends are uneven."""
