@@ -1,0 +1,138 @@
+"""A closed loop read round, or as a polygon of another number of sides, that is a polygon of 3-8 sides whose corners
+a hand rounded: its turning gathered at short bends, evenly shared among them, with straight runs between."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition.polygon_checks import overlap
+from physink_tui.scene.recognition.primitives import Polygon, Recognition
+from physink_tui.scene.recognition.shape_corners import (
+    STEPS,
+    STRAIGHT_STEP_DEG,
+    Bend,
+    drawn_through,
+)
+from physink_tui.scene.recognition.stroke_geometry import resample
+
+BEND_STEP_DEG = 4.0
+"""A bend runs on over steps turning this much or more (a corner's last step of a few degrees is still its own: an
+octagon's corner of 23 degrees turning 18 and 5); a step turning less, or under `shape_corners.STRAIGHT_STEP_DEG`
+for the straight share, is straight."""
+CORNER_LEAST_DEG = 15.0
+"""A bend turning this much or more may be a corner (each must also turn `LEAST_TURN` of a regular polygon's)."""
+FEWEST, MOST = 3, 8
+"""A rounded polygon has this many corners or more, and at most this many: a loop of more short bends is round."""
+AT_CORNERS = 0.75
+"""The loop does this share of its turning (or more) at its corners (short bends, `shape_corners.corner_bends`): a
+polygon drawn straight between rounded corners turns only there, a round shape all along."""
+STRAIGHT_SHARE = 0.45
+"""...and runs straight (`shape_corners.STRAIGHT_STEP_DEG`) for this share of its steps or more (as
+`shape_corners.STRAIGHT_SHARE` asks of one left open): at 0.4 a person's lumpy circle (hcira klarubbio/s02 circle10,
+0.425) read as a pentagon and a Quick, Draw! octagon as a heptagon (0.425)."""
+LEAST_TURN = 0.55
+"""...and each corner turns at least this share of what a regular polygon's of as many corners does (360 / n degrees):
+a lumpy circle's or an egg's bends are uneven."""
+MOST_TURN = 1.6
+"""...and at most this share of it: two corners run together into one bend (an octagon's, whose straight run between
+them was rounded away) are not one corner of a polygon of fewer sides."""
+LONGEST_BEND = 0.8
+"""A bend is a corner when it runs over at most this share of a regular polygon's side of as many corners (plus a
+step), and over at most `LONGEST_STEPS`: a hand rounds a corner over up to a third or so of each side meeting there
+(a triangle's over up to 9 steps of 40, an octagon's 4); a round shape's turning runs on round it."""
+LONGEST_STEPS = 9
+COVERS = 0.88
+"""...and the polygon where the straight runs' lines meet covers the loop this well (intersection over union) or better:
+a corner rounded over up to a third of each side leaves out a few hundredths."""
+
+
+def _cyclic_bends(th: np.ndarray) -> list[Bend]:
+    """The bends of a closed loop's turning ``th`` (degrees, one a step, cyclic): runs of steps turning
+    `BEND_STEP_DEG` or more the same way, their steps counted from the straightest step (which starts the scan)."""
+    start = int(np.argmin(np.abs(th)))
+    steps = np.roll(th, -start).tolist()
+    found: list[Bend] = []
+    k = 0
+    while k < len(steps):
+        if abs(steps[k]) < BEND_STEP_DEG:
+            k += 1
+            continue
+        j = k
+        while j + 1 < len(steps) and abs(steps[j + 1]) >= BEND_STEP_DEG and (steps[j + 1] > 0) == (steps[k] > 0):
+            j += 1
+        found.append(Bend((k + start) % len(steps), (j + start) % len(steps), float(sum(steps[k:j + 1]))))
+        k = j + 1
+    return found
+
+
+def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
+    """Where the line through ``p`` along ``u`` meets the line through ``q`` along ``v`` (None when nearly parallel)."""
+    cross = float(u[0] * v[1] - u[1] * v[0])
+    if abs(cross) < 0.05:
+        return None
+    d = q - p
+    return np.asarray(p + u * float(d[0] * v[1] - d[1] * v[0]) / cross)
+
+
+def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.ndarray | None:
+    """The vertices of the polygon ``loop`` (closed) was drawn as with its corners rounded, or None: `FEWEST` to `MOST`
+    short bends (at most `shape_corners.BEND_STEPS` steps of `shape_corners.STEPS` round, each turning
+    `shape_corners.CORNER_DEG` or more, `LEAST_TURN` of a regular polygon's corner, all the same way) doing `AT_CORNERS`
+    of the turning, straight runs (`STRAIGHT_SHARE`) between them; each vertex where the directions into and out of a
+    bend meet, the polygon covering the loop (`COVERS`). ``drawn``, the stroke's own points where given, must hold a
+    point between each two corners clear of both (`shape_corners.drawn_through`): a round loop sampled by a few events
+    turns at each."""
+    if len(loop) < 8:
+        return None
+    ring = np.vstack([loop, loop[:1]]) if float(np.hypot(*(loop[-1] - loop[0]))) > 0 else loop
+    pts = resample(ring, STEPS + 1)[:-1]
+    d = np.roll(pts, -1, axis=0) - pts
+    heading = np.arctan2(d[:, 1], d[:, 0])
+    th = np.degrees((np.roll(heading, -1) - heading + math.pi) % (2 * math.pi) - math.pi)  # turn at point k + 1
+    total = float(np.abs(th).sum())
+    found = _cyclic_bends(th)
+    corners = [b for b in found if (b.last - b.first) % STEPS < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG]
+    n = len(corners)
+    if not FEWEST <= n <= MOST or total == 0.0 or len({b.degrees > 0 for b in corners}) != 1:
+        return None
+    turns = np.abs([b.degrees for b in corners])
+    spans = np.array([(b.last - b.first) % STEPS + 1 for b in corners])
+    if (float(turns.sum()) < AT_CORNERS * total or float(np.mean(np.abs(th) < STRAIGHT_STEP_DEG)) < STRAIGHT_SHARE
+            or float(turns.min()) < LEAST_TURN * 360.0 / n or float(turns.max()) > MOST_TURN * 360.0 / n
+            or int(spans.max()) > LONGEST_BEND * STEPS / n + 1
+            or abs(float(th.sum()) - math.copysign(360.0, th.sum())) > 30):
+        return None
+    vertices = []
+    for b in corners:
+        before, after = b.first % STEPS, (b.last + 1) % STEPS  # the steps into and out of the bend
+        u = np.array([math.cos(heading[before]), math.sin(heading[before])])
+        v = np.array([math.cos(heading[after]), math.sin(heading[after])])
+        at = _meet(pts[before], u, pts[after], v)
+        if at is None:
+            return None
+        vertices.append(at)
+    poly = np.array(vertices)
+    if overlap(poly, loop) < COVERS:
+        return None
+    if drawn is not None:
+        middles = pts[[((b.first + (b.last - b.first) % STEPS // 2) + 1) % STEPS for b in corners]]
+        if not drawn_through(np.vstack([middles, middles[:1]]), drawn):
+            return None
+    return poly
+
+
+def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray) -> Recognition:
+    """``ranked`` (a circle or an ellipse, or a polygon of another number of vertices) read as the polygon of 3 or 5-8
+    sides ``loop`` was drawn as with its corners rounded (`rounded_corners`); ``ranked`` otherwise (four corners are
+    a box's or a quad's, which `rounded_corners` and `rounded_boxes` judge)."""
+    if ranked.kind not in ("circle", "ellipse", "polygon"):
+        return ranked
+    vertices = rounded_corners(loop, raw)
+    if vertices is None or len(vertices) == 4:
+        return ranked
+    if isinstance(ranked.geometry, Polygon) and len(ranked.geometry.points) == len(vertices):
+        return ranked
+    points = tuple((float(x), float(y)) for x, y in vertices)
+    return Recognition("polygon", ranked.confidence, Polygon(points), ((str(ranked.kind), 1.0 - ranked.confidence),))

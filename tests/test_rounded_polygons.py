@@ -1,0 +1,46 @@
+"""Issue 25, session 32: polygons of 3-8 sides whose corners a hand rounded read as the outline drawn, with as many
+sides: a loop read round, or as a polygon of another number of sides, whose turning gathers at 3 or 5-8 short bends
+sharing it evenly with straight runs between is that polygon (`recognition.rounded_polygons`), by the pen models
+(`tests/penmodels/rounded_polygons`, `benchmarks/bench_rounded_polygons.py`).
+
+Floors are this branch's figures on the tuning seeds (0-29, looked at while designing), rounded down to a multiple of
+four; the held seeds (1000-1029) were read once, at the end, and are reported in docs/BENCHMARKS.md.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+from bench_open_marks import PENS, TUNING_SEEDS
+from bench_rounded_polygons import reading, right
+
+TUNING_FLOORS = {
+    "rounded-triangle": {"careful": 56, "hurried": 48, "hurried-coarse": 48, "hurried-mouse": 40},
+    "rounded-box": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 56},
+    "rounded-pentagon": {"careful": 48, "hurried": 40, "hurried-coarse": 40, "hurried-mouse": 32},
+    "rounded-hexagon": {"careful": 36, "hurried": 32, "hurried-coarse": 32, "hurried-mouse": 28},
+    "rounded-heptagon": {"careful": 40, "hurried": 32, "hurried-coarse": 32, "hurried-mouse": 16},
+    "rounded-octagon": {"careful": 28, "hurried": 24, "hurried-coarse": 20, "hurried-mouse": 4},
+    "one-rounded-triangle": {"careful": 60, "hurried": 48, "hurried-coarse": 48, "hurried-mouse": 52},
+    "one-rounded-box": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
+    "one-rounded-pentagon": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
+    "one-rounded-hexagon": {"careful": 60, "hurried": 56, "hurried-coarse": 60, "hurried-mouse": 56},
+    "one-rounded-heptagon": {"careful": 60, "hurried": 56, "hurried-coarse": 48, "hurried-mouse": 44},
+    "one-rounded-octagon": {"careful": 56, "hurried": 48, "hurried-coarse": 48, "hurried-mouse": 32},
+}
+"""family -> pen -> of the 60 readings on the tuning seeds (30 outlines, with and without times), how many are read
+as drawn (`bench_rounded_polygons.right`: the kind, and a polygon's number of vertices). Main 5e031e5 read (careful,
+hurried, hurried-coarse, hurried-mouse): rounded-triangle 34, 34, 36, 34; rounded-box 60, 60, 60, 56; rounded-pentagon
+38, 36, 36, 32; rounded-hexagon 32, 24, 24, 22; rounded-heptagon 36, 26, 20, 4; rounded-octagon 26, 24, 18, 6; one-
+rounded-triangle 16, 12, 12, 12; one-rounded-box 60, 60, 60, 60; one-rounded-pentagon 54, 58, 58, 58; one-rounded-
+hexagon 60, 56, 60, 52; one-rounded-heptagon 56, 48, 48, 24; one-rounded-octagon 56, 48, 50, 14."""
+
+
+@pytest.mark.parametrize(("family", "pen"), [(f, p) for f in TUNING_FLOORS for p in PENS])
+def test_a_polygon_with_rounded_corners_reads_as_drawn(family: str, pen: str) -> None:
+    got = [reading(family, pen, seed, timed) for seed in TUNING_SEEDS for timed in (True, False)]
+    assert sum(right(family, g) for g in got) >= TUNING_FLOORS[family][pen], got
