@@ -265,8 +265,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `stroke_features.py`: features of open strokes: corner turns, bends, lobes, corner roundness, closure, retraced
   loops
 - `ranker.py`: the learned ranker's features (from what recognition already measured of the stroke, `ranker.Drawn`;
-  a hurried check's stop once `checked_point` can tell; the timed ones only where the model weighs them), its model
-  (read once from the package's data), its choice; `ranker_pace.py` two of its features (where the sharpest corner
+  a hurried check's stop once `checked_point` can tell; the timed ones only where the model weighs them) and its
+  choice; `ranker_weights.py` its model's columns and the model (read once from the package's data, checked against
+  them); `ranker_pace.py` two of its features (where the sharpest corner
   falls along the path, how the pen slowed at corners)
 - `shape_fits.py`: total-least-squares line, Kasa circle, Fitzgibbon direct ellipse, cubic Bézier fits
 - `beautify.py`: the clean geometry of each kind, points on it (`shape_points`, for the bounds check), mapping back

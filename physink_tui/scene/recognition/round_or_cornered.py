@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from physink_tui.scene.recognition.candidates import Candidate, Pending
@@ -61,6 +63,7 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
     explained = CORNERS_EXPLAIN * round_rss
     n = len(polygons[0].fits[0].points) if polygons and polygons[0].fits else 1
     step = typical_step(raw)
+    paced = functools.cache(lambda: _paced(raw, times, diag))  # asked at most once, only where the rest say no
     for pending in sorted((p for p in polygons if p.params >= 2 * 4 and p.rss <= explained),
                           key=lambda p: bic_score(p, n, sigma, weights)):
         # only the best fit of that many sides is judged, before building (which judges every corner: the costlier)
@@ -68,7 +71,7 @@ def cornered_after_all(ranked: Recognition, polygons: list[Pending], round_rss: 
         if best is None or best.rss > explained or not (corners_told or sharp_corners(best, step)
                                                          or slowed_corners(best, step, raw, times)
                                                          or mostly_sharp(best, step, round_rss)
-                                                         or paced_corners(best, raw, times, diag)):
+                                                         or (len(best.indices) - 1 >= 5 and paced())):
             continue
         for c in [*_built(pending, best), *_shallow(pending, best, noise)]:
             if c.kind == "box" and not inside(c.geometry, box_lo, box_hi) and c.fallback is not None:
@@ -88,16 +91,20 @@ def slowed_corners(fit: PolygonFit, step: float, raw: np.ndarray, times: np.ndar
     return slowed_at_corners(fit.vertices, raw, times)
 
 
-def paced_corners(fit: PolygonFit, raw: np.ndarray, times: np.ndarray | None, diag: float) -> bool:
-    """Whether a closed fit of five sides or more belongs to a loop whose points came in bursts (a busy mouse's,
-    `pen_noise.burst_jumps`: too sparse for `dense_enough`) and whose pen slowed `corner_pace.CORNER_DIPS` times or
-    more (`corner_pace.slowdowns`): a hand slows into each corner it means and runs along the sides, and keeps an even
-    pace round a circle (an oval's two ends, a lopsided one's three or four, slow it less often). False without
-    times."""
-    if times is None or len(fit.indices) - 1 < 5 or int(np.count_nonzero(burst_jumps(raw, diag)[1])) < 3:
+def _paced(raw: np.ndarray, times: np.ndarray | None, diag: float) -> bool:
+    """Whether a loop's points came in bursts (a busy mouse's, `pen_noise.burst_jumps`: too sparse for `dense_enough`)
+    and its pen slowed `corner_pace.CORNER_DIPS` times or more (`corner_pace.slowdowns`): a hand slows into each corner
+    it means and runs along the sides, and keeps an even pace round a circle (an oval's two ends, a lopsided one's
+    three or four, slow it less often). False without times."""
+    if times is None or int(np.count_nonzero(burst_jumps(raw, diag)[1])) < 3:
         return False
     falls = slowdowns(raw, times)
     return falls is not None and falls >= CORNER_DIPS
+
+
+def paced_corners(fit: PolygonFit, raw: np.ndarray, times: np.ndarray | None, diag: float) -> bool:
+    """Whether a closed fit of five sides or more belongs to a loop drawn at a corner's pace (`_paced`)."""
+    return len(fit.indices) - 1 >= 5 and _paced(raw, times, diag)
 
 
 def mostly_sharp(fit: PolygonFit, step: float, round_rss: float) -> bool:

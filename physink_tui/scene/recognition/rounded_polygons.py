@@ -13,6 +13,7 @@ from physink_tui.scene.recognition.shape_corners import (
     STEPS,
     STRAIGHT_STEP_DEG,
     Bend,
+    bend_runs,
     drawn_through,
 )
 from physink_tui.scene.recognition.stroke_geometry import resample
@@ -52,19 +53,9 @@ def _cyclic_bends(th: np.ndarray) -> list[Bend]:
     """The bends of a closed loop's turning ``th`` (degrees, one a step, cyclic): runs of steps turning
     `BEND_STEP_DEG` or more the same way, their steps counted from the straightest step (which starts the scan)."""
     start = int(np.argmin(np.abs(th)))
-    steps = np.roll(th, -start).tolist()
-    found: list[Bend] = []
-    k = 0
-    while k < len(steps):
-        if abs(steps[k]) < BEND_STEP_DEG:
-            k += 1
-            continue
-        j = k
-        while j + 1 < len(steps) and abs(steps[j + 1]) >= BEND_STEP_DEG and (steps[j + 1] > 0) == (steps[k] > 0):
-            j += 1
-        found.append(Bend((k + start) % len(steps), (j + start) % len(steps), float(sum(steps[k:j + 1]))))
-        k = j + 1
-    return found
+    n = len(th)
+    return [Bend((b.first + start) % n, (b.last + start) % n, b.degrees)
+            for b in bend_runs(np.roll(th, -start).tolist(), BEND_STEP_DEG)]
 
 
 def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:

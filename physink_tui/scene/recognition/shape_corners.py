@@ -34,24 +34,28 @@ class Bend(NamedTuple):
     degrees: float
 
 
+def bend_runs(steps: list[float], least: float) -> list[Bend]:
+    """The runs of ``steps`` (degrees, one a step) turning ``least`` or more each, the same way, as bends."""
+    found: list[Bend] = []
+    k = 0
+    while k < len(steps):
+        if abs(steps[k]) < least:
+            k += 1
+            continue
+        j = k
+        while j + 1 < len(steps) and abs(steps[j + 1]) >= least and (steps[j + 1] > 0) == (steps[k] > 0):
+            j += 1
+        found.append(Bend(k, j, float(sum(steps[k:j + 1]))))
+        k = j + 1
+    return found
+
+
 def bends(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, list[Bend]]:
     """The path resampled to `STEPS` points, its turning (degrees, one a step) and its bends: runs of steps turning
     `STRAIGHT_STEP_DEG` or more, each the same way."""
     pts = resample(work, STEPS)
     th = np.degrees(turning(pts))
-    found: list[Bend] = []
-    steps = th.tolist()
-    k = 0
-    while k < len(steps):
-        if abs(steps[k]) < STRAIGHT_STEP_DEG:
-            k += 1
-            continue
-        j = k
-        while j + 1 < len(steps) and abs(steps[j + 1]) >= STRAIGHT_STEP_DEG and (steps[j + 1] > 0) == (steps[k] > 0):
-            j += 1
-        found.append(Bend(k, j, float(sum(steps[k:j + 1]))))
-        k = j + 1
-    return pts, th, found
+    return pts, th, bend_runs(th.tolist(), STRAIGHT_STEP_DEG)
 
 
 def corner_bends(found: list[Bend]) -> list[Bend]:
