@@ -14,6 +14,17 @@ and, read as a polyline (what it must not take in):
   whose sharpest point turns within 0.12-0.19 of its shorter side and whose sides bow 0.08-0.11 as `waves` measures),
   150-420 px long, 0.2-0.4 of that high.
 
+- ``curly-line`` (session 33): a line with 3-5 curls drawn in it where the hand curled (a Quick, Draw! player's
+  squiggle: tutorboard seed260730 #4, #41), each a loop the pen goes once round while moving on by 0.3-0.8 of its
+  radius, radii uneven by up to a quarter, straight runs of 1.5-4 radii between them, each 0.3-1.7 of that, leads at
+  the ends; 200-500 px across. Read as a curve: a line with curls is no spring (`beautify.UNEVEN_PITCH`); curls that
+  happen to fall evenly are read as a helix, as a spring's loops;
+
+and, read as a helix (what it must not take in):
+
+- ``coil``: a spring drawn as one coil, 3-6 loops of radius 0.5-1.0 of the pitch, pitch and radius uneven by up to a
+  tenth, leads of up to a pitch at the ends; 150-450 px across.
+
 Round humps joined at tight dips (an m drawn loosely, as some quickdraw squiggles are) were tried as a family and left
 out: their dips turn within 0.16-0.17 of their sides, inside the people's round-peaked zig-zags (docs/BENCHMARKS.md).
 
@@ -29,8 +40,9 @@ from collections.abc import Callable
 from penmodels.open_marks import Mark, _arc, _placed
 
 Point = tuple[float, float]
-EXPECTED = {"round-s": "curve", "round-peaked-zigzag": "polyline"}
-"""The kind each family is read as: a squiggle is a curve (benchmarks/label_kinds.tsv), a zig-zag a polyline."""
+EXPECTED = {"round-s": "curve", "round-peaked-zigzag": "polyline", "curly-line": "curve", "coil": "helix"}
+"""The kind each family is read as: a squiggle is a curve (benchmarks/label_kinds.tsv), a zig-zag a polyline, a
+spring a helix."""
 
 
 def _line(a: Point, b: Point, n: int) -> list[Point]:
@@ -115,4 +127,50 @@ def _scaled(rng: random.Random, pts: list[Point], least: float, most: float) -> 
     return [((x - cx) * scale, (y - cy) * scale) for x, y in pts]
 
 
-FAMILIES: dict[str, Callable[[int], Mark]] = {"round-s": round_s, "round-peaked-zigzag": round_peaked_zigzag}
+def _loops(rng: random.Random, radii: list[float], advances: list[float], gaps: list[float],
+           leads: tuple[float, float]) -> list[Point]:
+    """A line along x with a loop drawn in it at each of ``radii`` (each the pen going once round, up and back, while
+    moving on by its ``advances``: a prolate cycloid's arch), straight runs of ``gaps`` between them and ``leads`` at
+    the ends, bowed a little each."""
+    pts: list[Point] = [(0.0, 0.0)]
+    pts += _bowed(pts[-1], (leads[0], 0.0), rng.uniform(-0.05, 0.05), 8) if leads[0] > 0 else []
+    for k, (r, d) in enumerate(zip(radii, advances, strict=True)):
+        x0 = pts[-1][0]
+        pts += [(x0 + d * a / (2 * math.pi) + r * math.sin(a), r * math.cos(a) - r)
+                for a in (2 * math.pi * j / 32 for j in range(1, 33))]
+        if k < len(gaps) and gaps[k] > 0:
+            pts += _bowed(pts[-1], (pts[-1][0] + gaps[k], 0.0), rng.uniform(-0.05, 0.05), 8)
+    if leads[1] > 0:
+        pts += _bowed(pts[-1], (pts[-1][0] + leads[1], 0.0), rng.uniform(-0.05, 0.05), 8)
+    return pts
+
+
+def curly_line(seed: int) -> Mark:
+    """A line with 3-5 curls drawn in it where the hand curled (module docstring)."""
+    rng = random.Random(f"curly-line:{seed}")
+    n = rng.randint(3, 5)
+    radius = 1.0
+    radii = [radius * rng.uniform(0.75, 1.25) for _ in range(n)]
+    advances = [r * rng.uniform(0.3, 0.8) for r in radii]
+    gap = radius * rng.uniform(1.5, 4.0)
+    gaps = [gap * rng.uniform(0.3, 1.7) for _ in range(n - 1)]
+    leads = (gap * rng.uniform(0.3, 1.5), gap * rng.uniform(0.3, 1.5))
+    return Mark("curly-line", _placed(rng, _scaled(rng, _loops(rng, radii, advances, gaps, leads), 200, 500), False),
+                True)
+
+
+def coil(seed: int) -> Mark:
+    """A spring drawn as one coil: 3-6 loops following each other evenly (module docstring)."""
+    rng = random.Random(f"coil:{seed}")
+    n = rng.randint(3, 6)
+    pitch = 1.0
+    radius = pitch * rng.uniform(0.5, 1.0)
+    radii = [radius * rng.uniform(0.9, 1.1) for _ in range(n)]
+    advances = [pitch * rng.uniform(0.9, 1.1) for _ in range(n)]
+    leads = (pitch * rng.uniform(0.0, 1.0), pitch * rng.uniform(0.0, 1.0))
+    return Mark("coil", _placed(rng, _scaled(rng, _loops(rng, radii, advances, [0.0] * (n - 1), leads), 150, 450),
+                                False), True)
+
+
+FAMILIES: dict[str, Callable[[int], Mark]] = {"round-s": round_s, "round-peaked-zigzag": round_peaked_zigzag,
+                                              "curly-line": curly_line, "coil": coil}

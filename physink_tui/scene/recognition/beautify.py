@@ -87,14 +87,15 @@ def curve_geometry(work: np.ndarray, corners: list[int], tolerance: float = 0.04
     return Curve(tuple(ctrl))
 
 
-UNEVEN_PITCH = 0.25
-"""A spring's loops advance evenly along its axis: the spacings along it of the centres of its whole turns (three or
-more; the last, part of a turn, left out) vary by at most this share of their mean (their coefficient of variation,
-asked from either end). A line drawn with curls in it (a Quick, Draw! player's squiggle: loops where the hand curled, a
-run of line between) turns as far as a spring, but its loops bunch and spread: tutorboard seed260730 #4, #41,
-seed170731 #339, #355, seed90210 #379 and an hcira star gone round twice vary by 0.31-1.01 (the larger of the two
-ends), the generated springs (`tests/strokegen` helix, 200 seeds: loop size and pitch uneven by up to a tenth) by
-0.18 at most, people's coils (quickdraw 5544426287923200, seed90210 #324, #350, #390) by 0.05-0.17 (session 33)."""
+UNEVEN_PITCH = 0.3
+"""A spring's loops follow each other evenly along its axis: where the pen runs back along it, half a turn into each
+loop, those points' spacings along the axis vary by at most this share of their mean (their coefficient of variation;
+with three loops or more, asked from either end). A line drawn with curls in it (a Quick, Draw! player's squiggle:
+loops where the hand curled, a run of line between) turns as far as a spring, but its loops bunch and spread:
+tutorboard seed260730 #4 and #41 vary by 0.61-0.74, seed90210 #379 and seed170731 #339 by 0.66-0.69 (the larger of the
+two ends), an hcira star gone round twice by 1.39; the generated springs (`tests/strokegen` helix, 200 seeds: loop
+size and pitch uneven by up to a tenth) by 0.21 at most, `tests/penmodels/squiggles`' coils by 0.16, people's coils
+(quickdraw 5544426287923200, seed90210 #324, #350, #390) by 0.10-0.23 (session 33)."""
 
 
 def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Helix | None:
@@ -106,15 +107,13 @@ def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Heli
     heading = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
     rel = np.abs(heading - heading[0])
     loop_ids = np.minimum((rel // (2 * math.pi)).astype(int), int(turns))
-    centres, radii, whole = [], [], []
+    centres, radii = [], []
     for k in range(int(turns) + 1):
         members = work[1:][loop_ids == k]
         if len(members) >= 5:
             c = members.mean(axis=0)
             centres.append(c)
             radii.append(float(np.hypot(*(members - c).T).mean()))
-            if k < int(turns):  # a whole turn (the last, part of one, has its centre off its loop's)
-                whole.append(c)
     if len(centres) < 2:
         return None
     radius = float(np.median(radii))
@@ -126,7 +125,9 @@ def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Heli
     off_axis = max(abs(float((c - centres[0]) @ np.array([-unit[1], unit[0]]))) for c in centres)
     if off_axis > 0.6 * radius + 0.15 * advance:
         return None  # the loops wander (flourishes round a box's corners), a spring's go straight
-    pitches = np.diff([float((c - centres[0]) @ unit) for c in whole])
+    # each loop where the pen runs back along the axis, half a turn into it: a spring's follow at its pitch
+    backs = np.searchsorted(np.maximum.accumulate(rel), math.pi + 2 * math.pi * np.arange(int(turns + 0.5)))
+    pitches = np.diff(work[1:][backs[backs < len(rel)]] @ unit)
     if len(pitches) >= 2 and float(np.std(pitches)) > UNEVEN_PITCH * float(np.mean(pitches)):
         return None  # loops bunched and spread where the hand curled (a curly line), a spring's follow evenly
     # the spring reaches as far along its axis as the stroke does (its end loops' centres fall short of them)
