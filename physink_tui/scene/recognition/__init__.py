@@ -20,7 +20,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    `coils.COILED`, a lead the pen drew out and back along its own path at either end and drew again with the shape (a
    box's first side or a circle's first arc drawn twice over) is cut (`loop_ends.retraced_lead`).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
-   drawn past its start and comes back to it (cut there), or it goes round the same sides twice, or goes round again
+   drawn past its start and comes back to it (cut there; where it also started before its end, the cut leaving the
+   shorter loop, so either end drawn first cuts the same), or it goes round the same sides twice, or goes round again
    beside its first lap, which is the shape (`closed_loops.TWICE_ROUND`), or its ends meet once a landing or
    lifting hook that kept a small loop's ends apart is cut (`closed_loops.hook_kept_apart`). Where neither end
    comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook
@@ -96,7 +97,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    open mark, and as a curve where that reading would be round too (a polygon's loop with an overshoot past a corner,
    read as a polygon, is not asked); a round reading of a stroke gone round more than once is a circle or an
    ellipse as its lap from the start and its lap to the end tell it alike, where both come back round and disagree
-   (`both_laps`: by their mean width over length, so it reads the same drawn from either end);
+   (`both_laps`: by their mean width over length, so it reads the same drawn from either end; a circle rounded off
+   from either lap that stays within the stroke's bounds where both laps are round enough for one);
    a long ellipse's miss (2.62 times as long as
    wide or more, `candidates.ACROSS_RATIO`) is measured square across it, as a polygon's sides' are
    (`candidates.ellipse_distances`: along the ray from its centre, a long oval's miss at its shoulders doubles, and
