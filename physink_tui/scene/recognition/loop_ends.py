@@ -17,27 +17,12 @@ shaft, an x drawn as a loop with crossing tails."""
 def cut_ends(work: np.ndarray, gap: float, d_tail: np.ndarray, d_head: np.ndarray) -> np.ndarray:
     """The stroke once round: an overshoot past the start, or a start before the end, cut at the closest approach;
     else cut where the first and last `END_SHARE` come closest, when that is much closer than the ends are: a
-    hook where the pen landed and an overshoot where it lifted (neither end alone comes near the other's path).
-    ``d_tail`` and ``d_head`` (as many points each): the distances of the last points to the first, of the first to the
-    last. Where the stroke both ran past its start and started before its end, the two cuts are weighed alike, so the
-    stroke drawn from its other end is cut the same: where the loops they leave differ by more than `END_SHARE` of the
-    points, they are two loops (the pen came back once round and drew on) and the shorter is kept; else they are one
-    loop whose ends ran past each other, cut where the ends come closer. Until session 33 the end run past the start was
-    cut first either way: a person's circle read a circle one way and an ellipse the other, a Quick, Draw! square with
-    a flag drawn on past its start a box one way and a figure eight the other."""
+    hook where the pen landed and an overshoot where it lifted (neither end alone comes near the other's path)."""
     n = len(work)
     tail_n = len(d_tail)
-    past = bool(float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < tail_n - 2)
-    before = bool(float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1)
-    if past and before:  # both: cut as the stroke drawn from its other end is (`cut_ends`)
-        keeps_past, keeps_before = n - tail_n + int(d_tail.argmin()) + 1, n - int(d_head.argmin())
-        if abs(keeps_past - keeps_before) > END_SHARE * n:
-            past = keeps_past < keeps_before  # two loops: the pen came back once round and drew on
-        else:  # one loop, its ends run past each other: cut where they come closer
-            past = float(d_tail.min()) <= float(d_head.min())
-    if past:
+    if float(d_tail.min()) < 0.5 * gap and d_tail.argmin() < tail_n - 2:
         return work[: n - tail_n + int(d_tail.argmin()) + 1]  # drawn past the start
-    if before:
+    if float(d_head.min()) < 0.5 * gap and d_head.argmin() > 1:
         return work[int(d_head.argmin()):]  # started before where it ends
     k = max(2, int(END_SHARE * n))
     head, tail = work[:k], work[n - k:]
