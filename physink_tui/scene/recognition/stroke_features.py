@@ -136,15 +136,11 @@ def ran_through_first_corner(work: np.ndarray, corners: list[int]) -> bool:
 def closure(work: np.ndarray, diag: float) -> float:
     """How nearly the stroke returns to its start, over its size: the gap between its ends, or, for a
     stroke drawn past its start (or started before it), twice the closest approach of one end to
-    the other end's first fifth (a shape closes through its ends, not through its middle). Both fifths are as many
-    points, so the stroke drawn from its other end closes as nearly (until session 33 the last fifth held a point more
-    where a fifth of the count is not whole: hcira shriyansnidhish s06 arrow07 closed 0.419 one way, 0.434 the other,
-    across `closed_loops.polygon_left_open`'s 0.42)."""
+    the other end's first fifth (a shape closes through its ends, not through its middle)."""
     n = len(work)
     gap = float(np.hypot(*(work[-1] - work[0])))
-    k = max(2, int(n * 0.2))
-    tail = work[n - k:]
-    head = work[:k]
+    tail = work[int(n * 0.8):]
+    head = work[: max(2, int(n * 0.2))]
     d1 = float(np.minimum.reduce(np.hypot(*(tail - work[0]).T)))
     d2 = float(np.minimum.reduce(np.hypot(*(head - work[-1]).T)))
     return min(gap, 2 * d1, 2 * d2) / diag
