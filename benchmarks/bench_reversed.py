@@ -8,8 +8,8 @@ fourth group's sets read alone with ``--fourth``) is recognised as drawn and rev
 reverse order, its times running forward from its start), with the shipped recogniser. Prints, per source (a set, or
 ``--by person`` a set's person), how many strokes read another kind reversed, how many of those hold a lift the device
 missed (`pen_lifts.last_attempt`, as drawn or reversed: the stroke is read by its last attempt, and which attempt is
-last is the time order's, meant to change reversed), and how many are right each way; with ``--list`` every stroke
-whose kind differs (set, person, file, label, kind as drawn -> reversed, which way is right, "lifted").
+last is the time order's, meant to change reversed), and how many are right each way and both ways; with ``--list``
+every stroke whose kind differs (set, person, file, label, kind as drawn -> reversed, which way is right, "lifted").
 """
 
 from __future__ import annotations
@@ -68,7 +68,7 @@ def main() -> None:
     ap.add_argument("--by", choices=("set", "person"), default="set")
     ap.add_argument("--list", action="store_true", help="name every stroke whose kind differs reversed")
     args = ap.parse_args()
-    n, differs, lifts, fwd, rev = Counter(), Counter(), Counter(), Counter(), Counter()
+    n, differs, lifts, fwd, rev, both = Counter(), Counter(), Counter(), Counter(), Counter(), Counter()
     listed = []
     for row in rows_of(args.sets, args.fourth):
         key = source_of(row, args.by)
@@ -77,20 +77,21 @@ def main() -> None:
         differs[key] += ahead != back
         fwd[key] += ahead in row["accepts"]
         rev[key] += back in row["accepts"]
+        both[key] += ahead in row["accepts"] and back in row["accepts"]
         if ahead != back:
             lifts[key] += lifted(row)
             which = {(True, True): "both", (True, False): "as drawn", (False, True): "reversed"}.get(
                 (ahead in row["accepts"], back in row["accepts"]), "neither")
             listed.append(f"- {source_of(row, 'person')} {row.get('file', '')} \"{row['label']}\": {ahead} -> {back}"
                           f" (right: {which}{', lifted' if lifted(row) else ''})")
-    print("| source | strokes | kind differs reversed | of which lifted | right as drawn | right reversed |\n"
-          "|---|---:|---:|---:|---:|---:|")
+    print("| source | strokes | kind differs reversed | of which lifted | right as drawn | right reversed | right both "
+          "ways |\n|---|---:|---:|---:|---:|---:|---:|")
     for key in sorted(n):
-        print(f"| {key} | {n[key]} | {differs[key]} | {lifts[key]} | {fwd[key]} | {rev[key]} |")
+        print(f"| {key} | {n[key]} | {differs[key]} | {lifts[key]} | {fwd[key]} | {rev[key]} | {both[key]} |")
     total = sum(n.values())
-    right, back = sum(fwd.values()), sum(rev.values())
+    right, back, alike = sum(fwd.values()), sum(rev.values()), sum(both.values())
     print(f"| all | {total} | {sum(differs.values())} | {sum(lifts.values())} | {right} ({100 * right / total:.2f} %) "
-          f"| {back} ({100 * back / total:.2f} %) |")
+          f"| {back} ({100 * back / total:.2f} %) | {alike} ({100 * alike / total:.2f} %) |")
     if args.list and listed:
         print("\nKinds that differ reversed (person, file, label: as drawn -> reversed):\n" + "\n".join(listed))
 

@@ -96,7 +96,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    open mark, and as a curve where that reading would be round too (a polygon's loop with an overshoot past a corner,
    read as a polygon, is not asked); a round reading of a stroke gone round more than once is a circle or an
    ellipse as its lap from the start and its lap to the end tell it alike, where both come back round and disagree
-   (`both_laps`: by their mean width over length, so it reads the same drawn from either end);
+   (`both_laps`: by their mean width over length, so it reads the same drawn from either end; a circle rounded off
+   from either lap that stays within the stroke's bounds where both laps are round enough for one);
    a long ellipse's miss (2.62 times as long as
    wide or more, `candidates.ACROSS_RATIO`) is measured square across it, as a polygon's sides' are
    (`candidates.ellipse_distances`: along the ray from its centre, a long oval's miss at its shoulders doubles, and

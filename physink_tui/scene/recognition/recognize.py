@@ -352,7 +352,9 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
                                     corners_told)
     if ranked.kind in ("circle", "ellipse") and closed_loops.tail_runs_off(work, loop, ellipse):
         return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
-    ranked = both_laps.round_from_both_laps(ranked, work, ellipse, diag, sigma)  # circle or ellipse either way round
+    # circle or ellipse either way round (the bounds a circle must stay within asked only of an ellipse)
+    ranked = both_laps.round_from_both_laps(ranked, work, ellipse, diag, sigma,
+                                            bounds(raw, noise, diag) if ranked.kind == "ellipse" else None)
     ranked = rounded_polygons.polygon_rounded(ranked, loop, raw)
     ranked = rounded_corners.box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
