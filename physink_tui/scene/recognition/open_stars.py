@@ -26,13 +26,13 @@ DENT_DEG = 25.0
 DENT_SHARE = 0.75
 """A star's dents turn back less than its points turn out, on the mean at most this share of them: round a star's
 outline the points' turns exceed the dents' by a whole turn (a regular five-pointed star's dents 72 degrees to its
-points' 144, tutorboard seed260730 #102's 48-95 to 109-137), where a zig-zag's or a crown's teeth turn back as sharply
-as they turn out (0.9-1.0)."""
+points' 144; tutorboard seed260730 #102's 46-111 to 122-142, 0.56 on the mean), where a zig-zag's or a crown's teeth
+turn back as sharply as they turn out (0.9-1.0)."""
 END_BOW = 0.2
 """The first and last sides may bow this much of their chord (`closed_loops.LAST_SIDE_BOW`)."""
 POINT_DEG = 80.0
 """A star's point turns this much or more (a five-pointed star's 144 degrees, a four-pointed one's 90-140; a hurried
-hand's widest, 100-110: tutorboard seed260730 #102's turn 109-137), its point no wider than 100 degrees."""
+hand's widest, 100-110; tutorboard seed260730 #102's 122-142), its point no wider than 100 degrees."""
 
 
 def _turns(sides: np.ndarray) -> np.ndarray:
