@@ -68,6 +68,9 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    turning where an end hook undoes the path's (`closed_loops.LEFT_OPEN_WOBBLE`), and its first and last sides may
    bow (`closed_loops.LAST_SIDE_BOW`); so is a four-sided outline left open by part of its first or last side, up to
    0.7 of it (`open_boxes.box_left_open`: three corners and the fourth where those sides' lines meet near square).
+   So is a star's outline left open by about a side (`open_stars.star_left_open`: points and shallower dents in
+   turn along straight sides), which the learned ranker is then not asked of (`ranker.star_left`). A loop read as an
+   ellipse under 0.08 as wide as long is a line drawn out and back (`open_marks.out_and_back`).
    A loop read round is read as its polygon of four sides or more after all
    (`round_or_cornered`) when that polygon leaves at most half the round shape's error and three in four of its
    vertices turn within 0.4 of their shorter side (`polygon_checks.sharp_corners`; a round loop needs 0.8): a

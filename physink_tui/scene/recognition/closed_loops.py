@@ -9,7 +9,14 @@ import math
 
 import numpy as np
 
-from physink_tui.scene.recognition import end_crossings, open_shapes, pen_noise, shape_corners, shape_turning
+from physink_tui.scene.recognition import (
+    end_crossings,
+    open_shapes,
+    open_stars,
+    pen_noise,
+    shape_corners,
+    shape_turning,
+)
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.candidates import ellipse_distances
@@ -89,6 +96,7 @@ class LeftOpen(enum.Enum):
     SIDES = "straight sides turning most of the way round, the last heading home"
     MANY_SIDES = "many sharp corners, one side missing"  # `many_sided_left_open`
     ROUNDED_CORNERS = "many corners the hand rounded, one side missing"  # `shape_corners`
+    STAR = "a star's points and dents in turn, one side missing"  # `open_stars.star_left_open`
 
 
 def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = None) -> LeftOpen | None:
@@ -119,6 +127,8 @@ def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = 
         return LeftOpen.MANY_SIDES
     if shape_corners.rounded_many_sided_left_open(work, drawn):
         return LeftOpen.ROUNDED_CORNERS
+    if open_stars.star_left_open(work, length):
+        return LeftOpen.STAR
     return None
 
 

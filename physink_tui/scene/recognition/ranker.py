@@ -19,11 +19,11 @@ from typing import NamedTuple, Protocol
 
 import numpy as np
 
-from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, pen_noise, shape_turning
+from physink_tui.scene.recognition import bracket_marks, open_marks, open_shapes, open_stars, pen_noise, shape_turning
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
-from physink_tui.scene.recognition.primitives import Geometry, Polyline, Recognition
+from physink_tui.scene.recognition.primitives import Geometry, Polygon, Polyline, Recognition
 from physink_tui.scene.recognition.ranker_pace import corner_slowdown, point_balance
 from physink_tui.scene.recognition.ranker_weights import FEATURES as FEATURES  # the model's names, as ranker.*
 from physink_tui.scene.recognition.ranker_weights import KINDS as KINDS
@@ -284,7 +284,7 @@ def question(points: Sequence[Sequence[float]], times: Sequence[float] | None, n
     a swung tick); `benchmarks/train_ranker.py` describes each stroke by it (the model fitted on what it is asked)."""
     if found.kind not in KINDS or zigzag_teeth(found) or kept_curve(found, sparse):
         return None
-    if found.kind == "polygon" and not _ends_apart(points, drawn):
+    if found.kind == "polygon" and (not _ends_apart(points, drawn) or star_left(found)):
         return None
     unit = _unit_work(points, times, drawn)
     if unit is None or (found.kind == "polygon" and not open_polygon(sf.closure(unit[1], sg.bbox_diagonal(unit[1])))):
@@ -298,6 +298,12 @@ class Asker(Protocol):
 
     def __call__(self, points: Sequence[Sequence[float]], times: Sequence[float] | None, noise: float,
                  found: Recognition, drawn: Drawn | None, sparse: bool) -> Recognition: ...
+
+
+def star_left(found: Recognition) -> bool:
+    """Whether the rules' polygon is a star's outline (`open_stars.star_outline`): not asked of the model, fitted on
+    few stars left open, which takes one closed across its gap for a curve (issue 25, session 33)."""
+    return isinstance(found.geometry, Polygon) and open_stars.star_outline(found.geometry.points)
 
 
 def zigzag_teeth(found: Recognition) -> bool:

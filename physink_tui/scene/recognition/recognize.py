@@ -33,6 +33,7 @@ from physink_tui.scene.recognition import (
     loop_ends,
     lopsided_braces,
     open_boxes,
+    open_marks,
     open_shapes,
     pen_lifts,
     pen_noise,
@@ -361,6 +362,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
     ranked = roofs.pentagon_on_a_box(ranked, polygons, noise)
     ranked = rounded_boxes.box_rounded_all_round(ranked, loop)
+    ranked = open_marks.out_and_back(ranked, raw)  # a line drawn out and back closes a slit, no ellipse
     if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
         # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
         return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag, views)
