@@ -353,7 +353,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if ranked.kind in ("circle", "ellipse") and closed_loops.tail_runs_off(work, loop, ellipse):
         return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
     ranked = both_laps.round_from_both_laps(ranked, work, ellipse, diag, sigma)  # circle or ellipse either way round
-    ranked = rounded_polygons.polygon_rounded(ranked, loop, raw)
+    ranked = rounded_polygons.polygon_rounded(  # asked of the loop cut from either end
+        ranked, loop, raw, lambda: closed_loops.closed_loop(raw[::-1], work[::-1], diag, sigma))
     ranked = rounded_corners.box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)

@@ -4,6 +4,7 @@ a hand rounded: its turning gathered at short bends, evenly shared among them, w
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -58,6 +59,23 @@ def _cyclic_bends(th: np.ndarray) -> list[Bend]:
             for b in bend_runs(np.roll(th, -start).tolist(), BEND_STEP_DEG)]
 
 
+def loop_turning(loop: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A closed loop resampled to `STEPS` points, the heading (radians) of each step but the one over its seam and the
+    turn at the end of each (degrees, cyclic: the last across the seam to the first). The seam is where the loop was
+    closed: the chord from its end back to its start, across however the pen landed and lifted (a hook, an overshoot
+    cut beside the first side). The points sit half a step either side of the chord's middle and on round, so one
+    step runs over the seam, the same drawn either way; it is left out, its turn falling whole between its neighbours:
+    its heading, at right angles to the path where the ends were cut side by side, made a zigzag of two bends turning
+    each way (issue 25, session 33: a Quick, Draw! octagon's -87 and +120 degrees; a triangle drawn from a corner,
+    its landing hook's 22 and -126), and the points placed from the loop's start fell otherwise drawn the other way."""
+    seam = (loop[0] + loop[-1]) / 2
+    pts = resample(np.vstack([seam, loop, seam]), 2 * STEPS + 1)[1::2]
+    d = pts[1:] - pts[:-1]
+    heading = np.arctan2(d[:, 1], d[:, 0])
+    th = np.degrees((np.roll(heading, -1) - heading + math.pi) % (2 * math.pi) - math.pi)
+    return pts, heading, th
+
+
 def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
     """Where the line through ``p`` along ``u`` meets the line through ``q`` along ``v`` (None when nearly parallel)."""
     cross = float(u[0] * v[1] - u[1] * v[0])
@@ -77,19 +95,16 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     turns at each."""
     if len(loop) < 8:
         return None
-    ring = np.vstack([loop, loop[:1]]) if float(np.hypot(*(loop[-1] - loop[0]))) > 0 else loop
-    pts = resample(ring, STEPS + 1)[:-1]
-    d = np.roll(pts, -1, axis=0) - pts
-    heading = np.arctan2(d[:, 1], d[:, 0])
-    th = np.degrees((np.roll(heading, -1) - heading + math.pi) % (2 * math.pi) - math.pi)  # turn at point k + 1
+    pts, heading, th = loop_turning(loop)
     total = float(np.abs(th).sum())
     found = _cyclic_bends(th)
-    corners = [b for b in found if (b.last - b.first) % STEPS < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG]
+    m = len(th)
+    corners = [b for b in found if (b.last - b.first) % m < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG]
     n = len(corners)
     if not FEWEST <= n <= MOST or total == 0.0 or len({b.degrees > 0 for b in corners}) != 1:
         return None
     turns = np.abs([b.degrees for b in corners])
-    spans = np.array([(b.last - b.first) % STEPS + 1 for b in corners])
+    spans = np.array([(b.last - b.first) % m + 1 for b in corners])
     if (float(turns.sum()) < AT_CORNERS * total or float(np.mean(np.abs(th) < STRAIGHT_STEP_DEG)) < STRAIGHT_SHARE
             or float(turns.min()) < LEAST_TURN * 360.0 / n or float(turns.max()) > MOST_TURN * 360.0 / n
             or int(spans.max()) > LONGEST_BEND * STEPS / n + 1
@@ -97,7 +112,7 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
         return None
     vertices = []
     for b in corners:
-        before, after = b.first % STEPS, (b.last + 1) % STEPS  # the steps into and out of the bend
+        before, after = b.first, (b.last + 1) % m  # the steps into and out of the bend
         u = np.array([math.cos(heading[before]), math.sin(heading[before])])
         v = np.array([math.cos(heading[after]), math.sin(heading[after])])
         at = _meet(pts[before], u, pts[after], v)
@@ -108,16 +123,25 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     if overlap(poly, loop) < COVERS:
         return None
     if drawn is not None:
-        middles = pts[[((b.first + (b.last - b.first) % STEPS // 2) + 1) % STEPS for b in corners]]
+        middles = pts[[((b.first + (b.last - b.first) % m // 2) + 1) % m for b in corners]]
         if not drawn_through(np.vstack([middles, middles[:1]]), drawn):
             return None
     return poly
 
 
-def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray) -> Recognition:
+OtherWay = Callable[[], tuple[bool, np.ndarray, object]]
+"""The stroke's loop as `closed_loops.closed_loop` finds it drawn from its other end (closed, loop, ellipse)."""
+
+
+def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray,
+                    other_way: OtherWay | None = None) -> Recognition:
     """``ranked`` (a circle or an ellipse, or a polygon of another number of vertices) read as the polygon of 3 or 5-8
     sides ``loop`` was drawn as with its corners rounded (`rounded_corners`); ``ranked`` otherwise (four corners are
-    a box's or a quad's, which `rounded_corners` and `rounded_boxes` judge)."""
+    a box's or a quad's, which `rounded_corners` and `rounded_boxes` judge). Where ``other_way`` is given, the loop cut
+    from the stroke drawn the other way round (its ends overlapping, the part kept is the other end's; the stroke left
+    open, ``loop`` reversed) must be that polygon too: a reading does not hang on where the pen started (issue 25,
+    session 33: a Quick, Draw! circle, tutorboard seed170731 #69, kept its landing hook as drawn and read round, and
+    read as a hexagon drawn from its other end). It is asked only where the reading would change."""
     if ranked.kind not in ("circle", "ellipse", "polygon"):
         return ranked
     vertices = rounded_corners(loop, raw)
@@ -125,5 +149,10 @@ def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray) -> R
         return ranked
     if isinstance(ranked.geometry, Polygon) and len(ranked.geometry.points) == len(vertices):
         return ranked
+    if other_way is not None:
+        closed, back, _ = other_way()
+        back_vertices = rounded_corners(back if closed else loop[::-1], raw)
+        if back_vertices is None or len(back_vertices) != len(vertices):
+            return ranked
     points = tuple((float(x), float(y)) for x, y in vertices)
     return Recognition("polygon", ranked.confidence, Polygon(points), ((str(ranked.kind), 1.0 - ranked.confidence),))
