@@ -50,6 +50,12 @@ COVERS = 0.88
 a corner rounded over up to a third of each side leaves out a few hundredths."""
 
 
+SEAM_POINTS = 2
+"""A bend turning against the loop's way at no more than this many points either side of its seam (`loop_turning`) is
+not a corner but a hook where the pen landed or lifted (its turning still counted in the loop's): a hand on a mouse
+drawing a pentagon from a sharp corner turned 20 degrees back before it (issue 25, session 33)."""
+
+
 def _cyclic_bends(th: np.ndarray) -> list[Bend]:
     """The bends of a closed loop's turning ``th`` (degrees, one a step, cyclic): runs of steps turning
     `BEND_STEP_DEG` or more the same way, their steps counted from the straightest step (which starts the scan)."""
@@ -94,18 +100,20 @@ def _split_run_together(corners: list[Bend], th: np.ndarray) -> list[Bend]:
 
 
 def loop_turning(loop: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """A closed loop resampled to `STEPS` points, the heading (radians) of each step but the one over its seam and the
-    turn at the end of each (degrees, cyclic: the last across the seam to the first). The seam is where the loop was
-    closed: the chord from its end back to its start, across however the pen landed and lifted (a hook, an overshoot
-    cut beside the first side). The points sit half a step either side of the chord's middle and on round, so one
-    step runs over the seam, the same drawn either way; it is left out, its turn falling whole between its neighbours:
-    its heading, at right angles to the path where the ends were cut side by side, made a zigzag of two bends turning
-    each way (issue 25, session 33: a Quick, Draw! octagon's -87 and +120 degrees; a triangle drawn from a corner,
-    its landing hook's 22 and -126), and the points placed from the loop's start fell otherwise drawn the other way."""
+    """A closed loop resampled to `STEPS` points, the heading (radians) of each step and the turn at the end of each
+    (degrees, cyclic). The points sit half a step either side of the middle of the loop's seam and on round, so one
+    step runs over the seam, the same drawn either way. The seam is where the loop was closed: the chord from its end
+    back to its start, across however the pen landed and lifted (a hook, an overshoot cut beside the first side); that
+    step is given the heading halfway between its neighbours', the turn over the seam shared evenly between its two
+    ends. Its own heading, at right angles to the path where the ends were cut side by side, made a zigzag of two bends
+    turning each way (issue 25, session 33: a Quick, Draw! octagon's -87 and +120 degrees; a triangle drawn from a
+    corner, its landing hook's 22 and -126), and points placed from the loop's start fell otherwise drawn the other
+    way."""
     seam = (loop[0] + loop[-1]) / 2
     pts = resample(np.vstack([seam, loop, seam]), 2 * STEPS + 1)[1::2]
-    d = pts[1:] - pts[:-1]
+    d = np.roll(pts, -1, axis=0) - pts
     heading = np.arctan2(d[:, 1], d[:, 0])
+    heading[-1] = heading[-2] + ((heading[0] - heading[-2] + math.pi) % (2 * math.pi) - math.pi) / 2
     th = np.degrees((np.roll(heading, -1) - heading + math.pi) % (2 * math.pi) - math.pi)
     return pts, heading, th
 
@@ -133,8 +141,11 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     total = float(np.abs(th).sum())
     found = _cyclic_bends(th)
     m = len(th)
+    way = float(th.sum()) > 0
+    seam = {(m - 1 + j) % m for j in range(-SEAM_POINTS, SEAM_POINTS)}  # the turns at the points either side of it
     corners = _split_run_together(
-        [b for b in found if (b.last - b.first) % m < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG], th)
+        [b for b in found if (b.last - b.first) % m < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG
+         and not ((b.degrees > 0) != way and {b.first, b.last} <= seam)], th)
     n = len(corners)
     if not FEWEST <= n <= MOST or total == 0.0 or len({b.degrees > 0 for b in corners}) != 1:
         return None
