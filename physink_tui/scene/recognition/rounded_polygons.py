@@ -43,8 +43,20 @@ them was rounded away) are not one corner of a polygon of fewer sides."""
 LONGEST_BEND = 0.8
 """A bend is a corner when it runs over at most this share of a regular polygon's side of as many corners (plus a
 step), and over at most `LONGEST_STEPS`: a hand rounds a corner over up to a third or so of each side meeting there
-(a triangle's over up to 9 steps of 40, an octagon's 4); a round shape's turning runs on round it."""
+(a triangle's over up to 9 steps of 40, an octagon's 4); a round shape's turning runs on round it. The bend's run
+is counted from its first step to its last turning `shape_corners.STRAIGHT_STEP_DEG` or more (`_core_span`): where a
+rounded corner leaves the sides, a step turning 4-6 degrees falls in it or not as the points fall (issue 25, session
+33: a heptagon's corner rounded wide, 5, 13, 15, 15, 13, 6, was 6 steps one way and 5 the other)."""
 LONGEST_STEPS = 9
+
+
+def _core_span(b: Bend, th: np.ndarray) -> int:
+    """How many steps the bend ``b`` of the cyclic turning ``th`` runs over between its first and last turning
+    `shape_corners.STRAIGHT_STEP_DEG` or more (one where none does)."""
+    m = len(th)
+    steps = np.abs(th[(b.first + np.arange((b.last - b.first) % m + 1)) % m]) >= STRAIGHT_STEP_DEG
+    core = np.flatnonzero(steps)
+    return int(core[-1] - core[0] + 1) if len(core) else 1
 COVERS = 0.88
 """...and the polygon where the straight runs' lines meet covers the loop this well (intersection over union) or better:
 a corner rounded over up to a third of each side leaves out a few hundredths."""
@@ -150,7 +162,7 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     if not FEWEST <= n <= MOST or total == 0.0 or len({b.degrees > 0 for b in corners}) != 1:
         return None
     turns = np.abs([b.degrees for b in corners])
-    spans = np.array([(b.last - b.first) % m + 1 for b in corners])
+    spans = np.array([_core_span(b, th) for b in corners])
     if (float(turns.sum()) < AT_CORNERS * total or float(np.mean(np.abs(th) < STRAIGHT_STEP_DEG)) < STRAIGHT_SHARE
             or float(turns.min()) < LEAST_TURN * 360.0 / n or float(turns.max()) > MOST_TURN * 360.0 / n
             or int(spans.max()) > LONGEST_BEND * STEPS / n + 1
