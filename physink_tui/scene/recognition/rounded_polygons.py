@@ -77,40 +77,6 @@ def _cyclic_bends(th: np.ndarray) -> list[Bend]:
             for b in bend_runs(np.roll(th, -start).tolist(), BEND_STEP_DEG)]
 
 
-TWO_CORNERS = 1.6
-"""A bend turning this many times the corners' middle turn or more, over `TWO_CORNERS_STEPS` steps or more, whose turn
-is half done within a step of its middle step, is two corners alike run together (an octagon's two, the short side
-between them rounded away): it is split there, the step where half is done shared between the two (issue 25, session
-33: a Quick, Draw! octagon's 103 degrees over seven steps among corners of 30-77 made it a heptagon one way and round
-the other; the pen models' octagons read with 7 sides). A corner with a long shallow run after it (a lumpy circle's 40
-degrees at a step, then 6 a step) is half done at its first steps, and stays one."""
-TWO_CORNERS_STEPS = 4
-
-
-def _split_run_together(corners: list[Bend], th: np.ndarray) -> list[Bend]:
-    """``corners`` with each that is two run together (`TWO_CORNERS`) split in two where half its turn is done."""
-    if len(corners) < FEWEST:
-        return corners
-    middle = float(np.median(np.abs([b.degrees for b in corners])))
-    m = len(th)
-    out = []
-    for b in corners:
-        span = (b.last - b.first) % m + 1
-        if span < TWO_CORNERS_STEPS or abs(b.degrees) < TWO_CORNERS * middle:
-            out.append(b)
-            continue
-        steps = th[(b.first + np.arange(span)) % m]
-        done = np.cumsum(np.abs(steps))
-        half = int(np.searchsorted(done, abs(b.degrees) / 2))  # the step where half the turn is done
-        if abs(half - (span - 1) / 2) > 1 or not 0 < half < span - 1:
-            out.append(b)
-            continue
-        shared = float(steps[half]) / 2
-        out += [Bend(b.first, (b.first + half) % m, float(steps[:half].sum()) + shared),
-                Bend((b.first + half) % m, b.last, shared + float(steps[half + 1:].sum()))]
-    return out
-
-
 def loop_turning(loop: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """A closed loop resampled to `STEPS` points, the heading (radians) of each step and the turn at the end of each
     (degrees, cyclic). The points sit half a step either side of the middle of the loop's seam and on round, so one
@@ -155,9 +121,8 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     m = len(th)
     way = float(th.sum()) > 0
     seam = {(m - 1 + j) % m for j in range(-SEAM_POINTS, SEAM_POINTS)}  # the turns at the points either side of it
-    corners = _split_run_together(
-        [b for b in found if (b.last - b.first) % m < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG
-         and not ((b.degrees > 0) != way and {b.first, b.last} <= seam)], th)
+    corners = [b for b in found if (b.last - b.first) % m < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG
+               and not ((b.degrees > 0) != way and {b.first, b.last} <= seam)]
     n = len(corners)
     if not FEWEST <= n <= MOST or total == 0.0 or len({b.degrees > 0 for b in corners}) != 1:
         return None
