@@ -153,6 +153,13 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     return poly
 
 
+FEWER_KEPT_FROM = 5
+"""A polygon read with two or more vertices more than the rounded corners found keeps its vertices where those are this
+many or more: the bends ran two corners together, or missed a shallow one (issue 25, session 33: an octagon drawn
+through a coarse device, two corners turning 33 and 24 degrees run together over four steps of under 5, read as a
+hexagon); a triangle's rounded corners, on which a polygon fit spends a vertex at each end, are still read as three."""
+
+
 OtherWay = Callable[[], tuple[bool, np.ndarray, object]]
 """The stroke's loop as `closed_loops.closed_loop` finds it drawn from its other end (closed, loop, ellipse)."""
 
@@ -171,7 +178,8 @@ def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray,
     vertices = rounded_corners(loop, raw)
     if vertices is None or len(vertices) == 4:
         return ranked
-    if isinstance(ranked.geometry, Polygon) and len(ranked.geometry.points) == len(vertices):
+    if isinstance(ranked.geometry, Polygon) and (len(ranked.geometry.points) == len(vertices) or (
+            len(vertices) >= FEWER_KEPT_FROM and len(ranked.geometry.points) >= len(vertices) + 2)):
         return ranked
     if other_way is not None:
         closed, back, _ = other_way()
