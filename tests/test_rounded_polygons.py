@@ -12,10 +12,16 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
+from penmodels.rounded_polygons import FAMILIES
+from test_open_marks import cached_rows
+
+from physink_tui.scene.recognition.rounded_polygons import rounded_corners
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_open_marks import PENS, TUNING_SEEDS
+from bench_reversed import readings
 from bench_rounded_polygons import reading, right
 
 TUNING_FLOORS = {
@@ -44,3 +50,27 @@ hexagon 60, 56, 60, 52; one-rounded-heptagon 56, 48, 48, 24; one-rounded-octagon
 def test_a_polygon_with_rounded_corners_reads_as_drawn(family: str, pen: str) -> None:
     got = [reading(family, pen, seed, timed) for seed in TUNING_SEEDS for timed in (True, False)]
     assert sum(right(family, g) for g in got) >= TUNING_FLOORS[family][pen], got
+
+
+QUICKDRAW = "public-sets/quickdraw.jsonl"
+ROUND_EITHER_WAY = ["ArtemLevin/tutorboard@3b27669:tests/fixtures/smart-ink-corpus/external-v2/"
+                    "holdout.seed-170731.json.gz#69"]
+"""A Quick, Draw! circle (the fourth group, open design material) whose stroke runs on past its start beside its landing
+hook: cut from its start it kept the hook and read round, cut from its end it read as a hexagon until session 33
+(`rounded_polygons.polygon_rounded` asks the loop cut from either end)."""
+
+
+@pytest.mark.parametrize("file", ROUND_EITHER_WAY, ids=[f.rsplit("/", 1)[-1] for f in ROUND_EITHER_WAY])
+def test_a_persons_circle_is_round_drawn_from_either_end(file: str) -> None:
+    row = cached_rows(QUICKDRAW).get(file)
+    assert row is not None, file
+    assert readings(row) == ("circle", "circle")
+
+
+def test_a_rounded_outline_finds_as_many_corners_from_either_end() -> None:
+    """`rounded_corners` of a loop and of the same loop reversed find the same number of corners (or none)."""
+    for family in FAMILIES:
+        for seed in TUNING_SEEDS:
+            loop = np.array(FAMILIES[family](seed).points)
+            ahead, back = rounded_corners(loop), rounded_corners(loop[::-1])
+            assert (None if ahead is None else len(ahead)) == (None if back is None else len(back)), (family, seed)

@@ -4,6 +4,7 @@ a hand rounded: its turning gathered at short bends, evenly shared among them, w
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -42,11 +43,29 @@ them was rounded away) are not one corner of a polygon of fewer sides."""
 LONGEST_BEND = 0.8
 """A bend is a corner when it runs over at most this share of a regular polygon's side of as many corners (plus a
 step), and over at most `LONGEST_STEPS`: a hand rounds a corner over up to a third or so of each side meeting there
-(a triangle's over up to 9 steps of 40, an octagon's 4); a round shape's turning runs on round it."""
+(a triangle's over up to 9 steps of 40, an octagon's 4); a round shape's turning runs on round it. The bend's run
+is counted from its first step to its last turning `shape_corners.STRAIGHT_STEP_DEG` or more (`_core_span`): where a
+rounded corner leaves the sides, a step turning 4-6 degrees falls in it or not as the points fall (issue 25, session
+33: a heptagon's corner rounded wide, 5, 13, 15, 15, 13, 6, was 6 steps one way and 5 the other)."""
 LONGEST_STEPS = 9
+
+
+def _core_span(b: Bend, th: np.ndarray) -> int:
+    """How many steps the bend ``b`` of the cyclic turning ``th`` runs over between its first and last turning
+    `shape_corners.STRAIGHT_STEP_DEG` or more (one where none does)."""
+    m = len(th)
+    steps = np.abs(th[(b.first + np.arange((b.last - b.first) % m + 1)) % m]) >= STRAIGHT_STEP_DEG
+    core = np.flatnonzero(steps)
+    return int(core[-1] - core[0] + 1) if len(core) else 1
 COVERS = 0.88
 """...and the polygon where the straight runs' lines meet covers the loop this well (intersection over union) or better:
 a corner rounded over up to a third of each side leaves out a few hundredths."""
+
+
+SEAM_POINTS = 2
+"""A bend turning against the loop's way at no more than this many points either side of its seam (`loop_turning`) is
+not a corner but a hook where the pen landed or lifted (its turning still counted in the loop's): a hand on a mouse
+drawing a pentagon from a sharp corner turned 20 degrees back before it (issue 25, session 33)."""
 
 
 def _cyclic_bends(th: np.ndarray) -> list[Bend]:
@@ -56,6 +75,25 @@ def _cyclic_bends(th: np.ndarray) -> list[Bend]:
     n = len(th)
     return [Bend((b.first + start) % n, (b.last + start) % n, b.degrees)
             for b in bend_runs(np.roll(th, -start).tolist(), BEND_STEP_DEG)]
+
+
+def loop_turning(loop: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A closed loop resampled to `STEPS` points, the heading (radians) of each step and the turn at the end of each
+    (degrees, cyclic). The points sit half a step either side of the middle of the loop's seam and on round, so one
+    step runs over the seam, the same drawn either way. The seam is where the loop was closed: the chord from its end
+    back to its start, across however the pen landed and lifted (a hook, an overshoot cut beside the first side); that
+    step is given the heading halfway between its neighbours', the turn over the seam shared evenly between its two
+    ends. Its own heading, at right angles to the path where the ends were cut side by side, made a zigzag of two bends
+    turning each way (issue 25, session 33: a Quick, Draw! octagon's -87 and +120 degrees; a triangle drawn from a
+    corner, its landing hook's 22 and -126), and points placed from the loop's start fell otherwise drawn the other
+    way."""
+    seam = (loop[0] + loop[-1]) / 2
+    pts = resample(np.vstack([seam, loop, seam]), 2 * STEPS + 1)[1::2]
+    d = np.roll(pts, -1, axis=0) - pts
+    heading = np.arctan2(d[:, 1], d[:, 0])
+    heading[-1] = heading[-2] + ((heading[0] - heading[-2] + math.pi) % (2 * math.pi) - math.pi) / 2
+    th = np.degrees((np.roll(heading, -1) - heading + math.pi) % (2 * math.pi) - math.pi)
+    return pts, heading, th
 
 
 def _meet(p: np.ndarray, u: np.ndarray, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
@@ -77,19 +115,19 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     turns at each."""
     if len(loop) < 8:
         return None
-    ring = np.vstack([loop, loop[:1]]) if float(np.hypot(*(loop[-1] - loop[0]))) > 0 else loop
-    pts = resample(ring, STEPS + 1)[:-1]
-    d = np.roll(pts, -1, axis=0) - pts
-    heading = np.arctan2(d[:, 1], d[:, 0])
-    th = np.degrees((np.roll(heading, -1) - heading + math.pi) % (2 * math.pi) - math.pi)  # turn at point k + 1
+    pts, heading, th = loop_turning(loop)
     total = float(np.abs(th).sum())
     found = _cyclic_bends(th)
-    corners = [b for b in found if (b.last - b.first) % STEPS < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG]
+    m = len(th)
+    way = float(th.sum()) > 0
+    seam = {(m - 1 + j) % m for j in range(-SEAM_POINTS, SEAM_POINTS)}  # the turns at the points either side of it
+    corners = [b for b in found if (b.last - b.first) % m < LONGEST_STEPS and abs(b.degrees) >= CORNER_LEAST_DEG
+               and not ((b.degrees > 0) != way and {b.first, b.last} <= seam)]
     n = len(corners)
     if not FEWEST <= n <= MOST or total == 0.0 or len({b.degrees > 0 for b in corners}) != 1:
         return None
     turns = np.abs([b.degrees for b in corners])
-    spans = np.array([(b.last - b.first) % STEPS + 1 for b in corners])
+    spans = np.array([_core_span(b, th) for b in corners])
     if (float(turns.sum()) < AT_CORNERS * total or float(np.mean(np.abs(th) < STRAIGHT_STEP_DEG)) < STRAIGHT_SHARE
             or float(turns.min()) < LEAST_TURN * 360.0 / n or float(turns.max()) > MOST_TURN * 360.0 / n
             or int(spans.max()) > LONGEST_BEND * STEPS / n + 1
@@ -97,7 +135,7 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
         return None
     vertices = []
     for b in corners:
-        before, after = b.first % STEPS, (b.last + 1) % STEPS  # the steps into and out of the bend
+        before, after = b.first, (b.last + 1) % m  # the steps into and out of the bend
         u = np.array([math.cos(heading[before]), math.sin(heading[before])])
         v = np.array([math.cos(heading[after]), math.sin(heading[after])])
         at = _meet(pts[before], u, pts[after], v)
@@ -108,22 +146,45 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     if overlap(poly, loop) < COVERS:
         return None
     if drawn is not None:
-        middles = pts[[((b.first + (b.last - b.first) % STEPS // 2) + 1) % STEPS for b in corners]]
+        middles = np.array([(pts[(b.first + 1 + (b.last - b.first) % m // 2) % m]
+                             + pts[(b.first + 1 + ((b.last - b.first) % m + 1) // 2) % m]) / 2 for b in corners])
         if not drawn_through(np.vstack([middles, middles[:1]]), drawn):
             return None
     return poly
 
 
-def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray) -> Recognition:
+FEWER_KEPT_FROM = 5
+"""A polygon read with two or more vertices more than the rounded corners found keeps its vertices where those are this
+many or more: the bends ran two corners together, or missed a shallow one (issue 25, session 33: an octagon drawn
+through a coarse device, two corners turning 33 and 24 degrees run together over four steps of under 5, read as a
+hexagon); a triangle's rounded corners, on which a polygon fit spends a vertex at each end, are still read as three."""
+
+
+OtherWay = Callable[[], tuple[bool, np.ndarray, object]]
+"""The stroke's loop as `closed_loops.closed_loop` finds it drawn from its other end (closed, loop, ellipse)."""
+
+
+def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray,
+                    other_way: OtherWay | None = None) -> Recognition:
     """``ranked`` (a circle or an ellipse, or a polygon of another number of vertices) read as the polygon of 3 or 5-8
     sides ``loop`` was drawn as with its corners rounded (`rounded_corners`); ``ranked`` otherwise (four corners are
-    a box's or a quad's, which `rounded_corners` and `rounded_boxes` judge)."""
+    a box's or a quad's, which `rounded_corners` and `rounded_boxes` judge). Where ``other_way`` is given, the loop cut
+    from the stroke drawn the other way round (its ends overlapping, the part kept is the other end's; the stroke left
+    open, ``loop`` reversed) must be that polygon too: a reading does not hang on where the pen started (issue 25,
+    session 33: a Quick, Draw! circle, tutorboard seed170731 #69, kept its landing hook as drawn and read round, and
+    read as a hexagon drawn from its other end). It is asked only where the reading would change."""
     if ranked.kind not in ("circle", "ellipse", "polygon"):
         return ranked
     vertices = rounded_corners(loop, raw)
     if vertices is None or len(vertices) == 4:
         return ranked
-    if isinstance(ranked.geometry, Polygon) and len(ranked.geometry.points) == len(vertices):
+    if isinstance(ranked.geometry, Polygon) and (len(ranked.geometry.points) == len(vertices) or (
+            len(vertices) >= FEWER_KEPT_FROM and len(ranked.geometry.points) >= len(vertices) + 2)):
         return ranked
+    if other_way is not None:
+        closed, back, _ = other_way()
+        back_vertices = rounded_corners(back if closed else loop[::-1], raw)
+        if back_vertices is None or len(back_vertices) != len(vertices):
+            return ranked
     points = tuple((float(x), float(y)) for x, y in vertices)
     return Recognition("polygon", ranked.confidence, Polygon(points), ((str(ranked.kind), 1.0 - ranked.confidence),))
