@@ -74,3 +74,20 @@ def test_a_rounded_outline_finds_as_many_corners_from_either_end() -> None:
             loop = np.array(FAMILIES[family](seed).points)
             ahead, back = rounded_corners(loop), rounded_corners(loop[::-1])
             assert (None if ahead is None else len(ahead)) == (None if back is None else len(back)), (family, seed)
+
+
+LOST_AS_DRAWN = ["borismus/exupery@5ab788c:docs/sketches/octagon.ndjson#6527614988582912"]
+"""A Quick, Draw! octagon (the fourth group) with two corners run together into one wide bend: until session 33 it read
+as a heptagon as drawn, only because the chord across its loop's seam split that bend, and as an ellipse reversed.
+Read alike from either end (`rounded_polygons` centres its points on the seam), it is an ellipse both ways; splitting a
+wide bend in two would get it back but read two people's circles as polygons (ahmadosama Circle #102, hcira
+jonathanzhang53/s02 circle6)."""
+
+
+@pytest.mark.xfail(strict=True, reason="two corners run together into one wide bend: a split would turn people's "
+                   "circles into polygons (session 33, wt-ends)")
+@pytest.mark.parametrize("file", LOST_AS_DRAWN, ids=[f.rsplit("#", 1)[-1] for f in LOST_AS_DRAWN])
+def test_an_octagon_with_two_corners_run_together_reads_as_a_polygon(file: str) -> None:
+    row = cached_rows(QUICKDRAW).get(file)
+    assert row is not None, file
+    assert readings(row)[0] == "polygon"
