@@ -31,10 +31,13 @@ OCTAGONS = [f"borismus/exupery@5ab788c:docs/sketches/octagon.ndjson#{key}" for k
     "5457314486157312", "6592987075182592")]
 """Quick, Draw! players' closed octagons read as circles or ellipses at main 2996772, with their times or without, that
 the pace at their corners makes polygons (7 of the 11 closed ones read round)."""
-SHAPE_DECIDES = {"6128029719855104", "5457314486157312"}
+SHAPE_DECIDES = {"6128029719855104", "5457314486157312", "5772307656081408", "6592987075182592"}
 """Of those, the octagons whose polygon explains nine tenths of the round shape's error with seven in ten of its
 corners sharp (`round_or_cornered.mostly_sharp`, session 23): read as polygons by their shape alone, at an even pace
-and without times too (at main 6b543d7 they were read round so)."""
+and without times too (at main 6b543d7 they were read round so); and, from session 33, the two whose rounded corners
+`rounded_polygons` finds once it reads a loop alike from either end (its points centred on the loop's seam): polygons
+at an even pace and untimed too, though with 6 and 7 sides where their pace finds 8 and 7 (two corners run together
+into one bend; left for the next pass)."""
 
 
 def _stroke(row: dict) -> tuple[list[list[float]], list[float] | None]:
