@@ -167,16 +167,10 @@ def many_sided_left_open(work: np.ndarray, length: float) -> bool:
     corners = sf.drop_end_stubs(work, sg.find_corners(work, MANY_SIDED_TURN_DEG, every_dip=True), length)
     if len(corners) - 2 < LEFT_OPEN_CORNERS:
         return False
-    bows = [sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
-    if max(bows[1:-1]) >= open_shapes.STRAIGHT or max(bows[0], bows[-1]) >= LAST_SIDE_BOW:
+    sides = sf.closing_sides(work, corners, open_shapes.STRAIGHT, LAST_SIDE_BOW, LEFT_OPEN_GAP)
+    if sides is None:
         return False
-    ring = np.vstack([work[corners], work[corners[:1]]])
-    sides = np.diff(ring, axis=0)
-    lengths = np.hypot(*sides.T)
-    if not lengths[:-1].max() > 0 or lengths[-1] > LEFT_OPEN_GAP * lengths[:-1].max():
-        return False
-    heading = np.arctan2(sides[:, 1], sides[:, 0])
-    turns = (np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi
+    turns = sf.ring_turns(sides)
     if not ((turns > 0).all() or (turns < 0).all()) or abs(abs(float(turns.sum())) - 2 * math.pi) > 0.1:
         return False
     roundness = np.asarray(sf.corner_roundness(work, corners))

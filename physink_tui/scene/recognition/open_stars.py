@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import itertools
 import math
 from collections.abc import Sequence
 
@@ -35,12 +34,6 @@ POINT_DEG = 80.0
 hand's widest, 100-110; tutorboard seed260730 #102's 122-142), its point no wider than 100 degrees."""
 
 
-def _turns(sides: np.ndarray) -> np.ndarray:
-    """The turn (radians, signed) at the start of each of a closed ring's ``sides``' successors: at corner k + 1."""
-    heading = np.arctan2(sides[:, 1], sides[:, 0])
-    return np.asarray((np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi)
-
-
 def star_outline(corners: Sequence[Sequence[float]]) -> bool:
     """Whether a polygon's ``corners`` (in order round it) are a star's: turning once round, out at `STAR_POINTS`
     points or more (each `POINT_DEG` or more) and in at the dents between (less: `DENT_SHARE`), in turn all round but
@@ -49,7 +42,7 @@ def star_outline(corners: Sequence[Sequence[float]]) -> bool:
     ring = np.asarray(corners, dtype=float)
     if len(ring) < 2 * STAR_POINTS - 1:
         return False
-    turns = _turns(np.diff(np.vstack([ring, ring[:1]]), axis=0))
+    turns = sf.ring_turns(np.diff(np.vstack([ring, ring[:1]]), axis=0))
     total = float(turns.sum())
     if abs(abs(total) - 2 * math.pi) > 0.1:
         return False
@@ -81,15 +74,10 @@ def _star_chain(work: np.ndarray, corners: list[int]) -> bool:
     lie at an end or in the gap: the ends' turns, into and out of the gap, are not asked)."""
     if len(corners) < 2 * STAR_POINTS:
         return False
-    bows = [sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
-    if max(bows[1:-1]) >= open_shapes.STRAIGHT or max(bows[0], bows[-1]) >= END_BOW:
+    sides = sf.closing_sides(work, corners, open_shapes.STRAIGHT, END_BOW, GAP_SIDES)
+    if sides is None:
         return False
-    ring = np.vstack([work[corners], work[corners[:1]]])
-    sides = np.diff(ring, axis=0)
-    lengths = np.hypot(sides[:, 0], sides[:, 1])
-    if not lengths[:-1].max() > 0 or lengths[-1] > GAP_SIDES * lengths[:-1].max():
-        return False
-    turns = _turns(sides)
+    turns = sf.ring_turns(sides)
     total = float(turns.sum())
     if abs(abs(total) - 2 * math.pi) > 0.1:
         return False

@@ -261,3 +261,26 @@ def _signed_area(v: np.ndarray) -> float:
 def _hull_area(v: np.ndarray) -> float:
     """Area of the convex hull (0 for fewer than three points or points in a line)."""
     return float(MultiPoint(v).convex_hull.area)
+
+
+def closing_sides(work: np.ndarray, corners: list[int], straight: float, end_bow: float,
+                  gap_sides: float) -> np.ndarray | None:
+    """The sides of the outline ``work`` draws between its ``corners`` (indices, its ends among them), closed through
+    the gap between its ends (the last side), or None: unless every side drawn is straight (bowed under ``straight``
+    of its chord, the first and last under ``end_bow``: the hand swings as it lands and lifts) and the gap is at most
+    ``gap_sides`` of the longest side drawn."""
+    bows = [sg.chord_deviation(work[a:b + 1]) for a, b in itertools.pairwise(corners)]
+    if max(bows[1:-1]) >= straight or max(bows[0], bows[-1]) >= end_bow:
+        return None
+    ring = np.vstack([work[corners], work[corners[:1]]])
+    sides = np.diff(ring, axis=0)
+    lengths = np.hypot(sides[:, 0], sides[:, 1])
+    if not lengths[:-1].max() > 0 or lengths[-1] > gap_sides * lengths[:-1].max():
+        return None
+    return sides
+
+
+def ring_turns(sides: np.ndarray) -> np.ndarray:
+    """The turn (radians, signed) at the start of each of a closed ring's ``sides``' successors: at corner k + 1."""
+    heading = np.arctan2(sides[:, 1], sides[:, 0])
+    return np.asarray((np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi)
