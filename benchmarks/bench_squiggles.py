@@ -1,6 +1,7 @@
 """Benchmark: squiggles drawn smoothly (an S of two round bends, round humps) read as curves, and zig-zags whose
 points are rounded read as polylines (`tests/penmodels/squiggles`), drawn by the pen models of `bench_open_marks`; a
-line with curls in it read as a curve and a spring drawn as a coil as a helix (session 33).
+line with curls in it read as a curve and a spring drawn as a coil as a helix (session 33), and a line with two curls
+in it as a curve (session 34).
 
 Usage: .venv/bin/python benchmarks/bench_squiggles.py [--seeds tune|held|all] [--rules] [--family NAME]
 

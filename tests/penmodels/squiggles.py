@@ -20,6 +20,10 @@ and, read as a polyline (what it must not take in):
   the ends; 200-500 px across. Read as a curve: a line with curls is no spring (`beautify.UNEVEN_PITCH`); curls that
   happen to fall evenly are read as a helix, as a spring's loops;
 
+- ``two-curls`` (session 34): a line with 2 curls drawn in it (tutorboard seed260730 #20, #32: an m whose dips
+  curl, a line with a curl and a hump), drawn as ``curly-line``'s, the run between them 1-4 radii. Read as a curve: of
+  two loops one pitch is seen, nothing to tell a spring by (`beautify.MIN_PITCHES`);
+
 and, read as a helix (what it must not take in):
 
 - ``coil``: a spring drawn as one coil, 3-6 loops of radius 0.5-1.0 of the pitch, pitch and radius uneven by up to a
@@ -40,7 +44,8 @@ from collections.abc import Callable
 from penmodels.open_marks import Mark, _arc, _placed
 
 Point = tuple[float, float]
-EXPECTED = {"round-s": "curve", "round-peaked-zigzag": "polyline", "curly-line": "curve", "coil": "helix"}
+EXPECTED = {"round-s": "curve", "round-peaked-zigzag": "polyline", "curly-line": "curve", "coil": "helix",
+            "two-curls": "curve"}
 """The kind each family is read as: a squiggle is a curve (benchmarks/label_kinds.tsv), a zig-zag a polyline, a
 spring a helix."""
 
@@ -159,6 +164,17 @@ def curly_line(seed: int) -> Mark:
                 True)
 
 
+def two_curls(seed: int) -> Mark:
+    """A line with 2 curls drawn in it (module docstring)."""
+    rng = random.Random(f"two-curls:{seed}")
+    radii = [rng.uniform(0.75, 1.25) for _ in range(2)]
+    advances = [r * rng.uniform(0.3, 0.8) for r in radii]
+    gap = rng.uniform(1.0, 4.0)
+    leads = (gap * rng.uniform(0.3, 1.5), gap * rng.uniform(0.3, 1.5))
+    return Mark("two-curls", _placed(rng, _scaled(rng, _loops(rng, radii, advances, [gap], leads), 150, 450), False),
+                True)
+
+
 def coil(seed: int) -> Mark:
     """A spring drawn as one coil: 3-6 loops following each other evenly (module docstring)."""
     rng = random.Random(f"coil:{seed}")
@@ -173,4 +189,4 @@ def coil(seed: int) -> Mark:
 
 
 FAMILIES: dict[str, Callable[[int], Mark]] = {"round-s": round_s, "round-peaked-zigzag": round_peaked_zigzag,
-                                              "curly-line": curly_line, "coil": coil}
+                                              "curly-line": curly_line, "coil": coil, "two-curls": two_curls}

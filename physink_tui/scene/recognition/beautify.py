@@ -96,10 +96,19 @@ tutorboard seed260730 #4 and #41 vary by 0.61-0.74, seed90210 #379 and seed17073
 two ends), an hcira star gone round twice by 1.39; the generated springs (`tests/strokegen` helix, 200 seeds: loop
 size and pitch uneven by up to a tenth) by 0.21 at most, `tests/penmodels/squiggles`' coils by 0.16, people's coils
 (quickdraw 5544426287923200, seed90210 #324, #350, #390) by 0.10-0.23 (session 33)."""
+MIN_PITCHES = 2
+"""A spring shows at least this many pitches (three loops where the pen runs back along its axis) so that their
+evenness (`UNEVEN_PITCH`) can be asked: of two loops there is one pitch, nothing to tell a spring from two curls a
+hand made in a line. People's two-loop "helices" were Quick, Draw! players' squiggles (tutorboard seed260730 #20: an m
+with its dips curled; #32: a line with a small curl and a hump) and two of tutorboard's negatives (seed90210 #338,
+#340); people's coils turn 3.1 turns or more. Every spring the project generates or models has three loops or more
+(`tests/strokegen` helix 3-10, `tests/penmodels/squiggles`' coils 3-6, the hand-made springs 3 and 5), but a generated
+spring whose end loops are part-loops may turn only 2.2-2.5 times once its hooks are cut, showing one pitch: 2 of 400
+(`strokegen` helix seeds 0-199 any loops, 0-199 three loops) read as curves since (session 34)."""
 
 
 def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Helix | None:
-    """A spring: at least two loops turning the same way whose centres advance along an axis."""
+    """A spring: loops turning one way whose centres advance evenly along an axis (three or more, `MIN_PITCHES`)."""
     turns = abs(total_turn) / (2 * math.pi)
     if turns < 1.8 or abs(total_turn) < 0.7 * abs_turn:
         return None
@@ -128,7 +137,9 @@ def helix_geometry(work: np.ndarray, total_turn: float, abs_turn: float) -> Heli
     # each loop where the pen runs back along the axis, half a turn into it: a spring's follow at its pitch
     backs = np.searchsorted(np.maximum.accumulate(rel), math.pi + 2 * math.pi * np.arange(int(turns + 0.5)))
     pitches = np.diff(work[1:][backs[backs < len(rel)]] @ unit)
-    if len(pitches) >= 2 and float(np.std(pitches)) > UNEVEN_PITCH * float(np.mean(pitches)):
+    if len(pitches) < MIN_PITCHES:
+        return None  # two curls in a line (a squiggle), not a spring: its evenness unseen (`MIN_PITCHES`)
+    if float(np.std(pitches)) > UNEVEN_PITCH * float(np.mean(pitches)):
         return None  # loops bunched and spread where the hand curled (a curly line), a spring's follow evenly
     # the spring reaches as far along its axis as the stroke does (its end loops' centres fall short of them)
     reach = (work - centres[0]) @ unit
