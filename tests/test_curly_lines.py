@@ -88,10 +88,13 @@ CURLY = {
 """People's strokes read as helices on main 9b6f4da whose loops bunch and spread: tutorboard seed260730's squiggles #4
 (two loops and a wide arc) and #41 (curls down the page), an hcira star gone round twice, a brace whose point is a
 spike scribbled over."""
-TWO_CURLS = [TUTORBOARD + "external-v3/negative-holdout.seed-260730.json.gz#20",
-             TUTORBOARD + "external-v3/negative-holdout.seed-260730.json.gz#32"]
-"""People's squiggles read as helices on main 85a9ce3 that curl twice: an m whose two dips curl (#20, 1.98 turns) and a
-line with a small curl and a hump (#32, 2.1 turns); curves, as labelled."""
+TWO_CURLS = [("public-sets/quickdraw.jsonl", TUTORBOARD + "external-v3/negative-holdout.seed-260730.json.gz#20"),
+             ("public-sets/quickdraw.jsonl", TUTORBOARD + "external-v3/negative-holdout.seed-260730.json.gz#32"),
+             ("public-sets/hcira.jsonl",
+              "jonathanzhang53/gesture-recognizer@8f30851:user_gestures/s02/left_curly_brace9.xml")]
+"""People's strokes read as helices on main 85a9ce3 that curl about twice: Quick, Draw! squiggles, an m whose two dips
+curl (#20, 1.98 turns) and a line with a small curl and a hump (#32, 2.1 turns), and a brace whose point is a spike
+scribbled over; curves, as labelled."""
 COILS = ["borismus/exupery@5ab788c:docs/sketches/squiggle.ndjson#5544426287923200",
          TUTORBOARD + "external/quickdraw.seed-90210.json.gz#324",
          TUTORBOARD + "external/quickdraw.seed-90210.json.gz#350"]
@@ -120,9 +123,9 @@ def test_a_persons_coil_stays_a_helix(file: str) -> None:
     assert recognize_stroke(*_stroke(row)).kind == "helix"
 
 
-@pytest.mark.parametrize("file", TWO_CURLS, ids=[f.rsplit("/", 1)[-1] for f in TWO_CURLS])
-def test_a_persons_squiggle_with_two_curls_is_a_curve(file: str) -> None:
-    row = cached_rows("public-sets/quickdraw.jsonl").get(file)
-    assert row is not None, f"{file} is not in the quickdraw set"
+@pytest.mark.parametrize(("name", "file"), TWO_CURLS, ids=[f.rsplit("/", 1)[-1] for _, f in TWO_CURLS])
+def test_a_persons_stroke_curled_twice_is_a_curve(name: str, file: str) -> None:
+    row = cached_rows(name).get(file)
+    assert row is not None, f"{file} is not in {name}"
     assert "curve" in read_table().accepts(row["source"], row["label"])
     assert recognize_stroke(*_stroke(row)).kind == "curve"
