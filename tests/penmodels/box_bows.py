@@ -12,6 +12,11 @@ bow is not cut where the stroke starts):
 - ``bowed-in``: the same, bowed into the box;
 - ``bow-swung``: the side bowed out by 6-16 % and both its corners swung round (a radius 0.15-0.3 of the shorter side)
   in the same sweep: the box drawn as a D on one side (quickdraw BG #4526069946253312, tutorboard seed90210 #221);
+- ``side-swept``: the side and both its corners drawn as one round sweep (half an ellipse, fuller or flatter:
+  ``sin(pi t) ** q``, q 0.5-0.8) from the wall before it to the wall after it, the walls stopping 0.18-0.3 of the side
+  short of the corners and the sweep reaching 0-6 % of the side past where the side was (session 34: tutorboard
+  seed90210 #232, its sweep 0.38 of the chord between the walls it joins, and quickdraw BG #4526069946253312, 0.26:
+  deeper than the 0.25 `recognition.bowed_sides.MAX_BOW` was; it is 0.3 since);
 
 and, read as polygons (what the bowed boxes must not take in):
 
@@ -71,12 +76,39 @@ def bowed_in(rng: random.Random) -> Path:
 
 def bow_swung(rng: random.Random) -> Path:
     """Side k bowed out by 6-16 % and its two corners swung round (0.15-0.3 of the shorter side) in one sweep."""
+    return _swept(rng, (0.06, 0.16), (0.15, 0.3))
+
+
+def side_swept(rng: random.Random) -> Path:
+    """Side k and its two corners drawn as one round sweep from wall to wall (see the module's docstring)."""
+    c = _corners(rng)
+    k = rng.choice((1, 2))
+    a, b = c[k], c[k + 1]
+    side = _side(a, b)
+    short = rng.uniform(0.18, 0.3) * side  # how far short of the corners the walls stop
+    reach = short + rng.uniform(0.0, 0.06) * side  # how far from the chord between the walls' ends the sweep reaches
+    q = rng.uniform(0.5, 0.8)
+    before, after = c[k - 1], c[(k + 2) % 4]
+    start, end = _along(a, before, short / _side(a, before)), _along(b, after, short / _side(b, after))
+    out = _outward(c, k) * reach
+    sweep = [_along(start, end, j / STEPS, out * math.sin(math.pi * j / STEPS) ** q) for j in range(STEPS + 1)]
+    pts: list[Point] = []
+    for i in range(4):
+        if i == k:
+            pts += sweep
+        elif i != k + 1:
+            pts.append(c[i])
+    return _placed([*pts, c[0]], _upright(rng))
+
+
+def _swept(rng: random.Random, bowed: tuple[float, float], swung: tuple[float, float]) -> Path:
+    """Side k bowed out by ``bowed`` of its length and its two corners swung round (``swung`` of the shorter side)."""
     c = _corners(rng)
     k = rng.choice((1, 2))
     a, b = c[k], c[k + 1]
     shorter = min(_side(c[0], c[1]), _side(c[1], c[2]))
-    cut = rng.uniform(0.15, 0.3) * shorter
-    bow = _outward(c, k) * rng.uniform(0.06, 0.16) * _side(a, b)
+    cut = rng.uniform(*swung) * shorter
+    bow = _outward(c, k) * rng.uniform(*bowed) * _side(a, b)
     f = cut / _side(a, b)
     side = [_along(a, b, f + (1 - 2 * f) * j / STEPS, bow * math.sin(math.pi * j / STEPS)) for j in range(STEPS + 1)]
     pts: list[Point] = []
@@ -117,7 +149,7 @@ def cut_deep(rng: random.Random) -> Path:
 
 
 BOXES: dict[str, Callable[[random.Random], Path]] = {"bowed-out": bowed_out, "bowed-in": bowed_in,
-                                                     "bow-swung": bow_swung}
+                                                     "bow-swung": bow_swung, "side-swept": side_swept}
 """The families read as boxes."""
 POLYGONS: dict[str, Callable[[random.Random], Path]] = {"house": house, "house-in": house_in, "cut-deep": cut_deep}
 """The families read as polygons (never boxes)."""
