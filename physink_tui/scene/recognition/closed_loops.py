@@ -216,11 +216,13 @@ def sides_turning(corners: np.ndarray) -> float:
     return float(((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi).sum())
 
 
-def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
+def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float, fit: bool = True,
                  ) -> tuple[bool, np.ndarray, EllipseFit | None]:
     """Whether the stroke closes (judged on the raw ends: a gap, or drawn past its start), the stroke once round (an
     overshoot past the start, or a start before the end, cut at the closest approach), and that loop's `fit_ellipse`
-    where it was fitted here (None when it was not: `recognize` fits it then)."""
+    where it was fitted here (None when it was not: `recognize` fits it then). Unless ``fit``, only the loop is asked:
+    a stroke gone round one way and back past its start is cut there once round, whether round or not, no ellipse
+    fitted (`rounded_polygons.polygon_rounded`'s cut from the other end)."""
     if sg.path_length(work) < 1.75 * diag:  # the smoothed path: jitter lengthens the raw one
         return False, work, None
     th = sg.turning(work)
@@ -232,8 +234,8 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float,
         loop, back = _once_round(work, th, limit)  # round and round one way: once round is the shape, if round
         # not a lead-in drawn out and back along itself, nor a hook's small loop at an end
         back = back and encloses(loop) and sg.bbox_diagonal(loop) >= SMALL_LOOP * diag
-        ellipse = fit_ellipse(loop) if back else None  # fitted only where it may be kept
-        if back and ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma):
+        ellipse = fit_ellipse(loop) if back and fit else None  # fitted only where it may be kept
+        if back and (not fit or (ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma))):
             return True, loop, ellipse
         once = loop if back else None
     if turned > 2.15 * math.pi and sf.retraced(work, th, diag):

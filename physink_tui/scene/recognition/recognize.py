@@ -357,7 +357,7 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     ranked = both_laps.round_from_both_laps(ranked, work, ellipse, diag, sigma,
                                             bounds(raw, noise, diag) if ranked.kind == "ellipse" else None)
     ranked = rounded_polygons.polygon_rounded(  # asked of the loop cut from either end
-        ranked, loop, raw, lambda: closed_loops.closed_loop(raw[::-1], work[::-1], diag, sigma))
+        ranked, loop, raw, lambda: closed_loops.closed_loop(raw[::-1], work[::-1], diag, sigma, fit=False)[:2])
     ranked = rounded_corners.box_as_drawn(ranked, polygons, raw, noise, diag, loop)
     ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
     ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)

@@ -48,6 +48,9 @@ is counted from its first step to its last turning `shape_corners.STRAIGHT_STEP_
 rounded corner leaves the sides, a step turning 4-6 degrees falls in it or not as the points fall (issue 25, session
 33: a heptagon's corner rounded wide, 5, 13, 15, 15, 13, 6, was 6 steps one way and 5 the other)."""
 LONGEST_STEPS = 9
+COVERS = 0.88
+"""...and the polygon where the straight runs' lines meet covers the loop this well (intersection over union) or better:
+a corner rounded over up to a third of each side leaves out a few hundredths."""
 
 
 def _core_span(b: Bend, th: np.ndarray) -> int:
@@ -57,9 +60,6 @@ def _core_span(b: Bend, th: np.ndarray) -> int:
     steps = np.abs(th[(b.first + np.arange((b.last - b.first) % m + 1)) % m]) >= STRAIGHT_STEP_DEG
     core = np.flatnonzero(steps)
     return int(core[-1] - core[0] + 1) if len(core) else 1
-COVERS = 0.88
-"""...and the polygon where the straight runs' lines meet covers the loop this well (intersection over union) or better:
-a corner rounded over up to a third of each side leaves out a few hundredths."""
 
 
 SEAM_POINTS = 2
@@ -160,8 +160,8 @@ through a coarse device, two corners turning 33 and 24 degrees run together over
 hexagon); a triangle's rounded corners, on which a polygon fit spends a vertex at each end, are still read as three."""
 
 
-OtherWay = Callable[[], tuple[bool, np.ndarray, object]]
-"""The stroke's loop as `closed_loops.closed_loop` finds it drawn from its other end (closed, loop, ellipse)."""
+OtherWay = Callable[[], tuple[bool, np.ndarray]]
+"""The stroke's loop as `closed_loops.closed_loop` cuts it drawn from its other end (closed, loop; no ellipse)."""
 
 
 def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray,
@@ -182,7 +182,7 @@ def polygon_rounded(ranked: Recognition, loop: np.ndarray, raw: np.ndarray,
             len(vertices) >= FEWER_KEPT_FROM and len(ranked.geometry.points) >= len(vertices) + 2)):
         return ranked
     if other_way is not None:
-        closed, back, _ = other_way()
+        closed, back = other_way()
         back_vertices = rounded_corners(back if closed else loop[::-1], raw)
         if back_vertices is None or len(back_vertices) != len(vertices):
             return ranked

@@ -58,9 +58,9 @@ def bends(work: np.ndarray) -> tuple[np.ndarray, np.ndarray, list[Bend]]:
     return pts, th, bend_runs(th.tolist(), STRAIGHT_STEP_DEG)
 
 
-def corner_bends(found: list[Bend]) -> list[Bend]:
-    """The bends that are corners: short (`BEND_STEPS`) and turning `CORNER_DEG` or more."""
-    return [b for b in found if b.last - b.first < BEND_STEPS and abs(b.degrees) >= CORNER_DEG]
+def corner_bends(found: list[Bend], longest: int = BEND_STEPS) -> list[Bend]:
+    """The bends that are corners: short (under ``longest`` steps) and turning `CORNER_DEG` or more."""
+    return [b for b in found if b.last - b.first < longest and abs(b.degrees) >= CORNER_DEG]
 
 
 AT_CORNERS = 0.7
@@ -80,6 +80,17 @@ octagon's corners 0.84-1.1 (Quick, Draw!)."""
 LEAST_CORNERS = 4
 """...at this many corners or more between its ends (`closed_loops.LEFT_OPEN_CORNERS`): a U, a C or a bracket shows
 two or three."""
+LEFT_OPEN_BEND_STEPS = 5
+"""A polygon left open may round a corner over this many steps (one more than `BEND_STEPS`): over up to a third of
+each side meeting there, as `rounded_polygons.LONGEST_BEND` allows a closed one (issue 25, session 34: a Quick,
+Draw! hexagon's two corners rounded over 5 steps, 82 and 104 degrees, and an octagon's 77, read as a curve and a
+polyline); the straight share and the turning at the corners still hold a round shape out."""
+ENDS_ON_A_SIDE_DEG = 10.0
+"""The stroke's end (and its start) may turn less than this either way on the ring of its sides and the gap: the pen
+lifted part-way along its last side, the gap running on along it to the start (or landed part-way along the first);
+every corner drawn turns the loop's way. A circle or an arc left open turns its way at both ends of the gap (its
+chord), by half the arc left out (issue 25, session 34: the hexagon and the octagon above ended 5 and 3 degrees the
+other way, on a line through their start)."""
 GAP_SIDES = 1.5
 """...and its gap is no longer than this many times its longest side drawn (`closed_loops.LEFT_OPEN_GAP`)."""
 
@@ -115,13 +126,14 @@ def drawn_through(corners: np.ndarray, drawn: np.ndarray) -> bool:
 
 def rounded_many_sided_left_open(work: np.ndarray, drawn: np.ndarray | None = None) -> bool:
     """Whether an open stroke is a many-sided polygon left open by one side whose corners the hand rounded: it does
-    `AT_CORNERS` of its turning at `LEAST_CORNERS` corners or more (`corner_bends`), and its sides through those
-    corners (each corner at the middle of its bend) and the gap close a convex outline turning the same way at every
-    vertex once round, the gap no longer than `GAP_SIDES` of its longest side; and its sides run straight between
+    `AT_CORNERS` of its turning at `LEAST_CORNERS` corners or more (`corner_bends`, of up to `LEFT_OPEN_BEND_STEPS`),
+    and its sides through those corners (each corner at the middle of its bend) and the gap close a convex outline
+    turning the same way at every vertex once round (its ends on a side, `ENDS_ON_A_SIDE_DEG`, or turning that way),
+    the gap no longer than `GAP_SIDES` of its longest side; and its sides run straight between
     (`STRAIGHT_SHARE`) and its corners turn as many sides' do (`CORNER_TURN`). ``drawn``, the stroke's own points where
     given, must hold a point between each two corners (`drawn_through`)."""
     pts, th, found = bends(work)
-    corners = corner_bends(found)
+    corners = corner_bends(found, LEFT_OPEN_BEND_STEPS)
     total = float(np.abs(th).sum())
     at_corners = sum(abs(b.degrees) for b in corners)
     if (len(corners) < LEAST_CORNERS or total == 0.0 or at_corners < AT_CORNERS * total
@@ -136,6 +148,9 @@ def rounded_many_sided_left_open(work: np.ndarray, drawn: np.ndarray | None = No
         return False
     heading = np.arctan2(sides[:, 1], sides[:, 0])
     turns = (np.diff(np.append(heading, heading[0])) + math.pi) % (2 * math.pi) - math.pi
-    if not (((turns > 0).all() or (turns < 0).all()) and abs(abs(float(turns.sum())) - 2 * math.pi) <= 0.1):
+    way = math.copysign(1.0, float(turns.sum()))
+    ends_on_a_side = np.abs(turns[-2:]) < math.radians(ENDS_ON_A_SIDE_DEG)  # at the stroke's end, and its start
+    if not ((turns[:-2] * way > 0).all() and (ends_on_a_side | (turns[-2:] * way > 0)).all()
+            and abs(abs(float(turns.sum())) - 2 * math.pi) <= 0.1):
         return False
     return drawn is None or drawn_through(pts[at[1:-1]], drawn)
