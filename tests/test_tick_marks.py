@@ -100,6 +100,10 @@ PEOPLE = {
     ("public-sets/hcira.jsonl", "jd4386/HCIRA-Project@ff559d7:Part 4/custom_xml_logs/User01/check07.xml"):
         ("polyline", True),
     ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s05/check07.xml"): ("polyline", True),
+    # a short arm curling into the point a little tighter than a circle (`bracket_marks.SHORT_ARM_SLACK`, session 34):
+    # read as curves at main 85a9ce3 (check06 by the rules a polyline, the model re-read it as a curve)
+    ("public-sets/ahmadosama.jsonl", AHMAD + "TrainingData/Tick.xml#101"): ("polyline", True),
+    ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s06/check06.xml"): ("polyline", True),
     # a question mark whose stem curves on from its shallow curl (`bracket_marks.TICK_CONCENTRATED`): still a curve
     ("student-sets/itt.jsonl", "ITT-26/assignment-06-gesture-recognition-DerD4n@1ee2c34:datasets/my_gestures/"
                                "question_mark01.xml"): ("curve", True),

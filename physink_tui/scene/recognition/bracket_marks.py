@@ -151,6 +151,13 @@ question mark's stem curves on from its curl)."""
 TICK_SHORT = (0.06, 0.45)
 """The shorter arm, the round point included, is this share of the path (`stroke_geometry.ARM_SHARE` to under
 half: a v's arms are alike, a tick's short arm shorter)."""
+SHORT_ARM_SLACK = 1.1
+"""The short arm bows no more than this many times what an arc turning by the stroke's whole turn bows: a hand's short
+arm curls into the point a little tighter than a circle does (issue 25, session 34: ahmadosama's Tick #101 1.05,
+klarubbio/s06's check06 1.08; the pen models' hooked swung ticks, `benchmarks/bench_mark_habits.py` tuning seeds, 1.01
+and 1.03). Of the design and fourth-group strokes `rounded_point` refuses by this bound alone, none other is under 1.3,
+nor any of the pen models' parentheses (`benchmarks/bench_paren_habits.py`, tuning seeds); a question mark's or a
+parenthesis' curl bows more."""
 
 
 def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[int] | None:
@@ -162,10 +169,10 @@ def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[
     stroke stands farthest from the line joining its ends. The long arm is straight (`BRACKET_STRAIGHT`, and
     `TICK_CONCENTRATED`: the stroke turns at its point, not along the arm) with no point in it
     (`stroke_geometry.POINT_TURN_DEG`: a long brace's tip), and the short arm, which carries the round point, bows no
-    more than an arc turning by the stroke's whole turn would: the bend is the point, not a curl of its own (the turn
-    for these two bounds is the larger of the coarse lobe's and the fine path's: the hurried hand's hooks move the
-    fine one either way). An arc turns evenly, so its longer arm is not straight; a brace turns both ways or runs on
-    in line."""
+    more than an arc turning by the stroke's whole turn would (within `SHORT_ARM_SLACK`): the bend is the point, not a
+    curl of its own (the turn for these two bounds is the larger of the coarse lobe's and the fine path's: the hurried
+    hand's hooks move the fine one either way). An arc turns evenly, so its longer arm is not straight; a brace turns
+    both ways or runs on in line."""
     if len(lobes) != 1:
         return None
     total = abs(lobes[0])  # at the coarse scale: a hook where the pen landed or lifted does not count
@@ -193,7 +200,7 @@ def rounded_point(work: np.ndarray, th: np.ndarray, lobes: list[float]) -> list[
     middle = long[len(long) // 5: len(long) - len(long) // 5]
     even = math.tan(math.radians(bend) * (1.0 - share) / 4) / 2  # the long arm's bow, the turning spread evenly
     if (sg.chord_deviation(long) >= min(BRACKET_STRAIGHT, TICK_CONCENTRATED * even)
-            or sg.chord_deviation(short) > math.tan(math.radians(bend) / 4) / 2
+            or sg.chord_deviation(short) > SHORT_ARM_SLACK * math.tan(math.radians(bend) / 4) / 2
             or sg.sharpest_turn(middle, sg.POINT_SPAN * length) >= sg.POINT_TURN_DEG):
         return None
     return [0, k, len(work) - 1]
