@@ -1,7 +1,7 @@
 """Benchmark: closed shapes the design sets hardly hold (many-sided polygons, rhombi, parallelograms, trapezoids,
 ovals, rounded rectangles) drawn by the project's two pen models, read cornered or round as a person means them.
 
-Usage: .venv/bin/python benchmarks/bench_closed_shapes.py [--seeds A:B] [--held-back] [--rules] [--json OUT]
+Usage: .venv/bin/python benchmarks/bench_closed_shapes.py [--seeds A:B|tune|held] [--held-back] [--rules] [--json OUT]
        [--families A,B]
 
 Each family (`ALL_FAMILIES`, made in `closed_shape_families`) draws a shape from its own seeded generator
@@ -226,10 +226,25 @@ def report(results: dict[tuple[str, str, bool], list[tuple[str | None, float | N
     return lines
 
 
+def seed_range(text: str) -> range:
+    """``--seeds``' value: ``A:B`` (seeds A to B-1), or the names the other pen benches take, ``tune`` and ``held``."""
+    named = {"tune": TUNING_SEEDS, "held": HELD_BACK_SEEDS}
+    if text in named:
+        return named[text]
+    try:
+        a, b = map(int, text.split(":"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected A:B (two whole numbers), tune or held") from None
+    if b <= a:
+        raise argparse.ArgumentTypeError(f"{text!r}: the range A:B must end after it starts")
+    return range(a, b)
+
+
 def add_seed_arguments(parser: argparse.ArgumentParser) -> None:
     """``--seeds A:B`` and ``--held-back``, the seeds a pen-model bench draws (`chosen_seeds`; `bench_boxes` and
     `bench_rounded_boxes` ask the same; `family_bench_parser` adds them)."""
-    parser.add_argument("--seeds", help="A:B, a range of seeds (default: the tuning range 0:30)")
+    parser.add_argument("--seeds", type=seed_range,
+                        help="A:B, a range of seeds, or tune (0:30, the default) or held (1000:1030)")
     parser.add_argument("--held-back", action="store_true", help="the held-back seeds 1000-1029")
 
 
@@ -249,9 +264,10 @@ def chosen_seeds(args: argparse.Namespace) -> tuple[range, str]:
     """The seeds asked for (`add_seed_arguments`) and their name: the held-back seeds, a range, or the tuning seeds."""
     if args.held_back:
         return HELD_BACK_SEEDS, "held-back seeds 1000-1029"
+    if args.seeds == HELD_BACK_SEEDS:
+        return HELD_BACK_SEEDS, "held-back seeds 1000-1029"
     if args.seeds:
-        a, b = map(int, args.seeds.split(":"))
-        return range(a, b), f"seeds {a}-{b - 1}"
+        return args.seeds, f"seeds {args.seeds.start}-{args.seeds.stop - 1}"
     return TUNING_SEEDS, "tuning seeds 0-29"
 
 
