@@ -48,28 +48,22 @@ def _read(family: str, pen: str, seed: int, timed: bool) -> str | None:
     return read(family, pen, seed, timed, families=squiggles.FAMILIES)
 
 
-@pytest.mark.parametrize(("floors", "seeds"), [(CURLY_FLOORS, TUNING_SEEDS), (CURLY_HELD_FLOORS, HELD_SEEDS)],
-                         ids=["tuning", "held"])
+FAMILY_FLOORS = [("curly-line", "curve", CURLY_FLOORS, CURLY_HELD_FLOORS),
+                 ("two-curls", "curve", TWO_CURL_FLOORS, TWO_CURL_HELD_FLOORS),
+                 ("coil", "helix", COIL_FLOORS, COIL_HELD_FLOORS)]
+"""(family, the kind it must read as, floors on the tuning seeds, floors on the held seeds): a line with curls in it
+and a line with two curls are curves; a spring drawn as a coil stays a helix."""
+
+
+@pytest.mark.parametrize("held", [False, True], ids=["tuning", "held"])
 @pytest.mark.parametrize("pen", list(CURLY_FLOORS))
-def test_a_line_with_curls_in_it_is_a_curve(pen: str, floors: dict[str, int], seeds: range) -> None:
-    got = [_read("curly-line", pen, seed, timed) for seed in seeds for timed in (True, False)]
-    assert sum(k == "curve" for k in got) >= floors[pen], got
-
-
-@pytest.mark.parametrize(("floors", "seeds"), [(TWO_CURL_FLOORS, TUNING_SEEDS), (TWO_CURL_HELD_FLOORS, HELD_SEEDS)],
-                         ids=["tuning", "held"])
-@pytest.mark.parametrize("pen", list(TWO_CURL_FLOORS))
-def test_a_line_with_two_curls_in_it_is_a_curve(pen: str, floors: dict[str, int], seeds: range) -> None:
-    got = [_read("two-curls", pen, seed, timed) for seed in seeds for timed in (True, False)]
-    assert sum(k == "curve" for k in got) >= floors[pen], got
-
-
-@pytest.mark.parametrize(("floors", "seeds"), [(COIL_FLOORS, TUNING_SEEDS), (COIL_HELD_FLOORS, HELD_SEEDS)],
-                         ids=["tuning", "held"])
-@pytest.mark.parametrize("pen", list(COIL_FLOORS))
-def test_a_spring_drawn_as_a_coil_stays_a_helix(pen: str, floors: dict[str, int], seeds: range) -> None:
-    got = [_read("coil", pen, seed, timed) for seed in seeds for timed in (True, False)]
-    assert sum(k == "helix" for k in got) >= floors[pen], got
+@pytest.mark.parametrize(("family", "kind", "floors", "held_floors"), FAMILY_FLOORS,
+                         ids=[family for family, *_ in FAMILY_FLOORS])
+def test_a_pen_models_curly_family_reads_as_drawn(family: str, kind: str, floors: dict[str, int],
+                                                   held_floors: dict[str, int], pen: str, held: bool) -> None:
+    seeds, floor = (HELD_SEEDS, held_floors[pen]) if held else (TUNING_SEEDS, floors[pen])
+    got = [_read(family, pen, seed, timed) for seed in seeds for timed in (True, False)]
+    assert sum(k == kind for k in got) >= floor, got
 
 
 def test_the_families_are_seeded() -> None:
