@@ -96,15 +96,3 @@ def test_a_persons_shape_drawn_backwards_becomes_the_same_body(label: str) -> No
         points = placed(row, size_of(i))
         shapes = [[b.shape for b in drawn(p).scene.bodies()] for p in (points, points[::-1])]
         assert shapes[0] == shapes[1], f"{row['file']}: {shapes[0]} as drawn, {shapes[1]} reversed"
-
-
-WOUND_ZIGZAG = "borismus/exupery@5ab788c:docs/sketches/zigzag.ndjson#4895458323333120"
-"""A Quick, Draw! player's zig-zag (TR) that winds past a whole turn: counted from its start its second lap ran over its
-first (`stroke_features.retraced`), so it was closed and read a polygon as drawn, and a polyline reversed, until session
-35 asked the same of the stroke reversed (`closed_loops.closed_loop`: retraced from either end)."""
-
-
-def test_a_zigzag_winding_past_a_turn_is_a_polyline_drawn_either_way() -> None:
-    row = cached_rows("public-sets/quickdraw.jsonl").get(WOUND_ZIGZAG)
-    assert row is not None, WOUND_ZIGZAG
-    assert readings(row) == ("polyline", "polyline")

@@ -20,8 +20,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    `coils.COILED`, a lead the pen drew out and back along its own path at either end and drew again with the shape (a
    box's first side or a circle's first arc drawn twice over) is cut (`loop_ends.retraced_lead`).
 2. Closure is judged on the raw stroke: its ends close (within 20 % of its size or four noise widths), or it is
-   drawn past its start and comes back to it (cut there), or it goes round the same sides twice (its first lap counted
-   from either end: `stroke_features.retraced` asked both ways), or goes round again
+   drawn past its start and comes back to it (cut there), or it goes round the same sides twice, or goes round again
    beside its first lap, which is the shape (`closed_loops.TWICE_ROUND`), or its ends meet once a landing or
    lifting hook that kept a small loop's ends apart is cut (`closed_loops.hook_kept_apart`). Where neither end
    comes near the other's path, the loop is cut where its first and last sixths cross (`loop_ends`: a lead-in hook

@@ -238,9 +238,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float, fi
         if back and (not fit or (ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma))):
             return True, loop, ellipse
         once = loop if back else None
-    # retraced counted from either end (a shape drawn twice over is so whichever end its first lap is counted from;
-    # counted from the start only, a scribble that winds past a turn read closed one way and open the other)
-    if turned > 2.15 * math.pi and sf.retraced(work, th, diag) and sf.retraced(work[::-1], -th[::-1], diag):
+    if turned > 2.15 * math.pi and sf.retraced(work, th, diag):
         return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
     if (once is not None and TWICE_ROUND < turned < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
             and _beside(work, once, diag)):
