@@ -84,10 +84,11 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    more, or a loop read round with two sharp corners, is the box drawn with a corner or two rounded off
    (`rounded_corners`) when four sides of its fit run straight for most of their length, meet near right angles, and
    only bows or sharp turns lie between them (a straight stretch between two sides is a side: a pentagon's, a
-   hexagon's, a cut corner's). A polygon of five or six sides is the box one of whose sides a hand bowed out or in
-   (`bowed_sides`) when three of its sides run straight and square and the rest of the loop is one round bow: on one
-   side of its chord, at most a quarter of it deep, filling its strip as a bow does and bending round, not at a roof's
-   corner (a low pentagon's, a swallowtail's, a deep cut's). A loop still read round is the box round it when every one
+   hexagon's, a cut corner's). A polygon of four sides or more (a quad past a box's tolerance too, since session 35)
+   is the box one of whose sides a hand bowed out or in (`bowed_sides`) when three sides of its fit of five or six run
+   straight and square and the rest of the loop is one round bow: on one side of its chord, at most 0.3 of it deep,
+   filling its strip as a bow does and bending round, not at a roof's corner (a low pentagon's, a swallowtail's, a
+   deep cut's). A loop still read round is the box round it when every one
    of its four corners reaches at least 0.78 of the way towards the corner of the smallest rectangle round it
    (`rounded_boxes`: an ellipse reaches 0.707, a box whose every corner is rounded by 0.375 of its side 0.78; people's
    circles at most 0.76). A closed loop its ellipse misses by more than twice `open_shapes.round_error`, or that turns

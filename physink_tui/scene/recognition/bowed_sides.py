@@ -156,11 +156,13 @@ def _bowed_box(fit: PolygonFit, first: int, parts: list[Part], loop_area: float,
 
 def box_with_a_bowed_side(ranked: Recognition, polygons: list[Pending], loop: np.ndarray, raw: np.ndarray,
                           noise: float, diag: float) -> Recognition:
-    """``ranked`` (a polygon of five sides or more) read as the box it is with one side bowed (`_bowed_box` of a fit
+    """``ranked`` (a polygon of four sides or more) read as the box it is with one side bowed (`_bowed_box` of a fit
     of `SIDES` sides of ``loop``, within the stroke's bounds as any box: `ranking.BOX_MARGIN`; ``polygons``: every
     closed polygonal fit, ``raw``: the stroke's own points, ``diag`` their diagonal, ``noise`` the pen's in their
-    units); ``ranked`` where none makes one."""
-    if (ranked.kind != "polygon" or not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 5
+    units); ``ranked`` where none makes one. A quad is asked too (session 35): a sweep round a side and its corners
+    pulls the best four-sided fit's fourth side askew, past a box's tolerance, while the fits of five or six sides
+    still find the three walls and the bow (`penmodels.box_bows` side-swept through a noisy pen)."""
+    if (ranked.kind != "polygon" or not isinstance(ranked.geometry, Polygon) or len(ranked.geometry.points) < 4
             or crossings(ranked.geometry.points) > 1):
         return ranked
     lo, hi = bounds(raw, noise, diag, BOX_MARGIN)
