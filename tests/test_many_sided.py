@@ -30,8 +30,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_open_marks import HELD_SEEDS, PENS, read
 
 HELD_FLOORS = {
-    "irregular-hexagon": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 52},
-    "swept-octagon": {"careful": 56, "hurried": 54, "hurried-coarse": 40, "hurried-mouse": 25},
+    "irregular-hexagon": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
+    "swept-octagon": {"careful": 56, "hurried": 54, "hurried-coarse": 44, "hurried-mouse": 35},
     "left-open": {"careful": 46, "hurried": 56, "hurried-coarse": 52, "hurried-mouse": 46},
     "uneven-squiggle": {"careful": 32, "hurried": 38, "hurried-coarse": 36, "hurried-mouse": 34},
     "rounded-left-open": {"careful": 56, "hurried": 52, "hurried-coarse": 48, "hurried-mouse": 38},
@@ -45,7 +45,9 @@ Session 26 (`shape_corners`, main 7111cdc -> this branch): left-open 8, 16, 16, 
 (new) 2, 2, 0, 2 -> 56, 52, 48, 38; round-left-open (new; lumpy circles left open, which must stay round) 60, 60, 58,
 60 at both. Session 32 (wt-mouse, `round_or_cornered.paced_corners`: a loop in a mouse's bursts whose pen
 slowed five times or more is its polygon): through the mouse, irregular-hexagon 48 -> 52, swept-octagon 6 -> 25 (timed
-readings only; untimed ones are main's)."""
+readings only; untimed ones are main's). Session 35 (wt-octagons, `rounded_polygons.SHALLOW_TURN`: a loop read round
+may keep one shallow corner where over half its steps run straight): irregular-hexagon hurried-mouse 59 -> 60,
+swept-octagon hurried-coarse 42 -> 44 and hurried-mouse 32 -> 35 (careful and hurried 56, 56 as before)."""
 
 
 @pytest.mark.parametrize(("family", "pen"), [(f, p) for f in HELD_FLOORS for p in PENS])
