@@ -51,6 +51,18 @@ LONGEST_STEPS = 9
 COVERS = 0.88
 """...and the polygon where the straight runs' lines meet covers the loop this well (intersection over union) or better:
 a corner rounded over up to a third of each side leaves out a few hundredths."""
+EVEN_AT, EVEN_LEAST, EVEN_MOST = 0.9, 0.75, 1.2
+"""Corners evenly shared (issue 25, session 35): a loop doing this share of its turning or more at its corners, each
+turning between these shares of a regular polygon's corner, may run straight for as little as `EVEN_STRAIGHT_SHARE`
+and be covered as little as `EVEN_COVERS`: a triangle or pentagon rounded over up to 0.42 of each side runs straight
+for 0.30-0.45 of its steps (`benchmarks/bench_rounded_polygons.py`, tune seeds: the triangles and pentagons read round),
+and a triangle so rounded fills 0.79-0.83 of the one its sides make. Of the design and fourth sources' round shapes
+(1,164 loops) one has all three within these, and runs straight for only 0.17 (hcira jd4386/User01 circle10: 0.96,
+0.78, 1.20); the nearest outside them: itt marcel-moz circle07 (0.87, 0.82, 1.21), a Quick, Draw! circle (tutorboard
+seed90210 #90: 0.94, 0.79, 1.23), hcira klarubbio/s02 circle10 (0.88, 0.71) and, of three corners, klarubbio/s07
+circle05 (0.88, 0.72, covered 0.76)."""
+EVEN_STRAIGHT_SHARE = 0.3
+EVEN_COVERS = 0.78
 
 
 def _core_span(b: Bend, th: np.ndarray) -> int:
@@ -110,7 +122,8 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
     short bends (at most `shape_corners.BEND_STEPS` steps of `shape_corners.STEPS` round, each turning
     `shape_corners.CORNER_DEG` or more, `LEAST_TURN` of a regular polygon's corner, all the same way) doing `AT_CORNERS`
     of the turning, straight runs (`STRAIGHT_SHARE`) between them; each vertex where the directions into and out of a
-    bend meet, the polygon covering the loop (`COVERS`). ``drawn``, the stroke's own points where given, must hold a
+    bend meet, the polygon covering the loop (`COVERS`); corners evenly shared (`EVEN_AT`) ask less of the straight
+    runs and the cover. ``drawn``, the stroke's own points where given, must hold a
     point between each two corners clear of both (`shape_corners.drawn_through`): a round loop sampled by a few events
     turns at each."""
     if len(loop) < 8:
@@ -128,7 +141,10 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
         return None
     turns = np.abs([b.degrees for b in corners])
     spans = np.array([_core_span(b, th) for b in corners])
-    if (float(turns.sum()) < AT_CORNERS * total or float(np.mean(np.abs(th) < STRAIGHT_STEP_DEG)) < STRAIGHT_SHARE
+    even = (float(turns.sum()) >= EVEN_AT * total and float(turns.min()) >= EVEN_LEAST * 360.0 / n
+            and float(turns.max()) <= EVEN_MOST * 360.0 / n)
+    if (float(turns.sum()) < AT_CORNERS * total
+            or float(np.mean(np.abs(th) < STRAIGHT_STEP_DEG)) < (EVEN_STRAIGHT_SHARE if even else STRAIGHT_SHARE)
             or float(turns.min()) < LEAST_TURN * 360.0 / n or float(turns.max()) > MOST_TURN * 360.0 / n
             or int(spans.max()) > LONGEST_BEND * STEPS / n + 1
             or abs(float(th.sum()) - math.copysign(360.0, th.sum())) > 30):
@@ -143,7 +159,7 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None) -> np.nda
             return None
         vertices.append(at)
     poly = np.array(vertices)
-    if overlap(poly, loop) < COVERS:
+    if overlap(poly, loop) < (EVEN_COVERS if even else COVERS):
         return None
     if drawn is not None:
         middles = np.array([(pts[(b.first + 1 + (b.last - b.first) % m // 2) % m]
