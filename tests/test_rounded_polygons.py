@@ -91,3 +91,22 @@ def test_an_octagon_with_two_corners_run_together_reads_as_a_polygon(file: str) 
     row = cached_rows(QUICKDRAW).get(file)
     assert row is not None, file
     assert readings(row)[0] == "polygon"
+
+
+NEAREST_ROUND = [("public-sets/hcira.jsonl", "jd4386/HCIRA-Project@ff559d7:Part 4/custom_xml_logs/User01/circle10.xml"),
+                 ("student-sets/itt.jsonl", "ITT-26/assignment-06-gesture-recognition-marcel-moz@5404f89:"
+                  "02-recognizer-comparison/datasets/circle07.xml"),
+                 ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s02/circle10.xml"),
+                 ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s07/circle05.xml"),
+                 (QUICKDRAW, "ArtemLevin/tutorboard@3b27669:tests/fixtures/smart-ink-corpus/external/"
+                  "quickdraw.seed-90210.json.gz#90")]
+"""People's circles whose corners come nearest to being evenly shared (`rounded_polygons.EVEN_AT`, session 35): one
+within all three bounds that runs straight too little, the others just outside one of them."""
+
+
+@pytest.mark.parametrize(("name", "file"), NEAREST_ROUND, ids=[f.rsplit("/", 2)[-2] + "/" + f.rsplit("/", 1)[-1]
+                                                              for _, f in NEAREST_ROUND])
+def test_a_persons_circle_nearest_even_corners_stays_round(name: str, file: str) -> None:
+    row = cached_rows(name).get(file)
+    assert row is not None, file
+    assert set(readings(row)) <= {"circle", "ellipse"}
