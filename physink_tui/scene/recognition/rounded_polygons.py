@@ -56,13 +56,11 @@ a corner rounded over up to a third of each side leaves out a few hundredths."""
 EVEN_AT, EVEN_LEAST, EVEN_MOST = 0.9, 0.75, 1.2
 """Corners evenly shared (issue 25, session 35): a loop doing this share of its turning or more at its corners, each
 turning between these shares of a regular polygon's corner, may run straight for as little as `EVEN_STRAIGHT_SHARE`
-and be covered as little as `EVEN_COVERS`: a triangle or pentagon rounded over up to 0.42 of each side runs straight
-for 0.30-0.45 of its steps (`benchmarks/bench_rounded_polygons.py`, tune seeds: the triangles and pentagons read round),
-and a triangle so rounded fills 0.79-0.83 of the one its sides make. Of the design and fourth sources' round shapes
-(1,164 loops) one has all three within these, and runs straight for only 0.17 (hcira jd4386/User01 circle10: 0.96,
-0.78, 1.20); the nearest outside them: itt marcel-moz circle07 (0.87, 0.82, 1.21), a Quick, Draw! circle (tutorboard
-seed90210 #90: 0.94, 0.79, 1.23), hcira klarubbio/s02 circle10 (0.88, 0.71) and, of three corners, klarubbio/s07
-circle05 (0.88, 0.72, covered 0.76)."""
+and be covered as little as `EVEN_COVERS`: a triangle rounded over up to 0.42 of each side runs straight for 0.40-0.45
+of its steps and fills 0.79-0.83 of the triangle its sides make, and read round (`benchmarks/bench_rounded_polygons.py`,
+tune seeds). Of the design and fourth sources' round shapes (1,164 loops) with three corners, the nearest are hcira
+klarubbio/s07 circle05 (0.88 of the turning at its corners, the least 0.72 of an even one, covered 0.76) and a Quick,
+Draw! circle (tutorboard seed90210 #94: 0.89, 0.70, 0.78); of five, hcira jd4386/User01 circle10 (0.96, 0.78, 1.20)."""
 EVEN_CORNERS = (3,)
 """...of three corners only: a circle whose radius wanders by its 5th or 6th harmonic (`tests/penmodels/rounded_boxes`'
 wobbly family, 4-10 % from the mean) turns as evenly at five or six bends, as straight between them (0.30-0.42), as a
