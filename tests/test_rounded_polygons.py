@@ -25,13 +25,13 @@ from bench_reversed import readings
 from bench_rounded_polygons import reading, right
 
 TUNING_FLOORS = {
-    "rounded-triangle": {"careful": 56, "hurried": 48, "hurried-coarse": 48, "hurried-mouse": 40},
+    "rounded-triangle": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 52},
     "rounded-box": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 56},
     "rounded-pentagon": {"careful": 48, "hurried": 40, "hurried-coarse": 40, "hurried-mouse": 32},
     "rounded-hexagon": {"careful": 36, "hurried": 32, "hurried-coarse": 32, "hurried-mouse": 28},
     "rounded-heptagon": {"careful": 40, "hurried": 36, "hurried-coarse": 40, "hurried-mouse": 32},
     "rounded-octagon": {"careful": 32, "hurried": 28, "hurried-coarse": 20, "hurried-mouse": 20},
-    "one-rounded-triangle": {"careful": 60, "hurried": 48, "hurried-coarse": 48, "hurried-mouse": 52},
+    "one-rounded-triangle": {"careful": 60, "hurried": 56, "hurried-coarse": 48, "hurried-mouse": 52},
     "one-rounded-box": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
     "one-rounded-pentagon": {"careful": 60, "hurried": 60, "hurried-coarse": 60, "hurried-mouse": 60},
     "one-rounded-hexagon": {"careful": 60, "hurried": 56, "hurried-coarse": 60, "hurried-mouse": 56},
@@ -46,7 +46,9 @@ rounded-triangle 16, 12, 12, 12; one-rounded-box 60, 60, 60, 60; one-rounded-pen
 hexagon 60, 56, 60, 52; one-rounded-heptagon 56, 48, 48, 24; one-rounded-octagon 56, 48, 50, 14. Session 35
 (wt-octagons, `rounded_polygons.SHALLOW_TURN`: a loop read round may keep one shallow corner) raised rounded-
 heptagon hurried, hurried-coarse, hurried-mouse 32, 38, 26 -> 38, 40, 33, rounded-octagon 30, 26, 20, 21 -> 32, 28,
-22, 22 and one-rounded-heptagon hurried-mouse 50 -> 51; the floors of those cells rose with them."""
+22, 22 and one-rounded-heptagon hurried-mouse 50 -> 51; the floors of those cells rose with them. wt-rounded (corners
+evenly shared: `rounded_polygons.EVEN_AT`) raised the rounded triangle's floors and the hurried hand's one-rounded
+triangle's from main 535bda1's 56, 56, 56, 48 and 56. Merged, each cell's floor is the higher of the two branches'."""
 
 
 @pytest.mark.parametrize(("family", "pen"), [(f, p) for f in TUNING_FLOORS for p in PENS])
@@ -112,3 +114,22 @@ def test_a_persons_straightest_lumpy_circle_stays_round(name: str, file: str) ->
     row = cached_rows(name).get(file)
     assert row is not None, file
     assert all(kind in ("circle", "ellipse") for kind in readings(row)), readings(row)
+
+
+NEAREST_ROUND = [("public-sets/hcira.jsonl", "jd4386/HCIRA-Project@ff559d7:Part 4/custom_xml_logs/User01/circle10.xml"),
+                 ("student-sets/itt.jsonl", "ITT-26/assignment-06-gesture-recognition-marcel-moz@5404f89:"
+                  "02-recognizer-comparison/datasets/circle07.xml"),
+                 ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s02/circle10.xml"),
+                 ("public-sets/hcira.jsonl", "klarubbio/hcira_p1@e8eb332:xml/s07/circle05.xml"),
+                 (QUICKDRAW, "ArtemLevin/tutorboard@3b27669:tests/fixtures/smart-ink-corpus/external/"
+                  "quickdraw.seed-90210.json.gz#90")]
+"""People's circles whose corners come nearest to being evenly shared (`rounded_polygons.EVEN_AT`, session 35): one
+within all three bounds that runs straight too little, the others just outside one of them."""
+
+
+@pytest.mark.parametrize(("name", "file"), NEAREST_ROUND, ids=[f.rsplit("/", 2)[-2] + "/" + f.rsplit("/", 1)[-1]
+                                                              for _, f in NEAREST_ROUND])
+def test_a_persons_circle_nearest_even_corners_stays_round(name: str, file: str) -> None:
+    row = cached_rows(name).get(file)
+    assert row is not None, file
+    assert set(readings(row)) <= {"circle", "ellipse"}

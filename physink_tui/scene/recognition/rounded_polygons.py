@@ -53,14 +53,30 @@ them was rounded away) are not one corner of a polygon of fewer sides."""
 LONGEST_BEND = 0.8
 """A bend is a corner when it runs over at most this share of a regular polygon's side of as many corners (plus a
 step), and over at most `LONGEST_STEPS`: a hand rounds a corner over up to a third or so of each side meeting there
-(a triangle's over up to 9 steps of 40, an octagon's 4); a round shape's turning runs on round it. The bend's run
+(a triangle's over up to 10 steps of 40, an octagon's 4); a round shape's turning runs on round it. The bend's run
 is counted from its first step to its last turning `shape_corners.STRAIGHT_STEP_DEG` or more (`_core_span`): where a
 rounded corner leaves the sides, a step turning 4-6 degrees falls in it or not as the points fall (issue 25, session
 33: a heptagon's corner rounded wide, 5, 13, 15, 15, 13, 6, was 6 steps one way and 5 the other)."""
-LONGEST_STEPS = 9
+LONGEST_STEPS = 10
+"""(9 until session 35: a triangle rounded over 0.4 of each side, drawn by the hurried hand, bent over 8, 9 and 10
+steps and read round; no loop of the design and fourth sources reads otherwise at 10.)"""
 COVERS = 0.88
 """...and the polygon where the straight runs' lines meet covers the loop this well (intersection over union) or better:
 a corner rounded over up to a third of each side leaves out a few hundredths."""
+EVEN_AT, EVEN_LEAST, EVEN_MOST = 0.9, 0.75, 1.2
+"""Corners evenly shared (issue 25, session 35): a loop doing this share of its turning or more at its corners, each
+turning between these shares of a regular polygon's corner, may run straight for as little as `EVEN_STRAIGHT_SHARE`
+and be covered as little as `EVEN_COVERS`: a triangle rounded over up to 0.42 of each side runs straight for 0.40-0.45
+of its steps and fills 0.79-0.83 of the triangle its sides make, and read round (`benchmarks/bench_rounded_polygons.py`,
+tune seeds). Of the design and fourth sources' round shapes (1,164 loops) with three corners, the nearest are hcira
+klarubbio/s07 circle05 (0.88 of the turning at its corners, the least 0.72 of an even one, covered 0.76) and a Quick,
+Draw! circle (tutorboard seed90210 #94: 0.89, 0.70, 0.78); of five, hcira jd4386/User01 circle10 (0.96, 0.78, 1.20)."""
+EVEN_CORNERS = (3,)
+"""...of three corners only: a circle whose radius wanders by its 5th or 6th harmonic (`tests/penmodels/rounded_boxes`'
+wobbly family, 4-10 % from the mean) turns as evenly at five or six bends, as straight between them (0.30-0.42), as a
+pentagon or hexagon rounded over a third of each side, and read as one (27 of 480 on seeds 30-149); none of three."""
+EVEN_STRAIGHT_SHARE = 0.3
+EVEN_COVERS = 0.78
 
 
 def _core_span(b: Bend, th: np.ndarray) -> int:
@@ -132,7 +148,8 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None, shallow: 
     short bends (at most `shape_corners.BEND_STEPS` steps of `shape_corners.STEPS` round, each turning
     `shape_corners.CORNER_DEG` or more, `LEAST_TURN` of a regular polygon's corner, all the same way) doing `AT_CORNERS`
     of the turning, straight runs (`STRAIGHT_SHARE`) between them; each vertex where the directions into and out of a
-    bend meet, the polygon covering the loop (`COVERS`). ``drawn``, the stroke's own points where given, must hold a
+    bend meet, the polygon covering the loop (`COVERS`); corners evenly shared (`EVEN_AT`) ask less of the straight
+    runs and the cover. ``drawn``, the stroke's own points where given, must hold a
     point between each two corners clear of both (`shape_corners.drawn_through`): a round loop sampled by a few events
     turns at each. Where ``shallow``, one corner of five or more may turn down to `SHALLOW_TURN` (`_even_enough`)."""
     if len(loop) < 8:
@@ -151,7 +168,9 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None, shallow: 
     turns = np.abs([b.degrees for b in corners])
     spans = np.array([_core_span(b, th) for b in corners])
     straight = float(np.mean(np.abs(th) < STRAIGHT_STEP_DEG))
-    if (float(turns.sum()) < AT_CORNERS * total or straight < STRAIGHT_SHARE
+    even = (n in EVEN_CORNERS and float(turns.sum()) >= EVEN_AT * total
+            and float(turns.min()) >= EVEN_LEAST * 360.0 / n and float(turns.max()) <= EVEN_MOST * 360.0 / n)
+    if (float(turns.sum()) < AT_CORNERS * total or straight < (EVEN_STRAIGHT_SHARE if even else STRAIGHT_SHARE)
             or not _even_enough(turns, straight, shallow) or float(turns.max()) > MOST_TURN * 360.0 / n
             or int(spans.max()) > LONGEST_BEND * STEPS / n + 1
             or abs(float(th.sum()) - math.copysign(360.0, th.sum())) > 30):
@@ -166,7 +185,7 @@ def rounded_corners(loop: np.ndarray, drawn: np.ndarray | None = None, shallow: 
             return None
         vertices.append(at)
     poly = np.array(vertices)
-    if overlap(poly, loop) < COVERS:
+    if overlap(poly, loop) < (EVEN_COVERS if even else COVERS):
         return None
     if drawn is not None:
         middles = np.array([(pts[(b.first + 1 + (b.last - b.first) % m // 2) % m]
