@@ -2,7 +2,7 @@
 search"): the unified JSON in which the Gester evaluation tool (`nmagrofuoco/Gester`, Magrofuoco, Vanderdonckt &
 Roselli 2021) republishes public 2D stroke gesture sets. `public_sets` pins where they lie (`public_sets.FIFTH_ENTRIES`)
 and gathers them; they are the fifth held-back group (`bench_generalisation.FIFTH_SETS`), scored only by
-``bench_generalisation.py --fifth``.
+``bench_generalisation.py --fifth``, but for ``sign``, opened on 2026-12-07 (`SIGN_SETS`, ``--sign``).
 
 A file is one gesture: ``{"name": label, "subject": n, "date": ..., "paths": {"Pen" | "Finger": {"strokes": [{"x",
 "y", "t", "stroke_id", ...}, ...]}}, "device": {"osBrowserInfo", "pen", "finger", "mouse", ...}}``, its points in

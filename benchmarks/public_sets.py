@@ -18,7 +18,8 @@ players, a country a source; set ``tutorboard``, one person's pen strokes), the 
 (`bench_generalisation.FOURTH_SETS`: scored only by ``--fourth``); and the sets of the fifth search (`FIFTH_ENTRIES`,
 read by `fifth_sets`: sets ``sign``, ``lowvision``, ``eds``, ``mmgplus``, ``homus``, ``laviola``, ``nicicon``, public
 2D gesture sets as the Gester tool republishes them), the fifth held-back group (`bench_generalisation.FIFTH_SETS`:
-scored only by ``--fifth``). Only Quick, Draw! (CC BY 4.0) carries a licence that allows copying it, and nothing is
+scored only by ``--fifth``) but for ``sign``, opened as design material on 2026-12-07 (`SIGN_SETS`, ``--sign``).
+Only Quick, Draw! (CC BY 4.0) carries a licence that allows copying it, and nothing is
 committed; a repository is read from
 ``DIR/<owner>+<name>/repo`` (as the fetch tool leaves them) or cloned bare into the cache (`student_sets.git_dir`).
 

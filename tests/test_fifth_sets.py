@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_generalisation import FIFTH_SETS, FOURTH_SETS, THIRD_SETS, group_of, scored_rows, second_group
+from bench_generalisation import FIFTH_SETS, FOURTH_SETS, SIGN_SETS, THIRD_SETS, group_of, scored_rows, second_group
 from fifth_sets import gester_gesture
 from label_kinds import read_table
 from mirror_repo import commit_mirror
@@ -54,11 +54,12 @@ def test_a_gesture_file_is_one_row_its_person_its_folders_its_pen_downs_by_strok
                                                                pytest.approx(20.706 + 150, abs=1e-3), 15.0]]
     assert [len(s) for s in rows[3]["strokes"]] == [6, 6] and rows[3]["strokes"][1][0][2] == 0.0
     assert rows[0]["file"] == f"{REPO}@{head[:7]}:datasets/2D/SIGN/writer001/sessionA/circle_left-1-0.json"
-    assert scored_rows(rows)[0] == []  # the fifth held-back group: out of every run but --fifth
-    kept, left = scored_rows(rows, fifth=True)
+    assert scored_rows(rows)[0] == []  # sign, opened from the fifth group: out of every run but --sign
+    assert scored_rows(rows, fifth=True)[0] == []
+    kept, left = scored_rows(rows, sign=True)
     assert [(r["label"], sorted(r["accepts"])) for r in kept] == [("circle_left", ["circle", "ellipse"]),
                                                                    ("left", ["line"])]
-    assert left == {"sign snail: no kind stands for it": 1, "sign x: drawn in 2 strokes": 1}
+    assert left == {"sign snail: no kind stands for it": 1, "sign x: no kind stands for it": 1}
 
 
 def test_only_the_named_subfolders_are_read_and_one_person_on_two_devices_is_one_source(tmp_path) -> None:
@@ -112,8 +113,9 @@ def test_a_file_not_in_the_form_is_named_and_a_clock_that_runs_backwards_times_n
 
 def test_the_pinned_fifth_entries_are_the_fifth_group_each_read_from_its_own_folder() -> None:
     table = read_table()
-    assert {e.set_name for e in FIFTH_ENTRIES} == FIFTH_SETS
-    assert not FIFTH_SETS & (THIRD_SETS | FOURTH_SETS | {"dollar1", "itt", "hcira", "mmg", "ahmadosama", "gtiwari"})
+    assert {e.set_name for e in FIFTH_ENTRIES} == FIFTH_SETS | SIGN_SETS and not FIFTH_SETS & SIGN_SETS
+    assert not (FIFTH_SETS | SIGN_SETS) & (THIRD_SETS | FOURTH_SETS | {"dollar1", "itt", "hcira", "mmg", "ahmadosama",
+                                                                       "gtiwari"})
     for entry in FIFTH_ENTRIES:
         assert entry.form == GESTER and len(entry.commit) == 40 and table.of_set(entry.set_name)
         assert entry.folder.startswith("datasets/2D/") and entry.folder not in ("datasets/2D/$1", "datasets/2D/MMG")
@@ -144,17 +146,20 @@ def test_the_fifth_group_is_left_out_of_every_run_but_its_own(tmp_path, capsys, 
                 "strokes": [[[x, y, 10 * i] for i, (x, y) in enumerate(_ring(48, r))]]}
 
     earlier = [row("dollar1", "s02", "circle"), row("dollar1", "s03", "circle", 50), row("itt", "DerD4n", "circle")]
-    fifth = [row("sign", "writer001", "circle_left"), row("lowvision", "with_impairment/101", "circle", 45),
+    fifth = [row("homus", "7", "Whole-Note"), row("lowvision", "with_impairment/101", "circle", 45),
              row("eds", "EDS-1/1", "circle", 55)]
+    sign = [row("sign", "writer001", "circle_left", 47)]  # opened from the fifth group (`SIGN_SETS`): its own flag
     others = [row("hcira3", "team/user01", "circle", 41), row("hcira3", "team/user02", "circle", 42),
               row("quickdraw", "US", "circle", 43), row("quickdraw", "FI", "circle", 44)]
-    everything = earlier + fifth + others
+    everything = earlier + fifth + sign + others
     for flags in ({}, {"third": True}, {"fourth": True}):
         kept, left = scored_rows(everything, **flags)
         assert kept and {r["source"] for r in kept}.isdisjoint(FIFTH_SETS)
         assert sum(n for why, n in left.items() if "fifth held-back group" in why) == len(fifth)
+        assert sum(n for why, n in left.items() if "sign held-back group" in why) == len(sign)
     only, left = scored_rows(everything, fifth=True)
-    assert [r["source"] for r in only] == ["sign", "lowvision", "eds"] and sum(left.values()) == 7
+    assert [r["source"] for r in only] == ["homus", "lowvision", "eds"] and sum(left.values()) == 8
+    assert [r["source"] for r in scored_rows(everything, sign=True)[0]] == ["sign"]
     with pytest.raises(SystemExit, match="--fourth and --fifth: each held-back group is scored alone"):
         scored_rows(everything, fourth=True, fifth=True)
     for heldback, write in ((False, False), (True, False), (False, True), (True, True)):
@@ -179,6 +184,6 @@ def test_the_fifth_group_is_left_out_of_every_run_but_its_own(tmp_path, capsys, 
     monkeypatch.setattr(sys, "argv", ["bench_generalisation.py", str(path), "--fifth", "--defaults"])
     bench_generalisation.main()
     out = capsys.readouterr().out.split("### Leave one source out")[1]
-    assert "| sign:writer001 | 1 |" in out and "| lowvision:with_impairment/101 | 1 |" in out
+    assert "| homus:7 | 1 |" in out and "| lowvision:with_impairment/101 | 1 |" in out and "sign:" not in out
     assert "| eds:EDS-1/1 | 1 |" in out and "dollar1:" not in out and "hcira3:" not in out and "quickdraw:" not in out
     assert "The fifth held-back group (`FIFTH_SETS`): 3/3 = 100.00 %." in out
