@@ -117,9 +117,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    a few pixels is a fifth of its size; a pigtail's tails cross).
 4. Open strokes (`open_shapes`) are judged by how they turn, at the scale of the pen's noise: a round shape left
    open (more than 225 degrees one way, fitting an ellipse; or fitting one once a lead from inside or an end curled in
-   past the start, lying inside it, is cut: `round_cores`; or gone round past its start, closing within a third of
-   its length, once short tails of at most 15 % of the path that ran on out of it are cut: `round_cores.run_on_core`;
-   or once a flick where the pen lifted or landed, at most
+   past the start, lying inside it, is cut: `round_cores`; or once a flick where the pen lifted or landed, at most
    8 % of the path turning 45 degrees or more off the round path's own turning, is cut: `lift_hooks`; or whose points
    a busy mouse sent in a few bursts lie on an ellipse going round it: `pen_noise.round_in_bursts`; a stroke of a few
    far-apart events is judged smooth by the turns at its events, not along its chords:
@@ -247,8 +245,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `lopsided_braces.py`: a lopsided curly brace whose short half is a straight slant back from its point, its long
   half a bracket's square end and spine, read as a brace (a curve)
 - `round_cores.py`: a circle drawn with a lead from inside it or an end curling in past its start, read by its round
-  core (the ends cut while they lie inside the core's ellipse); one gone round past its start and run on out of the
-  loop by short tails, read by the loop (`run_on_core`)
+  core (the ends cut while they lie inside the core's ellipse)
 - `thin_braces.py`: a tall, thin curly brace (its point and curls within a line's stray) told from a line by its one
   sharp point between arms and its ends curling back behind them
 - `hooked_ticks.py`: a tick whose short arm is a few percent of the stroke (longer than a hook, shorter than the

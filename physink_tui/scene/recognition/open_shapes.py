@@ -201,12 +201,6 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
         if core is not None and rounded_bracket() is None:
             geom, kind = round_geometry(core)
             return Recognition(kind, 0.65, geom, (("curve", 0.5),))
-    # gone round past the start and run on out of the loop by short tails (one may bend back: the whole stroke need not
-    # turn one way), smoothly: the loop (`round_cores.run_on_core`)
-    run_on = round_cores.run_on_core(work, lambda e: e[4] < 0.6 * round_error(e, noise)) if smooth else None
-    if run_on is not None and rounded_bracket() is None:
-        geom, kind = round_geometry(run_on)
-        return Recognition(kind, 0.6, geom, (("curve", 0.5),))
     flicked = None if round_enough else lift_hooks.round_flicked(
         work, th, noise, lambda e: e[4] < 0.6 * round_error(e, noise), NEARLY_ROUND * math.pi, SMOOTH)
     if flicked is not None and rounded_bracket() is None:

@@ -7,10 +7,6 @@ fits all of it: the lead or the curl lies inside the round. What a reader sees i
 it. The core is found by cutting the end that lies farther inside the ellipse fitted so far, a little at a time
 (`STEP`, at most `MOST_CUT` of the path in all); what is cut must lie inside the core's ellipse (`INSIDE`): a pigtail's
 or a 6's tail runs out of its loop, an arc's or a question mark's does not turn most of a turn.
-
-Issue 25, session 36: a Tablet PC pen's circle often goes round past its start and runs on out of the loop, or lands
-outside it and crosses in (the `sign` set's ST5022 writers). Its tails are short against a pigtail's, and the loop
-between closes as a question mark's curl does not: `run_on_core` reads it by that loop.
 """
 
 from __future__ import annotations
@@ -81,45 +77,3 @@ def round_core(work: np.ndarray, fits: Callable[[EllipseFit], bool], min_turn: f
             lo += step
         else:
             hi -= step
-
-
-RUN_ON_CUT = 0.15
-"""At most this share of the path, both ends together, runs off a loop as its tails where the pen overshot its start
-and swung on out (`run_on_core`). Measured on the design group's 656 pigtails and question marks that reach the open
-reading (session 36, wt-bracket): a pigtail's tails are at least 0.20 of its path wherever the rest turns 1.6 pi and
-fits an ellipse; the ST5022 writers' circles of the `sign` set run on 0.03-0.17."""
-RUN_ON_TURN = 1.7 * math.pi
-"""The loop left once its tails are cut turns at least this far (nearly round, back past the start; the `sign` circles
-that overshoot turn 1.76-1.91 pi). A question mark's hook and curl may turn as far (dollar1 s04 medium question_mark10,
-its stem cut: 1.73 pi), so the loop must also close (`RUN_ON_GAP`)."""
-RUN_ON_GAP = 0.35
-"""The loop's ends (its tails cut) lie within this share of its length (the ellipse's longer axis) of each other: it
-came back round to its start. A question mark whose hook and curl turn that far leaves its loop open by about half its
-length (dollar1 s04 medium question_mark10: 0.47); the `sign` circles run on 0.17-0.29."""
-
-
-def run_on_core(work: np.ndarray, fits: Callable[[EllipseFit], bool]) -> EllipseFit | None:
-    """The ellipse of ``work``'s loop where the pen went round past its start and ran on out of the loop (or landed
-    outside it): ``work`` (an open stroke, equally spaced points) less tails at its ends, inside or outside the loop, of
-    at most `RUN_ON_CUT` of the path together, the rest turning `RUN_ON_TURN` or more, fitting an ellipse (``fits``)
-    and closing within `RUN_ON_GAP`; the least cut that does, the end cut first where both do. None where none does or
-    nothing need be cut (a tail outside a loop over `RUN_ON_CUT` is a pigtail's or a 6's, `round_core`'s)."""
-    th = sg.turning(work)
-    if float(np.abs(th).sum()) < RUN_ON_TURN:
-        return None  # no part turns farther than the whole path turns either way
-    n = len(work)
-    step = max(1, round(STEP * (n - 1)))
-    most = int(RUN_ON_CUT * (n - 1))
-    for cut in range(step, most + 1, step):
-        for tail in range(cut, -1, -step):
-            core = work[cut - tail:n - tail]
-            if len(core) < MIN_POINTS or abs(float(th[cut - tail:n - tail - 2].sum())) < RUN_ON_TURN:
-                continue
-            gap = float(np.hypot(*(core[-1] - core[0])))
-            if gap > RUN_ON_GAP * sg.bbox_diagonal(core):
-                continue  # open wider than any loop this size closes (its longer axis is within its box's diagonal)
-            ellipse = fit_ellipse(core)
-            if (ellipse is not None and ellipse[1] > 0 and ellipse[2] > 0 and fits(ellipse)
-                    and gap <= RUN_ON_GAP * 2 * max(ellipse[1], ellipse[2])):
-                return ellipse
-    return None
