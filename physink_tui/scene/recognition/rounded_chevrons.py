@@ -20,7 +20,8 @@ OUTER = 0.6
 the 40 % of each side nearest the point (the sign set's ST5022 writers round 20-40 % of each side)."""
 STRAIGHT = 0.06
 """Each side's outer part bows by at most this share of its chord (`stroke_geometry.chord_deviation`). An arc or a
-parenthesis turning as much bows its outer parts 0.08-0.2 (evenly turning, tan(turn * 0.3 / 4) / 2); the design
+parenthesis turning as much, evenly, bows its outer parts tan(turn * 0.3 / 4) / 2 (0.06 at 90 degrees, 0.08 at 120,
+0.1 at 150: the shallower ones are told by `SHARP_BEND`); the design
 group's braces, question marks and parentheses the rules read as curves with one bend and sides alike bow 0.167 or
 more; the sign set's chevrons that read as polylines bow 0.012-0.072 (5th-95th percentile), its ST5022 writers'
 chevrons read as curves 0.021-0.064 (10th-90th), their `curve_*` gestures (not scored) 0.063-0.171."""
@@ -38,6 +39,7 @@ SHARP_BEND = 0.55
 the corner is rounded, not the whole stroke bowed (the ST5022 writers' chevrons read as curves 0.48-0.69, 10th-90th;
 their `curve_*` gestures 0.29-0.54)."""
 
+
 def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float], ...] | None:
     """The start, corner and end of a chevron whose corner is a round bend, or None.
 
@@ -49,13 +51,7 @@ def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float]
     stroke's bounds need. A stroke hooked at an end so that it turns more than one way is left a curve (cutting such
     hooks read as many of the set's curve gestures polylines as chevrons). ``work``: the stroke as
     `open_shapes.classify_open` judges it; ``noise``: the pen's jitter in its units."""
-    if len(work) < 12:
-        return None
-    return _chevron(work, noise)
-
-
-def _chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float], ...] | None:
-    if len(sf.turn_lobes(shape_turning.coarse_turning(work, noise))) != 1:
+    if len(work) < 12 or len(sf.turn_lobes(shape_turning.coarse_turning(work, noise))) != 1:
         return None
     start, end = work[0], work[-1]
     d = end - start
