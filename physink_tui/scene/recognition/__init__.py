@@ -153,7 +153,10 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    polyline through the point farthest from its ends' line (`bracket_marks.rounded_point`), also once a hook where
    the pen landed or lifted, found as a corner within a tenth of the path from an end, is cut
    (`bracket_marks.unhooked_point`; not where its long arm curls on round the bend all along it, as a lopsided
-   parenthesis' long side does: `bracket_marks.curling_arm`). A polyline so read that
+   parenthesis' long side does: `bracket_marks.curling_arm`); a chevron swung round its corner (one bend turning
+   80-150 degrees about halfway along, the outer 60 % of each side straight, their lines meeting near the bend,
+   most of the turn made within 15 % of the path) is a polyline through where those lines meet
+   (`rounded_chevrons`; an arc or parenthesis turning as much bows its sides). A polyline so read that
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
    of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).
