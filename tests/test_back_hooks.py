@@ -1,8 +1,7 @@
-"""Issue 25, session 36: a straight line drawn with a Tablet PC pen whose pen hooked back where it landed or lifted
-(3-15 % of the path, the hook's chord within `open_marks.BACK_HOOK_DEG` of the line) reads as a line, by the stroke alone
-and through a whole session (journal -> replay -> project), where it read as a two-piece polyline
-(`open_marks.retraced_ends` cut only a piece lying along the line); a mark's short arm, standing farther off, stays a
-polyline.
+"""Issue 25, session 36: a straight line drawn with a Tablet PC pen that hooked back where it landed or lifted (3-15 %
+of the path, the hook's chord within `open_marks.BACK_HOOK_DEG` of the line) reads as a line, by the stroke alone and
+through a whole session (journal -> replay -> project), where it read as a two-piece polyline (`open_marks.
+retraced_ends` cut only a piece lying along the line); a mark's short arm, standing farther off, stays a polyline.
 
 The `sign` set's strokes (the ST5022 writers: design material) and the design sources' checks are read from the
 public-set caches (`benchmarks/public_sets.py`; no licence lets the project hold them) and skip without them."""
