@@ -3,9 +3,9 @@ swung.
 
 The open-stroke rules (`open_shapes`) ask every side of a polyline to be straight and every corner sharp, and a line
 to end where its extent ends; these tests say when a reader still sees the mark: a zig-zag's teeth whatever its ends
-do (`sawtooth`), a line without the piece its pen ran back along (`retraced_ends`), a line whose middle the hand's
-swing bowed one way and back (`swung_line`), a line drawn out and back whole, which closes a loop no reader takes for
-an ellipse (`out_and_back`). No I/O.
+do (`sawtooth`), a line without the piece its pen ran or hooked back along (`retraced_ends`), a line whose middle the
+hand's swing bowed one way and back (`swung_line`), a line drawn out and back whole, which closes a loop no reader
+takes for an ellipse (`out_and_back`). No I/O.
 """
 
 from __future__ import annotations
@@ -149,8 +149,9 @@ is looked at: a line's points never stand further off (a cheap test, made first)
 
 
 def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
-    """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`), or None when
-    neither end does: between its points farthest back and farthest on along its start-to-end direction."""
+    """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`) or is a hook
+    turned back off it (`BACK_HOOK_SHARE`, `BACK_HOOK_DEG`), or None when neither end does, or either end's piece is
+    neither: between its points farthest back and farthest on along its start-to-end direction."""
     chord = raw[-1] - raw[0]
     norm = float(np.hypot(*chord))
     if norm == 0.0:
