@@ -91,7 +91,7 @@ def test_a_hook_turned_back_is_cut_and_an_arm_is_not(share: float, degrees: floa
 
 def test_a_persons_hooked_line_is_a_line_body_through_a_session(tmp_path) -> None:
     """writer001's left line hooked back at both ends (`HOOKED_LINES`' first), drawn 300 px long by the careful
-    virtual pen through the thesis device: a polyline body of three points at main 02d2055."""
+    virtual pen through the thesis device: a polyline body of more than two points at main 02d2055."""
     row = cached_rows(SIGN).get(AT + HOOKED_LINES[0])
     assert row is not None
     pts = np.asarray(_stroke(row)[0], dtype=float)
