@@ -137,7 +137,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    turning each way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
    by running back along itself is judged without that piece (`open_marks.retraced_ends`), or by a hook the pen turned
-   back within 30 degrees of it where it landed or lifted, at most 15 % of the path (`open_marks.BACK_HOOK_DEG`: a
+   back within 30 degrees of it where it landed or lifted, at most 12.5 % of the path where it landed (a radical's
+   tick, drawn first, is longer) and 15 % where it lifted (`open_marks.BACK_HOOK_DEG`, `BACK_HOOK_LANDED_SHARE`: a
    mark's short arm stands farther off); one the hand's swing bowed one way and back (turning both ways, no point, no
    circle fitting its bow beyond the pen's own wobble, straying under 9 % of its length) is a line
    (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely as a circle, an end curling

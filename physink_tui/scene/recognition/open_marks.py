@@ -173,9 +173,10 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     if span == 0.0:
         return None
     unit = (b - a) / span
-    for end, turn, back in ((raw[:lo + 1], a, unit), (raw[hi:][::-1], b, -unit)):  # each end's piece, from its end
+    ends = ((raw[:lo + 1], a, unit, BACK_HOOK_LANDED_SHARE), (raw[hi:][::-1], b, -unit, BACK_HOOK_SHARE))
+    for end, turn, back, share in ends:  # each end's piece, from its end
         off = np.abs((end[:, 0] - a[0]) * unit[1] - (end[:, 1] - a[1]) * unit[0])
-        if float(off.max()) > RETRACE_OFF * span + noise and not _hooked_back(end, turn, back, length):
+        if float(off.max()) > RETRACE_OFF * span + noise and not _hooked_back(end, turn, back, share * length):
             return None
     return kept
 
@@ -190,12 +191,19 @@ stands farther off: the design and fourth groups' polylines whose rest is straig
 quarter of the path is cut (checks, ticks, v's, carets) stand it off by 38 degrees or more, and by 24-26 only where it
 is a fifth of the path or more (issue 25, session 36: docs/BENCHMARKS.md)."""
 
+BACK_HOOK_LANDED_SHARE = 0.125
+"""Where the pen landed, a hook is at most this share of the path (`BACK_HOOK_SHARE` holds where it lifted, the pen
+sweeping off): the ST5022 writers' lines hooked where the pen landed, 8.5-12.4 % of the path but for one writer's three
+(12.7-14.8 %), where it lifted 8-15 %; a barless radical's tick, drawn first and turned sharply into a long rise
+within 30 degrees, is 12.8 % of the path or more where this rule would cut it (`tests/penmodels/math_marks.
+barless_radical`, extra tuning seeds 2000-2998: issue 25, session 36, wt-hooks2)."""
 
-def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, length: float) -> bool:
+
+def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, most: float) -> bool:
     """Whether ``end`` (an end piece of the stroke, from the stroke's end to where it turns, ``turn``) is a hook turned
-    back along the line, which runs on from ``turn`` the way of ``back`` (a unit vector): `BACK_HOOK_SHARE`,
-    `BACK_HOOK_DEG` (``length``: the stroke's path)."""
-    if sg.path_length(end) > BACK_HOOK_SHARE * length:
+    back along the line, which runs on from ``turn`` the way of ``back`` (a unit vector): no longer than ``most``
+    (`BACK_HOOK_SHARE` or `BACK_HOOK_LANDED_SHARE` of the stroke's path), its chord within `BACK_HOOK_DEG`."""
+    if sg.path_length(end) > most:
         return False
     chord = end[0] - turn
     norm = float(np.hypot(*chord))
