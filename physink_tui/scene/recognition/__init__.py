@@ -136,13 +136,16 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    an arm, not a hook cut where the pen landed (`stroke_geometry.end_arm`). Four or more sharp corners in a row
    turning each way in turn, joined by straight sides drawn alike (a zig-zag's teeth), make a polyline whatever the
    stroke does before and after them (a loose lead-in, a curled tail: `open_marks.sawtooth`). A line begun or ended
-   by running back along itself is judged without that piece (`open_marks.retraced_ends`); one the hand's swing bowed
-   one way and back (turning both ways, no point, no circle fitting its bow beyond the pen's own wobble, straying under
-   9 % of its length) is a line (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely
-   as a circle, an end curling as a hook does (`open_marks.hooked_straight`), and a short line hooked where the pen
-   landed and where it lifted, judged with both hooks cut, unless its short ends stand off it to one side as a
-   tiny square bracket's arms do, square or about parallel, or its middle keeps a small brace's lost point
-   (`lines.unhooked`, `lines.HOOK_BACK_DEG`, `lines.HOOKS_SPLAY_DEG`, `lines.MIDDLE_SPREAD`). Beside a really sharp
+   by running back along itself is judged without that piece (`open_marks.retraced_ends`), or by a hook the pen turned
+   back within 30 degrees of it where it landed or lifted, at most 12.5 % of the path where it landed (a radical's
+   tick, drawn first, is longer) and 15 % where it lifted (`open_marks.BACK_HOOK_DEG`, `BACK_HOOK_LANDED_SHARE`: a
+   mark's short arm stands farther off); one the hand's swing bowed one way and back (turning both ways, no point, no
+   circle fitting its bow beyond the pen's own wobble, straying under 9 % of its length) is a line
+   (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely as a circle, an end curling
+   as a hook does (`open_marks.hooked_straight`), and a short line hooked where the pen landed and where it lifted,
+   judged with both hooks cut, unless its short ends stand off it to one side as a tiny square bracket's arms do, square
+   or about parallel, or its middle keeps a small brace's lost point (`lines.unhooked`, `lines.HOOK_BACK_DEG`,
+   `lines.HOOKS_SPLAY_DEG`, `lines.MIDDLE_SPREAD`). Beside a really sharp
    corner, a bend under `open_shapes.SHARP_CORNER` is an arm's wobble whose roundness does not make the mark round
    (`open_shapes._roundest_corner`). Marks these rules misjudge (`bracket_marks`): a square bracket with one corner
    rounded off (one sharp corner, half a turn one way, a straight spine) is a polyline through its rounded corner

@@ -3,9 +3,9 @@ swung.
 
 The open-stroke rules (`open_shapes`) ask every side of a polyline to be straight and every corner sharp, and a line
 to end where its extent ends; these tests say when a reader still sees the mark: a zig-zag's teeth whatever its ends
-do (`sawtooth`), a line without the piece its pen ran back along (`retraced_ends`), a line whose middle the hand's
-swing bowed one way and back (`swung_line`), a line drawn out and back whole, which closes a loop no reader takes for
-an ellipse (`out_and_back`). No I/O.
+do (`sawtooth`), a line without the piece its pen ran or hooked back along (`retraced_ends`), a line whose middle the
+hand's swing bowed one way and back (`swung_line`), a line drawn out and back whole, which closes a loop no reader
+takes for an ellipse (`out_and_back`). No I/O.
 """
 
 from __future__ import annotations
@@ -170,8 +170,9 @@ is looked at: a line's points never stand further off (a cheap test, made first)
 
 
 def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
-    """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`), or None when
-    neither end does: between its points farthest back and farthest on along its start-to-end direction."""
+    """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`) or is a hook
+    turned back off it (`BACK_HOOK_SHARE`, `BACK_HOOK_DEG`), or None when neither end does, or either end's piece is
+    neither: between its points farthest back and farthest on along its start-to-end direction."""
     chord = raw[-1] - raw[0]
     norm = float(np.hypot(*chord))
     if norm == 0.0:
@@ -185,17 +186,51 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
         return None
     length = sg.path_length(raw)
     kept = raw[lo:hi + 1]
-    cut = sg.path_length(raw[:lo + 1]) + sg.path_length(raw[hi:])
-    if cut > RETRACE_SHARE * length or len(kept) < 2:
-        return None
+    cuts = sg.path_length(raw[:lo + 1]), sg.path_length(raw[hi:])
+    if len(kept) < 2 or (sum(cuts) > RETRACE_SHARE * length and max(cuts) > BACK_HOOK_SHARE * length):
+        return None  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`)
     a, b = kept[0], kept[-1]
     span = float(np.hypot(*(b - a)))
     if span == 0.0:
         return None
     unit = (b - a) / span
-    ends = np.concatenate([raw[:lo + 1], raw[hi:]])
-    off = np.abs((ends[:, 0] - a[0]) * unit[1] - (ends[:, 1] - a[1]) * unit[0])
-    return kept if float(off.max()) <= RETRACE_OFF * span + noise else None
+    ends = ((raw[:lo + 1], a, unit, BACK_HOOK_LANDED_SHARE), (raw[hi:][::-1], b, -unit, BACK_HOOK_SHARE))
+    for end, turn, back, share in ends:  # each end's piece, from its end
+        off = np.abs((end[:, 0] - a[0]) * unit[1] - (end[:, 1] - a[1]) * unit[0])
+        if float(off.max()) > RETRACE_OFF * span + noise and not _hooked_back(end, turn, back, share * length):
+            return None
+    return kept
+
+
+BACK_HOOK_SHARE = 0.15
+BACK_HOOK_DEG = 30.0
+"""An end piece that strays farther than `RETRACE_OFF` off the line is still the pen landing or lifting where it is a
+hook turned back: at most this share of the path, its chord (from where it turns to the stroke's end) within this
+angle of the line running back from there (the sign set's Tablet PC pens, ST5022 writers: lines hooked at an end by
+3-15 % of their path, the hook's chord 0-30 degrees off the line, `tests/test_back_hooks.py`). A mark's short arm
+stands farther off: the design and fourth groups' polylines whose rest is straight once an end piece of at most a
+quarter of the path is cut (checks, ticks, v's, carets) stand it off by 38 degrees or more, and by 24-26 only where it
+is a fifth of the path or more (issue 25, session 36: docs/BENCHMARKS.md)."""
+
+BACK_HOOK_LANDED_SHARE = 0.125
+"""Where the pen landed, a hook is at most this share of the path (`BACK_HOOK_SHARE` holds where it lifted, the pen
+sweeping off): the ST5022 writers' lines hooked where the pen landed, 8.5-12.4 % of the path but for one writer's three
+(12.7-14.8 %), where it lifted 8-15 %; a barless radical's tick, drawn first and turned sharply into a long rise
+within 30 degrees, is 12.8 % of the path or more where this rule would cut it (`tests/penmodels/math_marks.
+barless_radical`, extra tuning seeds 2000-2998: issue 25, session 36, wt-hooks2)."""
+
+
+def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, most: float) -> bool:
+    """Whether ``end`` (an end piece of the stroke, from the stroke's end to where it turns, ``turn``) is a hook turned
+    back along the line, which runs on from ``turn`` the way of ``back`` (a unit vector): no longer than ``most``
+    (`BACK_HOOK_SHARE` or `BACK_HOOK_LANDED_SHARE` of the stroke's path), its chord within `BACK_HOOK_DEG`."""
+    if sg.path_length(end) > most:
+        return False
+    chord = end[0] - turn
+    norm = float(np.hypot(*chord))
+    if norm == 0.0:
+        return True
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(chord @ back) / norm)))) <= BACK_HOOK_DEG
 
 
 def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: float | None = None) -> bool:
