@@ -16,7 +16,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from physink_tui.scene.recognition import lines, shape_turning
+from physink_tui.scene.recognition import bowed_lines, lines, shape_turning
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Ellipse, Line, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_circle, fit_line
@@ -248,7 +248,8 @@ def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: 
         return False  # checked first: most strokes are far from straight
     th = shape_turning.coarse_turning(coarse, noise)
     net, every = abs(float(th.sum())), float(np.abs(th).sum())
-    if math.degrees(net) >= SWUNG_TURN_DEG or (net > ONE_WAY * every and not flicked(coarse)):
+    if math.degrees(net) >= SWUNG_TURN_DEG or (net > ONE_WAY * every and not (
+            flicked(coarse) or bowed_lines.slanted_flick(coarse))):  # (lying far off the upright: no parenthesis)
         return False
     length = sg.path_length(coarse)
     middle = coarse[len(coarse) // 5: len(coarse) - len(coarse) // 5]
