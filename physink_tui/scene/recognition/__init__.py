@@ -139,10 +139,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    by running back along itself is judged without that piece (`open_marks.retraced_ends`), or by a hook the pen turned
    back within 30 degrees of it where it landed or lifted, at most 12.5 % of the path where it landed (a radical's
    tick, drawn first, is longer) and 15 % where it lifted (`open_marks.BACK_HOOK_DEG`, `BACK_HOOK_LANDED_SHARE`: a
-   mark's short arm stands farther off), or by a straight end run back within 12 degrees of it for up to 30 % of the
-   path, or one curled onto it where the pen lifted, bowing off its own chord, standing up to 60 degrees off within
-   15 % (`hooked_lines`: a mark's short arm is straight); one the hand's swing bowed one way and back (turning both
-   ways, no point, no circle fitting its bow beyond the pen's own wobble, straying under 9 % of its length) is a line
+   mark's short arm stands farther off); one the hand's swing bowed one way and back (turning both ways, no point, no
+   circle fitting its bow beyond the pen's own wobble, straying under 9 % of its length) is a line
    (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely as a circle, an end curling
    as a hook does (`open_marks.hooked_straight`), and a short line hooked where the pen landed and where it lifted,
    judged with both hooks cut, unless its short ends stand off it to one side as a tiny square bracket's arms do, square
@@ -235,8 +233,6 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
 - `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line
   begun by sliding back along itself or bowed by the hand's swing
-- `hooked_lines.py`: a line's end pieces cut as the pen's besides `open_marks`' hooks: run back narrowly along it, or
-  curled onto it where the pen lifted
 - `bracket_marks.py`: square brackets with a rounded corner, curly braces with a looped or straight-armed point and
   ticks swung round their point, which the open-stroke rules misjudge
 - `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline

@@ -16,7 +16,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from physink_tui.scene.recognition import hooked_lines, lines, shape_turning
+from physink_tui.scene.recognition import lines, shape_turning
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Ellipse, Line, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_circle, fit_line
@@ -184,23 +184,20 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     lo, hi = int(np.argmin(along)), int(np.argmax(along))
     if (lo == 0 and hi == len(raw) - 1) or lo >= hi:
         return None
-    kept = raw[lo:hi + 1]
     length = sg.path_length(raw)
-    cuts = sg.path_length(raw[:lo + 1]) / length, sg.path_length(raw[hi:]) / length  # shares of the path
-    if len(kept) < 2 or (sum(cuts) > RETRACE_SHARE and not hooked_lines.may_cut(cuts, BACK_HOOK_SHARE)):
-        return None  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`; narrow ones `hooked_lines`)
+    kept = raw[lo:hi + 1]
+    cuts = sg.path_length(raw[:lo + 1]), sg.path_length(raw[hi:])
+    if len(kept) < 2 or (sum(cuts) > RETRACE_SHARE * length and max(cuts) > BACK_HOOK_SHARE * length):
+        return None  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`)
     a, b = kept[0], kept[-1]
     span = float(np.hypot(*(b - a)))
     if span == 0.0:
         return None
     unit = (b - a) / span
-    ends = ((raw[:lo + 1], a, unit, cuts[0], BACK_HOOK_LANDED_SHARE, True),
-            (raw[hi:][::-1], b, -unit, cuts[1], BACK_HOOK_SHARE, False))
-    for end, turn, back, cut, most, landed in ends:  # each end's piece, from its end
+    ends = ((raw[:lo + 1], a, unit, BACK_HOOK_LANDED_SHARE), (raw[hi:][::-1], b, -unit, BACK_HOOK_SHARE))
+    for end, turn, back, share in ends:  # each end's piece, from its end
         off = np.abs((end[:, 0] - a[0]) * unit[1] - (end[:, 1] - a[1]) * unit[0])
-        if float(off.max()) > RETRACE_OFF * span + noise and not (
-                _hooked_back(end, turn, back, cut, most) or hooked_lines.narrow_back(end, turn, back, cut, noise)
-                or (not landed and hooked_lines.curled(end, turn, back, cut, most, noise))):
+        if float(off.max()) > RETRACE_OFF * span + noise and not _hooked_back(end, turn, back, share * length):
             return None
     return kept
 
@@ -223,12 +220,11 @@ within 30 degrees, is 12.8 % of the path or more where this rule would cut it (`
 barless_radical`, extra tuning seeds 2000-2998: issue 25, session 36, wt-hooks2)."""
 
 
-def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, cut: float, most: float) -> bool:
-    """Whether ``end`` (an end piece of the stroke, from the stroke's end to where it turns, ``turn``; ``cut`` of the
-    stroke's path) is a hook turned back along the line, which runs on from ``turn`` the
-    way of ``back`` (a unit vector): no more than ``most`` (`BACK_HOOK_SHARE` or `BACK_HOOK_LANDED_SHARE`), its chord
-    within `BACK_HOOK_DEG`."""
-    if cut > most:
+def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, most: float) -> bool:
+    """Whether ``end`` (an end piece of the stroke, from the stroke's end to where it turns, ``turn``) is a hook turned
+    back along the line, which runs on from ``turn`` the way of ``back`` (a unit vector): no longer than ``most``
+    (`BACK_HOOK_SHARE` or `BACK_HOOK_LANDED_SHARE` of the stroke's path), its chord within `BACK_HOOK_DEG`."""
+    if sg.path_length(end) > most:
         return False
     chord = end[0] - turn
     norm = float(np.hypot(*chord))
