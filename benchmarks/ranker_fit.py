@@ -120,12 +120,15 @@ def model(d: dict, idx: np.ndarray, recipe: Recipe, groups: np.ndarray | None = 
 
 
 def weights(d: dict, use: np.ndarray, recipe: Recipe, groups: np.ndarray | None) -> np.ndarray | None:
-    """Each stroke's weight in the likelihood: people's strokes 1, the copies of a stroke ``copies_weight`` in all;
-    with ``groups``, scaled so that every group weighs the same."""
+    """Each stroke's weight in the likelihood: people's strokes 1, the copies of a stroke ``copies_weight`` in all,
+    times ``d["scale"]`` where given; with ``groups``, scaled so that every group weighs the same."""
     real = d["real"][use]
-    if real.all() and groups is None:
+    scale = d.get("scale")  # a factor a row (`ranker_sign`: the sign writers weighed as design people)
+    if real.all() and groups is None and scale is None:
         return None
     base = np.where(real, 1.0, recipe.copies_weight / max(d.get("copies", 1), 1))
+    if scale is not None:
+        base = base * scale[use]
     if groups is None:
         return base
     g = groups[use].tolist()

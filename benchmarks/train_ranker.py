@@ -3,7 +3,7 @@
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--folds set,device,source,in,shipped] [--brief]
        [--lam L[,L...]] [--weigh W] [--drop F[,F...]] [--margins M[,M...]] [--inner K] [--inner-by source|set]
        [--augment K] [--augment-seed S] [--events-share E] [--copies-weight A] [--no-gate] [--skip-guarded]
-       [--heldback] [--write PATH]
+       [--heldback] [--write PATH] [--sign SIGN_JSONL [--sign-weigh source|set] [--fourth Q.jsonl T.jsonl]]
 
 For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve, or
 a polygon left open (`ranker.family`), the ranker scores the family's kinds by ``w_kind . phi + a * [the rules'
@@ -23,6 +23,11 @@ check, ...) keep the rules' kind in every fold, as in the app; they are fitted o
 gives the whole stroke) unless ``--skip-guarded``: docs/BENCHMARKS.md, "Why a refit of the ranker loses people's
 readings".
 Tables per set and device (``--brief``: only these), per source and class; a ``RESULT`` line per run.
+``--sign`` fits every fold twice, without and with the opened sign set's ST5022 writers weighed as design people
+(``--sign-weigh``), and scores both side by side on the set and device folds, the X61 writers (fitted on by neither),
+the ST writers held out and the fourth group (``--fourth``): `ranker_sign`; with ``--write`` it fits on every design
+source and all sign writers (measured, not shipped: docs/BENCHMARKS.md, "The sign set as the ranker's training
+material").
 
 The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given;
 the second (`bench_generalisation.held_back_new`) has been design material since it was opened
@@ -258,7 +263,23 @@ def main() -> None:
     ap.add_argument("--skip-guarded", action="store_true", help="fit on no stroke the recogniser never asks the "
                     "model about (`Asked`: a wave, a kept bracket or brace, a zig-zag's teeth, a sparse curve, ...)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
+    ap.add_argument("--sign", type=Path, help="the sign set: fit each fold without and with its ST5022 writers and "
+                    "score both side by side (`ranker_sign`); with --write, fit on it all")
+    ap.add_argument("--sign-weigh", choices=("source", "set"), default="source", help="each sign writer weighs as "
+                    "the mean design person, or the set as the mean design set")
+    ap.add_argument("--fourth", type=Path, nargs="*", default=[], help="with --sign: the fourth group's sets, read "
+                    "by each model fitted on every design source")
     args = ap.parse_args()
+    if args.sign:  # the design rows as --write reads them; the first group is neither fitted on nor scored by folds
+        if args.heldback:
+            raise SystemExit("--sign: not with --heldback")
+        import ranker_sign
+        rows = []
+        for path in args.sets:
+            rows += read_set(path)
+        rows, first, new = rows_read(rows, False, True)
+        ranker_sign.run(args, rows, first | new, recipe_from(args, float(args.lam.split(",")[0])))
+        return
     schemes = [f for f in args.folds.split(",") if f]
     if not set(schemes) <= {"set", "device", "source", "in", "shipped"}:
         raise SystemExit(f"--folds: {args.folds!r}: each of set, device, source, in, shipped")
