@@ -20,7 +20,7 @@ from physink_tui.scene.recognition import (
 from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.candidates import ellipse_distances
-from physink_tui.scene.recognition.loop_ends import SMALL_LOOP, cut_ends
+from physink_tui.scene.recognition.loop_ends import HOOKED_TURN, SMALL_LOOP, cut_ends, turned_by_hooks
 from physink_tui.scene.recognition.polygon_checks import SHARP_CORNER, SHARP_SHARE, crossings
 from physink_tui.scene.recognition.shape_fits import EllipseFit, fit_ellipse
 
@@ -238,7 +238,7 @@ def closed_loop(raw: np.ndarray, work: np.ndarray, diag: float, sigma: float, fi
         if back and (not fit or (ellipse is not None and ellipse[4] < open_shapes.round_error(ellipse, sigma))):
             return True, loop, ellipse
         once = loop if back else None
-    if turned > 2.15 * math.pi and sf.retraced(work, th, diag):
+    if turned > HOOKED_TURN * math.pi and sf.retraced(work, th, diag) and not turned_by_hooks(work):
         return True, sf.one_loop(work, th), None  # a shape gone round twice over the same sides: once is enough
     if (once is not None and TWICE_ROUND < turned < SPIRAL_TURN and self_crossings(work) < STAR_CROSSINGS
             and _beside(work, once, diag)):

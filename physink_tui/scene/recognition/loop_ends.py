@@ -97,3 +97,22 @@ def without_retraced_ends(work: np.ndarray, diag: float) -> np.ndarray:
     if start == 0 and end == len(work):
         return work
     return sg.resample(work[start:end], len(work))
+
+
+
+HOOKED_TURN = 2.15
+"""A stroke turning past this many half turns one way is asked whether it runs back over its first lap
+(`closed_loops.closed_loop`, `stroke_features.retraced`): a shape drawn twice."""
+UNHOOKED_TURN = 1.5
+"""Unless, once the hooks at its ends are cut (`stroke_geometry.remove_hooks`), it turns at most this many half turns:
+no lap at all, so nothing drawn twice (`turned_by_hooks`)."""
+
+
+def turned_by_hooks(work: np.ndarray) -> bool:
+    """Whether ``work`` turns past `HOOKED_TURN` half turns only by the hooks at its ends (those
+    `stroke_geometry.remove_hooks` cuts), the rest turning at most `UNHOOKED_TURN`: a chevron hooked at both ends,
+    each hook curling the way its point turns (the sign set's ST5022 writers' chevrons read as polygons turn
+    2.63-2.78 pi in all, 0.80-0.99 pi without their hooks; issue 25, session 37), whose last hook, doubling back along
+    its last side, runs over the end of its first lap (`stroke_features.retraced`)."""
+    unhooked = sg.remove_hooks(work)
+    return len(unhooked) < len(work) and abs(float(np.add.reduce(sg.turning(unhooked)))) <= UNHOOKED_TURN * np.pi
