@@ -99,7 +99,6 @@ def without_retraced_ends(work: np.ndarray, diag: float) -> np.ndarray:
     return sg.resample(work[start:end], len(work))
 
 
-
 HOOKED_TURN = 2.15
 """A stroke turning past this many half turns one way is asked whether it runs back over its first lap
 (`closed_loops.closed_loop`, `stroke_features.retraced`): a shape drawn twice."""
