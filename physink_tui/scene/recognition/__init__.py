@@ -159,8 +159,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    parenthesis' long side does: `bracket_marks.curling_arm`); a chevron swung round its corner (one bend turning
    80-150 degrees about halfway along, the outer 60 % of each side straight, their lines meeting near the bend,
    most of the turn made within 15 % of the path) is a polyline through where those lines meet
-   (`rounded_chevrons`; an arc or parenthesis turning as much bows its sides), also once an end swung back 30
-   degrees or more against the bend is cut, the bend still about halfway along the whole stroke. A polyline so read that
+   (`rounded_chevrons`; an arc or parenthesis turning as much bows its sides). A polyline so read that
    bends at least twice inside its ends, each the other way from the one before, every bend round and the
    sides between them curving (an S each), is a wave, a squiggle: a curve (`waves`), not asked of the ranker below;
    of two bends only (an S lying down), its longest piece must curve too (a radical sign's rise runs straight).

@@ -40,13 +40,6 @@ the corner is rounded, not the whole stroke bowed (the ST5022 writers' chevrons 
 their `curve_*` gestures 0.29-0.54)."""
 
 
-SWUNG = 30.0
-"""An end turning back against the stroke's main way by at least this much (degrees, net, at the coarse scale of
-`shape_turning.coarse_turning`) is swung off the chevron: the ST5022 writers swing an end back 35-108 degrees over
-8-36 % of the path; a hook of the pen landing or lifting is cut before (`stroke_geometry.remove_hooks`). 20-30 gain the
-same chevrons; at 40 three of seven, swung 35-39 degrees, are lost."""
-
-
 def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float], ...] | None:
     """The start, corner and end of a chevron whose corner is a round bend, or None.
 
@@ -55,49 +48,11 @@ def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float]
     (`SIDE_SHARE`), and the outer `OUTER` of each side straight (`STRAIGHT`) with the two sides' lines turning
     `SIDES_MEET` and meeting near the point (`CORNER_REACH`), the stroke turning at a rounded corner, not bowed all
     along (`SHARP_BEND`). The corner is where those lines meet, drawn back towards the point only as far as the
-    stroke's bounds need. A stroke whose end swings back against its corner's way (`SWUNG`) is judged the same once
-    that end is cut, its point still about halfway along the whole stroke: the hand carried on past the chevron's end
-    (a C curling at an end bows its sides or turns all along, and stays a curve). ``work``: the stroke as
+    stroke's bounds need. A stroke hooked at an end so that it turns more than one way is left a curve (cutting such
+    hooks read as many of the set's curve gestures polylines as chevrons). ``work``: the stroke as
     `open_shapes.classify_open` judges it; ``noise``: the pen's jitter in its units."""
-    if len(work) < 12:
+    if len(work) < 12 or len(sf.turn_lobes(shape_turning.coarse_turning(work, noise))) != 1:
         return None
-    coarse = shape_turning.coarse_turning(work, noise)
-    if len(sf.turn_lobes(coarse)) == 1:
-        found = _chevron(work)
-        if found is not None:
-            return found
-    body, before, whole = _unswung(work, coarse)
-    if body is None or len(sf.turn_lobes(shape_turning.coarse_turning(body, noise))) != 1:
-        return None
-    return _chevron(body, before, whole)
-
-
-def _unswung(work: np.ndarray, coarse: np.ndarray) -> tuple[np.ndarray | None, float, float]:
-    """``work`` without the ends that swing back against its main way (`SWUNG`), resampled to as many points, the
-    length of path cut before it and the whole path's; None where no end swings (or too little is left to judge)."""
-    th = np.degrees(coarse)
-    way = 1.0 if float(th.sum()) >= 0.0 else -1.0
-    half = (len(th) + 1) // 2  # the coarse copy's points are equally spaced along the path
-    cuts = []
-    for turns in (way * th, way * th[::-1]):
-        done = np.concatenate([[0.0], np.add.accumulate(turns)])[:half + 1]
-        k = int(done.argmin())
-        cuts.append(k / (len(th) + 1) if -float(done[k]) >= SWUNG else 0.0)
-    if cuts == [0.0, 0.0]:
-        return None, 0.0, 0.0
-    along = sg.along(work)
-    length = float(along[-1])
-    a = int(np.searchsorted(along, cuts[0] * length))
-    b = int(np.searchsorted(along, (1.0 - cuts[1]) * length, side="right"))
-    if b - a < 12:
-        return None, 0.0, 0.0
-    return sg.resample(work[a:b], len(work)), float(along[a]), length
-
-
-def _chevron(work: np.ndarray, before: float = 0.0, whole: float | None = None
-             ) -> tuple[tuple[float, float], ...] | None:
-    """`rounded_chevron`'s tests of one-lobed ``work``: the whole stroke, or the part of one ``whole`` long that
-    starts ``before`` along it (its point's share of the way is then the whole stroke's)."""
     start, end = work[0], work[-1]
     d = end - start
     if float(np.hypot(*d)) == 0.0:
@@ -106,7 +61,7 @@ def _chevron(work: np.ndarray, before: float = 0.0, whole: float | None = None
     k = int(np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]).argmax())
     along = sg.along(work)
     length = float(along[-1])
-    if not SIDE_SHARE[0] <= (before + along[k]) / (length if whole is None else whole) <= SIDE_SHARE[1]:
+    if not SIDE_SHARE[0] <= along[k] / length <= SIDE_SHARE[1]:
         return None
     first = work[:max(int(np.searchsorted(along, OUTER * along[k])), 2)]
     second = work[min(int(np.searchsorted(along, along[k] + (1.0 - OUTER) * (length - along[k]))), len(work) - 2):]
