@@ -7,8 +7,9 @@ Every K-th scored stroke of the SETs (`bench_generalisation.scored_rows`, the he
 (`bench_reversed.reversed_stroke`: points reversed, times running forward from the start). Per feature: the share of
 strokes whose value moves by more than `TOLERANCE` of the feature's spread (a 0/1 feature: flips), and the mean move
 over the spread. `LEANING` holds the features that move on more than `LEANING_SHARE` of the strokes measured so
-(session 38); `train_ranker.py --drop-leaning` leaves them out of the fit, so that a refit scores a stroke alike from
-either end but for the rules' own answer (docs/BENCHMARKS.md, "The ranker refitted on features alike from either end").
+(session 38); `train_ranker.py --drop-leaning` leaves them out of the fit, so that a refit scores a stroke nearly
+alike from either end but for the rules' own answer (docs/BENCHMARKS.md, "The ranker refitted with unasked strokes
+weighed less, and on features alike from either end").
 """
 
 from __future__ import annotations

@@ -12,8 +12,8 @@ design sources held out in K groups of whole sources (`ranker_fit.inner_folds`),
 a time (for the design fit, the model fitted on every design source) and the fourth group (quickdraw, tutorboard) read
 by the model fitted on every design source (and the ST writers). Sign strokes are not copied (``--augment`` copies
 the design strokes alone). The first held-back group is described but never fitted on nor scored here, as in the
-folds of ``--write``. With ``--write``, the model is fitted on every design source and the ST writers, weighed so (since session 38 the
-X61 writers are never fitted on: they are the validation).
+folds of ``--write``. With ``--write``, the model is fitted on every design source and the ST writers, weighed so
+(since session 38 the X61 writers are never fitted on: they are the validation).
 """
 
 from __future__ import annotations
