@@ -27,7 +27,8 @@ class Recipe:
     or, with ``inner_by`` "set", one fold a set; the training-only copies' total weight against the people's
     strokes (``copies_weight``, when ``d`` holds copies); ``skip_guarded``: fit on no stroke the recogniser never asks
     the model about (``d["guarded"]``; fitted on, they pull the model towards the rules' answer: docs/BENCHMARKS.md,
-    "Why a refit of the ranker loses people's readings")."""
+    "Why a refit of the ranker loses people's readings"), or, with ``guarded_weight`` under 1, fit on them at that
+    weight each (a smaller pull, not none)."""
 
     lam: float = 1e-2
     weigh: str = "stroke"
@@ -37,6 +38,7 @@ class Recipe:
     inner_by: str = "source"
     copies_weight: float = 1.0
     skip_guarded: bool = False
+    guarded_weight: float = 1.0
 
     def name(self) -> str:
         parts = [f"lam {self.lam:g}", f"weigh {self.weigh}", "margins " + "/".join(f"{m:g}" for m in self.margins),
@@ -45,6 +47,8 @@ class Recipe:
             parts.append("drop " + ",".join(self.drop))
         if self.skip_guarded:
             parts.append("unasked strokes not fitted on")
+        elif self.guarded_weight != 1.0:
+            parts.append(f"unasked strokes weigh {self.guarded_weight:g}")
         return "; ".join(parts)
 
 
@@ -121,12 +125,15 @@ def model(d: dict, idx: np.ndarray, recipe: Recipe, groups: np.ndarray | None = 
 
 def weights(d: dict, use: np.ndarray, recipe: Recipe, groups: np.ndarray | None) -> np.ndarray | None:
     """Each stroke's weight in the likelihood: people's strokes 1, the copies of a stroke ``copies_weight`` in all,
-    times ``d["scale"]`` where given; with ``groups``, scaled so that every group weighs the same."""
+    times ``d["scale"]`` where given, times ``recipe.guarded_weight`` for a stroke the recogniser never asks the model
+    about (``d["guarded"]``); with ``groups``, scaled so that every group weighs the same."""
     real = d["real"][use]
     scale = d.get("scale")  # a factor a row (`ranker_sign`: the sign writers weighed as design people)
-    if real.all() and groups is None and scale is None:
+    if real.all() and groups is None and scale is None and recipe.guarded_weight == 1.0:
         return None
     base = np.where(real, 1.0, recipe.copies_weight / max(d.get("copies", 1), 1))
+    if recipe.guarded_weight != 1.0:
+        base = base * np.where(d["guarded"][use], recipe.guarded_weight, 1.0)
     if scale is not None:
         base = base * scale[use]
     if groups is None:

@@ -7,11 +7,13 @@ twice: on the design sources alone (**design**) and on them plus the ST5022 writ
 design set) does not swamp the rest: **source**, each writer as much as the mean design person (its strokes and
 copies, as the recipe weighs them), or **set**, all of them as much as the mean design set. Both fits are scored on
 the design sets held out whole (set folds), the devices held out whole (device folds; a sign stroke is a stylus's),
-the X61 writers (writer1000-1009: fitted on by neither, scored pooled, never listed), the ST writers held out one at
+the X61 writers (writer1000-1009: fitted on by neither, scored pooled, never listed), with ``--source-folds K`` the
+design sources held out in K groups of whole sources (`ranker_fit.inner_folds`), the ST writers held out one at
 a time (for the design fit, the model fitted on every design source) and the fourth group (quickdraw, tutorboard) read
 by the model fitted on every design source (and the ST writers). Sign strokes are not copied (``--augment`` copies
 the design strokes alone). The first held-back group is described but never fitted on nor scored here, as in the
-folds of ``--write``. With ``--write``, the model is fitted on every design source and ALL sign writers, weighed so.
+folds of ``--write``. With ``--write``, the model is fitted on every design source and the ST writers, weighed so
+(since session 38 the X61 writers are never fitted on: they are the validation).
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ import numpy as np
 import train_ranker as tr
 from bench_generalisation import scored_rows
 from bench_recognition import table
-from ranker_fit import Recipe, answers, gated_model, model
+from ranker_fit import Recipe, answers, gated_model, inner_folds, model
 from ranker_tables import model_module_text
 from stroke_sets import Row, read_set, source_of
 
@@ -135,14 +137,15 @@ def run(args, rows: list[Row], group: set[str], recipe: Recipe) -> None:
         return answers(d, idx, m, every)
 
     real_design = design[real[design]]
-    columns = ["set folds", *tr.SETS, "device folds", "X61 (held)", "ST (held)", "quickdraw", "tutorboard",
-               "design in-sample"]
-    out = [["rules alone", *(_cells(d["rules_right"], real_design, sets, devices, x61, st, fourth, every))]]
+    shown = x61[:0] if args.hide_x61 else x61  # the validation writers' cells, hidden while tuning
+    columns = ["set folds", *tr.SETS, "device folds", "source folds", "X61 (held)", "ST (held)", "quickdraw",
+               "tutorboard", "design in-sample"]
+    out = [["rules alone", *(_cells(d["rules_right"], real_design, sets, devices, shown, st, fourth, every))]]
     shipped_got = np.zeros(n, dtype=bool)
     for idx in (real_design, x61, st, fourth):
         shipped_got[idx] = score(shipped, idx)
     out.append(["shipped model (fitted on design, not held out)",
-                *(_cells(shipped_got, real_design, sets, devices, x61, st, fourth, every))])
+                *(_cells(shipped_got, real_design, sets, devices, shown, st, fourth, every))])
     for name, pool, dm in (("design", design, d),
                            ("design + ST sign", np.concatenate([design, st]),
                             {**d, "scale": sign_scale(d, design, st, sources, args.sign_weigh, recipe.copies_weight)})):
@@ -156,6 +159,12 @@ def run(args, rows: list[Row], group: set[str], recipe: Recipe) -> None:
         for k in sorted(set(devices[real_design].tolist()) - {""}):
             test = real_design[devices[real_design] == k]
             dev[test] = score(fit(known[devices[origin[known]] != k], dm), test)
+        src = None
+        if args.source_folds:  # K groups of whole design sources; the ST writers stay in the +ST fits' pool
+            src = np.zeros(n, dtype=bool)
+            for held in inner_folds(sorted(set(sources[real_design].tolist())), args.source_folds):
+                test = real_design[np.isin(sources[real_design], held)]
+                src[test] = score(fit(pool[~np.isin(sources[origin[pool]], held)], dm), test)
         whole = fit(pool, dm)
         got[x61], got[fourth] = score(whole, x61), score(whole, fourth)
         if name == "design":
@@ -165,7 +174,7 @@ def run(args, rows: list[Row], group: set[str], recipe: Recipe) -> None:
                 test = st[sources[st] == w]
                 got[test] = score(fit(pool[sources[origin[pool]] != w], dm), test)
         insample = score(whole, real_design)
-        row = _cells(set_got, real_design, sets, devices, x61, st, fourth, every, dev, got)
+        row = _cells(set_got, real_design, sets, devices, shown, st, fourth, every, dev, got, src)
         row[-1] = f"{int(insample.sum())}"
         out.append([f"refit on {name}", *row])
         print(f"RESULT {name} | margin {whole['margin']:g} | rules' weight {whole['theta'][-1]:.3f} | "
@@ -177,21 +186,23 @@ def run(args, rows: list[Row], group: set[str], recipe: Recipe) -> None:
     print("### Side by side (strokes read right)\n")
     print(table(["model", *columns], out) + "\n")
     if args.write:
-        keep = np.flatnonzero(is_design | (split != ""))  # the first group too, as `train_ranker --write` fits it
-        signs = np.flatnonzero(split != "")
+        keep = np.flatnonzero(is_design | (split == "st"))  # the first group too, as `train_ranker --write` fits it
+        signs = np.flatnonzero(split == "st")  # the X61 writers stay the validation (session 38)
         dm = {**d, "scale": sign_scale(d, keep[is_design[keep]], signs, sources, args.sign_weigh, recipe.copies_weight)}
         m = fit(keep, dm)
         args.write.write_text(model_module_text({
             "features": list(ranker.FEATURES), "kinds": list(ranker.KINDS), "lam": m["lam"], "margin": m["margin"],
             "theta": [round(float(v), 9) for v in m["theta"]], "mean": [round(float(v), 9) for v in m["mean"]],
             "std": [round(float(v), 9) for v in m["std"]]}))
-        print(f"wrote {args.write} (design and every sign writer, weighed by {args.sign_weigh}; {recipe.name()})")
+        print(f"wrote {args.write} (design and the ST writers, weighed by {args.sign_weigh}; {recipe.name()})")
 
 
 def _cells(got: np.ndarray, real_design: np.ndarray, sets: np.ndarray, devices: np.ndarray, x61: np.ndarray,
            st: np.ndarray, fourth: np.ndarray, rows: list[Row], dev: np.ndarray | None = None,
-           other: np.ndarray | None = None) -> list[str]:
-    """The side-by-side row: set folds (pooled, per set), device folds, X61, ST, quickdraw, tutorboard, in-sample."""
+           other: np.ndarray | None = None, src: np.ndarray | None = None) -> list[str]:
+    """The side-by-side row: set folds (pooled, per set), device folds, source folds ("-" when not run), X61, ST,
+    quickdraw, tutorboard, in-sample."""
+    src_cell = "-" if src is None and dev is not None else f"{int((got if src is None else src)[real_design].sum())}"
     other = got if other is None else other
     dev = got if dev is None else dev
     known = real_design[devices[real_design] != ""]
@@ -199,6 +210,7 @@ def _cells(got: np.ndarray, real_design: np.ndarray, sets: np.ndarray, devices: 
     t = fourth[sets[fourth] == "tutorboard"]
     return [f"{int(got[real_design].sum())}/{len(real_design)}",
             *(f"{int(got[real_design][sets[real_design] == s].sum())}" for s in tr.SETS),
-            f"{int(dev[known].sum())}/{len(known)}", f"{int(other[x61].sum())}/{len(x61)}",
+            f"{int(dev[known].sum())}/{len(known)}", src_cell,
+            f"{int(other[x61].sum())}/{len(x61)}" if len(x61) else "hidden",
             f"{int(other[st].sum())}/{len(st)}", f"{int(other[q].sum())}/{len(q)}",
             f"{int(other[t].sum())}/{len(t)}", f"{int(got[real_design].sum())}"]

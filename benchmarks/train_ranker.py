@@ -3,7 +3,8 @@
 Usage: .venv/bin/python benchmarks/train_ranker.py SET [SET ...] [--folds set,device,source,in,shipped] [--brief]
        [--lam L[,L...]] [--weigh W] [--drop F[,F...]] [--margins M[,M...]] [--inner K] [--inner-by source|set]
        [--augment K] [--augment-seed S] [--events-share E] [--copies-weight A] [--no-gate] [--skip-guarded]
-       [--heldback] [--write PATH] [--sign SIGN_JSONL [--sign-weigh source|set] [--fourth Q.jsonl T.jsonl]]
+       [--guarded-weight G] [--drop-leaning] [--heldback] [--write PATH]
+       [--sign SIGN_JSONL [--sign-weigh source|set] [--fourth Q.jsonl T.jsonl] [--hide-x61]]
 
 For every scored stroke (`bench_generalisation.scored_rows`) the rules give a kind; when it is a polyline or a curve, or
 a polygon left open (`ranker.family`), the ranker scores the family's kinds by ``w_kind . phi + a * [the rules'
@@ -20,13 +21,14 @@ scored). Each stroke is described by what the recogniser itself asks the model (
 `ranker.question` computes them at the one place the recogniser asks); strokes it never asks about (a wave, a chain of
 steps, a straight-armed mark, a kept bracket or brace, a zig-zag's teeth, a curve between sparse events, a hurried
 check, ...) keep the rules' kind in every fold, as in the app; they are fitted on (with the features `ranker.features`
-gives the whole stroke) unless ``--skip-guarded``: docs/BENCHMARKS.md, "Why a refit of the ranker loses people's
-readings".
+gives the whole stroke) unless ``--skip-guarded``, at ``--guarded-weight`` each where given: docs/BENCHMARKS.md, "Why
+a refit of the ranker loses people's readings". ``--drop-leaning`` leaves out of the fit the features that move when
+a stroke is drawn from its other end (`ranker_leaning.LEANING`).
 Tables per set and device (``--brief``: only these), per source and class; a ``RESULT`` line per run.
 ``--sign`` fits every fold twice, without and with the opened sign set's ST5022 writers weighed as design people
 (``--sign-weigh``), and scores both side by side on the set and device folds, the X61 writers (fitted on by neither),
 the ST writers held out and the fourth group (``--fourth``): `ranker_sign`; with ``--write`` it fits on every design
-source and all sign writers (measured, not shipped: docs/BENCHMARKS.md, "The sign set as the ranker's training
+source and the ST writers (measured, not shipped: docs/BENCHMARKS.md, "The sign set as the ranker's training
 material").
 
 The first held-back group (`bench_generalisation.held_back`) is not read unless ``--heldback`` or ``--write`` is given;
@@ -223,13 +225,19 @@ def rows_read(rows: list[Row], heldback: bool, write: bool) -> tuple[list[Row], 
 
 def recipe_from(args: argparse.Namespace, lam: float) -> Recipe:
     drop = tuple(f for f in args.drop.split(",") if f)
+    if args.drop_leaning:
+        from ranker_leaning import LEANING
+        drop += tuple(f for f in LEANING if f not in drop)
     unknown = sorted(set(drop) - set(ranker.FEATURES))
     if unknown:
         raise SystemExit(f"--drop: {', '.join(unknown)} not among the ranker's features {ranker.FEATURES}")
     margins = (0.5,) if args.no_gate else tuple(float(v) for v in args.margins.split(","))
     if not margins or not all(0.0 <= v < 1.0 for v in margins):
         raise SystemExit(f"--margins: {args.margins!r} must be numbers in [0, 1)")
-    return Recipe(lam, args.weigh, drop, margins, args.inner, args.inner_by, args.copies_weight, args.skip_guarded)
+    if not 0.0 < args.guarded_weight <= 1.0 or (args.skip_guarded and args.guarded_weight != 1.0):
+        raise SystemExit(f"--guarded-weight: {args.guarded_weight!r} must be in (0, 1], not with --skip-guarded")
+    return Recipe(lam, args.weigh, drop, margins, args.inner, args.inner_by, args.copies_weight, args.skip_guarded,
+                  args.guarded_weight)
 
 
 def main() -> None:
@@ -262,6 +270,10 @@ def main() -> None:
     ap.add_argument("--copies-weight", type=float, default=1.0, help="the copies of a stroke weigh this in all")
     ap.add_argument("--skip-guarded", action="store_true", help="fit on no stroke the recogniser never asks the "
                     "model about (`Asked`: a wave, a kept bracket or brace, a zig-zag's teeth, a sparse curve, ...)")
+    ap.add_argument("--guarded-weight", type=float, default=1.0, help="each stroke the recogniser never asks the "
+                    "model about weighs this in the fit (1: as any stroke; --skip-guarded: none)")
+    ap.add_argument("--drop-leaning", action="store_true", help="leave out of the fit the features that move when a "
+                    "stroke is drawn from its other end (`ranker_leaning.LEANING`)")
     ap.add_argument("--write", type=Path, help="fit on every source and write the model here")
     ap.add_argument("--sign", type=Path, help="the sign set: fit each fold without and with its ST5022 writers and "
                     "score both side by side (`ranker_sign`); with --write, fit on it all")
@@ -269,6 +281,7 @@ def main() -> None:
                     "the mean design person, or the set as the mean design set")
     ap.add_argument("--fourth", type=Path, nargs="*", default=[], help="with --sign: the fourth group's sets, read "
                     "by each model fitted on every design source")
+    ap.add_argument("--hide-x61", action="store_true", help="with --sign: print no X61 figure (tuning)")
     args = ap.parse_args()
     if args.sign:  # the design rows as --write reads them; the first group is neither fitted on nor scored by folds
         if args.heldback:
