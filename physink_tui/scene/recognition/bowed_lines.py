@@ -5,7 +5,9 @@
 (`open_marks.FLICK_END_DEG`): each guards a parenthesis' shape (a lopsided one curling near one end, a flat one curled
 at both). A parenthesis is written upright, leaning as handwriting does; a stroke whose chord lies far off the upright
 is none, and an arc drawn so is told by its circle (`open_marks.SWUNG_ARC`, still asked). `slanted_flick` asks less of
-such a stroke. No I/O.
+such a stroke; `end_bent` lets it stray a little farther (`open_marks.SWUNG_FAR`) where its bend lies near its end, to
+one side: a curl the cuts left where the pen lifted, not an arc's bow (about its middle), a wave's (both sides) nor a
+tick's short arm (drawn first). No I/O.
 """
 
 from __future__ import annotations
@@ -49,3 +51,42 @@ def slanted_flick(coarse: np.ndarray) -> bool:
     k = int(np.argmax(off))
     along = float(rel[k] @ chord) / (norm * norm)
     return float(off[k]) < SLANT_SAG * norm and SLANT_END <= along <= 1.0 - SLANT_END
+
+
+END_SIDE = 0.6
+"""A stroke bends to one side where its points on the other side of its chord (start to end) reach at most this share
+of the farthest point's distance: a wave or an S swings both ways about equally (the pen models' flat zig-zags and
+s-curves that stray as far: 0.67-0.99 of it, `benchmarks/bench_hurried_marks.py`, tuning seeds), the `sign` set's
+lines curled at an end 0-0.48 (issue 25, session 38)."""
+END_NEAR = 0.375
+"""... and bends where the pen lifted: its farthest point lies no farther than this share of the chord from its end.
+An arc bows about its middle (the pen models' slanted arcs and marks straying 0.09-0.105 of their length: 0.43-0.57
+of the chord along, `bench_lines.py`, `bench_hurried_marks.py`, tuning seeds); a tick's or a radical's short arm is
+drawn first, where the pen landed (ahmadosama's Tick #77, a mouse's rounded tick: 0.20 along; the rule taking bends
+there read it as a line); the `sign` set's lines curled where the pen lifted: 0.68-0.94 (issue 25, session 38)."""
+
+
+def end_bent(coarse: np.ndarray) -> bool:
+    """Whether ``coarse`` lies more than `SLANT_DEG` off the vertical and bends to one side of its chord (`END_SIDE`),
+    farthest from it near its end (`END_NEAR`): a line curled where the pen lifted, which
+    `open_marks.swung_line` lets stray a little farther than a bow (`open_marks.SWUNG_FAR`).
+
+    >>> x = np.linspace(0.0, 1.0, 101)
+    >>> curled = np.column_stack([x, 0.1 * x ** 6])
+    >>> end_bent(curled), end_bent(curled[:, ::-1]), end_bent(curled[::-1])  # level; upright; curled where it landed
+    (True, False, False)
+    >>> end_bent(np.column_stack([x, 0.1 * np.sin(np.pi * x)]))  # an arc: about its middle
+    False
+    >>> end_bent(np.column_stack([x, 0.06 * np.sin(2 * np.pi * x ** 1.5)]))  # a wave: both sides
+    False
+    """
+    chord = coarse[-1] - coarse[0]
+    norm = float(np.hypot(*chord))
+    if norm == 0.0 or math.degrees(math.atan2(abs(float(chord[0])), abs(float(chord[1])))) <= SLANT_DEG:
+        return False
+    rel = coarse - coarse[0]
+    off = (rel[:, 0] * chord[1] - rel[:, 1] * chord[0]) / norm
+    k = int(np.argmax(np.abs(off)))
+    along = float(rel[k] @ chord) / (norm * norm)
+    other = float(-off.min()) if off[k] > 0 else float(off.max())
+    return other <= END_SIDE * abs(float(off[k])) and along >= 1.0 - END_NEAR

@@ -41,6 +41,12 @@ SWUNG_STRAY = 0.09
 SWUNG_INK = 1.05
 """... with at most this much ink for its chord (a circular arc of 60 degrees has 1.047: a wave big enough to be meant
 has more)."""
+SWUNG_FAR = 0.105
+SWUNG_FAR_INK = 1.06
+"""... or up to this stray and this ink where it lies slanted and bends to one side near its end, not about its middle
+(`bowed_lines.end_bent`): `SWUNG_STRAY` and `SWUNG_INK` are a bow's figures, and what strays beyond them there is a
+curl the cuts left where the pen lifted (the `sign` set's ST5022 writers' lines so curled: 0.05-0.095 stray,
+1.035-1.056 ink; issue 25, session 38)."""
 ONE_WAY = 0.8
 """A stroke whose net turning is over this share of all its turning turns one way (an arc: `open_shapes`' arc test)."""
 SWUNG_TURN_DEG = 90.0
@@ -236,15 +242,17 @@ def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, most: floa
 def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: float | None = None) -> bool:
     """Whether a stroke the line test refused (``coarse``: its smoothed points without hooks; ``stray`` and ``ink``
     its fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's
-    swing bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink, turns both ways (one way round, it
-    would be an arc: `ONE_WAY`, unless it bows shallowly about its middle, as a flick does: `flicked`), its heading
-    turns less than `SWUNG_TURN_DEG` end to end, its middle has no point (`SWUNG_POINT_DEG`) and no circle fits its bow
-    (`SWUNG_ARC`, and beyond the pen's own wobble: `SWUNG_WOBBLE`, unless a line fits it as well and a hook curls at an
-    end: `hooked_straight`).
+    swing bowed: it strays less than `SWUNG_STRAY` with under `SWUNG_INK` of ink (a little more where it lies slanted
+    and curls to one side near its end: `SWUNG_FAR`), turns both ways (one way round, it would be an arc: `ONE_WAY`,
+    unless it bows shallowly about its middle, as a flick does: `flicked`), its heading turns less than
+    `SWUNG_TURN_DEG` end to end, its middle has no point (`SWUNG_POINT_DEG`) and no circle fits its bow (`SWUNG_ARC`,
+    and beyond the pen's own wobble: `SWUNG_WOBBLE`, unless a line fits it as well and a hook curls at an end:
+    `hooked_straight`).
     What a person does: a long diagonal drawn with a mouse, or a quick stroke of a wrist, pivots and corrects; a
     reader still sees a line, not a curve. A hook where the pen landed or lifted (its reach in the pen's stated noise
     ``pen``, ``noise`` where not given) is left out of the circle's fit (`lines.without_hooked_ends`)."""
-    if stray >= SWUNG_STRAY or ink >= SWUNG_INK:
+    if stray >= SWUNG_FAR or ink >= SWUNG_FAR_INK or (
+            (stray >= SWUNG_STRAY or ink >= SWUNG_INK) and not bowed_lines.end_bent(coarse)):
         return False  # checked first: most strokes are far from straight
     th = shape_turning.coarse_turning(coarse, noise)
     net, every = abs(float(th.sum())), float(np.abs(th).sum())
