@@ -42,10 +42,16 @@ def slanted_flick(coarse: np.ndarray) -> bool:
     """
     chord = coarse[-1] - coarse[0]
     norm = float(np.hypot(*chord))
-    if norm == 0.0 or math.degrees(math.atan2(abs(float(chord[0])), abs(float(chord[1])))) <= SLANT_DEG:
+    if norm == 0.0 or not slanted(coarse):
         return False
     rel = coarse - coarse[0]
     off = np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]) / norm
     k = int(np.argmax(off))
     along = float(rel[k] @ chord) / (norm * norm)
     return float(off[k]) < SLANT_SAG * norm and SLANT_END <= along <= 1.0 - SLANT_END
+
+
+def slanted(points: np.ndarray) -> bool:
+    """Whether the chord of ``points`` (start to end) lies more than `SLANT_DEG` off the page's vertical."""
+    chord = points[-1] - points[0]
+    return math.degrees(math.atan2(abs(float(chord[0])), abs(float(chord[1])))) > SLANT_DEG
