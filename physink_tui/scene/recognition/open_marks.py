@@ -237,10 +237,11 @@ REST_HOOK_SHARE = 0.05
 """What `retraced_ends` leaves of a stroke may pass as a line the hand's swing bowed (`swung_line`) where the longer
 piece it cut is at least this share of the path (`open_shapes._hooked_bow` asks, with the stroke lying slanted and
 carrying a hook's ink): a hook where the pen landed or lifted long enough that it, not the bow, refused the whole
-stroke (the sign set's ST5022 writers' bowed lines hooked 6-14 % of their path, adding 14-39 % ink). A shorter piece
-is the mark's own end, whose cut only moves the circle's fit off a bow it explained: hcira Subject3's square bracket
-(2.2 %), ahmadosama's tick (1.1 %), the pen models' ticks (1.8 %) and, on extra tuning seeds 2000-2599, 145 of 152
-parentheses and arcs whose rest so passes (issue 25, session 38, docs/BENCHMARKS.md)."""
+stroke (the sign set's ST5022 writers' bowed lines hooked 6-14 % of their path, carrying 1.14-1.39 of their chord in
+ink). A shorter piece is the mark's own end, whose cut only moves the circle's fit off a bow it explained: hcira
+Subject3's square bracket (2.2 %), ahmadosama's tick (1.1 %), the pen models' ticks (1.8 %) and, on extra tuning seeds
+2000-2599, 145 of the 152 parentheses and arcs whose rest so passes (the other 7 stand upright or carry an arc's ink:
+issue 25, session 38, docs/BENCHMARKS.md)."""
 
 
 def long_hook_cut(raw: np.ndarray, kept: np.ndarray) -> bool:
