@@ -44,7 +44,7 @@ def slanted_flick(coarse: np.ndarray) -> bool:
     """
     chord = coarse[-1] - coarse[0]
     norm = float(np.hypot(*chord))
-    if norm == 0.0 or math.degrees(math.atan2(abs(float(chord[0])), abs(float(chord[1])))) <= SLANT_DEG:
+    if norm == 0.0 or not slanted(coarse):
         return False
     rel = coarse - coarse[0]
     off = np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]) / norm
@@ -82,7 +82,7 @@ def end_bent(coarse: np.ndarray) -> bool:
     """
     chord = coarse[-1] - coarse[0]
     norm = float(np.hypot(*chord))
-    if norm == 0.0 or math.degrees(math.atan2(abs(float(chord[0])), abs(float(chord[1])))) <= SLANT_DEG:
+    if norm == 0.0 or not slanted(coarse):
         return False
     rel = coarse - coarse[0]
     off = (rel[:, 0] * chord[1] - rel[:, 1] * chord[0]) / norm
@@ -90,3 +90,9 @@ def end_bent(coarse: np.ndarray) -> bool:
     along = float(rel[k] @ chord) / (norm * norm)
     other = float(-off.min()) if off[k] > 0 else float(off.max())
     return other <= END_SIDE * abs(float(off[k])) and along >= 1.0 - END_NEAR
+
+
+def slanted(points: np.ndarray) -> bool:
+    """Whether the chord of ``points`` (start to end) lies more than `SLANT_DEG` off the page's vertical."""
+    chord = points[-1] - points[0]
+    return math.degrees(math.atan2(abs(float(chord[0])), abs(float(chord[1])))) > SLANT_DEG

@@ -239,6 +239,25 @@ def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, most: floa
     return math.degrees(math.acos(max(-1.0, min(1.0, float(chord @ back) / norm)))) <= BACK_HOOK_DEG
 
 
+REST_HOOK_SHARE = 0.05
+"""What `retraced_ends` leaves of a stroke may pass as a line the hand's swing bowed (`swung_line`) where the longer
+piece it cut is at least this share of the path (`open_shapes._hooked_bow` asks, with the stroke lying slanted and
+carrying a hook's ink): a hook where the pen landed or lifted long enough that it, not the bow, refused the whole
+stroke (the sign set's ST5022 writers' bowed lines hooked 6-14 % of their path, carrying 1.14-1.39 of their chord in
+ink). A shorter piece is the mark's own end, whose cut only moves the circle's fit off a bow it explained: hcira
+Subject3's square bracket (2.2 %), ahmadosama's tick (1.1 %), the pen models' ticks (1.8 %) and, on extra tuning seeds
+2000-2599, 145 of the 152 parentheses and arcs whose rest so passes (the other 7 stand upright or carry an arc's ink:
+issue 25, session 38, docs/BENCHMARKS.md)."""
+
+
+def long_hook_cut(raw: np.ndarray, kept: np.ndarray) -> bool:
+    """Whether the longer end piece `retraced_ends` cut from ``raw`` to leave ``kept`` (a slice of it) is at least
+    `REST_HOOK_SHARE` of the path."""
+    lo = int(np.flatnonzero((raw == kept[0]).all(axis=1))[0])
+    pieces = sg.path_length(raw[:lo + 1]), sg.path_length(raw[lo + len(kept) - 1:])
+    return max(pieces) >= REST_HOOK_SHARE * sg.path_length(raw)
+
+
 def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: float | None = None) -> bool:
     """Whether a stroke the line test refused (``coarse``: its smoothed points without hooks; ``stray`` and ``ink``
     its fitted line's error and its length over its chord, the pen's noise allowed) is a line whose middle the hand's

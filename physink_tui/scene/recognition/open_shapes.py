@@ -16,6 +16,7 @@ import numpy as np
 
 from physink_tui.scene.recognition import (
     angular_braces,
+    bowed_lines,
     bracket_marks,
     lift_hooks,
     lines,
@@ -76,17 +77,20 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
     without a lead-in or tail that runs back along it (`open_marks.retraced_ends`), or bowed one way and back by the
-    hand's swing (`open_marks.swung_line`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a
-    short line's hook is a large share of it), straight within the pen's own wobble (`lines.within_wobble`). Those
-    two are judged by the pen's stated noise ``pen`` (``noise`` where not given), not a measured jitter that may be
-    the shape's own bends between a few far-apart events (`recognize.SPARSE_BENDS`). A tall, thin curly brace
+    hand's swing (`open_marks.swung_line`; also without such a piece where it was a long hook: `_hooked_bow`), or,
+    without a hook at an end as long as a hand's (`lines.unhooked`: a short line's hook is a large share of it),
+    straight within the pen's own wobble (`lines.within_wobble`). Those two are judged by the pen's stated noise
+    ``pen`` (``noise`` where not given), not a measured jitter that may be the shape's own bends between a few
+    far-apart events (`recognize.SPARSE_BENDS`). A tall, thin curly brace
     (`thin_braces.thin_brace`: a sharp point halfway, both ends curling back) is no line."""
     pen = noise if pen is None else min(pen, noise)
     found, swung, loose = _line(raw, noise, diag, pen)
     if found is None:
         kept = open_marks.retraced_ends(raw, noise)
         if kept is not None:
-            found, _, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)
+            found, rest_swung, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)
+            if swung is None and rest_swung is not None and _hooked_bow(raw, kept, noise):
+                swung = rest_swung  # a line the hand bowed, refused for the hook the cut took
     if (found is None or loose) and lines.ends_may_span(raw, pen, diag):
         # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
         # straightest line left once a hook is cut is the line drawn (its ends where the hand meant them)
@@ -110,10 +114,7 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
     if not _ends_span(raw, diag):
         return None, None, False  # its ends are not its extent's ends: no line (hooks cost less than half)
     # steps a few noise widths long (at least 48 of them): fine enough that a coil's loops are not lost
-    n = lines.line_test_points(sg.path_length(raw), noise)
-    coarse = sg.smooth(sg.resample(raw, n))
-    if bow:  # else hooks are cut from one end or both already (`lines.unhooked`): the rest is judged as drawn
-        coarse = sg.resample(sg.remove_hooks(coarse), n)
+    coarse = _test_points(raw, noise, bow)
     _, direction, off = fit_line(coarse)
     on_line = coarse @ direction
     along = float(on_line.max() - on_line.min()) or 1e-12  # (`np.ptp`) the extent `fit_line`'s stray is a share of
@@ -138,6 +139,28 @@ def _line(raw: np.ndarray, noise: float, diag: float, pen: float,
     if bow and open_marks.swung_line(coarse, err, length / (chord * slack), noise, pen):
         return None, Recognition("line", 0.6, Line(_pt(coarse[0]), _pt(coarse[-1])), (("curve", 0.4),)), False
     return None, None, False
+
+
+def _test_points(raw: np.ndarray, noise: float, bow: bool = True) -> np.ndarray:
+    """``raw`` as the line test judges it: resampled by steps a few noise widths long (`lines.line_test_points`) and
+    smoothed, without hooks (`stroke_geometry.remove_hooks`) unless ``bow`` is False."""
+    n = lines.line_test_points(sg.path_length(raw), noise)
+    coarse = sg.smooth(sg.resample(raw, n))
+    if bow:  # else hooks are cut from one end or both already (`lines.unhooked`): the rest is judged as drawn
+        coarse = sg.resample(sg.remove_hooks(coarse), n)
+    return coarse
+
+
+def _hooked_bow(raw: np.ndarray, kept: np.ndarray, noise: float) -> bool:
+    """Whether ``raw``, whose rest ``kept`` (`open_marks.retraced_ends`' cut) passes as a line the hand's swing bowed,
+    was refused as one for the hook the cut took: it lies far off the upright as no parenthesis does
+    (`bowed_lines.slanted`), the longer piece cut is a long hook (`open_marks.long_hook_cut`), and the whole carries
+    the ink of one (`open_marks.SWUNG_INK` or more for its chord, as the line test measures it)."""
+    if not (bowed_lines.slanted(raw) and open_marks.long_hook_cut(raw, kept)):
+        return False
+    coarse = _test_points(raw, noise)
+    chord = float(np.hypot(*(coarse[-1] - coarse[0])))
+    return chord > 0.0 and sg.path_length(coarse) >= open_marks.SWUNG_INK * (chord + 3 * noise)
 
 
 def _ends_span(raw: np.ndarray, diag: float | None = None) -> bool:
