@@ -13,12 +13,9 @@ import math
 
 import numpy as np
 import pytest
-from scenarios.thesis import DEVICE, MAPPING
+from drawn_strokes import drawn_person_stroke
 from test_open_marks import _stroke, cached_rows
-from xerase_drawings import replayed_project
 
-from physink_tui.input.journal_compose import capture_entries, header_for_capture
-from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
 from physink_tui.scene.recognition import open_marks
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
@@ -109,10 +106,5 @@ def test_a_persons_hooked_line_is_a_line_body_through_a_session(tmp_path) -> Non
     virtual pen through the thesis device: a polyline body of more than two points at main 02d2055."""
     row = cached_rows(SIGN).get(AT + HOOKED_LINES[0])
     assert row is not None
-    pts = np.asarray(_stroke(row)[0], dtype=float)
-    pts = (pts - pts.min(axis=0)) / float(np.ptp(pts, axis=0).max()) * 300 + [200.0, 200.0]
-    w, h = MAPPING.canvas_width, MAPPING.canvas_height
-    capture = VirtualPen(REFERENCE_DEVICES[DEVICE], seed=1).record([Stroke(tuple((x / w, y / h) for x, y in pts))])
-    project, told = replayed_project(header_for_capture(capture, MAPPING), capture_entries(capture), tmp_path)
-    shapes = ["line" if b.shape == "polyline" and len(b.outline) == 2 else b.shape for b in project.scene.bodies()]
+    shapes, told = drawn_person_stroke(np.asarray(_stroke(row)[0], dtype=float), tmp_path)
     assert shapes == ["line"], told

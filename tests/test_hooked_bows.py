@@ -16,12 +16,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from scenarios.thesis import DEVICE, MAPPING
+from drawn_strokes import drawn_person_stroke
 from test_open_marks import _stroke, cached_rows
-from xerase_drawings import replayed_project
 
-from physink_tui.input.journal_compose import capture_entries, header_for_capture
-from physink_tui.input.virtual_pen import REFERENCE_DEVICES, Stroke, VirtualPen
 from physink_tui.scene.recognition import open_marks
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
@@ -67,12 +64,7 @@ def test_a_writers_hooked_bowed_line_is_a_line_body_through_a_session(file: str,
     replay -> project: a line body, a polyline body of three points at main 288a082."""
     row = cached_rows(SIGN).get(GESTER + file)
     assert row is not None
-    pts = np.asarray(_stroke(row)[0], dtype=float)
-    pts = (pts - pts.min(axis=0)) / float(np.ptp(pts, axis=0).max()) * 300 + [200.0, 200.0]
-    w, h = MAPPING.canvas_width, MAPPING.canvas_height
-    capture = VirtualPen(REFERENCE_DEVICES[DEVICE], seed=1).record([Stroke(tuple((x / w, y / h) for x, y in pts))])
-    project, told = replayed_project(header_for_capture(capture, MAPPING), capture_entries(capture), tmp_path)
-    shapes = ["line" if b.shape == "polyline" and len(b.outline) == 2 else b.shape for b in project.scene.bodies()]
+    shapes, told = drawn_person_stroke(np.asarray(_stroke(row)[0], dtype=float), tmp_path)
     assert shapes == ["line"], told
 
 SHORT_CUTS = {

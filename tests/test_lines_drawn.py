@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from drawn_strokes import body_shapes
 from penmodels.journal import header as hurried_header
 from scenarios.thesis import DEVICE, MAPPING
 from xerase_drawings import _pen_entry, replayed_project
@@ -69,8 +70,7 @@ def _session(case: tuple[str, str, int], tmp_path) -> tuple[list[str], int, str]
     folder.mkdir()
     project, told = replayed_project(*_journal(*case), folder)
     ropes = [c for c in project.scene.components.values() if type(c).__name__ == "Rope"]
-    shapes = ["line" if b.shape == "polyline" and len(b.outline) == 2 else b.shape for b in project.scene.bodies()]
-    return shapes, len(ropes), told
+    return body_shapes(project), len(ropes), told
 
 
 @pytest.mark.parametrize("case", LINES, ids=[f"{f}-{p}-{s}" for f, p, s in LINES])

@@ -42,15 +42,12 @@ def slanted_flick(coarse: np.ndarray) -> bool:
     >>> slanted_flick(np.column_stack([x, 0.15 * np.sin(np.pi * x)]))  # too deep
     False
     """
-    chord = coarse[-1] - coarse[0]
-    norm = float(np.hypot(*chord))
-    if norm == 0.0 or not slanted(coarse):
+    found = _slanted_offsets(coarse)
+    if found is None:
         return False
-    rel = coarse - coarse[0]
-    off = np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]) / norm
-    k = int(np.argmax(off))
-    along = float(rel[k] @ chord) / (norm * norm)
-    return float(off[k]) < SLANT_SAG * norm and SLANT_END <= along <= 1.0 - SLANT_END
+    norm, off, along = found
+    k = int(np.argmax(np.abs(off)))
+    return abs(float(off[k])) < SLANT_SAG * norm and SLANT_END <= float(along[k]) <= 1.0 - SLANT_END
 
 
 END_SIDE = 0.6
@@ -80,19 +77,27 @@ def end_bent(coarse: np.ndarray) -> bool:
     >>> end_bent(np.column_stack([x, 0.06 * np.sin(2 * np.pi * x ** 1.5)]))  # a wave: both sides
     False
     """
-    chord = coarse[-1] - coarse[0]
-    norm = float(np.hypot(*chord))
-    if norm == 0.0 or not slanted(coarse):
+    found = _slanted_offsets(coarse)
+    if found is None:
         return False
-    rel = coarse - coarse[0]
-    off = (rel[:, 0] * chord[1] - rel[:, 1] * chord[0]) / norm
+    _, off, along = found
     k = int(np.argmax(np.abs(off)))
-    along = float(rel[k] @ chord) / (norm * norm)
     other = float(-off.min()) if off[k] > 0 else float(off.max())
-    return other <= END_SIDE * abs(float(off[k])) and along >= 1.0 - END_NEAR
+    return other <= END_SIDE * abs(float(off[k])) and float(along[k]) >= 1.0 - END_NEAR
 
 
 def slanted(points: np.ndarray) -> bool:
     """Whether the chord of ``points`` (start to end) lies more than `SLANT_DEG` off the page's vertical."""
     chord = points[-1] - points[0]
     return math.degrees(math.atan2(abs(float(chord[0])), abs(float(chord[1])))) > SLANT_DEG
+
+
+def _slanted_offsets(coarse: np.ndarray) -> tuple[float, np.ndarray, np.ndarray] | None:
+    """For a `slanted` stroke with ends apart: its chord's length, each point's signed distance off the chord and how
+    far along it each lies (a share of the chord); else None."""
+    chord = coarse[-1] - coarse[0]
+    norm = float(np.hypot(*chord))
+    if norm == 0.0 or not slanted(coarse):
+        return None
+    rel = coarse - coarse[0]
+    return norm, (rel[:, 0] * chord[1] - rel[:, 1] * chord[0]) / norm, rel @ chord / (norm * norm)
