@@ -13,11 +13,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_reversed import reversed_stroke
 from ranker_fit import Recipe, weights
 from ranker_leaning import LEANING
+from shared_data import shared_path
 from train_ranker import recipe_from
 
 from physink_tui.scene.recognition import ranker
-
-DOLLAR1 = Path(__file__).resolve().parents[2] / "shared" / "data" / "strokes" / "dollar1-dev.jsonl"
 
 
 def test_unasked_strokes_weigh_the_guarded_weight_and_copies_still_their_share() -> None:
@@ -48,10 +47,10 @@ def test_drop_leaning_adds_the_leaning_features_once_and_the_weight_is_checked()
             recipe_from(_args(**bad), 0.003)
 
 
-@pytest.mark.skipif(not DOLLAR1.exists(), reason="../shared/data/strokes/dollar1-dev.jsonl not present")
 def test_the_features_kept_by_drop_leaning_read_people_alike_from_either_end() -> None:
+    dollar1 = shared_path("strokes", "dollar1-dev.jsonl", module_level=False)
     kept = [j for j, f in enumerate(ranker.FEATURES) if f not in LEANING]
-    rows = [json.loads(line) for line in DOLLAR1.read_text().splitlines()[::40]]
+    rows = [json.loads(line) for line in dollar1.read_text().splitlines()[::40]]
     assert len(rows) > 30
     for row in rows:
         stroke = row["strokes"][0]
