@@ -51,7 +51,6 @@ def test_a_writers_hooked_bowed_line_is_a_line(file: str) -> None:
     assert recognize_stroke(points, times).kind == "line"
 
 
-
 THROUGH_A_SESSION = [HOOKED_BOWS[1], HOOKED_BOWS[2], HOOKED_BOWS[4], HOOKED_BOWS[6]]
 """Those of `HOOKED_BOWS` the careful virtual pen's wobble leaves hooked and bowed as the person drew them (the other
 four, so drawn, stay polylines of three points, as at main 288a082)."""
@@ -67,13 +66,16 @@ def test_a_writers_hooked_bowed_line_is_a_line_body_through_a_session(file: str,
     shapes, told = drawn_person_stroke(np.asarray(_stroke(row)[0], dtype=float), tmp_path)
     assert shapes == ["line"], told
 
+
 SHORT_CUTS = {
     ("public-sets/hcira.jsonl", "sinarest1608/HCIRA-HK@d91ccc6:Project1/usersamples/Subject3/left_sq_bracket10.xml"):
         "polyline",  # arms 0.8 % and 2.2 % of the path: the rest passes as a swung line, the bracket stays
     ("public-sets/ahmadosama.jsonl",
      "AhmadOsama4/Mouse-Gesture-Recognition-Using-HMM@4285ca6:TrainingData/Tick.xml#77"):
-        "curve",  # a mouse's tick with a short arm, 1.1 % cut: no line (a curve at 288a082, a miss either way)
+        None,  # a mouse's tick with a short arm, 1.1 % cut: no line (a curve at 288a082: a tick, read as a polyline, is
+        # the right reading, which these rules do not give it)
 }
+"""People's marks whose cut end piece is short, and the reading they keep (None: any but a line)."""
 
 
 @pytest.mark.parametrize(("name", "file"), list(SHORT_CUTS), ids=[f.rsplit("/", 1)[-1] for _, f in SHORT_CUTS])
@@ -82,7 +84,8 @@ def test_a_persons_mark_with_a_short_end_piece_is_no_line(name: str, file: str) 
     assert row is not None, f"{file} is not in {name}"
     points, times = _stroke(row)
     for learned in (False, True):
-        assert recognize_stroke(points, times, learned=learned).kind == SHORT_CUTS[(name, file)], learned
+        kind = recognize_stroke(points, times, learned=learned).kind
+        assert kind != "line" and SHORT_CUTS[(name, file)] in (None, kind), (learned, kind)
 
 
 @pytest.mark.parametrize(("read", "family", "pen", "seed"), [
