@@ -1,7 +1,7 @@
 """Lines a quick wrist bowed and hooked where the pen landed or lifted read as lines (issue 25, session 38: the `sign`
 set's ST5022 writers): once `open_marks.retraced_ends` cuts the hook (6-14 % of the path), what is left is a line
 the hand's swing bowed (`open_marks.swung_line`), and the hook, not the bow, is what refused the whole stroke
-(`open_shapes._hooked_bow`). By the rules and with the learned ranker, and four of them through a whole session. A
+(`open_marks.hooked_bow`). By the rules and with the learned ranker, and four of them through a whole session. A
 mark whose cut end piece is short (a square bracket's arms, a tick's, a parenthesis' curl) is judged as before: the
 cut only moves a circle's fit.
 

@@ -241,7 +241,7 @@ def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, most: floa
 
 REST_HOOK_SHARE = 0.05
 """What `retraced_ends` leaves of a stroke may pass as a line the hand's swing bowed (`swung_line`) where the longer
-piece it cut is at least this share of the path (`open_shapes._hooked_bow` asks, with the stroke lying slanted and
+piece it cut is at least this share of the path (`hooked_bow` asks, with the stroke lying slanted and
 carrying a hook's ink): a hook where the pen landed or lifted long enough that it, not the bow, refused the whole
 stroke (the sign set's ST5022 writers' bowed lines hooked 6-14 % of their path, carrying 1.14-1.39 of their chord in
 ink). A shorter piece is the mark's own end, whose cut only moves the circle's fit off a bow it explained: hcira
@@ -256,6 +256,17 @@ def long_hook_cut(raw: np.ndarray, kept: np.ndarray) -> bool:
     lo = int(np.flatnonzero((raw == kept[0]).all(axis=1))[0])
     pieces = sg.path_length(raw[:lo + 1]), sg.path_length(raw[lo + len(kept) - 1:])
     return max(pieces) >= REST_HOOK_SHARE * sg.path_length(raw)
+
+
+def hooked_bow(raw: np.ndarray, kept: np.ndarray, coarse: np.ndarray, noise: float) -> bool:
+    """Whether ``raw``, whose rest ``kept`` (`retraced_ends`' cut) passes as a line the hand's swing bowed, was
+    refused as one for the hook the cut took: it lies far off the upright as no parenthesis does
+    (`bowed_lines.slanted`), the longer piece cut is a long hook (`long_hook_cut`), and the whole (``coarse``: its
+    points as the line test judges them) carries the ink of one (`SWUNG_INK` or more for its chord)."""
+    if not (bowed_lines.slanted(raw) and long_hook_cut(raw, kept)):
+        return False
+    chord = float(np.hypot(*(coarse[-1] - coarse[0])))
+    return chord > 0.0 and sg.path_length(coarse) >= SWUNG_INK * (chord + 3 * noise)
 
 
 def swung_line(coarse: np.ndarray, stray: float, ink: float, noise: float, pen: float | None = None) -> bool:

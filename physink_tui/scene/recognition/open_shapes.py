@@ -16,7 +16,6 @@ import numpy as np
 
 from physink_tui.scene.recognition import (
     angular_braces,
-    bowed_lines,
     bracket_marks,
     lift_hooks,
     lines,
@@ -77,11 +76,11 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     """A line, judged at the coarse scale of the whole stroke (jitter at the pen's own scale would make a
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
     without a lead-in or tail that runs back along it (`open_marks.retraced_ends`), or bowed one way and back by the
-    hand's swing (`open_marks.swung_line`; also without such a piece where it was a long hook: `_hooked_bow`), or,
-    without a hook at an end as long as a hand's (`lines.unhooked`: a short line's hook is a large share of it),
-    straight within the pen's own wobble (`lines.within_wobble`). Those two are judged by the pen's stated noise
-    ``pen`` (``noise`` where not given), not a measured jitter that may be the shape's own bends between a few
-    far-apart events (`recognize.SPARSE_BENDS`). A tall, thin curly brace
+    hand's swing (`open_marks.swung_line`; also without such a piece where it was a long hook:
+    `open_marks.hooked_bow`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a short line's
+    hook is a large share of it), straight within the pen's own wobble (`lines.within_wobble`). Those two are judged
+    by the pen's stated noise ``pen`` (``noise`` where not given), not a measured jitter that may be the shape's own
+    bends between a few far-apart events (`recognize.SPARSE_BENDS`). A tall, thin curly brace
     (`thin_braces.thin_brace`: a sharp point halfway, both ends curling back) is no line."""
     pen = noise if pen is None else min(pen, noise)
     found, swung, loose = _line(raw, noise, diag, pen)
@@ -89,7 +88,8 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
         kept = open_marks.retraced_ends(raw, noise)
         if kept is not None:
             found, rest_swung, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)
-            if swung is None and rest_swung is not None and _hooked_bow(raw, kept, noise):
+            if (swung is None and rest_swung is not None
+                    and open_marks.hooked_bow(raw, kept, _test_points(raw, noise), noise)):
                 swung = rest_swung  # a line the hand bowed, refused for the hook the cut took
     if (found is None or loose) and lines.ends_may_span(raw, pen, diag):
         # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
@@ -149,18 +149,6 @@ def _test_points(raw: np.ndarray, noise: float, bow: bool = True) -> np.ndarray:
     if bow:  # else hooks are cut from one end or both already (`lines.unhooked`): the rest is judged as drawn
         coarse = sg.resample(sg.remove_hooks(coarse), n)
     return coarse
-
-
-def _hooked_bow(raw: np.ndarray, kept: np.ndarray, noise: float) -> bool:
-    """Whether ``raw``, whose rest ``kept`` (`open_marks.retraced_ends`' cut) passes as a line the hand's swing bowed,
-    was refused as one for the hook the cut took: it lies far off the upright as no parenthesis does
-    (`bowed_lines.slanted`), the longer piece cut is a long hook (`open_marks.long_hook_cut`), and the whole carries
-    the ink of one (`open_marks.SWUNG_INK` or more for its chord, as the line test measures it)."""
-    if not (bowed_lines.slanted(raw) and open_marks.long_hook_cut(raw, kept)):
-        return False
-    coarse = _test_points(raw, noise)
-    chord = float(np.hypot(*(coarse[-1] - coarse[0])))
-    return chord > 0.0 and sg.path_length(coarse) >= open_marks.SWUNG_INK * (chord + 3 * noise)
 
 
 def _ends_span(raw: np.ndarray, diag: float | None = None) -> bool:
