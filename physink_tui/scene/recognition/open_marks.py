@@ -177,8 +177,9 @@ is looked at: a line's points never stand further off (a cheap test, made first)
 
 def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`) or is a hook
-    turned back off it (`BACK_HOOK_SHARE`, `BACK_HOOK_DEG`), or None when neither end does, or either end's piece is
-    neither: between its points farthest back and farthest on along its start-to-end direction."""
+    turned back off it (`BACK_HOOK_SHARE`, `BACK_HOOK_DEG`), or, where the pen landed, is a long lead-in before a line
+    drawn level or downhill (`lead_ins.lead_in`), or None when neither end does, or either end's piece is neither:
+    between its points farthest back and farthest on along its start-to-end direction."""
     chord = raw[-1] - raw[0]
     norm = float(np.hypot(*chord))
     if norm == 0.0:
