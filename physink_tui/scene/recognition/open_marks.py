@@ -16,7 +16,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from physink_tui.scene.recognition import bowed_lines, lines, shape_turning
+from physink_tui.scene.recognition import bowed_lines, lead_ins, lines, shape_turning
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.primitives import Ellipse, Line, Recognition
 from physink_tui.scene.recognition.shape_fits import fit_circle, fit_line
@@ -177,8 +177,9 @@ is looked at: a line's points never stand further off (a cheap test, made first)
 
 def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`) or is a hook
-    turned back off it (`BACK_HOOK_SHARE`, `BACK_HOOK_DEG`), or None when neither end does, or either end's piece is
-    neither: between its points farthest back and farthest on along its start-to-end direction."""
+    turned back off it (`BACK_HOOK_SHARE`, `BACK_HOOK_DEG`), or, where the pen landed, is a long lead-in before a line
+    drawn level or downhill (`lead_ins.lead_in`), or None when neither end does, or either end's piece is neither:
+    between its points farthest back and farthest on along its start-to-end direction."""
     chord = raw[-1] - raw[0]
     norm = float(np.hypot(*chord))
     if norm == 0.0:
@@ -193,17 +194,22 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     length = sg.path_length(raw)
     kept = raw[lo:hi + 1]
     cuts = sg.path_length(raw[:lo + 1]), sg.path_length(raw[hi:])
-    if len(kept) < 2 or (sum(cuts) > RETRACE_SHARE * length and max(cuts) > BACK_HOOK_SHARE * length):
-        return None  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`)
+    if len(kept) < 2:
+        return None
     a, b = kept[0], kept[-1]
     span = float(np.hypot(*(b - a)))
     if span == 0.0:
         return None
     unit = (b - a) / span
+    led = lo > 0 and lead_ins.lead_in(raw[:lo + 1], a, unit, length)  # a long lead-in run back along a level line
+    if (sum(cuts) > (lead_ins.LEAD_TOTAL if led else RETRACE_SHARE) * length
+            and (led or max(cuts) > BACK_HOOK_SHARE * length)):
+        return None  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`)
     ends = ((raw[:lo + 1], a, unit, BACK_HOOK_LANDED_SHARE), (raw[hi:][::-1], b, -unit, BACK_HOOK_SHARE))
-    for end, turn, back, share in ends:  # each end's piece, from its end
+    for k, (end, turn, back, share) in enumerate(ends):  # each end's piece, from its end
         off = np.abs((end[:, 0] - a[0]) * unit[1] - (end[:, 1] - a[1]) * unit[0])
-        if float(off.max()) > RETRACE_OFF * span + noise and not _hooked_back(end, turn, back, share * length):
+        if (float(off.max()) > RETRACE_OFF * span + noise and not (k == 0 and led)
+                and not _hooked_back(end, turn, back, share * length)):
             return None
     return kept
 

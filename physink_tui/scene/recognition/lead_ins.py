@@ -1,0 +1,43 @@
+"""A line's long lead-in: the pen landing, sliding back along the line it then draws level or downhill; no I/O."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_geometry as sg
+
+LEAD_SHARE = 0.3
+"""A lead-in run back along the line where the pen landed is at most this share of the stroke's path (the `sign` set's
+ST5022 writers' lines: 12.7-27 % where `open_marks.BACK_HOOK_LANDED_SHARE`, 12.5 %, refuses them)."""
+LEAD_TOTAL = 0.35
+"""... and the lead-in and the piece cut where the pen lifted are together at most this share of it."""
+LEAD_DEG = 30.0
+"""... its chord (from where the pen turned to where it landed) within this angle of the line running on from there
+(`open_marks.BACK_HOOK_DEG`: the ST writers' 0-24 degrees)."""
+LEAD_RISE_DEG = 20.0
+"""... where the line drawn after it runs level or downhill: it rises above level by at most this angle (y down). A mark
+drawn down into a point and up from it, a barless radical's tick and rise or a check's short arm and long one, rises
+from its point by 45 degrees or more (`tests/penmodels/math_marks`: the rise leans 5-35 degrees off the upright, the
+mark tilted up to 10), which is where the narrow run-back of a radical's tick and a line's lead-in could not be told
+apart by angle, share or bow (issue 25, session 37, wt-hooks3); every `sign` lead-in so refused runs level (`left`,
+`right`) or downhill (`diagonal_downLeft`)."""
+
+
+def lead_in(end: np.ndarray, turn: np.ndarray, unit: np.ndarray, length: float) -> bool:
+    """Whether ``end`` (the piece before where the pen turned, ``turn``, from the stroke's start; ``unit`` the way the
+    line runs on from ``turn``; ``length`` the stroke's path) is a lead-in run back along a line drawn level or
+    downhill (`LEAD_SHARE`, `LEAD_DEG`, `LEAD_RISE_DEG`)."""
+    if sg.path_length(end) > LEAD_SHARE * length or not rises_at_most(unit, LEAD_RISE_DEG):
+        return False
+    chord = end[0] - turn
+    norm = float(np.hypot(*chord))
+    if norm == 0.0:
+        return True
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(chord @ unit) / norm)))) <= LEAD_DEG
+
+
+def rises_at_most(unit: np.ndarray, deg: float) -> bool:
+    """Whether the way ``unit`` (a unit vector, y down) heads rises above level by at most ``deg`` degrees."""
+    return -float(unit[1]) <= math.sin(math.radians(deg))
