@@ -64,11 +64,14 @@ def tensors(d: dict, idx: np.ndarray, mean: np.ndarray, std: np.ndarray) -> tupl
 
 
 def fit(x: np.ndarray, mask: np.ndarray, right: np.ndarray, lam: float, steps: int = 40,
-        weight: np.ndarray | None = None) -> np.ndarray:
+        weight: np.ndarray | None = None, start: np.ndarray | None = None) -> np.ndarray:
     """Conditional-logit weights maximising the mean log chance of a right kind (weighted by ``weight`` when given),
-    minus ``lam / 2 |theta|^2``."""
-    theta = np.zeros(x.shape[2])
-    theta[-1] = 1.0
+    minus ``lam / 2 |theta|^2``; Newton's steps from ``start`` (default: the rules' answer alone, weight 1)."""
+    if start is None:
+        theta = np.zeros(x.shape[2])
+        theta[-1] = 1.0
+    else:
+        theta = np.array(start, dtype=float)
     w = np.full(len(x), 1.0 / len(x)) if weight is None else weight / weight.sum()
 
     def loss(t: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:

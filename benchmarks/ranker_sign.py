@@ -91,11 +91,11 @@ def describe_asked(d: dict, rows: list[Row], idx: np.ndarray) -> None:
     print(table(["label", "strokes", *(f"asked, read {k}" for k in ranker.KINDS), "asked ST", "asked X61"], out) + "\n")
 
 
-def run(args, rows: list[Row], group: set[str], recipe: Recipe) -> None:
-    """The side-by-side comparison (and ``--write``) of module docstring; ``rows`` the design rows as `--write`
-    reads them, ``group`` the held-back sources among them (described, never fitted on nor scored but by a write)."""
-    if recipe.weigh != "stroke":
-        raise SystemExit("--sign: the sign writers are weighed by --sign-weigh; use --weigh stroke")
+def material(args, rows: list[Row], group: set[str]) -> dict:
+    """The design rows (``rows``; ``group`` the held-back sources among them), the sign set's and the fourth group's
+    scored rows and the design strokes' training-only copies, described (`train_ranker.describe`) and joined: ``d``,
+    the rows ``every``, the people's rows' count ``n``, each row's ``origin``, set, source, sign split and device, and
+    the indices of the design (less ``group``), ST, X61 and fourth-group rows."""
     n_d = len(rows)
     srows, frows = group_rows([args.sign], "sign"), group_rows(list(args.fourth), "fourth")
     dd = tr.describe(rows)
@@ -113,9 +113,21 @@ def run(args, rows: list[Row], group: set[str], recipe: Recipe) -> None:
                         for r in every])
     is_design = np.isin(sets, tr.SETS)
     design = np.flatnonzero(is_design & ~np.isin(sources, sorted(group)))
-    real = d["real"]
     st, x61 = np.flatnonzero(split == "st"), np.flatnonzero(split == "x61")
     fourth = np.flatnonzero(np.isin(sets, ["quickdraw", "tutorboard"]))
+    return {"d": d, "every": every, "n": n, "origin": origin, "sets": sets, "sources": sources, "split": split,
+            "devices": devices, "is_design": is_design, "design": design, "st": st, "x61": x61, "fourth": fourth}
+
+
+def run(args, rows: list[Row], group: set[str], recipe: Recipe) -> None:
+    """The side-by-side comparison (and ``--write``) of module docstring; ``rows`` the design rows as `--write`
+    reads them, ``group`` the held-back sources among them (described, never fitted on nor scored but by a write)."""
+    if recipe.weigh != "stroke":
+        raise SystemExit("--sign: the sign writers are weighed by --sign-weigh; use --weigh stroke")
+    m = material(args, rows, group)
+    d, every, n, origin, sets, sources = m["d"], m["every"], m["n"], m["origin"], m["sets"], m["sources"]
+    split, devices, is_design, design = m["split"], m["devices"], m["is_design"], m["design"]
+    real, st, x61, fourth = d["real"], m["st"], m["x61"], m["fourth"]
     print(f"## Learned ranker with the sign set ({recipe.name()}; sign weighed by {args.sign_weigh})\n")
     print(f"{int(real[design].sum())} design strokes of {len(set(sources[design].tolist()))} sources, "
           f"{len(st)} ST and {len(x61)} X61 sign strokes, {len(fourth)} fourth-group strokes, "
