@@ -179,9 +179,14 @@ def test_export_refuses_two_outputs_in_one_file_and_png_bytes_under_another_name
 
 
 def _children(pid: int) -> list[int]:
+    """The process ``pid``'s children, by its threads' /proc lists; a thread that ends between the listing and the
+    read (the process starts and ends threads as it goes) has none."""
     found = []
     for task in Path(f"/proc/{pid}/task").iterdir():
-        found += [int(c) for c in (task / "children").read_text().split()]
+        try:
+            found += [int(c) for c in (task / "children").read_text().split()]
+        except FileNotFoundError:
+            continue
     return found
 
 
