@@ -83,11 +83,9 @@ def _arm_corner(pts: np.ndarray, within: int, noise: float) -> int | None:
     for c in _may_turn(pts, within):
         if steps[c] < ARM_REACH * noise:
             continue
-        u, v = pts[c] - pts[max(0, c - REACH)], pts[c + REACH] - pts[c]
-        norms = float(np.hypot(*u) * np.hypot(*v))
-        if norms == 0.0:
+        turned = sg.angle_deg(pts[c] - pts[max(0, c - REACH)], pts[c + REACH] - pts[c])
+        if turned is None:
             continue
-        turned = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
         if turned >= best_turn:
             best, best_turn = c, turned
     return best

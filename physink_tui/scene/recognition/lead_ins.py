@@ -29,13 +29,18 @@ def lead_in(end: np.ndarray, turn: np.ndarray, unit: np.ndarray, length: float) 
     """Whether ``end`` (the piece before where the pen turned, ``turn``, from the stroke's start; ``unit`` the way the
     line runs on from ``turn``; ``length`` the stroke's path) is a lead-in run back along a line drawn level or
     downhill (`LEAD_SHARE`, `LEAD_DEG`, `LEAD_RISE_DEG`)."""
-    if sg.path_length(end) > LEAD_SHARE * length or not rises_at_most(unit, LEAD_RISE_DEG):
+    return rises_at_most(unit, LEAD_RISE_DEG) and turned_back(end, turn, unit, LEAD_SHARE * length, LEAD_DEG)
+
+
+def turned_back(end: np.ndarray, turn: np.ndarray, unit: np.ndarray, most: float, deg: float) -> bool:
+    """Whether ``end`` (an end piece of a stroke, from the stroke's end to where it turns, ``turn``) runs back along
+    the line that goes on from ``turn`` the way of ``unit`` (a unit vector): its path no longer than ``most``, its
+    chord (from ``turn`` to the stroke's end) within ``deg`` degrees of ``unit``. A lead-in (`lead_in`) and a hook
+    (`open_marks.retraced_ends`) are both such pieces, told apart by their bounds."""
+    if sg.path_length(end) > most:
         return False
-    chord = end[0] - turn
-    norm = float(np.hypot(*chord))
-    if norm == 0.0:
-        return True
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(chord @ unit) / norm)))) <= LEAD_DEG
+    angle = sg.angle_deg(end[0] - turn, unit)
+    return angle is None or angle <= deg
 
 
 def rises_at_most(unit: np.ndarray, deg: float) -> bool:

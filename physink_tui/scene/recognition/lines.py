@@ -217,11 +217,8 @@ def _hooked_both(head: np.ndarray, tail: np.ndarray, middle: np.ndarray, noise: 
 def _splay(head: np.ndarray, tail: np.ndarray) -> float:
     """The angle (degrees) between ``head``'s and ``tail``'s chords, each from where it was cut out to the stroke's
     end: 0 where they run parallel."""
-    u, v = head[0] - head[-1], tail[0] - tail[-1]
-    norms = float(np.hypot(*u) * np.hypot(*v))
-    if norms == 0.0:
-        return 0.0
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
+    angle = sg.angle_deg(head[0] - head[-1], tail[0] - tail[-1])
+    return 0.0 if angle is None else angle
 
 
 def _at(pts: np.ndarray, along: np.ndarray, where: float) -> np.ndarray:
@@ -250,11 +247,7 @@ def _stand_off(piece: np.ndarray, rest: np.ndarray) -> float | None:
         return None
     if len(piece) > 2 and sg.chord_deviation(piece) >= sg.ARM_STRAIGHT:
         return None
-    u, v = piece[0] - piece[-1], rest[-1] - rest[0]
-    norms = float(np.hypot(*u) * np.hypot(*v))
-    if norms == 0.0:
-        return None
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
+    return sg.angle_deg(piece[0] - piece[-1], rest[-1] - rest[0])
 
 
 INK_STEP = 3.0
@@ -351,11 +344,8 @@ def _turns_off(pts: np.ndarray, k: int) -> bool:
     """Whether the first ``k`` of ``pts`` head off the way the next ``2 k`` run on by `HOOK_TURN_DEG` or more."""
     if k < 2 or 3 * k > len(pts):
         return False
-    u, v = pts[k - 1] - pts[0], pts[3 * k - 2] - pts[k - 1]
-    norms = float(np.hypot(*u) * np.hypot(*v))
-    if norms == 0.0:
-        return False
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms)))) >= HOOK_TURN_DEG
+    angle = sg.angle_deg(pts[k - 1] - pts[0], pts[3 * k - 2] - pts[k - 1])
+    return angle is not None and angle >= HOOK_TURN_DEG
 
 
 HOOK_CURL_DEG = 35.0

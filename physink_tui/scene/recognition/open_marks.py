@@ -209,7 +209,7 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     for k, (end, turn, back, share) in enumerate(ends):  # each end's piece, from its end
         off = np.abs((end[:, 0] - a[0]) * unit[1] - (end[:, 1] - a[1]) * unit[0])
         if (float(off.max()) > RETRACE_OFF * span + noise and not (k == 0 and led)
-                and not _hooked_back(end, turn, back, share * length)):
+                and not lead_ins.turned_back(end, turn, back, share * length, BACK_HOOK_DEG)):
             return None
     return kept
 
@@ -230,19 +230,6 @@ sweeping off): the ST5022 writers' lines hooked where the pen landed, 8.5-12.4 %
 (12.7-14.8 %), where it lifted 8-15 %; a barless radical's tick, drawn first and turned sharply into a long rise
 within 30 degrees, is 12.8 % of the path or more where this rule would cut it (`tests/penmodels/math_marks.
 barless_radical`, extra tuning seeds 2000-2998: issue 25, session 36, wt-hooks2)."""
-
-
-def _hooked_back(end: np.ndarray, turn: np.ndarray, back: np.ndarray, most: float) -> bool:
-    """Whether ``end`` (an end piece of the stroke, from the stroke's end to where it turns, ``turn``) is a hook turned
-    back along the line, which runs on from ``turn`` the way of ``back`` (a unit vector): no longer than ``most``
-    (`BACK_HOOK_SHARE` or `BACK_HOOK_LANDED_SHARE` of the stroke's path), its chord within `BACK_HOOK_DEG`."""
-    if sg.path_length(end) > most:
-        return False
-    chord = end[0] - turn
-    norm = float(np.hypot(*chord))
-    if norm == 0.0:
-        return True
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(chord @ back) / norm)))) <= BACK_HOOK_DEG
 
 
 REST_HOOK_SHARE = 0.05
@@ -341,11 +328,8 @@ def flicked(coarse: np.ndarray) -> bool:
 def _end_bend(even: np.ndarray) -> float:
     """The angle (degrees) between the chord of the first tenth of ``even`` (100 points equally spaced) and the chord of
     the next fifth (`FLICK_END_DEG`)."""
-    u, v = even[10] - even[0], even[30] - even[10]
-    norms = float(np.hypot(*u) * np.hypot(*v))
-    if norms == 0.0:
-        return 180.0
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
+    angle = sg.angle_deg(even[10] - even[0], even[30] - even[10])
+    return 180.0 if angle is None else angle
 
 
 def hooked_straight(coarse: np.ndarray, bow: np.ndarray, noise: float) -> bool:

@@ -103,8 +103,8 @@ def heading_home(work: np.ndarray, corners: list[int], max_deg: float = 50.0) ->
     home = work[0] - work[-1]
 
     def angle(v: np.ndarray) -> float:
-        norms = float(np.hypot(*v) * np.hypot(*home))
-        return 0.0 if norms == 0.0 else math.degrees(math.acos(max(-1.0, min(1.0, float(v @ home) / norms))))
+        between = sg.angle_deg(v, home)
+        return 0.0 if between is None else between
 
     # the last side aims at the start, or the pen stopped at a corner and the gap runs along the first side's line
     # (the start lies on from the end the way the first side goes, or, drawn past the start, back from it)

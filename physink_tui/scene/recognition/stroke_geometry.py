@@ -341,6 +341,14 @@ def sharpest_turn(run: np.ndarray, span: float) -> float:
     return float(np.maximum.reduce(np.abs(done[w:] - done[:-w])))
 
 
+def angle_deg(u: np.ndarray, v: np.ndarray) -> float | None:
+    """The angle (degrees, 0-180) between the vectors ``u`` and ``v``, or None where either has no length."""
+    norms = float(np.hypot(*u) * np.hypot(*v))
+    if norms == 0.0:
+        return None
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
+
+
 def end_arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
     """Whether ``piece`` (from the stroke's end to where it joins ``rest``, which runs on from the join) is an arm."""
     if len(piece) < 2 or length == 0.0 or path_length(piece) < ARM_SHARE * length:
@@ -349,10 +357,9 @@ def end_arm(piece: np.ndarray, rest: np.ndarray, length: float) -> bool:
         return False
     ahead = resample(rest, 50)
     u, v = piece[0] - piece[-1], ahead[10] - ahead[0]  # the arm and the first fifth of the rest, from the join
-    norms = float(np.hypot(*u) * np.hypot(*v))
-    if norms == 0.0:
+    angle = angle_deg(u, v)
+    if angle is None:
         return False
-    angle = math.degrees(math.acos(max(-1.0, min(1.0, float(u @ v) / norms))))
     if not (ARM_ANGLE_DEG[0] <= angle <= ARM_ANGLE_DEG[1] and len(find_corners(rest)) == 2):
         return False
     middle = rest[len(rest) // 5: len(rest) - len(rest) // 5]  # no point there either (a brace's soft tip)
