@@ -59,17 +59,13 @@ def unswung(work: np.ndarray, coarse: np.ndarray) -> tuple[np.ndarray | None, fl
 
 def measures(work: np.ndarray, before: float = 0.0, whole: float | None = None) -> dict[str, float] | None:
     """`rounded_chevron`'s measures of ``work`` (share on the ``whole`` path where given)."""
-    start, end = work[0], work[-1]
-    d = end - start
-    if float(np.hypot(*d)) == 0.0:
+    found = rc.point_and_sides(work)
+    if found is None:
         return None
-    rel = work - start
-    k = int(np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]).argmax())
-    along = sg.along(work)
-    length = float(along[-1])
+    k, along, first, second = found
+    start, end, length = work[0], work[-1], float(along[-1])
+    d = end - start
     share = (before + along[k]) / (length if whole is None else whole)
-    first = work[:max(int(np.searchsorted(along, rc.OUTER * along[k])), 2)]
-    second = work[min(int(np.searchsorted(along, along[k] + (1.0 - rc.OUTER) * (length - along[k]))), len(work) - 2):]
     straight = max(sg.chord_deviation(first), sg.chord_deviation(second))
     u, v = first[-1] - first[0], second[-1] - second[0]
     turn = abs(math.degrees(math.atan2(float(u[0] * v[1] - u[1] * v[0]), float(u @ v))))

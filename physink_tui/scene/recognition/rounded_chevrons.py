@@ -53,18 +53,13 @@ def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float]
     `open_shapes.classify_open` judges it; ``noise``: the pen's jitter in its units."""
     if len(work) < 12 or len(sf.turn_lobes(shape_turning.coarse_turning(work, noise))) != 1:
         return None
-    start, end = work[0], work[-1]
-    d = end - start
-    if float(np.hypot(*d)) == 0.0:
+    found = point_and_sides(work)
+    if found is None:
         return None
-    rel = work - start
-    k = int(np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]).argmax())
-    along = sg.along(work)
-    length = float(along[-1])
+    k, along, first, second = found
+    start, end, length = work[0], work[-1], float(along[-1])
     if not SIDE_SHARE[0] <= along[k] / length <= SIDE_SHARE[1]:
         return None
-    first = work[:max(int(np.searchsorted(along, OUTER * along[k])), 2)]
-    second = work[min(int(np.searchsorted(along, along[k] + (1.0 - OUTER) * (length - along[k]))), len(work) - 2):]
     if max(sg.chord_deviation(first), sg.chord_deviation(second)) > STRAIGHT:
         return None
     u, v = first[-1] - first[0], second[-1] - second[0]
@@ -79,6 +74,22 @@ def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float]
         return None
     corner = _within(corner, work[k], work)
     return tuple((float(p[0]), float(p[1])) for p in (start, corner, end))
+
+
+def point_and_sides(work: np.ndarray) -> tuple[int, np.ndarray, np.ndarray, np.ndarray] | None:
+    """Where ``work``'s point is (the index of the point farthest from the line joining its ends), every point's place
+    along the path, and the outer `OUTER` of each side (from each end towards the point); None where the ends meet."""
+    start, end = work[0], work[-1]
+    d = end - start
+    if float(np.hypot(*d)) == 0.0:
+        return None
+    rel = work - start
+    k = int(np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0]).argmax())
+    along = sg.along(work)
+    length = float(along[-1])
+    first = work[:max(int(np.searchsorted(along, OUTER * along[k])), 2)]
+    second = work[min(int(np.searchsorted(along, along[k] + (1.0 - OUTER) * (length - along[k]))), len(work) - 2):]
+    return k, along, first, second
 
 
 BOUNDS_SHARE = 0.04
