@@ -24,7 +24,6 @@ from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
 from physink_tui.scene.recognition.beautify import curve_geometry, scale_geometry
 from physink_tui.scene.recognition.primitives import Geometry, Polygon, Polyline, Recognition
-from physink_tui.scene.recognition.ranker_corners import corner_features
 from physink_tui.scene.recognition.ranker_pace import corner_slowdown, point_balance
 from physink_tui.scene.recognition.ranker_weights import FEATURES as FEATURES  # the model's names, as ranker.*
 from physink_tui.scene.recognition.ranker_weights import KINDS as KINDS
@@ -174,8 +173,7 @@ def _features(found: Unit | None, noise: float, *, polyline: bool = False, timed
         float(len(corners) > 2 and open_shapes._bent_polyline(th, corners, lobes, deviation)),
         float(open_shapes._brace_tip(work, corners)),
         float(open_shapes._bowed_between_corners(work, corners, length, deviation)),
-        float(open_shapes._rounded_bracket(corners, straights, lobes)), 0.0, 0.0, checks[4],
-        *corner_features(work, th)]
+        float(open_shapes._rounded_bracket(corners, straights, lobes)), 0.0, 0.0, checks[4]]
     slow = corner_slowdown(raw, times, corners, len(work)) if timed else None
     if slow is not None:
         at = FEATURES.index("has_times")

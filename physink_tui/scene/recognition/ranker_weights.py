@@ -24,8 +24,7 @@ FEATURES = ("closure", "ink", "net_turn", "abs_turn", "corners", "concentration"
             "mean_roundness", "straight_share", "max_bow", "mean_bow", "max_corner_turn", "min_corner_turn",
             "lobes", "ellipse_error", "circle_error", "aspect", "line_error", "corner_share", "one_way",
             "max_bend", "sparse", "one_corner", "two_corners", "all_straight", "bent_polyline", "brace_tip",
-            "bowed_between", "rounded_bracket", "has_times", "corner_slowdown", "point_balance", "turn_spread",
-            "peak_turn", "outside_turn", "side_bow")
+            "bowed_between", "rounded_bracket", "has_times", "corner_slowdown", "point_balance")
 MODEL_MODULE = "physink_tui/scene/recognition/ranker_model.py"
 """Where the shipped model lives (fitted on every source by `benchmarks/train_ranker.py --write`)."""
 
