@@ -2,7 +2,7 @@
 
 Usage: .venv/bin/python benchmarks/ranker_loso.py SET [SET ...] --sign SIGN_JSONL --fourth Q.jsonl T.jsonl
        [--guarded-weights G[,G...]] [--lams L[,L...]] [--margins M[,M...]] [--augment K] [--copies-weight A]
-       [--events-share E] [--drop F[,F...]] [--hide-x61] [--write PATH]
+       [--events-share E] [--drop F[,F...]] [--variants 'F,F;F;...'] [--each] [--hide-x61] [--write PATH]
 
 Every design source (the first held-back group's students too: `misses.py design` reads them) and every sign ST5022
 writer is held out once, alone, and read by a model fitted on all the others (the design strokes and their copies, the
@@ -19,6 +19,8 @@ recipe (most net gains on design, then ST, then fourth) is reported with its gai
 with ``--write`` (the model fitted on every design source and the ST writers; with no admissible recipe, nothing is
 written). The fits follow `ranker_fit.model` exactly (the features standardised on each fold's own strokes), from
 tensors built once (`Folds`) and Newton's steps started at the whole pool's weights (the optimum is unique).
+``--variants`` fits every recipe once per list of features dropped besides ``--drop`` (a feature tried alone, or a
+control without it, on the same description); ``--each`` lists every recipe's gains and losses stroke by stroke.
 """
 
 from __future__ import annotations
@@ -117,6 +119,9 @@ def main() -> None:
     ap.add_argument("--copies-weight", type=float, default=0.5)
     ap.add_argument("--events-share", type=float, default=1.0)
     ap.add_argument("--drop", default="has_times,corner_slowdown")
+    ap.add_argument("--variants", default="", help="';'-separated comma lists of features dropped besides --drop, "
+                    "each fitted as a recipe of its own (an empty item: none more); e.g. the new features in turn")
+    ap.add_argument("--each", action="store_true", help="list every recipe's gains and losses, not only the best's")
     ap.add_argument("--hide-x61", action="store_true")
     ap.add_argument("--write", type=Path)
     args = ap.parse_args()
@@ -131,7 +136,11 @@ def main() -> None:
     real_design = design_all[d["real"][design_all]]
     pool = np.concatenate([design_all, st])
     dm = {**d, "scale": ranker_sign.sign_scale(d, design_all, st, sources, "source", args.copies_weight)}
-    drop = tuple(f for f in args.drop.split(",") if f)
+    drop0 = tuple(f for f in args.drop.split(",") if f)
+    variants = [tuple(f for f in v.split(",") if f) for v in args.variants.split(";")] if args.variants else [()]
+    unknown = sorted(({f for v in variants for f in v} | set(drop0)) - set(ranker.FEATURES))
+    if unknown:
+        raise SystemExit(f"--drop/--variants: {', '.join(unknown)} not among the ranker's features")
     margins = [float(v) for v in args.margins.split(",")]
     shipped = {**{k: np.asarray(ranker_model.MODEL[k], dtype=float) for k in ("theta", "mean", "std")}}
     ref = {g: kinds(d, idx, shipped, ranker_model.MODEL["margin"])
@@ -153,42 +162,49 @@ def main() -> None:
     keys = sources[origin[pool]]
     held = names + sorted(set(sources[st].tolist()))
     results = []
-    for gw in (float(v) for v in args.guarded_weights.split(",")):
-        for lam in (float(v) for v in args.lams.split(",")):
-            recipe = Recipe(lam, "stroke", drop, (margins[0],), None, "source", args.copies_weight, False, gw)
-            t0 = time.time()
-            whole = folds.fit(pool, recipe)
-            got = {mg: {} for mg in margins}
-            for s in held:
-                fm = folds.fit(pool[keys != s], recipe, start=whole["theta"])
-                test = np.flatnonzero((sources == s) & d["real"])
-                test = test[np.isin(test, pool)]
-                for mg in margins:
-                    for i, k in zip(test, kinds(d, test, fm, mg), strict=True):
-                        got[mg][i] = k
-            print(f"(G {gw:g}, lam {lam:g}: {len(held)} folds in {time.time() - t0:.0f} s; rules' weight "
-                  f"{whole['theta'][-1]:.3f})", flush=True)
+    for gw, lam, more in ((g, la, v) for v in variants for g in (float(x) for x in args.guarded_weights.split(","))
+                          for la in (float(x) for x in args.lams.split(","))):
+        drop = drop0 + tuple(f for f in more if f not in drop0)
+        tag = f" drop {','.join(more)}" if more else ""
+        recipe = Recipe(lam, "stroke", drop, (margins[0],), None, "source", args.copies_weight, False, gw)
+        t0 = time.time()
+        whole = folds.fit(pool, recipe)
+        got = {mg: {} for mg in margins}
+        for s in held:
+            fm = folds.fit(pool[keys != s], recipe, start=whole["theta"])
+            test = np.flatnonzero((sources == s) & d["real"])
+            test = test[np.isin(test, pool)]
             for mg in margins:
-                new_k = {"design": [got[mg][i] for i in real_design], "st": [got[mg][i] for i in st],
-                         "fourth": kinds(d, fourth, whole, mg), "x61": kinds(d, x61, whole, mg)}
-                ch = {g: changes(every, sources, idx, ref[g], new_k[g])
-                      for g, idx in (("design", real_design), ("st", st), ("fourth", fourth))}
-                ok, net, bad = verdict(ch, low)
-                fig = {g: int(right(every, idx, new_k[g]).sum())
-                       for g, idx in (("design", real_design), ("st", st), ("fourth", fourth), ("x61", x61))}
-                fig["in"] = int(right(every, real_design, kinds(d, real_design, whole, mg)).sum())
-                results.append(((gw, lam, mg), ok, net, ch, whole, fig, bad))
-                print(f"RESULT G {gw:g} lam {lam:g} margin {mg:g} | {'admissible' if ok else 'not admissible'} | "
-                      f"design held out {fig['design']} ({net['design']:+d}: +{sum(c[-1] > 0 for c in ch['design'])}"
-                      f" -{sum(c[-1] < 0 for c in ch['design'])}) | ST held out {fig['st']} ({net['st']:+d}) | "
-                      f"fourth {fig['fourth']} ({net['fourth']:+d}) | design in-sample {fig['in']}"
-                      + ("" if args.hide_x61 else f" | X61 {fig['x61']}")
-                      + (f" | low sources losing: {', '.join(bad)}" if bad else ""), flush=True)
+                for i, k in zip(test, kinds(d, test, fm, mg), strict=True):
+                    got[mg][i] = k
+        print(f"(G {gw:g}, lam {lam:g}{tag}: {len(held)} folds in {time.time() - t0:.0f} s; rules' weight "
+              f"{whole['theta'][-1]:.3f})", flush=True)
+        for mg in margins:
+            new_k = {"design": [got[mg][i] for i in real_design], "st": [got[mg][i] for i in st],
+                     "fourth": kinds(d, fourth, whole, mg), "x61": kinds(d, x61, whole, mg)}
+            ch = {g: changes(every, sources, idx, ref[g], new_k[g])
+                  for g, idx in (("design", real_design), ("st", st), ("fourth", fourth))}
+            ok, net, bad = verdict(ch, low)
+            fig = {g: int(right(every, idx, new_k[g]).sum())
+                   for g, idx in (("design", real_design), ("st", st), ("fourth", fourth), ("x61", x61))}
+            fig["in"] = int(right(every, real_design, kinds(d, real_design, whole, mg)).sum())
+            results.append(((gw, lam, mg), ok, net, ch, whole, fig, bad, tag))
+            print(f"RESULT G {gw:g} lam {lam:g} margin {mg:g}{tag} | {'admissible' if ok else 'not admissible'} | "
+                  f"design held out {fig['design']} ({net['design']:+d}: +{sum(c[-1] > 0 for c in ch['design'])}"
+                  f" -{sum(c[-1] < 0 for c in ch['design'])}) | ST held out {fig['st']} ({net['st']:+d}) | "
+                  f"fourth {fig['fourth']} ({net['fourth']:+d}) | design in-sample {fig['in']}"
+                  + ("" if args.hide_x61 else f" | X61 {fig['x61']}")
+                  + (f" | low sources losing: {', '.join(bad)}" if bad else ""), flush=True)
+            if args.each:
+                for g in ("design", "fourth", "st"):
+                    for c in sorted(ch[g]):
+                        print(f"  {g} {'gained' if c[-1] > 0 else 'lost'} {c[0]} {c[1]} `{c[2]}`: shipped {c[3]}, "
+                              f"refit {c[4]}", flush=True)
     admissible = [r for r in results if r[1]]
     best = max(admissible or results, key=lambda r: (r[2]["design"], r[2]["st"], r[2]["fourth"]))
-    (gw, lam, mg), ok, net, ch, whole, fig, bad = best
+    (gw, lam, mg), ok, net, ch, whole, fig, bad, tag = best
     print(f"\n### {'Best admissible' if ok else 'No admissible recipe; the best by net'}: G {gw:g}, lam {lam:g}, "
-          f"margin {mg:g}\n")
+          f"margin {mg:g}{tag}\n")
     for g in ("design", "fourth", "st"):
         per = Counter()
         for c in ch[g]:
@@ -203,7 +219,7 @@ def main() -> None:
             "features": list(ranker.FEATURES), "kinds": list(ranker.KINDS), "lam": lam, "margin": mg,
             "theta": [round(float(v), 9) for v in whole["theta"]], "mean": [round(float(v), 9) for v in whole["mean"]],
             "std": [round(float(v), 9) for v in whole["std"]]}))
-        print(f"wrote {args.write} (design and the ST writers; G {gw:g}, lam {lam:g}, margin {mg:g})")
+        print(f"wrote {args.write} (design and the ST writers; G {gw:g}, lam {lam:g}, margin {mg:g}{tag})")
 
 
 if __name__ == "__main__":
