@@ -17,6 +17,7 @@ import numpy as np
 from physink_tui.scene.recognition import (
     angular_braces,
     bracket_marks,
+    end_curls,
     lift_hooks,
     lines,
     lopsided_braces,
@@ -77,7 +78,8 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     short, slow line look long and wavy): close to its fit, no more ink than its chord, hooks ignored; also
     without a lead-in or tail that runs back along it (`open_marks.retraced_ends`), or bowed one way and back by the
     hand's swing (`open_marks.swung_line`; also without such a piece where it was a long hook:
-    `open_marks.hooked_bow`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a short line's
+    `open_marks.hooked_bow`), or straight by the line test without a tight round curl at one end
+    (`end_curls.curled_ends`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a short line's
     hook is a large share of it), straight within the pen's own wobble (`lines.within_wobble`). Those two are judged
     by the pen's stated noise ``pen`` (``noise`` where not given), not a measured jitter that may be the shape's own
     bends between a few far-apart events (`recognize.SPARSE_BENDS`). A tall, thin curly brace
@@ -91,6 +93,10 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
             if (swung is None and rest_swung is not None
                     and open_marks.hooked_bow(raw, kept, _test_points(raw, noise), noise)):
                 swung = rest_swung  # a line the hand bowed, refused for the hook the cut took
+    if found is None and swung is None:
+        kept = end_curls.curled_ends(raw)
+        if kept is not None:  # a line whose end the pen curled round where it landed or lifted: the rest straight
+            found, _, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)  # (a bowed rest is a mouse's tick's arm)
     if (found is None or loose) and lines.ends_may_span(raw, pen, diag):
         # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
         # straightest line left once a hook is cut is the line drawn (its ends where the hand meant them)

@@ -1,0 +1,105 @@
+"""A line whose end the pen curled (a rounded hook swung round where it landed or lifted), without that curl; no I/O."""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from physink_tui.scene.recognition import stroke_geometry as sg
+
+CURL_POINTS = 64
+"""The stroke is judged on this many points equally spaced along it (then lightly smoothed)."""
+CURL_MIDDLE = (0.3, 0.7)
+"""The line's way is the chord between these shares of the path (a curl lies outside them)."""
+CURL_OFF_DEG = 30.0
+"""An end piece is the curl from the stroke's end to the last step heading more than this off the line's way."""
+CURL_SHARE = 0.18
+"""... at most this share of the path,"""
+CURL_TURN_DEG = 125.0
+"""... heading at least this far off the line's way somewhere (a curl swings round; a hook nearly in line is
+`open_marks.retraced_ends`'),"""
+CURL_ROUND = 0.2
+"""... and round: it strays from its own chord by at least this share of it (a quarter circle's bow; a mark's short arm
+is straight: `stroke_geometry.ARM_STRAIGHT`),"""
+CURL_TIGHT_DEG = 60.0
+"""... and tight: somewhere it turns at least this much within `CURL_SPAN` of the path."""
+CURL_SPAN = 0.04
+"""(the span `CURL_TIGHT_DEG` is judged over)"""
+CURL_END_DEG = 90.0
+"""... and swung in from its end: the step at the stroke's end heads at least this far off the line's way (a mark whose
+first arm is a small hook and a tick, zig-zagging into its long arm, heads back along it there)."""
+CURL_TINY = 0.05
+"""An end piece off the line's way of at most this share of the path is a flick, cut with the curl whatever its shape;
+exactly one end's piece is longer, and curls."""
+
+
+class Piece(NamedTuple):
+    """An end piece heading off the line's way, as `curled_ends` judges it."""
+
+    end: int  # 0 where the pen landed, 1 where it lifted
+    share: float  # of the stroke's path
+    turn: float  # the most degrees any of its steps heads off the line's way
+    bow: float  # its farthest point from its chord, over the chord
+    tight: float  # the most degrees it turns within `CURL_SPAN` of the path
+    outer: float  # the degrees off the line's way of its step at the stroke's end
+
+
+def curl_pieces(raw: np.ndarray) -> list[Piece]:
+    """The end pieces of ``raw`` heading more than `CURL_OFF_DEG` off the line's way (none, one or both ends')."""
+    pts = sg.smooth(sg.resample(raw, CURL_POINTS))
+    n = len(pts)
+    length = sg.path_length(pts)
+    if length == 0.0:
+        return []
+    way = pts[int(CURL_MIDDLE[1] * (n - 1))] - pts[int(CURL_MIDDLE[0] * (n - 1))]
+    norm = float(np.hypot(*way))
+    if norm == 0.0:
+        return []
+    way = way / norm
+    steps = pts[1:] - pts[:-1]
+    cos = (steps @ way) / np.maximum(np.hypot(steps[:, 0], steps[:, 1]), 1e-12)
+    off = np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
+    half = len(steps) // 2
+    out = []
+    head = np.flatnonzero(off[:half] > CURL_OFF_DEG)
+    if len(head):
+        piece = pts[:int(head[-1]) + 2]
+        out.append((0, piece))
+    tail = np.flatnonzero(off[half:] > CURL_OFF_DEG)
+    if len(tail):
+        piece = pts[half + int(tail[0]):]
+        out.append((1, piece))
+    found = []
+    for end, piece in out:
+        k = len(piece) - 1
+        offs = off[:k] if end == 0 else off[len(steps) - k:]
+        found.append(Piece(end, sg.path_length(piece) / length, float(offs.max()), sg.chord_deviation(piece),
+                           sg.sharpest_turn(piece, CURL_SPAN * length) if len(piece) > 2 else 0.0,
+                           float(offs[0] if end == 0 else offs[-1])))
+    return found
+
+
+def curled_ends(raw: np.ndarray) -> np.ndarray | None:
+    """``raw`` without the curl at one end (`CURL_SHARE`, `CURL_TURN_DEG`, `CURL_ROUND`, `CURL_TIGHT_DEG`,
+    `CURL_END_DEG`) and any flick at the other (`CURL_TINY`), or None where no end curls, both do, or the other end's
+    piece is more than a flick."""
+    pieces = curl_pieces(raw)
+    if not pieces:
+        return None
+    longer = [piece for piece in pieces if piece.share > CURL_TINY]
+    if len(longer) != 1:
+        return None
+    curl = longer[0]
+    if not (curl.share <= CURL_SHARE and curl.turn >= CURL_TURN_DEG and curl.bow >= CURL_ROUND
+            and curl.tight >= CURL_TIGHT_DEG and curl.outer >= CURL_END_DEG):
+        return None
+    at = sg.along(raw)
+    lo, hi = 0, len(raw)
+    for piece in pieces:  # the curl and any flick, cut where they join the line (by their share of the path)
+        if piece.end == 0:
+            lo = int(np.searchsorted(at, piece.share * at[-1]))
+        else:
+            hi = int(np.searchsorted(at, (1.0 - piece.share) * at[-1])) + 1
+    kept = raw[lo:hi]
+    return kept if len(kept) >= 2 else None
