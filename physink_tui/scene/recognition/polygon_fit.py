@@ -50,13 +50,17 @@ class PolygonFit:
     walks: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict, compare=False, repr=False)
     """Walks along ``points`` (`stroke_features.walk`: the turning and the path before each point) that checks of the
     fits measure (`polygon_checks.corner_roundness_closed`), shared by every fit of the same points, as ``sums``."""
+    extent: tuple[np.ndarray, np.ndarray] | None = field(default=None, compare=False, repr=False)
+    """The least and the greatest x and y of ``points`` (`corner_points`' bounds), shared as ``sums``; None: measured
+    by `corner_points`."""
 
     @property
     def vertices(self) -> np.ndarray:
         """The chain's vertices (`corner_points`), measured once (`memo`; read-only)."""
         found = self.memo.get("vertices")
         if found is None:
-            found = corner_points(self.points, self.indices, closed=self.closed, reach=self.reach, sums=self.sums)
+            found = corner_points(self.points, self.indices, closed=self.closed, reach=self.reach, sums=self.sums,
+                                  extent=self.extent)
             found.flags.writeable = False
             self.memo["vertices"] = found
         return found
@@ -232,13 +236,14 @@ def _chains(pts: np.ndarray, max_segments: int, tolerance: float, *, closed: boo
     sums = moments(pts)
     cost = line_costs(pts, cand, sums)
     walks: dict[str, tuple[list[float], list[float]]] = {}  # shared by the fits, as ``sums``
+    extent = (np.minimum.reduce(pts, axis=0), np.maximum.reduce(pts, axis=0))  # (`.min(axis=0)`'s own reduction)
     out: dict[int, PolygonFit] = {}
     for k, found in enumerate(_segmentations(cost, min(max_segments, len(cand) - 1)), start=1):
         if found is None:
             continue
         rss, path = found
         indices = tuple(int(cand[p]) for p in path)
-        out[k] = PolygonFit(indices, rss, pts, closed, 4 * tolerance, sums, walks=walks)
+        out[k] = PolygonFit(indices, rss, pts, closed, 4 * tolerance, sums, walks=walks, extent=extent)
     return out
 
 
@@ -270,17 +275,18 @@ def run_lines(pts: np.ndarray, lo: np.ndarray, hi: np.ndarray, sums: np.ndarray 
 
 
 def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, reach: float,
-                  sums: np.ndarray | None = None) -> np.ndarray:
+                  sums: np.ndarray | None = None, extent: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """The vertices of a chain of runs: where the lines fitted to neighbouring runs (their middle two thirds)
     meet, when that is near the point where the runs join (within a third of the shorter run, and within
-    ``reach`` of the points' bounds); else that point itself (nearly parallel sides never meet far away). The
-    ends of an open chain are its first and last points."""
+    ``reach`` of the points' bounds, ``extent``: their least and greatest x and y where known); else that point itself
+    (nearly parallel sides never meet far away). The ends of an open chain are its first and last points."""
     idx = np.asarray(indices)
     a, b = idx[:-1], idx[1:]
     size = b - a + 1
     trim = size // 6  # none under six points (as ``np.where(size >= 6, size // 6, 0)``: a run has two or more)
     centres, dirs = run_lines(pts, a + trim, b + 1 - trim, sums)
-    chords = np.hypot(*(pts[b] - pts[a]).T)
+    d = pts[b] - pts[a]
+    chords = np.hypot(d[:, 0], d[:, 1])  # (``np.hypot(*d.T)``, without unpacking the rows)
     runs = len(a)
     second = np.arange(runs) if closed else np.arange(1, runs)
     first = second - 1  # -1 wraps to the last run of a closed chain
@@ -290,9 +296,12 @@ def corner_points(pts: np.ndarray, indices: tuple[int, ...], *, closed: bool, re
     safe = np.where(np.abs(denom) > 1e-9, denom, 1.0)
     t = ((p2 - p1)[:, 0] * d2[:, 1] - (p2 - p1)[:, 1] * d2[:, 0]) / safe
     meet = p1 + t[:, None] * d1
-    lo, hi = pts.min(axis=0) - reach, pts.max(axis=0) + reach
-    near = np.hypot(*(meet - at).T) <= np.minimum(chords[first], chords[second]) / 3
-    ok = (np.abs(denom) > 1e-9) & near & (meet >= lo).all(axis=1) & (meet <= hi).all(axis=1)
+    least, most = (np.minimum.reduce(pts, axis=0), np.maximum.reduce(pts, axis=0)) if extent is None else extent
+    lo, hi = least - reach, most + reach
+    off = meet - at
+    near = np.hypot(off[:, 0], off[:, 1]) <= np.minimum(chords[first], chords[second]) / 3
+    inside = np.logical_and.reduce(meet >= lo, axis=1) & np.logical_and.reduce(meet <= hi, axis=1)  # (`.all(axis=1)`)
+    ok = (np.abs(denom) > 1e-9) & near & inside
     inner: np.ndarray = np.where(ok[:, None], meet, at)
     if closed:
         return inner

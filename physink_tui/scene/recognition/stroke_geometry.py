@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from physink_tui.scene.recognition import linalg_cores
+from physink_tui.scene.recognition.diameter_bounds import diameter_bound
 
 try:  # `np.interp`'s compiled core, which it calls on real points without a period once it has checked their type
     from numpy._core.multiarray import interp as _interp  # (tests/test_private_interp.py: still there, same numbers)
@@ -99,8 +100,13 @@ def smooth(pts: np.ndarray, passes: int = 2) -> np.ndarray:
     if len(pts) < 3 or passes < 1:
         return pts.copy()
     out = pts.astype(np.result_type(pts.dtype, 0.25))  # a copy, in floats (as the filter's quarters are)
-    for _ in range(passes):
-        out[1:-1] = (out[:-2] + 2 * out[1:-1] + out[2:]) / 4  # the right side is made whole before it is written
+    inner = np.empty_like(out[1:-1])
+    for _ in range(passes):  # ``(out[:-2] + 2 * out[1:-1] + out[2:]) / 4``, the same operations in one buffer, made
+        np.multiply(out[1:-1], 2, out=inner)  # whole before it is written back
+        np.add(out[:-2], inner, out=inner)
+        np.add(inner, out[2:], out=inner)
+        np.divide(inner, 4, out=inner)
+        out[1:-1] = inner
     return out
 
 
@@ -252,15 +258,18 @@ def _merge_collinear(pts: np.ndarray, corners: list[int], ratio: float = 0.975) 
         return corners
     d = pts[1:] - pts[:-1]
     seg = np.hypot(d[:, 0], d[:, 1])  # a run's `path_length` is the sum of its stretch of these, summed alike
+    measured: dict[tuple[int, int], float] = {}  # each pair of corners' straightness, measured once
     changed = True
     while changed and len(corners) > 2:
         changed = False
         best, best_k = 0.0, -1
         for k in range(1, len(corners) - 1):
             a, b = corners[k - 1], corners[k + 1]
-            chord = float(np.hypot(*(pts[b] - pts[a])))
-            run = float(np.add.reduce(seg[a:b]))
-            straightness = chord / run if run else 1.0
+            if (a, b) not in measured:
+                chord = float(np.hypot(*(pts[b] - pts[a])))
+                run = float(np.add.reduce(seg[a:b]))
+                measured[a, b] = chord / run if run else 1.0
+            straightness = measured[a, b]
             if straightness > ratio and straightness > best:
                 best, best_k = straightness, k
         if best_k > 0:
@@ -277,7 +286,10 @@ def remove_hooks(pts: np.ndarray, max_fraction: float = 0.1, min_turn_deg: float
     a stroke with no other corner (a tick); at both ends, of a straight run with no point (a square bracket).
     """
     n = len(pts)
-    if n < 12 or float(np.hypot(*(pts[-1] - pts[0]))) < 0.05 * bbox_diagonal(pts):
+    if n < 12:
+        return pts
+    gap = float(np.hypot(*(pts[-1] - pts[0])))
+    if not gap >= 0.05 * diameter_bound(pts) and gap < 0.05 * bbox_diagonal(pts):  # (the bound settles most)
         return pts  # a closed shape: what looks like a hook may be its last short side
     th = np.degrees(turning(pts))
     k = max(2, int(n * max_fraction))
