@@ -97,19 +97,20 @@ def _clean(points: Sequence[Sequence[float]]) -> tuple[np.ndarray | None, np.nda
     if pts.ndim != 2 or pts.shape[0] == 0 or pts.shape[1] < 2:
         return None, None, 0.0, f"{TOO_SHORT}: no points" if pts.size == 0 else "points must be pairs of numbers"
     pts = pts[:, :2]
-    bad = ~np.isfinite(pts).all(axis=1)
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
+    if not np.logical_and.reduce(np.isfinite(pts), axis=None):  # (every number finite: `.all()`'s own reduction)
+        i = int(np.flatnonzero(~np.isfinite(pts).all(axis=1))[0])
         return None, None, 0.0, (f"coordinates must be finite numbers; point {i} is ({float(pts[i, 0])!r}, "
                                  f"{float(pts[i, 1])!r})")
-    if float(np.abs(pts).max()) > MAX_COORDINATE:
+    # (``np.abs(pts).max()`` of finite numbers: the greatest or the least negated, without the copy)
+    if max(float(np.maximum.reduce(pts, axis=None)), -float(np.minimum.reduce(pts, axis=None))) > MAX_COORDINATE:
         return None, None, 0.0, f"coordinates too large to recognise (beyond {MAX_COORDINATE:g})"
     keep: np.ndarray | None = None
     if len(pts) > sg.MAX_WORKING_POINTS:
         pts = sg.drop_duplicates(sg.resample(sg.drop_duplicates(pts), sg.MAX_WORKING_POINTS))
     else:  # as `stroke_geometry.drop_duplicates`, the kept points' positions remembered for the ranker
         keep = np.ones(len(pts), dtype=bool)
-        keep[1:] = ((pts[1:] - pts[:-1]) != 0.0).any(axis=1)
+        step = pts[1:] - pts[:-1]
+        np.logical_or(step[:, 0] != 0.0, step[:, 1] != 0.0, out=keep[1:])  # (`.any(axis=1)` of the two columns)
         pts = pts[keep]
     if len(pts) < 2:
         return None, None, 0.0, f"{TOO_SHORT}: a single point"
