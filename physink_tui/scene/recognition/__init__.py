@@ -260,6 +260,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `stroke_geometry.py`: resampling, smoothing, turning angles, rotation-invariant size, ShortStraw/IStraw corners,
   hooks, where two lines meet (`line_meet`)
 - `small_loops.py`: small loops at corners (the path crossing itself), cut out before the coil test
+- `diameter_bounds.py`: an upper bound on `stroke_geometry.bbox_diagonal` in two reductions, asked first where it
+  may settle a comparison (`remove_hooks`' closed-stroke test)
 - `shape_turning.py`: turning at the shape's scale, on steps a few noise widths long (`coarse_turning`,
   `turning_beyond_tremor`)
 - `stroke_views.py`: one stroke's resampled, smoothed and hook-cut copies that the checks after the rules (waves,
