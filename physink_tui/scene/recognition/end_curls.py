@@ -47,15 +47,22 @@ class Piece(NamedTuple):
 
 def curl_pieces(raw: np.ndarray) -> list[Piece]:
     """The end pieces of ``raw`` heading more than `CURL_OFF_DEG` off the line's way (none, one or both ends')."""
+    ends, length = _end_pieces(raw)
+    return [_measured(end, piece, offs, length) for end, piece, offs in ends]
+
+
+def _end_pieces(raw: np.ndarray) -> tuple[list[tuple[int, np.ndarray, np.ndarray]], float]:
+    """Each end piece of ``raw`` (judged on `CURL_POINTS` points) heading off the line's way: which end, its points
+    from the line on, and how far (degrees) each of its steps heads off the line's way; and the judged path's length."""
     pts = sg.smooth(sg.resample(raw, CURL_POINTS))
     n = len(pts)
     length = sg.path_length(pts)
     if length == 0.0:
-        return []
+        return [], length
     way = pts[int(CURL_MIDDLE[1] * (n - 1))] - pts[int(CURL_MIDDLE[0] * (n - 1))]
     norm = float(np.hypot(*way))
     if norm == 0.0:
-        return []
+        return [], length
     way = way / norm
     steps = pts[1:] - pts[:-1]
     cos = (steps @ way) / np.maximum(np.hypot(steps[:, 0], steps[:, 1]), 1e-12)
@@ -64,42 +71,45 @@ def curl_pieces(raw: np.ndarray) -> list[Piece]:
     out = []
     head = np.flatnonzero(off[:half] > CURL_OFF_DEG)
     if len(head):
-        piece = pts[:int(head[-1]) + 2]
-        out.append((0, piece))
+        k = int(head[-1]) + 1
+        out.append((0, pts[:k + 1], off[:k]))
     tail = np.flatnonzero(off[half:] > CURL_OFF_DEG)
     if len(tail):
         piece = pts[half + int(tail[0]):]
-        out.append((1, piece))
-    found = []
-    for end, piece in out:
-        k = len(piece) - 1
-        offs = off[:k] if end == 0 else off[len(steps) - k:]
-        found.append(Piece(end, sg.path_length(piece) / length, float(offs.max()), sg.chord_deviation(piece),
-                           sg.sharpest_turn(piece, CURL_SPAN * length) if len(piece) > 2 else 0.0,
-                           float(offs[0] if end == 0 else offs[-1])))
-    return found
+        out.append((1, piece, off[len(steps) - (len(piece) - 1):]))
+    return out, length
+
+
+def _measured(end: int, piece: np.ndarray, offs: np.ndarray, length: float) -> Piece:
+    """The `Piece` of an end piece (`_end_pieces`)."""
+    return Piece(end, sg.path_length(piece) / length, float(offs.max()), sg.chord_deviation(piece),
+                 sg.sharpest_turn(piece, CURL_SPAN * length) if len(piece) > 2 else 0.0,
+                 float(offs[0] if end == 0 else offs[-1]))
 
 
 def curled_ends(raw: np.ndarray) -> np.ndarray | None:
     """``raw`` without the curl at one end (`CURL_SHARE`, `CURL_TURN_DEG`, `CURL_ROUND`, `CURL_TIGHT_DEG`,
     `CURL_END_DEG`) and any flick at the other (`CURL_TINY`), or None where no end curls, both do, or the other end's
-    piece is more than a flick."""
-    pieces = curl_pieces(raw)
-    if not pieces:
-        return None
-    longer = [piece for piece in pieces if piece.share > CURL_TINY]
+    piece is more than a flick. (Its share, turn and end are judged first: most strokes stop there, before the
+    dearer bow and tightness.)"""
+    ends, length = _end_pieces(raw)
+    shares = [sg.path_length(piece) / length for _, piece, _ in ends]
+    longer = [i for i, share in enumerate(shares) if share > CURL_TINY]
     if len(longer) != 1:
         return None
-    curl = longer[0]
-    if not (curl.share <= CURL_SHARE and curl.turn >= CURL_TURN_DEG and curl.bow >= CURL_ROUND
-            and curl.tight >= CURL_TIGHT_DEG and curl.outer >= CURL_END_DEG):
+    end, piece, offs = ends[longer[0]]
+    if not (shares[longer[0]] <= CURL_SHARE and float(offs.max()) >= CURL_TURN_DEG
+            and float(offs[0] if end == 0 else offs[-1]) >= CURL_END_DEG):
+        return None
+    curl = _measured(end, piece, offs, length)
+    if not (curl.bow >= CURL_ROUND and curl.tight >= CURL_TIGHT_DEG):
         return None
     at = sg.along(raw)
     lo, hi = 0, len(raw)
-    for piece in pieces:  # the curl and any flick, cut where they join the line (by their share of the path)
-        if piece.end == 0:
-            lo = int(np.searchsorted(at, piece.share * at[-1]))
+    for (end, _, _), share in zip(ends, shares, strict=True):  # the curl and any flick, cut where they join the line
+        if end == 0:
+            lo = int(np.searchsorted(at, share * at[-1]))
         else:
-            hi = int(np.searchsorted(at, (1.0 - piece.share) * at[-1])) + 1
+            hi = int(np.searchsorted(at, (1.0 - share) * at[-1])) + 1
     kept = raw[lo:hi]
     return kept if len(kept) >= 2 else None
