@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import NamedTuple
-
 import numpy as np
 
 from physink_tui.scene.recognition import stroke_geometry as sg
@@ -32,23 +30,6 @@ first arm is a small hook and a tick, zig-zagging into its long arm, heads back 
 CURL_TINY = 0.05
 """An end piece off the line's way of at most this share of the path is a flick, cut with the curl whatever its shape;
 exactly one end's piece is longer, and curls."""
-
-
-class Piece(NamedTuple):
-    """An end piece heading off the line's way, as `curled_ends` judges it."""
-
-    end: int  # 0 where the pen landed, 1 where it lifted
-    share: float  # of the stroke's path
-    turn: float  # the most degrees any of its steps heads off the line's way
-    bow: float  # its farthest point from its chord, over the chord
-    tight: float  # the most degrees it turns within `CURL_SPAN` of the path
-    outer: float  # the degrees off the line's way of its step at the stroke's end
-
-
-def curl_pieces(raw: np.ndarray) -> list[Piece]:
-    """The end pieces of ``raw`` heading more than `CURL_OFF_DEG` off the line's way (none, one or both ends')."""
-    ends, length = _end_pieces(raw)
-    return [_measured(end, piece, offs, length) for end, piece, offs in ends]
 
 
 def _end_pieces(raw: np.ndarray) -> tuple[list[tuple[int, np.ndarray, np.ndarray]], float]:
@@ -80,13 +61,6 @@ def _end_pieces(raw: np.ndarray) -> tuple[list[tuple[int, np.ndarray, np.ndarray
     return out, length
 
 
-def _measured(end: int, piece: np.ndarray, offs: np.ndarray, length: float) -> Piece:
-    """The `Piece` of an end piece (`_end_pieces`)."""
-    return Piece(end, sg.path_length(piece) / length, float(offs.max()), sg.chord_deviation(piece),
-                 sg.sharpest_turn(piece, CURL_SPAN * length) if len(piece) > 2 else 0.0,
-                 float(offs[0] if end == 0 else offs[-1]))
-
-
 def curled_ends(raw: np.ndarray) -> np.ndarray | None:
     """``raw`` without the curl at one end (`CURL_SHARE`, `CURL_TURN_DEG`, `CURL_ROUND`, `CURL_TIGHT_DEG`,
     `CURL_END_DEG`) and any flick at the other (`CURL_TINY`), or None where no end curls, both do, or the other end's
@@ -101,8 +75,8 @@ def curled_ends(raw: np.ndarray) -> np.ndarray | None:
     if not (shares[longer[0]] <= CURL_SHARE and float(offs.max()) >= CURL_TURN_DEG
             and float(offs[0] if end == 0 else offs[-1]) >= CURL_END_DEG):
         return None
-    curl = _measured(end, piece, offs, length)
-    if not (curl.bow >= CURL_ROUND and curl.tight >= CURL_TIGHT_DEG):
+    if sg.chord_deviation(piece) < CURL_ROUND or len(piece) <= 2 \
+            or sg.sharpest_turn(piece, CURL_SPAN * length) < CURL_TIGHT_DEG:
         return None
     at = sg.along(raw)
     lo, hi = 0, len(raw)
