@@ -13,13 +13,13 @@ public sets) and skip without it, saying so.
 from __future__ import annotations
 
 import pytest
+from sign_rows import assert_read_as, sign_row
 from test_open_marks import _stroke, cached_rows
 from test_slanted_bows import _upright
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
-SIGN = "public-sets/sign.jsonl"
-GESTER = "nmagrofuoco/Gester@cd24525:datasets/2D/SIGN/writer1010/"
+WRITER = "writer1010/"
 CURLED = {
     "sessionA/right-1-10.json": "polyline",  # a low sweep hooked up at its end (64 degrees)
     "sessionA/right-1-16.json": "curve",  # a wave lopsided to one side, landing in a small hook
@@ -33,11 +33,9 @@ CURLED = {
 
 @pytest.mark.parametrize("file", list(CURLED), ids=[f.replace("session", "").replace(".json", "") for f in CURLED])
 def test_a_level_line_curled_where_the_pen_lifted_is_a_line(file: str) -> None:
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None, f"{file} is not in {SIGN}"
+    row = sign_row(WRITER + file)
+    assert_read_as(row, "line")
     points, times = _stroke(row)
-    assert recognize_stroke(points, times, learned=False).kind == "line"
-    assert recognize_stroke(points, times).kind == "line"
     # stood upright it is a parenthesis' or a hook's shape: no line
     assert recognize_stroke(_upright(points), times, learned=False).kind in ("curve", "polyline")
 

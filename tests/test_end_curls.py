@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from drawn_strokes import drawn_person_stroke
+from sign_rows import assert_body_through_a_session, assert_read_as, sign_id, sign_row
 from test_open_marks import _stroke, cached_rows
 
 from physink_tui.scene.recognition import end_curls
@@ -25,8 +25,6 @@ from physink_tui.scene.recognition.recognize import recognize_stroke
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_math_marks import read
 
-SIGN = "public-sets/sign.jsonl"
-GESTER = "nmagrofuoco/Gester@cd24525:datasets/2D/SIGN/"
 CURLED = [
     "writer004/sessionA/diagonal_downLeft-1-12.json",  # landed heading right, swung round and down: 17 % of the path
     "writer004/sessionA/diagonal_downLeft-1-16.json",
@@ -46,27 +44,20 @@ CURLED = [
 """ST5022 writers' lines (tuning writers) read as polylines at main bd4d4df."""
 
 
-@pytest.mark.parametrize("file", CURLED, ids=[f.replace("/session", "/").replace(".json", "") for f in CURLED])
+@pytest.mark.parametrize("file", CURLED, ids=[sign_id(f) for f in CURLED])
 def test_a_writers_line_curled_at_an_end_is_a_line(file: str) -> None:
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None, f"{file} is not in {SIGN}"
-    points, times = _stroke(row)
-    assert recognize_stroke(points, times, learned=False).kind == "line"
-    assert recognize_stroke(points, times).kind == "line"
+    assert_read_as(sign_row(file), "line")
 
 
 THROUGH_A_SESSION = [CURLED[1], CURLED[6]]
 
 
 @pytest.mark.parametrize("file", THROUGH_A_SESSION,
-                         ids=[f.replace("/session", "/").replace(".json", "") for f in THROUGH_A_SESSION])
+                         ids=[sign_id(f) for f in THROUGH_A_SESSION])
 def test_a_writers_curled_line_is_a_line_body_through_a_session(file: str, tmp_path) -> None:
     """The person's stroke drawn 300 px across by the careful virtual pen through the thesis device, journal ->
     replay -> project: a line body."""
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None
-    shapes, told = drawn_person_stroke(np.asarray(_stroke(row)[0], dtype=float), tmp_path)
-    assert shapes == ["line"], told
+    assert_body_through_a_session(sign_row(file), "line", tmp_path)
 
 
 TICKS = "AhmadOsama4/Mouse-Gesture-Recognition-Using-HMM@4285ca6:TrainingData/Tick.xml#"

@@ -13,14 +13,12 @@ from __future__ import annotations
 import random
 
 import pytest
+from sign_rows import assert_read_as, sign_id, sign_row
 from strokegen import strokes as gen
-from test_open_marks import _stroke, cached_rows
 from test_swung_lines import SWUNG
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
-SIGN = "public-sets/sign.jsonl"
-GESTER = "nmagrofuoco/Gester@cd24525:datasets/2D/SIGN/"
 FLICKED = [
     "writer001/sessionB/diagonal_upRight-1-9.json",
     "writer002/sessionA/diagonal_downLeft-1-2.json",
@@ -34,13 +32,9 @@ FLICKED = [
 """ST5022 writers' lines (tuning writers) read as arcs at main 02d2055."""
 
 
-@pytest.mark.parametrize("file", FLICKED, ids=[f.replace("/session", "/").replace(".json", "") for f in FLICKED])
+@pytest.mark.parametrize("file", FLICKED, ids=[sign_id(f) for f in FLICKED])
 def test_a_writers_flicked_line_is_a_line(file: str) -> None:
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None, f"{file} is not in {SIGN}"
-    points, times = _stroke(row)
-    assert recognize_stroke(points, times, learned=False).kind == "line"
-    assert recognize_stroke(points, times).kind == "line"
+    assert_read_as(sign_row(file), "line")
 
 
 def test_a_shallow_arc_is_not_taken_for_a_flicked_line() -> None:

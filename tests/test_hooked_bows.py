@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from drawn_strokes import drawn_person_stroke
+from sign_rows import assert_body_through_a_session, assert_read_as, sign_id, sign_row
 from test_open_marks import _stroke, cached_rows
 
 from physink_tui.scene.recognition import open_marks
@@ -26,8 +26,6 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from bench_hurried_marks import read as read_hurried
 from bench_math_marks import read as read_math
 
-SIGN = "public-sets/sign.jsonl"
-GESTER = "nmagrofuoco/Gester@cd24525:datasets/2D/SIGN/"
 HOOKED_BOWS = [
     "writer001/sessionB/left-1-6.json",  # hooked 7.7 % where the pen lifted
     "writer004/sessionC/diagonal_upRight-1-24.json",  # curled 6 % where it lifted
@@ -42,13 +40,9 @@ HOOKED_BOWS = [
 
 
 @pytest.mark.parametrize("file", HOOKED_BOWS,
-                         ids=[f.replace("/session", "/").replace(".json", "") for f in HOOKED_BOWS])
+                         ids=[sign_id(f) for f in HOOKED_BOWS])
 def test_a_writers_hooked_bowed_line_is_a_line(file: str) -> None:
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None, f"{file} is not in {SIGN}"
-    points, times = _stroke(row)
-    assert recognize_stroke(points, times, learned=False).kind == "line"
-    assert recognize_stroke(points, times).kind == "line"
+    assert_read_as(sign_row(file), "line")
 
 
 THROUGH_A_SESSION = [HOOKED_BOWS[1], HOOKED_BOWS[2], HOOKED_BOWS[4], HOOKED_BOWS[6]]
@@ -57,14 +51,11 @@ four, so drawn, stay polylines of three points, as at main 288a082)."""
 
 
 @pytest.mark.parametrize("file", THROUGH_A_SESSION,
-                         ids=[f.replace("/session", "/").replace(".json", "") for f in THROUGH_A_SESSION])
+                         ids=[sign_id(f) for f in THROUGH_A_SESSION])
 def test_a_writers_hooked_bowed_line_is_a_line_body_through_a_session(file: str, tmp_path) -> None:
     """The person's stroke drawn 300 px across by the careful virtual pen through the thesis device, journal ->
     replay -> project: a line body, a polyline body of three points at main 288a082."""
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None
-    shapes, told = drawn_person_stroke(np.asarray(_stroke(row)[0], dtype=float), tmp_path)
-    assert shapes == ["line"], told
+    assert_body_through_a_session(sign_row(file), "line", tmp_path)
 
 
 SHORT_CUTS = {

@@ -11,14 +11,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from drawn_strokes import drawn_person_stroke
-from test_open_marks import _stroke, cached_rows
+from sign_rows import assert_body_through_a_session, assert_read_as, sign_id, sign_row
 
 from physink_tui.scene.recognition import lead_ins, open_marks
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
-SIGN = "public-sets/sign.jsonl"
-GESTER = "nmagrofuoco/Gester@cd24525:datasets/2D/SIGN/"
 LEAD_INS = [
     "writer001/sessionB/diagonal_downLeft-1-24.json",  # run back 17 % straight along it
     "writer001/sessionB/right-1-12.json",  # 23 %
@@ -41,27 +38,20 @@ LEAD_INS = [
 """ST5022 writers' lines (tuning writers) read as polylines at main df2c518."""
 
 
-@pytest.mark.parametrize("file", LEAD_INS, ids=[f.replace("/session", "/").replace(".json", "") for f in LEAD_INS])
+@pytest.mark.parametrize("file", LEAD_INS, ids=[sign_id(f) for f in LEAD_INS])
 def test_a_writers_line_with_a_long_lead_in_is_a_line(file: str) -> None:
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None, f"{file} is not in {SIGN}"
-    points, times = _stroke(row)
-    assert recognize_stroke(points, times, learned=False).kind == "line"
-    assert recognize_stroke(points, times).kind == "line"
+    assert_read_as(sign_row(file), "line")
 
 
 THROUGH_A_SESSION = [LEAD_INS[0], LEAD_INS[10]]
 
 
 @pytest.mark.parametrize("file", THROUGH_A_SESSION,
-                         ids=[f.replace("/session", "/").replace(".json", "") for f in THROUGH_A_SESSION])
+                         ids=[sign_id(f) for f in THROUGH_A_SESSION])
 def test_a_writers_line_with_a_long_lead_in_is_a_line_body_through_a_session(file: str, tmp_path) -> None:
     """The person's stroke drawn 300 px across by the careful virtual pen through the thesis device, journal ->
     replay -> project: a line body."""
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None
-    shapes, told = drawn_person_stroke(np.asarray(_stroke(row)[0], dtype=float), tmp_path)
-    assert shapes == ["line"], told
+    assert_body_through_a_session(sign_row(file), "line", tmp_path)
 
 
 def _v(rise_deg: float, off_deg: float, arm: float = 40.0, long: float = 200.0) -> np.ndarray:

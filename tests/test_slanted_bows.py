@@ -13,12 +13,11 @@ from __future__ import annotations
 import math
 
 import pytest
+from sign_rows import SIGN, assert_read_as, sign_id, sign_row
 from test_open_marks import _stroke, cached_rows
 
 from physink_tui.scene.recognition.recognize import recognize_stroke
 
-SIGN = "public-sets/sign.jsonl"
-GESTER = "nmagrofuoco/Gester@cd24525:datasets/2D/SIGN/"
 BOWED = [
     "writer001/sessionA/diagonal_downLeft-1-2.json",  # deepest 0.32 of its chord from its start, straight after
     "writer002/sessionC/diagonal_upRight-1-2.json",  # deepest 0.24 from its start
@@ -40,13 +39,11 @@ def _upright(points: list[list[float]]) -> list[list[float]]:
     return [[x0 + (x - x0) * c - (y - y0) * s, y0 + (x - x0) * s + (y - y0) * c] for x, y in points]
 
 
-@pytest.mark.parametrize("file", BOWED, ids=[f.replace("/session", "/").replace(".json", "") for f in BOWED])
+@pytest.mark.parametrize("file", BOWED, ids=[sign_id(f) for f in BOWED])
 def test_a_writers_slanted_bowed_line_is_a_line_and_stood_upright_a_bow(file: str) -> None:
-    row = cached_rows(SIGN).get(GESTER + file)
-    assert row is not None, f"{file} is not in {SIGN}"
+    row = sign_row(file)
+    assert_read_as(row, "line")
     points, times = _stroke(row)
-    assert recognize_stroke(points, times, learned=False).kind == "line"
-    assert recognize_stroke(points, times).kind == "line"
     # stood upright, the same bow is a parenthesis' shape: no line (as at main 21789a8)
     assert recognize_stroke(_upright(points), times, learned=False).kind in ("arc", "curve")
 
