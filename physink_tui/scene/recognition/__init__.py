@@ -98,7 +98,12 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    ellipse by more than 1.2 of that ellipse's half-length (`closed_loops.tail_runs_off`: a pigtail drawn loop first,
    its tail 1.6-3 half-lengths; a flick closing an oval, up to its half-length, strays at most 1.06) is read as an
    open mark, and as a curve where that reading would be round too (a polygon's loop with an overshoot past a corner,
-   read as a polygon, is not asked); a round reading of a stroke gone round more than once is a circle or an
+   read as a polygon, is not asked), unless it is a round loop the pen landed on and ran on past its start
+   (`run_on_loops`: the loop, where the path comes back to within 0.15 of its size of itself, holds 0.8 of the path or
+   more, one end stays on its ellipse, it is at least 0.6 as wide as long and fits it round, and the path heads on
+   within 60 degrees of where the loop began: a circle with a run-on tail, read as its loop also where the ends stay
+   too far apart to close it; a pigtail's tails both run off and cross at a corner, nearly always round a smaller
+   loop); a round reading of a stroke gone round more than once is a circle or an
    ellipse as its lap from the start and its lap to the end tell it alike, where both come back round and disagree
    (`both_laps`: by their mean width over length, so it reads the same drawn from either end; a circle rounded off
    from either lap that stays within the stroke's bounds where both laps are round enough for one);
@@ -257,6 +262,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   arms' own line), read as a brace (a curve)
 - `lopsided_braces.py`: a lopsided curly brace whose short half is a straight slant back from its point, its long
   half a bracket's square end and spine, read as a brace (a curve)
+- `run_on_loops.py`: a round loop the pen landed on and ran on past its start as a long tail, read as the loop
 - `round_cores.py`: a circle drawn with a lead from inside it or an end curling in past its start, read by its round
   core (the ends cut while they lie inside the core's ellipse)
 - `thin_braces.py`: a tall, thin curly brace (its point and curls within a line's stray) told from a line by its one

@@ -43,6 +43,7 @@ from physink_tui.scene.recognition import (
     rounded_boxes,
     rounded_corners,
     rounded_polygons,
+    run_on_loops,
     square_braces,
     stairs,
     units,
@@ -318,6 +319,10 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     work = sg.resample(remove_small_loops(work), n)  # loops at corners are flourishes, not coils
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
+    # a round loop the pen landed on and ran on past its start as a long tail (`run_on_loops`) is that loop
+    run_on = None if closed else run_on_loops.run_on_loop(work, diag, sigma)
+    if run_on is not None:
+        closed, loop = True, run_on
     corners_told = False  # a polygon left open whose rounded corners its turning tells (`shape_corners`)
     if not closed:
         hooked, unhooked = work, sg.remove_hooks(work)
@@ -351,7 +356,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times,
                                     corners_told)
-    if ranked.kind in ("circle", "ellipse") and closed_loops.tail_runs_off(work, loop, ellipse):
+    if (ranked.kind in ("circle", "ellipse") and run_on is None and closed_loops.tail_runs_off(work, loop, ellipse)
+            and run_on_loops.run_on_loop(work, diag, sigma) is None):
         return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
     # circle or ellipse either way round (the bounds a circle must stay within asked only of an ellipse)
     ranked = both_laps.round_from_both_laps(ranked, work, ellipse, diag, sigma,
