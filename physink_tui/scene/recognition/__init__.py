@@ -146,11 +146,7 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    tick, drawn first, is longer) and 15 % where it lifted (`open_marks.BACK_HOOK_DEG`, `BACK_HOOK_LANDED_SHARE`: a
    mark's short arm stands farther off), or up to 30 % where it landed before a line drawn level or downhill (no
    radical's or check's rise: `lead_ins.lead_in`), or by a tight round curl at one end, swung 125 degrees or more
-   off it, at most 18 % of the path (`end_curls.curled_ends`: the rest straight by the line test), or by a piece
-   where the pen lifted running past the line's far end along its middle's way and turned back within 40 degrees
-   of the line, at most a quarter of the path, the landing end a flick at most (`lifted_turns.lifted_turn`: the
-   rest straight, or bowed as `open_marks.hooked_bow` allows; where the pen landed a check's short arm turns as
-   sharply into its rising long arm, so that end is not cut so); one the hand's
+   off it, at most 18 % of the path (`end_curls.curled_ends`: the rest straight by the line test); one the hand's
    swing bowed one way and back (turning both ways, no point, no circle fitting its bow beyond the pen's own wobble,
    straying under 9 % of its length) is a line
    (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely as a circle, an end curling

@@ -19,7 +19,6 @@ from physink_tui.scene.recognition import (
     bracket_marks,
     end_curls,
     lift_hooks,
-    lifted_turns,
     lines,
     lopsided_braces,
     open_marks,
@@ -80,8 +79,7 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
     without a lead-in or tail that runs back along it (`open_marks.retraced_ends`), or bowed one way and back by the
     hand's swing (`open_marks.swung_line`; also without such a piece where it was a long hook:
     `open_marks.hooked_bow`), or straight by the line test without a tight round curl at one end
-    (`end_curls.curled_ends`), or without a piece the pen turned back along it where it lifted
-    (`lifted_turns.lifted_turn`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a short line's
+    (`end_curls.curled_ends`), or, without a hook at an end as long as a hand's (`lines.unhooked`: a short line's
     hook is a large share of it), straight within the pen's own wobble (`lines.within_wobble`). Those two are judged
     by the pen's stated noise ``pen`` (``noise`` where not given), not a measured jitter that may be the shape's own
     bends between a few far-apart events (`recognize.SPARSE_BENDS`). A tall, thin curly brace
@@ -99,12 +97,6 @@ def line(raw: np.ndarray, noise: float, diag: float, pen: float | None = None) -
         kept = end_curls.curled_ends(raw)
         if kept is not None:  # a line whose end the pen curled round where it landed or lifted: the rest straight
             found, _, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)  # (a bowed rest is a mouse's tick's arm)
-    if found is None and swung is None:
-        kept = lifted_turns.lifted_turn(raw)
-        if kept is not None:  # a line the pen turned back along where it lifted: the rest straight, or bowed by hand
-            found, rest_swung, loose = _line(kept, noise, sg.bbox_diagonal(kept), pen)
-            if rest_swung is not None and open_marks.hooked_bow(raw, kept, _test_points(raw, noise), noise):
-                swung = rest_swung
     if (found is None or loose) and lines.ends_may_span(raw, pen, diag):
         # no line as drawn, or one only within the pen's wobble, where a hook at an end may be what strays: the
         # straightest line left once a hook is cut is the line drawn (its ends where the hand meant them)
