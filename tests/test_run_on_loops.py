@@ -135,5 +135,5 @@ def test_a_six_is_no_run_on_loop() -> None:
     close = np.linspace(rim[-1], [-r, 0.72 * r], 30)
     six = np.vstack([stem, rim[1:], close[1:]]) + 300.0
     measured = run_on_loops.measure(_judged(six), 0.003)
-    assert measured is not None and measured[1] >= run_on_loops.LOOP_SHARE and measured[2] <= run_on_loops.ON_LOOP
+    assert measured is not None and measured.on_loop <= run_on_loops.ON_LOOP
     assert _run_on(six) is None

@@ -213,6 +213,11 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `primitives.py`: `Recognition` and the frozen geometry of each kind (`Line`, `Polyline`, `Polygon`, `Box`,
   `Circle`, `Ellipse`, `Arc`, `Curve` as cubic Bézier control points, `Helix`, `XSymbol`)
 - `recognize.py`: the public `recognize_stroke` / `recognize_strokes`, cleaning, the order above
+- `open_reading.py`: an open stroke read by how it turns on points a few noise widths apart (a square-cornered
+  brace, a round stroke sampled in bursts, the bounds its shape must keep)
+- `closed_reading.py`: a closed stroke's loop read as the outline or round shape it best fits, then as what a person
+  drew after all (the checks above on closed strokes, in order: a pigtail's loop, rounded corners, a bowed side, a
+  roof, a delete mark's crossing)
 - `closed_loops.py`: closure (a gap or an overshoot at the ends, a polygon left open, a lumpy circle's lumps)
 - `shape_corners.py`: corners at the shape's scale (turning gathered at short bends between straight runs): a
   many-sided outline left open by one side, its corners rounded by a hurried hand

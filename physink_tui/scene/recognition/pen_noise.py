@@ -172,8 +172,8 @@ BURST_SWEEP = 1.5 * math.pi
 whose few bursts an ellipse fits, go round one 227-247 degrees; their whole notes that the rule reads round, 244-411,
 five of 129 under 270: tuning seeds), ..."""
 BURST_SWEEP_OPEN = 5 / 3 * math.pi
-"""... by this much where the stroke was not closed (`recognize._open_reading`): the pen models' square brackets through
-the mouse go round their points' ellipse by up to 265 degrees (tuning seeds), their open whole notes 244-340."""
+"""... by this much where the stroke was not closed (`open_reading.open_reading`): the pen models' square brackets
+through the mouse go round their points' ellipse by up to 265 degrees (tuning seeds), their open whole notes 244-340."""
 BURST_SWEEP_NEAR = 4 / 3 * math.pi
 """... or this much where its ends lie within `BURST_ENDS_NEAR` of each other: a round mark nearly closed (the pen
 models' whole notes left open through the mouse go round their ellipse 243-366 degrees, ends 0.08-0.71 of the diagonal

@@ -24,8 +24,6 @@ import numpy as np
 
 from physink_tui.scene.recognition import (
     angular_braces,
-    both_laps,
-    bowed_sides,
     closed_loops,
     dented_spines,
     hooked_ticks,
@@ -33,39 +31,24 @@ from physink_tui.scene.recognition import (
     loop_ends,
     lopsided_braces,
     open_boxes,
-    open_marks,
     open_shapes,
     pen_lifts,
     pen_noise,
     ranker,
-    roofs,
     round_brackets,
-    rounded_boxes,
-    rounded_corners,
-    rounded_polygons,
     run_on_loops,
     square_braces,
     stairs,
     units,
     waves,
 )
-from physink_tui.scene.recognition import stroke_features as sf
 from physink_tui.scene.recognition import stroke_geometry as sg
-from physink_tui.scene.recognition.beautify import curve_geometry, round_geometry, scale_geometry, x_symbol
-from physink_tui.scene.recognition.candidates import Candidate, Pending, polygonal, round_shape
+from physink_tui.scene.recognition.beautify import scale_geometry, x_symbol
+from physink_tui.scene.recognition.closed_reading import ClosedStroke, closed_reading
 from physink_tui.scene.recognition.coils import COILED, helix_or_scribble
-from physink_tui.scene.recognition.primitives import Line, Polygon, Recognition
-from physink_tui.scene.recognition.ranking import (
-    BOUNDS_MARGIN,
-    DEFAULT_WEIGHTS,
-    Weights,
-    bounds,
-    inside,
-    or_freeform,
-    rank,
-)
-from physink_tui.scene.recognition.round_or_cornered import cornered_after_all
-from physink_tui.scene.recognition.shape_fits import fit_ellipse
+from physink_tui.scene.recognition.open_reading import open_reading
+from physink_tui.scene.recognition.primitives import Line, Recognition
+from physink_tui.scene.recognition.ranking import DEFAULT_WEIGHTS, Weights
 from physink_tui.scene.recognition.small_loops import remove_small_loops
 from physink_tui.scene.recognition.stroke_views import StrokeViews
 
@@ -287,11 +270,7 @@ def recognize_strokes(strokes: Sequence[Sequence[Sequence[float]]], *, noise: fl
 
 
 MAX_JUDGED_POINTS = 600
-OPEN_SPACING = 3.0
-"""Open strokes are judged on points at least this many noise widths apart."""
-OPEN_ROUND_MARGIN = 0.2
-"""The same for a circle or ellipse completed from a stroke that stopped short of its start (a quarter turn
-short pokes out by about 15 % of the stroke's diagonal)."""
+"""A stroke is judged on at most this many points along its path (`_classify`)."""
 
 
 def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag: float,
@@ -320,7 +299,8 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     # a round loop the pen landed on and ran on past its start as a long tail (`run_on_loops`) is that loop
-    run_on = None if closed else run_on_loops.run_on_loop(work, diag, sigma)
+    run_on_asked = not closed
+    run_on = run_on_loops.run_on_loop(work, diag, sigma) if run_on_asked else None
     if run_on is not None:
         closed, loop = True, run_on
     corners_told = False  # a polygon left open whose rounded corners its turning tells (`shape_corners`)
@@ -338,66 +318,6 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
             if left_open is not None:
                 closed, loop = True, left_open
     if not closed:
-        return _open_reading(raw, work, n, noise, sigma, weights, diag, views)
-    polygons = polygonal(loop, closed=True, tolerance=0.5 * sigma, noise=noise)
-    if ellipse is None:  # not already fitted to this loop by `closed_loops.closed_loop`
-        ellipse = fit_ellipse(loop)
-    # a loop far from any ellipse, or turning back as a star's outline does, is not read round (a star whose
-    # shallow inner corners no polygon fit passes, or whose points are more than `candidates.MAX_SIDES` can follow)
-    never_round = closed_loops.no_round_shape(loop, noise, ellipse)
-    lumpy = not never_round and closed_loops.lumpy_round(loop, noise, ellipse, raw, diag)
-    # a lumpy circle's lumps are not sides, nor are the chords between a busy mouse's bursts of events round a loop
-    in_bursts = not never_round and pen_noise.round_in_bursts(raw, diag) is not None
-    sided = [] if in_bursts else [p for p in polygons if p.params < 2 * closed_loops.LUMPY_SIDES] if lumpy else polygons
-    round_fit = None if never_round else round_shape(loop, ellipse)
-    candidates: list[Candidate | Pending | None] = [*sided, round_fit]
-    ranked = rank([c for c in candidates if c is not None], len(loop), sigma, weights, raw, noise, diag, loop,
-                   round_share=OPEN_ROUND_MARGIN if lumpy or in_bursts else BOUNDS_MARGIN)
-    if ranked.kind in ("circle", "ellipse") and round_fit is not None:
-        ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, times,
-                                    corners_told)
-    if (ranked.kind in ("circle", "ellipse") and run_on is None and closed_loops.tail_runs_off(work, loop, ellipse)
-            and run_on_loops.run_on_loop(work, diag, sigma) is None):
-        return _open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
-    # circle or ellipse either way round (the bounds a circle must stay within asked only of an ellipse)
-    ranked = both_laps.round_from_both_laps(ranked, work, ellipse, diag, sigma,
-                                            bounds(raw, noise, diag) if ranked.kind == "ellipse" else None)
-    ranked = rounded_polygons.polygon_rounded(  # asked of the loop cut from either end
-        ranked, loop, raw, lambda: closed_loops.closed_loop(raw[::-1], work[::-1], diag, sigma, fit=False)[:2])
-    ranked = rounded_corners.box_as_drawn(ranked, polygons, raw, noise, diag, loop)
-    ranked = rounded_corners.box_after_all(ranked, polygons, loop, raw, noise, diag)
-    ranked = bowed_sides.box_with_a_bowed_side(ranked, polygons, loop, raw, noise, diag)
-    ranked = roofs.pentagon_on_a_box(ranked, polygons, noise)
-    ranked = rounded_boxes.box_rounded_all_round(ranked, loop)
-    ranked = open_marks.out_and_back(ranked, raw)  # a line drawn out and back closes a slit, no ellipse
-    if isinstance(ranked.geometry, Polygon) and sf.figure_eight(np.asarray(ranked.geometry.points)):
-        # ends that meet after crossing over: a delete mark or an arrow drawn back to its start, not an outline
-        return _open_reading(raw, sg.resample(sg.remove_hooks(work), n), n, noise, sigma, weights, diag, views)
-    return or_freeform(ranked, loop, closed=True, sigma=sigma)
-
-
-def _open_reading(raw: np.ndarray, work: np.ndarray, n: int, noise: float, sigma: float, weights: Weights,
-                  diag: float, views: StrokeViews | None = None, round_too: bool = True) -> Recognition:
-    """An open stroke, judged by how it turns: on points a few noise widths apart, jitter makes no corners; where it
-    would be read as a circle or an ellipse left open, a curve instead unless ``round_too``."""
-    coarse_n = int(min(n, max(64, sg.path_length(work) / (OPEN_SPACING * noise)))) if noise > 0 else n
-    found = open_shapes.classify_open(sg.resample(work, coarse_n) if coarse_n < n else work, noise,
-                                      weights.round_corner, (raw, diag))
-    if found.kind == "polyline" and square_braces.square_brace(raw, noise, views):
-        # a brace drawn square-cornered, whose small point these coarse points smoothed away
-        found = Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), (("polyline", 0.3),))
-    if round_too and found.kind not in ("circle", "ellipse"):
-        bursts = pen_noise.round_in_bursts(raw, diag, pen_noise.BURST_SWEEP_OPEN, closed=False)
-        if bursts is not None:  # a round stroke left open, sampled in a few bursts: its chords are the device's
-            geom, kind = round_geometry(bursts)
-            found = Recognition(kind, 0.65, geom, ((str(found.kind), 0.35),))
-    round_left_open = found.kind in ("circle", "ellipse")
-    if round_left_open and not round_too:  # a loop the pen ran on off: a curve round it and away
-        return Recognition("curve", 0.7, curve_geometry(work, sg.find_corners(work)), ((str(found.kind), 0.3),))
-    share = OPEN_ROUND_MARGIN if round_left_open else BOUNDS_MARGIN
-    if inside(found.geometry, *bounds(raw, noise, diag, share)):
-        return found
-    ranked = rank(polygonal(work, closed=False, tolerance=0.5 * sigma, noise=noise), len(work), sigma,
-                   weights, raw, noise, diag)
-    return or_freeform(ranked, work, closed=False, sigma=sigma)
-
+        return open_reading(raw, work, n, noise, sigma, weights, diag, views)
+    return closed_reading(ClosedStroke(raw, work, n, loop, ellipse, diag, times, corners_told=corners_told,
+                                       run_on=run_on, run_on_asked=run_on_asked), noise, sigma, weights, views)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -64,24 +65,34 @@ def run_on_loop(work: np.ndarray, diag: float, sigma: float) -> np.ndarray | Non
     if (sg.path_length(work) < GOES_ROUND * diag
             or float(np.ptp(np.add.accumulate(sg.turning(work)))) < TURNS_ROUND * math.pi):
         return None
-    measured = measure(work, sigma)
-    if measured is None:
+    loop = measure(work, sigma)
+    if (loop is None or loop.on_loop > ON_LOOP or loop.aspect < ROUND_ASPECT or loop.turn_deg > SAME_WAY_DEG
+            or not loop.fits):
         return None
-    loop, _, on_loop, aspect, turn_deg, fits = measured
-    if on_loop > ON_LOOP or aspect < ROUND_ASPECT or turn_deg > SAME_WAY_DEG or not fits:
-        return None
-    return loop
+    return loop.points
 
 
-def measure(work: np.ndarray, sigma: float) -> tuple[np.ndarray, float, float, float, float, bool] | None:
+class Loop(NamedTuple):
+    """A loop `measure` found in a stroke, and what `run_on_loop` judges of it."""
+
+    points: np.ndarray
+    """The stroke's points from where the loop begins to where the path comes back to it."""
+    on_loop: float
+    """How far the nearer of the stroke's two ends strays off the loop's ellipse, in half-lengths (`ON_LOOP`)."""
+    aspect: float
+    """The ellipse's width over its length (`ROUND_ASPECT`)."""
+    turn_deg: float
+    """The angle between the headings where the loop begins and where it closes, degrees (`SAME_WAY_DEG`)."""
+    fits: bool
+    """Whether the ellipse fits the loop as a round shape's (`open_shapes.round_error`)."""
+
+
+def measure(work: np.ndarray, sigma: float) -> Loop | None:
     """The loop where the path comes back nearest to itself between its two end shares (`END_SEARCH`), and what
-    `run_on_loop` judges of it: its share of the path, how far the nearer end strays off its ellipse (in half-lengths),
-    the ellipse's width over length, the angle between the headings where the loop begins and ends (degrees), and
-    whether the ellipse fits it as a round shape's; None where the path does not come back (`MEETS`) or the loop holds
-    under `LOOP_SHARE` of it (nothing more is measured)."""
+    `run_on_loop` judges of it; None where the path does not come back (`MEETS`) or the loop holds under `LOOP_SHARE`
+    of it (nothing more is measured)."""
     n = len(work)
-    steps = sg.step_lengths(work)
-    along = np.concatenate([[0.0], np.add.accumulate(steps)])
+    along = sg.along(work)
     length = float(along[-1])
     if n < 16 or length <= 0.0:
         return None
@@ -104,6 +115,7 @@ def measure(work: np.ndarray, sigma: float) -> tuple[np.ndarray, float, float, f
     reach = max(1, int(HEADING_SHARE * n))
     into = work[min(i + reach, n - 1)] - work[max(i - reach, 0)]
     out = work[min(j + reach, n - 1)] - work[max(j - reach, 0)]
-    turn = abs(math.degrees(math.atan2(float(into[0] * out[1] - into[1] * out[0]), float(into @ out))))
-    return (loop, share, min(strays), ry / rx, turn,
-            err <= open_shapes.round_error(ellipse, sigma))
+    turn = sg.angle_deg(into, out)
+    if turn is None:
+        return None
+    return Loop(loop, min(strays), ry / rx, turn, err <= open_shapes.round_error(ellipse, sigma))
