@@ -1,7 +1,8 @@
 """Lines begun with a long lead-in read as lines (issue 25, session 39: the `sign` set's ST5022 writers): the pen
-lands, slides back along the line for 12.7-27 % of the path, within 30 degrees of it, and draws the line level or
-downhill (`lead_ins.lead_in`, asked by `open_marks.retraced_ends`); a mark drawn down into a point and rising from
-it, as a barless radical or a check is, keeps its short first arm however narrowly it stands off the rise.
+lands, slides back along the line for 12.7-27 % of the path, within 30 degrees of it (38 since session 42:
+`tests/test_lifted_lead_ins.py`, which asks it of either end), and draws the line level or downhill
+(`lead_ins.lead_in`, asked by `open_marks.retraced_ends`); a mark drawn down into a point and rising from it, as a
+barless radical or a check is, keeps its short first arm however narrowly it stands off the rise.
 
 The people's strokes are read from the local cache (`~/.cache/physink/public-sets/`, as `test_open_marks.py` reads the
 public sets) and skip without it, saying so.

@@ -144,11 +144,12 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
    by running back along itself is judged without that piece (`open_marks.retraced_ends`), or by a hook the pen turned
    back within 30 degrees of it where it landed or lifted, at most 12.5 % of the path where it landed (a radical's
    tick, drawn first, is longer) and 15 % where it lifted (`open_marks.BACK_HOOK_DEG`, `BACK_HOOK_LANDED_SHARE`: a
-   mark's short arm stands farther off), or up to 30 % where it landed before a line drawn level or downhill (no
-   radical's or check's rise: `lead_ins.lead_in`), or by a tight round curl at one end, swung 125 degrees or more
-   off it, at most 18 % of the path (`end_curls.curled_ends`: the rest straight by the line test); one the hand's
-   swing bowed one way and back (turning both ways, no point, no circle fitting its bow beyond the pen's own wobble,
-   straying under 9 % of its length) is a line
+   mark's short arm stands farther off), or up to 30 % within 38 degrees where it landed before a line drawn level or
+   downhill (no radical's or check's rise: `lead_ins.lead_in`) or where it lifted after one drawn level or uphill
+   (the same piece, the stroke drawn backwards: a lead-in and a line read the same from either end), or by a tight
+   round curl at one end, swung 125 degrees or more off it, at most 18 % of the path (`end_curls.curled_ends`: the
+   rest straight by the line test); one the hand's swing bowed one way and back (turning both ways, no point, no
+   circle fitting its bow beyond the pen's own wobble, straying under 9 % of its length) is a line
    (`open_marks.swung_line`), as is one whose hooks left a bow that a line fits as closely as a circle, an end curling
    as a hook does (`open_marks.hooked_straight`), and a short line hooked where the pen landed and where it lifted,
    judged with both hooks cut, unless its short ends stand off it to one side as a tiny square bracket's arms do, square

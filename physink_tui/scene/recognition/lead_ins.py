@@ -13,9 +13,14 @@ LEAD_SHARE = 0.3
 ST5022 writers' lines: 12.7-27 % where `open_marks.BACK_HOOK_LANDED_SHARE`, 12.5 %, refuses them)."""
 LEAD_TOTAL = 0.35
 """... and the lead-in and the piece cut where the pen lifted are together at most this share of it."""
-LEAD_DEG = 30.0
+LEAD_DEG = 38.0
 """... its chord (from where the pen turned to where it landed) within this angle of the line running on from there
-(`open_marks.BACK_HOOK_DEG`: the ST writers' 0-24 degrees)."""
+(the ST writers' lead-ins 0-24 degrees, and 36 for writer001's downhill diagonal; drawn backwards, their lines turned
+back where the pen lifted 13-36.6 degrees: `open_marks.retraced_ends` asks this of either end, issue 25, session 42).
+30 until then (`open_marks.BACK_HOOK_DEG`). No mark of the design or fourth groups whose rest is a line by the line
+test begins or ends with such a piece, drawn either way, within 72 degrees once its points lie near its chord
+(`open_marks.RETRACE_NEAR`); a check's or barless radical's short arm, drawn first or last, is refused by its long
+arm's rise (`LEAD_RISE_DEG`), not by this angle."""
 LEAD_RISE_DEG = 20.0
 """... where the line drawn after it runs level or downhill: it rises above level by at most this angle (y down). A mark
 drawn down into a point and up from it, a barless radical's tick and rise or a check's short arm and long one, rises

@@ -179,39 +179,60 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
     """The stroke without a lead-in or a tail that runs back along it (`RETRACE_SHARE`, `RETRACE_OFF`) or is a hook
     turned back off it (`BACK_HOOK_SHARE`, `BACK_HOOK_DEG`), or, where the pen landed, is a long lead-in before a line
     drawn level or downhill (`lead_ins.lead_in`), or None when neither end does, or either end's piece is neither:
-    between its points farthest back and farthest on along its start-to-end direction."""
+    between its points farthest back and farthest on along its start-to-end direction. A stroke whose other end is
+    such a lead-in, the stroke drawn backwards (a long piece turned back along a line drawn level or uphill, where the
+    pen lifted), is cut as the stroke drawn backwards is: a lead-in and a line read the same drawn either way."""
+    if not _near_chord(raw, noise):
+        return None  # no line: some point stands far off the chord (checked first: most strokes are no line)
+    kept, _ = _cut_ends(raw, noise)
+    if kept is None:
+        back, led = _cut_ends(raw[::-1], noise)
+        if back is not None and led:
+            kept = back[::-1]
+    return kept
+
+
+def _near_chord(raw: np.ndarray, noise: float) -> bool:
+    """Whether every point of ``raw`` lies within `RETRACE_NEAR` of its start-to-end distance of that chord (plus the
+    noise), as a line's do, whichever end it was drawn from."""
     chord = raw[-1] - raw[0]
     norm = float(np.hypot(*chord))
     if norm == 0.0:
-        return None
+        return False
     rel = raw - raw[0]
-    if float(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]).max()) > RETRACE_NEAR * norm * norm + noise * norm:
-        return None  # no line: some point stands far off the chord (checked first: most strokes are no line)
-    along = rel @ (chord / norm)
+    stray = float(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0]).max())
+    return not stray > RETRACE_NEAR * norm * norm + noise * norm
+
+
+def _cut_ends(raw: np.ndarray, noise: float) -> tuple[np.ndarray | None, bool]:
+    """`retraced_ends` as drawn (the stroke's points near its chord already: `_near_chord`), and whether the piece cut
+    where the pen landed is a long lead-in (`lead_ins.lead_in`)."""
+    chord = raw[-1] - raw[0]
+    along = (raw - raw[0]) @ (chord / float(np.hypot(*chord)))
     lo, hi = int(np.argmin(along)), int(np.argmax(along))
     if (lo == 0 and hi == len(raw) - 1) or lo >= hi:
-        return None
+        return None, False
     length = sg.path_length(raw)
     kept = raw[lo:hi + 1]
     cuts = sg.path_length(raw[:lo + 1]), sg.path_length(raw[hi:])
     if len(kept) < 2:
-        return None
+        return None, False
     a, b = kept[0], kept[-1]
     span = float(np.hypot(*(b - a)))
     if span == 0.0:
-        return None
+        return None, False
     unit = (b - a) / span
     led = lo > 0 and lead_ins.lead_in(raw[:lo + 1], a, unit, length)  # a long lead-in run back along a level line
     if (sum(cuts) > (lead_ins.LEAD_TOTAL if led else RETRACE_SHARE) * length
             and (led or max(cuts) > BACK_HOOK_SHARE * length)):
-        return None  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`)
+        return None, False  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`)
     ends = ((raw[:lo + 1], a, unit, BACK_HOOK_LANDED_SHARE), (raw[hi:][::-1], b, -unit, BACK_HOOK_SHARE))
     for k, (end, turn, back, share) in enumerate(ends):  # each end's piece, from its end
         off = np.abs((end[:, 0] - a[0]) * unit[1] - (end[:, 1] - a[1]) * unit[0])
         if (float(off.max()) > RETRACE_OFF * span + noise and not (k == 0 and led)
                 and not lead_ins.turned_back(end, turn, back, share * length, BACK_HOOK_DEG)):
-            return None
-    return kept
+            return None, False
+    return kept, led
 
 
 BACK_HOOK_SHARE = 0.15
