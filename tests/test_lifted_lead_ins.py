@@ -11,14 +11,13 @@ public sets) and skip without it, saying so.
 
 from __future__ import annotations
 
-import json
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 from sign_rows import assert_body_through_a_session, assert_read_as, sign_id, sign_row
 from test_open_marks import _stroke, cached_rows
+from test_people_strokes import people_rows
 
 from physink_tui.scene.recognition import open_marks
 from physink_tui.scene.recognition.recognize import recognize_stroke
@@ -105,10 +104,7 @@ def test_a_narrow_check_is_a_polyline_drawn_either_way(file: str) -> None:
 def test_dollar1_s03s_slow_x_is_a_polyline_drawn_either_way() -> None:
     """s03's slow x10, a narrow first arm and a long diagonal (``tests/test_reversed_people.py``'s `DOLLAR1_ALIKE`):
     its arm stands farther off the chord than a line's lead-in (`open_marks.RETRACE_NEAR`), drawn either way."""
-    path = Path(__file__).resolve().parents[2] / "shared/data/strokes/dollar1-dev.jsonl"
-    if not path.exists():
-        pytest.skip(f"{path} is not here")
-    row = next(r for r in map(json.loads, path.read_text().splitlines()) if r["file"] == "s03/slow/x10.xml")
+    row = next(r for r in people_rows() if r["file"] == "s03/slow/x10.xml")
     points, times = _stroke(row)
     assert recognize_stroke(points, times).kind == "polyline"
     assert recognize_stroke(*_backwards(points, times)).kind == "polyline"
