@@ -83,12 +83,13 @@ CHECKS_DRAWN_BACKWARDS = [
 
 @pytest.mark.parametrize("file", DOWNHILL, ids=[sign_id(f) for f in DOWNHILL])
 def test_a_line_drawn_downhill_keeps_its_lifted_turn_either_way(file: str) -> None:
+    """The rule cuts neither way, and the stroke reads alike either way (today a polyline both ways, a miss its label
+    calls a line, left in docs/BENCHMARKS.md: the rule must not take it one way only)."""
     points, times = _stroke(sign_row(file))
     raw = np.asarray(points, dtype=float)
     assert open_marks.retraced_ends(raw, 1.0) is None
     assert open_marks.retraced_ends(raw[::-1].copy(), 1.0) is None
-    assert recognize_stroke(points, times).kind == "polyline"
-    assert recognize_stroke(*_backwards(points, times)).kind == "polyline"
+    assert recognize_stroke(points, times).kind == recognize_stroke(*_backwards(points, times)).kind
 
 
 @pytest.mark.parametrize("file", CHECKS_DRAWN_BACKWARDS, ids=[f.rsplit("/", 2)[-2] + "/" + f.rsplit("/", 1)[-1]
