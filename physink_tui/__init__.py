@@ -122,6 +122,9 @@ contracts, the core's `forbidden` one, the kiosk's (it never imports Textual), "
   (the renderer's) — `textual`, `rich`; `render`, `session`, `input`, `formats`, the core, `errors`
 - `cli.py` *(edge)*: argparse, dispatch, exit statuses — any behaviour of a command — everything below it (uses
   `errors`, `formats.outputs`; `commands` lazily)
+- `__main__.py` *(edge)*: `python -m physink_tui` runs the command line — everything — `cli`
+- `progress.py` *(edge)*: a one-line progress bar with counts and ETA on a terminal, silent elsewhere — what the
+  task is — stdlib
 
 `input/` is an edge, not core: it is allowed I/O (reading devices and files), but its decoding functions are pure
 over a parsed descriptor (see STYLE.md, "Input"). `formats/` knows file formats and nothing of a session; the core

@@ -13,4 +13,8 @@ line is plain (`input/captures/plain.py` says) goes through `decode_plain.py` wi
 decoded once by `input/hid/distinct.py`, formatted once; the times from their stamps' digits), since numpy's import
 alone costs more than a small capture's decoding; any other streams through the numpy path (`input/captures/parser.py`,
 `input/hid/chunks.py`, `decode_jsonl.py`), whose memory stays flat in the capture's size.
+
+Shared by several commands: `input_file.py` reads a command's input file once (so pipes and FIFOs work) and names
+its kind; `timeline_source.py` reads the timeline a command is pointed at (a timeline JSON file or a project holding
+one, with its labels); `gesture_output.py` formats gestures as text lines and JSON Lines for `physink replay`.
 """

@@ -38,6 +38,10 @@ journal entries for the runner, and the session's `PenInput` is their one consum
   than in `formats/` so the formats never import `input`
 - `virtual_pen.py`, `hid/report_encoder.py`, `hid/reference_descriptors.py`, `hid/descriptor_builder.py`: the
   virtual pen: scripted strokes to realistic reports for any layout, the four hand-written reference descriptors
+- `replay_clock.py`: the input time of a replay paced in real time (the TUI's journal feed): runs with the wall
+  clock but waits at the next recorded input's time until that input has been handed over
+- `hid/pad.py`: pad buttons (ExpressKeys) in a tablet's reports, from the descriptor's Button-page fields or the
+  Huion/UC-Logic vendor frame; what a button does is the caller's (the kiosk's)
 
 Device tests run the real reader code over `os.pipe()`, `os.openpty()` and `SOCK_SEQPACKET` socket pairs; tests that
 need a real tablet carry the `hardware` marker and skip themselves. `packaging/udev/` holds the rules that give the

@@ -32,6 +32,8 @@ hot zones), installs the SIGTERM handler and runs `kiosk.service.Kiosk`:
 - `store.py`: `SessionStore`: folders named by UTC start, `index.jsonl` appended one fsynced line at a time (never twice
   for a session), unfinished and finished folders, `retire` for `--keep`/`--max-disk` (never the session just written
   nor the one recording, which still count), free space
+- `folder_files.py`: the names of the files in a session's folder (so the store and the command need not load the
+  renderer to know them)
 
 Recovery reads a journal with `read_journal(salvage=True)`: every entry before the first malformed line is kept and
 `Journal.dropped` says from which line on what was left out and why (logged, and `dropped` in `session.json`), so a

@@ -94,6 +94,8 @@ journal with `Session.run(entries)`.
 The kiosk and the TUI (`physink_tui.kiosk`, `physink_tui.tui`) drive the session through `session/runner.py`: the
 runner and the sources' readers are the only threads around the session.
 
+- `outcomes.py`: words for what a stroke or a label made of the sketch ("circle → body b3", "X → platform b2
+  fixed", "erased box b4 — u to undo"), one line each, for the session's messages
 - `journaled.py`: `Journaled.create(header, journal_path, prior=, clock=, max_fps=, on_error=)`: the one wiring of a
   live session, shared by the TUI (`tui/live.py`) and the kiosk (`kiosk/service.py`): the `Session` of the header
   journaling to a new file, earlier entries handled first, and its `SessionRunner` (not started)

@@ -247,6 +247,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
 - `open_shapes.py`: the judgement of open strokes (line, polyline, arc, round shape left open, curve)
 - `open_marks.py`: open marks a hurried hand draws loosely: a zig-zag's teeth between a lead-in and a tail, a line
   begun by sliding back along itself or bowed by the hand's swing
+- `bowed_lines.py`: a line a quick wrist bowed one way, slanted or level, told from a parenthesis and an arc by
+  where and how deep it bows (`open_marks.flicked` asks it)
 - `bracket_marks.py`: square brackets with a rounded corner, curly braces with a looped or straight-armed point and
   ticks swung round their point, which the open-stroke rules misjudge
 - `waves.py`: a wave (round bends each way in turn, curving sides) read as a curve, not a zig-zag's polyline
@@ -262,6 +264,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   the flick
 - `angular_braces.py`: a curly brace drawn as straight runs and cusps (a mouse's), or askew (laid out against its
   arms' own line), read as a brace (a curve)
+- `square_braces.py`: a curly brace drawn square-cornered (a square bracket with a small point on its spine), read
+  as a brace
 - `lopsided_braces.py`: a lopsided curly brace whose short half is a straight slant back from its point, its long
   half a bracket's square end and spine, read as a brace (a curve)
 - `run_on_loops.py`: a round loop the pen landed on and ran on past its start as a long tail, read as the loop
@@ -296,6 +300,8 @@ gesture and a 600-pixel one are judged alike where that makes sense and differen
   them); `ranker_pace.py` two of its features (where the sharpest corner
   falls along the path, how the pen slowed at corners)
 - `shape_fits.py`: total-least-squares line, Kasa circle, Fitzgibbon direct ellipse, cubic Bézier fits
+- `linalg_cores.py`: numpy.linalg's SVD, least squares, eigenvectors and solve called on LAPACK's compiled cores
+  directly, without the per-call argument checks (the same results; the fits above use it)
 - `beautify.py`: the clean geometry of each kind, points on it (`shape_points`, for the bounds check), mapping back
   to the stroke's units
 
