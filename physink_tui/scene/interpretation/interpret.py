@@ -97,9 +97,10 @@ def _inside(scene: Scene, points: Sequence[tuple[float, float]], near: Near | No
     symbol drawn on it when the symbol's centre lies within the symbol's size of it."""
     if not points:
         return None
-    centre, size = Point(_centre(points)), _size(points)
-    cloud = shapely.points(np.asarray(points, dtype=float))
-    minx, miny, maxx, maxy = MultiPoint(points).bounds
+    coords = np.asarray(points, dtype=float)
+    cloud, multi = shapely.points(coords), _multipoint(coords)
+    centre, size = Point(_centre_of(multi)), _size_of(multi)
+    minx, miny, maxx, maxy = multi.bounds
     for body in _candidates(scene, (minx - size, miny - size, maxx + size, maxy + size), near):
         area = body_geometry(body)
         bx0, by0, bx1, by1 = area.bounds
@@ -173,13 +174,27 @@ def _x_host(scene: Scene, x: XSymbol, near: Near | None) -> tuple[Body, tuple[fl
     return body, (float(anchor.x), float(anchor.y))
 
 
+def _multipoint(points: Sequence[tuple[float, float]] | np.ndarray) -> MultiPoint:
+    """The points as one shapely MultiPoint, built from an array: the same geometry as ``MultiPoint(points)`` from
+    a list of tuples (shapely builds both with `shapely.multipoints`), without a Python `Point` per point."""
+    return MultiPoint(np.asarray(points, dtype=float))
+
+
 def _size(points: Sequence[tuple[float, float]]) -> float:
-    minx, miny, maxx, maxy = MultiPoint(points).bounds
+    return _size_of(_multipoint(points))
+
+
+def _size_of(multi: MultiPoint) -> float:
+    minx, miny, maxx, maxy = multi.bounds
     return math.hypot(maxx - minx, maxy - miny)
 
 
 def _centre(points: Sequence[tuple[float, float]]) -> tuple[float, float]:
-    c = MultiPoint(points).centroid
+    return _centre_of(_multipoint(points))
+
+
+def _centre_of(multi: MultiPoint) -> tuple[float, float]:
+    c = multi.centroid
     return (c.x, c.y)
 
 
