@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
+from typing import cast
 
 import numpy as np
 import shapely
@@ -98,7 +99,7 @@ def _inside(scene: Scene, points: Sequence[tuple[float, float]], near: Near | No
     symbol drawn on it when the symbol's centre lies within the symbol's size of it."""
     if not points:
         return None
-    cloud = shapely.points(np.asarray(points, dtype=float))
+    cloud = cast(np.ndarray, shapely.points(np.asarray(points, dtype=float)))  # one shapely Point per row
     multi = _multipoint_of(cloud)
     centre, size = Point(_centre_of(multi)), _size_of(multi)
     minx, miny, maxx, maxy = multi.bounds
@@ -178,7 +179,7 @@ def _x_host(scene: Scene, x: XSymbol, near: Near | None) -> tuple[Body, tuple[fl
 def _multipoint(points: Sequence[tuple[float, float]]) -> MultiPoint:
     """The points as one shapely MultiPoint: the same geometry as ``MultiPoint(points)``, which makes a Python
     `Point` of each point first (0.25 ms for a 41-point stroke)."""
-    return _multipoint_of(shapely.points(np.asarray(points, dtype=float)))
+    return _multipoint_of(cast(np.ndarray, shapely.points(np.asarray(points, dtype=float))))
 
 
 def _multipoint_of(cloud: np.ndarray) -> MultiPoint:
@@ -186,7 +187,7 @@ def _multipoint_of(cloud: np.ndarray) -> MultiPoint:
     the points, refusing an empty one)."""
     if shapely.is_empty(cloud).any():
         raise EmptyPartError("Can't create MultiPoint with empty component")
-    return shapely.multipoints(cloud)
+    return cast(MultiPoint, shapely.multipoints(cloud))
 
 
 def _size(points: Sequence[tuple[float, float]]) -> float:
