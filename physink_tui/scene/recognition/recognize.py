@@ -299,10 +299,10 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     # a round loop the pen landed on and ran on past its start as a long tail (`run_on_loops`) is that loop
-    run_on_asked = not closed
-    run_on = run_on_loops.run_on_loop(work, diag, sigma) if run_on_asked else None
-    if run_on is not None:
-        closed, loop = True, run_on
+    run_on = run_on_loops.AskedOnce(work, diag, sigma)  # of ``work`` as it is here, asked at most once
+    ran_on = run_on() if not closed else None
+    if ran_on is not None:
+        closed, loop = True, ran_on
     corners_told = False  # a polygon left open whose rounded corners its turning tells (`shape_corners`)
     if not closed:
         hooked, unhooked = work, sg.remove_hooks(work)
@@ -320,4 +320,4 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if not closed:
         return open_reading(raw, work, n, noise, sigma, weights, diag, views)
     return closed_reading(ClosedStroke(raw, work, n, loop, ellipse, diag, times, corners_told=corners_told,
-                                       run_on=run_on, run_on_asked=run_on_asked), noise, sigma, weights, views)
+                                       run_on=run_on), noise, sigma, weights, views)
