@@ -292,10 +292,12 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         led = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
         if led is not work:
             work, th = led, sg.turning(led)
-    special = helix_or_scribble(work, n, diag, sg.path_length(work), th)
+    # without its small loops, measured once where the coil test asks (`coils.COILED`) and used again below
+    unlooped = remove_small_loops(work) if abs(float(np.add.reduce(th))) > COILED else None
+    special = helix_or_scribble(work, n, diag, sg.path_length(work), th, unlooped)
     if special is not None:
         return special
-    work = sg.resample(remove_small_loops(work), n)  # loops at corners are flourishes, not coils
+    work = sg.resample(remove_small_loops(work) if unlooped is None else unlooped, n)  # loops at corners are flourishes
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     # a round loop the pen landed on and ran on past its start as a long tail (`run_on_loops`) is that loop
