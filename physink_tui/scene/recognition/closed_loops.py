@@ -123,11 +123,14 @@ def polygon_left_open(work: np.ndarray, diag: float, drawn: np.ndarray | None = 
                 and (sf.heading_home(work, corners) or star_run_past_its_start(work, corners)
                      or sf.ran_through_first_corner(work, corners))):
             return LeftOpen.SIDES
-    if many_sided_left_open(work, length):
+    # the corners at every dip, and the bends, each found once for the tests below that look for the same ones
+    dips = sf.drop_end_stubs(work, sg.find_corners(work, MANY_SIDED_TURN_DEG, every_dip=True, th=th), length)
+    if many_sided_left_open(work, length, dips):
         return LeftOpen.MANY_SIDES
-    if shape_corners.rounded_many_sided_left_open(work, drawn):
+    bent = shape_corners.bends(work)
+    if shape_corners.rounded_many_sided_left_open(work, drawn, bent):
         return LeftOpen.ROUNDED_CORNERS
-    if open_stars.star_left_open(work, length):
+    if open_stars.star_left_open(work, length, dips if open_stars.DENT_DEG == MANY_SIDED_TURN_DEG else None, bent):
         return LeftOpen.STAR
     return None
 
@@ -158,13 +161,14 @@ LEFT_OPEN_GAP = 1.5
 leave a gap of 1.7-1.9 sides on a regular hexagon, an outline half drawn)."""
 
 
-def many_sided_left_open(work: np.ndarray, length: float) -> bool:
+def many_sided_left_open(work: np.ndarray, length: float, dips: list[int] | None = None) -> bool:
     """Whether a stroke (``length`` long) of `LEFT_OPEN_CORNERS` corners or more (turning `MANY_SIDED_TURN_DEG` or
     more), sharp ones (`SHARP_SHARE` of them within `polygon_checks.SHARP_CORNER`), its sides straight
     (`open_shapes.STRAIGHT`; the first and last up to `LAST_SIDE_BOW`: the hand swings as it lands and lifts), is a
     polygon left open by one side: the gap (`LEFT_OPEN_GAP`) and the sides make a convex outline, turning the same way
-    at every vertex once round."""
-    corners = sf.drop_end_stubs(work, sg.find_corners(work, MANY_SIDED_TURN_DEG, every_dip=True), length)
+    at every vertex once round. ``dips``: those corners, where already found."""
+    corners = (sf.drop_end_stubs(work, sg.find_corners(work, MANY_SIDED_TURN_DEG, every_dip=True), length)
+               if dips is None else dips)
     if len(corners) - 2 < LEFT_OPEN_CORNERS:
         return False
     sides = sf.closing_sides(work, corners, open_shapes.STRAIGHT, LAST_SIDE_BOW, LEFT_OPEN_GAP)

@@ -46,10 +46,10 @@ class ClosedStroke:
     times: np.ndarray | None
     corners_told: bool
     """A polygon left open, closed by its rounded corners' turning (`closed_loops.corners_told`)."""
-    run_on: np.ndarray | None
-    """The loop, where it is a round loop the pen ran on past its start (`run_on_loops`)."""
-    run_on_asked: bool
-    """Whether `run_on_loops.run_on_loop` was asked of ``work`` (else it is asked here, only where it matters)."""
+    run_on: run_on_loops.AskedOnce
+    """The loop, where it is a round loop the pen ran on past its start (`run_on_loops`), asked of ``work`` as
+    `recognize` first judged it, at most once (by `recognize` where the stroke was not closed, else here where it
+    matters)."""
 
 
 def closed_reading(stroke: ClosedStroke, noise: float, sigma: float, weights: Weights,
@@ -73,9 +73,8 @@ def closed_reading(stroke: ClosedStroke, noise: float, sigma: float, weights: We
     if ranked.kind in ("circle", "ellipse") and round_fit is not None:
         ranked = cornered_after_all(ranked, polygons, round_fit.rss, raw, noise, diag, sigma, weights, stroke.times,
                                     stroke.corners_told)
-    if (ranked.kind in ("circle", "ellipse") and stroke.run_on is None
-            and closed_loops.tail_runs_off(work, loop, ellipse)
-            and (stroke.run_on_asked or run_on_loops.run_on_loop(work, diag, sigma) is None)):
+    if (ranked.kind in ("circle", "ellipse") and closed_loops.tail_runs_off(work, loop, ellipse)
+            and stroke.run_on() is None):
         return open_reading(raw, work, n, noise, sigma, weights, diag, views, round_too=False)  # a pigtail
     # circle or ellipse either way round (the bounds a circle must stay within asked only of an ellipse)
     ranked = both_laps.round_from_both_laps(ranked, work, ellipse, diag, sigma,

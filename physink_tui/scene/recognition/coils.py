@@ -21,13 +21,13 @@ their turning in the sharpest fifth)."""
 
 
 def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
-                      th: np.ndarray | None = None) -> Recognition | None:
+                      th: np.ndarray | None = None, unlooped: np.ndarray | None = None) -> Recognition | None:
     """A spring (loops advancing along an axis, turning smoothly, `COILED` far without its small loops:
     `small_loops.remove_small_loops`) or a scribble back and forth, else None (``th``: the path's turning,
-    `stroke_geometry.turning`, where already measured)."""
+    `stroke_geometry.turning`, and ``unlooped``: ``remove_small_loops(work)``, where already measured)."""
     th = sg.turning(work) if th is None else th
     total_turn, abs_turn = float(np.add.reduce(th)), float(np.add.reduce(np.abs(th)))
-    if abs(total_turn) > COILED and abs(float(sg.turning(remove_small_loops(work)).sum())) > COILED:
+    if abs(total_turn) > COILED and abs(float(_turning_without_small_loops(work, th, unlooped).sum())) > COILED:
         # a finger's or pen's small loop where it landed or lifted (or at a corner) is no loop of the spring
         coil = sg.resample(sg.remove_hooks(work), n)
         coil_turn = sg.turning(coil)
@@ -42,3 +42,10 @@ def helix_or_scribble(work: np.ndarray, n: int, diag: float, length: float,
     if length > 5 * diag and (reversals >= 4 or (abs_turn > 6 * math.pi and abs(total_turn) < 0.3 * abs_turn)):
         return Recognition(None, 0.0, None, (), "a scribble back and forth, not a shape")
     return None
+
+
+def _turning_without_small_loops(work: np.ndarray, th: np.ndarray, unlooped: np.ndarray | None) -> np.ndarray:
+    """The turning of ``work`` (``th``) without its small loops (``unlooped``, where already cut): ``th`` itself where
+    it has none (`small_loops.remove_small_loops` gives back ``work``)."""
+    unlooped = remove_small_loops(work) if unlooped is None else unlooped
+    return th if unlooped is work else sg.turning(unlooped)

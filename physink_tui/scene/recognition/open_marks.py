@@ -186,7 +186,7 @@ def retraced_ends(raw: np.ndarray, noise: float) -> np.ndarray | None:
         return None  # no line: some point stands far off the chord (checked first: most strokes are no line)
     kept, _ = _cut_ends(raw, noise)
     if kept is None:
-        back, led = _cut_ends(raw[::-1], noise)
+        back, led = _cut_ends(raw[::-1], noise, lead_in_only=True)
         if back is not None and led:
             kept = back[::-1]
     return kept
@@ -204,14 +204,15 @@ def _near_chord(raw: np.ndarray, noise: float) -> bool:
     return not stray > RETRACE_NEAR * norm * norm + noise * norm
 
 
-def _cut_ends(raw: np.ndarray, noise: float) -> tuple[np.ndarray | None, bool]:
+def _cut_ends(raw: np.ndarray, noise: float, lead_in_only: bool = False) -> tuple[np.ndarray | None, bool]:
     """`retraced_ends` as drawn (the stroke's points near its chord already: `_near_chord`), and whether the piece cut
-    where the pen landed is a long lead-in (`lead_ins.lead_in`)."""
+    where the pen landed is a long lead-in (`lead_ins.lead_in`); with ``lead_in_only`` (asked of the stroke drawn
+    backwards, whose cut counts only where that piece is a long lead-in) (None, False) as soon as it cannot be one."""
     chord = raw[-1] - raw[0]
     along = (raw - raw[0]) @ (chord / float(np.hypot(*chord)))
     lo, hi = int(np.argmin(along)), int(np.argmax(along))
-    if (lo == 0 and hi == len(raw) - 1) or lo >= hi:
-        return None, False
+    if (lo == 0 and hi == len(raw) - 1) or lo >= hi or (lead_in_only and lo == 0):
+        return None, False  # (no piece where the pen landed: no lead-in, ``led`` would be False)
     length = sg.path_length(raw)
     kept = raw[lo:hi + 1]
     cuts = sg.path_length(raw[:lo + 1]), sg.path_length(raw[hi:])
@@ -223,6 +224,8 @@ def _cut_ends(raw: np.ndarray, noise: float) -> tuple[np.ndarray | None, bool]:
         return None, False
     unit = (b - a) / span
     led = lo > 0 and lead_ins.lead_in(raw[:lo + 1], a, unit, length)  # a long lead-in run back along a level line
+    if lead_in_only and not led:
+        return None, False
     if (sum(cuts) > (lead_ins.LEAD_TOTAL if led else RETRACE_SHARE) * length
             and (led or max(cuts) > BACK_HOOK_SHARE * length)):
         return None, False  # (both ends' hooks may together be more: `BACK_HOOK_SHARE`)

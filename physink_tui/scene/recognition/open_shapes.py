@@ -253,7 +253,7 @@ def classify_open(work: np.ndarray, noise: float, round_corner: float = math.inf
     hooked = bracket_marks.unhooked_point(work, found, noise) if len(found) <= 4 else None
     if hooked is not None:  # the same, once a hook where the pen landed or lifted is cut
         return Recognition("polyline", 0.7, Polyline(hooked), (("curve", 0.4),))
-    chevron = rounded_chevrons.rounded_chevron(work, noise) if len(lobes) == 1 else None
+    chevron = rounded_chevrons.rounded_chevron(work, noise, coarse) if len(lobes) == 1 else None
     if chevron is not None:  # a chevron swung round its corner, both sides straight
         return Recognition("polyline", 0.7, Polyline(chevron), (("curve", 0.4),))
     if len(corners) <= 3 or concentration < 0.5:

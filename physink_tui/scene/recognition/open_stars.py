@@ -53,15 +53,17 @@ def star_outline(corners: Sequence[Sequence[float]]) -> bool:
             and bool((points >= POINT_DEG).all()) and float(dents.mean()) <= DENT_SHARE * float(points.mean()))
 
 
-def star_left_open(work: np.ndarray, length: float) -> bool:
+def star_left_open(work: np.ndarray, length: float, dips: list[int] | None = None,
+                   bends: tuple[np.ndarray, np.ndarray, list[shape_corners.Bend]] | None = None) -> bool:
     """Whether an open stroke (``length`` long) is a star's outline left open by a side (`_star_chain`), its corners
     found where the path turns `DENT_DEG` or more (`stroke_geometry.find_corners`, every dip), or else at its short
     bends (`shape_corners.corner_bends`, on `shape_corners.STEPS` points: a dent the hand swept round over a step or
-    two, which the finer look sees as two shallow turns)."""
-    corners = sf.drop_end_stubs(work, sg.find_corners(work, DENT_DEG, every_dip=True), length)
+    two, which the finer look sees as two shallow turns). ``dips`` (those corners) and ``bends`` (`shape_corners.bends`
+    of ``work``): where already found."""
+    corners = sf.drop_end_stubs(work, sg.find_corners(work, DENT_DEG, every_dip=True), length) if dips is None else dips
     if _star_chain(work, corners):
         return True
-    pts, _, found = shape_corners.bends(work)
+    pts, _, found = shape_corners.bends(work) if bends is None else bends
     bent = shape_corners.corner_bends(found)
     return _star_chain(pts, [0, *((b.first + b.last) // 2 + 1 for b in bent), len(pts) - 1])
 

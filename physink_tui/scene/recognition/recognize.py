@@ -292,17 +292,19 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
         led = loop_ends.without_retraced_ends(work, diag)  # a first side or arc drawn twice over is drawn once
         if led is not work:
             work, th = led, sg.turning(led)
-    special = helix_or_scribble(work, n, diag, sg.path_length(work), th)
+    # without its small loops, measured once where the coil test asks (`coils.COILED`) and used again below
+    unlooped = remove_small_loops(work) if abs(float(np.add.reduce(th))) > COILED else None
+    special = helix_or_scribble(work, n, diag, sg.path_length(work), th, unlooped)
     if special is not None:
         return special
-    work = sg.resample(remove_small_loops(work), n)  # loops at corners are flourishes, not coils
+    work = sg.resample(remove_small_loops(work) if unlooped is None else unlooped, n)  # loops at corners are flourishes
     sigma = max(noise, weights.relative_noise * diag)
     closed, loop, ellipse = closed_loops.closed_loop(raw, work, diag, sigma)
     # a round loop the pen landed on and ran on past its start as a long tail (`run_on_loops`) is that loop
-    run_on_asked = not closed
-    run_on = run_on_loops.run_on_loop(work, diag, sigma) if run_on_asked else None
-    if run_on is not None:
-        closed, loop = True, run_on
+    run_on = run_on_loops.AskedOnce(work, diag, sigma)  # of ``work`` as it is here, asked at most once
+    ran_on = run_on() if not closed else None
+    if ran_on is not None:
+        closed, loop = True, ran_on
     corners_told = False  # a polygon left open whose rounded corners its turning tells (`shape_corners`)
     if not closed:
         hooked, unhooked = work, sg.remove_hooks(work)
@@ -320,4 +322,4 @@ def _classify(raw: np.ndarray, noise: float, weights: Weights, shaky: bool, diag
     if not closed:
         return open_reading(raw, work, n, noise, sigma, weights, diag, views)
     return closed_reading(ClosedStroke(raw, work, n, loop, ellipse, diag, times, corners_told=corners_told,
-                                       run_on=run_on, run_on_asked=run_on_asked), noise, sigma, weights, views)
+                                       run_on=run_on), noise, sigma, weights, views)

@@ -40,7 +40,8 @@ the corner is rounded, not the whole stroke bowed (the ST5022 writers' chevrons 
 their `curve_*` gestures 0.29-0.54)."""
 
 
-def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float], ...] | None:
+def rounded_chevron(work: np.ndarray, noise: float,
+                    coarse: np.ndarray | None = None) -> tuple[tuple[float, float], ...] | None:
     """The start, corner and end of a chevron whose corner is a round bend, or None.
 
     A hand drawing a chevron quickly swings round its corner: the stroke turns one way (one lobe at the coarse scale,
@@ -50,8 +51,10 @@ def rounded_chevron(work: np.ndarray, noise: float) -> tuple[tuple[float, float]
     along (`SHARP_BEND`). The corner is where those lines meet, drawn back towards the point only as far as the
     stroke's bounds need. A stroke hooked at an end so that it turns more than one way is left a curve (cutting such
     hooks read as many of the set's curve gestures polylines as chevrons). ``work``: the stroke as
-    `open_shapes.classify_open` judges it; ``noise``: the pen's jitter in its units."""
-    if len(work) < 12 or len(sf.turn_lobes(shape_turning.coarse_turning(work, noise))) != 1:
+    `open_shapes.classify_open` judges it; ``noise``: the pen's jitter in its units; ``coarse``: its
+    `shape_turning.coarse_turning` at that noise, where already measured."""
+    if len(work) < 12 or len(sf.turn_lobes(shape_turning.coarse_turning(work, noise) if coarse is None
+                                           else coarse)) != 1:
         return None
     found = point_and_sides(work)
     if found is None:

@@ -119,3 +119,20 @@ def measure(work: np.ndarray, sigma: float) -> Loop | None:
     if turn is None:
         return None
     return Loop(loop, min(strays), ry / rx, turn, err <= open_shapes.round_error(ellipse, sigma))
+
+
+class AskedOnce:
+    """`run_on_loop` of one stroke's judged points, asked only where it matters and at most once."""
+
+    __slots__ = ("_asked", "_diag", "_loop", "_sigma", "_work")
+
+    def __init__(self, work: np.ndarray, diag: float, sigma: float) -> None:
+        self._work, self._diag, self._sigma = work, diag, sigma
+        self._asked = False
+        self._loop: np.ndarray | None = None
+
+    def __call__(self) -> np.ndarray | None:
+        if not self._asked:
+            self._loop = run_on_loop(self._work, self._diag, self._sigma)
+            self._asked = True
+        return self._loop

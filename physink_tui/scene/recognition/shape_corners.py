@@ -124,15 +124,17 @@ def drawn_through(corners: np.ndarray, drawn: np.ndarray) -> bool:
     return True
 
 
-def rounded_many_sided_left_open(work: np.ndarray, drawn: np.ndarray | None = None) -> bool:
+def rounded_many_sided_left_open(work: np.ndarray, drawn: np.ndarray | None = None,
+                                 bent: tuple[np.ndarray, np.ndarray, list[Bend]] | None = None) -> bool:
     """Whether an open stroke is a many-sided polygon left open by one side whose corners the hand rounded: it does
     `AT_CORNERS` of its turning at `LEAST_CORNERS` corners or more (`corner_bends`, of up to `LEFT_OPEN_BEND_STEPS`),
     and its sides through those corners (each corner at the middle of its bend) and the gap close a convex outline
     turning the same way at every vertex once round (its ends on a side, `ENDS_ON_A_SIDE_DEG`, or turning that way),
     the gap no longer than `GAP_SIDES` of its longest side; and its sides run straight between
     (`STRAIGHT_SHARE`) and its corners turn as many sides' do (`CORNER_TURN`). ``drawn``, the stroke's own points where
-    given, must hold a point between each two corners (`drawn_through`)."""
-    pts, th, found = bends(work)
+    given, must hold a point between each two corners (`drawn_through`); ``bent``: `bends` of ``work``, where already
+    found."""
+    pts, th, found = bends(work) if bent is None else bent
     corners = corner_bends(found, LEFT_OPEN_BEND_STEPS)
     total = float(np.abs(th).sum())
     at_corners = sum(abs(b.degrees) for b in corners)
